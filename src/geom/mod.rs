@@ -1,0 +1,45 @@
+//! Shapes in their own canonical space, and the contract the renderer and CSG rely on.
+//!
+//! A shape reports *every* crossing of a ray (CSG needs all of them, not just the first), can
+//! say whether a point is inside it, and gives the normal at a crossing it reported. Placement
+//! in the world (transform), textures and flags belong to `scene::Object`, not to shapes.
+
+use crate::math::{Aabb, DVec3, Ray};
+
+/// One crossing of a ray with a surface.
+#[derive(Clone, Copy, Debug)]
+pub struct Hit {
+    /// Distance along the ray in units of the ray's direction (unnormalised).
+    pub t: f64,
+    /// Shape-specific data needed later for the normal: a face index for boxes, a triangle index
+    /// for meshes, which sub-surface of a cylinder or cone was hit, ...
+    pub part: u32,
+    /// Barycentric (u, v) for triangles, so smooth normals need no second intersection.
+    pub uv: [f64; 2],
+}
+
+impl Hit {
+    pub fn new(t: f64) -> Hit {
+        Hit { t, part: 0, uv: [0.0; 2] }
+    }
+    pub fn with_part(t: f64, part: u32) -> Hit {
+        Hit { t, part, uv: [0.0; 2] }
+    }
+}
+
+pub trait Shape: Send + Sync + std::fmt::Debug {
+    /// Bounds in the shape's own space; `Aabb::INFINITE` for unbounded shapes (planes).
+    fn bounds(&self) -> Aabb;
+    /// Appends every crossing with `t > EPSILON` (in any order) to `out`.
+    fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>);
+    /// Nearest crossing with `EPSILON < t < tmax`. Shapes override when they can do better.
+    fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
+        scratch.clear();
+        self.intersect_all(ray, scratch);
+        scratch.iter().filter(|h| h.t > crate::math::EPSILON && h.t < tmax).min_by(|a, b| a.t.total_cmp(&b.t)).copied()
+    }
+    /// Whether `p` lies inside the shape (POV-Ray's "inside" test, used by CSG and interiors).
+    fn inside(&self, p: DVec3) -> bool;
+    /// Outward normal at a point the shape reported, not necessarily unit length.
+    fn normal(&self, p: DVec3, hit: &Hit) -> DVec3;
+}

@@ -1,0 +1,13 @@
+//! lancer: a fast ray tracer that reads POV-Ray 3.7 scene files and writes the pictures
+//! POV-Ray would write.
+//!
+//! Pipeline: `sdl` (lexer → token stream → parser executing directives) produces a
+//! `scene::desc::SceneDesc`; `scene::build` turns it into a runtime scene with a BVH; `render`
+//! traces it into a film; `output` writes PNG/EXR.
+
+pub mod color;
+pub mod diag;
+pub mod geom;
+pub mod math;
+pub mod scene;
+pub mod sdl;

@@ -1,0 +1,306 @@
+//! The declarative scene description: plain, clonable values produced by the parser.
+//!
+//! This is what `#declare` stores and what snippet tests inspect. Transforms applied to an
+//! object are applied at once to its shape transform and to every texture already attached
+//! (POV-Ray's semantics: a texture given before a `translate` moves with the object, one given
+//! after does not). CSG children without a texture inherit their parent's texture only when the
+//! scene is built, as POV-Ray's post-processing does, so later modifiers on the parent count.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use crate::color::Rgbft;
+use crate::math::{DVec3, Transform};
+
+#[derive(Clone, Debug)]
+pub struct SceneDesc {
+    pub camera: CameraDesc,
+    pub lights: Vec<LightDesc>,
+    pub objects: Vec<ObjectDesc>,
+    pub background: Rgbft,
+    pub sky_sphere: Option<Vec<Pigment>>,
+    pub global: GlobalSettings,
+    /// The texture given to objects that have none (`#default`).
+    pub default_texture: Texture,
+    /// `#version` in force at the end of parsing, if the scene set one.
+    pub version: Option<f64>,
+}
+
+#[derive(Clone, Debug)]
+pub struct GlobalSettings {
+    /// None when the scene did not say; the builder decides (3.7 rules) and warns.
+    pub assumed_gamma: Option<f64>,
+    pub max_trace_level: u32,
+    pub adc_bailout: f64,
+    pub ambient_light: DVec3,
+}
+
+impl Default for GlobalSettings {
+    fn default() -> Self {
+        GlobalSettings { assumed_gamma: None, max_trace_level: 5, adc_bailout: 1.0 / 255.0, ambient_light: DVec3::ONE }
+    }
+}
+
+/// Camera items as written; `CameraDesc::resolve` applies them in POV-Ray's fixed order.
+#[derive(Clone, Debug)]
+pub struct CameraDesc {
+    pub location: DVec3,
+    pub direction: DVec3,
+    pub right: DVec3,
+    pub up: DVec3,
+    pub sky: DVec3,
+    pub look_at: Option<DVec3>,
+    pub angle: Option<f64>,
+    /// Transforms written inside the camera block, applied after everything else.
+    pub transform: Transform,
+}
+
+impl Default for CameraDesc {
+    fn default() -> Self {
+        CameraDesc {
+            location: DVec3::ZERO,
+            direction: DVec3::Z,
+            right: DVec3::new(1.33, 0.0, 0.0),
+            up: DVec3::Y,
+            sky: DVec3::Y,
+            look_at: None,
+            angle: None,
+            transform: Transform::IDENTITY,
+        }
+    }
+}
+
+#[derive(Clone, Debug)]
+pub struct LightDesc {
+    pub position: DVec3,
+    pub color: DVec3,
+    pub shadowless: bool,
+    pub fade_distance: Option<f64>,
+    pub fade_power: f64,
+}
+
+#[derive(Clone, Debug)]
+pub struct ObjectDesc {
+    pub shape: ShapeDesc,
+    /// Object space to world space.
+    pub transform: Transform,
+    pub texture: Option<Texture>,
+    pub interior: Option<Interior>,
+    pub no_shadow: bool,
+    pub hollow: Option<bool>,
+    pub inverse: bool,
+}
+
+impl ObjectDesc {
+    pub fn new(shape: ShapeDesc) -> ObjectDesc {
+        ObjectDesc { shape, transform: Transform::IDENTITY, texture: None, interior: None, no_shadow: false, hollow: None, inverse: false }
+    }
+
+    /// Applies a transform to the object, its attached texture and, for CSG, every child.
+    pub fn apply_transform(&mut self, t: &Transform) {
+        if let Some(tex) = &mut self.texture {
+            tex.apply_transform(t);
+        }
+        match &mut self.shape {
+            ShapeDesc::Csg { children, .. } => {
+                for c in children {
+                    c.apply_transform(t);
+                }
+            }
+            _ => self.transform = self.transform.then(t),
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CsgOp {
+    Union,
+    Merge,
+    Intersection,
+    Difference,
+}
+
+#[derive(Clone, Debug)]
+pub enum ShapeDesc {
+    Sphere { center: DVec3, radius: f64 },
+    /// Points p with `normal · p = distance` (normal as written, not normalised).
+    Plane { normal: DVec3, distance: f64 },
+    Box { corner1: DVec3, corner2: DVec3 },
+    Cylinder { base: DVec3, cap: DVec3, radius: f64, open: bool },
+    Cone { base: DVec3, base_radius: f64, cap: DVec3, cap_radius: f64, open: bool },
+    Disc { center: DVec3, normal: DVec3, radius: f64, hole_radius: f64 },
+    Torus { major: f64, minor: f64, sturm: bool },
+    Triangle { p: [DVec3; 3] },
+    SmoothTriangle { p: [DVec3; 3], n: [DVec3; 3] },
+    Mesh(Arc<MeshData>),
+    Csg { op: CsgOp, children: Vec<ObjectDesc> },
+    /// A light source is an object in POV-Ray: it may sit inside CSG and move with it.
+    Light(LightDesc),
+}
+
+/// Triangle soup shared by every copy of a `#declare`d mesh.
+#[derive(Clone, Debug, Default)]
+pub struct MeshData {
+    pub vertices: Vec<DVec3>,
+    /// Per-vertex normals for smooth triangles; empty when the mesh is flat.
+    pub normals: Vec<DVec3>,
+    pub triangles: Vec<MeshTriangle>,
+    /// Textures named inside the mesh per triangle (index into this list).
+    pub textures: Vec<Texture>,
+}
+
+#[derive(Clone, Copy, Debug)]
+pub struct MeshTriangle {
+    pub v: [u32; 3],
+    /// Indices into `MeshData::normals` for a smooth triangle.
+    pub n: Option<[u32; 3]>,
+    pub texture: Option<u32>,
+}
+
+#[derive(Clone, Debug)]
+pub struct Texture {
+    pub pigment: Pigment,
+    pub normal: Option<Normal>,
+    pub finish: Finish,
+}
+
+impl Default for Texture {
+    fn default() -> Self {
+        Texture { pigment: Pigment::solid(Rgbft::BLACK), normal: None, finish: Finish::default() }
+    }
+}
+
+impl Texture {
+    pub fn apply_transform(&mut self, t: &Transform) {
+        self.pigment.apply_transform(t);
+        if let Some(n) = &mut self.normal {
+            n.transform = n.transform.then(t);
+        }
+    }
+}
+
+#[derive(Clone, Debug)]
+pub struct Pigment {
+    pub kind: PigmentKind,
+    /// Pattern space to world space.
+    pub transform: Transform,
+}
+
+impl Pigment {
+    pub fn solid(c: Rgbft) -> Pigment {
+        Pigment { kind: PigmentKind::Solid(c), transform: Transform::IDENTITY }
+    }
+    pub fn apply_transform(&mut self, t: &Transform) {
+        self.transform = self.transform.then(t);
+        // Pigments nested in a list pattern are already in the outer pattern's space.
+    }
+}
+
+#[derive(Clone, Debug)]
+pub enum PigmentKind {
+    Solid(Rgbft),
+    /// A continuous pattern looked up in a colour map.
+    Mapped { pattern: Pattern, map: ColorMap },
+    /// A discrete pattern choosing between whole pigments (checker).
+    List { pattern: Pattern, items: Vec<Pigment> },
+    ImageMap(Arc<ImageMap>),
+}
+
+/// Colour map entries sorted by value, as POV-Ray's `color_map { [v colour] ... }`.
+pub type ColorMap = Vec<(f64, Rgbft)>;
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Pattern {
+    Checker,
+    /// `gradient <v>`: the fractional part of p · v.
+    Gradient(DVec3),
+    /// A pattern lancer does not evaluate yet (already warned about): the middle of its map.
+    Unsupported,
+}
+
+#[derive(Clone, Debug)]
+pub struct ImageMap {
+    pub path: PathBuf,
+    /// 0 planar, 1 spherical (equirectangular), 2 cylindrical.
+    pub map_type: u32,
+    pub once: bool,
+    pub interpolate: u32,
+    pub width: u32,
+    pub height: u32,
+    /// Linear-light pixels, row 0 at the top.
+    pub pixels: Vec<Rgbft>,
+}
+
+#[derive(Clone, Debug)]
+pub struct Normal {
+    pub kind: NormalKind,
+    pub amount: f64,
+    pub transform: Transform,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum NormalKind {
+    /// A normal block lancer parsed but does not perturb with yet (already warned about).
+    Unsupported,
+}
+
+#[derive(Clone, Debug)]
+pub struct Finish {
+    pub ambient: DVec3,
+    pub emission: DVec3,
+    pub diffuse: f64,
+    pub brilliance: f64,
+    pub phong: f64,
+    pub phong_size: f64,
+    pub specular: f64,
+    pub roughness: f64,
+    pub metallic: f64,
+    pub reflection: Reflection,
+    pub conserve_energy: bool,
+}
+
+impl Default for Finish {
+    fn default() -> Self {
+        Finish {
+            ambient: DVec3::splat(0.1),
+            emission: DVec3::ZERO,
+            diffuse: 0.6,
+            brilliance: 1.0,
+            phong: 0.0,
+            phong_size: 40.0,
+            specular: 0.0,
+            roughness: 0.05,
+            metallic: 0.0,
+            reflection: Reflection::default(),
+            conserve_energy: false,
+        }
+    }
+}
+
+#[derive(Clone, Debug, Default)]
+pub struct Reflection {
+    /// Reflectivity facing the viewer (`reflection { min max }`: min).
+    pub min: DVec3,
+    /// Reflectivity at grazing angles.
+    pub max: DVec3,
+    pub falloff: f64,
+    pub fresnel: bool,
+    pub metallic: f64,
+}
+
+impl Reflection {
+    pub fn is_zero(&self) -> bool {
+        self.min == DVec3::ZERO && self.max == DVec3::ZERO
+    }
+}
+
+#[derive(Clone, Debug)]
+pub struct Interior {
+    pub ior: f64,
+}
+
+impl Default for Interior {
+    fn default() -> Self {
+        Interior { ior: 1.0 }
+    }
+}

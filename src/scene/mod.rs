@@ -1,0 +1,4 @@
+//! Scenes: the declarative description the parser produces, and the runtime form built from it.
+
+pub mod desc;
+pub mod image;

@@ -1,0 +1,206 @@
+//! Top-level scene items: camera, background, sky_sphere, global_settings and the loop that
+//! reads a whole scene.
+
+use crate::color::Rgbft;
+use crate::scene::desc::{CameraDesc, Pigment, ShapeDesc};
+
+use super::lexer::{Sym, Tok};
+use super::parser::{PResult, Parser};
+use super::value::Value;
+
+/// Atmospheric and global effects POV-Ray renders that lancer reads past with a warning.
+const UNSUPPORTED_BLOCKS: &[&str] = &["fog", "media", "rainbow", "photons", "radiosity"];
+
+impl Parser {
+    pub(super) fn parse_scene_items(&mut self) -> PResult<()> {
+        loop {
+            if let Some(obj) = self.parse_object()? {
+                if let ShapeDesc::Light(_) = obj.shape {
+                    self.scene.objects.push(obj);
+                } else {
+                    self.scene.objects.push(obj);
+                }
+                continue;
+            }
+            let Some(t) = self.peek()? else { return Ok(()) };
+            self.advance();
+            let Tok::Ident(k) = &t.tok else {
+                return Err(self.unexpected(&t, "at the top level of the scene; expected an object, camera, light_source or setting"));
+            };
+            match &**k {
+                "camera" => self.scene.camera = self.parse_camera_block()?,
+                "background" => {
+                    self.expect_sym(Sym::LBrace, "after 'background'")?;
+                    self.scene.background = self.parse_color()?;
+                    self.expect_sym(Sym::RBrace, "to close background")?;
+                }
+                "sky_sphere" => self.parse_sky_sphere()?,
+                "global_settings" => self.parse_global_settings()?,
+                k if UNSUPPORTED_BLOCKS.contains(&k) => {
+                    self.unsupported(k, t.span);
+                    self.skip_block()?;
+                }
+                _ => {
+                    let msg = match self.lookup(k) {
+                        Some(Value::Object(_)) => format!("'{k}' is an object identifier; write object {{ {k} }} to place it"),
+                        Some(v) => format!("a {} identifier ('{k}') cannot stand alone in a scene", v.type_name()),
+                        None => format!("unexpected '{k}' at the top level of the scene; expected an object, camera, light_source or setting"),
+                    };
+                    return Err(self.error_at(t.span, msg));
+                }
+            }
+        }
+    }
+
+    fn parse_sky_sphere(&mut self) -> PResult<()> {
+        self.expect_sym(Sym::LBrace, "after 'sky_sphere'")?;
+        let mut layers: Vec<Pigment> = Vec::new();
+        loop {
+            let t = self.next()?;
+            match &t.tok {
+                Tok::Sym(Sym::RBrace) => break,
+                Tok::Ident(k) if &**k == "pigment" => layers.push(self.parse_pigment_block(None)?),
+                Tok::Ident(k) if &**k == "emission" => {
+                    self.unsupported("sky_sphere emission", t.span);
+                    self.parse_color()?;
+                }
+                Tok::Ident(k) => {
+                    if let Some(tr) = self.transform_item(k)? {
+                        for p in &mut layers {
+                            p.apply_transform(&tr);
+                        }
+                    } else {
+                        return Err(self.error_at(t.span, format!("unexpected '{k}' in sky_sphere")));
+                    }
+                }
+                _ => return Err(self.unexpected(&t, "in sky_sphere")),
+            }
+        }
+        self.scene.sky_sphere = Some(layers);
+        Ok(())
+    }
+
+    fn parse_global_settings(&mut self) -> PResult<()> {
+        self.expect_sym(Sym::LBrace, "after 'global_settings'")?;
+        loop {
+            let t = self.next()?;
+            let Tok::Ident(k) = &t.tok else {
+                if t.tok == Tok::Sym(Sym::RBrace) {
+                    return Ok(());
+                }
+                return Err(self.unexpected(&t, "in global_settings"));
+            };
+            let g = &mut self.scene.global;
+            match &**k {
+                "assumed_gamma" => {
+                    let v = self.parse_float()?;
+                    self.scene.global.assumed_gamma = Some(v);
+                }
+                "max_trace_level" => {
+                    let v = self.parse_float()?;
+                    self.scene.global.max_trace_level = v.max(1.0) as u32;
+                }
+                "adc_bailout" => {
+                    let v = self.parse_float()?;
+                    self.scene.global.adc_bailout = v;
+                }
+                "ambient_light" => {
+                    let _ = g;
+                    let c = self.parse_color()?;
+                    self.scene.global.ambient_light = c.rgb;
+                }
+                "charset" => {
+                    self.next()?;
+                }
+                "max_intersections" | "number_of_waves" | "noise_generator" | "hf_gray_16" | "mm_per_unit" | "subsurface" => {
+                    if self.peek_sym()? == Some(Sym::LBrace) {
+                        self.skip_block()?;
+                    } else {
+                        let v = self.parse_expr()?;
+                        if &**k == "noise_generator" {
+                            let _ = v;
+                        }
+                    }
+                }
+                "irid_wavelength" => {
+                    self.parse_color()?;
+                }
+                "radiosity" | "photons" => {
+                    self.unsupported(k, t.span);
+                    self.skip_block()?;
+                }
+                _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in global_settings"))),
+            }
+        }
+    }
+
+    pub(super) fn parse_camera_block(&mut self) -> PResult<CameraDesc> {
+        self.expect_sym(Sym::LBrace, "after 'camera'")?;
+        let mut cam = CameraDesc::default();
+        if let Some(k) = self.peek_ident()? {
+            if let Some(Value::Camera(c)) = self.lookup(&k) {
+                cam = (**c).clone();
+                self.advance();
+            }
+        }
+        loop {
+            let t = self.next()?;
+            let Tok::Ident(k) = &t.tok else {
+                if t.tok == Tok::Sym(Sym::RBrace) {
+                    return Ok(cam);
+                }
+                return Err(self.unexpected(&t, "in camera"));
+            };
+            if let Some(tr) = self.transform_item(k)? {
+                cam.transform = cam.transform.then(&tr);
+                continue;
+            }
+            match &**k {
+                "perspective" => {}
+                "orthographic" | "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "spherical" | "cylinder" | "mesh_camera" => {
+                    self.unsupported(&format!("{k} camera (rendered as perspective)"), t.span);
+                    if &**k == "cylinder" {
+                        self.parse_float()?;
+                    } else if &**k == "mesh_camera" {
+                        self.skip_block()?;
+                    }
+                }
+                "location" => cam.location = self.parse_vector()?,
+                "look_at" => cam.look_at = Some(self.parse_vector()?),
+                "right" => cam.right = self.parse_vector()?,
+                "up" => cam.up = self.parse_vector()?,
+                "direction" => cam.direction = self.parse_vector()?,
+                "sky" => cam.sky = self.parse_vector()?,
+                "angle" => {
+                    cam.angle = Some(self.parse_float()?);
+                    if self.starts_number()? {
+                        self.unsupported("vertical camera angle", t.span);
+                        self.parse_float()?;
+                    }
+                }
+                "aperture" | "blur_samples" | "focal_point" | "confidence" | "variance" => {
+                    self.unsupported(&format!("focal blur ({k})"), t.span);
+                    self.parse_expr()?;
+                    if &**k == "blur_samples" && self.eat_sym(Sym::Comma)? {
+                        self.parse_expr()?;
+                    }
+                }
+                "normal" => {
+                    self.parse_normal_block(t.span)?;
+                }
+                "bokeh" => {
+                    self.unsupported(k, t.span);
+                    self.skip_block()?;
+                }
+                _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in camera"))),
+            }
+        }
+    }
+
+    fn starts_number(&mut self) -> PResult<bool> {
+        Ok(matches!(self.peek()?.map(|t| t.tok), Some(Tok::Num(_))))
+    }
+}
+
+/// Background colour when a scene sets none.
+pub const DEFAULT_BACKGROUND: Rgbft = Rgbft::BLACK;

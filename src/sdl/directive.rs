@@ -1,0 +1,363 @@
+//! Directives, executed the moment the token stream meets them, and macro invocation.
+
+use std::rc::Rc;
+
+use super::lexer::{Sym, Tok, Token};
+use super::parser::{Cond, FrameKind, PResult, Parser};
+use super::source::Span;
+use super::value::{MacroDef, Value};
+
+/// Directives that open a block closed by `#end`, for skipping nested blocks.
+fn opens_block(d: &str) -> bool {
+    matches!(d, "if" | "ifdef" | "ifndef" | "while" | "for" | "switch" | "macro")
+}
+
+/// Where a skip over inactive tokens stopped.
+enum SkipStop {
+    Else,
+    ElseIf,
+    End,
+}
+
+impl Parser {
+    pub(super) fn directive(&mut self, d: &str, span: Span) -> PResult<()> {
+        match d {
+            "declare" => self.declare(false, span),
+            "local" => self.declare(true, span),
+            "undef" => {
+                let name = self.raw_ident("after #undef")?;
+                for s in self.scopes.iter_mut().rev() {
+                    if s.remove(&*name).is_some() {
+                        break;
+                    }
+                }
+                Ok(())
+            }
+            "include" => {
+                let name = self.parse_string()?;
+                self.include(&name, span)
+            }
+            "version" => {
+                let v = self.parse_float()?;
+                self.eat_sym(Sym::Semi)?;
+                self.scene.version = Some(v);
+                Ok(())
+            }
+            "if" => {
+                let c = self.parse_float()?;
+                self.enter_if(c != 0.0, span)
+            }
+            "ifdef" | "ifndef" => {
+                self.expect_sym(Sym::LParen, &format!("after #{d}"))?;
+                let name = self.raw_ident(&format!("in #{d}"))?;
+                self.expect_sym(Sym::RParen, &format!("to close #{d}"))?;
+                let defined = self.lookup(&name).is_some();
+                self.enter_if(defined == (d == "ifdef"), span)
+            }
+            "else" | "elseif" => match self.conds.pop() {
+                Some(Cond::If { .. }) => self.skip_inactive(span, false).map(|_| ()),
+                _ => Err(self.error_at(span, format!("#{d} without a matching #if"))),
+            },
+            "end" => self.end_directive(span),
+            "while" => {
+                let cond_pos = self.frames.last().map_or(0, |f| f.pos);
+                let c = self.parse_float()?;
+                if c != 0.0 {
+                    let frame = self.frames.len() - 1;
+                    self.conds.push(Cond::While { frame, cond_pos });
+                    Ok(())
+                } else {
+                    self.skip_inactive(span, false).map(|_| ())
+                }
+            }
+            "for" => self.for_directive(span),
+            "macro" => self.define_macro(span),
+            "default" => self.default_directive(),
+            "debug" | "warning" | "error" => {
+                let msg = self.parse_string()?;
+                match d {
+                    "debug" => eprint!("{msg}"),
+                    "warning" => self.warn(span, format!("#warning: {msg}")),
+                    _ => return Err(self.error_at(span, format!("#error: {msg}"))),
+                }
+                Ok(())
+            }
+            "switch" | "case" | "range" | "break" | "fopen" | "fclose" | "read" | "write" => {
+                Err(self.error_at(span, format!("#{d} is not supported by lancer yet")))
+            }
+            _ => Err(self.error_at(span, format!("unknown directive #{d}"))),
+        }
+    }
+
+    /// An identifier read without expanding it (directive names, declared names).
+    pub(super) fn raw_ident(&mut self, context: &str) -> PResult<Rc<str>> {
+        let t = self.raw_peek()?.ok_or_else(|| self.eof_error())?;
+        if let Tok::Ident(n) = &t.tok {
+            self.advance();
+            return Ok(n.clone());
+        }
+        Err(self.error_at(t.span, format!("expected an identifier {context}, found {}", t.tok)))
+    }
+
+    fn enter_if(&mut self, taken: bool, span: Span) -> PResult<()> {
+        let frame = self.frames.len() - 1;
+        if taken {
+            self.conds.push(Cond::If { frame });
+            return Ok(());
+        }
+        loop {
+            match self.skip_inactive(span, true)? {
+                SkipStop::Else => {
+                    self.conds.push(Cond::If { frame });
+                    return Ok(());
+                }
+                SkipStop::ElseIf => {
+                    if self.parse_float()? != 0.0 {
+                        self.conds.push(Cond::If { frame });
+                        return Ok(());
+                    }
+                }
+                SkipStop::End => return Ok(()),
+            }
+        }
+    }
+
+    /// Skips raw tokens of an inactive branch or loop body up to the matching `#end` (or
+    /// `#else`/`#elseif` when `stop_at_else`), consuming the directive it stops at.
+    fn skip_inactive(&mut self, open: Span, stop_at_else: bool) -> PResult<SkipStop> {
+        let mut depth = 0usize;
+        loop {
+            let f = self.frames.last_mut().expect("a frame");
+            if f.pos >= f.end {
+                return Err(self.error_at(open, "this block has no matching #end before the end of its file or macro"));
+            }
+            let t = &f.tokens[f.pos];
+            f.pos += 1;
+            if let Tok::Directive(d) = &t.tok {
+                match &**d {
+                    x if opens_block(x) => depth += 1,
+                    "end" if depth == 0 => return Ok(SkipStop::End),
+                    "end" => depth -= 1,
+                    "else" if depth == 0 && stop_at_else => return Ok(SkipStop::Else),
+                    "elseif" if depth == 0 && stop_at_else => return Ok(SkipStop::ElseIf),
+                    _ => {}
+                }
+            }
+        }
+    }
+
+    fn end_directive(&mut self, span: Span) -> PResult<()> {
+        let depth = self.frames.len() - 1;
+        match self.conds.pop() {
+            Some(Cond::If { frame }) if frame == depth => Ok(()),
+            Some(Cond::While { frame, cond_pos }) if frame == depth => {
+                self.frames[frame].pos = cond_pos;
+                if self.parse_float()? != 0.0 {
+                    self.conds.push(Cond::While { frame, cond_pos });
+                    Ok(())
+                } else {
+                    self.skip_inactive(span, false).map(|_| ())
+                }
+            }
+            Some(Cond::For { frame, body_pos, var, end, step }) if frame == depth => {
+                let v = match self.lookup(&var) {
+                    Some(Value::Float(v)) => *v + step,
+                    _ => return Err(self.error_at(span, format!("the #for loop variable '{var}' was changed to a non-float inside the loop"))),
+                };
+                self.set_var(var.clone(), Value::Float(v), true);
+                if (step > 0.0 && v <= end) || (step < 0.0 && v >= end) {
+                    self.frames[frame].pos = body_pos;
+                    self.conds.push(Cond::For { frame, body_pos, var, end, step });
+                }
+                Ok(())
+            }
+            Some(c) => {
+                self.conds.push(c);
+                Err(self.error_at(span, "#end does not match a #if, #while or #for opened in this file or macro"))
+            }
+            None => Err(self.error_at(span, "#end without a matching #if, #while, #for or #macro")),
+        }
+    }
+
+    fn for_directive(&mut self, span: Span) -> PResult<()> {
+        self.expect_sym(Sym::LParen, "after #for")?;
+        let var = self.raw_ident("as the #for loop variable")?;
+        self.expect_sym(Sym::Comma, "after the #for variable")?;
+        let start = self.parse_float()?;
+        self.expect_sym(Sym::Comma, "after the #for start value")?;
+        let end = self.parse_float()?;
+        let step = if self.eat_sym(Sym::Comma)? { self.parse_float()? } else { 1.0 };
+        self.expect_sym(Sym::RParen, "to close #for")?;
+        if step == 0.0 {
+            return Err(self.error_at(span, "#for step is zero: the loop would never end"));
+        }
+        self.set_var(var.clone(), Value::Float(start), true);
+        if (step > 0.0 && start > end) || (step < 0.0 && start < end) {
+            return self.skip_inactive(span, false).map(|_| ());
+        }
+        let frame = self.frames.len() - 1;
+        let body_pos = self.frames[frame].pos;
+        self.conds.push(Cond::For { frame, body_pos, var, end, step });
+        Ok(())
+    }
+
+    /// `#local` binds in the innermost table; `#declare` updates a local that already holds
+    /// the name (so loops in macros work) and otherwise binds globally.
+    pub(super) fn set_var(&mut self, name: Rc<str>, v: Value, local: bool) {
+        let idx = if local {
+            self.scopes.len() - 1
+        } else {
+            (1..self.scopes.len()).rev().find(|&i| self.scopes[i].contains_key(&name)).unwrap_or(0)
+        };
+        self.scopes[idx].insert(name, v);
+    }
+
+    fn declare(&mut self, local: bool, _span: Span) -> PResult<()> {
+        let name = self.raw_ident(if local { "after #local" } else { "after #declare" })?;
+        self.expect_sym(Sym::Eq, &format!("after '{name}' in the declaration"))?;
+        let v = self.parse_rvalue()?;
+        // The semicolon is optional for objects and required by POV-Ray for numbers; accept it
+        // either way.
+        if self.raw_peek_sym()? == Some(Sym::Semi) {
+            self.advance();
+        }
+        self.set_var(name, v, local);
+        Ok(())
+    }
+
+    /// The right-hand side of a declaration or a macro argument: anything an identifier can hold.
+    pub(super) fn parse_rvalue(&mut self) -> PResult<Value> {
+        let t = self.peek()?.ok_or_else(|| self.eof_error())?;
+        let Tok::Ident(k) = &t.tok else { return self.parse_expr() };
+        if Self::object_parser(k).is_some() {
+            return Ok(Value::Object(Box::new(self.parse_object()?.expect("object keyword"))));
+        }
+        match &**k {
+            "pigment" => {
+                self.advance();
+                Ok(Value::Pigment(Box::new(self.parse_pigment_block(None)?)))
+            }
+            "finish" => {
+                self.advance();
+                Ok(Value::Finish(Box::new(self.parse_finish_block(None)?)))
+            }
+            "normal" => {
+                self.advance();
+                Ok(Value::Normal(Box::new(self.parse_normal_block(t.span)?)))
+            }
+            "texture" => {
+                self.advance();
+                Ok(Value::Texture(Box::new(self.parse_texture_block()?)))
+            }
+            "interior" => {
+                self.advance();
+                Ok(Value::Interior(Box::new(self.parse_interior_block()?)))
+            }
+            "camera" => {
+                self.advance();
+                Ok(Value::Camera(Box::new(self.parse_camera_block()?)))
+            }
+            "transform" => {
+                self.advance();
+                Ok(Value::Transform(self.parse_transform_block()?))
+            }
+            _ => match self.lookup(k) {
+                Some(v @ (Value::Object(_) | Value::Pigment(_) | Value::Finish(_) | Value::Normal(_) | Value::Texture(_) | Value::Interior(_) | Value::Camera(_) | Value::Transform(_))) => {
+                    let v = v.clone();
+                    self.advance();
+                    Ok(v)
+                }
+                _ => self.parse_expr(),
+            },
+        }
+    }
+
+    fn define_macro(&mut self, span: Span) -> PResult<()> {
+        let name = self.raw_ident("after #macro")?;
+        self.expect_sym(Sym::LParen, "after the macro name")?;
+        let mut params = Vec::new();
+        loop {
+            let t = self.raw_peek()?.ok_or_else(|| self.eof_error())?;
+            self.advance();
+            match &t.tok {
+                Tok::Sym(Sym::RParen) => break,
+                Tok::Sym(Sym::Comma) => {}
+                Tok::Ident(k) if &**k == "optional" => {
+                    let p = self.raw_ident("after 'optional'")?;
+                    params.push((p.to_string(), true));
+                }
+                Tok::Ident(p) => params.push((p.to_string(), false)),
+                other => return Err(self.error_at(t.span, format!("expected a parameter name in #macro {name}, found {other}"))),
+            }
+        }
+        let f = self.frames.last().expect("a frame");
+        let (tokens, body_start) = (f.tokens.clone(), f.pos);
+        self.skip_inactive(span, false)?;
+        let body_end = self.frames.last().expect("a frame").pos - 1;
+        let def = MacroDef { name: name.to_string(), params, tokens, body_start, body_end };
+        self.set_var(name, Value::Macro(Rc::new(def)), false);
+        Ok(())
+    }
+
+    pub(super) fn invoke_macro(&mut self, m: &Rc<MacroDef>, span: Span) -> PResult<()> {
+        self.expect_sym(Sym::LParen, &format!("after the macro name {}", m.name))?;
+        let mut args = Vec::new();
+        if !self.eat_sym(Sym::RParen)? {
+            loop {
+                // An empty argument leaves an optional parameter undefined.
+                if matches!(self.peek_sym()?, Some(Sym::Comma) | Some(Sym::RParen)) {
+                    args.push(None);
+                } else {
+                    args.push(Some(self.parse_rvalue()?));
+                }
+                if self.eat_sym(Sym::RParen)? {
+                    break;
+                }
+                self.expect_sym(Sym::Comma, "between macro arguments")?;
+            }
+        }
+        if args.len() > m.params.len() || m.params[args.len()..].iter().any(|p| !p.1) {
+            return Err(self.error_at(span, format!("macro {} takes {} parameters, {} given", m.name, m.params.len(), args.len())));
+        }
+        self.push_frame_range(m.tokens.clone(), m.body_start, m.body_end, FrameKind::Macro, Some((span, format!("in macro {} called from here", m.name).into())), true);
+        if self.frames.len() > 200 {
+            return Err(self.error_at(span, format!("too many nested macro calls (more than 200): does {} call itself without end?", m.name)));
+        }
+        let scope = self.scopes.last_mut().expect("macro scope");
+        for ((p, _), a) in m.params.iter().zip(args) {
+            if let Some(a) = a {
+                scope.insert(p.as_str().into(), a);
+            }
+        }
+        Ok(())
+    }
+
+    /// `#default { texture/pigment/finish }` changes what later objects start from.
+    fn default_directive(&mut self) -> PResult<()> {
+        self.expect_sym(Sym::LBrace, "after #default")?;
+        loop {
+            let t = self.next()?;
+            match &t.tok {
+                Tok::Sym(Sym::RBrace) => return Ok(()),
+                Tok::Ident(k) if &**k == "pigment" => {
+                    let base = self.scene.default_texture.pigment.clone();
+                    self.scene.default_texture.pigment = self.parse_pigment_block(Some(base))?;
+                }
+                Tok::Ident(k) if &**k == "finish" => {
+                    let base = self.scene.default_texture.finish.clone();
+                    self.scene.default_texture.finish = self.parse_finish_block(Some(base))?;
+                }
+                Tok::Ident(k) if &**k == "texture" => self.scene.default_texture = self.parse_texture_block()?,
+                Tok::Ident(k) if &**k == "normal" => {
+                    let n = self.parse_normal_block(t.span)?;
+                    self.scene.default_texture.normal = Some(n);
+                }
+                _ => return Err(self.unexpected(&t, "in #default")),
+            }
+        }
+    }
+
+    pub(super) fn unexpected(&self, t: &Token, context: &str) -> Box<super::super::diag::Diagnostic> {
+        self.error_at(t.span, format!("unexpected {} {context}", t.tok))
+    }
+}

@@ -1,0 +1,631 @@
+//! Expressions: floats, vectors, colours and strings, evaluated as they are parsed.
+//!
+//! Precedence from loosest: `?:`, `|`, `&`, comparisons, `+ -`, `* /`, unary `- + !`, then
+//! `.x`-style component access. Inside `< >` a bare `>` closes the vector.
+
+use std::rc::Rc;
+
+use crate::color::Rgbft;
+use crate::math::DVec3;
+
+use super::lexer::{Sym, Tok};
+use super::parser::{PResult, Parser};
+use super::source::Span;
+use super::value::Value;
+
+type Comp = ([f64; 5], u8);
+
+fn binop(a: Value, b: Value, f: impl Fn(f64, f64) -> f64) -> Option<Value> {
+    let (ca, na) = a.components()?;
+    let (cb, nb) = b.components()?;
+    let mut out = [0.0; 5];
+    for i in 0..5 {
+        out[i] = f(ca[i], cb[i]);
+    }
+    Some(match (&a, &b) {
+        (Value::Color(_), _) | (_, Value::Color(_)) => Value::Color(Rgbft::from_array(promote(out, na, nb))),
+        (Value::Float(_), Value::Float(_)) => Value::Float(out[0]),
+        _ => Value::Vector(promote(out, na, nb), na.max(nb)),
+    })
+}
+
+/// Components beyond a shorter vector's length are zero after promotion (floats fill all).
+fn promote(out: [f64; 5], _na: u8, _nb: u8) -> [f64; 5] {
+    out
+}
+
+fn pad(c: Comp, n: u8) -> [f64; 5] {
+    let (mut v, len) = c;
+    if len > 1 {
+        for x in v.iter_mut().skip(len as usize) {
+            *x = 0.0;
+        }
+    }
+    let _ = n;
+    v
+}
+
+impl Parser {
+    pub fn parse_expr(&mut self) -> PResult<Value> {
+        let c = self.parse_or()?;
+        if self.raw_peek_sym()? == Some(Sym::Question) {
+            self.advance();
+            let span = self.cur_span();
+            let cond = self.float_of(c, span)?;
+            let a = self.parse_expr()?;
+            self.expect_sym(Sym::Colon, "in the conditional expression ( ? : )")?;
+            let b = self.parse_expr()?;
+            return Ok(if cond != 0.0 { a } else { b });
+        }
+        Ok(c)
+    }
+
+    fn cur_span(&self) -> Span {
+        self.frames.last().and_then(|f| f.tokens.get(f.pos.saturating_sub(1))).map(|t| t.span).unwrap_or_default()
+    }
+
+    fn arith(&mut self, a: Value, b: Value, span: Span, f: impl Fn(f64, f64) -> f64) -> PResult<Value> {
+        let (ta, tb) = (a.type_name(), b.type_name());
+        if let (Value::Str(_), _) | (_, Value::Str(_)) = (&a, &b) {
+            return Err(self.error_at(span, format!("cannot do arithmetic on a {ta} and a {tb}")));
+        }
+        let (na, nb) = (a.components().map(|c| c.1), b.components().map(|c| c.1));
+        // Pad shorter vectors with zeros before combining (floats promote to every component).
+        let a = match (a, na, nb) {
+            (Value::Vector(c, n), _, Some(m)) if m > n && m > 1 => Value::Vector(pad((c, n), m), m),
+            (a, _, _) => a,
+        };
+        let b = match (b, nb, na) {
+            (Value::Vector(c, n), _, Some(m)) if m > n && m > 1 => Value::Vector(pad((c, n), m), m),
+            (b, _, _) => b,
+        };
+        binop(a, b, f).ok_or_else(|| self.error_at(span, format!("cannot do arithmetic on a {ta} and a {tb}")))
+    }
+
+    fn parse_or(&mut self) -> PResult<Value> {
+        let mut a = self.parse_and()?;
+        while self.raw_peek_sym()? == Some(Sym::Or) {
+            self.advance();
+            let span = self.cur_span();
+            let b = self.parse_and()?;
+            a = self.arith(a, b, span, |x, y| ((x != 0.0) || (y != 0.0)) as u8 as f64)?;
+        }
+        Ok(a)
+    }
+
+    fn parse_and(&mut self) -> PResult<Value> {
+        let mut a = self.parse_rel()?;
+        while self.raw_peek_sym()? == Some(Sym::And) {
+            self.advance();
+            let span = self.cur_span();
+            let b = self.parse_rel()?;
+            a = self.arith(a, b, span, |x, y| ((x != 0.0) && (y != 0.0)) as u8 as f64)?;
+        }
+        Ok(a)
+    }
+
+    fn parse_rel(&mut self) -> PResult<Value> {
+        let mut a = self.parse_add()?;
+        loop {
+            let op = match self.raw_peek_sym()? {
+                Some(s @ (Sym::Lt | Sym::Le | Sym::Eq | Sym::Ne | Sym::Ge)) => s,
+                Some(Sym::Gt) if !self.in_vector => Sym::Gt,
+                _ => return Ok(a),
+            };
+            self.advance();
+            let span = self.cur_span();
+            let b = self.parse_add()?;
+            if let (Value::Str(x), Value::Str(y)) = (&a, &b) {
+                let o = x.cmp(y);
+                let r = match op {
+                    Sym::Lt => o.is_lt(),
+                    Sym::Le => o.is_le(),
+                    Sym::Eq => o.is_eq(),
+                    Sym::Ne => o.is_ne(),
+                    Sym::Ge => o.is_ge(),
+                    _ => o.is_gt(),
+                };
+                a = Value::Float(r as u8 as f64);
+                continue;
+            }
+            let f = move |x: f64, y: f64| {
+                (match op {
+                    Sym::Lt => x < y,
+                    Sym::Le => x <= y,
+                    Sym::Eq => x == y,
+                    Sym::Ne => x != y,
+                    Sym::Ge => x >= y,
+                    _ => x > y,
+                }) as u8 as f64
+            };
+            a = self.arith(a, b, span, f)?;
+        }
+    }
+
+    fn parse_add(&mut self) -> PResult<Value> {
+        let mut a = self.parse_mul()?;
+        loop {
+            let op = self.raw_peek_sym()?;
+            if !matches!(op, Some(Sym::Plus) | Some(Sym::Minus)) {
+                return Ok(a);
+            }
+            self.advance();
+            let span = self.cur_span();
+            let b = self.parse_mul()?;
+            a = if op == Some(Sym::Plus) { self.arith(a, b, span, |x, y| x + y)? } else { self.arith(a, b, span, |x, y| x - y)? };
+        }
+    }
+
+    fn parse_mul(&mut self) -> PResult<Value> {
+        let mut a = self.parse_unary()?;
+        loop {
+            let op = self.raw_peek_sym()?;
+            if !matches!(op, Some(Sym::Star) | Some(Sym::Slash)) {
+                return Ok(a);
+            }
+            self.advance();
+            let span = self.cur_span();
+            let b = self.parse_unary()?;
+            a = if op == Some(Sym::Star) {
+                self.arith(a, b, span, |x, y| x * y)?
+            } else {
+                // POV-Ray divides by zero with a warning and a huge result; keep it finite.
+                self.arith(a, b, span, |x, y| if y == 0.0 { if x == 0.0 { 0.0 } else { x.signum() * 1e10 } } else { x / y })?
+            };
+        }
+    }
+
+    fn parse_unary(&mut self) -> PResult<Value> {
+        match self.peek_sym()? {
+            Some(Sym::Minus) => {
+                self.advance();
+                let span = self.cur_span();
+                let v = self.parse_unary()?;
+                self.arith(Value::Float(0.0), v, span, |x, y| x - y).map(|v| match v {
+                    // 0 - vector promoted the zero; that is a plain negation.
+                    other => other,
+                })
+            }
+            Some(Sym::Plus) => {
+                self.advance();
+                self.parse_unary()
+            }
+            Some(Sym::Bang) => {
+                self.advance();
+                let span = self.cur_span();
+                let v = self.parse_unary()?;
+                let f = self.float_of(v, span)?;
+                Ok(Value::Float((f == 0.0) as u8 as f64))
+            }
+            _ => self.parse_postfix(),
+        }
+    }
+
+    fn parse_postfix(&mut self) -> PResult<Value> {
+        let mut v = self.parse_primary()?;
+        while self.raw_peek_sym()? == Some(Sym::Dot) {
+            self.advance();
+            let t = self.next()?;
+            let Tok::Ident(k) = &t.tok else { return Err(self.error_at(t.span, format!("expected a component name after '.', found {}", t.tok))) };
+            let idx = match &**k {
+                "x" | "u" | "red" => 0,
+                "y" | "v" | "green" => 1,
+                "z" | "blue" => 2,
+                "t" | "filter" => 3,
+                "transmit" => 4,
+                "gray" | "grey" => {
+                    let Some((c, _)) = v.components() else { return Err(self.error_at(t.span, format!("'.{k}' needs a colour"))) };
+                    v = Value::Float(c[0] * 0.297 + c[1] * 0.589 + c[2] * 0.114);
+                    continue;
+                }
+                "hf" => {
+                    let Some((c, _)) = v.components() else { return Err(self.error_at(t.span, format!("'.{k}' needs a colour"))) };
+                    v = Value::Float(c[0] + c[1] / 255.0);
+                    continue;
+                }
+                _ => return Err(self.error_at(t.span, format!("unknown component '.{k}'"))),
+            };
+            match v.components() {
+                Some((c, n)) if n == 1 || idx < n as usize || matches!(v, Value::Color(_)) => v = Value::Float(c[idx]),
+                _ => return Err(self.error_at(t.span, format!("'.{k}' does not apply to a {}", v.type_name()))),
+            }
+        }
+        Ok(v)
+    }
+
+    fn parse_primary(&mut self) -> PResult<Value> {
+        let t = self.next()?;
+        match &t.tok {
+            Tok::Num(n) => Ok(Value::Float(*n)),
+            Tok::Str(s) => Ok(Value::Str(s.clone())),
+            Tok::Sym(Sym::LParen) => {
+                let saved = std::mem::replace(&mut self.in_vector, false);
+                let v = self.parse_expr();
+                self.in_vector = saved;
+                let v = v?;
+                self.expect_sym(Sym::RParen, "to close the parenthesis")?;
+                Ok(v)
+            }
+            Tok::Sym(Sym::Lt) => self.parse_vector_literal(),
+            Tok::Ident(k) => self.parse_ident_value(k.clone(), t.span),
+            _ => Err(self.error_at(t.span, format!("expected a value (number, vector, colour or identifier), found {}", t.tok))),
+        }
+    }
+
+    fn parse_vector_literal(&mut self) -> PResult<Value> {
+        let saved = std::mem::replace(&mut self.in_vector, true);
+        let r = (|| {
+            let mut c = [0.0; 5];
+            let mut n = 0usize;
+            loop {
+                let span = self.cur_span();
+                let v = self.parse_expr()?;
+                if n == 5 {
+                    return Err(self.error_at(span, "a vector has at most 5 components"));
+                }
+                c[n] = self.float_of(v, span)?;
+                n += 1;
+                match self.next()? {
+                    t if t.tok == Tok::Sym(Sym::Comma) => {}
+                    t if t.tok == Tok::Sym(Sym::Gt) => break,
+                    t => return Err(self.error_at(t.span, format!("expected ',' or '>' in the vector, found {}", t.tok))),
+                }
+            }
+            if n < 2 {
+                let span = self.cur_span();
+                return Err(self.error_at(span, "a vector needs at least 2 components"));
+            }
+            Ok(Value::Vector(c, n as u8))
+        })();
+        self.in_vector = saved;
+        r
+    }
+
+    fn parse_ident_value(&mut self, k: Rc<str>, span: Span) -> PResult<Value> {
+        if let Some(v) = self.lookup(&k) {
+            return Ok(v.clone());
+        }
+        let f = |x: f64| Ok(Value::Float(x));
+        match &*k {
+            "x" => Ok(Value::vec3(DVec3::X)),
+            "y" => Ok(Value::vec3(DVec3::Y)),
+            "z" => Ok(Value::vec3(DVec3::Z)),
+            "t" => Ok(Value::Vector([0.0, 0.0, 0.0, 1.0, 0.0], 4)),
+            "u" => Ok(Value::Vector([1.0, 0.0, 0.0, 0.0, 0.0], 2)),
+            "v" => Ok(Value::Vector([0.0, 1.0, 0.0, 0.0, 0.0], 2)),
+            "pi" => f(std::f64::consts::PI),
+            "tau" => f(std::f64::consts::TAU),
+            "true" | "on" | "yes" => f(1.0),
+            "false" | "off" | "no" => f(0.0),
+            "image_width" => f(self.options.image_width as f64),
+            "image_height" => f(self.options.image_height as f64),
+            "clock" => f(self.options.clock),
+            "clock_on" => f(0.0),
+            "clock_delta" => f(1.0),
+            "frame_number" | "initial_frame" | "final_frame" => f(0.0),
+            "initial_clock" | "final_clock" => f(0.0),
+            "version" => f(self.scene.version.unwrap_or(3.7)),
+            "color" | "colour" => self.parse_color_body(),
+            "rgb" | "rgbf" | "rgbt" | "rgbft" | "srgb" | "srgbf" | "srgbt" | "srgbft" => {
+                let vspan = self.cur_span();
+                let v = self.parse_expr()?;
+                self.color_from(&k, v, vspan).map(Value::Color)
+            }
+            "red" | "green" | "blue" | "filter" | "transmit" => {
+                // `color red 1 green 0.5`: start from black and set components.
+                self.color_components(Rgbft::BLACK, Some(k)).map(Value::Color)
+            }
+            _ => self.builtin_call(&k, span),
+        }
+    }
+
+    /// After `color`/`colour`: a base expression and any `red 1`, `filter 0.5`, ... modifiers.
+    pub(super) fn parse_color_body(&mut self) -> PResult<Value> {
+        let base = match self.peek_ident()?.as_deref() {
+            Some("red" | "green" | "blue" | "filter" | "transmit") => Rgbft::BLACK,
+            _ => {
+                let span = self.cur_span();
+                let v = self.parse_expr()?;
+                self.color_of(v, span)?
+            }
+        };
+        self.color_components(base, None).map(Value::Color)
+    }
+
+    fn color_components(&mut self, mut c: Rgbft, mut pending: Option<Rc<str>>) -> PResult<Rgbft> {
+        loop {
+            let k = match pending.take() {
+                Some(k) => k,
+                None => match self.peek_ident()?.as_deref() {
+                    Some(k @ ("red" | "green" | "blue" | "filter" | "transmit")) => {
+                        let k: Rc<str> = k.into();
+                        self.advance();
+                        k
+                    }
+                    _ => return Ok(c),
+                },
+            };
+            let x = self.parse_float()?;
+            match &*k {
+                "red" => c.rgb.x = x,
+                "green" => c.rgb.y = x,
+                "blue" => c.rgb.z = x,
+                "filter" => c.filter = x,
+                _ => c.transmit = x,
+            }
+        }
+    }
+
+    /// `rgb v` and friends: promotion by the keyword's component count; `srgb` decodes sRGB.
+    fn color_from(&self, kw: &str, v: Value, span: Span) -> PResult<Rgbft> {
+        let Some((c, n)) = v.components() else { return Err(self.error_at(span, format!("'{kw}' needs a number or vector, found a {}", v.type_name()))) };
+        let c = if n == 1 { [c[0]; 5] } else { pad((c, n), 5) };
+        let base = kw.trim_start_matches('s');
+        let (f, t) = match base {
+            "rgb" => (0.0, 0.0),
+            "rgbf" => (c[3], 0.0),
+            "rgbt" => (0.0, c[3]),
+            _ => (c[3], c[4]),
+        };
+        let mut out = Rgbft::new(c[0], c[1], c[2], f, t);
+        if kw.starts_with('s') {
+            out.rgb = DVec3::new(srgb_decode(c[0]), srgb_decode(c[1]), srgb_decode(c[2]));
+        }
+        Ok(out)
+    }
+
+    pub fn color_of(&self, v: Value, span: Span) -> PResult<Rgbft> {
+        match v {
+            Value::Color(c) => Ok(c),
+            Value::Float(f) => Ok(Rgbft::new(f, f, f, f, f)),
+            Value::Vector(c, n) => Ok(Rgbft::from_array(pad((c, n), 5))),
+            other => Err(self.error_at(span, format!("expected a colour, found a {}", other.type_name()))),
+        }
+    }
+
+    pub fn float_of(&self, v: Value, span: Span) -> PResult<f64> {
+        match v {
+            Value::Float(f) => Ok(f),
+            // POV-Ray takes the first component when a colour or vector stands for a float.
+            Value::Color(c) => Ok(c.rgb.x),
+            other => Err(self.error_at(span, format!("expected a float, found a {}", other.type_name()))),
+        }
+    }
+
+    pub fn parse_float(&mut self) -> PResult<f64> {
+        let span = self.next_span()?;
+        let v = self.parse_expr()?;
+        self.float_of(v, span)
+    }
+
+    /// Span of the next token, for messages about the value that starts there.
+    pub(super) fn next_span(&mut self) -> PResult<Span> {
+        Ok(self.peek()?.map(|t| t.span).unwrap_or_default())
+    }
+
+    pub fn parse_vector(&mut self) -> PResult<DVec3> {
+        let span = self.next_span()?;
+        let v = self.parse_expr()?;
+        match v {
+            Value::Float(f) => Ok(DVec3::splat(f)),
+            Value::Vector(c, n) => {
+                let c = pad((c, n), 3);
+                Ok(DVec3::new(c[0], c[1], c[2]))
+            }
+            Value::Color(c) => Ok(c.rgb),
+            other => Err(self.error_at(span, format!("expected a vector, found a {}", other.type_name()))),
+        }
+    }
+
+    pub fn parse_string(&mut self) -> PResult<String> {
+        let span = self.next_span()?;
+        match self.parse_expr()? {
+            Value::Str(s) => Ok(s.to_string()),
+            other => Err(self.error_at(span, format!("expected a string, found a {}", other.type_name()))),
+        }
+    }
+
+    /// A colour where the grammar wants one: `color ...`, `rgb ...`, an identifier or an
+    /// expression, followed by optional component modifiers.
+    pub fn parse_color(&mut self) -> PResult<Rgbft> {
+        if self.eat_keyword("color")? || self.eat_keyword("colour")? {
+            let span = self.cur_span();
+            let v = self.parse_color_body()?;
+            return self.color_of(v, span);
+        }
+        let span = self.next_span()?;
+        let v = self.parse_expr()?;
+        let c = self.color_of(v, span)?;
+        self.color_components(c, None)
+    }
+
+    fn builtin_call(&mut self, name: &str, span: Span) -> PResult<Value> {
+        let arity: usize = match name {
+            "sin" | "cos" | "tan" | "asin" | "acos" | "sqrt" | "exp" | "log" | "ln" | "abs" | "floor" | "ceil" | "int" | "radians" | "degrees" | "vlength" | "vnormalize" | "sinh" | "cosh"
+            | "tanh" | "asinh" | "acosh" | "atanh" | "strlen" | "val" | "str_len" | "defined" => 1,
+            "atan2" | "pow" | "mod" | "div" | "vdot" | "vcross" | "vrotate" | "min" | "max" | "atan" | "select" | "vaxis_rotate" | "str" | "concat" | "vstr" | "substr" | "chr" | "asc" => 0,
+            _ => return Err(self.error_at(span, format!("undeclared identifier '{name}'"))),
+        };
+        self.expect_sym(Sym::LParen, &format!("after the function name {name}"))?;
+        let mut args: Vec<(Value, Span)> = Vec::new();
+        if !self.eat_sym(Sym::RParen)? {
+            loop {
+                let s = self.next_span()?;
+                let saved = std::mem::replace(&mut self.in_vector, false);
+                let v = self.parse_expr();
+                self.in_vector = saved;
+                args.push((v?, s));
+                if self.eat_sym(Sym::RParen)? {
+                    break;
+                }
+                self.expect_sym(Sym::Comma, &format!("between the arguments of {name}"))?;
+            }
+        }
+        let want = |n: usize| -> PResult<()> {
+            if args.len() == n {
+                Ok(())
+            } else {
+                Err(self.error_at(span, format!("{name} takes {n} argument(s), {} given", args.len())))
+            }
+        };
+        if arity == 1 {
+            want(1)?;
+        }
+        let fl = |p: &Parser, i: usize| p.float_of(args[i].0.clone(), args[i].1);
+        let ve = |p: &Parser, i: usize| -> PResult<DVec3> {
+            match &args[i].0 {
+                Value::Float(f) => Ok(DVec3::splat(*f)),
+                Value::Vector(c, _) => Ok(DVec3::new(c[0], c[1], c[2])),
+                Value::Color(c) => Ok(c.rgb),
+                o => Err(p.error_at(args[i].1, format!("{name} needs a vector, found a {}", o.type_name()))),
+            }
+        };
+        let r = |x: f64| Ok(Value::Float(x));
+        match name {
+            "sin" => r(fl(self, 0)?.sin()),
+            "cos" => r(fl(self, 0)?.cos()),
+            "tan" => r(fl(self, 0)?.tan()),
+            "asin" => r(fl(self, 0)?.clamp(-1.0, 1.0).asin()),
+            "acos" => r(fl(self, 0)?.clamp(-1.0, 1.0).acos()),
+            "sinh" => r(fl(self, 0)?.sinh()),
+            "cosh" => r(fl(self, 0)?.cosh()),
+            "tanh" => r(fl(self, 0)?.tanh()),
+            "asinh" => r(fl(self, 0)?.asinh()),
+            "acosh" => r(fl(self, 0)?.acosh()),
+            "atanh" => r(fl(self, 0)?.atanh()),
+            "sqrt" => r(fl(self, 0)?.sqrt()),
+            "exp" => r(fl(self, 0)?.exp()),
+            "log" => r(fl(self, 0)?.log10()),
+            "ln" => r(fl(self, 0)?.ln()),
+            "abs" => match &args[0].0 {
+                Value::Float(f) => r(f.abs()),
+                Value::Vector(c, n) => Ok(Value::Vector(c.map(f64::abs), *n)),
+                o => Err(self.error_at(args[0].1, format!("abs needs a number, found a {}", o.type_name()))),
+            },
+            "floor" => r(fl(self, 0)?.floor()),
+            "ceil" => r(fl(self, 0)?.ceil()),
+            "int" => r(fl(self, 0)?.trunc()),
+            "radians" => r(fl(self, 0)?.to_radians()),
+            "degrees" => r(fl(self, 0)?.to_degrees()),
+            "vlength" => r(ve(self, 0)?.length()),
+            "vnormalize" => {
+                let v = ve(self, 0)?;
+                Ok(Value::vec3(if v == DVec3::ZERO { v } else { v.normalize() }))
+            }
+            "strlen" | "str_len" => match &args[0].0 {
+                Value::Str(s) => r(s.chars().count() as f64),
+                o => Err(self.error_at(args[0].1, format!("strlen needs a string, found a {}", o.type_name()))),
+            },
+            "atan" if args.len() == 1 => r(fl(self, 0)?.atan()),
+            "atan" | "atan2" => {
+                want(2)?;
+                r(fl(self, 0)?.atan2(fl(self, 1)?))
+            }
+            "pow" => {
+                want(2)?;
+                r(fl(self, 0)?.powf(fl(self, 1)?))
+            }
+            "mod" => {
+                want(2)?;
+                let (a, b) = (fl(self, 0)?, fl(self, 1)?);
+                r(if b == 0.0 { 0.0 } else { a % b })
+            }
+            "div" => {
+                want(2)?;
+                let (a, b) = (fl(self, 0)?, fl(self, 1)?);
+                r(if b == 0.0 { 0.0 } else { (a / b).trunc() })
+            }
+            "vdot" => {
+                want(2)?;
+                r(ve(self, 0)?.dot(ve(self, 1)?))
+            }
+            "vcross" => {
+                want(2)?;
+                Ok(Value::vec3(ve(self, 0)?.cross(ve(self, 1)?)))
+            }
+            "vrotate" => {
+                want(2)?;
+                Ok(Value::vec3(crate::math::Transform::rotate(ve(self, 1)?).point(ve(self, 0)?)))
+            }
+            "vaxis_rotate" => {
+                want(3)?;
+                let (p, axis, ang) = (ve(self, 0)?, ve(self, 1)?, fl(self, 2)?);
+                if axis == DVec3::ZERO {
+                    return Ok(Value::vec3(p));
+                }
+                // POV-Ray's angle sense is the left-handed one, which is glam's right-handed
+                // rotation with the same sign (see math::Transform::rotate).
+                let m = glam::DMat3::from_axis_angle(axis.normalize(), ang.to_radians());
+                Ok(Value::vec3(m * p))
+            }
+            "min" | "max" => {
+                if args.is_empty() {
+                    return Err(self.error_at(span, format!("{name} needs at least one argument")));
+                }
+                let mut acc = fl(self, 0)?;
+                for i in 1..args.len() {
+                    let x = fl(self, i)?;
+                    acc = if name == "min" { acc.min(x) } else { acc.max(x) };
+                }
+                r(acc)
+            }
+            "select" => {
+                if args.len() != 3 && args.len() != 4 {
+                    return Err(self.error_at(span, "select takes 3 or 4 arguments"));
+                }
+                let a = fl(self, 0)?;
+                let pick = if a < 0.0 {
+                    1
+                } else if args.len() == 3 || a > 0.0 {
+                    if args.len() == 3 {
+                        2
+                    } else {
+                        3
+                    }
+                } else {
+                    2
+                };
+                Ok(args[pick].0.clone())
+            }
+            "str" => {
+                want(3)?;
+                let (v, w, p) = (fl(self, 0)?, fl(self, 1)?, fl(self, 2)?);
+                Ok(Value::Str(format_str(v, w as i64, p as i64).into()))
+            }
+            "concat" => {
+                let mut s = String::new();
+                for (v, sp) in &args {
+                    match v {
+                        Value::Str(x) => s.push_str(x),
+                        o => return Err(self.error_at(*sp, format!("concat needs strings, found a {}", o.type_name()))),
+                    }
+                }
+                Ok(Value::Str(s.into()))
+            }
+            "chr" => {
+                want(1)?;
+                Ok(Value::Str(char::from_u32(fl(self, 0)? as u32).unwrap_or(' ').to_string().into()))
+            }
+            _ => Err(self.error_at(span, format!("the function {name} is not supported by lancer yet"))),
+        }
+    }
+}
+
+/// POV-Ray's `str(value, width, precision)`.
+fn format_str(v: f64, w: i64, p: i64) -> String {
+    let s = if p < 0 { format!("{v}") } else { format!("{v:.*}", p as usize) };
+    let w = w.unsigned_abs() as usize;
+    if s.len() < w {
+        format!("{s:>w$}")
+    } else {
+        s
+    }
+}
+
+fn srgb_decode(c: f64) -> f64 {
+    if c <= 0.04045 {
+        c / 12.92
+    } else {
+        ((c + 0.055) / 1.055).powf(2.4)
+    }
+}

@@ -1,0 +1,29 @@
+//! The POV-Ray scene description language: lexer, token stream and the one parser that
+//! executes directives as it reads.
+
+pub mod camera;
+pub mod directive;
+pub mod expr;
+pub mod lexer;
+pub mod object;
+pub mod parser;
+pub mod source;
+pub mod texture;
+pub mod value;
+
+use crate::scene::desc::{CameraDesc, GlobalSettings, SceneDesc, Texture};
+
+pub use parser::{ParseOptions, Parser};
+
+pub fn default_scene() -> SceneDesc {
+    SceneDesc {
+        camera: CameraDesc::default(),
+        lights: Vec::new(),
+        objects: Vec::new(),
+        background: camera::DEFAULT_BACKGROUND,
+        sky_sphere: None,
+        global: GlobalSettings::default(),
+        default_texture: Texture::default(),
+        version: None,
+    }
+}

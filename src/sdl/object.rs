@@ -1,0 +1,521 @@
+//! Object statements: the keyword table, each primitive's parameters, CSG, meshes and the
+//! modifiers every object accepts.
+
+use std::sync::Arc;
+
+use crate::math::{DVec3, Transform};
+use crate::scene::desc::{CsgOp, LightDesc, MeshData, MeshTriangle, ObjectDesc, ShapeDesc, Texture};
+
+use super::lexer::{Sym, Tok};
+use super::parser::{PResult, Parser};
+use super::source::Span;
+use super::value::Value;
+
+type ObjectFn = fn(&mut Parser, Span) -> PResult<ObjectDesc>;
+
+/// Objects POV-Ray 3.7 has that lancer reads past (with a warning) but does not render yet.
+const UNSUPPORTED_OBJECTS: &[&str] = &[
+    "bicubic_patch",
+    "blob",
+    "cubic",
+    "height_field",
+    "isosurface",
+    "julia_fractal",
+    "lathe",
+    "lemon",
+    "ovus",
+    "parametric",
+    "poly",
+    "polygon",
+    "polynomial",
+    "prism",
+    "quadric",
+    "quartic",
+    "sor",
+    "sphere_sweep",
+    "superellipsoid",
+    "text",
+    "mesh2",
+];
+
+impl Parser {
+    pub(super) fn object_parser(k: &str) -> Option<ObjectFn> {
+        Some(match k {
+            "sphere" => Parser::sphere,
+            "plane" => Parser::plane,
+            "box" => Parser::box_object,
+            "cylinder" => Parser::cylinder,
+            "cone" => Parser::cone,
+            "disc" => Parser::disc,
+            "torus" => Parser::torus,
+            "triangle" => Parser::triangle,
+            "smooth_triangle" => Parser::smooth_triangle,
+            "mesh" => Parser::mesh,
+            "union" => |p, s| p.csg(CsgOp::Union, s),
+            "merge" => |p, s| p.csg(CsgOp::Merge, s),
+            "intersection" => |p, s| p.csg(CsgOp::Intersection, s),
+            "difference" => |p, s| p.csg(CsgOp::Difference, s),
+            "object" => Parser::object_ref,
+            "light_source" => Parser::light_source,
+            k if UNSUPPORTED_OBJECTS.contains(&k) => Parser::unsupported_object,
+            _ => return None,
+        })
+    }
+
+    /// Parses an object if the next token starts one.
+    pub fn parse_object(&mut self) -> PResult<Option<ObjectDesc>> {
+        let Some(t) = self.peek()? else { return Ok(None) };
+        let Tok::Ident(k) = &t.tok else { return Ok(None) };
+        let Some(f) = Self::object_parser(k) else { return Ok(None) };
+        self.advance();
+        f(self, t.span).map(Some)
+    }
+
+    fn open_brace(&mut self, what: &str) -> PResult<Span> {
+        self.expect_sym(Sym::LBrace, &format!("after '{what}'"))
+    }
+
+    /// Parses modifiers up to and including the closing brace.
+    fn finish_object(&mut self, mut obj: ObjectDesc, open: Span) -> PResult<ObjectDesc> {
+        loop {
+            let Some(t) = self.peek()? else { return Err(self.error_at(open, "this '{' is never closed")) };
+            match &t.tok {
+                Tok::Sym(Sym::RBrace) => {
+                    self.advance();
+                    return Ok(obj);
+                }
+                Tok::Ident(k) => {
+                    let k = k.clone();
+                    self.advance();
+                    if !self.object_modifier(&mut obj, &k, t.span)? {
+                        return Err(self.error_at(t.span, format!("'{k}' is not an object modifier; expected a modifier or '}}'")));
+                    }
+                }
+                _ => return Err(self.unexpected(&t, "in the object; expected a modifier or '}'")),
+            }
+        }
+    }
+
+    fn texture_mut(&mut self, obj: &mut ObjectDesc) -> Texture {
+        obj.texture.take().unwrap_or_else(|| self.scene.default_texture.clone())
+    }
+
+    /// One object modifier whose keyword was just consumed; false when `k` is not one.
+    pub(super) fn object_modifier(&mut self, obj: &mut ObjectDesc, k: &str, span: Span) -> PResult<bool> {
+        if let Some(t) = self.transform_item(k)? {
+            obj.apply_transform(&t);
+            return Ok(true);
+        }
+        match k {
+            "texture" => {
+                if obj.texture.is_some() {
+                    self.unsupported("layered textures (the last texture is used)", span);
+                }
+                obj.texture = Some(self.parse_texture_block()?);
+            }
+            "pigment" => {
+                let mut tex = self.texture_mut(obj);
+                tex.pigment = self.parse_pigment_block(Some(tex.pigment.clone()))?;
+                obj.texture = Some(tex);
+            }
+            "finish" => {
+                let mut tex = self.texture_mut(obj);
+                tex.finish = self.parse_finish_block(Some(tex.finish.clone()))?;
+                obj.texture = Some(tex);
+            }
+            "normal" => {
+                let mut tex = self.texture_mut(obj);
+                tex.normal = Some(self.parse_normal_block(span)?);
+                obj.texture = Some(tex);
+            }
+            "interior" => obj.interior = Some(self.parse_interior_block()?),
+            "material" => self.material(obj)?,
+            "no_shadow" => obj.no_shadow = true,
+            "inverse" => obj.inverse = !obj.inverse,
+            "hollow" => obj.hollow = Some(self.optional_bool()?),
+            "open" => match &mut obj.shape {
+                ShapeDesc::Cylinder { open, .. } | ShapeDesc::Cone { open, .. } => *open = true,
+                _ => self.warn(span, "'open' only applies to cylinders and cones; ignored"),
+            },
+            "sturm" => {
+                if let ShapeDesc::Torus { sturm, .. } = &mut obj.shape {
+                    *sturm = self.optional_bool()?;
+                }
+            }
+            // Bounding only speeds POV-Ray up; lancer builds its own bounds.
+            "bounded_by" => self.skip_block()?,
+            "split_union" | "double_illuminate" | "no_image" | "no_reflection" | "no_radiosity" => {
+                if k == "split_union" {
+                    self.optional_bool()?;
+                } else {
+                    self.optional_bool()?;
+                    self.unsupported(k, span);
+                }
+            }
+            "photons" | "radiosity" => self.skip_block()?,
+            "clipped_by" => {
+                self.unsupported(k, span);
+                self.skip_block()?;
+            }
+            "uv_mapping" => self.unsupported(k, span),
+            _ => return Ok(false),
+        }
+        Ok(true)
+    }
+
+    /// `on`/`off`/a float after a flag keyword, or true when nothing numeric follows.
+    fn optional_bool(&mut self) -> PResult<bool> {
+        match self.peek()?.map(|t| t.tok) {
+            Some(Tok::Num(_)) => Ok(self.parse_float()? != 0.0),
+            Some(Tok::Ident(k)) if matches!(&*k, "on" | "off" | "true" | "false" | "yes" | "no") => Ok(self.parse_float()? != 0.0),
+            _ => Ok(true),
+        }
+    }
+
+    fn material(&mut self, obj: &mut ObjectDesc) -> PResult<()> {
+        let open = self.open_brace("material")?;
+        loop {
+            let t = self.next()?;
+            match &t.tok {
+                Tok::Sym(Sym::RBrace) => return Ok(()),
+                Tok::Ident(k) if &**k == "texture" => obj.texture = Some(self.parse_texture_block()?),
+                Tok::Ident(k) if &**k == "interior" => obj.interior = Some(self.parse_interior_block()?),
+                Tok::Ident(k) => {
+                    if let Some(tr) = self.transform_item(k)? {
+                        if let Some(tex) = &mut obj.texture {
+                            tex.apply_transform(&tr);
+                        }
+                    } else if !matches!(self.lookup(k), Some(Value::Texture(_))) {
+                        return Err(self.error_at(t.span, format!("unexpected '{k}' in material")));
+                    }
+                }
+                _ => return Err(self.error_at(open, format!("unexpected {} in material", t.tok))),
+            }
+        }
+    }
+
+    /// A transformation keyword just consumed: translate, rotate, scale, matrix, transform.
+    pub(super) fn transform_item(&mut self, k: &str) -> PResult<Option<Transform>> {
+        Ok(Some(match k {
+            "translate" => Transform::translate(self.parse_vector()?),
+            "rotate" => Transform::rotate(self.parse_vector()?),
+            "scale" => {
+                let span = self.next_span()?;
+                let v = self.parse_vector()?;
+                if v.x == 0.0 || v.y == 0.0 || v.z == 0.0 {
+                    self.warn(span, "scale by 0 is changed to 1, as POV-Ray does");
+                }
+                Transform::scale(v)
+            }
+            "matrix" => {
+                self.expect_sym(Sym::Lt, "after 'matrix'")?;
+                let saved = std::mem::replace(&mut self.in_vector, true);
+                let mut v = [0.0; 12];
+                let mut r = Ok(());
+                for (i, x) in v.iter_mut().enumerate() {
+                    if i > 0 {
+                        if let Err(e) = self.expect_sym(Sym::Comma, "between the twelve matrix values") {
+                            r = Err(e);
+                            break;
+                        }
+                    }
+                    match self.parse_float() {
+                        Ok(f) => *x = f,
+                        Err(e) => {
+                            r = Err(e);
+                            break;
+                        }
+                    }
+                }
+                self.in_vector = saved;
+                r?;
+                self.expect_sym(Sym::Gt, "to close the matrix")?;
+                Transform::pov_matrix(&v)
+            }
+            "transform" => {
+                if self.peek_sym()? == Some(Sym::LBrace) {
+                    self.parse_transform_block()?
+                } else {
+                    let t = self.next()?;
+                    match &t.tok {
+                        Tok::Ident(n) => match self.lookup(n) {
+                            Some(Value::Transform(tr)) => *tr,
+                            _ => return Err(self.error_at(t.span, format!("'{n}' is not a transform"))),
+                        },
+                        _ => return Err(self.unexpected(&t, "after 'transform'")),
+                    }
+                }
+            }
+            _ => return Ok(None),
+        }))
+    }
+
+    pub(super) fn parse_transform_block(&mut self) -> PResult<Transform> {
+        self.open_brace("transform")?;
+        let mut acc = Transform::IDENTITY;
+        loop {
+            let t = self.next()?;
+            match &t.tok {
+                Tok::Sym(Sym::RBrace) => return Ok(acc),
+                Tok::Ident(k) if &**k == "inverse" => acc = acc.inverse(),
+                Tok::Ident(k) => {
+                    if let Some(Value::Transform(tr)) = self.lookup(k) {
+                        acc = acc.then(&tr.clone());
+                    } else if let Some(tr) = self.transform_item(k)? {
+                        acc = acc.then(&tr);
+                    } else {
+                        return Err(self.unexpected(&t, "in transform"));
+                    }
+                }
+                _ => return Err(self.unexpected(&t, "in transform")),
+            }
+        }
+    }
+
+    fn sphere(&mut self, _s: Span) -> PResult<ObjectDesc> {
+        let open = self.open_brace("sphere")?;
+        let center = self.parse_vector()?;
+        self.expect_sym(Sym::Comma, "after the sphere's centre")?;
+        let radius = self.parse_float()?;
+        self.finish_object(ObjectDesc::new(ShapeDesc::Sphere { center, radius }), open)
+    }
+
+    fn plane(&mut self, _s: Span) -> PResult<ObjectDesc> {
+        let open = self.open_brace("plane")?;
+        let normal = self.parse_vector()?;
+        self.expect_sym(Sym::Comma, "after the plane's normal")?;
+        let distance = self.parse_float()?;
+        self.finish_object(ObjectDesc::new(ShapeDesc::Plane { normal, distance }), open)
+    }
+
+    fn box_object(&mut self, _s: Span) -> PResult<ObjectDesc> {
+        let open = self.open_brace("box")?;
+        let corner1 = self.parse_vector()?;
+        self.expect_sym(Sym::Comma, "after the box's first corner")?;
+        let corner2 = self.parse_vector()?;
+        self.finish_object(ObjectDesc::new(ShapeDesc::Box { corner1, corner2 }), open)
+    }
+
+    fn cylinder(&mut self, _s: Span) -> PResult<ObjectDesc> {
+        let open_b = self.open_brace("cylinder")?;
+        let base = self.parse_vector()?;
+        self.expect_sym(Sym::Comma, "after the cylinder's base point")?;
+        let cap = self.parse_vector()?;
+        self.expect_sym(Sym::Comma, "after the cylinder's cap point")?;
+        let radius = self.parse_float()?;
+        self.finish_object(ObjectDesc::new(ShapeDesc::Cylinder { base, cap, radius, open: false }), open_b)
+    }
+
+    fn cone(&mut self, _s: Span) -> PResult<ObjectDesc> {
+        let open_b = self.open_brace("cone")?;
+        let base = self.parse_vector()?;
+        self.expect_sym(Sym::Comma, "after the cone's base point")?;
+        let base_radius = self.parse_float()?;
+        self.expect_sym(Sym::Comma, "after the cone's base radius")?;
+        let cap = self.parse_vector()?;
+        self.expect_sym(Sym::Comma, "after the cone's cap point")?;
+        let cap_radius = self.parse_float()?;
+        self.finish_object(ObjectDesc::new(ShapeDesc::Cone { base, base_radius, cap, cap_radius, open: false }), open_b)
+    }
+
+    fn disc(&mut self, _s: Span) -> PResult<ObjectDesc> {
+        let open = self.open_brace("disc")?;
+        let center = self.parse_vector()?;
+        self.expect_sym(Sym::Comma, "after the disc's centre")?;
+        let normal = self.parse_vector()?;
+        self.expect_sym(Sym::Comma, "after the disc's normal")?;
+        let radius = self.parse_float()?;
+        let hole_radius = if self.eat_sym(Sym::Comma)? { self.parse_float()? } else { 0.0 };
+        self.finish_object(ObjectDesc::new(ShapeDesc::Disc { center, normal, radius, hole_radius }), open)
+    }
+
+    fn torus(&mut self, _s: Span) -> PResult<ObjectDesc> {
+        let open = self.open_brace("torus")?;
+        let major = self.parse_float()?;
+        self.expect_sym(Sym::Comma, "after the torus' major radius")?;
+        let minor = self.parse_float()?;
+        self.finish_object(ObjectDesc::new(ShapeDesc::Torus { major, minor, sturm: false }), open)
+    }
+
+    fn three_points(&mut self, what: &str, with_normals: bool) -> PResult<([DVec3; 3], [DVec3; 3])> {
+        let mut p = [DVec3::ZERO; 3];
+        let mut n = [DVec3::ZERO; 3];
+        for i in 0..3 {
+            if i > 0 {
+                self.expect_sym(Sym::Comma, &format!("between the {what}'s points"))?;
+            }
+            p[i] = self.parse_vector()?;
+            if with_normals {
+                self.expect_sym(Sym::Comma, &format!("after a {what} point"))?;
+                n[i] = self.parse_vector()?;
+            }
+        }
+        Ok((p, n))
+    }
+
+    fn triangle(&mut self, _s: Span) -> PResult<ObjectDesc> {
+        let open = self.open_brace("triangle")?;
+        let (p, _) = self.three_points("triangle", false)?;
+        self.finish_object(ObjectDesc::new(ShapeDesc::Triangle { p }), open)
+    }
+
+    fn smooth_triangle(&mut self, _s: Span) -> PResult<ObjectDesc> {
+        let open = self.open_brace("smooth_triangle")?;
+        let (p, n) = self.three_points("smooth_triangle", true)?;
+        self.finish_object(ObjectDesc::new(ShapeDesc::SmoothTriangle { p, n }), open)
+    }
+
+    fn mesh(&mut self, _s: Span) -> PResult<ObjectDesc> {
+        let open = self.open_brace("mesh")?;
+        let mut data = MeshData::default();
+        loop {
+            let Some(t) = self.peek()? else { return Err(self.error_at(open, "this '{' is never closed")) };
+            let smooth = match &t.tok {
+                Tok::Ident(k) if &**k == "triangle" => false,
+                Tok::Ident(k) if &**k == "smooth_triangle" => true,
+                Tok::Ident(k) if &**k == "inside_vector" => {
+                    self.advance();
+                    self.parse_vector()?;
+                    self.unsupported("inside_vector", t.span);
+                    continue;
+                }
+                _ => break,
+            };
+            self.advance();
+            let inner = self.open_brace(if smooth { "smooth_triangle" } else { "triangle" })?;
+            let (p, n) = self.three_points("mesh triangle", smooth)?;
+            let base = data.vertices.len() as u32;
+            data.vertices.extend_from_slice(&p);
+            let normals = smooth.then(|| {
+                let nb = data.normals.len() as u32;
+                data.normals.extend_from_slice(&n);
+                [nb, nb + 1, nb + 2]
+            });
+            let mut texture = None;
+            loop {
+                let t = self.next()?;
+                match &t.tok {
+                    Tok::Sym(Sym::RBrace) => break,
+                    Tok::Ident(k) if &**k == "texture" => {
+                        data.textures.push(self.parse_texture_block()?);
+                        texture = Some(data.textures.len() as u32 - 1);
+                    }
+                    _ => return Err(self.error_at(inner, format!("unexpected {} in a mesh triangle", t.tok))),
+                }
+            }
+            data.triangles.push(MeshTriangle { v: [base, base + 1, base + 2], n: normals, texture });
+        }
+        self.finish_object(ObjectDesc::new(ShapeDesc::Mesh(Arc::new(data))), open)
+    }
+
+    fn csg(&mut self, op: CsgOp, _s: Span) -> PResult<ObjectDesc> {
+        let open = self.open_brace("CSG")?;
+        let mut children = Vec::new();
+        while let Some(o) = self.parse_object()? {
+            children.push(o);
+        }
+        self.finish_object(ObjectDesc::new(ShapeDesc::Csg { op, children }), open)
+    }
+
+    fn object_ref(&mut self, _s: Span) -> PResult<ObjectDesc> {
+        let open = self.open_brace("object")?;
+        if let Some(o) = self.parse_object()? {
+            return self.finish_object(o, open);
+        }
+        let t = self.next()?;
+        let obj = match &t.tok {
+            Tok::Ident(n) => match self.lookup(n) {
+                Some(Value::Object(o)) => (**o).clone(),
+                Some(v) => return Err(self.error_at(t.span, format!("'{n}' holds a {}, not an object", v.type_name()))),
+                None => return Err(self.error_at(t.span, format!("undeclared identifier '{n}'"))),
+            },
+            _ => return Err(self.unexpected(&t, "in object { }; expected an object identifier")),
+        };
+        self.finish_object(obj, open)
+    }
+
+    fn light_source(&mut self, span: Span) -> PResult<ObjectDesc> {
+        let open = self.open_brace("light_source")?;
+        let position = self.parse_vector()?;
+        self.skip_optional_comma()?;
+        let mut light = LightDesc { position, color: DVec3::ONE, shadowless: false, fade_distance: None, fade_power: 0.0 };
+        let mut obj_tf = Transform::IDENTITY;
+        loop {
+            let t = self.peek()?.ok_or_else(|| self.error_at(open, "this '{' is never closed"))?;
+            match &t.tok {
+                Tok::Sym(Sym::RBrace) => {
+                    self.advance();
+                    break;
+                }
+                Tok::Ident(k) => {
+                    let k = k.clone();
+                    match &*k {
+                        "color" | "colour" | "rgb" | "rgbf" | "rgbt" | "rgbft" | "srgb" => light.color = self.parse_color()?.rgb,
+                        _ => {
+                            self.advance();
+                            match &*k {
+                                "shadowless" => light.shadowless = true,
+                                "fade_distance" => light.fade_distance = Some(self.parse_float()?),
+                                "fade_power" => light.fade_power = self.parse_float()?,
+                                "spotlight" | "cylinder" | "parallel" | "area_light" | "looks_like" | "projected_through" | "photons" | "media_interaction"
+                                | "media_attenuation" | "circular" | "orient" | "jitter" | "adaptive" | "area_illumination" => {
+                                    self.unsupported(&k, t.span);
+                                    self.skip_light_item(&k)?;
+                                }
+                                "point_at" | "radius" | "falloff" | "tightness" | "area_light_axis" => {
+                                    self.unsupported(&k, t.span);
+                                    self.parse_expr()?;
+                                }
+                                other => {
+                                    if let Some(tr) = self.transform_item(other)? {
+                                        obj_tf = obj_tf.then(&tr);
+                                    } else if let Some(Value::Color(c)) = self.lookup(other) {
+                                        light.color = c.rgb;
+                                    } else {
+                                        return Err(self.error_at(t.span, format!("unexpected '{other}' in light_source")));
+                                    }
+                                }
+                            }
+                        }
+                    }
+                }
+                _ => light.color = self.parse_color()?.rgb,
+            }
+        }
+        let _ = span;
+        let mut obj = ObjectDesc::new(ShapeDesc::Light(light));
+        obj.apply_transform(&obj_tf);
+        Ok(obj)
+    }
+
+    /// Reads past the arguments of an unsupported light item so parsing can go on.
+    fn skip_light_item(&mut self, k: &str) -> PResult<()> {
+        match k {
+            "area_light" => {
+                for i in 0..4 {
+                    if i > 0 {
+                        self.skip_optional_comma()?;
+                    }
+                    self.parse_expr()?;
+                }
+            }
+            "looks_like" | "projected_through" | "photons" => self.skip_block()?,
+            "media_interaction" | "media_attenuation" | "circular" | "orient" => {
+                self.optional_bool()?;
+            }
+            "jitter" | "spotlight" | "cylinder" | "parallel" => {}
+            _ => {
+                self.parse_expr()?;
+            }
+        }
+        Ok(())
+    }
+
+    fn unsupported_object(&mut self, span: Span) -> PResult<ObjectDesc> {
+        let name = self.frames.last().and_then(|f| f.tokens.get(f.pos.saturating_sub(1))).map(|t| t.tok.to_string()).unwrap_or_default();
+        self.unsupported(name.trim_matches('\''), span);
+        self.skip_block()?;
+        // An empty union renders as nothing but keeps `#declare X = blob {...}` usable.
+        Ok(ObjectDesc::new(ShapeDesc::Csg { op: CsgOp::Union, children: Vec::new() }))
+    }
+}

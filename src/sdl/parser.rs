@@ -1,0 +1,389 @@
+//! The one recursive-descent parser, and the token stream it reads from.
+//!
+//! Tokens come from a stack of frames (the scene file, include files, macro bodies) over cached
+//! token vectors. Directives are executed as the parser meets them (`peek`/`next`), because
+//! POV-Ray's language is not context-free: a `#while` may wrap half an object and a macro call
+//! may stand in the middle of one. Loops rewind a frame's position; nothing is re-read from
+//! disk. Grammar areas live in sibling files as further `impl Parser` blocks.
+
+use std::collections::{HashMap, HashSet};
+use std::path::{Path, PathBuf};
+use std::rc::Rc;
+
+use crate::diag::{ChainLink, Diagnostic};
+use crate::scene::desc::SceneDesc;
+
+use super::lexer::{lex, Sym, Tok, Token};
+use super::source::{Sources, Span};
+use super::value::Value;
+
+pub type PResult<T> = Result<T, Box<Diagnostic>>;
+
+/// Settings the scene language can see or that steer parsing.
+#[derive(Clone, Debug)]
+pub struct ParseOptions {
+    /// Directories searched for `#include` and image files after the scene's own directory.
+    pub library_paths: Vec<PathBuf>,
+    pub image_width: u32,
+    pub image_height: u32,
+    pub clock: f64,
+}
+
+impl Default for ParseOptions {
+    fn default() -> Self {
+        ParseOptions { library_paths: Vec::new(), image_width: 320, image_height: 240, clock: 0.0 }
+    }
+}
+
+/// The standard places Debian and source installs put POV-Ray's include files.
+pub const SYSTEM_INCLUDE_DIRS: &[&str] =
+    &["/usr/share/povray-3.7/include", "/usr/local/share/povray-3.7/include", "/usr/share/povray/include", "/usr/local/share/povray/include"];
+
+/// Limits that turn runaway scenes into errors instead of hangs or stack overflows.
+const MAX_FRAME_DEPTH: usize = 200;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum FrameKind {
+    File,
+    Include,
+    Macro,
+}
+
+pub(super) struct Frame {
+    pub tokens: Rc<[Token]>,
+    pub pos: usize,
+    pub end: usize,
+    pub kind: FrameKind,
+    /// Where the include directive or macro call stood, for error chains.
+    pub call_site: Option<(Span, Rc<str>)>,
+}
+
+#[derive(Clone, Debug)]
+pub(super) enum Cond {
+    /// Inside a taken `#if`/`#else` branch: a later `#else`/`#elseif` skips to `#end`.
+    If { frame: usize },
+    /// Inside a `#while` body: `#end` rewinds to the condition.
+    While { frame: usize, cond_pos: usize },
+    /// Inside a `#for` body: `#end` steps the counter and rewinds.
+    For { frame: usize, body_pos: usize, var: Rc<str>, end: f64, step: f64 },
+}
+
+pub struct Parser {
+    pub sources: Sources,
+    pub(super) frames: Vec<Frame>,
+    pub(super) conds: Vec<Cond>,
+    /// Symbol tables; [0] is global, one more per include file and macro call.
+    pub(super) scopes: Vec<HashMap<Rc<str>, Value>>,
+    /// How many scopes each frame pushed (0 or 1), parallel to `frames`.
+    pub(super) frame_scopes: Vec<bool>,
+    file_cache: HashMap<PathBuf, (u32, Rc<[Token]>)>,
+    pub options: ParseOptions,
+    pub(super) scene_dir: PathBuf,
+    pub scene: SceneDesc,
+    pub warnings: Vec<Diagnostic>,
+    warned: HashSet<(Rc<str>, Span)>,
+    /// Inside `< >` the `>` closes the vector instead of comparing.
+    pub(super) in_vector: bool,
+    last_span: Span,
+}
+
+impl Parser {
+    pub fn new(options: ParseOptions) -> Parser {
+        Parser {
+            sources: Sources::default(),
+            frames: Vec::new(),
+            conds: Vec::new(),
+            scopes: vec![HashMap::new()],
+            frame_scopes: Vec::new(),
+            file_cache: HashMap::new(),
+            options,
+            scene_dir: PathBuf::from("."),
+            scene: super::default_scene(),
+            warnings: Vec::new(),
+            warned: HashSet::new(),
+            in_vector: false,
+            last_span: Span::default(),
+        }
+    }
+
+    /// Parses a whole scene file. Errors carry spans into `self.sources`.
+    pub fn parse_file(&mut self, path: &Path) -> PResult<()> {
+        self.scene_dir = path.parent().map(Path::to_path_buf).unwrap_or_else(|| PathBuf::from("."));
+        let (_, tokens) = self.load(path, None)?;
+        self.push_frame(tokens, FrameKind::File, None, false)?;
+        self.parse_scene_items()
+    }
+
+    /// Parses scene text given directly (tests, snippets).
+    pub fn parse_str(&mut self, name: &str, text: &str) -> PResult<()> {
+        let id = self.sources.add(name.to_string(), text.to_string());
+        let tokens = self.lex_file(id)?;
+        self.push_frame(tokens, FrameKind::File, None, false)?;
+        self.parse_scene_items()
+    }
+
+    fn lex_file(&mut self, id: u32) -> PResult<Rc<[Token]>> {
+        match lex(self.sources.text(id), id) {
+            Ok(t) => Ok(t.into()),
+            Err(e) => Err(self.error_at(Span { file: id, start: e.start as u32, end: e.end as u32 }, e.message)),
+        }
+    }
+
+    /// Reads and lexes a file once per run; later includes reuse the tokens.
+    fn load(&mut self, path: &Path, site: Option<Span>) -> PResult<(u32, Rc<[Token]>)> {
+        let key = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
+        if let Some((id, t)) = self.file_cache.get(&key) {
+            return Ok((*id, t.clone()));
+        }
+        let bytes = std::fs::read(path).map_err(|e| {
+            let msg = format!("cannot read {}: {e}", path.display());
+            match site {
+                Some(s) => self.error_at(s, msg),
+                None => Box::new(Diagnostic::error(msg, None)),
+            }
+        })?;
+        // Old scenes carry Latin-1 in comments; replacement characters outside comments and
+        // strings are reported by the lexer as not being scene text.
+        let text = String::from_utf8_lossy(&bytes).into_owned();
+        let id = self.sources.add(path.display().to_string(), text);
+        let tokens = self.lex_file(id)?;
+        self.file_cache.insert(key, (id, tokens.clone()));
+        Ok((id, tokens))
+    }
+
+    /// Finds a file the way POV-Ray does: as given, the scene directory, the library path,
+    /// then the system include directories.
+    pub fn find_file(&self, name: &str) -> Option<PathBuf> {
+        let p = Path::new(name);
+        if p.is_absolute() {
+            return p.exists().then(|| p.to_path_buf());
+        }
+        let mut dirs: Vec<PathBuf> = vec![self.scene_dir.clone()];
+        // The directory of the file being read, so includes next to includes are found.
+        if let Some(f) = self.frames.iter().rev().find(|f| f.kind != FrameKind::Macro) {
+            if let Some(t) = f.tokens.first() {
+                if let Some(d) = Path::new(&self.sources.name(t.span.file)).parent() {
+                    dirs.push(d.to_path_buf());
+                }
+            }
+        }
+        dirs.extend(self.options.library_paths.iter().cloned());
+        dirs.extend(SYSTEM_INCLUDE_DIRS.iter().map(PathBuf::from));
+        dirs.push(PathBuf::from("."));
+        dirs.into_iter().map(|d| d.join(p)).find(|c| c.is_file())
+    }
+
+    pub(super) fn include(&mut self, name: &str, site: Span) -> PResult<()> {
+        let Some(path) = self.find_file(name) else {
+            let mut searched: Vec<String> = vec![self.scene_dir.display().to_string()];
+            searched.extend(self.options.library_paths.iter().map(|p| p.display().to_string()));
+            searched.extend(SYSTEM_INCLUDE_DIRS.iter().map(|s| s.to_string()));
+            let d = self.error_at(site, format!("cannot find include file \"{name}\""));
+            return Err(Box::new(
+                d.with_note(format!("searched: {}", searched.join(", ")))
+                    .with_note("POV-Ray's standard include files come with Debian's povray-includes package (apt-get install povray-includes); other directories can be added with +L<dir>"),
+            ));
+        };
+        let (_, tokens) = self.load(&path, Some(site))?;
+        self.push_frame(tokens, FrameKind::Include, Some((site, format!("included from here ({name})").into())), true)
+    }
+
+    pub(super) fn push_frame(&mut self, tokens: Rc<[Token]>, kind: FrameKind, call_site: Option<(Span, Rc<str>)>, scope: bool) -> PResult<()> {
+        if self.frames.len() >= MAX_FRAME_DEPTH {
+            let span = call_site.as_ref().map(|c| c.0).unwrap_or(self.last_span);
+            return Err(self.error_at(span, format!("too many nested include files or macro calls (more than {MAX_FRAME_DEPTH}); is a macro calling itself without end?")));
+        }
+        let end = tokens.len();
+        self.push_frame_range(tokens, 0, end, kind, call_site, scope);
+        Ok(())
+    }
+
+    pub(super) fn push_frame_range(&mut self, tokens: Rc<[Token]>, pos: usize, end: usize, kind: FrameKind, call_site: Option<(Span, Rc<str>)>, scope: bool) {
+        self.frames.push(Frame { tokens, pos, end, kind, call_site });
+        self.frame_scopes.push(scope);
+        if scope {
+            self.scopes.push(HashMap::new());
+        }
+    }
+
+    /// The next token without executing directives or macro calls; pops finished frames.
+    pub(super) fn raw_peek(&mut self) -> PResult<Option<Token>> {
+        loop {
+            let Some(f) = self.frames.last() else { return Ok(None) };
+            if f.pos < f.end {
+                let t = f.tokens[f.pos].clone();
+                self.last_span = t.span;
+                return Ok(Some(t));
+            }
+            if self.frames.len() == 1 {
+                self.check_conds_closed()?;
+                return Ok(None);
+            }
+            self.check_conds_closed()?;
+            self.frames.pop();
+            if self.frame_scopes.pop() == Some(true) {
+                self.scopes.pop();
+            }
+        }
+    }
+
+    /// A `#if` or `#while` still open when its file or macro body ends is an error at the
+    /// directive, as POV-Ray reports it.
+    fn check_conds_closed(&mut self) -> PResult<()> {
+        let depth = self.frames.len() - 1;
+        let open = match self.conds.last() {
+            Some(Cond::If { frame }) | Some(Cond::While { frame, .. }) | Some(Cond::For { frame, .. }) => *frame == depth,
+            None => false,
+        };
+        if open {
+            let span = self.last_span;
+            return Err(self.error_at(span, "missing #end: a #if, #while or #for opened in this file or macro is not closed before it ends"));
+        }
+        Ok(())
+    }
+
+    pub(super) fn advance(&mut self) {
+        if let Some(f) = self.frames.last_mut() {
+            f.pos += 1;
+        }
+    }
+
+    /// The next token after executing any directives and macro calls in the way.
+    pub fn peek(&mut self) -> PResult<Option<Token>> {
+        loop {
+            let Some(t) = self.raw_peek()? else { return Ok(None) };
+            match &t.tok {
+                Tok::Directive(d) => {
+                    self.advance();
+                    let d = d.clone();
+                    self.directive(&d, t.span)?;
+                }
+                Tok::Ident(name) => {
+                    if let Some(Value::Macro(m)) = self.lookup(name) {
+                        let m = m.clone();
+                        self.advance();
+                        self.invoke_macro(&m, t.span)?;
+                    } else {
+                        return Ok(Some(t));
+                    }
+                }
+                _ => return Ok(Some(t)),
+            }
+        }
+    }
+
+    pub fn next(&mut self) -> PResult<Token> {
+        match self.peek()? {
+            Some(t) => {
+                self.advance();
+                Ok(t)
+            }
+            None => Err(self.eof_error()),
+        }
+    }
+
+    pub(super) fn eof_error(&self) -> Box<Diagnostic> {
+        self.error_at(self.last_span, "unexpected end of file: a '{' or '(' is probably not closed")
+    }
+
+    pub(super) fn peek_sym(&mut self) -> PResult<Option<Sym>> {
+        Ok(match self.peek()? {
+            Some(Token { tok: Tok::Sym(s), .. }) => Some(s),
+            _ => None,
+        })
+    }
+
+    /// The next symbol without executing directives: used for operator look-ahead, so that a
+    /// directive after an expression (`#declare A = 1 #end`) ends the expression rather than
+    /// running inside it.
+    pub(super) fn raw_peek_sym(&mut self) -> PResult<Option<Sym>> {
+        Ok(match self.raw_peek()? {
+            Some(Token { tok: Tok::Sym(s), .. }) => Some(s),
+            _ => None,
+        })
+    }
+
+    pub(super) fn peek_ident(&mut self) -> PResult<Option<Rc<str>>> {
+        Ok(match self.peek()? {
+            Some(Token { tok: Tok::Ident(s), .. }) => Some(s),
+            _ => None,
+        })
+    }
+
+    pub(super) fn eat_sym(&mut self, s: Sym) -> PResult<bool> {
+        if self.peek_sym()? == Some(s) {
+            self.advance();
+            return Ok(true);
+        }
+        Ok(false)
+    }
+
+    pub(super) fn expect_sym(&mut self, s: Sym, context: &str) -> PResult<Span> {
+        let t = self.next()?;
+        if t.tok == Tok::Sym(s) {
+            return Ok(t.span);
+        }
+        Err(self.error_at(t.span, format!("expected '{}' {context}, found {}", s.text(), t.tok)))
+    }
+
+    pub(super) fn eat_keyword(&mut self, k: &str) -> PResult<bool> {
+        if self.peek_ident()?.as_deref() == Some(k) {
+            self.advance();
+            return Ok(true);
+        }
+        Ok(false)
+    }
+
+    pub(super) fn skip_optional_comma(&mut self) -> PResult<()> {
+        self.eat_sym(Sym::Comma)?;
+        Ok(())
+    }
+
+    pub fn lookup(&self, name: &str) -> Option<&Value> {
+        self.scopes.iter().rev().find_map(|s| s.get(name))
+    }
+
+    /// An error at `span` with the include/macro chain of the current frames.
+    pub fn error_at(&self, span: Span, message: impl Into<String>) -> Box<Diagnostic> {
+        let mut d = Diagnostic::error(message, Some(span));
+        d.chain = self.chain();
+        Box::new(d)
+    }
+
+    fn chain(&self) -> Vec<ChainLink> {
+        self.frames.iter().rev().filter_map(|f| f.call_site.as_ref()).map(|(span, what)| ChainLink { what: what.to_string(), span: *span }).collect()
+    }
+
+    /// Warns once per place about a keyword lancer reads but does not render yet.
+    pub fn unsupported(&mut self, keyword: &str, span: Span) {
+        if self.warned.insert((keyword.into(), span)) {
+            let mut d = Diagnostic::warning(format!("'{keyword}' is not supported by lancer yet and is ignored; the picture will differ from POV-Ray's"), Some(span));
+            d.chain = self.chain();
+            self.warnings.push(d);
+        }
+    }
+
+    pub fn warn(&mut self, span: Span, message: impl Into<String>) {
+        let mut d = Diagnostic::warning(message, Some(span));
+        d.chain = self.chain();
+        self.warnings.push(d);
+    }
+
+    /// Skips a balanced `{ ... }` block raw (used for blocks of unsupported features).
+    pub(super) fn skip_block(&mut self) -> PResult<()> {
+        let open = self.expect_sym(Sym::LBrace, "to open the block")?;
+        let mut depth = 1;
+        while depth > 0 {
+            let Some(t) = self.raw_peek()? else {
+                return Err(self.error_at(open, "this '{' is never closed"));
+            };
+            self.advance();
+            match t.tok {
+                Tok::Sym(Sym::LBrace) => depth += 1,
+                Tok::Sym(Sym::RBrace) => depth -= 1,
+                _ => {}
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,73 @@
+//! What an identifier can hold, and the arithmetic of POV-Ray's float/vector/colour values.
+
+use std::rc::Rc;
+
+use crate::color::Rgbft;
+use crate::math::{DVec3, Transform};
+use crate::scene::desc::{CameraDesc, Finish, Interior, LightDesc, Normal, ObjectDesc, Pigment, Texture};
+
+use super::lexer::Token;
+
+#[derive(Clone, Debug)]
+pub enum Value {
+    Float(f64),
+    /// A vector of 2 to 5 components (`<a,b>` … `<a,b,c,d,e>`), unused ones zero.
+    Vector([f64; 5], u8),
+    Color(Rgbft),
+    Str(Rc<str>),
+    Object(Box<ObjectDesc>),
+    Pigment(Box<Pigment>),
+    Finish(Box<Finish>),
+    Normal(Box<Normal>),
+    Texture(Box<Texture>),
+    Interior(Box<Interior>),
+    Camera(Box<CameraDesc>),
+    Light(Box<LightDesc>),
+    Transform(Transform),
+    Macro(Rc<MacroDef>),
+}
+
+impl Value {
+    pub fn type_name(&self) -> &'static str {
+        match self {
+            Value::Float(_) => "float",
+            Value::Vector(..) => "vector",
+            Value::Color(_) => "colour",
+            Value::Str(_) => "string",
+            Value::Object(_) => "object",
+            Value::Pigment(_) => "pigment",
+            Value::Finish(_) => "finish",
+            Value::Normal(_) => "normal",
+            Value::Texture(_) => "texture",
+            Value::Interior(_) => "interior",
+            Value::Camera(_) => "camera",
+            Value::Light(_) => "light_source",
+            Value::Transform(_) => "transform",
+            Value::Macro(_) => "macro",
+        }
+    }
+
+    pub fn vec3(v: DVec3) -> Value {
+        Value::Vector([v.x, v.y, v.z, 0.0, 0.0], 3)
+    }
+
+    /// Components and their count, for arithmetic; None for non-numeric values.
+    pub fn components(&self) -> Option<([f64; 5], u8)> {
+        match self {
+            Value::Float(f) => Some(([*f; 5], 1)),
+            Value::Vector(c, n) => Some((*c, *n)),
+            Value::Color(c) => Some((c.to_array(), 5)),
+            _ => None,
+        }
+    }
+}
+
+/// A `#macro`: its parameters and where its body lies in the defining file's tokens.
+#[derive(Debug)]
+pub struct MacroDef {
+    pub name: String,
+    pub params: Vec<(String, bool)>,
+    pub tokens: Rc<[Token]>,
+    pub body_start: usize,
+    pub body_end: usize,
+}
