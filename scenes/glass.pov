@@ -1,3 +1,6 @@
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+
 // glass.pov -- lancer example scene
 //
 // A pyrex-like glass sphere (ior 1.474, Fresnel reflection, energy
@@ -6,10 +9,8 @@
 // cylinders and a sky gradient), which the glass ball shows upside
 // down and left-right swapped, like a lens.
 //
-// Reference: povray -D -V +FN8 -A +W320 +H240 +Iglass.pov
-
-#version 3.7;
-global_settings { assumed_gamma 1.0 max_trace_level 10 }
+// References: reference/glass.png (-A) and glass_aa.png (+A0.3), 320x240,
+// rendered by scripts/make_references.sh.
 
 camera {
   location <0, 1.5, -5.5>

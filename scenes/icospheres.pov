@@ -1,3 +1,6 @@
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+
 // icospheres.pov -- lancer example scene
 //
 // Three icospheres built entirely in SDL: an icosahedron whose 20 faces are
@@ -5,10 +8,8 @@
 // vnormalize().  Subdivision 1, 3 and 5 (80, 1280 and 20480 flat
 // triangles), left to right, so the faceting fades out.
 //
-// Reference: povray -D -V +FN8 -A +W320 +H240 +Iicospheres.pov
-
-#version 3.7;
-global_settings { assumed_gamma 1.0 }
+// References: reference/icospheres.png (-A) and icospheres_aa.png (+A0.3), 320x240,
+// rendered by scripts/make_references.sh.
 
 camera {
   location <0, 2.8, -9.5>

@@ -1,3 +1,6 @@
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+
 // mirror_spheres.pov -- lancer example scene
 //
 // A mirror sphere, a matte sphere and a glossy (phong) sphere on a
@@ -5,10 +8,8 @@
 // spheres sit BEHIND the camera: they are not in the camera's field of
 // view and can only be seen reflected in the mirror sphere.
 //
-// Reference: povray -D -V +FN8 -A +W320 +H240 +Imirror_spheres.pov
-
-#version 3.7;
-global_settings { assumed_gamma 1.0 }
+// References: reference/mirror_spheres.png (-A) and mirror_spheres_aa.png (+A0.3), 320x240,
+// rendered by scripts/make_references.sh.
 
 #declare CamPos = <0, 1.6, -5.6>;
 

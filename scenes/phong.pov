@@ -1,3 +1,6 @@
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+
 // phong.pov -- lancer example scene
 //
 // The parts of the classic lighting model, one per sphere, left to right:
@@ -7,10 +10,8 @@
 //   4. all three together
 // A second light, lower and to the right, gives every highlight a twin.
 //
-// Reference: povray -D -V +FN8 -A +W320 +H240 +Iphong.pov
-
-#version 3.7;
-global_settings { assumed_gamma 1.0 }
+// References: reference/phong.png (-A) and phong_aa.png (+A0.3), 320x240,
+// rendered by scripts/make_references.sh.
 
 #include "colors.inc"
 

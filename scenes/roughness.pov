@@ -1,3 +1,6 @@
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+
 // roughness.pov -- lancer example scene
 //
 // Six spheres in a row, from rough to polished: the specular highlight
@@ -5,10 +8,8 @@
 // (roughness 0.001), and the reflection grows from none to strong.
 // Striped walls behind and around make the reflections easy to read.
 //
-// Reference: povray -D -V +FN8 -A +W320 +H240 +Iroughness.pov
-
-#version 3.7;
-global_settings { assumed_gamma 1.0 }
+// References: reference/roughness.png (-A) and roughness_aa.png (+A0.3), 320x240,
+// rendered by scripts/make_references.sh.
 
 camera {
   location <0, 1.5, -8>

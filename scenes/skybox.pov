@@ -1,3 +1,6 @@
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+
 // skybox.pov -- lancer example scene
 //
 // An equirectangular panorama (sky.png, written by scripts/make_skybox.py)
@@ -11,10 +14,8 @@
 // the left edge of the image is +x, a quarter of the way in is +z
 // (straight ahead here: the striped tower), the top row is +y.
 //
-// Reference: povray -D -V +FN8 -A +W320 +H240 +Iskybox.pov
-
-#version 3.7;
-global_settings { assumed_gamma 1.0 max_trace_level 10 }
+// References: reference/skybox.png (-A) and skybox_aa.png (+A0.3), 320x240,
+// rendered by scripts/make_references.sh.
 
 camera {
   location <0, 0.1, -5.6>

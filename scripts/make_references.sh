@@ -45,6 +45,8 @@ warnings=0
 render() {  # render <scene.pov> <aa-flag> <out.png>
   local pov="$1" aa="$2" out="$3" log
   log="$LOG/$(basename "$out").log"
+  local t0 t1
+  t0="$(date +%s.%N)"
   # Debian's povray reads /etc/povray/3.7/povray.ini first (800x600,
   # display on, ...): every setting that matters is passed explicitly.
   if ! "$POVRAY" -D -V +FN8 "$aa" +W320 +H240 \
@@ -53,15 +55,20 @@ render() {  # render <scene.pov> <aa-flag> <out.png>
     grep -v '^\s*$' "$log" | tail -20 >&2
     exit 1
   fi
+  t1="$(date +%s.%N)"
   local t
   t="$(sed -n 's/^ *Trace Time: .*(\([0-9.]*\) seconds).*/\1/p' "$log" | tail -1)"
   local p
   p="$(sed -n 's/^ *Parse Time: .*(\([0-9.]*\) seconds).*/\1/p' "$log" | tail -1)"
-  printf '  %-28s parse %6ss  trace %6ss\n' "$(basename "$out")" "${p:-?}" "${t:-?}"
-  # Real warnings look like "File: x.pov  Line: n" followed by "... Warning: ...".
+  printf '  %-24s wall %5.2fs  parse %6ss  trace %6ss\n' "$(basename "$out")" \
+    "$(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }')" "${p:-?}" "${t:-?}"
+  # Warnings look like "Parse Warning: ..." (possibly after "File '...' line n:").
   if grep -i 'warning:' "$log" >/dev/null; then
     warnings=$((warnings + 1))
-    { echo "--- $(basename "$out")"; grep -i -B2 -A2 'warning:' "$log"; } >>"$LOG/warnings"
+    { echo "--- $(basename "$out")"
+      # the warning line and its indented continuation lines
+      awk 'tolower($0) ~ /warning:/ { on = 1; print; next }
+           on && /^ / { print; next } { on = 0 }' "$log"; } >>"$LOG/warnings"
   fi
 }
 

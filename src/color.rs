@@ -10,19 +10,37 @@ pub struct Rgbft {
 }
 
 impl Rgbft {
-    pub const BLACK: Rgbft = Rgbft { rgb: DVec3::ZERO, filter: 0.0, transmit: 0.0 };
+    pub const BLACK: Rgbft = Rgbft {
+        rgb: DVec3::ZERO,
+        filter: 0.0,
+        transmit: 0.0,
+    };
 
     pub fn new(r: f64, g: f64, b: f64, filter: f64, transmit: f64) -> Rgbft {
-        Rgbft { rgb: DVec3::new(r, g, b), filter, transmit }
+        Rgbft {
+            rgb: DVec3::new(r, g, b),
+            filter,
+            transmit,
+        }
     }
     pub fn rgb(rgb: DVec3) -> Rgbft {
-        Rgbft { rgb, filter: 0.0, transmit: 0.0 }
+        Rgbft {
+            rgb,
+            filter: 0.0,
+            transmit: 0.0,
+        }
     }
     pub fn from_array(a: [f64; 5]) -> Rgbft {
         Rgbft::new(a[0], a[1], a[2], a[3], a[4])
     }
     pub fn to_array(self) -> [f64; 5] {
-        [self.rgb.x, self.rgb.y, self.rgb.z, self.filter, self.transmit]
+        [
+            self.rgb.x,
+            self.rgb.y,
+            self.rgb.z,
+            self.filter,
+            self.transmit,
+        ]
     }
     pub fn lerp(self, o: Rgbft, f: f64) -> Rgbft {
         Rgbft {

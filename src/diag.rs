@@ -31,10 +31,22 @@ pub struct Diagnostic {
 
 impl Diagnostic {
     pub fn error(message: impl Into<String>, span: Option<Span>) -> Diagnostic {
-        Diagnostic { severity: Severity::Error, message: message.into(), span, chain: Vec::new(), notes: Vec::new() }
+        Diagnostic {
+            severity: Severity::Error,
+            message: message.into(),
+            span,
+            chain: Vec::new(),
+            notes: Vec::new(),
+        }
     }
     pub fn warning(message: impl Into<String>, span: Option<Span>) -> Diagnostic {
-        Diagnostic { severity: Severity::Warning, message: message.into(), span, chain: Vec::new(), notes: Vec::new() }
+        Diagnostic {
+            severity: Severity::Warning,
+            message: message.into(),
+            span,
+            chain: Vec::new(),
+            notes: Vec::new(),
+        }
     }
     pub fn with_note(mut self, note: impl Into<String>) -> Diagnostic {
         self.notes.push(note.into());
@@ -64,12 +76,24 @@ impl Diagnostic {
             // codespan prints line:col next to the file; keep the one-line form in the message
             // head too so logs grepped for file:line find it.
             message = format!("{} ({})", self.message, sources.place(s));
-            labels.push(Label::primary(s.file as usize, s.start as usize..s.end.max(s.start + 1) as usize));
+            labels.push(Label::primary(
+                s.file as usize,
+                s.start as usize..s.end.max(s.start + 1) as usize,
+            ));
         }
         for link in &self.chain {
-            labels.push(Label::secondary(link.span.file as usize, link.span.start as usize..link.span.end as usize).with_message(link.what.clone()));
+            labels.push(
+                Label::secondary(
+                    link.span.file as usize,
+                    link.span.start as usize..link.span.end as usize,
+                )
+                .with_message(link.what.clone()),
+            );
         }
-        d = d.with_message(message).with_labels(labels).with_notes(self.notes.clone());
+        d = d
+            .with_message(message)
+            .with_labels(labels)
+            .with_notes(self.notes.clone());
         let config = Config::default();
         if term::emit(out, &config, &sources.files, &d).is_err() {
             // Spans that fall outside the file (should not happen) still get a readable line.
@@ -78,9 +102,12 @@ impl Diagnostic {
     }
 
     pub fn emit_stderr(&self, sources: &Sources) {
-        let choice = if std::io::IsTerminal::is_terminal(&std::io::stderr()) { ColorChoice::Auto } else { ColorChoice::Never };
+        let choice = if std::io::IsTerminal::is_terminal(&std::io::stderr()) {
+            ColorChoice::Auto
+        } else {
+            ColorChoice::Never
+        };
         let mut stream = StandardStream::stderr(choice);
         self.emit(sources, &mut stream);
     }
 }
-

@@ -5,9 +5,14 @@
 //! `scene::desc::SceneDesc`; `scene::build` turns it into a runtime scene with a BVH; `render`
 //! traces it into a film; `output` writes PNG/EXR.
 
+pub mod api;
+pub mod cli;
 pub mod color;
 pub mod diag;
 pub mod geom;
 pub mod math;
+pub mod output;
+pub mod render;
 pub mod scene;
 pub mod sdl;
+pub mod ssim;

@@ -40,38 +40,61 @@ impl Default for Transform {
 }
 
 impl Transform {
-    pub const IDENTITY: Transform = Transform { m: DMat4::IDENTITY, inv: DMat4::IDENTITY };
+    pub const IDENTITY: Transform = Transform {
+        m: DMat4::IDENTITY,
+        inv: DMat4::IDENTITY,
+    };
 
     pub fn from_matrix(m: DMat4) -> Transform {
-        Transform { m, inv: m.inverse() }
+        Transform {
+            m,
+            inv: m.inverse(),
+        }
     }
     pub fn translate(v: DVec3) -> Transform {
-        Transform { m: DMat4::from_translation(v), inv: DMat4::from_translation(-v) }
+        Transform {
+            m: DMat4::from_translation(v),
+            inv: DMat4::from_translation(-v),
+        }
     }
     pub fn scale(v: DVec3) -> Transform {
         // POV-Ray replaces a zero scale by 1 (with a warning) rather than making it singular.
         let v = DVec3::new(nz(v.x), nz(v.y), nz(v.z));
-        Transform { m: DMat4::from_scale(v), inv: DMat4::from_scale(1.0 / v) }
+        Transform {
+            m: DMat4::from_scale(v),
+            inv: DMat4::from_scale(1.0 / v),
+        }
     }
     /// POV-Ray `rotate <x,y,z>` in degrees: about x, then y, then z, left-handed.
     pub fn rotate(deg: DVec3) -> Transform {
         let r = deg * (std::f64::consts::PI / 180.0);
-        let m = DMat4::from_rotation_z(r.z) * DMat4::from_rotation_y(r.y) * DMat4::from_rotation_x(r.x);
-        Transform { m, inv: m.transpose() }
+        let m =
+            DMat4::from_rotation_z(r.z) * DMat4::from_rotation_y(r.y) * DMat4::from_rotation_x(r.x);
+        Transform {
+            m,
+            inv: m.transpose(),
+        }
     }
     /// The 12-number `matrix < ... >` of POV-Ray: rows are the images of x, y, z then the offset.
     pub fn pov_matrix(v: &[f64; 12]) -> Transform {
         let m = DMat4::from_cols_array(&[
-            v[0], v[1], v[2], 0.0, v[3], v[4], v[5], 0.0, v[6], v[7], v[8], 0.0, v[9], v[10], v[11], 1.0,
+            v[0], v[1], v[2], 0.0, v[3], v[4], v[5], 0.0, v[6], v[7], v[8], 0.0, v[9], v[10],
+            v[11], 1.0,
         ]);
         Transform::from_matrix(m)
     }
     /// `self` followed by `next`.
     pub fn then(&self, next: &Transform) -> Transform {
-        Transform { m: next.m * self.m, inv: self.inv * next.inv }
+        Transform {
+            m: next.m * self.m,
+            inv: self.inv * next.inv,
+        }
     }
     pub fn inverse(&self) -> Transform {
-        Transform { m: self.inv, inv: self.m }
+        Transform {
+            m: self.inv,
+            inv: self.m,
+        }
     }
     pub fn is_identity(&self) -> bool {
         self.m == DMat4::IDENTITY
@@ -93,7 +116,10 @@ impl Transform {
         self.inv.transpose().transform_vector3(n)
     }
     pub fn inv_ray(&self, r: &Ray) -> Ray {
-        Ray { origin: self.inv_point(r.origin), dir: self.inv_vector(r.dir) }
+        Ray {
+            origin: self.inv_point(r.origin),
+            dir: self.inv_vector(r.dir),
+        }
     }
 }
 
@@ -112,8 +138,14 @@ pub struct Aabb {
 }
 
 impl Aabb {
-    pub const EMPTY: Aabb = Aabb { min: DVec3::splat(f64::INFINITY), max: DVec3::splat(f64::NEG_INFINITY) };
-    pub const INFINITE: Aabb = Aabb { min: DVec3::splat(f64::NEG_INFINITY), max: DVec3::splat(f64::INFINITY) };
+    pub const EMPTY: Aabb = Aabb {
+        min: DVec3::splat(f64::INFINITY),
+        max: DVec3::splat(f64::NEG_INFINITY),
+    };
+    pub const INFINITE: Aabb = Aabb {
+        min: DVec3::splat(f64::NEG_INFINITY),
+        max: DVec3::splat(f64::INFINITY),
+    };
 
     pub fn new(min: DVec3, max: DVec3) -> Aabb {
         Aabb { min, max }
@@ -125,13 +157,22 @@ impl Aabb {
         self.min.x > self.max.x || self.min.y > self.max.y || self.min.z > self.max.z
     }
     pub fn union(&self, o: &Aabb) -> Aabb {
-        Aabb { min: self.min.min(o.min), max: self.max.max(o.max) }
+        Aabb {
+            min: self.min.min(o.min),
+            max: self.max.max(o.max),
+        }
     }
     pub fn intersection(&self, o: &Aabb) -> Aabb {
-        Aabb { min: self.min.max(o.min), max: self.max.min(o.max) }
+        Aabb {
+            min: self.min.max(o.min),
+            max: self.max.min(o.max),
+        }
     }
     pub fn grow(&self, p: DVec3) -> Aabb {
-        Aabb { min: self.min.min(p), max: self.max.max(p) }
+        Aabb {
+            min: self.min.min(p),
+            max: self.max.max(p),
+        }
     }
     pub fn center(&self) -> DVec3 {
         (self.min + self.max) * 0.5
@@ -146,7 +187,11 @@ impl Aabb {
     /// Bounds of this box after an affine transform (all eight corners).
     pub fn transformed(&self, t: &Transform) -> Aabb {
         if !self.is_finite() {
-            return if self.is_empty() { *self } else { Aabb::INFINITE };
+            return if self.is_empty() {
+                *self
+            } else {
+                Aabb::INFINITE
+            };
         }
         let mut out = Aabb::EMPTY;
         for i in 0..8 {

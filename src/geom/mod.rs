@@ -20,10 +20,18 @@ pub struct Hit {
 
 impl Hit {
     pub fn new(t: f64) -> Hit {
-        Hit { t, part: 0, uv: [0.0; 2] }
+        Hit {
+            t,
+            part: 0,
+            uv: [0.0; 2],
+        }
     }
     pub fn with_part(t: f64, part: u32) -> Hit {
-        Hit { t, part, uv: [0.0; 2] }
+        Hit {
+            t,
+            part,
+            uv: [0.0; 2],
+        }
     }
 }
 
@@ -36,10 +44,26 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
     fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
         scratch.clear();
         self.intersect_all(ray, scratch);
-        scratch.iter().filter(|h| h.t > crate::math::EPSILON && h.t < tmax).min_by(|a, b| a.t.total_cmp(&b.t)).copied()
+        scratch
+            .iter()
+            .filter(|h| h.t > crate::math::EPSILON && h.t < tmax)
+            .min_by(|a, b| a.t.total_cmp(&b.t))
+            .copied()
     }
     /// Whether `p` lies inside the shape (POV-Ray's "inside" test, used by CSG and interiors).
     fn inside(&self, p: DVec3) -> bool;
     /// Outward normal at a point the shape reported, not necessarily unit length.
     fn normal(&self, p: DVec3, hit: &Hit) -> DVec3;
 }
+
+pub mod boxes;
+pub mod bvh;
+pub mod cone;
+pub mod cylinder;
+pub mod disc;
+pub mod mesh;
+pub mod plane;
+pub mod poly;
+pub mod sphere;
+pub mod torus;
+pub mod triangle;

@@ -37,7 +37,12 @@ pub struct GlobalSettings {
 
 impl Default for GlobalSettings {
     fn default() -> Self {
-        GlobalSettings { assumed_gamma: None, max_trace_level: 5, adc_bailout: 1.0 / 255.0, ambient_light: DVec3::ONE }
+        GlobalSettings {
+            assumed_gamma: None,
+            max_trace_level: 5,
+            adc_bailout: 1.0 / 255.0,
+            ambient_light: DVec3::ONE,
+        }
     }
 }
 
@@ -93,7 +98,15 @@ pub struct ObjectDesc {
 
 impl ObjectDesc {
     pub fn new(shape: ShapeDesc) -> ObjectDesc {
-        ObjectDesc { shape, transform: Transform::IDENTITY, texture: None, interior: None, no_shadow: false, hollow: None, inverse: false }
+        ObjectDesc {
+            shape,
+            transform: Transform::IDENTITY,
+            texture: None,
+            interior: None,
+            no_shadow: false,
+            hollow: None,
+            inverse: false,
+        }
     }
 
     /// Applies a transform to the object, its attached texture and, for CSG, every child.
@@ -122,18 +135,55 @@ pub enum CsgOp {
 
 #[derive(Clone, Debug)]
 pub enum ShapeDesc {
-    Sphere { center: DVec3, radius: f64 },
+    Sphere {
+        center: DVec3,
+        radius: f64,
+    },
     /// Points p with `normal · p = distance` (normal as written, not normalised).
-    Plane { normal: DVec3, distance: f64 },
-    Box { corner1: DVec3, corner2: DVec3 },
-    Cylinder { base: DVec3, cap: DVec3, radius: f64, open: bool },
-    Cone { base: DVec3, base_radius: f64, cap: DVec3, cap_radius: f64, open: bool },
-    Disc { center: DVec3, normal: DVec3, radius: f64, hole_radius: f64 },
-    Torus { major: f64, minor: f64, sturm: bool },
-    Triangle { p: [DVec3; 3] },
-    SmoothTriangle { p: [DVec3; 3], n: [DVec3; 3] },
+    Plane {
+        normal: DVec3,
+        distance: f64,
+    },
+    Box {
+        corner1: DVec3,
+        corner2: DVec3,
+    },
+    Cylinder {
+        base: DVec3,
+        cap: DVec3,
+        radius: f64,
+        open: bool,
+    },
+    Cone {
+        base: DVec3,
+        base_radius: f64,
+        cap: DVec3,
+        cap_radius: f64,
+        open: bool,
+    },
+    Disc {
+        center: DVec3,
+        normal: DVec3,
+        radius: f64,
+        hole_radius: f64,
+    },
+    Torus {
+        major: f64,
+        minor: f64,
+        sturm: bool,
+    },
+    Triangle {
+        p: [DVec3; 3],
+    },
+    SmoothTriangle {
+        p: [DVec3; 3],
+        n: [DVec3; 3],
+    },
     Mesh(Arc<MeshData>),
-    Csg { op: CsgOp, children: Vec<ObjectDesc> },
+    Csg {
+        op: CsgOp,
+        children: Vec<ObjectDesc>,
+    },
     /// A light source is an object in POV-Ray: it may sit inside CSG and move with it.
     Light(LightDesc),
 }
@@ -166,7 +216,11 @@ pub struct Texture {
 
 impl Default for Texture {
     fn default() -> Self {
-        Texture { pigment: Pigment::solid(Rgbft::BLACK), normal: None, finish: Finish::default() }
+        Texture {
+            pigment: Pigment::solid(Rgbft::BLACK),
+            normal: None,
+            finish: Finish::default(),
+        }
     }
 }
 
@@ -188,7 +242,10 @@ pub struct Pigment {
 
 impl Pigment {
     pub fn solid(c: Rgbft) -> Pigment {
-        Pigment { kind: PigmentKind::Solid(c), transform: Transform::IDENTITY }
+        Pigment {
+            kind: PigmentKind::Solid(c),
+            transform: Transform::IDENTITY,
+        }
     }
     pub fn apply_transform(&mut self, t: &Transform) {
         self.transform = self.transform.then(t);
@@ -200,9 +257,15 @@ impl Pigment {
 pub enum PigmentKind {
     Solid(Rgbft),
     /// A continuous pattern looked up in a colour map.
-    Mapped { pattern: Pattern, map: ColorMap },
+    Mapped {
+        pattern: Pattern,
+        map: ColorMap,
+    },
     /// A discrete pattern choosing between whole pigments (checker).
-    List { pattern: Pattern, items: Vec<Pigment> },
+    List {
+        pattern: Pattern,
+        items: Vec<Pigment>,
+    },
     ImageMap(Arc<ImageMap>),
 }
 

@@ -16,8 +16,12 @@ pub fn srgb_to_linear(c: f64) -> f64 {
 }
 
 pub fn load_image_map(path: &Path, map: &mut ImageMap) -> Result<(), String> {
-    let img = image::open(path).map_err(|e| format!("cannot read image {}: {e}", path.display()))?;
-    let is_float = matches!(img, image::DynamicImage::ImageRgb32F(_) | image::DynamicImage::ImageRgba32F(_));
+    let img =
+        image::open(path).map_err(|e| format!("cannot read image {}: {e}", path.display()))?;
+    let is_float = matches!(
+        img,
+        image::DynamicImage::ImageRgb32F(_) | image::DynamicImage::ImageRgba32F(_)
+    );
     let has_alpha = img.color().has_alpha();
     let rgba = img.to_rgba32f();
     map.width = rgba.width();
@@ -25,7 +29,13 @@ pub fn load_image_map(path: &Path, map: &mut ImageMap) -> Result<(), String> {
     map.pixels = rgba
         .pixels()
         .map(|p| {
-            let lin = |v: f32| if is_float { v as f64 } else { srgb_to_linear(v as f64) };
+            let lin = |v: f32| {
+                if is_float {
+                    v as f64
+                } else {
+                    srgb_to_linear(v as f64)
+                }
+            };
             // POV-Ray maps alpha to transmit (1 - alpha).
             let t = if has_alpha { 1.0 - p.0[3] as f64 } else { 0.0 };
             Rgbft::new(lin(p.0[0]), lin(p.0[1]), lin(p.0[2]), 0.0, t)

@@ -1,4 +1,7 @@
 //! Scenes: the declarative description the parser produces, and the runtime form built from it.
 
+pub mod build;
 pub mod desc;
 pub mod image;
+pub mod object;
+pub mod shapes;

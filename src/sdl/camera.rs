@@ -70,7 +70,9 @@ impl Parser {
                             p.apply_transform(&tr);
                         }
                     } else {
-                        return Err(self.error_at(t.span, format!("unexpected '{k}' in sky_sphere")));
+                        return Err(
+                            self.error_at(t.span, format!("unexpected '{k}' in sky_sphere"))
+                        );
                     }
                 }
                 _ => return Err(self.unexpected(&t, "in sky_sphere")),
@@ -112,7 +114,8 @@ impl Parser {
                 "charset" => {
                     self.next()?;
                 }
-                "max_intersections" | "number_of_waves" | "noise_generator" | "hf_gray_16" | "mm_per_unit" | "subsurface" => {
+                "max_intersections" | "number_of_waves" | "noise_generator" | "hf_gray_16"
+                | "mm_per_unit" | "subsurface" => {
                     if self.peek_sym()? == Some(Sym::LBrace) {
                         self.skip_block()?;
                     } else {
@@ -129,7 +132,11 @@ impl Parser {
                     self.unsupported(k, t.span);
                     self.skip_block()?;
                 }
-                _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in global_settings"))),
+                _ => {
+                    return Err(
+                        self.error_at(t.span, format!("unexpected '{k}' in global_settings"))
+                    )
+                }
             }
         }
     }
@@ -157,7 +164,8 @@ impl Parser {
             }
             match &**k {
                 "perspective" => {}
-                "orthographic" | "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "spherical" | "cylinder" | "mesh_camera" => {
+                "orthographic" | "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic"
+                | "spherical" | "cylinder" | "mesh_camera" => {
                     self.unsupported(&format!("{k} camera (rendered as perspective)"), t.span);
                     if &**k == "cylinder" {
                         self.parse_float()?;

@@ -9,7 +9,10 @@ use super::value::{MacroDef, Value};
 
 /// Directives that open a block closed by `#end`, for skipping nested blocks.
 fn opens_block(d: &str) -> bool {
-    matches!(d, "if" | "ifdef" | "ifndef" | "while" | "for" | "switch" | "macro")
+    matches!(
+        d,
+        "if" | "ifdef" | "ifndef" | "while" | "for" | "switch" | "macro"
+    )
 }
 
 /// Where a skip over inactive tokens stopped.
@@ -96,7 +99,10 @@ impl Parser {
             self.advance();
             return Ok(n.clone());
         }
-        Err(self.error_at(t.span, format!("expected an identifier {context}, found {}", t.tok)))
+        Err(self.error_at(
+            t.span,
+            format!("expected an identifier {context}, found {}", t.tok),
+        ))
     }
 
     fn enter_if(&mut self, taken: bool, span: Span) -> PResult<()> {
@@ -129,7 +135,10 @@ impl Parser {
         loop {
             let f = self.frames.last_mut().expect("a frame");
             if f.pos >= f.end {
-                return Err(self.error_at(open, "this block has no matching #end before the end of its file or macro"));
+                return Err(self.error_at(
+                    open,
+                    "this block has no matching #end before the end of its file or macro",
+                ));
             }
             let t = &f.tokens[f.pos];
             f.pos += 1;
@@ -159,7 +168,13 @@ impl Parser {
                     self.skip_inactive(span, false).map(|_| ())
                 }
             }
-            Some(Cond::For { frame, body_pos, var, end, step }) if frame == depth => {
+            Some(Cond::For {
+                frame,
+                body_pos,
+                var,
+                end,
+                step,
+            }) if frame == depth => {
                 let v = match self.lookup(&var) {
                     Some(Value::Float(v)) => *v + step,
                     _ => return Err(self.error_at(span, format!("the #for loop variable '{var}' was changed to a non-float inside the loop"))),
@@ -167,13 +182,22 @@ impl Parser {
                 self.set_var(var.clone(), Value::Float(v), true);
                 if (step > 0.0 && v <= end) || (step < 0.0 && v >= end) {
                     self.frames[frame].pos = body_pos;
-                    self.conds.push(Cond::For { frame, body_pos, var, end, step });
+                    self.conds.push(Cond::For {
+                        frame,
+                        body_pos,
+                        var,
+                        end,
+                        step,
+                    });
                 }
                 Ok(())
             }
             Some(c) => {
                 self.conds.push(c);
-                Err(self.error_at(span, "#end does not match a #if, #while or #for opened in this file or macro"))
+                Err(self.error_at(
+                    span,
+                    "#end does not match a #if, #while or #for opened in this file or macro",
+                ))
             }
             None => Err(self.error_at(span, "#end without a matching #if, #while, #for or #macro")),
         }
@@ -186,7 +210,11 @@ impl Parser {
         let start = self.parse_float()?;
         self.expect_sym(Sym::Comma, "after the #for start value")?;
         let end = self.parse_float()?;
-        let step = if self.eat_sym(Sym::Comma)? { self.parse_float()? } else { 1.0 };
+        let step = if self.eat_sym(Sym::Comma)? {
+            self.parse_float()?
+        } else {
+            1.0
+        };
         self.expect_sym(Sym::RParen, "to close #for")?;
         if step == 0.0 {
             return Err(self.error_at(span, "#for step is zero: the loop would never end"));
@@ -197,7 +225,13 @@ impl Parser {
         }
         let frame = self.frames.len() - 1;
         let body_pos = self.frames[frame].pos;
-        self.conds.push(Cond::For { frame, body_pos, var, end, step });
+        self.conds.push(Cond::For {
+            frame,
+            body_pos,
+            var,
+            end,
+            step,
+        });
         Ok(())
     }
 
@@ -207,13 +241,20 @@ impl Parser {
         let idx = if local {
             self.scopes.len() - 1
         } else {
-            (1..self.scopes.len()).rev().find(|&i| self.scopes[i].contains_key(&name)).unwrap_or(0)
+            (1..self.scopes.len())
+                .rev()
+                .find(|&i| self.scopes[i].contains_key(&name))
+                .unwrap_or(0)
         };
         self.scopes[idx].insert(name, v);
     }
 
     fn declare(&mut self, local: bool, _span: Span) -> PResult<()> {
-        let name = self.raw_ident(if local { "after #local" } else { "after #declare" })?;
+        let name = self.raw_ident(if local {
+            "after #local"
+        } else {
+            "after #declare"
+        })?;
         self.expect_sym(Sym::Eq, &format!("after '{name}' in the declaration"))?;
         let v = self.parse_rvalue()?;
         // The semicolon is optional for objects and required by POV-Ray for numbers; accept it
@@ -228,9 +269,13 @@ impl Parser {
     /// The right-hand side of a declaration or a macro argument: anything an identifier can hold.
     pub(super) fn parse_rvalue(&mut self) -> PResult<Value> {
         let t = self.peek()?.ok_or_else(|| self.eof_error())?;
-        let Tok::Ident(k) = &t.tok else { return self.parse_expr() };
+        let Tok::Ident(k) = &t.tok else {
+            return self.parse_expr();
+        };
         if Self::object_parser(k).is_some() {
-            return Ok(Value::Object(Box::new(self.parse_object()?.expect("object keyword"))));
+            return Ok(Value::Object(Box::new(
+                self.parse_object()?.expect("object keyword"),
+            )));
         }
         match &**k {
             "pigment" => {
@@ -262,7 +307,16 @@ impl Parser {
                 Ok(Value::Transform(self.parse_transform_block()?))
             }
             _ => match self.lookup(k) {
-                Some(v @ (Value::Object(_) | Value::Pigment(_) | Value::Finish(_) | Value::Normal(_) | Value::Texture(_) | Value::Interior(_) | Value::Camera(_) | Value::Transform(_))) => {
+                Some(
+                    v @ (Value::Object(_)
+                    | Value::Pigment(_)
+                    | Value::Finish(_)
+                    | Value::Normal(_)
+                    | Value::Texture(_)
+                    | Value::Interior(_)
+                    | Value::Camera(_)
+                    | Value::Transform(_)),
+                ) => {
                     let v = v.clone();
                     self.advance();
                     Ok(v)
@@ -287,14 +341,25 @@ impl Parser {
                     params.push((p.to_string(), true));
                 }
                 Tok::Ident(p) => params.push((p.to_string(), false)),
-                other => return Err(self.error_at(t.span, format!("expected a parameter name in #macro {name}, found {other}"))),
+                other => {
+                    return Err(self.error_at(
+                        t.span,
+                        format!("expected a parameter name in #macro {name}, found {other}"),
+                    ))
+                }
             }
         }
         let f = self.frames.last().expect("a frame");
         let (tokens, body_start) = (f.tokens.clone(), f.pos);
         self.skip_inactive(span, false)?;
         let body_end = self.frames.last().expect("a frame").pos - 1;
-        let def = MacroDef { name: name.to_string(), params, tokens, body_start, body_end };
+        let def = MacroDef {
+            name: name.to_string(),
+            params,
+            tokens,
+            body_start,
+            body_end,
+        };
         self.set_var(name, Value::Macro(Rc::new(def)), false);
         Ok(())
     }
@@ -317,11 +382,32 @@ impl Parser {
             }
         }
         if args.len() > m.params.len() || m.params[args.len()..].iter().any(|p| !p.1) {
-            return Err(self.error_at(span, format!("macro {} takes {} parameters, {} given", m.name, m.params.len(), args.len())));
+            return Err(self.error_at(
+                span,
+                format!(
+                    "macro {} takes {} parameters, {} given",
+                    m.name,
+                    m.params.len(),
+                    args.len()
+                ),
+            ));
         }
-        self.push_frame_range(m.tokens.clone(), m.body_start, m.body_end, FrameKind::Macro, Some((span, format!("in macro {} called from here", m.name).into())), true);
+        self.push_frame_range(
+            m.tokens.clone(),
+            m.body_start,
+            m.body_end,
+            FrameKind::Macro,
+            Some((span, format!("in macro {} called from here", m.name).into())),
+            true,
+        );
         if self.frames.len() > 200 {
-            return Err(self.error_at(span, format!("too many nested macro calls (more than 200): does {} call itself without end?", m.name)));
+            return Err(self.error_at(
+                span,
+                format!(
+                    "too many nested macro calls (more than 200): does {} call itself without end?",
+                    m.name
+                ),
+            ));
         }
         let scope = self.scopes.last_mut().expect("macro scope");
         for ((p, _), a) in m.params.iter().zip(args) {
@@ -347,7 +433,9 @@ impl Parser {
                     let base = self.scene.default_texture.finish.clone();
                     self.scene.default_texture.finish = self.parse_finish_block(Some(base))?;
                 }
-                Tok::Ident(k) if &**k == "texture" => self.scene.default_texture = self.parse_texture_block()?,
+                Tok::Ident(k) if &**k == "texture" => {
+                    self.scene.default_texture = self.parse_texture_block()?
+                }
                 Tok::Ident(k) if &**k == "normal" => {
                     let n = self.parse_normal_block(t.span)?;
                     self.scene.default_texture.normal = Some(n);
@@ -357,7 +445,11 @@ impl Parser {
         }
     }
 
-    pub(super) fn unexpected(&self, t: &Token, context: &str) -> Box<super::super::diag::Diagnostic> {
+    pub(super) fn unexpected(
+        &self,
+        t: &Token,
+        context: &str,
+    ) -> Box<super::super::diag::Diagnostic> {
         self.error_at(t.span, format!("unexpected {} {context}", t.tok))
     }
 }

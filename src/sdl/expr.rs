@@ -23,7 +23,9 @@ fn binop(a: Value, b: Value, f: impl Fn(f64, f64) -> f64) -> Option<Value> {
         out[i] = f(ca[i], cb[i]);
     }
     Some(match (&a, &b) {
-        (Value::Color(_), _) | (_, Value::Color(_)) => Value::Color(Rgbft::from_array(promote(out, na, nb))),
+        (Value::Color(_), _) | (_, Value::Color(_)) => {
+            Value::Color(Rgbft::from_array(promote(out, na, nb)))
+        }
         (Value::Float(_), Value::Float(_)) => Value::Float(out[0]),
         _ => Value::Vector(promote(out, na, nb), na.max(nb)),
     })
@@ -61,10 +63,20 @@ impl Parser {
     }
 
     fn cur_span(&self) -> Span {
-        self.frames.last().and_then(|f| f.tokens.get(f.pos.saturating_sub(1))).map(|t| t.span).unwrap_or_default()
+        self.frames
+            .last()
+            .and_then(|f| f.tokens.get(f.pos.saturating_sub(1)))
+            .map(|t| t.span)
+            .unwrap_or_default()
     }
 
-    fn arith(&mut self, a: Value, b: Value, span: Span, f: impl Fn(f64, f64) -> f64) -> PResult<Value> {
+    fn arith(
+        &mut self,
+        a: Value,
+        b: Value,
+        span: Span,
+        f: impl Fn(f64, f64) -> f64,
+    ) -> PResult<Value> {
         let (ta, tb) = (a.type_name(), b.type_name());
         if let (Value::Str(_), _) | (_, Value::Str(_)) = (&a, &b) {
             return Err(self.error_at(span, format!("cannot do arithmetic on a {ta} and a {tb}")));
@@ -79,7 +91,9 @@ impl Parser {
             (Value::Vector(c, n), _, Some(m)) if m > n && m > 1 => Value::Vector(pad((c, n), m), m),
             (b, _, _) => b,
         };
-        binop(a, b, f).ok_or_else(|| self.error_at(span, format!("cannot do arithmetic on a {ta} and a {tb}")))
+        binop(a, b, f).ok_or_else(|| {
+            self.error_at(span, format!("cannot do arithmetic on a {ta} and a {tb}"))
+        })
     }
 
     fn parse_or(&mut self) -> PResult<Value> {
@@ -152,7 +166,11 @@ impl Parser {
             self.advance();
             let span = self.cur_span();
             let b = self.parse_mul()?;
-            a = if op == Some(Sym::Plus) { self.arith(a, b, span, |x, y| x + y)? } else { self.arith(a, b, span, |x, y| x - y)? };
+            a = if op == Some(Sym::Plus) {
+                self.arith(a, b, span, |x, y| x + y)?
+            } else {
+                self.arith(a, b, span, |x, y| x - y)?
+            };
         }
     }
 
@@ -170,7 +188,17 @@ impl Parser {
                 self.arith(a, b, span, |x, y| x * y)?
             } else {
                 // POV-Ray divides by zero with a warning and a huge result; keep it finite.
-                self.arith(a, b, span, |x, y| if y == 0.0 { if x == 0.0 { 0.0 } else { x.signum() * 1e10 } } else { x / y })?
+                self.arith(a, b, span, |x, y| {
+                    if y == 0.0 {
+                        if x == 0.0 {
+                            0.0
+                        } else {
+                            x.signum() * 1e10
+                        }
+                    } else {
+                        x / y
+                    }
+                })?
             };
         }
     }
@@ -181,10 +209,11 @@ impl Parser {
                 self.advance();
                 let span = self.cur_span();
                 let v = self.parse_unary()?;
-                self.arith(Value::Float(0.0), v, span, |x, y| x - y).map(|v| match v {
-                    // 0 - vector promoted the zero; that is a plain negation.
-                    other => other,
-                })
+                self.arith(Value::Float(0.0), v, span, |x, y| x - y)
+                    .map(|v| match v {
+                        // 0 - vector promoted the zero; that is a plain negation.
+                        other => other,
+                    })
             }
             Some(Sym::Plus) => {
                 self.advance();
@@ -206,7 +235,12 @@ impl Parser {
         while self.raw_peek_sym()? == Some(Sym::Dot) {
             self.advance();
             let t = self.next()?;
-            let Tok::Ident(k) = &t.tok else { return Err(self.error_at(t.span, format!("expected a component name after '.', found {}", t.tok))) };
+            let Tok::Ident(k) = &t.tok else {
+                return Err(self.error_at(
+                    t.span,
+                    format!("expected a component name after '.', found {}", t.tok),
+                ));
+            };
             let idx = match &**k {
                 "x" | "u" | "red" => 0,
                 "y" | "v" | "green" => 1,
@@ -214,20 +248,31 @@ impl Parser {
                 "t" | "filter" => 3,
                 "transmit" => 4,
                 "gray" | "grey" => {
-                    let Some((c, _)) = v.components() else { return Err(self.error_at(t.span, format!("'.{k}' needs a colour"))) };
+                    let Some((c, _)) = v.components() else {
+                        return Err(self.error_at(t.span, format!("'.{k}' needs a colour")));
+                    };
                     v = Value::Float(c[0] * 0.297 + c[1] * 0.589 + c[2] * 0.114);
                     continue;
                 }
                 "hf" => {
-                    let Some((c, _)) = v.components() else { return Err(self.error_at(t.span, format!("'.{k}' needs a colour"))) };
+                    let Some((c, _)) = v.components() else {
+                        return Err(self.error_at(t.span, format!("'.{k}' needs a colour")));
+                    };
                     v = Value::Float(c[0] + c[1] / 255.0);
                     continue;
                 }
                 _ => return Err(self.error_at(t.span, format!("unknown component '.{k}'"))),
             };
             match v.components() {
-                Some((c, n)) if n == 1 || idx < n as usize || matches!(v, Value::Color(_)) => v = Value::Float(c[idx]),
-                _ => return Err(self.error_at(t.span, format!("'.{k}' does not apply to a {}", v.type_name()))),
+                Some((c, n)) if n == 1 || idx < n as usize || matches!(v, Value::Color(_)) => {
+                    v = Value::Float(c[idx])
+                }
+                _ => {
+                    return Err(self.error_at(
+                        t.span,
+                        format!("'.{k}' does not apply to a {}", v.type_name()),
+                    ))
+                }
             }
         }
         Ok(v)
@@ -248,7 +293,13 @@ impl Parser {
             }
             Tok::Sym(Sym::Lt) => self.parse_vector_literal(),
             Tok::Ident(k) => self.parse_ident_value(k.clone(), t.span),
-            _ => Err(self.error_at(t.span, format!("expected a value (number, vector, colour or identifier), found {}", t.tok))),
+            _ => Err(self.error_at(
+                t.span,
+                format!(
+                    "expected a value (number, vector, colour or identifier), found {}",
+                    t.tok
+                ),
+            )),
         }
     }
 
@@ -268,7 +319,12 @@ impl Parser {
                 match self.next()? {
                     t if t.tok == Tok::Sym(Sym::Comma) => {}
                     t if t.tok == Tok::Sym(Sym::Gt) => break,
-                    t => return Err(self.error_at(t.span, format!("expected ',' or '>' in the vector, found {}", t.tok))),
+                    t => {
+                        return Err(self.error_at(
+                            t.span,
+                            format!("expected ',' or '>' in the vector, found {}", t.tok),
+                        ))
+                    }
                 }
             }
             if n < 2 {
@@ -313,7 +369,8 @@ impl Parser {
             }
             "red" | "green" | "blue" | "filter" | "transmit" => {
                 // `color red 1 green 0.5`: start from black and set components.
-                self.color_components(Rgbft::BLACK, Some(k)).map(Value::Color)
+                self.color_components(Rgbft::BLACK, Some(k))
+                    .map(Value::Color)
             }
             _ => self.builtin_call(&k, span),
         }
@@ -358,7 +415,12 @@ impl Parser {
 
     /// `rgb v` and friends: promotion by the keyword's component count; `srgb` decodes sRGB.
     fn color_from(&self, kw: &str, v: Value, span: Span) -> PResult<Rgbft> {
-        let Some((c, n)) = v.components() else { return Err(self.error_at(span, format!("'{kw}' needs a number or vector, found a {}", v.type_name()))) };
+        let Some((c, n)) = v.components() else {
+            return Err(self.error_at(
+                span,
+                format!("'{kw}' needs a number or vector, found a {}", v.type_name()),
+            ));
+        };
         let c = if n == 1 { [c[0]; 5] } else { pad((c, n), 5) };
         let base = kw.trim_start_matches('s');
         let (f, t) = match base {
@@ -379,7 +441,10 @@ impl Parser {
             Value::Color(c) => Ok(c),
             Value::Float(f) => Ok(Rgbft::new(f, f, f, f, f)),
             Value::Vector(c, n) => Ok(Rgbft::from_array(pad((c, n), 5))),
-            other => Err(self.error_at(span, format!("expected a colour, found a {}", other.type_name()))),
+            other => Err(self.error_at(
+                span,
+                format!("expected a colour, found a {}", other.type_name()),
+            )),
         }
     }
 
@@ -388,7 +453,10 @@ impl Parser {
             Value::Float(f) => Ok(f),
             // POV-Ray takes the first component when a colour or vector stands for a float.
             Value::Color(c) => Ok(c.rgb.x),
-            other => Err(self.error_at(span, format!("expected a float, found a {}", other.type_name()))),
+            other => Err(self.error_at(
+                span,
+                format!("expected a float, found a {}", other.type_name()),
+            )),
         }
     }
 
@@ -413,7 +481,10 @@ impl Parser {
                 Ok(DVec3::new(c[0], c[1], c[2]))
             }
             Value::Color(c) => Ok(c.rgb),
-            other => Err(self.error_at(span, format!("expected a vector, found a {}", other.type_name()))),
+            other => Err(self.error_at(
+                span,
+                format!("expected a vector, found a {}", other.type_name()),
+            )),
         }
     }
 
@@ -421,7 +492,10 @@ impl Parser {
         let span = self.next_span()?;
         match self.parse_expr()? {
             Value::Str(s) => Ok(s.to_string()),
-            other => Err(self.error_at(span, format!("expected a string, found a {}", other.type_name()))),
+            other => Err(self.error_at(
+                span,
+                format!("expected a string, found a {}", other.type_name()),
+            )),
         }
     }
 
@@ -441,9 +515,13 @@ impl Parser {
 
     fn builtin_call(&mut self, name: &str, span: Span) -> PResult<Value> {
         let arity: usize = match name {
-            "sin" | "cos" | "tan" | "asin" | "acos" | "sqrt" | "exp" | "log" | "ln" | "abs" | "floor" | "ceil" | "int" | "radians" | "degrees" | "vlength" | "vnormalize" | "sinh" | "cosh"
-            | "tanh" | "asinh" | "acosh" | "atanh" | "strlen" | "val" | "str_len" | "defined" => 1,
-            "atan2" | "pow" | "mod" | "div" | "vdot" | "vcross" | "vrotate" | "min" | "max" | "atan" | "select" | "vaxis_rotate" | "str" | "concat" | "vstr" | "substr" | "chr" | "asc" => 0,
+            "sin" | "cos" | "tan" | "asin" | "acos" | "sqrt" | "exp" | "log" | "ln" | "abs"
+            | "floor" | "ceil" | "int" | "radians" | "degrees" | "vlength" | "vnormalize"
+            | "sinh" | "cosh" | "tanh" | "asinh" | "acosh" | "atanh" | "strlen" | "val"
+            | "str_len" | "defined" => 1,
+            "atan2" | "pow" | "mod" | "div" | "vdot" | "vcross" | "vrotate" | "min" | "max"
+            | "atan" | "select" | "vaxis_rotate" | "str" | "concat" | "vstr" | "substr" | "chr"
+            | "asc" => 0,
             _ => return Err(self.error_at(span, format!("undeclared identifier '{name}'"))),
         };
         self.expect_sym(Sym::LParen, &format!("after the function name {name}"))?;
@@ -465,7 +543,10 @@ impl Parser {
             if args.len() == n {
                 Ok(())
             } else {
-                Err(self.error_at(span, format!("{name} takes {n} argument(s), {} given", args.len())))
+                Err(self.error_at(
+                    span,
+                    format!("{name} takes {n} argument(s), {} given", args.len()),
+                ))
             }
         };
         if arity == 1 {
@@ -477,7 +558,10 @@ impl Parser {
                 Value::Float(f) => Ok(DVec3::splat(*f)),
                 Value::Vector(c, _) => Ok(DVec3::new(c[0], c[1], c[2])),
                 Value::Color(c) => Ok(c.rgb),
-                o => Err(p.error_at(args[i].1, format!("{name} needs a vector, found a {}", o.type_name()))),
+                o => Err(p.error_at(
+                    args[i].1,
+                    format!("{name} needs a vector, found a {}", o.type_name()),
+                )),
             }
         };
         let r = |x: f64| Ok(Value::Float(x));
@@ -500,7 +584,10 @@ impl Parser {
             "abs" => match &args[0].0 {
                 Value::Float(f) => r(f.abs()),
                 Value::Vector(c, n) => Ok(Value::Vector(c.map(f64::abs), *n)),
-                o => Err(self.error_at(args[0].1, format!("abs needs a number, found a {}", o.type_name()))),
+                o => Err(self.error_at(
+                    args[0].1,
+                    format!("abs needs a number, found a {}", o.type_name()),
+                )),
             },
             "floor" => r(fl(self, 0)?.floor()),
             "ceil" => r(fl(self, 0)?.ceil()),
@@ -510,11 +597,18 @@ impl Parser {
             "vlength" => r(ve(self, 0)?.length()),
             "vnormalize" => {
                 let v = ve(self, 0)?;
-                Ok(Value::vec3(if v == DVec3::ZERO { v } else { v.normalize() }))
+                Ok(Value::vec3(if v == DVec3::ZERO {
+                    v
+                } else {
+                    v.normalize()
+                }))
             }
             "strlen" | "str_len" => match &args[0].0 {
                 Value::Str(s) => r(s.chars().count() as f64),
-                o => Err(self.error_at(args[0].1, format!("strlen needs a string, found a {}", o.type_name()))),
+                o => Err(self.error_at(
+                    args[0].1,
+                    format!("strlen needs a string, found a {}", o.type_name()),
+                )),
             },
             "atan" if args.len() == 1 => r(fl(self, 0)?.atan()),
             "atan" | "atan2" => {
@@ -545,7 +639,9 @@ impl Parser {
             }
             "vrotate" => {
                 want(2)?;
-                Ok(Value::vec3(crate::math::Transform::rotate(ve(self, 1)?).point(ve(self, 0)?)))
+                Ok(Value::vec3(
+                    crate::math::Transform::rotate(ve(self, 1)?).point(ve(self, 0)?),
+                ))
             }
             "vaxis_rotate" => {
                 want(3)?;
@@ -565,7 +661,11 @@ impl Parser {
                 let mut acc = fl(self, 0)?;
                 for i in 1..args.len() {
                     let x = fl(self, i)?;
-                    acc = if name == "min" { acc.min(x) } else { acc.max(x) };
+                    acc = if name == "min" {
+                        acc.min(x)
+                    } else {
+                        acc.max(x)
+                    };
                 }
                 r(acc)
             }
@@ -597,23 +697,40 @@ impl Parser {
                 for (v, sp) in &args {
                     match v {
                         Value::Str(x) => s.push_str(x),
-                        o => return Err(self.error_at(*sp, format!("concat needs strings, found a {}", o.type_name()))),
+                        o => {
+                            return Err(self.error_at(
+                                *sp,
+                                format!("concat needs strings, found a {}", o.type_name()),
+                            ))
+                        }
                     }
                 }
                 Ok(Value::Str(s.into()))
             }
             "chr" => {
                 want(1)?;
-                Ok(Value::Str(char::from_u32(fl(self, 0)? as u32).unwrap_or(' ').to_string().into()))
+                Ok(Value::Str(
+                    char::from_u32(fl(self, 0)? as u32)
+                        .unwrap_or(' ')
+                        .to_string()
+                        .into(),
+                ))
             }
-            _ => Err(self.error_at(span, format!("the function {name} is not supported by lancer yet"))),
+            _ => Err(self.error_at(
+                span,
+                format!("the function {name} is not supported by lancer yet"),
+            )),
         }
     }
 }
 
 /// POV-Ray's `str(value, width, precision)`.
 fn format_str(v: f64, w: i64, p: i64) -> String {
-    let s = if p < 0 { format!("{v}") } else { format!("{v:.*}", p as usize) };
+    let s = if p < 0 {
+        format!("{v}")
+    } else {
+        format!("{v:.*}", p as usize)
+    };
     let w = w.unsigned_abs() as usize;
     if s.len() < w {
         format!("{s:>w$}")

@@ -124,7 +124,10 @@ pub fn lex(text: &str, file: u32) -> Result<Vec<Token>, LexError> {
                 message: if c == '"' {
                     "unterminated string: a string must end with '\"' on the same line".to_string()
                 } else if c.is_control() || c == '\u{fffd}' {
-                    format!("unexpected byte {:#04x}: this does not look like scene text", c as u32)
+                    format!(
+                        "unexpected byte {:#04x}: this does not look like scene text",
+                        c as u32
+                    )
                 } else {
                     format!("unexpected character '{c}'")
                 },
@@ -133,11 +136,26 @@ pub fn lex(text: &str, file: u32) -> Result<Vec<Token>, LexError> {
             }
         })?;
         let tok = match tok {
-            Tok::Str(raw) => Tok::Str(unescape(&raw).map_err(|m| LexError { message: m, start, end: start + 1 })?.into()),
+            Tok::Str(raw) => Tok::Str(
+                unescape(&raw)
+                    .map_err(|m| LexError {
+                        message: m,
+                        start,
+                        end: start + 1,
+                    })?
+                    .into(),
+            ),
             t => t,
         };
         let end = text.len() - next.len();
-        out.push(Token { tok, span: Span { file, start: start as u32, end: end as u32 } });
+        out.push(Token {
+            tok,
+            span: Span {
+                file,
+                start: start as u32,
+                end: end as u32,
+            },
+        });
         rest = next;
     }
 }
@@ -155,7 +173,11 @@ fn skip_trivia(mut s: &str, total: usize) -> Result<&str, LexError> {
             let b = s.as_bytes();
             loop {
                 if i + 1 >= b.len() {
-                    return Err(LexError { message: "unterminated comment: '/*' has no matching '*/'".into(), start, end: start + 2 });
+                    return Err(LexError {
+                        message: "unterminated comment: '/*' has no matching '*/'".into(),
+                        start,
+                        end: start + 2,
+                    });
                 }
                 if b[i] == b'/' && b[i + 1] == b'*' {
                     depth += 1;
@@ -183,7 +205,10 @@ fn token(s: &str) -> IResult<&str, Tok> {
 
 fn number(s: &str) -> IResult<&str, Tok> {
     let exponent = tuple((one_of("eE"), opt(one_of("+-")), digit1));
-    let mantissa = alt((recognize(tuple((digit1, opt(pair(char('.'), digit0))))), recognize(pair(char('.'), digit1))));
+    let mantissa = alt((
+        recognize(tuple((digit1, opt(pair(char('.'), digit0))))),
+        recognize(pair(char('.'), digit1)),
+    ));
     let (rest, text) = recognize(pair(mantissa, opt(exponent)))(s)?;
     Ok((rest, Tok::Num(text.parse().unwrap_or(0.0))))
 }
@@ -200,7 +225,10 @@ fn string(s: &str) -> IResult<&str, Tok> {
             _ => i += 1,
         }
     }
-    Err(nom::Err::Error(nom::error::Error::new(s, nom::error::ErrorKind::Char)))
+    Err(nom::Err::Error(nom::error::Error::new(
+        s,
+        nom::error::ErrorKind::Char,
+    )))
 }
 
 fn unescape(raw: &str) -> Result<String, String> {
@@ -250,7 +278,9 @@ fn ident(s: &str) -> IResult<&str, Tok> {
 fn directive(s: &str) -> IResult<&str, Tok> {
     let (r, _) = char('#')(s)?;
     let r = r.trim_start_matches([' ', '\t']);
-    let (r, Tok::Ident(name)) = ident(r)? else { unreachable!() };
+    let (r, Tok::Ident(name)) = ident(r)? else {
+        unreachable!()
+    };
     Ok((r, Tok::Directive(name)))
 }
 
@@ -314,12 +344,27 @@ mod tests {
 
     #[test]
     fn comments_nest_and_vanish() {
-        assert_eq!(toks("a /* x /* y */ z */ b // c\n d"), vec![Tok::Ident("a".into()), Tok::Ident("b".into()), Tok::Ident("d".into())]);
+        assert_eq!(
+            toks("a /* x /* y */ z */ b // c\n d"),
+            vec![
+                Tok::Ident("a".into()),
+                Tok::Ident("b".into()),
+                Tok::Ident("d".into())
+            ]
+        );
     }
 
     #[test]
     fn directives_and_strings() {
-        assert_eq!(toks("# declare S=\"a\\\"b\""), vec![Tok::Directive("declare".into()), Tok::Ident("S".into()), Tok::Sym(Sym::Eq), Tok::Str("a\"b".into())]);
+        assert_eq!(
+            toks("# declare S=\"a\\\"b\""),
+            vec![
+                Tok::Directive("declare".into()),
+                Tok::Ident("S".into()),
+                Tok::Sym(Sym::Eq),
+                Tok::Str("a\"b".into())
+            ]
+        );
     }
 
     #[test]

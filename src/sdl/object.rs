@@ -4,7 +4,9 @@
 use std::sync::Arc;
 
 use crate::math::{DVec3, Transform};
-use crate::scene::desc::{CsgOp, LightDesc, MeshData, MeshTriangle, ObjectDesc, ShapeDesc, Texture};
+use crate::scene::desc::{
+    CsgOp, LightDesc, MeshData, MeshTriangle, ObjectDesc, ShapeDesc, Texture,
+};
 
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
@@ -64,9 +66,15 @@ impl Parser {
 
     /// Parses an object if the next token starts one.
     pub fn parse_object(&mut self) -> PResult<Option<ObjectDesc>> {
-        let Some(t) = self.peek()? else { return Ok(None) };
-        let Tok::Ident(k) = &t.tok else { return Ok(None) };
-        let Some(f) = Self::object_parser(k) else { return Ok(None) };
+        let Some(t) = self.peek()? else {
+            return Ok(None);
+        };
+        let Tok::Ident(k) = &t.tok else {
+            return Ok(None);
+        };
+        let Some(f) = Self::object_parser(k) else {
+            return Ok(None);
+        };
         self.advance();
         f(self, t.span).map(Some)
     }
@@ -78,7 +86,9 @@ impl Parser {
     /// Parses modifiers up to and including the closing brace.
     fn finish_object(&mut self, mut obj: ObjectDesc, open: Span) -> PResult<ObjectDesc> {
         loop {
-            let Some(t) = self.peek()? else { return Err(self.error_at(open, "this '{' is never closed")) };
+            let Some(t) = self.peek()? else {
+                return Err(self.error_at(open, "this '{' is never closed"));
+            };
             match &t.tok {
                 Tok::Sym(Sym::RBrace) => {
                     self.advance();
@@ -88,7 +98,10 @@ impl Parser {
                     let k = k.clone();
                     self.advance();
                     if !self.object_modifier(&mut obj, &k, t.span)? {
-                        return Err(self.error_at(t.span, format!("'{k}' is not an object modifier; expected a modifier or '}}'")));
+                        return Err(self.error_at(
+                            t.span,
+                            format!("'{k}' is not an object modifier; expected a modifier or '}}'"),
+                        ));
                     }
                 }
                 _ => return Err(self.unexpected(&t, "in the object; expected a modifier or '}'")),
@@ -97,11 +110,18 @@ impl Parser {
     }
 
     fn texture_mut(&mut self, obj: &mut ObjectDesc) -> Texture {
-        obj.texture.take().unwrap_or_else(|| self.scene.default_texture.clone())
+        obj.texture
+            .take()
+            .unwrap_or_else(|| self.scene.default_texture.clone())
     }
 
     /// One object modifier whose keyword was just consumed; false when `k` is not one.
-    pub(super) fn object_modifier(&mut self, obj: &mut ObjectDesc, k: &str, span: Span) -> PResult<bool> {
+    pub(super) fn object_modifier(
+        &mut self,
+        obj: &mut ObjectDesc,
+        k: &str,
+        span: Span,
+    ) -> PResult<bool> {
         if let Some(t) = self.transform_item(k)? {
             obj.apply_transform(&t);
             return Ok(true);
@@ -167,7 +187,11 @@ impl Parser {
     fn optional_bool(&mut self) -> PResult<bool> {
         match self.peek()?.map(|t| t.tok) {
             Some(Tok::Num(_)) => Ok(self.parse_float()? != 0.0),
-            Some(Tok::Ident(k)) if matches!(&*k, "on" | "off" | "true" | "false" | "yes" | "no") => Ok(self.parse_float()? != 0.0),
+            Some(Tok::Ident(k))
+                if matches!(&*k, "on" | "off" | "true" | "false" | "yes" | "no") =>
+            {
+                Ok(self.parse_float()? != 0.0)
+            }
             _ => Ok(true),
         }
     }
@@ -178,8 +202,12 @@ impl Parser {
             let t = self.next()?;
             match &t.tok {
                 Tok::Sym(Sym::RBrace) => return Ok(()),
-                Tok::Ident(k) if &**k == "texture" => obj.texture = Some(self.parse_texture_block()?),
-                Tok::Ident(k) if &**k == "interior" => obj.interior = Some(self.parse_interior_block()?),
+                Tok::Ident(k) if &**k == "texture" => {
+                    obj.texture = Some(self.parse_texture_block()?)
+                }
+                Tok::Ident(k) if &**k == "interior" => {
+                    obj.interior = Some(self.parse_interior_block()?)
+                }
                 Tok::Ident(k) => {
                     if let Some(tr) = self.transform_item(k)? {
                         if let Some(tex) = &mut obj.texture {
@@ -214,7 +242,9 @@ impl Parser {
                 let mut r = Ok(());
                 for (i, x) in v.iter_mut().enumerate() {
                     if i > 0 {
-                        if let Err(e) = self.expect_sym(Sym::Comma, "between the twelve matrix values") {
+                        if let Err(e) =
+                            self.expect_sym(Sym::Comma, "between the twelve matrix values")
+                        {
                             r = Err(e);
                             break;
                         }
@@ -240,7 +270,11 @@ impl Parser {
                     match &t.tok {
                         Tok::Ident(n) => match self.lookup(n) {
                             Some(Value::Transform(tr)) => *tr,
-                            _ => return Err(self.error_at(t.span, format!("'{n}' is not a transform"))),
+                            _ => {
+                                return Err(
+                                    self.error_at(t.span, format!("'{n}' is not a transform"))
+                                )
+                            }
                         },
                         _ => return Err(self.unexpected(&t, "after 'transform'")),
                     }
@@ -303,7 +337,15 @@ impl Parser {
         let cap = self.parse_vector()?;
         self.expect_sym(Sym::Comma, "after the cylinder's cap point")?;
         let radius = self.parse_float()?;
-        self.finish_object(ObjectDesc::new(ShapeDesc::Cylinder { base, cap, radius, open: false }), open_b)
+        self.finish_object(
+            ObjectDesc::new(ShapeDesc::Cylinder {
+                base,
+                cap,
+                radius,
+                open: false,
+            }),
+            open_b,
+        )
     }
 
     fn cone(&mut self, _s: Span) -> PResult<ObjectDesc> {
@@ -315,7 +357,16 @@ impl Parser {
         let cap = self.parse_vector()?;
         self.expect_sym(Sym::Comma, "after the cone's cap point")?;
         let cap_radius = self.parse_float()?;
-        self.finish_object(ObjectDesc::new(ShapeDesc::Cone { base, base_radius, cap, cap_radius, open: false }), open_b)
+        self.finish_object(
+            ObjectDesc::new(ShapeDesc::Cone {
+                base,
+                base_radius,
+                cap,
+                cap_radius,
+                open: false,
+            }),
+            open_b,
+        )
     }
 
     fn disc(&mut self, _s: Span) -> PResult<ObjectDesc> {
@@ -325,8 +376,20 @@ impl Parser {
         let normal = self.parse_vector()?;
         self.expect_sym(Sym::Comma, "after the disc's normal")?;
         let radius = self.parse_float()?;
-        let hole_radius = if self.eat_sym(Sym::Comma)? { self.parse_float()? } else { 0.0 };
-        self.finish_object(ObjectDesc::new(ShapeDesc::Disc { center, normal, radius, hole_radius }), open)
+        let hole_radius = if self.eat_sym(Sym::Comma)? {
+            self.parse_float()?
+        } else {
+            0.0
+        };
+        self.finish_object(
+            ObjectDesc::new(ShapeDesc::Disc {
+                center,
+                normal,
+                radius,
+                hole_radius,
+            }),
+            open,
+        )
     }
 
     fn torus(&mut self, _s: Span) -> PResult<ObjectDesc> {
@@ -334,10 +397,21 @@ impl Parser {
         let major = self.parse_float()?;
         self.expect_sym(Sym::Comma, "after the torus' major radius")?;
         let minor = self.parse_float()?;
-        self.finish_object(ObjectDesc::new(ShapeDesc::Torus { major, minor, sturm: false }), open)
+        self.finish_object(
+            ObjectDesc::new(ShapeDesc::Torus {
+                major,
+                minor,
+                sturm: false,
+            }),
+            open,
+        )
     }
 
-    fn three_points(&mut self, what: &str, with_normals: bool) -> PResult<([DVec3; 3], [DVec3; 3])> {
+    fn three_points(
+        &mut self,
+        what: &str,
+        with_normals: bool,
+    ) -> PResult<([DVec3; 3], [DVec3; 3])> {
         let mut p = [DVec3::ZERO; 3];
         let mut n = [DVec3::ZERO; 3];
         for i in 0..3 {
@@ -369,7 +443,9 @@ impl Parser {
         let open = self.open_brace("mesh")?;
         let mut data = MeshData::default();
         loop {
-            let Some(t) = self.peek()? else { return Err(self.error_at(open, "this '{' is never closed")) };
+            let Some(t) = self.peek()? else {
+                return Err(self.error_at(open, "this '{' is never closed"));
+            };
             let smooth = match &t.tok {
                 Tok::Ident(k) if &**k == "triangle" => false,
                 Tok::Ident(k) if &**k == "smooth_triangle" => true,
@@ -382,7 +458,11 @@ impl Parser {
                 _ => break,
             };
             self.advance();
-            let inner = self.open_brace(if smooth { "smooth_triangle" } else { "triangle" })?;
+            let inner = self.open_brace(if smooth {
+                "smooth_triangle"
+            } else {
+                "triangle"
+            })?;
             let (p, n) = self.three_points("mesh triangle", smooth)?;
             let base = data.vertices.len() as u32;
             data.vertices.extend_from_slice(&p);
@@ -400,10 +480,17 @@ impl Parser {
                         data.textures.push(self.parse_texture_block()?);
                         texture = Some(data.textures.len() as u32 - 1);
                     }
-                    _ => return Err(self.error_at(inner, format!("unexpected {} in a mesh triangle", t.tok))),
+                    _ => {
+                        return Err(self
+                            .error_at(inner, format!("unexpected {} in a mesh triangle", t.tok)))
+                    }
                 }
             }
-            data.triangles.push(MeshTriangle { v: [base, base + 1, base + 2], n: normals, texture });
+            data.triangles.push(MeshTriangle {
+                v: [base, base + 1, base + 2],
+                n: normals,
+                texture,
+            });
         }
         self.finish_object(ObjectDesc::new(ShapeDesc::Mesh(Arc::new(data))), open)
     }
@@ -426,7 +513,12 @@ impl Parser {
         let obj = match &t.tok {
             Tok::Ident(n) => match self.lookup(n) {
                 Some(Value::Object(o)) => (**o).clone(),
-                Some(v) => return Err(self.error_at(t.span, format!("'{n}' holds a {}, not an object", v.type_name()))),
+                Some(v) => {
+                    return Err(self.error_at(
+                        t.span,
+                        format!("'{n}' holds a {}, not an object", v.type_name()),
+                    ))
+                }
                 None => return Err(self.error_at(t.span, format!("undeclared identifier '{n}'"))),
             },
             _ => return Err(self.unexpected(&t, "in object { }; expected an object identifier")),
@@ -438,10 +530,18 @@ impl Parser {
         let open = self.open_brace("light_source")?;
         let position = self.parse_vector()?;
         self.skip_optional_comma()?;
-        let mut light = LightDesc { position, color: DVec3::ONE, shadowless: false, fade_distance: None, fade_power: 0.0 };
+        let mut light = LightDesc {
+            position,
+            color: DVec3::ONE,
+            shadowless: false,
+            fade_distance: None,
+            fade_power: 0.0,
+        };
         let mut obj_tf = Transform::IDENTITY;
         loop {
-            let t = self.peek()?.ok_or_else(|| self.error_at(open, "this '{' is never closed"))?;
+            let t = self
+                .peek()?
+                .ok_or_else(|| self.error_at(open, "this '{' is never closed"))?;
             match &t.tok {
                 Tok::Sym(Sym::RBrace) => {
                     self.advance();
@@ -450,19 +550,24 @@ impl Parser {
                 Tok::Ident(k) => {
                     let k = k.clone();
                     match &*k {
-                        "color" | "colour" | "rgb" | "rgbf" | "rgbt" | "rgbft" | "srgb" => light.color = self.parse_color()?.rgb,
+                        "color" | "colour" | "rgb" | "rgbf" | "rgbt" | "rgbft" | "srgb" => {
+                            light.color = self.parse_color()?.rgb
+                        }
                         _ => {
                             self.advance();
                             match &*k {
                                 "shadowless" => light.shadowless = true,
                                 "fade_distance" => light.fade_distance = Some(self.parse_float()?),
                                 "fade_power" => light.fade_power = self.parse_float()?,
-                                "spotlight" | "cylinder" | "parallel" | "area_light" | "looks_like" | "projected_through" | "photons" | "media_interaction"
-                                | "media_attenuation" | "circular" | "orient" | "jitter" | "adaptive" | "area_illumination" => {
+                                "spotlight" | "cylinder" | "parallel" | "area_light"
+                                | "looks_like" | "projected_through" | "photons"
+                                | "media_interaction" | "media_attenuation" | "circular"
+                                | "orient" | "jitter" | "adaptive" | "area_illumination" => {
                                     self.unsupported(&k, t.span);
                                     self.skip_light_item(&k)?;
                                 }
-                                "point_at" | "radius" | "falloff" | "tightness" | "area_light_axis" => {
+                                "point_at" | "radius" | "falloff" | "tightness"
+                                | "area_light_axis" => {
                                     self.unsupported(&k, t.span);
                                     self.parse_expr()?;
                                 }
@@ -472,7 +577,10 @@ impl Parser {
                                     } else if let Some(Value::Color(c)) = self.lookup(other) {
                                         light.color = c.rgb;
                                     } else {
-                                        return Err(self.error_at(t.span, format!("unexpected '{other}' in light_source")));
+                                        return Err(self.error_at(
+                                            t.span,
+                                            format!("unexpected '{other}' in light_source"),
+                                        ));
                                     }
                                 }
                             }
@@ -512,10 +620,18 @@ impl Parser {
     }
 
     fn unsupported_object(&mut self, span: Span) -> PResult<ObjectDesc> {
-        let name = self.frames.last().and_then(|f| f.tokens.get(f.pos.saturating_sub(1))).map(|t| t.tok.to_string()).unwrap_or_default();
+        let name = self
+            .frames
+            .last()
+            .and_then(|f| f.tokens.get(f.pos.saturating_sub(1)))
+            .map(|t| t.tok.to_string())
+            .unwrap_or_default();
         self.unsupported(name.trim_matches('\''), span);
         self.skip_block()?;
         // An empty union renders as nothing but keeps `#declare X = blob {...}` usable.
-        Ok(ObjectDesc::new(ShapeDesc::Csg { op: CsgOp::Union, children: Vec::new() }))
+        Ok(ObjectDesc::new(ShapeDesc::Csg {
+            op: CsgOp::Union,
+            children: Vec::new(),
+        }))
     }
 }

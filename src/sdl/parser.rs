@@ -31,13 +31,22 @@ pub struct ParseOptions {
 
 impl Default for ParseOptions {
     fn default() -> Self {
-        ParseOptions { library_paths: Vec::new(), image_width: 320, image_height: 240, clock: 0.0 }
+        ParseOptions {
+            library_paths: Vec::new(),
+            image_width: 320,
+            image_height: 240,
+            clock: 0.0,
+        }
     }
 }
 
 /// The standard places Debian and source installs put POV-Ray's include files.
-pub const SYSTEM_INCLUDE_DIRS: &[&str] =
-    &["/usr/share/povray-3.7/include", "/usr/local/share/povray-3.7/include", "/usr/share/povray/include", "/usr/local/share/povray/include"];
+pub const SYSTEM_INCLUDE_DIRS: &[&str] = &[
+    "/usr/share/povray-3.7/include",
+    "/usr/local/share/povray-3.7/include",
+    "/usr/share/povray/include",
+    "/usr/local/share/povray/include",
+];
 
 /// Limits that turn runaway scenes into errors instead of hangs or stack overflows.
 const MAX_FRAME_DEPTH: usize = 200;
@@ -65,7 +74,13 @@ pub(super) enum Cond {
     /// Inside a `#while` body: `#end` rewinds to the condition.
     While { frame: usize, cond_pos: usize },
     /// Inside a `#for` body: `#end` steps the counter and rewinds.
-    For { frame: usize, body_pos: usize, var: Rc<str>, end: f64, step: f64 },
+    For {
+        frame: usize,
+        body_pos: usize,
+        var: Rc<str>,
+        end: f64,
+        step: f64,
+    },
 }
 
 pub struct Parser {
@@ -108,7 +123,10 @@ impl Parser {
 
     /// Parses a whole scene file. Errors carry spans into `self.sources`.
     pub fn parse_file(&mut self, path: &Path) -> PResult<()> {
-        self.scene_dir = path.parent().map(Path::to_path_buf).unwrap_or_else(|| PathBuf::from("."));
+        self.scene_dir = path
+            .parent()
+            .map(Path::to_path_buf)
+            .unwrap_or_else(|| PathBuf::from("."));
         let (_, tokens) = self.load(path, None)?;
         self.push_frame(tokens, FrameKind::File, None, false)?;
         self.parse_scene_items()
@@ -125,7 +143,14 @@ impl Parser {
     fn lex_file(&mut self, id: u32) -> PResult<Rc<[Token]>> {
         match lex(self.sources.text(id), id) {
             Ok(t) => Ok(t.into()),
-            Err(e) => Err(self.error_at(Span { file: id, start: e.start as u32, end: e.end as u32 }, e.message)),
+            Err(e) => Err(self.error_at(
+                Span {
+                    file: id,
+                    start: e.start as u32,
+                    end: e.end as u32,
+                },
+                e.message,
+            )),
         }
     }
 
@@ -160,7 +185,12 @@ impl Parser {
         }
         let mut dirs: Vec<PathBuf> = vec![self.scene_dir.clone()];
         // The directory of the file being read, so includes next to includes are found.
-        if let Some(f) = self.frames.iter().rev().find(|f| f.kind != FrameKind::Macro) {
+        if let Some(f) = self
+            .frames
+            .iter()
+            .rev()
+            .find(|f| f.kind != FrameKind::Macro)
+        {
             if let Some(t) = f.tokens.first() {
                 if let Some(d) = Path::new(&self.sources.name(t.span.file)).parent() {
                     dirs.push(d.to_path_buf());
@@ -176,7 +206,12 @@ impl Parser {
     pub(super) fn include(&mut self, name: &str, site: Span) -> PResult<()> {
         let Some(path) = self.find_file(name) else {
             let mut searched: Vec<String> = vec![self.scene_dir.display().to_string()];
-            searched.extend(self.options.library_paths.iter().map(|p| p.display().to_string()));
+            searched.extend(
+                self.options
+                    .library_paths
+                    .iter()
+                    .map(|p| p.display().to_string()),
+            );
             searched.extend(SYSTEM_INCLUDE_DIRS.iter().map(|s| s.to_string()));
             let d = self.error_at(site, format!("cannot find include file \"{name}\""));
             return Err(Box::new(
@@ -185,10 +220,21 @@ impl Parser {
             ));
         };
         let (_, tokens) = self.load(&path, Some(site))?;
-        self.push_frame(tokens, FrameKind::Include, Some((site, format!("included from here ({name})").into())), true)
+        self.push_frame(
+            tokens,
+            FrameKind::Include,
+            Some((site, format!("included from here ({name})").into())),
+            true,
+        )
     }
 
-    pub(super) fn push_frame(&mut self, tokens: Rc<[Token]>, kind: FrameKind, call_site: Option<(Span, Rc<str>)>, scope: bool) -> PResult<()> {
+    pub(super) fn push_frame(
+        &mut self,
+        tokens: Rc<[Token]>,
+        kind: FrameKind,
+        call_site: Option<(Span, Rc<str>)>,
+        scope: bool,
+    ) -> PResult<()> {
         if self.frames.len() >= MAX_FRAME_DEPTH {
             let span = call_site.as_ref().map(|c| c.0).unwrap_or(self.last_span);
             return Err(self.error_at(span, format!("too many nested include files or macro calls (more than {MAX_FRAME_DEPTH}); is a macro calling itself without end?")));
@@ -198,8 +244,22 @@ impl Parser {
         Ok(())
     }
 
-    pub(super) fn push_frame_range(&mut self, tokens: Rc<[Token]>, pos: usize, end: usize, kind: FrameKind, call_site: Option<(Span, Rc<str>)>, scope: bool) {
-        self.frames.push(Frame { tokens, pos, end, kind, call_site });
+    pub(super) fn push_frame_range(
+        &mut self,
+        tokens: Rc<[Token]>,
+        pos: usize,
+        end: usize,
+        kind: FrameKind,
+        call_site: Option<(Span, Rc<str>)>,
+        scope: bool,
+    ) {
+        self.frames.push(Frame {
+            tokens,
+            pos,
+            end,
+            kind,
+            call_site,
+        });
         self.frame_scopes.push(scope);
         if scope {
             self.scopes.push(HashMap::new());
@@ -209,7 +269,9 @@ impl Parser {
     /// The next token without executing directives or macro calls; pops finished frames.
     pub(super) fn raw_peek(&mut self) -> PResult<Option<Token>> {
         loop {
-            let Some(f) = self.frames.last() else { return Ok(None) };
+            let Some(f) = self.frames.last() else {
+                return Ok(None);
+            };
             if f.pos < f.end {
                 let t = f.tokens[f.pos].clone();
                 self.last_span = t.span;
@@ -232,7 +294,9 @@ impl Parser {
     fn check_conds_closed(&mut self) -> PResult<()> {
         let depth = self.frames.len() - 1;
         let open = match self.conds.last() {
-            Some(Cond::If { frame }) | Some(Cond::While { frame, .. }) | Some(Cond::For { frame, .. }) => *frame == depth,
+            Some(Cond::If { frame })
+            | Some(Cond::While { frame, .. })
+            | Some(Cond::For { frame, .. }) => *frame == depth,
             None => false,
         };
         if open {
@@ -251,7 +315,9 @@ impl Parser {
     /// The next token after executing any directives and macro calls in the way.
     pub fn peek(&mut self) -> PResult<Option<Token>> {
         loop {
-            let Some(t) = self.raw_peek()? else { return Ok(None) };
+            let Some(t) = self.raw_peek()? else {
+                return Ok(None);
+            };
             match &t.tok {
                 Tok::Directive(d) => {
                     self.advance();
@@ -283,12 +349,17 @@ impl Parser {
     }
 
     pub(super) fn eof_error(&self) -> Box<Diagnostic> {
-        self.error_at(self.last_span, "unexpected end of file: a '{' or '(' is probably not closed")
+        self.error_at(
+            self.last_span,
+            "unexpected end of file: a '{' or '(' is probably not closed",
+        )
     }
 
     pub(super) fn peek_sym(&mut self) -> PResult<Option<Sym>> {
         Ok(match self.peek()? {
-            Some(Token { tok: Tok::Sym(s), .. }) => Some(s),
+            Some(Token {
+                tok: Tok::Sym(s), ..
+            }) => Some(s),
             _ => None,
         })
     }
@@ -298,14 +369,18 @@ impl Parser {
     /// running inside it.
     pub(super) fn raw_peek_sym(&mut self) -> PResult<Option<Sym>> {
         Ok(match self.raw_peek()? {
-            Some(Token { tok: Tok::Sym(s), .. }) => Some(s),
+            Some(Token {
+                tok: Tok::Sym(s), ..
+            }) => Some(s),
             _ => None,
         })
     }
 
     pub(super) fn peek_ident(&mut self) -> PResult<Option<Rc<str>>> {
         Ok(match self.peek()? {
-            Some(Token { tok: Tok::Ident(s), .. }) => Some(s),
+            Some(Token {
+                tok: Tok::Ident(s), ..
+            }) => Some(s),
             _ => None,
         })
     }
@@ -323,7 +398,10 @@ impl Parser {
         if t.tok == Tok::Sym(s) {
             return Ok(t.span);
         }
-        Err(self.error_at(t.span, format!("expected '{}' {context}, found {}", s.text(), t.tok)))
+        Err(self.error_at(
+            t.span,
+            format!("expected '{}' {context}, found {}", s.text(), t.tok),
+        ))
     }
 
     pub(super) fn eat_keyword(&mut self, k: &str) -> PResult<bool> {
@@ -351,7 +429,15 @@ impl Parser {
     }
 
     fn chain(&self) -> Vec<ChainLink> {
-        self.frames.iter().rev().filter_map(|f| f.call_site.as_ref()).map(|(span, what)| ChainLink { what: what.to_string(), span: *span }).collect()
+        self.frames
+            .iter()
+            .rev()
+            .filter_map(|f| f.call_site.as_ref())
+            .map(|(span, what)| ChainLink {
+                what: what.to_string(),
+                span: *span,
+            })
+            .collect()
     }
 
     /// Warns once per place about a keyword lancer reads but does not render yet.

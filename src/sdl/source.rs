@@ -17,7 +17,9 @@ pub struct Sources {
 
 impl Default for Sources {
     fn default() -> Self {
-        Sources { files: SimpleFiles::new() }
+        Sources {
+            files: SimpleFiles::new(),
+        }
     }
 }
 
@@ -26,10 +28,16 @@ impl Sources {
         self.files.add(name, text) as u32
     }
     pub fn name(&self, file: u32) -> String {
-        self.files.get(file as usize).map(|f| f.name().clone()).unwrap_or_default()
+        self.files
+            .get(file as usize)
+            .map(|f| f.name().clone())
+            .unwrap_or_default()
     }
     pub fn text(&self, file: u32) -> &str {
-        self.files.get(file as usize).map(|f| f.source().as_str()).unwrap_or("")
+        self.files
+            .get(file as usize)
+            .map(|f| f.source().as_str())
+            .unwrap_or("")
     }
     /// One-based line and column of a span's start.
     pub fn line_col(&self, span: Span) -> (usize, usize) {

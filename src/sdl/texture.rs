@@ -5,7 +5,10 @@ use std::sync::Arc;
 
 use crate::color::Rgbft;
 use crate::math::DVec3;
-use crate::scene::desc::{ColorMap, Finish, ImageMap, Interior, Normal, NormalKind, Pattern, Pigment, PigmentKind, Reflection, Texture};
+use crate::scene::desc::{
+    ColorMap, Finish, ImageMap, Interior, Normal, NormalKind, Pattern, Pigment, PigmentKind,
+    Reflection, Texture,
+};
 
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
@@ -14,13 +17,59 @@ use super::value::Value;
 
 /// Pattern keywords POV-Ray 3.7 has that lancer does not evaluate yet.
 const UNSUPPORTED_PATTERNS: &[&str] = &[
-    "agate", "aoi", "average", "boxed", "bozo", "brick", "bumps", "cells", "crackle", "cubic", "cylindrical", "density_file", "dents", "facets", "function", "gradient_x", "granite",
-    "hexagon", "julia", "leopard", "magnet", "mandel", "marble", "object", "onion", "pavement", "pigment_pattern", "planar", "quilted", "radial", "ripples", "slope", "spherical",
-    "spiral1", "spiral2", "spotted", "square", "tiling", "triangular", "waves", "wood", "wrinkles", "proportion",
+    "agate",
+    "aoi",
+    "average",
+    "boxed",
+    "bozo",
+    "brick",
+    "bumps",
+    "cells",
+    "crackle",
+    "cubic",
+    "cylindrical",
+    "density_file",
+    "dents",
+    "facets",
+    "function",
+    "gradient_x",
+    "granite",
+    "hexagon",
+    "julia",
+    "leopard",
+    "magnet",
+    "mandel",
+    "marble",
+    "object",
+    "onion",
+    "pavement",
+    "pigment_pattern",
+    "planar",
+    "quilted",
+    "radial",
+    "ripples",
+    "slope",
+    "spherical",
+    "spiral1",
+    "spiral2",
+    "spotted",
+    "square",
+    "tiling",
+    "triangular",
+    "waves",
+    "wood",
+    "wrinkles",
+    "proportion",
 ];
 
 /// Pattern modifiers that change the picture and that lancer reads past with a warning.
-const UNSUPPORTED_MODIFIERS: &[&str] = &["turbulence", "octaves", "omega", "lambda", "noise_generator"];
+const UNSUPPORTED_MODIFIERS: &[&str] = &[
+    "turbulence",
+    "octaves",
+    "omega",
+    "lambda",
+    "noise_generator",
+];
 
 impl Parser {
     fn begin_block(&mut self, what: &str) -> PResult<Span> {
@@ -31,8 +80,25 @@ impl Parser {
     fn starts_color(&mut self) -> PResult<bool> {
         Ok(match self.peek()?.map(|t| t.tok) {
             Some(Tok::Ident(k)) => {
-                matches!(&*k, "color" | "colour" | "rgb" | "rgbf" | "rgbt" | "rgbft" | "srgb" | "srgbf" | "srgbt" | "srgbft" | "red" | "green" | "blue")
-                    || matches!(self.lookup(&k), Some(Value::Color(_) | Value::Float(_) | Value::Vector(..)))
+                matches!(
+                    &*k,
+                    "color"
+                        | "colour"
+                        | "rgb"
+                        | "rgbf"
+                        | "rgbt"
+                        | "rgbft"
+                        | "srgb"
+                        | "srgbf"
+                        | "srgbt"
+                        | "srgbft"
+                        | "red"
+                        | "green"
+                        | "blue"
+                ) || matches!(
+                    self.lookup(&k),
+                    Some(Value::Color(_) | Value::Float(_) | Value::Vector(..))
+                )
             }
             Some(Tok::Sym(Sym::Lt)) | Some(Tok::Num(_)) | Some(Tok::Sym(Sym::LParen)) => true,
             _ => false,
@@ -67,7 +133,10 @@ impl Parser {
             }
             match &**k {
                 "checker" => {
-                    let mut items = vec![Pigment::solid(Rgbft::rgb(DVec3::new(0.0, 0.0, 1.0))), Pigment::solid(Rgbft::rgb(DVec3::new(0.0, 1.0, 0.0)))];
+                    let mut items = vec![
+                        Pigment::solid(Rgbft::rgb(DVec3::new(0.0, 0.0, 1.0))),
+                        Pigment::solid(Rgbft::rgb(DVec3::new(0.0, 1.0, 0.0))),
+                    ];
                     for item in items.iter_mut() {
                         if self.eat_keyword("pigment")? {
                             *item = self.parse_pigment_block(None)?;
@@ -78,20 +147,33 @@ impl Parser {
                         }
                         self.skip_optional_comma()?;
                     }
-                    p.kind = PigmentKind::List { pattern: Pattern::Checker, items };
+                    p.kind = PigmentKind::List {
+                        pattern: Pattern::Checker,
+                        items,
+                    };
                 }
                 "gradient" => {
                     let axis = self.parse_vector()?;
-                    p.kind = PigmentKind::Mapped { pattern: Pattern::Gradient(axis), map: self.current_map(&p) };
+                    p.kind = PigmentKind::Mapped {
+                        pattern: Pattern::Gradient(axis),
+                        map: self.current_map(&p),
+                    };
                 }
                 "color_map" | "colour_map" => {
                     let map = self.parse_color_map()?;
                     match &mut p.kind {
                         PigmentKind::Mapped { map: m, .. } => *m = map,
-                        _ => p.kind = PigmentKind::Mapped { pattern: Pattern::Gradient(DVec3::X), map },
+                        _ => {
+                            p.kind = PigmentKind::Mapped {
+                                pattern: Pattern::Gradient(DVec3::X),
+                                map,
+                            }
+                        }
                     }
                 }
-                "image_map" => p.kind = PigmentKind::ImageMap(Arc::new(self.parse_image_map(t.span)?)),
+                "image_map" => {
+                    p.kind = PigmentKind::ImageMap(Arc::new(self.parse_image_map(t.span)?))
+                }
                 "frequency" => freq_phase.0 = self.parse_float()?,
                 "phase" => freq_phase.1 = self.parse_float()?,
                 "quick_color" | "quick_colour" => {
@@ -121,14 +203,21 @@ impl Parser {
                 k if UNSUPPORTED_PATTERNS.contains(&k) => {
                     self.unsupported(&format!("{k} pattern"), t.span);
                     self.skip_pattern_args(k)?;
-                    p.kind = PigmentKind::Mapped { pattern: Pattern::Unsupported, map: self.current_map(&p) };
+                    p.kind = PigmentKind::Mapped {
+                        pattern: Pattern::Unsupported,
+                        map: self.current_map(&p),
+                    };
                 }
                 _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in pigment"))),
             }
         }
         let _ = open;
         if freq_phase != (1.0, 0.0) {
-            if let PigmentKind::Mapped { pattern: Pattern::Gradient(a), .. } = &mut p.kind {
+            if let PigmentKind::Mapped {
+                pattern: Pattern::Gradient(a),
+                ..
+            } = &mut p.kind
+            {
                 // gradient with frequency f is the same ramp over a vector f times as long.
                 *a *= freq_phase.0;
             }
@@ -164,7 +253,8 @@ impl Parser {
                     self.skip_block()?;
                 }
             }
-            "julia" | "mandel" | "magnet" | "tiling" | "spiral1" | "spiral2" | "slope" | "aoi" | "facets" => {
+            "julia" | "mandel" | "magnet" | "tiling" | "spiral1" | "spiral2" | "slope" | "aoi"
+            | "facets" => {
                 if k != "facets" && k != "aoi" && k != "slope" {
                     self.parse_expr()?;
                 }
@@ -175,7 +265,11 @@ impl Parser {
     }
 
     pub(super) fn cur_span_pub(&self) -> Span {
-        self.frames.last().and_then(|f| f.tokens.get(f.pos.saturating_sub(1))).map(|t| t.span).unwrap_or_default()
+        self.frames
+            .last()
+            .and_then(|f| f.tokens.get(f.pos.saturating_sub(1)))
+            .map(|t| t.span)
+            .unwrap_or_default()
     }
 
     fn parse_color_map(&mut self) -> PResult<ColorMap> {
@@ -196,7 +290,9 @@ impl Parser {
                     let v = self.parse_float()?;
                     self.skip_optional_comma()?;
                     // The old form `[v1, v2 color c1 color c2]` gives two entries.
-                    if !self.starts_color()? || matches!(self.peek()?.map(|t| t.tok), Some(Tok::Num(_))) {
+                    if !self.starts_color()?
+                        || matches!(self.peek()?.map(|t| t.tok), Some(Tok::Num(_)))
+                    {
                         let v2 = self.parse_float()?;
                         let c1 = self.parse_color()?;
                         let c2 = self.parse_color()?;
@@ -220,14 +316,36 @@ impl Parser {
         self.begin_block("image_map")?;
         let mut kind = None;
         if let Some(k) = self.peek_ident()? {
-            if matches!(&*k, "png" | "gif" | "tga" | "iff" | "ppm" | "pgm" | "sys" | "jpeg" | "tiff" | "exr" | "hdr" | "bmp") {
+            if matches!(
+                &*k,
+                "png"
+                    | "gif"
+                    | "tga"
+                    | "iff"
+                    | "ppm"
+                    | "pgm"
+                    | "sys"
+                    | "jpeg"
+                    | "tiff"
+                    | "exr"
+                    | "hdr"
+                    | "bmp"
+            ) {
                 self.advance();
                 kind = Some(k);
             }
         }
         let name_span = self.next_span()?;
         let name = self.parse_string()?;
-        let mut map = ImageMap { path: Default::default(), map_type: 0, once: false, interpolate: 0, width: 0, height: 0, pixels: Vec::new() };
+        let mut map = ImageMap {
+            path: Default::default(),
+            map_type: 0,
+            once: false,
+            interpolate: 0,
+            width: 0,
+            height: 0,
+            pixels: Vec::new(),
+        };
         let (mut filter_all, mut transmit_all) = (None, None);
         loop {
             let t = self.next()?;
@@ -257,7 +375,9 @@ impl Parser {
                         self.parse_float()?;
                     }
                     "use_color" | "use_colour" | "use_index" | "use_alpha" => {}
-                    _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in image_map"))),
+                    _ => {
+                        return Err(self.error_at(t.span, format!("unexpected '{k}' in image_map")))
+                    }
                 },
                 _ => return Err(self.unexpected(&t, "in image_map")),
             }
@@ -270,10 +390,16 @@ impl Parser {
         };
         if let Some(k) = kind {
             if !matches!(&*k, "png" | "exr") {
-                return Err(self.error_at(span, format!("image_map {k} files are not supported by lancer yet (png and exr are)")));
+                return Err(self.error_at(
+                    span,
+                    format!(
+                        "image_map {k} files are not supported by lancer yet (png and exr are)"
+                    ),
+                ));
             }
         }
-        crate::scene::image::load_image_map(&path, &mut map).map_err(|e| self.error_at(name_span, e))?;
+        crate::scene::image::load_image_map(&path, &mut map)
+            .map_err(|e| self.error_at(name_span, e))?;
         if filter_all.is_some() || transmit_all.is_some() {
             for px in &mut map.pixels {
                 px.filter = filter_all.unwrap_or(px.filter);
@@ -322,7 +448,11 @@ impl Parser {
                 }
                 "roughness" => f.roughness = self.parse_float()?,
                 "metallic" => {
-                    f.metallic = if self.starts_float()? { self.parse_float()? } else { 1.0 };
+                    f.metallic = if self.starts_float()? {
+                        self.parse_float()?
+                    } else {
+                        1.0
+                    };
                 }
                 "reflection" => self.parse_reflection(&mut f)?,
                 "reflection_exponent" => {
@@ -346,7 +476,10 @@ impl Parser {
     fn starts_float(&mut self) -> PResult<bool> {
         Ok(match self.peek()?.map(|t| t.tok) {
             Some(Tok::Num(_)) | Some(Tok::Sym(Sym::LParen)) | Some(Tok::Sym(Sym::Minus)) => true,
-            Some(Tok::Ident(k)) => matches!(self.lookup(&k), Some(Value::Float(_))) || matches!(&*k, "on" | "off" | "true" | "false" | "yes" | "no"),
+            Some(Tok::Ident(k)) => {
+                matches!(self.lookup(&k), Some(Value::Float(_)))
+                    || matches!(&*k, "on" | "off" | "true" | "false" | "yes" | "no")
+            }
             _ => false,
         })
     }
@@ -363,10 +496,19 @@ impl Parser {
     fn parse_reflection(&mut self, f: &mut Finish) -> PResult<()> {
         if !self.eat_sym(Sym::LBrace)? {
             let c = self.parse_color()?.rgb;
-            f.reflection = Reflection { min: c, max: c, falloff: 1.0, fresnel: false, metallic: 0.0 };
+            f.reflection = Reflection {
+                min: c,
+                max: c,
+                falloff: 1.0,
+                fresnel: false,
+                metallic: 0.0,
+            };
             return Ok(());
         }
-        let mut r = Reflection { falloff: 1.0, ..Reflection::default() };
+        let mut r = Reflection {
+            falloff: 1.0,
+            ..Reflection::default()
+        };
         let first = self.parse_color()?.rgb;
         if self.eat_sym(Sym::Comma)? || self.starts_color()? {
             r.min = first;
@@ -386,8 +528,16 @@ impl Parser {
                         self.unsupported("reflection exponent", t.span);
                         self.parse_float()?;
                     }
-                    "metallic" => r.metallic = if self.starts_float()? { self.parse_float()? } else { 1.0 },
-                    _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in reflection"))),
+                    "metallic" => {
+                        r.metallic = if self.starts_float()? {
+                            self.parse_float()?
+                        } else {
+                            1.0
+                        }
+                    }
+                    _ => {
+                        return Err(self.error_at(t.span, format!("unexpected '{k}' in reflection")))
+                    }
                 },
                 _ => return Err(self.unexpected(&t, "in reflection")),
             }
@@ -400,7 +550,11 @@ impl Parser {
     pub(super) fn parse_normal_block(&mut self, span: Span) -> PResult<Normal> {
         self.unsupported("normal (surface perturbation)", span);
         self.skip_block()?;
-        Ok(Normal { kind: NormalKind::Unsupported, amount: 0.0, transform: Default::default() })
+        Ok(Normal {
+            kind: NormalKind::Unsupported,
+            amount: 0.0,
+            transform: Default::default(),
+        })
     }
 
     pub(super) fn parse_texture_block(&mut self) -> PResult<Texture> {
@@ -428,8 +582,9 @@ impl Parser {
                 "pigment" => tex.pigment = self.parse_pigment_block(Some(tex.pigment.clone()))?,
                 "finish" => tex.finish = self.parse_finish_block(Some(tex.finish.clone()))?,
                 "normal" => tex.normal = Some(self.parse_normal_block(t.span)?),
-                "checker" | "hexagon" | "brick" | "material_map" | "tiles" | "texture_map" | "image_pattern" | "gradient" | "bozo" | "granite" | "marble" | "wood" | "agate"
-                | "spotted" | "leopard" | "onion" | "radial" => {
+                "checker" | "hexagon" | "brick" | "material_map" | "tiles" | "texture_map"
+                | "image_pattern" | "gradient" | "bozo" | "granite" | "marble" | "wood"
+                | "agate" | "spotted" | "leopard" | "onion" | "radial" => {
                     self.unsupported(&format!("patterned texture ({k})"), t.span);
                     self.skip_texture_pattern()?;
                 }

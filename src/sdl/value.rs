@@ -4,7 +4,9 @@ use std::rc::Rc;
 
 use crate::color::Rgbft;
 use crate::math::{DVec3, Transform};
-use crate::scene::desc::{CameraDesc, Finish, Interior, LightDesc, Normal, ObjectDesc, Pigment, Texture};
+use crate::scene::desc::{
+    CameraDesc, Finish, Interior, LightDesc, Normal, ObjectDesc, Pigment, Texture,
+};
 
 use super::lexer::Token;
 

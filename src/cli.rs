@@ -1,0 +1,340 @@
+//! Command-line options: clap long options, and POV-Ray's `+W640 -A +Oout.png` options accepted
+//! verbatim so `povray` can be swapped for `lancer` in an existing script.
+
+use std::path::PathBuf;
+
+use clap::{Args, Parser as ClapParser, Subcommand};
+
+use crate::output::Format;
+use crate::render::RenderSettings;
+
+#[derive(ClapParser, Debug)]
+#[command(
+    name = "lancer",
+    version,
+    about = "A fast ray tracer for POV-Ray 3.7 scenes",
+    disable_version_flag = true
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+    /// Print the version.
+    #[arg(long, action = clap::ArgAction::Version)]
+    version: Option<bool>,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Render a scene (the default when no subcommand is given).
+    Render(RenderArgs),
+}
+
+#[derive(Args, Debug, Default)]
+pub struct RenderArgs {
+    /// The .pov scene file.
+    pub scene: Option<PathBuf>,
+    /// Output file (.png or .exr); default: the scene name with .png, in the current directory.
+    #[arg(short = 'o', long)]
+    pub output: Option<PathBuf>,
+    #[arg(long)]
+    pub width: Option<u32>,
+    #[arg(long)]
+    pub height: Option<u32>,
+    /// Anti-aliasing threshold (POV-Ray's +A; 0.3 is its default).
+    #[arg(long, value_name = "THRESHOLD")]
+    pub antialias: Option<f64>,
+    #[arg(long)]
+    pub no_antialias: bool,
+    /// Supersampling grid size for anti-aliasing (POV-Ray's +R).
+    #[arg(long)]
+    pub aa_depth: Option<u32>,
+    /// Do not jitter anti-aliasing samples (POV-Ray's -J).
+    #[arg(long)]
+    pub no_jitter: bool,
+    /// Worker threads (default: all cores). The picture is the same for any count.
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// Directory searched for include files and images (repeatable).
+    #[arg(long = "library-path", value_name = "DIR")]
+    pub library_path: Vec<PathBuf>,
+    /// png, png16 or exr (default: from the output name).
+    #[arg(long)]
+    pub format: Option<String>,
+    /// No progress bar or statistics.
+    #[arg(short, long)]
+    pub quiet: bool,
+    /// POV-Ray style options (+W640 +H480 -A +A0.3 +R3 -J +Oout.png +Iscene.pov +Ldir +FN16 +FE).
+    #[arg(hide = true)]
+    pub pov: Vec<String>,
+}
+
+/// Everything a render needs, after clap and POV-Ray options are merged (POV-Ray's later wins).
+#[derive(Debug)]
+pub struct Job {
+    pub scene: PathBuf,
+    pub output: PathBuf,
+    pub format: Format,
+    pub settings: RenderSettings,
+    pub library_paths: Vec<PathBuf>,
+    pub threads: Option<usize>,
+    pub quiet: bool,
+    pub warnings: Vec<String>,
+}
+
+/// Splits POV-Ray style arguments from the rest so clap never sees them: anything starting
+/// with '+', and single-dash arguments other than lancer's own `-o`, `-q`, `-h`.
+pub fn split_args(args: Vec<String>) -> (Vec<String>, Vec<String>) {
+    let mut clap_args = Vec::new();
+    let mut pov = Vec::new();
+    let mut iter = args.into_iter();
+    if let Some(prog) = iter.next() {
+        clap_args.push(prog);
+    }
+    let rest: Vec<String> = iter.collect();
+    let mut i = 0;
+    while i < rest.len() {
+        let a = &rest[i];
+        let is_pov = a.starts_with('+')
+            || (a.starts_with('-')
+                && !a.starts_with("--")
+                && a.len() > 1
+                && !matches!(a.as_str(), "-o" | "-q" | "-h"));
+        if is_pov {
+            pov.push(a.clone());
+        } else {
+            clap_args.push(a.clone());
+            if matches!(a.as_str(), "-o") && i + 1 < rest.len() {
+                i += 1;
+                clap_args.push(rest[i].clone());
+            }
+        }
+        i += 1;
+    }
+    // `lancer scene.pov ...` means `lancer render scene.pov ...`.
+    let known = ["render", "help"];
+    if clap_args.len() == 1
+        || !known.contains(&clap_args[1].as_str()) && !clap_args[1].starts_with("--")
+        || clap_args
+            .get(1)
+            .is_some_and(|a| a.starts_with("--") && a != "--help" && a != "--version")
+    {
+        clap_args.insert(1, "render".into());
+    }
+    (clap_args, pov)
+}
+
+pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
+    let mut s = RenderSettings::default();
+    let mut format = None;
+    let mut warnings = Vec::new();
+    if let Some(w) = a.width {
+        s.width = w;
+    }
+    if let Some(h) = a.height {
+        s.height = h;
+    }
+    if let Some(t) = a.antialias {
+        s.antialias = Some(t);
+    }
+    if a.no_antialias {
+        s.antialias = None;
+    }
+    if let Some(d) = a.aa_depth {
+        s.aa_depth = d;
+    }
+    if a.no_jitter {
+        s.jitter = 0.0;
+    }
+    if let Some(f) = &a.format {
+        format = Some(match f.as_str() {
+            "png" => Format::Png8,
+            "png16" => Format::Png16,
+            "exr" => Format::Exr,
+            other => return Err(format!("unknown --format '{other}' (png, png16 or exr)")),
+        });
+    }
+    for opt in pov {
+        apply_pov_option(opt, &mut s, &mut a, &mut format, &mut warnings)?;
+    }
+    let scene = a
+        .scene
+        .clone()
+        .ok_or("no scene file given (lancer scene.pov, or +Iscene.pov)")?;
+    if s.width == 0 || s.height == 0 {
+        return Err("width and height must be at least 1".into());
+    }
+    let format = format.unwrap_or_else(|| {
+        a.output
+            .as_deref()
+            .map(Format::from_path)
+            .unwrap_or(Format::Png8)
+    });
+    let output = match a.output.clone() {
+        Some(o) if o.is_dir() => o.join(default_name(&scene, format)),
+        Some(o) if o.extension().is_none() => o.with_extension(format.extension()),
+        Some(o) => o,
+        None => PathBuf::from(default_name(&scene, format)),
+    };
+    Ok(Job {
+        scene,
+        output,
+        format,
+        settings: s,
+        library_paths: a.library_path,
+        threads: a.threads,
+        quiet: a.quiet,
+        warnings,
+    })
+}
+
+fn default_name(scene: &std::path::Path, f: Format) -> String {
+    let stem = scene
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "scene".into());
+    format!("{stem}.{}", f.extension())
+}
+
+fn apply_pov_option(
+    opt: &str,
+    s: &mut RenderSettings,
+    a: &mut RenderArgs,
+    format: &mut Option<Format>,
+    warnings: &mut Vec<String>,
+) -> Result<(), String> {
+    let on = opt.starts_with('+');
+    let body = &opt[1..];
+    let upper = body.to_ascii_uppercase();
+    let num = |t: &str| -> Result<f64, String> {
+        t.parse::<f64>()
+            .map_err(|_| format!("bad number in option {opt}"))
+    };
+    if let Some(rest) = upper.strip_prefix("AM") {
+        let m = num(rest)?;
+        if m != 1.0 {
+            warnings.push(format!(
+                "{opt}: anti-aliasing method {m} is not supported yet; using method 1"
+            ));
+        }
+    } else if upper.starts_with("WT") {
+        a.threads = Some(num(&body[2..])? as usize);
+    } else if let Some(rest) = upper.strip_prefix('W') {
+        s.width = num(rest)? as u32;
+    } else if let Some(rest) = upper.strip_prefix('H') {
+        s.height = num(rest)? as u32;
+    } else if let Some(rest) = upper.strip_prefix('A') {
+        s.antialias = if on {
+            Some(if rest.is_empty() { 0.3 } else { num(rest)? })
+        } else {
+            None
+        };
+    } else if let Some(rest) = upper.strip_prefix('R') {
+        s.aa_depth = num(rest)? as u32;
+    } else if let Some(rest) = upper.strip_prefix('J') {
+        s.jitter = if on {
+            if rest.is_empty() {
+                1.0
+            } else {
+                num(rest)?
+            }
+        } else {
+            0.0
+        };
+    } else if upper.starts_with('O') {
+        if body.len() > 1 {
+            a.output = Some(PathBuf::from(&body[1..]));
+        }
+    } else if upper.starts_with('I') {
+        a.scene = Some(PathBuf::from(&body[1..]));
+    } else if upper.starts_with('L') {
+        a.library_path.push(PathBuf::from(&body[1..]));
+    } else if let Some(rest) = upper.strip_prefix("FN") {
+        *format = Some(if rest == "16" {
+            Format::Png16
+        } else {
+            Format::Png8
+        });
+    } else if upper.starts_with("FE") {
+        *format = Some(Format::Exr);
+    } else if matches!(
+        upper.as_str(),
+        "D" | "V" | "P" | "X" | "GA" | "GS" | "GR" | "GD" | "GF" | "GW" | "GP"
+    ) || upper.starts_with('D')
+        || upper.starts_with('Q')
+    {
+        // Display, verbosity, pause and stream options do not change the picture.
+        if upper.starts_with('Q') {
+            warnings.push(format!(
+                "{opt}: quality levels are not supported yet; rendering at full quality"
+            ));
+        }
+    } else {
+        warnings.push(format!(
+            "option {opt} is not supported by lancer yet and is ignored"
+        ));
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn job(args: &[&str]) -> Result<Job, String> {
+        let (c, pov) = split_args(args.iter().map(|s| s.to_string()).collect());
+        let cli = Cli::try_parse_from(c).map_err(|e| e.to_string())?;
+        let Command::Render(r) = cli.command;
+        make_job(r, &pov)
+    }
+
+    #[test]
+    fn pov_options_verbatim() {
+        let j = job(&[
+            "lancer",
+            "scenes/a.pov",
+            "+W640",
+            "+H480",
+            "+A0.3",
+            "+Omirror.png",
+            "+L/some/dir",
+            "-J",
+        ])
+        .unwrap();
+        assert_eq!((j.settings.width, j.settings.height), (640, 480));
+        assert_eq!(j.settings.antialias, Some(0.3));
+        assert_eq!(j.settings.jitter, 0.0);
+        assert_eq!(j.output, PathBuf::from("mirror.png"));
+        assert_eq!(j.library_paths, vec![PathBuf::from("/some/dir")]);
+    }
+
+    #[test]
+    fn long_options_with_subcommand() {
+        let j = job(&[
+            "lancer",
+            "render",
+            "--width",
+            "320",
+            "--height",
+            "240",
+            "--no-antialias",
+            "--threads",
+            "2",
+            "-o",
+            "out.exr",
+            "scene.pov",
+        ])
+        .unwrap();
+        assert_eq!(j.settings.antialias, None);
+        assert_eq!(j.threads, Some(2));
+        assert_eq!(j.format, Format::Exr);
+        assert_eq!(j.scene, PathBuf::from("scene.pov"));
+    }
+
+    #[test]
+    fn input_option_and_16_bit() {
+        let j = job(&["lancer", "+Iscene.pov", "+FN16", "-A"]).unwrap();
+        assert_eq!(j.scene, PathBuf::from("scene.pov"));
+        assert_eq!(j.format, Format::Png16);
+        assert_eq!(j.output, PathBuf::from("scene.png"));
+    }
+}

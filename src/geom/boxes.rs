@@ -1,0 +1,176 @@
+//! POV-Ray `box { corner1, corner2 }`: an axis-aligned solid box.
+//!
+//! Named `BoxShape` so importing it never shadows `std::boxed::Box`. `Hit::part` is the face
+//! crossed: `2 * axis` for the low face, `2 * axis + 1` for the high face.
+
+use crate::geom::{Hit, Shape};
+use crate::math::{Aabb, DVec3, Ray, EPSILON};
+
+#[derive(Clone, Copy, Debug)]
+pub struct BoxShape {
+    min: DVec3,
+    max: DVec3,
+    empty: bool,
+}
+
+impl BoxShape {
+    /// Corners in any order. A box flat in one axis is kept (both of its crossings coincide);
+    /// non-finite corners give an empty shape.
+    pub fn new(corner1: DVec3, corner2: DVec3) -> BoxShape {
+        let empty = !(corner1.is_finite() && corner2.is_finite());
+        BoxShape {
+            min: corner1.min(corner2),
+            max: corner1.max(corner2),
+            empty,
+        }
+    }
+
+    /// Entry and exit of the full line as ((t, face), (t, face)).
+    fn slabs(&self, ray: &Ray) -> Option<((f64, u32), (f64, u32))> {
+        if self.empty {
+            return None;
+        }
+        let mut near = (f64::NEG_INFINITY, 0u32);
+        let mut far = (f64::INFINITY, 0u32);
+        for axis in 0..3 {
+            let (o, d) = (ray.origin[axis], ray.dir[axis]);
+            let (lo, hi) = (self.min[axis], self.max[axis]);
+            if d == 0.0 {
+                // Parallel to this pair of faces: either always between them or never.
+                if o < lo || o > hi {
+                    return None;
+                }
+                continue;
+            }
+            let (mut t0, mut t1) = ((lo - o) / d, (hi - o) / d);
+            let (mut f0, mut f1) = (2 * axis as u32, 2 * axis as u32 + 1);
+            if t0 > t1 {
+                std::mem::swap(&mut t0, &mut t1);
+                std::mem::swap(&mut f0, &mut f1);
+            }
+            if t0 > near.0 {
+                near = (t0, f0);
+            }
+            if t1 < far.0 {
+                far = (t1, f1);
+            }
+        }
+        (near.0 <= far.0 && near.0.is_finite() && far.0.is_finite()).then_some((near, far))
+    }
+}
+
+impl Shape for BoxShape {
+    fn bounds(&self) -> Aabb {
+        if self.empty {
+            Aabb::EMPTY
+        } else {
+            Aabb::new(self.min, self.max)
+        }
+    }
+
+    fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
+        if let Some((near, far)) = self.slabs(ray) {
+            for (t, face) in [near, far] {
+                if t > EPSILON {
+                    out.push(Hit::with_part(t, face));
+                }
+            }
+        }
+    }
+
+    fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
+        let (near, far) = self.slabs(ray)?;
+        let (t, face) = if near.0 > EPSILON { near } else { far };
+        (t > EPSILON && t < tmax).then(|| Hit::with_part(t, face))
+    }
+
+    fn inside(&self, p: DVec3) -> bool {
+        !self.empty && p.cmpgt(self.min).all() && p.cmplt(self.max).all()
+    }
+
+    fn normal(&self, _p: DVec3, hit: &Hit) -> DVec3 {
+        let mut n = DVec3::ZERO;
+        n[(hit.part as usize / 2).min(2)] = if hit.part & 1 == 0 { -1.0 } else { 1.0 };
+        n
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn all(b: &BoxShape, r: &Ray) -> Vec<Hit> {
+        let mut v = Vec::new();
+        b.intersect_all(r, &mut v);
+        v.sort_by(|a, b| a.t.total_cmp(&b.t));
+        v
+    }
+
+    #[test]
+    fn hits_faces_and_normals() {
+        let b = BoxShape::new(DVec3::new(1.0, 1.0, 1.0), DVec3::new(-1.0, -2.0, -1.0));
+        let r = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);
+        let h = all(&b, &r);
+        assert_eq!((h[0].t, h[1].t), (4.0, 6.0));
+        assert_eq!(b.normal(r.at(4.0), &h[0]), DVec3::NEG_Z);
+        assert_eq!(b.normal(r.at(6.0), &h[1]), DVec3::Z);
+        let r = Ray::new(DVec3::new(0.5, 10.0, 0.5), DVec3::NEG_Y * 2.0);
+        let h = all(&b, &r);
+        assert_eq!((h[0].t, h[1].t), (4.5, 6.0));
+        assert_eq!(b.normal(r.at(4.5), &h[0]), DVec3::Y);
+        assert_eq!(b.normal(r.at(6.0), &h[1]), DVec3::NEG_Y);
+        assert_eq!(
+            b.intersect_first(&r, f64::INFINITY, &mut Vec::new())
+                .unwrap()
+                .t,
+            4.5
+        );
+        assert!(b.intersect_first(&r, 4.0, &mut Vec::new()).is_none());
+        assert_eq!(
+            b.bounds(),
+            Aabb::new(DVec3::new(-1.0, -2.0, -1.0), DVec3::ONE)
+        );
+    }
+
+    #[test]
+    fn inside_and_from_inside() {
+        let b = BoxShape::new(DVec3::splat(-1.0), DVec3::splat(1.0));
+        assert!(b.inside(DVec3::splat(0.99)));
+        assert!(!b.inside(DVec3::new(0.0, 1.01, 0.0)));
+        let r = Ray::new(DVec3::ZERO, DVec3::new(1.0, 0.5, 0.0));
+        let h = all(&b, &r);
+        assert_eq!(h.len(), 1);
+        assert_eq!((h[0].t, h[0].part), (1.0, 1));
+        assert_eq!(
+            b.intersect_first(&r, f64::INFINITY, &mut Vec::new())
+                .unwrap()
+                .t,
+            1.0
+        );
+    }
+
+    #[test]
+    fn grazing_parallel_and_degenerate() {
+        let b = BoxShape::new(DVec3::splat(-1.0), DVec3::splat(1.0));
+        assert!(all(&b, &Ray::new(DVec3::new(0.0, 1.5, -5.0), DVec3::Z)).is_empty());
+        assert_eq!(
+            all(&b, &Ray::new(DVec3::new(0.0, 0.5, -5.0), DVec3::Z)).len(),
+            2
+        );
+        // Along an edge: inclusive slabs keep it.
+        assert_eq!(
+            all(&b, &Ray::new(DVec3::new(1.0, 1.0, -5.0), DVec3::Z)).len(),
+            2
+        );
+        assert!(all(&b, &Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::ZERO)).is_empty());
+        assert!(all(&b, &Ray::new(DVec3::ZERO, DVec3::ZERO)).is_empty());
+        let flat = BoxShape::new(DVec3::new(-1.0, 0.0, -1.0), DVec3::new(1.0, 0.0, 1.0));
+        let h = all(&flat, &Ray::new(DVec3::new(0.0, 3.0, 0.0), DVec3::NEG_Y));
+        assert_eq!(h.len(), 2);
+        assert_eq!(h[0].t, 3.0);
+        assert!(!flat.inside(DVec3::ZERO));
+        let bad = BoxShape::new(DVec3::splat(f64::NAN), DVec3::ONE);
+        assert!(all(&bad, &Ray::new(DVec3::new(0.5, 0.5, -5.0), DVec3::Z)).is_empty());
+        assert!(bad.bounds().is_empty());
+    }
+}

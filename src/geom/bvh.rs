@@ -1,0 +1,468 @@
+//! Bounding volume hierarchy over primitives known only by their boxes: mesh triangles here,
+//! top-level scene objects in the renderer.
+//!
+//! Built with a binned surface-area heuristic and stored as a flat depth-first node array (the
+//! first child follows its parent, so only the second child's index is stored). Traversal is
+//! iterative with a fixed stack, visits the nearer child first and lets the caller shrink the
+//! search distance, so a nearest-hit query prunes everything behind the first hit found.
+
+use crate::math::{Aabb, DVec3, Ray};
+
+const BINS: usize = 16;
+const MAX_LEAF: usize = 4;
+/// SAH splits can be lopsided; past this depth splits are at the median, which halves the
+/// count each level, so depth stays below `SAH_DEPTH + 32` and the traversal stack suffices.
+const SAH_DEPTH: u32 = 64;
+const STACK: usize = 128;
+/// Infinite or empty boxes are clamped to this for the heuristic only, keeping its arithmetic
+/// finite; node bounds keep the real boxes.
+const BIG: f64 = 1e30;
+/// Cost of visiting an interior node relative to testing one primitive.
+const TRAVERSAL_COST: f64 = 1.0;
+
+#[derive(Clone, Copy, Debug)]
+struct Node {
+    bounds: Aabb,
+    /// Leaf: first entry in `Bvh::prims`. Interior: index of the second child.
+    index: u32,
+    /// Number of primitives in a leaf; 0 for interior nodes.
+    count: u32,
+}
+
+#[derive(Clone, Debug, Default)]
+pub struct Bvh {
+    nodes: Vec<Node>,
+    prims: Vec<u32>,
+}
+
+struct Builder<'a> {
+    bounds: &'a [Aabb],
+    clamped: Vec<Aabb>,
+    centroids: Vec<DVec3>,
+    nodes: Vec<Node>,
+}
+
+fn clamp_box(b: &Aabb) -> Aabb {
+    let lo = DVec3::splat(-BIG);
+    let hi = DVec3::splat(BIG);
+    let (min, max) = (b.min.clamp(lo, hi), b.max.clamp(lo, hi));
+    // NaN survives clamp; such a box is as good as empty.
+    if min.is_nan() || max.is_nan() {
+        Aabb::new(DVec3::ZERO, DVec3::ZERO)
+    } else {
+        Aabb::new(min, max)
+    }
+}
+
+fn centroid(b: &Aabb) -> DVec3 {
+    if b.is_empty() {
+        DVec3::ZERO
+    } else {
+        b.center()
+    }
+}
+
+impl Builder<'_> {
+    fn node(&mut self, prims: &mut [u32], first: usize, depth: u32) -> u32 {
+        let idx = self.nodes.len();
+        let bounds = prims
+            .iter()
+            .fold(Aabb::EMPTY, |b, &p| b.union(&self.bounds[p as usize]));
+        self.nodes.push(Node {
+            bounds,
+            index: first as u32,
+            count: prims.len() as u32,
+        });
+        if let Some(mid) = self.split(prims, depth) {
+            let (left, right) = prims.split_at_mut(mid);
+            self.node(left, first, depth + 1);
+            let second = self.node(right, first + mid, depth + 1);
+            self.nodes[idx].index = second;
+            self.nodes[idx].count = 0;
+        }
+        idx as u32
+    }
+
+    /// Reorders `prims` and returns the split position, or `None` for a leaf.
+    fn split(&self, prims: &mut [u32], depth: u32) -> Option<usize> {
+        let n = prims.len();
+        if n <= 1 {
+            return None;
+        }
+        let cb = prims
+            .iter()
+            .fold(Aabb::EMPTY, |b, &p| b.grow(self.centroids[p as usize]));
+        let extent = cb.max - cb.min;
+        if depth < SAH_DEPTH {
+            if let Some((cost, axis, bin)) = self.best_sah(prims, &cb) {
+                if n <= MAX_LEAF && cost >= n as f64 {
+                    return None;
+                }
+                let key = |p: &u32| self.bin_of(*p, axis, &cb);
+                let mid = partition(prims, |p| key(p) <= bin);
+                if mid > 0 && mid < n {
+                    return Some(mid);
+                }
+            }
+        }
+        if n <= MAX_LEAF {
+            return None;
+        }
+        // Median split: on the widest centroid axis, or by position when all centroids coincide.
+        let mid = n / 2;
+        let axis = if extent.x >= extent.y && extent.x >= extent.z {
+            0
+        } else if extent.y >= extent.z {
+            1
+        } else {
+            2
+        };
+        if extent[axis] > 0.0 {
+            prims.select_nth_unstable_by(mid, |a, b| {
+                self.centroids[*a as usize][axis].total_cmp(&self.centroids[*b as usize][axis])
+            });
+        }
+        Some(mid)
+    }
+
+    fn bin_of(&self, p: u32, axis: usize, cb: &Aabb) -> usize {
+        let c = self.centroids[p as usize][axis];
+        let f = (c - cb.min[axis]) / (cb.max[axis] - cb.min[axis]);
+        ((f * BINS as f64) as usize).min(BINS - 1)
+    }
+
+    /// Cheapest binned split as (cost, axis, last bin of the left side).
+    fn best_sah(&self, prims: &[u32], cb: &Aabb) -> Option<(f64, usize, usize)> {
+        let parent = prims
+            .iter()
+            .fold(Aabb::EMPTY, |b, &p| b.union(&self.clamped[p as usize]));
+        let parent_area = parent.surface_area();
+        if parent_area <= 0.0 || !parent_area.is_finite() {
+            return None;
+        }
+        let mut best: Option<(f64, usize, usize)> = None;
+        for axis in 0..3 {
+            if cb.max[axis] - cb.min[axis] <= 0.0 {
+                continue;
+            }
+            let mut boxes = [Aabb::EMPTY; BINS];
+            let mut counts = [0usize; BINS];
+            for &p in prims {
+                let b = self.bin_of(p, axis, cb);
+                boxes[b] = boxes[b].union(&self.clamped[p as usize]);
+                counts[b] += 1;
+            }
+            // Right-to-left sweep stores the right side's area*count for each split position.
+            let mut right_cost = [0.0; BINS];
+            let (mut acc, mut cnt) = (Aabb::EMPTY, 0);
+            for i in (1..BINS).rev() {
+                acc = acc.union(&boxes[i]);
+                cnt += counts[i];
+                right_cost[i - 1] = acc.surface_area() * cnt as f64;
+            }
+            let (mut acc, mut cnt) = (Aabb::EMPTY, 0);
+            for i in 0..BINS - 1 {
+                acc = acc.union(&boxes[i]);
+                cnt += counts[i];
+                if cnt == 0 || cnt == prims.len() {
+                    continue;
+                }
+                let cost = TRAVERSAL_COST
+                    + (acc.surface_area() * cnt as f64 + right_cost[i]) / parent_area;
+                if best.is_none_or(|b| cost < b.0) {
+                    best = Some((cost, axis, i));
+                }
+            }
+        }
+        best
+    }
+}
+
+/// In-place partition; returns the number of elements satisfying `pred`, which come first.
+fn partition(v: &mut [u32], pred: impl Fn(&u32) -> bool) -> usize {
+    let mut i = 0;
+    for j in 0..v.len() {
+        if pred(&v[j]) {
+            v.swap(i, j);
+            i += 1;
+        }
+    }
+    i
+}
+
+impl Bvh {
+    /// Binned SAH (16 bins), leaves of at most 4 primitives; `bounds[i]` is primitive i's box.
+    /// Primitives with empty boxes are never visited. Infinite boxes are accepted, but one makes
+    /// every ancestor infinite, so the renderer does better keeping unbounded objects out.
+    pub fn build(bounds: &[Aabb]) -> Bvh {
+        // Primitives with empty boxes can never be hit; leaving them out also keeps the slab
+        // test away from inverted boxes, which it would report as crossed.
+        let mut prims: Vec<u32> = (0..bounds.len() as u32)
+            .filter(|&i| !bounds[i as usize].is_empty())
+            .collect();
+        if prims.is_empty() {
+            return Bvh::default();
+        }
+        let clamped: Vec<Aabb> = bounds.iter().map(clamp_box).collect();
+        let centroids = clamped.iter().map(centroid).collect();
+        let mut builder = Builder {
+            bounds,
+            clamped,
+            centroids,
+            nodes: Vec::with_capacity(bounds.len()),
+        };
+        builder.node(&mut prims, 0, 0);
+        Bvh {
+            nodes: builder.nodes,
+            prims,
+        }
+    }
+
+    pub fn bounds(&self) -> Aabb {
+        self.nodes.first().map_or(Aabb::EMPTY, |n| n.bounds)
+    }
+
+    /// Visits primitives whose box the ray crosses within (0, tmax), nearest child first. The
+    /// callback gets the primitive index and `&mut tmax` (it lowers it after a closer hit,
+    /// pruning the rest); returning `true` stops the traversal (any-hit queries).
+    pub fn traverse(&self, ray: &Ray, mut tmax: f64, mut f: impl FnMut(usize, &mut f64) -> bool) {
+        let Some(root) = self.nodes.first() else {
+            return;
+        };
+        let origin = ray.origin;
+        let inv_dir = DVec3::ONE / ray.dir;
+        if root.bounds.hit(origin, inv_dir, tmax).is_none() {
+            return;
+        }
+        // Far children waiting, with their entry distance so they can be skipped once a
+        // closer hit has lowered tmax.
+        let mut stack = [(0u32, 0.0f64); STACK];
+        let mut sp = 0;
+        let mut node = 0usize;
+        loop {
+            let n = &self.nodes[node];
+            if n.count > 0 {
+                let first = n.index as usize;
+                for &p in &self.prims[first..first + n.count as usize] {
+                    if f(p as usize, &mut tmax) {
+                        return;
+                    }
+                }
+            } else {
+                let (a, b) = (node + 1, n.index as usize);
+                let ha = self.nodes[a].bounds.hit(origin, inv_dir, tmax);
+                let hb = self.nodes[b].bounds.hit(origin, inv_dir, tmax);
+                match (ha, hb) {
+                    (Some(ta), Some(tb)) => {
+                        let (near, far, tfar) = if ta.0 <= tb.0 {
+                            (a, b, tb.0)
+                        } else {
+                            (b, a, ta.0)
+                        };
+                        if sp < STACK {
+                            stack[sp] = (far as u32, tfar);
+                            sp += 1;
+                        }
+                        node = near;
+                        continue;
+                    }
+                    (Some(_), None) => {
+                        node = a;
+                        continue;
+                    }
+                    (None, Some(_)) => {
+                        node = b;
+                        continue;
+                    }
+                    (None, None) => {}
+                }
+            }
+            loop {
+                if sp == 0 {
+                    return;
+                }
+                sp -= 1;
+                let (next, tnear) = stack[sp];
+                if tnear <= tmax {
+                    node = next as usize;
+                    break;
+                }
+            }
+        }
+    }
+
+    /// Depth of the tree (1 for a single leaf); for tests and statistics.
+    pub fn depth(&self) -> usize {
+        fn rec(nodes: &[Node], i: usize) -> usize {
+            let n = &nodes[i];
+            if n.count > 0 {
+                1
+            } else {
+                1 + rec(nodes, i + 1).max(rec(nodes, n.index as usize))
+            }
+        }
+        if self.nodes.is_empty() {
+            0
+        } else {
+            rec(&self.nodes, 0)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::sphere::Sphere;
+    use crate::geom::Shape;
+
+    /// Small deterministic generator so tests need no extra crates.
+    struct Lcg(u64);
+    impl Lcg {
+        fn next(&mut self) -> f64 {
+            self.0 = self
+                .0
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+        fn vec(&mut self, s: f64) -> DVec3 {
+            DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * s
+        }
+    }
+
+    fn nearest_brute(spheres: &[Sphere], ray: &Ray) -> Option<(usize, f64)> {
+        let mut scratch = Vec::new();
+        let mut best: Option<(usize, f64)> = None;
+        for (i, s) in spheres.iter().enumerate() {
+            if let Some(h) = s.intersect_first(ray, f64::INFINITY, &mut scratch) {
+                if best.is_none_or(|b| h.t < b.1) {
+                    best = Some((i, h.t));
+                }
+            }
+        }
+        best
+    }
+
+    fn nearest_bvh(bvh: &Bvh, spheres: &[Sphere], ray: &Ray) -> Option<(usize, f64)> {
+        let mut scratch = Vec::new();
+        let mut best = None;
+        bvh.traverse(ray, f64::INFINITY, |i, tmax| {
+            if let Some(h) = spheres[i].intersect_first(ray, *tmax, &mut scratch) {
+                *tmax = h.t;
+                best = Some((i, h.t));
+            }
+            false
+        });
+        best
+    }
+
+    #[test]
+    fn nearest_hit_matches_brute_force() {
+        let mut rng = Lcg(7);
+        for &n in &[1usize, 3, 17, 500, 3000] {
+            let spheres: Vec<Sphere> = (0..n)
+                .map(|_| Sphere::new(rng.vec(20.0), 0.05 + rng.next() * 0.6))
+                .collect();
+            let bvh = Bvh::build(&spheres.iter().map(|s| s.bounds()).collect::<Vec<_>>());
+            assert!(bvh.depth() < 100);
+            for _ in 0..2000 {
+                let ray = Ray::new(rng.vec(30.0), rng.vec(2.0));
+                let a = nearest_brute(&spheres, &ray);
+                let b = nearest_bvh(&bvh, &spheres, &ray);
+                assert_eq!(a.map(|x| x.0), b.map(|x| x.0), "n={n}");
+            }
+        }
+    }
+
+    #[test]
+    fn any_hit_stops_early() {
+        let boxes = vec![Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0)); 50];
+        let bvh = Bvh::build(&boxes);
+        let mut visits = 0;
+        bvh.traverse(
+            &Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z),
+            f64::INFINITY,
+            |_, _| {
+                visits += 1;
+                true
+            },
+        );
+        assert_eq!(visits, 1);
+    }
+
+    #[test]
+    fn degenerate_inputs() {
+        let ray = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);
+        let empty = Bvh::build(&[]);
+        assert!(empty.bounds().is_empty());
+        empty.traverse(&ray, f64::INFINITY, |_, _| panic!("no primitives"));
+
+        // Identical boxes: centroids all equal, so the builder must split by position.
+        let same = vec![Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0)); 1000];
+        let bvh = Bvh::build(&same);
+        assert!(bvh.depth() <= 12, "depth {}", bvh.depth());
+        let mut seen = vec![false; 1000];
+        bvh.traverse(&ray, f64::INFINITY, |i, _| {
+            seen[i] = true;
+            false
+        });
+        assert!(seen.iter().all(|&s| s));
+
+        // Infinite, empty and point boxes mixed with normal ones.
+        let mixed = vec![
+            Aabb::INFINITE,
+            Aabb::EMPTY,
+            Aabb::new(DVec3::ZERO, DVec3::ZERO),
+            Aabb::new(DVec3::new(-1.0, -1.0, 2.0), DVec3::new(1.0, 1.0, 3.0)),
+            Aabb::new(DVec3::splat(10.0), DVec3::splat(11.0)),
+            Aabb::new(
+                DVec3::new(f64::NEG_INFINITY, -1.0, -1.0),
+                DVec3::new(0.0, 1.0, 1.0),
+            ),
+        ];
+        let bvh = Bvh::build(&mixed);
+        let mut seen = vec![false; mixed.len()];
+        bvh.traverse(&ray, f64::INFINITY, |i, _| {
+            seen[i] = true;
+            false
+        });
+        assert!(
+            seen[0] && seen[3] && seen[5] && !seen[1] && !seen[4],
+            "{seen:?}"
+        );
+    }
+
+    #[test]
+    fn collinear_points_and_axis_parallel_rays() {
+        let boxes: Vec<Aabb> = (0..100)
+            .map(|i| {
+                Aabb::new(
+                    DVec3::new(i as f64, 0.0, 0.0),
+                    DVec3::new(i as f64, 0.0, 0.0),
+                )
+            })
+            .collect();
+        let bvh = Bvh::build(&boxes);
+        let mut count = 0;
+        bvh.traverse(
+            &Ray::new(DVec3::new(-1.0, 0.0, 0.0), DVec3::X),
+            f64::INFINITY,
+            |_, _| {
+                count += 1;
+                false
+            },
+        );
+        assert_eq!(count, 100);
+        let mut count = 0;
+        bvh.traverse(
+            &Ray::new(DVec3::new(-1.0, 0.0, 0.0), DVec3::X),
+            10.5,
+            |_, _| {
+                count += 1;
+                false
+            },
+        );
+        // Leaves are visited whole, so a few primitives beyond tmax may be offered.
+        assert!((10..=10 + MAX_LEAF).contains(&count), "{count}");
+    }
+}

@@ -1,0 +1,357 @@
+//! POV-Ray `mesh` / `mesh2`: many flat and smooth triangles behind one BVH.
+//!
+//! The triangle data stays shared in the `Arc<MeshData>` (every copy of a declared mesh points
+//! at it); a `Mesh` adds only edge vectors for the intersection test and the hierarchy.
+//! `Hit::part` is the index into `MeshData::triangles`, `Hit::uv` the barycentrics.
+
+use std::sync::Arc;
+
+use crate::geom::bvh::Bvh;
+use crate::geom::triangle::{smooth_normal, TriGeom};
+use crate::geom::{Hit, Shape};
+use crate::math::{Aabb, DVec3, Ray};
+use crate::scene::desc::MeshData;
+
+pub struct Mesh {
+    data: Arc<MeshData>,
+    /// Per triangle; None for degenerate ones and ones with out-of-range vertex indices.
+    tris: Vec<Option<TriGeom>>,
+    bvh: Bvh,
+}
+
+impl std::fmt::Debug for Mesh {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Mesh")
+            .field("triangles", &self.tris.len())
+            .field("bounds", &self.bvh.bounds())
+            .finish()
+    }
+}
+
+impl Mesh {
+    pub fn new(data: Arc<MeshData>) -> Mesh {
+        let tris: Vec<Option<TriGeom>> = data
+            .triangles
+            .iter()
+            .map(|t| {
+                let v = t.v.map(|i| data.vertices.get(i as usize).copied());
+                TriGeom::new([v[0]?, v[1]?, v[2]?])
+            })
+            .collect();
+        let boxes: Vec<Aabb> = tris
+            .iter()
+            .map(|t| t.map_or(Aabb::EMPTY, |g| g.bounds()))
+            .collect();
+        let bvh = Bvh::build(&boxes);
+        Mesh { data, tris, bvh }
+    }
+
+    /// The per-triangle texture index (into `MeshData::textures`) of the triangle in
+    /// `Hit::part`, if the mesh gave it one.
+    pub fn triangle_texture(&self, part: u32) -> Option<u32> {
+        self.data.triangles.get(part as usize)?.texture
+    }
+
+    pub fn data(&self) -> &Arc<MeshData> {
+        &self.data
+    }
+
+    /// Vertex normals of a smooth triangle, when all its normal indices are valid.
+    fn vertex_normals(&self, i: usize) -> Option<[DVec3; 3]> {
+        let n = self.data.triangles.get(i)?.n?;
+        let get = |k: u32| {
+            self.data
+                .normals
+                .get(k as usize)
+                .map(|v| v.normalize_or_zero())
+        };
+        Some([get(n[0])?, get(n[1])?, get(n[2])?])
+    }
+}
+
+impl Shape for Mesh {
+    fn bounds(&self) -> Aabb {
+        self.bvh.bounds()
+    }
+
+    fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
+        self.bvh.traverse(ray, f64::INFINITY, |i, _| {
+            if let Some((t, u, v)) = self.tris[i].and_then(|g| g.intersect(ray, f64::INFINITY)) {
+                out.push(Hit {
+                    t,
+                    part: i as u32,
+                    uv: [u, v],
+                });
+            }
+            false
+        });
+    }
+
+    fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
+        let mut best = None;
+        self.bvh.traverse(ray, tmax, |i, tmax| {
+            if let Some((t, u, v)) = self.tris[i].and_then(|g| g.intersect(ray, *tmax)) {
+                *tmax = t;
+                best = Some(Hit {
+                    t,
+                    part: i as u32,
+                    uv: [u, v],
+                });
+            }
+            false
+        });
+        best
+    }
+
+    /// Meshes have no inside until `inside_vector` is supported.
+    fn inside(&self, _p: DVec3) -> bool {
+        false
+    }
+
+    fn normal(&self, _p: DVec3, hit: &Hit) -> DVec3 {
+        let i = hit.part as usize;
+        let Some(Some(g)) = self.tris.get(i) else {
+            return DVec3::Y;
+        };
+        let geometric = g.geometric_normal();
+        match self.vertex_normals(i) {
+            Some(n) => smooth_normal(&n, hit.uv, geometric),
+            None => geometric,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::triangle::Triangle;
+    use crate::scene::desc::MeshTriangle;
+
+    /// An icosphere of radius 1 with per-vertex normals, `levels` times subdivided.
+    fn icosphere(levels: u32, smooth: bool) -> MeshData {
+        let g = (1.0 + 5f64.sqrt()) / 2.0;
+        let mut v: Vec<DVec3> = [
+            (-1.0, g, 0.0),
+            (1.0, g, 0.0),
+            (-1.0, -g, 0.0),
+            (1.0, -g, 0.0),
+            (0.0, -1.0, g),
+            (0.0, 1.0, g),
+            (0.0, -1.0, -g),
+            (0.0, 1.0, -g),
+            (g, 0.0, -1.0),
+            (g, 0.0, 1.0),
+            (-g, 0.0, -1.0),
+            (-g, 0.0, 1.0),
+        ]
+        .iter()
+        .map(|&(x, y, z)| DVec3::new(x, y, z).normalize())
+        .collect();
+        let mut f: Vec<[u32; 3]> = vec![
+            [0, 11, 5],
+            [0, 5, 1],
+            [0, 1, 7],
+            [0, 7, 10],
+            [0, 10, 11],
+            [1, 5, 9],
+            [5, 11, 4],
+            [11, 10, 2],
+            [10, 7, 6],
+            [7, 1, 8],
+            [3, 9, 4],
+            [3, 4, 2],
+            [3, 2, 6],
+            [3, 6, 8],
+            [3, 8, 9],
+            [4, 9, 5],
+            [2, 4, 11],
+            [6, 2, 10],
+            [8, 6, 7],
+            [9, 8, 1],
+        ];
+        for _ in 0..levels {
+            let mut cache = std::collections::HashMap::new();
+            let mut mid = |a: u32, b: u32, v: &mut Vec<DVec3>| {
+                *cache.entry((a.min(b), a.max(b))).or_insert_with(|| {
+                    v.push((v[a as usize] + v[b as usize]).normalize());
+                    v.len() as u32 - 1
+                })
+            };
+            let mut nf = Vec::new();
+            for [a, b, c] in f {
+                let (ab, bc, ca) = (mid(a, b, &mut v), mid(b, c, &mut v), mid(c, a, &mut v));
+                nf.extend([[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]);
+            }
+            f = nf;
+        }
+        let triangles = f.iter().enumerate().map(|(i, &t)| MeshTriangle {
+            v: t,
+            n: smooth.then_some(t),
+            texture: Some(i as u32 % 3),
+        });
+        MeshData {
+            normals: if smooth { v.clone() } else { vec![] },
+            vertices: v,
+            triangles: triangles.collect(),
+            textures: vec![],
+        }
+    }
+
+    struct Lcg(u64);
+    impl Lcg {
+        fn next(&mut self) -> f64 {
+            self.0 = self
+                .0
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+        fn vec(&mut self, s: f64) -> DVec3 {
+            DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * s
+        }
+    }
+
+    #[test]
+    fn matches_brute_force_over_triangles() {
+        let data = Arc::new(icosphere(3, true));
+        let mesh = Mesh::new(data.clone());
+        assert_eq!(data.triangles.len(), 1280);
+        let tris: Vec<Triangle> = data
+            .triangles
+            .iter()
+            .map(|t| Triangle::new(t.v.map(|i| data.vertices[i as usize])))
+            .collect();
+        let mut rng = Lcg(3);
+        let mut scratch = Vec::new();
+        let mut hits = 0;
+        for _ in 0..3000 {
+            let o = rng.vec(6.0);
+            let ray = Ray::new(o, rng.vec(2.5) - o);
+            let brute = tris
+                .iter()
+                .enumerate()
+                .filter_map(|(i, t)| {
+                    t.intersect_first(&ray, f64::INFINITY, &mut scratch)
+                        .map(|h| (i, h.t))
+                })
+                .min_by(|a, b| a.1.total_cmp(&b.1));
+            let got = mesh.intersect_first(&ray, f64::INFINITY, &mut scratch);
+            assert_eq!(brute.map(|b| b.0 as u32), got.map(|h| h.part));
+            let mut all = Vec::new();
+            mesh.intersect_all(&ray, &mut all);
+            let count = tris
+                .iter()
+                .filter(|t| {
+                    t.intersect_first(&ray, f64::INFINITY, &mut scratch)
+                        .is_some()
+                })
+                .count();
+            assert_eq!(all.len(), count);
+            hits += count;
+        }
+        assert!(hits > 1000);
+    }
+
+    #[test]
+    fn smooth_normals_and_textures() {
+        let mesh = Mesh::new(Arc::new(icosphere(2, true)));
+        let r = Ray::new(DVec3::new(0.3, 0.2, -5.0), DVec3::Z);
+        let h = mesh
+            .intersect_first(&r, f64::INFINITY, &mut Vec::new())
+            .unwrap();
+        let p = r.at(h.t);
+        let n = mesh.normal(p, &h).normalize();
+        // Interpolated normals of an icosphere approximate the sphere's normal at the point.
+        assert!(
+            (n - p.normalize()).length() < 0.02,
+            "{n} vs {}",
+            p.normalize()
+        );
+        assert_eq!(mesh.triangle_texture(h.part), Some(h.part % 3));
+        assert_eq!(mesh.triangle_texture(1_000_000), None);
+        let flat = Mesh::new(Arc::new(icosphere(2, false)));
+        let h = flat
+            .intersect_first(&r, f64::INFINITY, &mut Vec::new())
+            .unwrap();
+        let p = r.at(h.t);
+        assert!(flat.normal(p, &h).normalize().dot(p.normalize()).abs() > 0.98);
+        assert!(!flat.inside(DVec3::ZERO));
+        let b = flat.bounds();
+        assert!(
+            (b.max - DVec3::ONE).abs().max_element() < 1e-12
+                && (b.min + DVec3::ONE).abs().max_element() < 1e-12
+        );
+    }
+
+    #[test]
+    fn degenerate_meshes() {
+        let r = Ray::new(DVec3::new(0.1, 0.1, -5.0), DVec3::Z);
+        let empty = Mesh::new(Arc::new(MeshData::default()));
+        assert!(empty
+            .intersect_first(&r, f64::INFINITY, &mut Vec::new())
+            .is_none());
+        assert!(empty.bounds().is_empty());
+        let bad = MeshData {
+            vertices: vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::X * 2.0],
+            normals: vec![DVec3::Z],
+            triangles: vec![
+                MeshTriangle {
+                    v: [0, 1, 3],
+                    n: None,
+                    texture: None,
+                },
+                MeshTriangle {
+                    v: [0, 1, 9],
+                    n: None,
+                    texture: None,
+                },
+                MeshTriangle {
+                    v: [0, 1, 2],
+                    n: Some([0, 0, 7]),
+                    texture: None,
+                },
+            ],
+            textures: vec![],
+        };
+        let mesh = Mesh::new(Arc::new(bad));
+        let h = mesh
+            .intersect_first(&r, f64::INFINITY, &mut Vec::new())
+            .unwrap();
+        assert_eq!(h.part, 2);
+        // Out-of-range normal index: flat shading instead of a panic.
+        assert_eq!(mesh.normal(r.at(h.t), &h).normalize(), DVec3::Z);
+        assert_eq!(mesh.normal(DVec3::ZERO, &Hit::with_part(1.0, 99)), DVec3::Y);
+    }
+
+    /// Throughput on the 20480-triangle icosphere: `cargo test --release -- --ignored --nocapture mesh_speed`.
+    #[test]
+    #[ignore]
+    fn mesh_speed() {
+        let mesh = Mesh::new(Arc::new(icosphere(5, true)));
+        assert_eq!(mesh.tris.len(), 20480);
+        let n = 1000;
+        let mut scratch = Vec::new();
+        let start = std::time::Instant::now();
+        let mut hits = 0;
+        for j in 0..n {
+            for i in 0..n {
+                let target = DVec3::new(
+                    i as f64 / n as f64 * 2.4 - 1.2,
+                    j as f64 / n as f64 * 2.4 - 1.2,
+                    0.0,
+                );
+                let o = DVec3::new(0.0, 0.0, -5.0);
+                hits += mesh
+                    .intersect_first(&Ray::new(o, target - o), f64::INFINITY, &mut scratch)
+                    .is_some() as u32;
+            }
+        }
+        let dt = start.elapsed().as_secs_f64();
+        eprintln!(
+            "{} rays, {hits} hits, {:.1} Mrays/s, depth {}",
+            n * n,
+            (n * n) as f64 / dt / 1e6,
+            mesh.bvh.depth()
+        );
+    }
+}

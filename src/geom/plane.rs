@@ -1,0 +1,111 @@
+//! POV-Ray `plane { normal, distance }`: an infinite solid half-space.
+//!
+//! POV-Ray normalises the normal and divides the distance by its length, so
+//! `plane { 2*y, 4 }` is the plane y = 2. The normal points to the outside.
+
+use crate::geom::{Hit, Shape};
+use crate::math::{Aabb, DVec3, Ray, EPSILON};
+
+#[derive(Clone, Copy, Debug)]
+pub struct Plane {
+    /// Unit normal, or zero for a degenerate plane that nothing hits.
+    normal: DVec3,
+    distance: f64,
+}
+
+impl Plane {
+    /// Points p with `normal · p = distance`; a zero or non-finite normal gives an empty shape.
+    pub fn new(normal: DVec3, distance: f64) -> Plane {
+        let len = normal.length();
+        if len > 0.0 && len.is_finite() && distance.is_finite() {
+            Plane {
+                normal: normal / len,
+                distance: distance / len,
+            }
+        } else {
+            Plane {
+                normal: DVec3::ZERO,
+                distance: 0.0,
+            }
+        }
+    }
+
+    #[inline]
+    fn hit_t(&self, ray: &Ray) -> Option<f64> {
+        let denom = self.normal.dot(ray.dir);
+        if denom == 0.0 {
+            return None;
+        }
+        let t = (self.distance - self.normal.dot(ray.origin)) / denom;
+        (t > EPSILON && t.is_finite()).then_some(t)
+    }
+}
+
+impl Shape for Plane {
+    fn bounds(&self) -> Aabb {
+        if self.normal == DVec3::ZERO {
+            Aabb::EMPTY
+        } else {
+            Aabb::INFINITE
+        }
+    }
+
+    fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
+        if let Some(t) = self.hit_t(ray) {
+            out.push(Hit::new(t));
+        }
+    }
+
+    fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
+        self.hit_t(ray).filter(|&t| t < tmax).map(Hit::new)
+    }
+
+    fn inside(&self, p: DVec3) -> bool {
+        self.normal != DVec3::ZERO && self.normal.dot(p) < self.distance
+    }
+
+    fn normal(&self, _p: DVec3, _hit: &Hit) -> DVec3 {
+        self.normal
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hits_inside_and_normal() {
+        let p = Plane::new(DVec3::new(0.0, 2.0, 0.0), 4.0);
+        let r = Ray::new(DVec3::new(1.0, 10.0, 3.0), DVec3::NEG_Y);
+        let h = p
+            .intersect_first(&r, f64::INFINITY, &mut Vec::new())
+            .unwrap();
+        assert_eq!(h.t, 8.0);
+        assert_eq!(p.normal(r.at(h.t), &h), DVec3::Y);
+        assert!(p.inside(DVec3::new(5.0, 1.9, -7.0)));
+        assert!(!p.inside(DVec3::new(5.0, 2.1, -7.0)));
+        assert!(p.intersect_first(&r, 7.9, &mut Vec::new()).is_none());
+        assert_eq!(p.bounds(), Aabb::INFINITE);
+        // From the inside, going out.
+        let mut v = Vec::new();
+        p.intersect_all(&Ray::new(DVec3::ZERO, DVec3::new(0.0, 0.5, 0.0)), &mut v);
+        assert_eq!(v.len(), 1);
+        assert_eq!(v[0].t, 4.0);
+    }
+
+    #[test]
+    fn parallel_behind_and_degenerate() {
+        let p = Plane::new(DVec3::Y, 0.0);
+        let mut v = Vec::new();
+        p.intersect_all(&Ray::new(DVec3::Y, DVec3::X), &mut v);
+        p.intersect_all(&Ray::new(DVec3::Y, DVec3::Y), &mut v);
+        // Starting on the surface is a self-intersection.
+        p.intersect_all(&Ray::new(DVec3::ZERO, DVec3::NEG_Y), &mut v);
+        assert!(v.is_empty());
+        let d = Plane::new(DVec3::ZERO, 1.0);
+        d.intersect_all(&Ray::new(DVec3::Y, DVec3::NEG_Y), &mut v);
+        assert!(v.is_empty());
+        assert!(!d.inside(DVec3::NEG_Y * 5.0));
+        assert!(d.bounds().is_empty());
+    }
+}

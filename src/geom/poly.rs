@@ -1,0 +1,437 @@
+//! Real roots of polynomials inside an interval, for the torus and any later polynomial shape.
+//!
+//! Closed forms (Ferrari, Cardano) lose most of their digits exactly where it shows on screen:
+//! where two roots merge along a silhouette. So roots are isolated first and then polished with
+//! Horner evaluations, which stay accurate near the roots themselves:
+//! * [`roots_in`]: the critical points (roots of the derivative, found recursively) cut the
+//!   interval into monotone pieces, and each piece whose ends differ in sign holds one root.
+//! * [`sturm_roots_in`]: the same, plus roots of even multiplicity (exact tangency), which
+//!   have no sign change; a Sturm sequence counts the distinct roots to find those. Slower.
+//!
+//! Roots are polished with Newton's method kept inside a shrinking bracket by bisection.
+//!
+//! Coefficients are in ascending order: `c[i]` multiplies `x^i`.
+
+use std::ops::Deref;
+
+/// Highest degree handled; higher-degree input yields no roots rather than a panic.
+pub const MAX_DEGREE: usize = 16;
+
+/// Up to [`MAX_DEGREE`] roots in increasing order, without heap allocation.
+#[derive(Clone, Copy, Debug)]
+pub struct Roots {
+    len: usize,
+    buf: [f64; MAX_DEGREE],
+}
+
+impl Roots {
+    pub const fn new() -> Roots {
+        Roots {
+            len: 0,
+            buf: [0.0; MAX_DEGREE],
+        }
+    }
+    fn push(&mut self, x: f64) {
+        // A root sitting on a breakpoint can be reported from both sides.
+        if self.len < MAX_DEGREE && (self.len == 0 || self.buf[self.len - 1] != x) {
+            self.buf[self.len] = x;
+            self.len += 1;
+        }
+    }
+}
+
+impl Default for Roots {
+    fn default() -> Self {
+        Roots::new()
+    }
+}
+
+impl Deref for Roots {
+    type Target = [f64];
+    fn deref(&self) -> &[f64] {
+        &self.buf[..self.len]
+    }
+}
+
+/// The coefficients without exactly-zero leading terms; `None` beyond [`MAX_DEGREE`].
+fn trim(c: &[f64]) -> Option<&[f64]> {
+    let n = c.iter().rposition(|&x| x != 0.0).map_or(0, |i| i + 1);
+    (n <= MAX_DEGREE + 1).then_some(&c[..n])
+}
+
+/// Horner evaluation.
+#[inline]
+pub fn eval(c: &[f64], x: f64) -> f64 {
+    c.iter().rev().fold(0.0, |acc, &ci| acc * x + ci)
+}
+
+/// Value and first derivative in one Horner pass.
+#[inline]
+pub fn eval_with_derivative(c: &[f64], x: f64) -> (f64, f64) {
+    let mut f = 0.0;
+    let mut df = 0.0;
+    for &ci in c.iter().rev() {
+        df = df * x + f;
+        f = f * x + ci;
+    }
+    (f, df)
+}
+
+/// Real roots of `c[2] x² + c[1] x + c[0]` (or of a line), increasing, anywhere on the axis.
+fn quadratic(c: &[f64], out: &mut Roots, with_vertex: bool) {
+    match c.len() {
+        0 | 1 => {}
+        2 => out.push(-c[0] / c[1]),
+        _ => {
+            let (a, b, cc) = (c[2], c[1], c[0]);
+            let disc = b * b - 4.0 * a * cc;
+            if disc > 0.0 {
+                // Citardauq form for the smaller root: no cancellation between -b and sqrt.
+                let q = -0.5 * (b + b.signum() * disc.sqrt());
+                let (r1, r2) = (q / a, if q != 0.0 { cc / q } else { q / a });
+                out.push(r1.min(r2));
+                out.push(r1.max(r2));
+            } else if disc == 0.0 || with_vertex {
+                // As a breakpoint the vertex is harmless even when rounding pushed a true
+                // double root's discriminant below zero.
+                out.push(-0.5 * b / a);
+            }
+        }
+    }
+}
+
+/// Real roots of the polynomial in `[lo, hi]`, increasing, each simple root once.
+///
+/// Roots of even multiplicity (the polynomial touching zero without crossing) are found only
+/// when the polynomial evaluates to exactly zero at a critical point; for ray tracing these are
+/// grazing rays, which are equally ambiguous in POV-Ray.
+pub fn roots_in(c: &[f64], lo: f64, hi: f64) -> Roots {
+    let mut out = Roots::new();
+    if let Some(c) = trim(c) {
+        if lo <= hi {
+            isolate(c, lo, hi, &mut out, false);
+        }
+    }
+    out
+}
+
+fn isolate(c: &[f64], lo: f64, hi: f64, out: &mut Roots, breakpoints: bool) {
+    let n = c.len().saturating_sub(1);
+    if n <= 2 {
+        let mut r = Roots::new();
+        quadratic(c, &mut r, breakpoints);
+        for &x in r.iter().filter(|&&x| x >= lo && x <= hi) {
+            out.push(x);
+        }
+        return;
+    }
+    let mut d = [0.0; MAX_DEGREE];
+    for i in 1..=n {
+        d[i - 1] = c[i] * i as f64;
+    }
+    let mut crit = Roots::new();
+    isolate(&d[..n], lo, hi, &mut crit, true);
+
+    let mut a = lo;
+    let mut fa = eval(c, a);
+    for &b in crit.iter().chain(std::iter::once(&hi)) {
+        let fb = eval(c, b);
+        if fa == 0.0 {
+            out.push(a);
+        } else if (fa < 0.0) != (fb < 0.0) && fb != 0.0 {
+            out.push(polish(c, a, b, fa < 0.0));
+        }
+        a = b;
+        fa = fb;
+    }
+    if fa == 0.0 {
+        out.push(a);
+    }
+}
+
+/// Newton iteration kept inside the sign-change bracket `[a, b]`; `neg_at_a` is the sign of
+/// the polynomial at `a`.
+fn polish(c: &[f64], mut a: f64, mut b: f64, neg_at_a: bool) -> f64 {
+    let mut x = 0.5 * (a + b);
+    let mut step = b - a;
+    let mut prev_step = step;
+    for _ in 0..100 {
+        let (f, df) = eval_with_derivative(c, x);
+        if f == 0.0 {
+            return x;
+        }
+        if (f < 0.0) == neg_at_a {
+            a = x;
+        } else {
+            b = x;
+        }
+        let newton = x - f / df;
+        // Fall back to bisection when Newton leaves the bracket (or df is 0/NaN) or when it
+        // stops converging fast, so the iteration can never wander or stall.
+        let next = if newton > a && newton < b && (newton - x).abs() < 0.5 * prev_step.abs() {
+            newton
+        } else {
+            0.5 * (a + b)
+        };
+        prev_step = step;
+        step = next - x;
+        let tol = 2.0 * f64::EPSILON * next.abs() + f64::MIN_POSITIVE;
+        if step.abs() <= tol || b - a <= tol {
+            return next;
+        }
+        x = next;
+    }
+    x
+}
+
+/// A Sturm sequence, each member scaled to unit max coefficient (signs are all that count).
+struct Sturm {
+    polys: [[f64; MAX_DEGREE + 1]; MAX_DEGREE + 1],
+    lens: [usize; MAX_DEGREE + 1],
+    count: usize,
+}
+
+impl Sturm {
+    fn new(c: &[f64]) -> Sturm {
+        let mut s = Sturm {
+            polys: [[0.0; MAX_DEGREE + 1]; MAX_DEGREE + 1],
+            lens: [0; MAX_DEGREE + 1],
+            count: 0,
+        };
+        s.set(0, c);
+        let mut d = [0.0; MAX_DEGREE];
+        for i in 1..c.len() {
+            d[i - 1] = c[i] * i as f64;
+        }
+        s.set(1, &d[..c.len() - 1]);
+        s.count = 2;
+        while s.count <= MAX_DEGREE && s.lens[s.count - 1] > 1 {
+            let (a, b) = (s.count - 2, s.count - 1);
+            let (la, lb) = (s.lens[a], s.lens[b]);
+            let mut r = s.polys[a];
+            // Bound on the size of the terms summed into each coefficient: what survives
+            // below rounding level of that is cancellation noise, and keeping it would turn an
+            // exactly zero remainder (a multiple root) into garbage.
+            let mut size = r.map(f64::abs);
+            for i in (lb - 1..la).rev() {
+                let q = r[i] / s.polys[b][lb - 1];
+                for j in 0..lb {
+                    r[i + 1 - lb + j] -= q * s.polys[b][j];
+                    size[i + 1 - lb + j] += (q * s.polys[b][j]).abs();
+                }
+                r[i] = 0.0;
+            }
+            let mut neg = [0.0; MAX_DEGREE + 1];
+            for j in 0..lb - 1 {
+                neg[j] = if r[j].abs() <= 64.0 * f64::EPSILON * size[j] {
+                    0.0
+                } else {
+                    -r[j]
+                };
+            }
+            if !s.set(s.count, &neg[..lb - 1]) {
+                break;
+            }
+            s.count += 1;
+        }
+        s
+    }
+
+    /// Stores a scaled copy; false when the polynomial is zero (the sequence ends).
+    fn set(&mut self, k: usize, c: &[f64]) -> bool {
+        let len = c.iter().rposition(|&x| x != 0.0).map_or(0, |i| i + 1);
+        let scale = c[..len].iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        if len == 0 || scale == 0.0 || !scale.is_finite() {
+            self.lens[k] = 0;
+            return false;
+        }
+        for (dst, &src) in self.polys[k].iter_mut().zip(&c[..len]) {
+            *dst = src / scale;
+        }
+        self.lens[k] = len;
+        true
+    }
+
+    fn sign_changes(&self, x: f64) -> u32 {
+        let mut changes = 0;
+        let mut last = 0.0;
+        for k in 0..self.count {
+            let v = eval(&self.polys[k][..self.lens[k]], x);
+            if v != 0.0 {
+                if last != 0.0 && (v < 0.0) != (last < 0.0) {
+                    changes += 1;
+                }
+                last = v;
+            }
+        }
+        changes
+    }
+}
+
+/// Real roots in `[lo, hi]`: those of [`roots_in`] plus roots of even multiplicity (exact
+/// tangency), located with a Sturm sequence. Slower than [`roots_in`].
+///
+/// Sturm sequences alone are fragile in floating point (remainders of a member with a small
+/// leading coefficient lose every digit and the counts go wrong), which shows as lost roots.
+/// So the sign-change roots always come from [`roots_in`], and a root the Sturm search adds
+/// is kept only where the polynomial is zero to within its rounding error.
+pub fn sturm_roots_in(c: &[f64], lo: f64, hi: f64) -> Roots {
+    let base = roots_in(c, lo, hi);
+    let c = match trim(c) {
+        Some(c) if c.len() >= 3 && lo <= hi => c,
+        _ => return base,
+    };
+    let seq = Sturm::new(c);
+    let mut extra = Roots::new();
+    // Depth-first over (lo, hi, changes at lo, changes at hi, depth), left half first so
+    // the candidates come out sorted; 64 levels of bisection exhaust f64 resolution.
+    let mut stack = [(0.0, 0.0, 0u32, 0u32, 0u32); 2 * 64 + 2];
+    stack[0] = (lo, hi, seq.sign_changes(lo), seq.sign_changes(hi), 0);
+    let mut sp = 1;
+    while sp > 0 {
+        sp -= 1;
+        let (a, b, va, vb, depth) = stack[sp];
+        if va <= vb {
+            continue;
+        }
+        let known = base.iter().filter(|&&x| x > a && x <= b).count() as u32;
+        if va - vb <= known {
+            continue;
+        }
+        let m = 0.5 * (a + b);
+        if depth >= 64 || m <= a || m >= b {
+            if numerically_zero(c, m) {
+                extra.push(m);
+            }
+            continue;
+        }
+        let vm = seq.sign_changes(m);
+        stack[sp] = (m, b, vm, vb, depth + 1);
+        stack[sp + 1] = (a, m, va, vm, depth + 1);
+        sp += 2;
+    }
+    if extra.is_empty() {
+        return base;
+    }
+    let mut out = Roots::new();
+    let (mut i, mut j) = (0, 0);
+    while i < base.len() || j < extra.len() {
+        if j == extra.len() || (i < base.len() && base[i] <= extra[j]) {
+            out.push(base[i]);
+            i += 1;
+        } else {
+            out.push(extra[j]);
+            j += 1;
+        }
+    }
+    out
+}
+
+/// Whether `c(x)` is zero to within the rounding error of evaluating it.
+fn numerically_zero(c: &[f64], x: f64) -> bool {
+    let size = c
+        .iter()
+        .rev()
+        .fold(0.0, |acc, &ci| acc * x.abs() + ci.abs());
+    eval(c, x).abs() <= 8.0 * c.len() as f64 * f64::EPSILON * size
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Expands `prod (x - r_i)` into ascending coefficients.
+    fn from_roots(roots: &[f64]) -> Vec<f64> {
+        let mut c = vec![1.0];
+        for &r in roots {
+            let mut n = vec![0.0; c.len() + 1];
+            for (i, &ci) in c.iter().enumerate() {
+                n[i + 1] += ci;
+                n[i] -= r * ci;
+            }
+            c = n;
+        }
+        c
+    }
+
+    fn check(found: &[f64], want: &[f64], tol: f64) {
+        assert_eq!(found.len(), want.len(), "found {found:?} want {want:?}");
+        for (f, w) in found.iter().zip(want) {
+            assert!((f - w).abs() < tol, "found {found:?} want {want:?}");
+        }
+    }
+
+    #[test]
+    fn quartic_with_known_roots() {
+        let cases: &[&[f64]] = &[
+            &[-1.0, 0.5, 2.0, 3.0],
+            &[0.1, 0.10001, 0.7, 0.70001],
+            &[-3.0, -2.0, 5.0, 9.0],
+            &[1.0, 2.0, 3.0, 4.0],
+            &[1e-3, 2e-3, 1e3, 2e3],
+        ];
+        for roots in cases {
+            let c = from_roots(roots);
+            check(
+                &roots_in(&c, -10.0, 1e4),
+                roots,
+                1e-9 * roots[3].abs().max(1.0),
+            );
+            check(
+                &sturm_roots_in(&c, -10.0, 1e4),
+                roots,
+                1e-9 * roots[3].abs().max(1.0),
+            );
+        }
+    }
+
+    #[test]
+    fn interval_limits_roots() {
+        let c = from_roots(&[-1.0, 0.5, 2.0, 3.0]);
+        check(&roots_in(&c, 0.0, 2.5), &[0.5, 2.0], 1e-12);
+        check(&sturm_roots_in(&c, 0.0, 2.5), &[0.5, 2.0], 1e-12);
+        assert!(roots_in(&c, 3.5, 2.0).is_empty());
+    }
+
+    #[test]
+    fn no_real_roots() {
+        // (x² + 1)(x² + 4)
+        let c = [4.0, 0.0, 5.0, 0.0, 1.0];
+        assert!(roots_in(&c, -100.0, 100.0).is_empty());
+        assert!(sturm_roots_in(&c, -100.0, 100.0).is_empty());
+    }
+
+    #[test]
+    fn double_root_found_by_sturm() {
+        // (x - 1)² (x + 2)(x - 3): tangent at 1.
+        let c = from_roots(&[1.0, 1.0, -2.0, 3.0]);
+        let s = sturm_roots_in(&c, -5.0, 5.0);
+        check(&s, &[-2.0, 1.0, 3.0], 1e-6);
+        let r = roots_in(&c, -5.0, 5.0);
+        assert!(r.len() >= 2, "{r:?}");
+    }
+
+    #[test]
+    fn low_degrees_and_degenerate_input() {
+        check(&roots_in(&[-2.0, 1.0], -5.0, 5.0), &[2.0], 1e-15);
+        check(&roots_in(&[-4.0, 0.0, 1.0], -5.0, 5.0), &[-2.0, 2.0], 1e-15);
+        check(
+            &roots_in(&[-1.0, -1.0, 0.0, 1.0, 0.0], -5.0, 5.0),
+            &[1.324_717_957_244_746],
+            1e-12,
+        );
+        assert!(roots_in(&[], 0.0, 1.0).is_empty());
+        assert!(roots_in(&[0.0, 0.0], 0.0, 1.0).is_empty());
+        assert!(roots_in(&[3.0], 0.0, 1.0).is_empty());
+        assert!(sturm_roots_in(&[3.0], 0.0, 1.0).is_empty());
+        assert!(roots_in(&[f64::NAN, 1.0, 1.0, 1.0, 1.0], 0.0, 1.0).len() <= 4);
+        assert!(roots_in(&[1.0; 40], 0.0, 1.0).is_empty());
+    }
+
+    #[test]
+    fn root_on_boundary() {
+        let c = from_roots(&[0.0, 1.0, 2.0, 3.0]);
+        check(&roots_in(&c, 0.0, 3.0), &[0.0, 1.0, 2.0, 3.0], 1e-12);
+        check(&sturm_roots_in(&c, 0.0, 3.0), &[0.0, 1.0, 2.0, 3.0], 1e-12);
+    }
+}

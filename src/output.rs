@@ -1,0 +1,105 @@
+//! Writing films to PNG (8 or 16 bit) and OpenEXR, never leaving a half-written file: the
+//! picture goes to a temporary name beside the target and is renamed into place.
+
+use std::path::{Path, PathBuf};
+
+use crate::render::Film;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    Png8,
+    Png16,
+    Exr,
+}
+
+impl Format {
+    /// The format a file name asks for when no option says otherwise.
+    pub fn from_path(p: &Path) -> Format {
+        match p
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(|e| e.to_ascii_lowercase())
+        {
+            Some(e) if e == "exr" => Format::Exr,
+            _ => Format::Png8,
+        }
+    }
+    pub fn extension(self) -> &'static str {
+        match self {
+            Format::Exr => "exr",
+            _ => "png",
+        }
+    }
+}
+
+/// 8-bit RGB bytes as POV-Ray quantises them: floor(v·255 + 0.5) of the clipped encoded value.
+pub fn to_rgb8(film: &Film) -> Vec<u8> {
+    film.pixels
+        .iter()
+        .flat_map(|p| [p.x, p.y, p.z])
+        .map(|v| (film.encode(v) * 255.0 + 0.5).floor() as u8)
+        .collect()
+}
+
+pub fn write(film: &Film, path: &Path, format: Format) -> Result<(), String> {
+    let tmp = temp_name(path);
+    let result = write_to(film, &tmp, format);
+    if let Err(e) = result {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(format!("cannot write {}: {e}", path.display()));
+    }
+    std::fs::rename(&tmp, path).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        format!(
+            "cannot move the finished picture to {}: {e}",
+            path.display()
+        )
+    })
+}
+
+fn temp_name(path: &Path) -> PathBuf {
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "out".into());
+    path.with_file_name(format!(".{name}.{}.tmp", std::process::id()))
+}
+
+fn write_to(film: &Film, tmp: &Path, format: Format) -> Result<(), String> {
+    let (w, h) = (film.width, film.height);
+    match format {
+        Format::Png8 => {
+            let img = image::RgbImage::from_raw(w, h, to_rgb8(film)).ok_or("bad film size")?;
+            img.save_with_format(tmp, image::ImageFormat::Png)
+                .map_err(|e| e.to_string())
+        }
+        Format::Png16 => {
+            let data: Vec<u16> = film
+                .pixels
+                .iter()
+                .flat_map(|p| [p.x, p.y, p.z])
+                .map(|v| (film.encode(v) * 65535.0 + 0.5).floor() as u16)
+                .collect();
+            let img = image::ImageBuffer::<image::Rgb<u16>, _>::from_raw(w, h, data)
+                .ok_or("bad film size")?;
+            img.save_with_format(tmp, image::ImageFormat::Png)
+                .map_err(|e| e.to_string())
+        }
+        Format::Exr => {
+            // EXR holds linear light, unclipped.
+            let data: Vec<f32> = film
+                .pixels
+                .iter()
+                .flat_map(|p| [p.x, p.y, p.z])
+                .map(|v| match film.gamma {
+                    crate::scene::build::GammaMode::Corrected(g) => v.max(0.0).powf(g) as f32,
+                    crate::scene::build::GammaMode::None => v as f32,
+                })
+                .collect();
+            let img = image::Rgb32FImage::from_raw(w, h, data).ok_or("bad film size")?;
+            image::DynamicImage::ImageRgb32F(img)
+                .save_with_format(tmp, image::ImageFormat::OpenExr)
+                .map_err(|e| e.to_string())
+        }
+    }
+}

@@ -1,0 +1,148 @@
+//! Evaluating pigments at a world point: patterns, colour maps and image maps.
+
+use std::f64::consts::PI;
+
+use crate::color::Rgbft;
+use crate::math::DVec3;
+use crate::scene::desc::{ColorMap, ImageMap, Pattern, Pigment, PigmentKind};
+
+/// Keeps points that sit exactly on a checker boundary (a plane at y = 0 computed as -1e-17)
+/// on the same side every time.
+const CHECKER_EPS: f64 = 1e-9;
+
+pub fn eval(p: &Pigment, world: DVec3) -> Rgbft {
+    let lp = if p.transform.is_identity() {
+        world
+    } else {
+        p.transform.inv_point(world)
+    };
+    match &p.kind {
+        PigmentKind::Solid(c) => *c,
+        PigmentKind::Mapped { pattern, map } => lookup(map, pattern_value(pattern, lp)),
+        PigmentKind::List { pattern, items } => {
+            let i = pattern_index(pattern, lp).min(items.len().saturating_sub(1));
+            items.get(i).map_or(Rgbft::BLACK, |item| eval(item, lp))
+        }
+        PigmentKind::ImageMap(im) => image(im, lp),
+    }
+}
+
+fn pattern_value(p: &Pattern, lp: DVec3) -> f64 {
+    match p {
+        Pattern::Checker => pattern_index(p, lp) as f64,
+        Pattern::Gradient(axis) => {
+            let v = lp.dot(*axis);
+            v - v.floor()
+        }
+        Pattern::Unsupported => 0.5,
+    }
+}
+
+fn pattern_index(p: &Pattern, lp: DVec3) -> usize {
+    match p {
+        Pattern::Checker => {
+            let s = (lp.x + CHECKER_EPS).floor()
+                + (lp.y + CHECKER_EPS).floor()
+                + (lp.z + CHECKER_EPS).floor();
+            s.rem_euclid(2.0) as usize
+        }
+        other => (pattern_value(other, lp) >= 0.5) as usize,
+    }
+}
+
+/// Colour map lookup: flat beyond the first and last entries, linear in between.
+pub fn lookup(map: &ColorMap, v: f64) -> Rgbft {
+    let Some(first) = map.first() else {
+        return Rgbft::BLACK;
+    };
+    if v <= first.0 {
+        return first.1;
+    }
+    for w in map.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        if v <= b.0 {
+            let span = b.0 - a.0;
+            return if span <= 0.0 {
+                b.1
+            } else {
+                a.1.lerp(b.1, (v - a.0) / span)
+            };
+        }
+    }
+    map.last().map_or(Rgbft::BLACK, |l| l.1)
+}
+
+fn image(im: &ImageMap, lp: DVec3) -> Rgbft {
+    let (u, v) = match im.map_type {
+        1 => {
+            // Spherical: u starts at +x and runs towards +z (a -y rotation); v = 1 at +y.
+            let d = lp.normalize_or_zero();
+            if d == DVec3::ZERO {
+                return Rgbft::BLACK;
+            }
+            let mut u = d.z.atan2(d.x) / (2.0 * PI);
+            if u < 0.0 {
+                u += 1.0;
+            }
+            (u, 1.0 - d.y.clamp(-1.0, 1.0).acos() / PI)
+        }
+        2 => {
+            let mut u = lp.z.atan2(lp.x) / (2.0 * PI);
+            if u < 0.0 {
+                u += 1.0;
+            }
+            (u, lp.y)
+        }
+        _ => (lp.x, lp.y),
+    };
+    if im.once && im.map_type != 1 && !(0.0..1.0).contains(&u)
+        || im.once && im.map_type == 0 && !(0.0..1.0).contains(&v)
+    {
+        return Rgbft::new(0.0, 0.0, 0.0, 0.0, 1.0);
+    }
+    let u = u - u.floor();
+    let v = v - v.floor();
+    let (w, h) = (im.width as f64, im.height as f64);
+    if im.width == 0 || im.height == 0 {
+        return Rgbft::BLACK;
+    }
+    let fx = u * w;
+    let fy = (1.0 - v) * h;
+    if im.interpolate == 2 || im.interpolate == 3 || im.interpolate == 4 {
+        let x0 = (fx - 0.5).floor();
+        let y0 = (fy - 0.5).floor();
+        let (tx, ty) = (fx - 0.5 - x0, fy - 0.5 - y0);
+        let px = |x: f64, y: f64| {
+            let xi = (x as i64).rem_euclid(im.width as i64) as usize;
+            let yi = (y as i64).rem_euclid(im.height as i64) as usize;
+            im.pixels[yi * im.width as usize + xi]
+        };
+        let top = px(x0, y0).lerp(px(x0 + 1.0, y0), tx);
+        let bottom = px(x0, y0 + 1.0).lerp(px(x0 + 1.0, y0 + 1.0), tx);
+        return top.lerp(bottom, ty);
+    }
+    let xi = (fx as usize).min(im.width as usize - 1);
+    let yi = (fy as usize).min(im.height as usize - 1);
+    im.pixels[yi * im.width as usize + xi]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn checker_alternates_and_is_stable_at_zero() {
+        let p = Pattern::Checker;
+        assert_eq!(pattern_index(&p, DVec3::new(0.5, -1e-15, 0.5)), 0);
+        assert_eq!(pattern_index(&p, DVec3::new(1.5, 0.0, 0.5)), 1);
+        assert_eq!(pattern_index(&p, DVec3::new(-0.5, 0.0, 0.5)), 1);
+    }
+
+    #[test]
+    fn color_map_interpolates_and_clamps() {
+        let map = vec![(0.25, Rgbft::BLACK), (0.75, Rgbft::rgb(DVec3::ONE))];
+        assert_eq!(lookup(&map, 0.0).rgb, DVec3::ZERO);
+        assert!((lookup(&map, 0.5).rgb - DVec3::splat(0.5)).length() < 1e-12);
+        assert_eq!(lookup(&map, 1.0).rgb, DVec3::ONE);
+    }
+}

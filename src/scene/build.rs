@@ -1,0 +1,289 @@
+//! Builds the runtime scene from the description: resolves textures (CSG children inherit
+//! their parent's, POV-Ray's post-processing), creates shapes, computes world bounds, builds the
+//! BVH over bounded objects, and settles the gamma mode.
+
+use std::collections::HashMap;
+use std::sync::Arc;
+
+use crate::color::Rgbft;
+use crate::geom::bvh::Bvh;
+use crate::geom::Shape;
+use crate::math::{Aabb, DVec3, Ray};
+use crate::render::camera::Camera;
+use crate::scene::desc::{
+    Interior, ObjectDesc, Pigment, PigmentKind, SceneDesc, ShapeDesc, Texture,
+};
+use crate::scene::object::{ObjKind, Object, SurfaceHit};
+use crate::scene::shapes::make_shape;
+
+#[derive(Clone, Debug)]
+pub struct Light {
+    pub position: DVec3,
+    pub color: DVec3,
+    pub shadowless: bool,
+    pub fade_distance: Option<f64>,
+    pub fade_power: f64,
+}
+
+/// How working values become file values.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum GammaMode {
+    /// Shading in a space of this gamma (1.0 = linear); output encoded as sRGB.
+    Corrected(f64),
+    /// Pre-3.7 scene without assumed_gamma: values go to the file unchanged.
+    None,
+}
+
+pub struct Scene {
+    pub camera: Camera,
+    pub lights: Vec<Light>,
+    pub objects: Vec<Object>,
+    bvh: Bvh,
+    /// BVH primitive index → object index.
+    bounded: Vec<usize>,
+    unbounded: Vec<usize>,
+    pub background: Rgbft,
+    pub sky: Vec<Pigment>,
+    pub max_trace_level: u32,
+    pub adc_bailout: f64,
+    pub ambient_light: DVec3,
+    pub gamma: GammaMode,
+}
+
+pub struct BuildOutput {
+    pub scene: Scene,
+    pub warnings: Vec<String>,
+}
+
+pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
+    let mut warnings = Vec::new();
+    let gamma = match (desc.global.assumed_gamma, desc.version) {
+        (Some(g), _) => GammaMode::Corrected(if g > 0.0 { g } else { 1.0 }),
+        (None, Some(v)) if v < 3.7 => GammaMode::None,
+        (None, _) => {
+            warnings.push("the scene sets no assumed_gamma; taking 1.0 as POV-Ray 3.7 does (add global_settings { assumed_gamma 1.0 })".to_string());
+            GammaMode::Corrected(1.0)
+        }
+    };
+    let mut ctx = Ctx {
+        meshes: HashMap::new(),
+        lights: Vec::new(),
+        gamma,
+    };
+    let mut objects = Vec::new();
+    for o in &desc.objects {
+        if let Some(obj) = ctx.object(o, None, None, &desc.default_texture) {
+            objects.push(obj);
+        }
+    }
+    let mut bounded = Vec::new();
+    let mut unbounded = Vec::new();
+    for (i, o) in objects.iter().enumerate() {
+        if o.bounds.is_finite() {
+            bounded.push(i);
+        } else {
+            unbounded.push(i);
+        }
+    }
+    let boxes: Vec<Aabb> = bounded.iter().map(|&i| objects[i].bounds).collect();
+    let bvh = Bvh::build(&boxes);
+    let mut sky = desc.sky_sphere.clone().unwrap_or_default();
+    for p in &mut sky {
+        convert_pigment_gamma(p, gamma);
+    }
+    let scene = Scene {
+        camera: Camera::new(&desc.camera, width, height),
+        lights: ctx.lights,
+        objects,
+        bvh,
+        bounded,
+        unbounded,
+        background: to_working(desc.background, gamma),
+        sky,
+        max_trace_level: desc.global.max_trace_level,
+        adc_bailout: desc.global.adc_bailout,
+        ambient_light: desc.global.ambient_light,
+        gamma,
+    };
+    BuildOutput { scene, warnings }
+}
+
+/// Colours in the scene are already in working space; only image maps (decoded to linear on
+/// load) need converting when the working gamma is not 1.
+fn to_working(c: Rgbft, _g: GammaMode) -> Rgbft {
+    c
+}
+
+fn convert_pigment_gamma(p: &mut Pigment, g: GammaMode) {
+    let GammaMode::Corrected(gamma) = g else {
+        return;
+    };
+    match &mut p.kind {
+        PigmentKind::ImageMap(im) if gamma != 1.0 => {
+            let m = Arc::make_mut(im);
+            for px in &mut m.pixels {
+                px.rgb = px.rgb.powf(1.0 / gamma);
+            }
+        }
+        PigmentKind::List { items, .. } => {
+            items.iter_mut().for_each(|i| convert_pigment_gamma(i, g))
+        }
+        _ => {}
+    }
+}
+
+struct Ctx {
+    /// One runtime mesh (with its BVH) per `#declare`d mesh, shared by every copy.
+    meshes: HashMap<*const crate::scene::desc::MeshData, Arc<dyn Shape>>,
+    lights: Vec<Light>,
+    gamma: GammaMode,
+}
+
+fn may_be_transparent(p: &Pigment) -> bool {
+    match &p.kind {
+        PigmentKind::Solid(c) => !c.is_opaque(),
+        PigmentKind::Mapped { map, .. } => map.iter().any(|(_, c)| !c.is_opaque()),
+        PigmentKind::List { items, .. } => items.iter().any(may_be_transparent),
+        PigmentKind::ImageMap(im) => im.pixels.iter().any(|c| !c.is_opaque()),
+    }
+}
+
+impl Ctx {
+    fn texture(&self, t: &Texture) -> Arc<Texture> {
+        let mut t = t.clone();
+        convert_pigment_gamma(&mut t.pigment, self.gamma);
+        Arc::new(t)
+    }
+
+    fn object(
+        &mut self,
+        o: &ObjectDesc,
+        parent_tex: Option<&Texture>,
+        parent_int: Option<&Interior>,
+        default: &Texture,
+    ) -> Option<Object> {
+        let tex_desc = o.texture.as_ref().or(parent_tex);
+        let int = o.interior.as_ref().or(parent_int);
+        let texture = self.texture(tex_desc.unwrap_or(default));
+        let transparent = may_be_transparent(&texture.pigment);
+        let ior = int.map_or(1.0, |i| i.ior);
+        let (kind, bounds, mesh) = match &o.shape {
+            ShapeDesc::Light(l) => {
+                self.lights.push(Light {
+                    position: o.transform.point(l.position),
+                    color: l.color,
+                    shadowless: l.shadowless,
+                    fade_distance: l.fade_distance,
+                    fade_power: l.fade_power,
+                });
+                return None;
+            }
+            ShapeDesc::Csg { op, children } => {
+                let kids: Vec<Object> = children
+                    .iter()
+                    .filter_map(|c| self.object(c, tex_desc, int, default))
+                    .collect();
+                if kids.is_empty() {
+                    return None;
+                }
+                let bounds = csg_bounds(*op, &kids);
+                (
+                    ObjKind::Csg {
+                        op: *op,
+                        children: kids,
+                    },
+                    bounds,
+                    None,
+                )
+            }
+            shape => {
+                let s: Arc<dyn Shape> = match shape {
+                    ShapeDesc::Mesh(data) => {
+                        let key = Arc::as_ptr(data);
+                        self.meshes
+                            .entry(key)
+                            .or_insert_with(|| make_shape(shape))
+                            .clone()
+                    }
+                    _ => make_shape(shape),
+                };
+                let b = s.bounds();
+                let bounds = if o.transform.is_identity() {
+                    b
+                } else {
+                    b.transformed(&o.transform)
+                };
+                let mesh = match shape {
+                    ShapeDesc::Mesh(data) if !data.textures.is_empty() => Some((
+                        data.clone(),
+                        data.textures.iter().map(|t| self.texture(t)).collect(),
+                    )),
+                    _ => None,
+                };
+                (ObjKind::Shape(s), bounds, mesh)
+            }
+        };
+        let bounds = if o.inverse { Aabb::INFINITE } else { bounds };
+        Some(Object {
+            kind,
+            transform: (!o.transform.is_identity()).then_some(o.transform),
+            texture,
+            mesh,
+            ior,
+            no_shadow: o.no_shadow,
+            inverse: o.inverse,
+            bounds,
+            transparent,
+        })
+    }
+}
+
+fn csg_bounds(op: crate::scene::desc::CsgOp, kids: &[Object]) -> Aabb {
+    use crate::scene::desc::CsgOp::*;
+    match op {
+        Union | Merge => kids.iter().fold(Aabb::EMPTY, |a, k| a.union(&k.bounds)),
+        Intersection => kids
+            .iter()
+            .fold(Aabb::INFINITE, |a, k| a.intersection(&k.bounds)),
+        Difference => kids[0].bounds,
+    }
+}
+
+impl Scene {
+    /// Nearest crossing along the ray closer than `tmax`.
+    pub fn first_hit<'a>(
+        &'a self,
+        ray: &Ray,
+        tmax: f64,
+        scratch: &mut Vec<crate::geom::Hit>,
+    ) -> Option<SurfaceHit<'a>> {
+        let mut best: Option<SurfaceHit<'a>> = None;
+        let mut tmax = tmax;
+        for &i in &self.unbounded {
+            if let Some(h) = self.objects[i].first_hit(ray, tmax, scratch) {
+                tmax = h.t;
+                best = Some(h);
+            }
+        }
+        self.bvh.traverse(ray, tmax, |prim, tmax| {
+            if let Some(h) = self.objects[self.bounded[prim]].first_hit(ray, *tmax, scratch) {
+                *tmax = h.t;
+                best = Some(h);
+            }
+            false
+        });
+        best
+    }
+
+    /// Calls `f` for every object whose bounds the segment (0, tmax) may cross; `f` returns
+    /// true to stop (an opaque blocker was found).
+    pub fn for_each_candidate(&self, ray: &Ray, tmax: f64, mut f: impl FnMut(&Object) -> bool) {
+        for &i in &self.unbounded {
+            if f(&self.objects[i]) {
+                return;
+            }
+        }
+        self.bvh
+            .traverse(ray, tmax, |prim, _| f(&self.objects[self.bounded[prim]]));
+    }
+}

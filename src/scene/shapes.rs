@@ -1,0 +1,48 @@
+//! Maps shape descriptions to the geometry module's shapes.
+
+use std::sync::Arc;
+
+use crate::geom::{
+    boxes::BoxShape, cone::Cone, cylinder::Cylinder, disc::Disc, mesh::Mesh, plane::Plane,
+    sphere::Sphere, torus::Torus, triangle::SmoothTriangle, triangle::Triangle, Shape,
+};
+use crate::scene::desc::ShapeDesc;
+
+/// A shape for a non-CSG, non-light description.
+pub fn make_shape(d: &ShapeDesc) -> Arc<dyn Shape> {
+    match d {
+        ShapeDesc::Sphere { center, radius } => Arc::new(Sphere::new(*center, *radius)),
+        ShapeDesc::Plane { normal, distance } => Arc::new(Plane::new(*normal, *distance)),
+        ShapeDesc::Box { corner1, corner2 } => Arc::new(BoxShape::new(*corner1, *corner2)),
+        ShapeDesc::Cylinder {
+            base,
+            cap,
+            radius,
+            open,
+        } => Arc::new(Cylinder::new(*base, *cap, *radius, *open)),
+        ShapeDesc::Cone {
+            base,
+            base_radius,
+            cap,
+            cap_radius,
+            open,
+        } => Arc::new(Cone::new(*base, *base_radius, *cap, *cap_radius, *open)),
+        ShapeDesc::Disc {
+            center,
+            normal,
+            radius,
+            hole_radius,
+        } => Arc::new(Disc::new(*center, *normal, *radius, *hole_radius)),
+        ShapeDesc::Torus {
+            major,
+            minor,
+            sturm,
+        } => Arc::new(Torus::new(*major, *minor, *sturm)),
+        ShapeDesc::Triangle { p } => Arc::new(Triangle::new(*p)),
+        ShapeDesc::SmoothTriangle { p, n } => Arc::new(SmoothTriangle::new(*p, *n)),
+        ShapeDesc::Mesh(data) => Arc::new(Mesh::new(data.clone())),
+        ShapeDesc::Csg { .. } | ShapeDesc::Light(_) => {
+            unreachable!("CSG and lights are built by scene::build")
+        }
+    }
+}

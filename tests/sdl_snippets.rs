@@ -1,0 +1,214 @@
+//! Snippet tests for the scene language: small texts parsed into scene descriptions.
+
+use lancer::scene::desc::{PigmentKind, SceneDesc, ShapeDesc};
+use lancer::sdl::{ParseOptions, Parser};
+
+fn parse(src: &str) -> SceneDesc {
+    let mut p = Parser::new(ParseOptions::default());
+    if let Err(e) = p.parse_str("snippet.pov", src) {
+        panic!("{}", e.one_line(&p.sources));
+    }
+    p.scene
+}
+
+fn parse_err(src: &str) -> String {
+    let mut p = Parser::new(ParseOptions::default());
+    match p.parse_str("snippet.pov", src) {
+        Ok(()) => panic!("expected an error"),
+        Err(e) => e.one_line(&p.sources),
+    }
+}
+
+fn radii(s: &SceneDesc) -> Vec<f64> {
+    s.objects
+        .iter()
+        .filter_map(|o| match o.shape {
+            ShapeDesc::Sphere { radius, .. } => Some(radius),
+            _ => None,
+        })
+        .collect()
+}
+
+#[test]
+fn expressions_and_promotion() {
+    let s =
+        parse("#declare A = 1 + 2 * 3; #declare V = <1,2,3> * 2 + 1; sphere { V, A - V.y + 1 }");
+    match s.objects[0].shape {
+        ShapeDesc::Sphere { center, radius } => {
+            assert_eq!(center, glam::DVec3::new(3.0, 5.0, 7.0));
+            assert_eq!(radius, 2.0);
+        }
+        _ => panic!(),
+    }
+}
+
+#[test]
+fn builtin_functions() {
+    let s = parse("sphere { 0, sqrt(16) + pow(2,3) + max(1, 5, 3) + mod(7, 3) + abs(-2) + floor(1.5) + vlength(<3,4,0>) + select(-1, 10, 20) }");
+    assert_eq!(
+        radii(&s),
+        vec![4.0 + 8.0 + 5.0 + 1.0 + 2.0 + 1.0 + 5.0 + 10.0]
+    );
+}
+
+#[test]
+fn comparison_inside_vector_needs_no_parentheses_for_less_than() {
+    let s = parse("#declare B = <1 < 2, (3 > 2), 0>; sphere { B, 1 }");
+    match s.objects[0].shape {
+        ShapeDesc::Sphere { center, .. } => assert_eq!(center, glam::DVec3::new(1.0, 1.0, 0.0)),
+        _ => panic!(),
+    }
+}
+
+#[test]
+fn while_loop_spans_the_inside_of_an_object() {
+    let s = parse(
+        "#declare I = 0; union { #while (I < 4) sphere { x*I, 1 } #declare I = I + 1; #end }",
+    );
+    match &s.objects[0].shape {
+        ShapeDesc::Csg { children, .. } => assert_eq!(children.len(), 4),
+        _ => panic!(),
+    }
+}
+
+#[test]
+fn while_without_semicolon_before_end() {
+    let s = parse("#declare I = 0; #while (I < 3) sphere { 0, I } #declare I = I + 1 #end");
+    assert_eq!(radii(&s), vec![0.0, 1.0, 2.0]);
+}
+
+#[test]
+fn macro_emits_half_an_object() {
+    let s = parse("#macro Open(R) sphere { 0, R #end  Open(2) pigment { rgb 1 } }");
+    assert_eq!(radii(&s), vec![2.0]);
+    assert!(s.objects[0].texture.is_some());
+}
+
+#[test]
+fn macro_local_shadows_declare() {
+    let s =
+        parse("#declare R = 5; #macro M() #local R = 1; sphere { 0, R } #end M() sphere { 0, R }");
+    assert_eq!(radii(&s), vec![1.0, 5.0]);
+}
+
+#[test]
+fn macro_as_expression_value() {
+    let s = parse("#macro Twice(A) (A * 2) #end sphere { 0, Twice(3) + 1 }");
+    assert_eq!(radii(&s), vec![7.0]);
+}
+
+#[test]
+fn recursive_macro() {
+    let s = parse(
+        "#macro Fact(N) #if (N <= 1) 1 #else N * Fact(N - 1) #end #end sphere { 0, Fact(4) }",
+    );
+    assert_eq!(radii(&s), vec![24.0]);
+}
+
+#[test]
+fn if_elseif_else() {
+    let s = parse("#declare A = 2; #if (A = 1) sphere {0,1} #elseif (A = 2) sphere {0,2} #else sphere {0,3} #end");
+    assert_eq!(radii(&s), vec![2.0]);
+}
+
+#[test]
+fn ifdef_and_for() {
+    let s = parse("#ifndef (Q) #declare Q = 1; #end #for (I, 1, 3) sphere { 0, I * Q } #end");
+    assert_eq!(radii(&s), vec![1.0, 2.0, 3.0]);
+}
+
+#[test]
+fn identifiers_redeclared_with_a_different_type() {
+    let s = parse("#declare A = 1; #declare A = sphere { 0, 3 }; object { A }");
+    assert_eq!(radii(&s), vec![3.0]);
+}
+
+#[test]
+fn colours_and_promotion() {
+    let s = parse("#declare C = rgb <1, 0.5, 0> * 0.5; sphere { 0, 1 pigment { color C filter 0.25 } } sphere { 0, 1 pigment { rgbf 0.5 } } sphere { 0, 1 pigment { color red 1 green 0.5 } }");
+    let col = |i: usize| match &s.objects[i].texture.as_ref().unwrap().pigment.kind {
+        PigmentKind::Solid(c) => *c,
+        _ => panic!(),
+    };
+    assert_eq!(col(0).to_array(), [0.5, 0.25, 0.0, 0.25, 0.0]);
+    assert_eq!(col(1).to_array(), [0.5, 0.5, 0.5, 0.5, 0.0]);
+    assert_eq!(col(2).to_array(), [1.0, 0.5, 0.0, 0.0, 0.0]);
+}
+
+#[test]
+fn texture_moves_with_object_only_when_given_before_transform() {
+    let s = parse("sphere { 0, 1 pigment { checker } translate x } sphere { 0, 1 translate x pigment { checker } }");
+    let t0 = s.objects[0].texture.as_ref().unwrap().pigment.transform;
+    let t1 = s.objects[1].texture.as_ref().unwrap().pigment.transform;
+    assert!(!t0.is_identity());
+    assert!(t1.is_identity());
+}
+
+#[test]
+fn string_escapes_and_concat() {
+    let mut p = Parser::new(ParseOptions::default());
+    p.parse_str(
+        "s.pov",
+        r#"#declare S = concat("a\"b", str(1.5, 0, 1)); #if (strlen(S) = 6) sphere { 0, 1 } #end"#,
+    )
+    .unwrap();
+    assert_eq!(p.scene.objects.len(), 1);
+}
+
+#[test]
+fn camera_items() {
+    let s = parse("camera { location <0, 1, -5> look_at <0, 1, 0> angle 60 right x*4/3 }");
+    assert_eq!(s.camera.location, glam::DVec3::new(0.0, 1.0, -5.0));
+    assert_eq!(s.camera.angle, Some(60.0));
+}
+
+#[test]
+fn unsupported_keyword_warns_with_place() {
+    let mut p = Parser::new(ParseOptions::default());
+    p.parse_str("w.pov", "sphere { 0, 1 pigment { bozo color_map { [0 rgb 0] [1 rgb 1] } } }\nfog { distance 3 color rgb 1 }").unwrap();
+    let msgs: Vec<String> = p.warnings.iter().map(|w| w.one_line(&p.sources)).collect();
+    assert!(
+        msgs.iter()
+            .any(|m| m.starts_with("w.pov:1:") && m.contains("bozo")),
+        "{msgs:?}"
+    );
+    assert!(
+        msgs.iter()
+            .any(|m| m.starts_with("w.pov:2:1") && m.contains("fog")),
+        "{msgs:?}"
+    );
+}
+
+#[test]
+fn errors_name_file_line_and_column() {
+    assert!(parse_err("sphere { 0, 1 ").contains("never closed"));
+    let e = parse_err("\n  sphere { Foo, 1 }");
+    assert!(
+        e.starts_with("snippet.pov:2:12") && e.contains("undeclared identifier 'Foo'"),
+        "{e}"
+    );
+    let e = parse_err("#declare S = \"abc");
+    assert!(
+        e.starts_with("snippet.pov:1:14") && e.contains("unterminated string"),
+        "{e}"
+    );
+    let e = parse_err("#if (1) sphere { 0, 1 }");
+    assert!(e.contains("#end"), "{e}");
+}
+
+#[test]
+fn error_inside_macro_shows_the_call_chain() {
+    let mut p = Parser::new(ParseOptions::default());
+    let e = p
+        .parse_str("m.pov", "#macro M(A)\n sphere { A, Nope }\n#end\nM(1)")
+        .unwrap_err();
+    assert!(e.one_line(&p.sources).starts_with("m.pov:2:"));
+    assert_eq!(e.chain.len(), 1);
+    assert!(e.chain[0].what.contains("macro M"));
+}
+
+#[test]
+fn endless_recursion_is_an_error_not_a_crash() {
+    let e = parse_err("#macro M() M() #end M()");
+    assert!(e.contains("too many nested"), "{e}");
+}
