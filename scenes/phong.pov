@@ -13,7 +13,12 @@ global_settings { assumed_gamma 1.0 }
 // References: reference/phong.png (-A) and phong_aa.png (+A0.3), 320x240,
 // rendered by scripts/make_references.sh.
 
-#include "colors.inc"
+// Named greys, declared here rather than taken from colors.inc so the scene (and lancer's
+// tests) need nothing but this directory.
+#declare White  = rgb 1;
+#declare Gray30 = White * 0.30;
+#declare Gray50 = White * 0.50;
+#declare Gray80 = White * 0.80;
 
 camera {
   location <0, 2.6, -12>

@@ -36,7 +36,7 @@ fn expressions_and_promotion() {
     match s.objects[0].shape {
         ShapeDesc::Sphere { center, radius } => {
             assert_eq!(center, glam::DVec3::new(3.0, 5.0, 7.0));
-            assert_eq!(radius, 2.0);
+            assert_eq!(radius, 3.0);
         }
         _ => panic!(),
     }
@@ -211,4 +211,30 @@ fn error_inside_macro_shows_the_call_chain() {
 fn endless_recursion_is_an_error_not_a_crash() {
     let e = parse_err("#macro M() M() #end M()");
     assert!(e.contains("too many nested"), "{e}");
+}
+
+#[test]
+fn include_found_on_the_library_path_with_local_scope() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures");
+    let opts = ParseOptions { library_paths: vec![root.join("lib")], ..ParseOptions::default() };
+    let parsed = lancer::api::parse_file(&root.join("uses_include.pov"), opts);
+    if let Some(e) = parsed.error {
+        panic!("{}", e.one_line(&parsed.parser.sources));
+    }
+    assert_eq!(radii(&parsed.parser.scene), vec![2.0]);
+}
+
+/// POV-Ray's own colors.inc, where Debian's povray-includes is installed (CI installs it).
+#[test]
+fn povray_colors_inc_parses_where_installed() {
+    let dir = std::path::Path::new("/usr/share/povray-3.7/include");
+    if !dir.join("colors.inc").exists() {
+        eprintln!("skipped: povray-includes is not installed");
+        return;
+    }
+    let s = parse("#include \"colors.inc\" sphere { 0, 1 pigment { color Gray30 } }");
+    match &s.objects[0].texture.as_ref().unwrap().pigment.kind {
+        PigmentKind::Solid(c) => assert!((c.rgb.x - 0.3).abs() < 1e-12),
+        _ => panic!(),
+    }
 }

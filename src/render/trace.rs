@@ -16,7 +16,6 @@ use super::pigment;
 #[derive(Default)]
 pub struct TraceCtx {
     scratch: Vec<Hit>,
-    hits: Vec<(f64, usize)>,
 }
 
 pub struct Tracer<'a> {
@@ -189,8 +188,7 @@ impl<'a> Tracer<'a> {
     fn shadow(&self, p: DVec3, l: DVec3, dist: f64, ctx: &mut TraceCtx) -> DVec3 {
         let ray = Ray::new(p, l);
         let mut att = DVec3::ONE;
-        let TraceCtx { scratch, hits } = ctx;
-        hits.clear();
+        let scratch = &mut ctx.scratch;
         self.scene.for_each_candidate(&ray, dist, |obj| {
             if obj.no_shadow {
                 return false;

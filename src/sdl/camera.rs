@@ -56,7 +56,7 @@ impl Parser {
         self.expect_sym(Sym::LBrace, "after 'sky_sphere'")?;
         let mut layers: Vec<Pigment> = Vec::new();
         loop {
-            let t = self.next()?;
+            let t = self.next_tok()?;
             match &t.tok {
                 Tok::Sym(Sym::RBrace) => break,
                 Tok::Ident(k) if &**k == "pigment" => layers.push(self.parse_pigment_block(None)?),
@@ -85,7 +85,7 @@ impl Parser {
     fn parse_global_settings(&mut self) -> PResult<()> {
         self.expect_sym(Sym::LBrace, "after 'global_settings'")?;
         loop {
-            let t = self.next()?;
+            let t = self.next_tok()?;
             let Tok::Ident(k) = &t.tok else {
                 if t.tok == Tok::Sym(Sym::RBrace) {
                     return Ok(());
@@ -112,7 +112,7 @@ impl Parser {
                     self.scene.global.ambient_light = c.rgb;
                 }
                 "charset" => {
-                    self.next()?;
+                    self.next_tok()?;
                 }
                 "max_intersections" | "number_of_waves" | "noise_generator" | "hf_gray_16"
                 | "mm_per_unit" | "subsurface" => {
@@ -151,7 +151,7 @@ impl Parser {
             }
         }
         loop {
-            let t = self.next()?;
+            let t = self.next_tok()?;
             let Tok::Ident(k) = &t.tok else {
                 if t.tok == Tok::Sym(Sym::RBrace) {
                     return Ok(cam);

@@ -304,7 +304,7 @@ impl Parser {
             }
             "transform" => {
                 self.advance();
-                Ok(Value::Transform(self.parse_transform_block()?))
+                Ok(Value::Transform(Box::new(self.parse_transform_block()?)))
             }
             _ => match self.lookup(k) {
                 Some(
@@ -422,7 +422,7 @@ impl Parser {
     fn default_directive(&mut self) -> PResult<()> {
         self.expect_sym(Sym::LBrace, "after #default")?;
         loop {
-            let t = self.next()?;
+            let t = self.next_tok()?;
             match &t.tok {
                 Tok::Sym(Sym::RBrace) => return Ok(()),
                 Tok::Ident(k) if &**k == "pigment" => {

@@ -23,27 +23,20 @@ fn binop(a: Value, b: Value, f: impl Fn(f64, f64) -> f64) -> Option<Value> {
         out[i] = f(ca[i], cb[i]);
     }
     Some(match (&a, &b) {
-        (Value::Color(_), _) | (_, Value::Color(_)) => {
-            Value::Color(Rgbft::from_array(promote(out, na, nb)))
-        }
+        (Value::Color(_), _) | (_, Value::Color(_)) => Value::Color(Rgbft::from_array(out)),
         (Value::Float(_), Value::Float(_)) => Value::Float(out[0]),
-        _ => Value::Vector(promote(out, na, nb), na.max(nb)),
+        _ => Value::Vector(out, na.max(nb)),
     })
 }
 
-/// Components beyond a shorter vector's length are zero after promotion (floats fill all).
-fn promote(out: [f64; 5], _na: u8, _nb: u8) -> [f64; 5] {
-    out
-}
-
-fn pad(c: Comp, n: u8) -> [f64; 5] {
+/// A vector widened to more components: the new ones are zero (a float fills them all).
+fn pad(c: Comp) -> [f64; 5] {
     let (mut v, len) = c;
     if len > 1 {
         for x in v.iter_mut().skip(len as usize) {
             *x = 0.0;
         }
     }
-    let _ = n;
     v
 }
 
@@ -84,11 +77,11 @@ impl Parser {
         let (na, nb) = (a.components().map(|c| c.1), b.components().map(|c| c.1));
         // Pad shorter vectors with zeros before combining (floats promote to every component).
         let a = match (a, na, nb) {
-            (Value::Vector(c, n), _, Some(m)) if m > n && m > 1 => Value::Vector(pad((c, n), m), m),
+            (Value::Vector(c, n), _, Some(m)) if m > n && m > 1 => Value::Vector(pad((c, n)), m),
             (a, _, _) => a,
         };
         let b = match (b, nb, na) {
-            (Value::Vector(c, n), _, Some(m)) if m > n && m > 1 => Value::Vector(pad((c, n), m), m),
+            (Value::Vector(c, n), _, Some(m)) if m > n && m > 1 => Value::Vector(pad((c, n)), m),
             (b, _, _) => b,
         };
         binop(a, b, f).ok_or_else(|| {
@@ -210,10 +203,6 @@ impl Parser {
                 let span = self.cur_span();
                 let v = self.parse_unary()?;
                 self.arith(Value::Float(0.0), v, span, |x, y| x - y)
-                    .map(|v| match v {
-                        // 0 - vector promoted the zero; that is a plain negation.
-                        other => other,
-                    })
             }
             Some(Sym::Plus) => {
                 self.advance();
@@ -234,7 +223,7 @@ impl Parser {
         let mut v = self.parse_primary()?;
         while self.raw_peek_sym()? == Some(Sym::Dot) {
             self.advance();
-            let t = self.next()?;
+            let t = self.next_tok()?;
             let Tok::Ident(k) = &t.tok else {
                 return Err(self.error_at(
                     t.span,
@@ -279,7 +268,7 @@ impl Parser {
     }
 
     fn parse_primary(&mut self) -> PResult<Value> {
-        let t = self.next()?;
+        let t = self.next_tok()?;
         match &t.tok {
             Tok::Num(n) => Ok(Value::Float(*n)),
             Tok::Str(s) => Ok(Value::Str(s.clone())),
@@ -316,7 +305,7 @@ impl Parser {
                 }
                 c[n] = self.float_of(v, span)?;
                 n += 1;
-                match self.next()? {
+                match self.next_tok()? {
                     t if t.tok == Tok::Sym(Sym::Comma) => {}
                     t if t.tok == Tok::Sym(Sym::Gt) => break,
                     t => {
@@ -421,7 +410,7 @@ impl Parser {
                 format!("'{kw}' needs a number or vector, found a {}", v.type_name()),
             ));
         };
-        let c = if n == 1 { [c[0]; 5] } else { pad((c, n), 5) };
+        let c = if n == 1 { [c[0]; 5] } else { pad((c, n)) };
         let base = kw.trim_start_matches('s');
         let (f, t) = match base {
             "rgb" => (0.0, 0.0),
@@ -440,7 +429,7 @@ impl Parser {
         match v {
             Value::Color(c) => Ok(c),
             Value::Float(f) => Ok(Rgbft::new(f, f, f, f, f)),
-            Value::Vector(c, n) => Ok(Rgbft::from_array(pad((c, n), 5))),
+            Value::Vector(c, n) => Ok(Rgbft::from_array(pad((c, n)))),
             other => Err(self.error_at(
                 span,
                 format!("expected a colour, found a {}", other.type_name()),
@@ -477,7 +466,7 @@ impl Parser {
         match v {
             Value::Float(f) => Ok(DVec3::splat(f)),
             Value::Vector(c, n) => {
-                let c = pad((c, n), 3);
+                let c = pad((c, n));
                 Ok(DVec3::new(c[0], c[1], c[2]))
             }
             Value::Color(c) => Ok(c.rgb),

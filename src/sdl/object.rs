@@ -199,7 +199,7 @@ impl Parser {
     fn material(&mut self, obj: &mut ObjectDesc) -> PResult<()> {
         let open = self.open_brace("material")?;
         loop {
-            let t = self.next()?;
+            let t = self.next_tok()?;
             match &t.tok {
                 Tok::Sym(Sym::RBrace) => return Ok(()),
                 Tok::Ident(k) if &**k == "texture" => {
@@ -266,10 +266,10 @@ impl Parser {
                 if self.peek_sym()? == Some(Sym::LBrace) {
                     self.parse_transform_block()?
                 } else {
-                    let t = self.next()?;
+                    let t = self.next_tok()?;
                     match &t.tok {
                         Tok::Ident(n) => match self.lookup(n) {
-                            Some(Value::Transform(tr)) => *tr,
+                            Some(Value::Transform(tr)) => **tr,
                             _ => {
                                 return Err(
                                     self.error_at(t.span, format!("'{n}' is not a transform"))
@@ -288,13 +288,13 @@ impl Parser {
         self.open_brace("transform")?;
         let mut acc = Transform::IDENTITY;
         loop {
-            let t = self.next()?;
+            let t = self.next_tok()?;
             match &t.tok {
                 Tok::Sym(Sym::RBrace) => return Ok(acc),
                 Tok::Ident(k) if &**k == "inverse" => acc = acc.inverse(),
                 Tok::Ident(k) => {
                     if let Some(Value::Transform(tr)) = self.lookup(k) {
-                        acc = acc.then(&tr.clone());
+                        acc = acc.then(tr);
                     } else if let Some(tr) = self.transform_item(k)? {
                         acc = acc.then(&tr);
                     } else {
@@ -473,7 +473,7 @@ impl Parser {
             });
             let mut texture = None;
             loop {
-                let t = self.next()?;
+                let t = self.next_tok()?;
                 match &t.tok {
                     Tok::Sym(Sym::RBrace) => break,
                     Tok::Ident(k) if &**k == "texture" => {
@@ -509,7 +509,7 @@ impl Parser {
         if let Some(o) = self.parse_object()? {
             return self.finish_object(o, open);
         }
-        let t = self.next()?;
+        let t = self.next_tok()?;
         let obj = match &t.tok {
             Tok::Ident(n) => match self.lookup(n) {
                 Some(Value::Object(o)) => (**o).clone(),

@@ -338,7 +338,7 @@ impl Parser {
         }
     }
 
-    pub fn next(&mut self) -> PResult<Token> {
+    pub fn next_tok(&mut self) -> PResult<Token> {
         match self.peek()? {
             Some(t) => {
                 self.advance();
@@ -394,7 +394,7 @@ impl Parser {
     }
 
     pub(super) fn expect_sym(&mut self, s: Sym, context: &str) -> PResult<Span> {
-        let t = self.next()?;
+        let t = self.next_tok()?;
         if t.tok == Tok::Sym(s) {
             return Ok(t.span);
         }

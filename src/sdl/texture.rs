@@ -120,7 +120,7 @@ impl Parser {
         }
         let mut freq_phase = (1.0, 0.0);
         loop {
-            let t = self.next()?;
+            let t = self.next_tok()?;
             let Tok::Ident(k) = &t.tok else {
                 if t.tok == Tok::Sym(Sym::RBrace) {
                     break;
@@ -247,17 +247,14 @@ impl Parser {
             }
             "function" | "pigment_pattern" | "object" | "density_file" => {
                 if k == "density_file" {
-                    self.next()?;
-                    self.next()?;
+                    self.next_tok()?;
+                    self.next_tok()?;
                 } else {
                     self.skip_block()?;
                 }
             }
-            "julia" | "mandel" | "magnet" | "tiling" | "spiral1" | "spiral2" | "slope" | "aoi"
-            | "facets" => {
-                if k != "facets" && k != "aoi" && k != "slope" {
-                    self.parse_expr()?;
-                }
+            "julia" | "mandel" | "magnet" | "tiling" | "spiral1" | "spiral2" => {
+                self.parse_expr()?;
             }
             _ => {}
         }
@@ -283,7 +280,7 @@ impl Parser {
             }
         }
         loop {
-            let t = self.next()?;
+            let t = self.next_tok()?;
             match &t.tok {
                 Tok::Sym(Sym::RBrace) => break,
                 Tok::Sym(Sym::LBracket) => {
@@ -348,7 +345,7 @@ impl Parser {
         };
         let (mut filter_all, mut transmit_all) = (None, None);
         loop {
-            let t = self.next()?;
+            let t = self.next_tok()?;
             match &t.tok {
                 Tok::Sym(Sym::RBrace) => break,
                 Tok::Ident(k) => match &**k {
@@ -414,7 +411,7 @@ impl Parser {
         self.begin_block("finish")?;
         let mut f = base.unwrap_or_default();
         loop {
-            let t = self.next()?;
+            let t = self.next_tok()?;
             let Tok::Ident(k) = &t.tok else {
                 if t.tok == Tok::Sym(Sym::RBrace) {
                     return Ok(f);
@@ -518,7 +515,7 @@ impl Parser {
             r.max = first;
         }
         loop {
-            let t = self.next()?;
+            let t = self.next_tok()?;
             match &t.tok {
                 Tok::Sym(Sym::RBrace) => break,
                 Tok::Ident(k) => match &**k {
@@ -567,7 +564,7 @@ impl Parser {
             }
         }
         loop {
-            let t = self.next()?;
+            let t = self.next_tok()?;
             let Tok::Ident(k) = &t.tok else {
                 if t.tok == Tok::Sym(Sym::RBrace) {
                     return Ok(tex);
@@ -612,7 +609,7 @@ impl Parser {
         self.begin_block("interior")?;
         let mut int = Interior::default();
         loop {
-            let t = self.next()?;
+            let t = self.next_tok()?;
             let Tok::Ident(k) = &t.tok else {
                 if t.tok == Tok::Sym(Sym::RBrace) {
                     return Ok(int);

@@ -25,7 +25,7 @@ pub enum Value {
     Interior(Box<Interior>),
     Camera(Box<CameraDesc>),
     Light(Box<LightDesc>),
-    Transform(Transform),
+    Transform(Box<Transform>),
     Macro(Rc<MacroDef>),
 }
 
