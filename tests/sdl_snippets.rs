@@ -216,7 +216,10 @@ fn endless_recursion_is_an_error_not_a_crash() {
 #[test]
 fn include_found_on_the_library_path_with_local_scope() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures");
-    let opts = ParseOptions { library_paths: vec![root.join("lib")], ..ParseOptions::default() };
+    let opts = ParseOptions {
+        library_paths: vec![root.join("lib")],
+        ..ParseOptions::default()
+    };
     let parsed = lancer::api::parse_file(&root.join("uses_include.pov"), opts);
     if let Some(e) = parsed.error {
         panic!("{}", e.one_line(&parsed.parser.sources));
