@@ -146,12 +146,13 @@ impl<'a> Tracer<'a> {
         let refl = &fin.reflection;
         let mut refl_amount = DVec3::ZERO;
         if !refl.is_zero() {
-            // Where a ray leaves an object POV-Ray evaluates the Fresnel term with the object's
-            // ior on both sides, which is zero: only `min` reflects there (measured against
-            // povray 3.7 with glass spheres, boxes and cylinders at trace levels 3 and 5).
+            // Where a ray leaves an object at a point still inside another object (a wall
+            // plane whose inside holds the camera, say), POV-Ray takes the leaving object's ior
+            // for both sides of the Fresnel term, which makes it zero; elsewhere the exit is
+            // an ordinary glass-to-air interface. Measured with povray 3.7: tests/probes.
             let f = if !refl.fresnel {
                 (1.0 - cos_i).powf(refl.falloff)
-            } else if entering {
+            } else if entering || !s.inside_other(p, obj) {
                 fresnel(cos_i, n1, n2)
             } else {
                 0.0

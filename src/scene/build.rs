@@ -286,4 +286,12 @@ impl Scene {
         self.bvh
             .traverse(ray, tmax, |prim, _| f(&self.objects[self.bounded[prim]]));
     }
+
+    /// Whether `p` is inside any object other than `leaf` (CSG nodes holding `leaf` are
+    /// judged by their other members).
+    pub fn inside_other(&self, p: DVec3, leaf: &Object) -> bool {
+        self.objects
+            .iter()
+            .any(|o| o.bounds.grow(p) == o.bounds && o.inside_without(p, leaf))
+    }
 }

@@ -182,6 +182,31 @@ impl Object {
         r != self.inverse
     }
 
+    /// Like `inside`, but as if `leaf` were not part of this object.
+    pub fn inside_without(&self, p: DVec3, leaf: &Object) -> bool {
+        if std::ptr::eq(self, leaf) {
+            return false;
+        }
+        match &self.kind {
+            ObjKind::Csg {
+                op: CsgOp::Union | CsgOp::Merge,
+                children,
+            } if self.contains(leaf) => {
+                children.iter().any(|c| c.inside_without(p, leaf)) != self.inverse
+            }
+            _ if self.contains(leaf) => false,
+            _ => self.inside(p),
+        }
+    }
+
+    fn contains(&self, leaf: &Object) -> bool {
+        std::ptr::eq(self, leaf)
+            || match &self.kind {
+                ObjKind::Csg { children, .. } => children.iter().any(|c| c.contains(leaf)),
+                ObjKind::Shape(_) => false,
+            }
+    }
+
     /// Unit world-space normal at a hit on this leaf, outward (before face-forwarding).
     pub fn normal(&self, p: DVec3, h: &SurfaceHit) -> DVec3 {
         let ObjKind::Shape(s) = &self.kind else {
