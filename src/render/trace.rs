@@ -3,7 +3,8 @@
 //! Measured against the `povray` binary on minimal scenes (see tests/shading.rs): the surface's
 //! own light (ambient, diffuse) is weighted by 1 − filter − transmit while highlights are not;
 //! light passing through is rgb·filter + transmit of the traced colour; shadow rays are filtered
-//! at every surface crossing; rays past max_trace_level return black.
+//! at every surface crossing; shadowless lights make no highlights; rays past max_trace_level
+//! return black.
 
 use crate::geom::Hit;
 use crate::math::{DVec3, Ray};
@@ -119,6 +120,10 @@ impl<'a> Tracer<'a> {
                     cos_n.powf(fin.brilliance)
                 };
                 col += lc * c.rgb * (fin.diffuse * d * opacity);
+            }
+            // POV-Ray 3.7 gives shadowless lights no highlights (tests/probes/shadowless_*).
+            if light.shadowless {
+                continue;
             }
             if fin.phong > 0.0 {
                 let cos_r = reflect(dir, nf).dot(l);
