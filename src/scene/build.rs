@@ -165,7 +165,7 @@ impl Ctx {
         let tex_desc = o.texture.as_ref().or(parent_tex);
         let int = o.interior.as_ref().or(parent_int);
         let texture = self.texture(tex_desc.unwrap_or(default));
-        let transparent = may_be_transparent(&texture.pigment);
+        let mut transparent = may_be_transparent(&texture.pigment);
         let ior = int.map_or(1.0, |i| i.ior);
         let (kind, bounds, mesh) = match &o.shape {
             ShapeDesc::Light(l) => {
@@ -186,6 +186,8 @@ impl Ctx {
                 if kids.is_empty() {
                     return None;
                 }
+                // Shadow rays must look at the surfaces of a CSG whose members can let light through.
+                transparent = kids.iter().any(|k| k.transparent);
                 let bounds = csg_bounds(*op, &kids);
                 (
                     ObjKind::Csg {
@@ -213,6 +215,9 @@ impl Ctx {
                 } else {
                     b.transformed(&o.transform)
                 };
+                if let ShapeDesc::Mesh(data) = shape {
+                    transparent |= data.textures.iter().any(|t| may_be_transparent(&t.pigment));
+                }
                 let mesh = match shape {
                     ShapeDesc::Mesh(data) if !data.textures.is_empty() => Some((
                         data.clone(),
