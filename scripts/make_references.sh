@@ -4,6 +4,7 @@
 # For every scene S.pov it writes
 #   reference/S.png     320x240, no anti-aliasing  (-A)
 #   reference/S_aa.png  320x240, anti-aliasing     (+A0.3)
+#   reference/S_aaj.png 320x240, anti-aliasing without jitter (+A0.3 -J)
 # and nothing else.  reference/manifest.tsv is maintained by hand; this
 # script only checks that every scene has its two rows there.
 #
@@ -42,14 +43,14 @@ LOG="$(mktemp -d)"
 trap 'rm -rf "$LOG"' EXIT
 warnings=0
 
-render() {  # render <scene.pov> <aa-flag> <out.png>
+render() {  # render <scene.pov> <aa-flags> <out.png>
   local pov="$1" aa="$2" out="$3" log
   log="$LOG/$(basename "$out").log"
   local t0 t1
   t0="$(date +%s.%N)"
   # Debian's povray reads /etc/povray/3.7/povray.ini first (800x600,
   # display on, ...): every setting that matters is passed explicitly.
-  if ! "$POVRAY" -D -V +FN8 "$aa" +W320 +H240 \
+  if ! "$POVRAY" -D -V +FN8 $aa +W320 +H240 \
         +L"$SCENES" +L"$INC" +I"$pov" +O"$out" >"$log" 2>&1; then
     echo "error: povray failed on $pov ($aa):" >&2
     grep -v '^\s*$' "$log" | tail -20 >&2
@@ -79,6 +80,7 @@ for pov in "${scenes[@]}"; do
   echo "$name.pov"
   render "$pov" -A     "$REF/$name.png"
   render "$pov" +A0.3  "$REF/${name}_aa.png"
+  render "$pov" "+A0.3 -J" "$REF/${name}_aaj.png"
 done
 
 if [ "$warnings" -gt 0 ]; then
@@ -98,7 +100,7 @@ fi
 missing=0
 for pov in "$SCENES"/*.pov; do
   name="$(basename "$pov" .pov)"
-  for ref in "$name.png" "${name}_aa.png"; do
+  for ref in "$name.png" "${name}_aa.png" "${name}_aaj.png"; do
     if ! awk -F'\t' -v s="$name.pov" -v r="$ref" \
          'NR > 1 && $1 == s && $3 == r { found = 1 } END { exit !found }' "$MANIFEST"; then
       echo "warning: manifest.tsv has no row for $name.pov -> $ref" >&2

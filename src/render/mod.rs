@@ -108,17 +108,26 @@ pub fn render(scene: &Scene, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)
     film
 }
 
-/// Method 1: a pixel whose encoded colour differs from its left or upper neighbour by at least
-/// the threshold (sum over channels) is supersampled on a depth×depth grid, and so is that
-/// neighbour; the samples are averaged with the first one.
+/// POV-Ray compares pixels for anti-aliasing on linear light raised to 1/2.5 (its default
+/// Antialias_Gamma), not on the file's encoding.
+const AA_GAMMA: f64 = 2.5;
+
+/// Method 1: a pixel whose gamma-adjusted colour differs from its left or upper neighbour by
+/// more than the threshold (sum over channels) is supersampled on a depth×depth grid, and so
+/// is that neighbour; the samples are averaged with the first one.
 fn antialias(tracer: &Tracer, film: &mut Film, s: &RenderSettings, threshold: f64) {
     let (w, h) = (film.width as usize, film.height as usize);
+    let working_gamma = match film.gamma {
+        GammaMode::Corrected(g) => g,
+        GammaMode::None => 1.0,
+    };
+    let adjust = |v: f64| v.clamp(0.0, 1.0).powf(working_gamma / AA_GAMMA);
     let enc: Vec<DVec3> = film
         .pixels
         .iter()
-        .map(|p| DVec3::new(film.encode(p.x), film.encode(p.y), film.encode(p.z)))
+        .map(|p| DVec3::new(adjust(p.x), adjust(p.y), adjust(p.z)))
         .collect();
-    let differs = |a: usize, b: usize| (enc[a] - enc[b]).abs().element_sum() >= threshold;
+    let differs = |a: usize, b: usize| (enc[a] - enc[b]).abs().element_sum() > threshold;
     let mut mark = vec![false; w * h];
     for y in 0..h {
         for x in 0..w {
