@@ -1,0 +1,64 @@
+//! The picture must not depend on the thread count (frames split across machines must match
+//! byte for byte), and every output format must be readable.
+
+use std::path::Path;
+
+use lancer::output::{write, Format};
+use lancer::render::RenderSettings;
+
+fn render_with_threads(n: usize, settings: &RenderSettings) -> Vec<u8> {
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/glass.pov");
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(n)
+        .build()
+        .unwrap();
+    let film = pool
+        .install(|| lancer::api::render_file(&scene, &[], settings))
+        .unwrap();
+    lancer::output::to_rgb8(&film)
+}
+
+#[test]
+fn same_bytes_for_any_thread_count() {
+    // Anti-aliasing with jitter on is the case most likely to depend on scheduling.
+    let s = RenderSettings {
+        width: 96,
+        height: 72,
+        antialias: Some(0.1),
+        ..RenderSettings::default()
+    };
+    let one = render_with_threads(1, &s);
+    assert_eq!(one, render_with_threads(2, &s));
+    assert_eq!(one, render_with_threads(5, &s));
+}
+
+#[test]
+fn png16_and_exr_are_written_and_readable() {
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/phong.pov");
+    let s = RenderSettings {
+        width: 32,
+        height: 24,
+        ..RenderSettings::default()
+    };
+    let film = lancer::api::render_file(&scene, &[], &s).unwrap();
+    let dir = std::env::temp_dir().join(format!("lancer-out-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p16 = dir.join("a.png");
+    write(&film, &p16, Format::Png16).unwrap();
+    let img = image::open(&p16).unwrap();
+    assert!(matches!(img, image::DynamicImage::ImageRgb16(_)));
+    let exr = dir.join("a.exr");
+    write(&film, &exr, Format::Exr).unwrap();
+    let img = image::open(&exr).unwrap().to_rgb32f();
+    assert_eq!(img.dimensions(), (32, 24));
+    // The 8-bit encoding of the EXR's linear value equals what the 8-bit PNG holds.
+    let lin = img.get_pixel(16, 12)[0] as f64;
+    let enc = (lancer::render::srgb_encode(lin.min(1.0)) * 255.0 + 0.5).floor() as u8;
+    assert_eq!(enc, lancer::output::to_rgb8(&film)[(12 * 32 + 16) * 3]);
+    let leftovers: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_name().to_string_lossy().ends_with(".tmp"))
+        .collect();
+    assert!(leftovers.is_empty(), "temporary files left behind");
+}
