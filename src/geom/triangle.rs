@@ -78,9 +78,12 @@ fn hit_of((t, u, v): (f64, f64, f64)) -> Hit {
     }
 }
 
+/// A flat triangle, or a smooth one when vertex normals are given.
 #[derive(Clone, Copy, Debug)]
 pub struct Triangle {
     geom: Option<TriGeom>,
+    /// Unit vertex normals of a smooth triangle (zero where one was given as zero).
+    normals: Option<[DVec3; 3]>,
 }
 
 impl Triangle {
@@ -88,6 +91,15 @@ impl Triangle {
     pub fn new(p: [DVec3; 3]) -> Triangle {
         Triangle {
             geom: TriGeom::new(p),
+            normals: None,
+        }
+    }
+
+    /// Vertex normals are normalised so their lengths do not skew the interpolation.
+    pub fn smooth(p: [DVec3; 3], n: [DVec3; 3]) -> Triangle {
+        Triangle {
+            geom: TriGeom::new(p),
+            normals: Some(n.map(|v| v.normalize_or_zero())),
         }
     }
 }
@@ -107,46 +119,12 @@ impl Shape for Triangle {
     fn inside(&self, _p: DVec3) -> bool {
         false
     }
-    fn normal(&self, _p: DVec3, _hit: &Hit) -> DVec3 {
-        self.geom.map_or(DVec3::Y, |g| g.geometric_normal())
-    }
-}
-
-#[derive(Clone, Copy, Debug)]
-pub struct SmoothTriangle {
-    geom: Option<TriGeom>,
-    /// Unit vertex normals (zero where one was given as zero).
-    n: [DVec3; 3],
-}
-
-impl SmoothTriangle {
-    /// Vertex normals are normalised so their lengths do not skew the interpolation.
-    pub fn new(p: [DVec3; 3], n: [DVec3; 3]) -> SmoothTriangle {
-        SmoothTriangle {
-            geom: TriGeom::new(p),
-            n: n.map(|v| v.normalize_or_zero()),
-        }
-    }
-}
-
-impl Shape for SmoothTriangle {
-    fn bounds(&self) -> Aabb {
-        self.geom.map_or(Aabb::EMPTY, |g| g.bounds())
-    }
-    fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
-        if let Some(h) = self.geom.and_then(|g| g.intersect(ray, f64::INFINITY)) {
-            out.push(hit_of(h));
-        }
-    }
-    fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
-        self.geom?.intersect(ray, tmax).map(hit_of)
-    }
-    fn inside(&self, _p: DVec3) -> bool {
-        false
-    }
     fn normal(&self, _p: DVec3, hit: &Hit) -> DVec3 {
         let g = self.geom.map_or(DVec3::Y, |g| g.geometric_normal());
-        smooth_normal(&self.n, hit.uv, g)
+        match &self.normals {
+            Some(n) => smooth_normal(n, hit.uv, g),
+            None => g,
+        }
     }
 }
 
@@ -205,7 +183,7 @@ mod tests {
             DVec3::new(1.0, 0.0, 1.0),
             DVec3::new(0.0, 3.0, 3.0),
         ];
-        let tri = SmoothTriangle::new(P, n);
+        let tri = Triangle::smooth(P, n);
         let at = |x: f64, y: f64| {
             let r = Ray::new(DVec3::new(x, y, -1.0), DVec3::Z);
             let h = tri
@@ -219,7 +197,7 @@ mod tests {
         let mid = at(1.0, 0.0);
         assert!(mid.x > 0.0 && mid.y.abs() < 1e-12);
         // Opposing vertex normals cancel: fall back to the face normal.
-        let flat = SmoothTriangle::new(P, [DVec3::Z, DVec3::NEG_Z, DVec3::ZERO]);
+        let flat = Triangle::smooth(P, [DVec3::Z, DVec3::NEG_Z, DVec3::ZERO]);
         let h = Hit {
             t: 1.0,
             part: 0,
@@ -241,7 +219,7 @@ mod tests {
             t.intersect_all(&r, &mut v);
             assert!(t.bounds().is_empty());
             assert!(t.normal(DVec3::ZERO, &Hit::new(1.0)).is_finite());
-            let s = SmoothTriangle::new(p, [DVec3::ZERO; 3]);
+            let s = Triangle::smooth(p, [DVec3::ZERO; 3]);
             s.intersect_all(&r, &mut v);
             assert!(s.normal(DVec3::ZERO, &Hit::new(1.0)).is_finite());
         }

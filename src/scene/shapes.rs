@@ -4,7 +4,7 @@ use std::sync::Arc;
 
 use crate::geom::{
     boxes::BoxShape, cone::Cone, cylinder::Cylinder, disc::Disc, mesh::Mesh, plane::Plane,
-    sphere::Sphere, torus::Torus, triangle::SmoothTriangle, triangle::Triangle, Shape,
+    sphere::Sphere, torus::Torus, triangle::Triangle, Shape,
 };
 use crate::scene::desc::ShapeDesc;
 
@@ -39,7 +39,7 @@ pub fn make_shape(d: &ShapeDesc) -> Arc<dyn Shape> {
             sturm,
         } => Arc::new(Torus::new(*major, *minor, *sturm)),
         ShapeDesc::Triangle { p } => Arc::new(Triangle::new(*p)),
-        ShapeDesc::SmoothTriangle { p, n } => Arc::new(SmoothTriangle::new(*p, *n)),
+        ShapeDesc::SmoothTriangle { p, n } => Arc::new(Triangle::smooth(*p, *n)),
         ShapeDesc::Mesh(data) => Arc::new(Mesh::new(data.clone())),
         ShapeDesc::Csg { .. } | ShapeDesc::Light(_) => {
             unreachable!("CSG and lights are built by scene::build")
