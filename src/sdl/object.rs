@@ -173,7 +173,7 @@ impl Parser {
                 }
             }
             "photons" | "radiosity" => self.skip_block()?,
-            "clipped_by" => {
+            "clipped_by" | "interior_texture" => {
                 self.unsupported(k, span);
                 self.skip_block()?;
             }
