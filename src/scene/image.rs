@@ -18,28 +18,54 @@ pub fn srgb_to_linear(c: f64) -> f64 {
 pub fn load_image_map(path: &Path, map: &mut ImageMap) -> Result<(), String> {
     let img =
         image::open(path).map_err(|e| format!("cannot read image {}: {e}", path.display()))?;
-    let is_float = matches!(
-        img,
-        image::DynamicImage::ImageRgb32F(_) | image::DynamicImage::ImageRgba32F(_)
-    );
     let has_alpha = img.color().has_alpha();
-    let rgba = img.to_rgba32f();
-    map.width = rgba.width();
-    map.height = rgba.height();
-    map.pixels = rgba
-        .pixels()
-        .map(|p| {
-            let lin = |v: f32| {
-                if is_float {
-                    v as f64
-                } else {
-                    srgb_to_linear(v as f64)
-                }
-            };
-            // POV-Ray maps alpha to transmit (1 - alpha).
-            let t = if has_alpha { 1.0 - p.0[3] as f64 } else { 0.0 };
-            Rgbft::new(lin(p.0[0]), lin(p.0[1]), lin(p.0[2]), 0.0, t)
-        })
-        .collect();
+    map.width = img.width();
+    map.height = img.height();
+    // POV-Ray maps alpha to transmit (1 - alpha).
+    let transmit = |a: f64| if has_alpha { 1.0 - a } else { 0.0 };
+    map.pixels = match &img {
+        image::DynamicImage::ImageRgb32F(_) | image::DynamicImage::ImageRgba32F(_) => img
+            .to_rgba32f()
+            .pixels()
+            .map(|p| {
+                Rgbft::new(
+                    p.0[0] as f64,
+                    p.0[1] as f64,
+                    p.0[2] as f64,
+                    0.0,
+                    transmit(p.0[3] as f64),
+                )
+            })
+            .collect(),
+        _ if img.color().bytes_per_pixel() / img.color().channel_count() == 1 => {
+            // 8-bit images: decode through a table instead of a powf per channel.
+            let lut: Vec<f64> = (0..256).map(|i| srgb_to_linear(i as f64 / 255.0)).collect();
+            img.to_rgba8()
+                .pixels()
+                .map(|p| {
+                    Rgbft::new(
+                        lut[p.0[0] as usize],
+                        lut[p.0[1] as usize],
+                        lut[p.0[2] as usize],
+                        0.0,
+                        transmit(p.0[3] as f64 / 255.0),
+                    )
+                })
+                .collect()
+        }
+        _ => img
+            .to_rgba32f()
+            .pixels()
+            .map(|p| {
+                Rgbft::new(
+                    srgb_to_linear(p.0[0] as f64),
+                    srgb_to_linear(p.0[1] as f64),
+                    srgb_to_linear(p.0[2] as f64),
+                    0.0,
+                    transmit(p.0[3] as f64),
+                )
+            })
+            .collect(),
+    };
     Ok(())
 }
