@@ -3,6 +3,8 @@
 
 use std::path::{Path, PathBuf};
 
+use rayon::prelude::*;
+
 use crate::render::Film;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -34,10 +36,10 @@ impl Format {
 
 /// 8-bit RGB bytes as POV-Ray quantises them: floor(v·255 + 0.5) of the clipped encoded value.
 pub fn to_rgb8(film: &Film) -> Vec<u8> {
+    let q = |v: f64| (film.encode(v) * 255.0 + 0.5).floor() as u8;
     film.pixels
-        .iter()
-        .flat_map(|p| [p.x, p.y, p.z])
-        .map(|v| (film.encode(v) * 255.0 + 0.5).floor() as u8)
+        .par_iter()
+        .flat_map_iter(|p| [q(p.x), q(p.y), q(p.z)])
         .collect()
 }
 

@@ -155,7 +155,10 @@ impl<'a> Tracer<'a> {
             // plane whose inside holds the camera, say), POV-Ray takes the leaving object's ior
             // for both sides of the Fresnel term, which makes it zero; elsewhere the exit is
             // an ordinary glass-to-air interface. Measured with povray 3.7: tests/probes.
-            let f = if !refl.fresnel {
+            let f = if refl.min == refl.max {
+                // The blend factor does not matter; skip the powf on this per-hit path.
+                0.0
+            } else if !refl.fresnel {
                 (1.0 - cos_i).powf(refl.falloff)
             } else if entering || !s.inside_other(p, obj) {
                 fresnel(cos_i, n1, n2)
