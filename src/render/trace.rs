@@ -6,18 +6,14 @@
 //! at every surface crossing; shadowless lights make no highlights; rays past max_trace_level
 //! return black.
 
-use crate::geom::Hit;
 use crate::math::{DVec3, Ray};
 use crate::scene::build::{Light, Scene};
-use crate::scene::object::SurfaceHit;
+use crate::scene::object::{Scratch, SurfaceHit};
 
 use super::pigment;
 
 /// Per-thread scratch buffers so tracing allocates nothing per ray.
-#[derive(Default)]
-pub struct TraceCtx {
-    scratch: Vec<Hit>,
-}
+pub type TraceCtx<'a> = Scratch<'a>;
 
 pub struct Tracer<'a> {
     pub scene: &'a Scene,
@@ -47,11 +43,11 @@ impl<'a> Tracer<'a> {
 
     /// Colour seen along `ray` in the scene's working space. `depth` starts at 1 for primary
     /// rays; `weight` is this ray's share of the pixel, for adaptive depth control.
-    pub fn trace(&self, ray: &Ray, depth: u32, weight: f64, ctx: &mut TraceCtx) -> DVec3 {
+    pub fn trace(&self, ray: &Ray, depth: u32, weight: f64, ctx: &mut TraceCtx<'a>) -> DVec3 {
         if depth > self.scene.max_trace_level {
             return DVec3::ZERO;
         }
-        match self.scene.first_hit(ray, f64::INFINITY, &mut ctx.scratch) {
+        match self.scene.first_hit(ray, f64::INFINITY, ctx) {
             Some(h) => self.shade(ray, &h, depth, weight, ctx),
             None => self.background(ray.dir),
         }
@@ -77,7 +73,7 @@ impl<'a> Tracer<'a> {
         h: &SurfaceHit,
         depth: u32,
         weight: f64,
-        ctx: &mut TraceCtx,
+        ctx: &mut TraceCtx<'a>,
     ) -> DVec3 {
         let s = self.scene;
         let obj = h.obj;
@@ -199,31 +195,31 @@ impl<'a> Tracer<'a> {
 
     /// Light reaching `p` from a light `dist` away in direction `l`: zero behind an opaque
     /// object, filtered by each crossing of a transparent one.
-    fn shadow(&self, p: DVec3, l: DVec3, dist: f64, ctx: &mut TraceCtx) -> DVec3 {
+    fn shadow(&self, p: DVec3, l: DVec3, dist: f64, ctx: &mut TraceCtx<'a>) -> DVec3 {
         let ray = Ray::new(p, l);
         let mut att = DVec3::ONE;
-        let scratch = &mut ctx.scratch;
         self.scene.for_each_candidate(&ray, dist, |obj| {
             if obj.no_shadow {
                 return false;
             }
             if !obj.transparent {
-                if obj.first_hit(&ray, dist, scratch).is_some() {
+                if obj.first_hit(&ray, dist, ctx).is_some() {
                     att = DVec3::ZERO;
                     return true;
                 }
                 return false;
             }
-            let mut all = Vec::new();
-            obj.all_hits(&ray, &mut all, scratch);
-            for h in all.iter().filter(|h| h.t < dist) {
+            let start = ctx.surface.len();
+            obj.all_hits(&ray, ctx);
+            for h in ctx.surface[start..].iter().filter(|h| h.t < dist) {
                 let c = pigment::eval(&h.obj.texture_at(h).pigment, ray.at(h.t));
                 if c.is_opaque() {
                     att = DVec3::ZERO;
-                    return true;
+                    break;
                 }
                 att *= c.rgb * c.filter + DVec3::splat(c.transmit);
             }
+            ctx.surface.truncate(start);
             att == DVec3::ZERO
         });
         att

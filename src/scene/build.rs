@@ -13,7 +13,7 @@ use crate::render::camera::Camera;
 use crate::scene::desc::{
     Interior, ObjectDesc, Pigment, PigmentKind, SceneDesc, ShapeDesc, Texture,
 };
-use crate::scene::object::{ObjKind, Object, SurfaceHit};
+use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
 use crate::scene::shapes::make_shape;
 
 #[derive(Clone, Debug)]
@@ -260,7 +260,7 @@ impl Scene {
         &'a self,
         ray: &Ray,
         tmax: f64,
-        scratch: &mut Vec<crate::geom::Hit>,
+        scratch: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
         let mut best: Option<SurfaceHit<'a>> = None;
         let mut tmax = tmax;
@@ -282,7 +282,12 @@ impl Scene {
 
     /// Calls `f` for every object whose bounds the segment (0, tmax) may cross; `f` returns
     /// true to stop (an opaque blocker was found).
-    pub fn for_each_candidate(&self, ray: &Ray, tmax: f64, mut f: impl FnMut(&Object) -> bool) {
+    pub fn for_each_candidate<'a>(
+        &'a self,
+        ray: &Ray,
+        tmax: f64,
+        mut f: impl FnMut(&'a Object) -> bool,
+    ) {
         for &i in &self.unbounded {
             if f(&self.objects[i]) {
                 return;

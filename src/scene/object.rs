@@ -31,6 +31,35 @@ pub struct Object {
     pub transparent: bool,
 }
 
+/// Per-thread buffers for intersection, so no ray allocates: shape crossings, and surface
+/// crossings gathered for CSG filtering and shadow rays.
+#[derive(Default)]
+pub struct Scratch<'a> {
+    pub hits: Vec<Hit>,
+    pub surface: Vec<SurfaceHit<'a>>,
+}
+
+/// Whether a crossing at `p` of CSG member `i` is on the result's surface: every other member
+/// must contain `p` (intersection), not contain it (union-like merge), or, for a difference,
+/// the first member must and the subtracted ones must not.
+fn csg_keeps(op: CsgOp, i: usize, children: &[Object], p: DVec3) -> bool {
+    if op == CsgOp::Union {
+        return true;
+    }
+    children
+        .iter()
+        .enumerate()
+        .filter(|(j, _)| *j != i)
+        .all(|(j, o)| {
+            let want_inside = match op {
+                CsgOp::Intersection => true,
+                CsgOp::Difference => j == 0,
+                CsgOp::Union | CsgOp::Merge => false,
+            };
+            o.inside(p) == want_inside
+        })
+}
+
 /// A crossing of a ray with a leaf object.
 #[derive(Clone, Copy)]
 pub struct SurfaceHit<'a> {
@@ -54,29 +83,32 @@ impl Object {
         &'a self,
         ray: &Ray,
         tmax: f64,
-        scratch: &mut Vec<Hit>,
+        s: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
         match &self.kind {
-            ObjKind::Shape(s) => {
+            ObjKind::Shape(shape) => {
                 let r = self.local_ray(ray);
-                s.intersect_first(&r, tmax, scratch).map(|hit| SurfaceHit {
-                    t: hit.t,
-                    obj: self,
-                    hit,
-                    flip: self.inverse,
-                })
+                shape
+                    .intersect_first(&r, tmax, &mut s.hits)
+                    .map(|hit| SurfaceHit {
+                        t: hit.t,
+                        obj: self,
+                        hit,
+                        flip: self.inverse,
+                    })
             }
             ObjKind::Csg {
                 op: CsgOp::Union,
                 children,
             } => {
+                let inv_dir = ray.dir.recip();
                 let mut best: Option<SurfaceHit<'a>> = None;
                 let mut tmax = tmax;
                 for c in children {
-                    if c.bounds.hit(ray.origin, ray.dir.recip(), tmax).is_none() {
+                    if c.bounds.hit(ray.origin, inv_dir, tmax).is_none() {
                         continue;
                     }
-                    if let Some(h) = c.first_hit(ray, tmax, scratch) {
+                    if let Some(h) = c.first_hit(ray, tmax, s) {
                         tmax = h.t;
                         best = Some(h);
                     }
@@ -84,28 +116,27 @@ impl Object {
                 best
             }
             ObjKind::Csg { .. } => {
-                let mut all = Vec::new();
-                self.all_hits(ray, &mut all, scratch);
-                all.into_iter()
+                let start = s.surface.len();
+                self.all_hits(ray, s);
+                let best = s.surface[start..]
+                    .iter()
                     .filter(|h| h.t < tmax)
                     .min_by(|a, b| a.t.total_cmp(&b.t))
+                    .copied();
+                s.surface.truncate(start);
+                best
             }
         }
     }
 
-    /// Every crossing with t > EPSILON, in no particular order.
-    pub fn all_hits<'a>(
-        &'a self,
-        ray: &Ray,
-        out: &mut Vec<SurfaceHit<'a>>,
-        scratch: &mut Vec<Hit>,
-    ) {
+    /// Appends every crossing with t > EPSILON, in no particular order, to `s.surface`.
+    pub fn all_hits<'a>(&'a self, ray: &Ray, s: &mut Scratch<'a>) {
         match &self.kind {
-            ObjKind::Shape(s) => {
+            ObjKind::Shape(shape) => {
                 let r = self.local_ray(ray);
-                scratch.clear();
-                s.intersect_all(&r, scratch);
-                out.extend(scratch.iter().map(|&hit| SurfaceHit {
+                s.hits.clear();
+                shape.intersect_all(&r, &mut s.hits);
+                s.surface.extend(s.hits.iter().map(|&hit| SurfaceHit {
                     t: hit.t,
                     obj: self,
                     hit,
@@ -113,49 +144,26 @@ impl Object {
                 }));
             }
             ObjKind::Csg { op, children } => {
-                let mut mine: Vec<SurfaceHit<'a>> = Vec::new();
+                let mine = s.surface.len();
                 for (i, c) in children.iter().enumerate() {
-                    let start = mine.len();
-                    c.all_hits(ray, &mut mine, scratch);
-                    let keep_from = start;
-                    let mut k = keep_from;
-                    for j in keep_from..mine.len() {
-                        let h = mine[j];
-                        let p = ray.at(h.t);
-                        let others = children.iter().enumerate().filter(|(o, _)| *o != i);
-                        let keep = match op {
-                            CsgOp::Union => true,
-                            CsgOp::Merge => others.clone().all(|(_, o)| !o.inside(p)),
-                            CsgOp::Intersection => others.clone().all(|(_, o)| o.inside(p)),
-                            CsgOp::Difference => {
-                                if i == 0 {
-                                    others.clone().all(|(_, o)| !o.inside(p))
-                                } else {
-                                    children[0].inside(p)
-                                        && others
-                                            .clone()
-                                            .filter(|(o, _)| *o != 0)
-                                            .all(|(_, o)| !o.inside(p))
-                                }
-                            }
-                        };
-                        if keep {
-                            let mut h = h;
-                            if *op == CsgOp::Difference && i > 0 {
-                                h.flip = !h.flip;
-                            }
-                            mine[k] = h;
+                    // Each child's crossings are appended, then filtered in place.
+                    let start = s.surface.len();
+                    c.all_hits(ray, s);
+                    let mut k = start;
+                    for j in start..s.surface.len() {
+                        let mut h = s.surface[j];
+                        if csg_keeps(*op, i, children, ray.at(h.t)) {
+                            // Surfaces of subtracted operands face into the result.
+                            h.flip ^= *op == CsgOp::Difference && i > 0;
+                            s.surface[k] = h;
                             k += 1;
                         }
                     }
-                    mine.truncate(k);
+                    s.surface.truncate(k);
                 }
                 if self.inverse {
-                    for h in &mut mine {
-                        h.flip = !h.flip;
-                    }
+                    s.surface[mine..].iter_mut().for_each(|h| h.flip = !h.flip);
                 }
-                out.extend(mine);
             }
         }
     }
