@@ -11,7 +11,7 @@ use crate::geom::Shape;
 use crate::math::{Aabb, DVec3, Ray};
 use crate::render::camera::Camera;
 use crate::scene::desc::{
-    Interior, ObjectDesc, Pigment, PigmentKind, SceneDesc, ShapeDesc, Texture,
+    ImageMap, Interior, MeshData, ObjectDesc, Pigment, PigmentKind, SceneDesc, ShapeDesc, Texture,
 };
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
 use crate::scene::shapes::make_shape;
@@ -67,6 +67,7 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
     };
     let mut ctx = Ctx {
         meshes: HashMap::new(),
+        images: HashMap::new(),
         lights: Vec::new(),
         gamma,
     };
@@ -89,7 +90,7 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
     let bvh = Bvh::build(&boxes);
     let mut sky = desc.sky_sphere.clone().unwrap_or_default();
     for p in &mut sky {
-        convert_pigment_gamma(p, gamma);
+        ctx.pigment(p);
     }
     let scene = Scene {
         camera: Camera::new(&desc.camera, width, height),
@@ -98,7 +99,7 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
         bvh,
         bounded,
         unbounded,
-        background: to_working(desc.background, gamma),
+        background: desc.background,
         sky,
         max_trace_level: desc.global.max_trace_level,
         adc_bailout: desc.global.adc_bailout,
@@ -108,51 +109,59 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
     BuildOutput { scene, warnings }
 }
 
-/// Colours in the scene are already in working space; only image maps (decoded to linear on
-/// load) need converting when the working gamma is not 1.
-fn to_working(c: Rgbft, _g: GammaMode) -> Rgbft {
-    c
-}
-
-fn convert_pigment_gamma(p: &mut Pigment, g: GammaMode) {
-    let GammaMode::Corrected(gamma) = g else {
-        return;
-    };
-    match &mut p.kind {
-        PigmentKind::ImageMap(im) if gamma != 1.0 => {
-            let m = Arc::make_mut(im);
-            for px in &mut m.pixels {
-                px.rgb = px.rgb.powf(1.0 / gamma);
-            }
-        }
-        PigmentKind::List { items, .. } => {
-            items.iter_mut().for_each(|i| convert_pigment_gamma(i, g))
-        }
-        _ => {}
-    }
-}
-
 struct Ctx {
     /// One runtime mesh (with its BVH) per `#declare`d mesh, shared by every copy.
-    meshes: HashMap<*const crate::scene::desc::MeshData, Arc<dyn Shape>>,
+    meshes: HashMap<*const MeshData, Arc<dyn Shape>>,
+    /// Each image map converted to the working gamma once, with whether any pixel lets light
+    /// through, however many objects use it. Keyed by the description's image.
+    images: HashMap<*const ImageMap, (Arc<ImageMap>, bool)>,
     lights: Vec<Light>,
     gamma: GammaMode,
 }
 
-fn may_be_transparent(p: &Pigment) -> bool {
-    match &p.kind {
-        PigmentKind::Solid(c) => !c.is_opaque(),
-        PigmentKind::Mapped { map, .. } => map.iter().any(|(_, c)| !c.is_opaque()),
-        PigmentKind::List { items, .. } => items.iter().any(may_be_transparent),
-        PigmentKind::ImageMap(im) => im.pixels.iter().any(|c| !c.is_opaque()),
-    }
-}
-
 impl Ctx {
-    fn texture(&self, t: &Texture) -> Arc<Texture> {
+    /// Scene colours are already in working space; image maps were decoded to linear light
+    /// on load and need converting only when the working gamma is not 1.
+    fn image(&mut self, im: &Arc<ImageMap>) -> (Arc<ImageMap>, bool) {
+        let gamma = match self.gamma {
+            GammaMode::Corrected(g) if g != 1.0 => Some(g),
+            _ => None,
+        };
+        self.images
+            .entry(Arc::as_ptr(im))
+            .or_insert_with(|| {
+                let mut converted = im.clone();
+                if let Some(g) = gamma {
+                    for px in &mut Arc::make_mut(&mut converted).pixels {
+                        px.rgb = px.rgb.powf(1.0 / g);
+                    }
+                }
+                let transparent = converted.pixels.iter().any(|c| !c.is_opaque());
+                (converted, transparent)
+            })
+            .clone()
+    }
+
+    /// Converts a pigment's images to working space; returns whether it may let light through.
+    fn pigment(&mut self, p: &mut Pigment) -> bool {
+        match &mut p.kind {
+            PigmentKind::Solid(c) => !c.is_opaque(),
+            PigmentKind::Mapped { map, .. } => map.iter().any(|(_, c)| !c.is_opaque()),
+            PigmentKind::List { items, .. } => {
+                items.iter_mut().fold(false, |t, i| self.pigment(i) | t)
+            }
+            PigmentKind::ImageMap(im) => {
+                let (converted, transparent) = self.image(im);
+                *im = converted;
+                transparent
+            }
+        }
+    }
+
+    fn texture(&mut self, t: &Texture) -> (Arc<Texture>, bool) {
         let mut t = t.clone();
-        convert_pigment_gamma(&mut t.pigment, self.gamma);
-        Arc::new(t)
+        let transparent = self.pigment(&mut t.pigment);
+        (Arc::new(t), transparent)
     }
 
     fn object(
@@ -164,8 +173,7 @@ impl Ctx {
     ) -> Option<Object> {
         let tex_desc = o.texture.as_ref().or(parent_tex);
         let int = o.interior.as_ref().or(parent_int);
-        let texture = self.texture(tex_desc.unwrap_or(default));
-        let mut transparent = may_be_transparent(&texture.pigment);
+        let (texture, mut transparent) = self.texture(tex_desc.unwrap_or(default));
         let ior = int.map_or(1.0, |i| i.ior);
         let (kind, bounds, mesh) = match &o.shape {
             ShapeDesc::Light(l) => {
@@ -215,14 +223,16 @@ impl Ctx {
                 } else {
                     b.transformed(&o.transform)
                 };
-                if let ShapeDesc::Mesh(data) = shape {
-                    transparent |= data.textures.iter().any(|t| may_be_transparent(&t.pigment));
-                }
                 let mesh = match shape {
-                    ShapeDesc::Mesh(data) if !data.textures.is_empty() => Some((
-                        data.clone(),
-                        data.textures.iter().map(|t| self.texture(t)).collect(),
-                    )),
+                    ShapeDesc::Mesh(data) if !data.textures.is_empty() => {
+                        let mut texes = Vec::with_capacity(data.textures.len());
+                        for t in &data.textures {
+                            let (tex, tr) = self.texture(t);
+                            transparent |= tr;
+                            texes.push(tex);
+                        }
+                        Some((data.clone(), texes))
+                    }
                     _ => None,
                 };
                 (ObjKind::Shape(s), bounds, mesh)
