@@ -36,10 +36,14 @@ impl Format {
 
 /// 8-bit RGB bytes as POV-Ray quantises them: floor(v·255 + 0.5) of the clipped encoded value.
 pub fn to_rgb8(film: &Film) -> Vec<u8> {
-    let q = |v: f64| (film.encode(v) * 255.0 + 0.5).floor() as u8;
+    channels(film, |v| (film.encode(v) * 255.0 + 0.5).floor() as u8)
+}
+
+/// Every channel of every pixel through `f`, in file order, computed in parallel.
+fn channels<T: Send>(film: &Film, f: impl Fn(f64) -> T + Sync) -> Vec<T> {
     film.pixels
         .par_iter()
-        .flat_map_iter(|p| [q(p.x), q(p.y), q(p.z)])
+        .flat_map_iter(|p| [f(p.x), f(p.y), f(p.z)])
         .collect()
 }
 
@@ -76,12 +80,7 @@ fn write_to(film: &Film, tmp: &Path, format: Format) -> Result<(), String> {
                 .map_err(|e| e.to_string())
         }
         Format::Png16 => {
-            let data: Vec<u16> = film
-                .pixels
-                .iter()
-                .flat_map(|p| [p.x, p.y, p.z])
-                .map(|v| (film.encode(v) * 65535.0 + 0.5).floor() as u16)
-                .collect();
+            let data = channels(film, |v| (film.encode(v) * 65535.0 + 0.5).floor() as u16);
             let img = image::ImageBuffer::<image::Rgb<u16>, _>::from_raw(w, h, data)
                 .ok_or("bad film size")?;
             img.save_with_format(tmp, image::ImageFormat::Png)
@@ -89,15 +88,7 @@ fn write_to(film: &Film, tmp: &Path, format: Format) -> Result<(), String> {
         }
         Format::Exr => {
             // EXR holds linear light, unclipped.
-            let data: Vec<f32> = film
-                .pixels
-                .iter()
-                .flat_map(|p| [p.x, p.y, p.z])
-                .map(|v| match film.gamma {
-                    crate::scene::build::GammaMode::Corrected(g) => v.max(0.0).powf(g) as f32,
-                    crate::scene::build::GammaMode::None => v as f32,
-                })
-                .collect();
+            let data = channels(film, |v| film.linear(v) as f32);
             let img = image::Rgb32FImage::from_raw(w, h, data).ok_or("bad film size")?;
             image::DynamicImage::ImageRgb32F(img)
                 .save_with_format(tmp, image::ImageFormat::OpenExr)

@@ -315,20 +315,7 @@ mod tests {
     use crate::geom::sphere::Sphere;
     use crate::geom::Shape;
 
-    /// Small deterministic generator so tests need no extra crates.
-    struct Lcg(u64);
-    impl Lcg {
-        fn next(&mut self) -> f64 {
-            self.0 = self
-                .0
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (self.0 >> 11) as f64 / (1u64 << 53) as f64
-        }
-        fn vec(&mut self, s: f64) -> DVec3 {
-            DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * s
-        }
-    }
+    use crate::geom::test_rng::Lcg;
 
     fn nearest_brute(spheres: &[Sphere], ray: &Ray) -> Option<(usize, f64)> {
         let mut scratch = Vec::new();

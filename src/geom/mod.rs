@@ -67,3 +67,24 @@ pub mod poly;
 pub mod sphere;
 pub mod torus;
 pub mod triangle;
+
+/// A small deterministic generator for the geometry tests, so they need no extra crates.
+#[cfg(test)]
+pub(crate) mod test_rng {
+    use crate::math::DVec3;
+
+    pub struct Lcg(pub u64);
+
+    impl Lcg {
+        pub fn next(&mut self) -> f64 {
+            self.0 = self
+                .0
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+        pub fn vec(&mut self, s: f64) -> DVec3 {
+            DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * s
+        }
+    }
+}

@@ -46,17 +46,19 @@ pub struct Film {
 }
 
 impl Film {
-    /// The value that goes into the file for one channel, in [0, 1].
+    /// Linear light for one working-space channel (what EXR stores), unclipped above.
+    pub fn linear(&self, v: f64) -> f64 {
+        match self.gamma {
+            GammaMode::Corrected(g) if g != 1.0 => v.max(0.0).powf(g),
+            GammaMode::Corrected(_) => v.max(0.0),
+            GammaMode::None => v,
+        }
+    }
+
+    /// The value that goes into an integer file for one channel, in [0, 1].
     pub fn encode(&self, v: f64) -> f64 {
         match self.gamma {
-            GammaMode::Corrected(g) => {
-                let lin = if g == 1.0 {
-                    v.max(0.0)
-                } else {
-                    v.max(0.0).powf(g)
-                };
-                srgb_encode(lin.min(1.0))
-            }
+            GammaMode::Corrected(_) => srgb_encode(self.linear(v).min(1.0)),
             GammaMode::None => v.clamp(0.0, 1.0),
         }
     }

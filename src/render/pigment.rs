@@ -95,9 +95,9 @@ fn image(im: &ImageMap, lp: DVec3) -> Rgbft {
         }
         _ => (lp.x, lp.y),
     };
-    if im.once && im.map_type != 1 && !(0.0..1.0).contains(&u)
-        || im.once && im.map_type == 0 && !(0.0..1.0).contains(&v)
-    {
+    // `once` leaves the rest of the plane (or cylinder) clear; it means nothing on a sphere.
+    let inside = (0.0..1.0).contains(&u) && (0.0..1.0).contains(&v);
+    if im.once && im.map_type != 1 && !inside {
         return Rgbft::new(0.0, 0.0, 0.0, 0.0, 1.0);
     }
     let u = u - u.floor();

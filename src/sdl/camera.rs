@@ -2,7 +2,7 @@
 //! reads a whole scene.
 
 use crate::color::Rgbft;
-use crate::scene::desc::{CameraDesc, Pigment, ShapeDesc};
+use crate::scene::desc::{CameraDesc, Pigment};
 
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
@@ -15,11 +15,7 @@ impl Parser {
     pub(super) fn parse_scene_items(&mut self) -> PResult<()> {
         loop {
             if let Some(obj) = self.parse_object()? {
-                if let ShapeDesc::Light(_) = obj.shape {
-                    self.scene.objects.push(obj);
-                } else {
-                    self.scene.objects.push(obj);
-                }
+                self.scene.objects.push(obj);
                 continue;
             }
             let Some(t) = self.peek()? else { return Ok(()) };
@@ -92,7 +88,6 @@ impl Parser {
                 }
                 return Err(self.unexpected(&t, "in global_settings"));
             };
-            let g = &mut self.scene.global;
             match &**k {
                 "assumed_gamma" => {
                     let v = self.parse_float()?;
@@ -107,7 +102,6 @@ impl Parser {
                     self.scene.global.adc_bailout = v;
                 }
                 "ambient_light" => {
-                    let _ = g;
                     let c = self.parse_color()?;
                     self.scene.global.ambient_light = c.rgb;
                 }
@@ -119,10 +113,8 @@ impl Parser {
                     if self.peek_sym()? == Some(Sym::LBrace) {
                         self.skip_block()?;
                     } else {
-                        let v = self.parse_expr()?;
-                        if &**k == "noise_generator" {
-                            let _ = v;
-                        }
+                        // Read past: none of these changes what lancer renders today.
+                        self.parse_expr()?;
                     }
                 }
                 "irid_wavelength" => {

@@ -15,6 +15,15 @@ fn opens_block(d: &str) -> bool {
     )
 }
 
+/// Whether a `#for` loop runs again with its variable at `v`.
+fn for_continues(v: f64, end: f64, step: f64) -> bool {
+    if step > 0.0 {
+        v <= end
+    } else {
+        v >= end
+    }
+}
+
 /// Where a skip over inactive tokens stopped.
 enum SkipStop {
     Else,
@@ -180,7 +189,7 @@ impl Parser {
                     _ => return Err(self.error_at(span, format!("the #for loop variable '{var}' was changed to a non-float inside the loop"))),
                 };
                 self.set_var(var.clone(), Value::Float(v), true);
-                if (step > 0.0 && v <= end) || (step < 0.0 && v >= end) {
+                if for_continues(v, end, step) {
                     self.frames[frame].pos = body_pos;
                     self.conds.push(Cond::For {
                         frame,
@@ -220,7 +229,7 @@ impl Parser {
             return Err(self.error_at(span, "#for step is zero: the loop would never end"));
         }
         self.set_var(var.clone(), Value::Float(start), true);
-        if (step > 0.0 && start > end) || (step < 0.0 && start < end) {
+        if !for_continues(start, end, step) {
             return self.skip_inactive(span, false).map(|_| ());
         }
         let frame = self.frames.len() - 1;
@@ -445,11 +454,7 @@ impl Parser {
         }
     }
 
-    pub(super) fn unexpected(
-        &self,
-        t: &Token,
-        context: &str,
-    ) -> Box<super::super::diag::Diagnostic> {
+    pub(super) fn unexpected(&self, t: &Token, context: &str) -> Box<crate::diag::Diagnostic> {
         self.error_at(t.span, format!("unexpected {} {context}", t.tok))
     }
 }

@@ -55,14 +55,6 @@ impl Parser {
         Ok(c)
     }
 
-    fn cur_span(&self) -> Span {
-        self.frames
-            .last()
-            .and_then(|f| f.tokens.get(f.pos.saturating_sub(1)))
-            .map(|t| t.span)
-            .unwrap_or_default()
-    }
-
     fn arith(
         &mut self,
         a: Value,

@@ -526,7 +526,7 @@ impl Parser {
         self.finish_object(obj, open)
     }
 
-    fn light_source(&mut self, span: Span) -> PResult<ObjectDesc> {
+    fn light_source(&mut self, _s: Span) -> PResult<ObjectDesc> {
         let open = self.open_brace("light_source")?;
         let position = self.parse_vector()?;
         self.skip_optional_comma()?;
@@ -590,7 +590,6 @@ impl Parser {
                 _ => light.color = self.parse_color()?.rgb,
             }
         }
-        let _ = span;
         let mut obj = ObjectDesc::new(ShapeDesc::Light(light));
         obj.apply_transform(&obj_tf);
         Ok(obj)

@@ -65,6 +65,8 @@ pub(super) struct Frame {
     pub kind: FrameKind,
     /// Where the include directive or macro call stood, for error chains.
     pub call_site: Option<(Span, Rc<str>)>,
+    /// Whether entering this frame pushed a symbol table (include files and macro calls do).
+    pub scope: bool,
 }
 
 #[derive(Clone, Debug)]
@@ -89,8 +91,6 @@ pub struct Parser {
     pub(super) conds: Vec<Cond>,
     /// Symbol tables; [0] is global, one more per include file and macro call.
     pub(super) scopes: Vec<HashMap<Rc<str>, Value>>,
-    /// How many scopes each frame pushed (0 or 1), parallel to `frames`.
-    pub(super) frame_scopes: Vec<bool>,
     file_cache: HashMap<PathBuf, (u32, Rc<[Token]>)>,
     pub options: ParseOptions,
     pub(super) scene_dir: PathBuf,
@@ -109,7 +109,6 @@ impl Parser {
             frames: Vec::new(),
             conds: Vec::new(),
             scopes: vec![HashMap::new()],
-            frame_scopes: Vec::new(),
             file_cache: HashMap::new(),
             options,
             scene_dir: PathBuf::from("."),
@@ -259,8 +258,8 @@ impl Parser {
             end,
             kind,
             call_site,
+            scope,
         });
-        self.frame_scopes.push(scope);
         if scope {
             self.scopes.push(HashMap::new());
         }
@@ -282,8 +281,7 @@ impl Parser {
                 return Ok(None);
             }
             self.check_conds_closed()?;
-            self.frames.pop();
-            if self.frame_scopes.pop() == Some(true) {
+            if self.frames.pop().is_some_and(|f| f.scope) {
                 self.scopes.pop();
             }
         }
@@ -304,6 +302,15 @@ impl Parser {
             return Err(self.error_at(span, "missing #end: a #if, #while or #for opened in this file or macro is not closed before it ends"));
         }
         Ok(())
+    }
+
+    /// Span of the token just consumed, for messages about the value that ended there.
+    pub(super) fn cur_span(&self) -> Span {
+        self.frames
+            .last()
+            .and_then(|f| f.tokens.get(f.pos.saturating_sub(1)))
+            .map(|t| t.span)
+            .unwrap_or_default()
     }
 
     pub(super) fn advance(&mut self) {

@@ -107,7 +107,7 @@ impl Parser {
 
     /// `pigment { ... }` after the keyword. `base` is the pigment being modified, if any.
     pub(super) fn parse_pigment_block(&mut self, base: Option<Pigment>) -> PResult<Pigment> {
-        let open = self.begin_block("pigment")?;
+        self.begin_block("pigment")?;
         let mut p = base.unwrap_or_else(|| Pigment::solid(Rgbft::BLACK));
         if let Some(k) = self.peek_ident()? {
             if let Some(Value::Pigment(id)) = self.lookup(&k) {
@@ -211,7 +211,6 @@ impl Parser {
                 _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in pigment"))),
             }
         }
-        let _ = open;
         if freq_phase != (1.0, 0.0) {
             if let PigmentKind::Mapped {
                 pattern: Pattern::Gradient(a),
@@ -222,7 +221,7 @@ impl Parser {
                 *a *= freq_phase.0;
             }
             if freq_phase.1 != 0.0 {
-                let span = self.cur_span_pub();
+                let span = self.cur_span();
                 self.unsupported("phase", span);
             }
         }
@@ -259,14 +258,6 @@ impl Parser {
             _ => {}
         }
         Ok(())
-    }
-
-    pub(super) fn cur_span_pub(&self) -> Span {
-        self.frames
-            .last()
-            .and_then(|f| f.tokens.get(f.pos.saturating_sub(1)))
-            .map(|t| t.span)
-            .unwrap_or_default()
     }
 
     fn parse_color_map(&mut self) -> PResult<ColorMap> {
