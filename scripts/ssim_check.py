@@ -11,6 +11,7 @@ parameters that src/ssim.rs reproduces:
 Usage:
     python3 scripts/ssim_check.py A.png B.png [C.png D.png ...]
     python3 scripts/ssim_check.py --rust [--tol 0.005] A.png B.png ...
+    python3 scripts/ssim_check.py --rust --lancer target/release/lancer A.png B.png ...
     python3 scripts/ssim_check.py --synthetic
     python3 scripts/ssim_check.py --make-pairs DIR
 
@@ -21,7 +22,8 @@ The verification table in docs/ssim.md is reproduced by
 --rust also runs lancer's implementation (through the ignored unit test
 ssim::tests::pairs_from_env, in the crate this script belongs to), prints
 both numbers and their difference, and exits 1 if any pair differs by more
-than --tol. --markdown prints that table as Markdown for docs/ssim.md.
+than --tol; with --lancer BIN it runs `BIN compare A B` (the command users
+put in their regression tests) for each pair instead. --markdown prints that table as Markdown for docs/ssim.md.
 --synthetic prints the reference numbers for the synthetic pair that the
 unit tests in src/ssim.rs check against. --make-pairs renders two POV-Ray
 sample scenes into DIR (needs `povray`), derives the test variants from them
@@ -265,10 +267,25 @@ def run_rust(paths):
     return [(float(r[1]), float(r[2])) for r in rows]
 
 
+def run_compare(binary, paths):
+    """lancer's numbers for the pairs, from the `lancer compare` command a user runs."""
+    res = []
+    for a, b in zip(paths[::2], paths[1::2]):
+        out = subprocess.run([binary, "compare", a, b], capture_output=True, text=True)
+        if out.returncode != 0:
+            sys.exit(f"lancer compare {a} {b} failed ({out.returncode}):\n{out.stderr}")
+        vals = dict(l.split(" ", 1) for l in out.stdout.splitlines() if " " in l)
+        psnr = vals["psnr"].split()[0]
+        res.append((float(vals["ssim"]), float("inf") if psnr == "inf" else float(psnr)))
+    return res
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("files", nargs="*", help="pairs of PNG files: A B [C D ...]")
     ap.add_argument("--rust", action="store_true", help="also run lancer's SSIM and compare")
+    ap.add_argument("--lancer", metavar="BIN",
+                    help="with --rust: run `BIN compare A B` instead of the unit test")
     ap.add_argument("--tol", type=float, default=0.005, help="largest allowed |difference|")
     ap.add_argument("--markdown", action="store_true", help="print the --rust table as Markdown")
     ap.add_argument("--synthetic", action="store_true", help="numbers for the unit-test pair")
@@ -293,7 +310,7 @@ def main():
             print(f"{s:.10f}\t{p:.6f}\t{a}\t{b}")
         return
 
-    ours = run_rust(args.files)
+    ours = run_compare(args.lancer, args.files) if args.lancer else run_rust(args.files)
     if len(ours) != len(pairs):
         sys.exit(f"expected {len(pairs)} results from cargo, got {len(ours)}")
     worst = 0.0

@@ -27,6 +27,76 @@ pub struct Cli {
 pub enum Command {
     /// Render a scene (the default when no subcommand is given).
     Render(RenderArgs),
+    /// Compare two pictures: SSIM, worst 16x16 tile and PSNR. Exit 1 below --min-ssim, 2 when a
+    /// picture is unreadable or the sizes differ.
+    Compare(CompareArgs),
+    /// Parse scenes without rendering and print their diagnostics (exit 1 on errors).
+    Check(CheckArgs),
+    /// Render a directory of scenes with povray and lancer and report how they compare.
+    #[command(hide = true)]
+    Conformance(ConformanceArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct CompareArgs {
+    /// The first picture (PNG 8/16-bit or EXR); the heat map is drawn over it.
+    pub a: PathBuf,
+    /// The second picture.
+    pub b: PathBuf,
+    /// Exit with status 1 when the SSIM is below this.
+    #[arg(long, value_name = "S")]
+    pub min_ssim: Option<f64>,
+    /// Write a heat map of where the pictures differ (PNG).
+    #[arg(long, value_name = "PNG")]
+    pub diff: Option<PathBuf>,
+}
+
+#[derive(Args, Debug)]
+pub struct CheckArgs {
+    /// Scene or include files to parse.
+    #[arg(required = true)]
+    pub files: Vec<PathBuf>,
+    /// Directory searched for include files (repeatable).
+    #[arg(long = "library-path", value_name = "DIR")]
+    pub library_path: Vec<PathBuf>,
+    /// Print only errors, not warnings. POV-Ray style `+Ldir` options add library paths.
+    #[arg(short, long)]
+    pub quiet: bool,
+}
+
+#[derive(Args, Debug)]
+pub struct ConformanceArgs {
+    /// Directory of scenes (default: POV-Ray's sample scenes).
+    #[arg(long, default_value = crate::conformance::DEFAULT_SCENES)]
+    pub scenes: PathBuf,
+    /// Only the scenes listed in this file; its `min_good N` line makes the run fail when fewer
+    /// than N reach SSIM 0.95.
+    #[arg(long)]
+    pub subset: Option<PathBuf>,
+    /// Write the report to PREFIX.md and PREFIX.tsv.
+    #[arg(long, value_name = "PREFIX")]
+    pub report: Option<PathBuf>,
+    /// Cache of POV-Ray's renders (default: ~/.cache/lancer/conformance).
+    #[arg(long)]
+    pub cache: Option<PathBuf>,
+    /// Scenes rendered at once.
+    #[arg(long, default_value_t = 2)]
+    pub jobs: usize,
+    #[arg(long, default_value_t = 160)]
+    pub width: u32,
+    #[arg(long, default_value_t = 120)]
+    pub height: u32,
+    /// Seconds POV-Ray may take per scene.
+    #[arg(long, default_value_t = 120)]
+    pub povray_timeout: u64,
+    /// Seconds lancer may take per scene.
+    #[arg(long, default_value_t = 60)]
+    pub lancer_timeout: u64,
+    /// The POV-Ray binary.
+    #[arg(long, default_value = "povray")]
+    pub povray: PathBuf,
+    #[arg(short, long)]
+    pub quiet: bool,
 }
 
 #[derive(Args, Debug, Default)]
@@ -111,7 +181,7 @@ pub fn split_args(args: Vec<String>) -> (Vec<String>, Vec<String>) {
         i += 1;
     }
     // `lancer scene.pov ...` means `lancer render scene.pov ...`.
-    let known = ["render", "help"];
+    let known = ["render", "help", "compare", "check", "conformance"];
     if clap_args.len() == 1
         || !known.contains(&clap_args[1].as_str()) && !clap_args[1].starts_with("--")
         || clap_args
@@ -283,8 +353,16 @@ mod tests {
     fn job(args: &[&str]) -> Result<Job, String> {
         let (c, pov) = split_args(args.iter().map(|s| s.to_string()).collect());
         let cli = Cli::try_parse_from(c).map_err(|e| e.to_string())?;
-        let Command::Render(r) = cli.command;
-        make_job(r, &pov)
+        match cli.command {
+            Command::Render(r) => make_job(r, &pov),
+            other => Err(format!("not a render: {other:?}")),
+        }
+    }
+
+    #[test]
+    fn clap_definition_is_consistent() {
+        use clap::CommandFactory;
+        Cli::command().debug_assert();
     }
 
     #[test]

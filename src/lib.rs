@@ -8,6 +8,8 @@
 pub mod api;
 pub mod cli;
 pub mod color;
+pub mod compare;
+pub mod conformance;
 pub mod diag;
 pub mod geom;
 pub mod math;

@@ -10,6 +10,8 @@ use indicatif::{ProgressBar, ProgressStyle};
 use lancer::cli::{make_job, split_args, Cli, Command};
 use lancer::sdl::ParseOptions;
 
+mod commands;
+
 fn main() -> ExitCode {
     let (clap_args, pov) = split_args(std::env::args().collect());
     let cli = match Cli::try_parse_from(clap_args) {
@@ -28,6 +30,9 @@ fn main() -> ExitCode {
                 ExitCode::from(2)
             }
         },
+        Command::Compare(args) => commands::compare(args),
+        Command::Check(args) => commands::check(args, &pov),
+        Command::Conformance(args) => commands::conformance(args),
     }
 }
 

@@ -63,7 +63,7 @@ pub fn write(film: &Film, path: &Path, format: Format) -> Result<(), String> {
     })
 }
 
-fn temp_name(path: &Path) -> PathBuf {
+pub(crate) fn temp_name(path: &Path) -> PathBuf {
     let name = path
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())

@@ -41,7 +41,12 @@ fn render_row(row: &Row) -> Result<Picture, String> {
     let mut args = vec!["lancer".to_string(), scene.display().to_string()];
     args.extend(row.options.split_whitespace().map(String::from));
     let (c, pov) = split_args(args);
-    let Command::Render(r) = Cli::try_parse_from(c).map_err(|e| e.to_string())?.command;
+    let Command::Render(r) = Cli::try_parse_from(c).map_err(|e| e.to_string())?.command else {
+        return Err(format!(
+            "manifest options for {} are not a render",
+            row.scene
+        ));
+    };
     let job = make_job(r, &pov)?;
     let film = lancer::api::render_file(&job.scene, &job.library_paths, &job.settings)?;
     Ok(Picture::from_rgb8(

@@ -1,0 +1,99 @@
+//! The `compare` and `check` subcommands as a user's script meets them: what they print and
+//! which exit codes they give.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn lancer(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_lancer"))
+        .args(args)
+        .output()
+        .expect("run lancer");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn reference(name: &str) -> String {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("reference")
+        .join(name)
+        .to_string_lossy()
+        .into_owned()
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("lancer-tools-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
+}
+
+fn value(stdout: &str, key: &str) -> f64 {
+    let line = stdout
+        .lines()
+        .find(|l| l.starts_with(key))
+        .unwrap_or_else(|| panic!("no {key} in {stdout}"));
+    line.split_whitespace().nth(1).unwrap().parse().unwrap()
+}
+
+#[test]
+fn compare_identical_pictures() {
+    let a = reference("glass.png");
+    let (code, out, err) = lancer(&["compare", &a, &a, "--min-ssim", "0.999"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(value(&out, "ssim"), 1.0);
+    assert!(out.contains("psnr inf dB"), "{out}");
+}
+
+#[test]
+fn compare_below_minimum_exits_1_and_writes_a_heat_map() {
+    let diff = scratch("heat.png");
+    let (code, out, err) = lancer(&[
+        "compare",
+        &reference("glass.png"),
+        &reference("phong.png"),
+        "--min-ssim",
+        "0.95",
+        "--diff",
+        diff.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(value(&out, "ssim") < 0.95);
+    assert!(value(&out, "worst_tile") <= value(&out, "ssim"));
+    assert!(err.contains("below the minimum"), "{err}");
+    let heat = image::open(&diff).expect("heat map is a PNG");
+    assert_eq!((heat.width(), heat.height()), (320, 240));
+}
+
+#[test]
+fn compare_unreadable_or_mismatched_exits_2() {
+    let (code, _, err) = lancer(&["compare", &reference("glass.png"), "/no/such.png"]);
+    assert_eq!(code, 2, "{err}");
+    let small = scratch("small.png");
+    image::RgbImage::new(32, 24).save(&small).unwrap();
+    let (code, _, err) = lancer(&["compare", &reference("glass.png"), small.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(err.contains("differ in size"), "{err}");
+}
+
+#[test]
+fn check_parses_without_rendering() {
+    let good = scratch("good.pov");
+    std::fs::write(
+        &good,
+        "#declare R = 1;\nsphere { 0, R pigment { rgb 1 } }\n",
+    )
+    .unwrap();
+    let bad = scratch("bad.pov");
+    std::fs::write(&bad, "sphere { 0, Nope }\n").unwrap();
+    let (code, _, err) = lancer(&["check", good.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("ok"), "{err}");
+    assert!(!good.with_extension("png").exists());
+    let (code, _, err) = lancer(&["check", good.to_str().unwrap(), bad.to_str().unwrap()]);
+    assert_eq!(code, 1);
+    assert!(err.contains("bad.pov:1:"), "{err}");
+    assert!(err.contains("1 of 2 files parsed"), "{err}");
+}
