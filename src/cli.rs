@@ -76,6 +76,13 @@ pub struct ConformanceArgs {
     /// Write the report to PREFIX.md and PREFIX.tsv.
     #[arg(long, value_name = "PREFIX")]
     pub report: Option<PathBuf>,
+    /// Write a subset file for CI: the scenes at SSIM ≥ 0.95 that POV-Ray renders within
+    /// --subset-seconds, with their count as the ratchet. Refuses to lower an existing ratchet.
+    #[arg(long, value_name = "FILE")]
+    pub write_subset: Option<PathBuf>,
+    /// POV-Ray wall time up to which a good scene is cheap enough for the CI subset.
+    #[arg(long, default_value_t = 3.0)]
+    pub subset_seconds: f64,
     /// Cache of POV-Ray's renders (default: ~/.cache/lancer/conformance).
     #[arg(long)]
     pub cache: Option<PathBuf>,

@@ -145,6 +145,9 @@ fn run_conformance(a: ConformanceArgs) -> Result<ExitCode, String> {
         write_atomically(&prefix.with_extension("md"), &md)?;
         write_atomically(&prefix.with_extension("tsv"), &report::tsv(&results))?;
     }
+    if let Some(path) = &a.write_subset {
+        write_subset(path, &results, a.subset_seconds)?;
+    }
     if let Some(min) = subset.and_then(|s| s.min_good) {
         if summary.good < min {
             eprintln!(
@@ -159,6 +162,43 @@ fn run_conformance(a: ConformanceArgs) -> Result<ExitCode, String> {
         );
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// The CI subset: every good scene POV-Ray renders quickly, so CI can afford to render them
+/// again on a clean machine; their count is the ratchet.
+fn write_subset(
+    path: &std::path::Path,
+    results: &[conformance::SceneResult],
+    max_seconds: f64,
+) -> Result<(), String> {
+    let good: Vec<&str> = results
+        .iter()
+        .filter(|r| r.class == conformance::Class::Good && r.pov.seconds <= max_seconds)
+        .map(|r| r.name.as_str())
+        .collect();
+    if path.exists() {
+        let old = conformance::read_subset(path)?;
+        if let Some(min) = old.min_good.filter(|&m| m > good.len()) {
+            return Err(format!(
+                "the ratchet in {} would go down from {min} to {}; fix the regression, or edit the file by hand and say why there",
+                path.display(),
+                good.len()
+            ));
+        }
+    }
+    let mut text = format!(
+        "# Scenes CI renders with povray and lancer (written by `lancer conformance --write-subset`):
+         # the sample scenes at SSIM >= 0.95 that POV-Ray renders within {max_seconds} s.
+         # .ci/run fails when fewer than min_good of them reach SSIM 0.95.
+         min_good {}
+",
+        good.len()
+    );
+    for g in good {
+        text.push_str(g);
+        text.push('\n');
+    }
+    write_atomically(path, &text)
 }
 
 fn write_atomically(path: &std::path::Path, text: &str) -> Result<(), String> {

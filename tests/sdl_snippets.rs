@@ -241,3 +241,34 @@ fn povray_colors_inc_parses_where_installed() {
         _ => panic!(),
     }
 }
+
+#[test]
+fn unsupported_in_a_declaration_warns_only_when_used() {
+    let warnings = |src: &str| {
+        let mut p = Parser::new(ParseOptions::default());
+        p.parse_str("d.pov", src).unwrap();
+        p.warnings
+            .iter()
+            .map(|w| w.one_line(&p.sources))
+            .collect::<Vec<_>>()
+    };
+    // Declared and never used, as shapes.inc's quadrics are in most scenes: no warning.
+    let decl = "#declare Q = quadric { <1,1,1>, <0,0,0>, <0,0,0>, -1 }\n";
+    assert!(warnings(decl).is_empty(), "{:?}", warnings(decl));
+    // Testing for the name is not using it.
+    let tested = format!("{decl}#ifdef (Q) #end\n");
+    assert!(warnings(&tested).is_empty());
+    // Used directly, or through another declaration: the warning points at the keyword.
+    let used = format!("{decl}object {{ Q }}\n");
+    let w = warnings(&used);
+    assert!(
+        w.len() == 1 && w[0].starts_with("d.pov:1:14") && w[0].contains("quadric"),
+        "{w:?}"
+    );
+    let through = format!(
+        "{decl}#declare U = union {{ object {{ Q }} sphere {{ 0, 1 }} }}\nobject {{ U }}\n"
+    );
+    assert_eq!(warnings(&through).len(), 1);
+    let unused_outer = format!("{decl}#declare U = union {{ object {{ Q }} }}\n");
+    assert!(warnings(&unused_outer).is_empty());
+}

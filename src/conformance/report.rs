@@ -14,7 +14,17 @@ pub fn missing_keywords(stderr: &str) -> Vec<String> {
         let Some(at) = line.find(" is not supported") else {
             continue;
         };
-        let Some(word) = line[..at].split_whitespace().last() else {
+        let head = line[..at].trim_end();
+        // lancer quotes what it does not support, keyword first ('normal (surface
+        // perturbation)'); errors name it bare (#switch, the function vstr).
+        let quoted = head
+            .strip_suffix('\'')
+            .and_then(|h| h.rfind(" '").map(|i| &h[i + 2..]));
+        let word = match quoted {
+            Some(q) => q.split_whitespace().next(),
+            None => head.split_whitespace().last(),
+        };
+        let Some(word) = word else {
             continue;
         };
         let kw = word.trim_matches(|c| c == '\'' || c == '"' || c == '`');
@@ -324,12 +334,13 @@ mod tests {
     #[test]
     fn keywords_from_each_message_shape() {
         let err = "warning: 'media' is not supported by lancer yet and is ignored\n\
+                   warning: 'normal (surface perturbation)' is not supported by lancer yet\n\
                    error: #switch is not supported by lancer yet\n\
                    error: the function vturbulence is not supported by lancer yet\n\
                    warning: 'media' is not supported by lancer yet and is ignored\n";
         assert_eq!(
             missing_keywords(err),
-            vec!["media", "#switch", "vturbulence"]
+            vec!["media", "normal", "#switch", "vturbulence"]
         );
     }
 

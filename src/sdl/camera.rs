@@ -57,7 +57,7 @@ impl Parser {
                 Tok::Sym(Sym::RBrace) => break,
                 Tok::Ident(k) if &**k == "pigment" => layers.push(self.parse_pigment_block(None)?),
                 Tok::Ident(k) if &**k == "emission" => {
-                    self.unsupported("sky_sphere emission", t.span);
+                    self.unsupported("emission (in sky_sphere)", t.span);
                     self.parse_color()?;
                 }
                 Tok::Ident(k) => {
@@ -174,12 +174,12 @@ impl Parser {
                 "angle" => {
                     cam.angle = Some(self.parse_float()?);
                     if self.starts_number()? {
-                        self.unsupported("vertical camera angle", t.span);
+                        self.unsupported("angle (vertical camera angle)", t.span);
                         self.parse_float()?;
                     }
                 }
                 "aperture" | "blur_samples" | "focal_point" | "confidence" | "variance" => {
-                    self.unsupported(&format!("focal blur ({k})"), t.span);
+                    self.unsupported(&format!("{k} (focal blur)"), t.span);
                     self.parse_expr()?;
                     if &**k == "blur_samples" && self.eat_sym(Sym::Comma)? {
                         self.parse_expr()?;

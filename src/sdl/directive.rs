@@ -63,7 +63,8 @@ impl Parser {
                 self.expect_sym(Sym::LParen, &format!("after #{d}"))?;
                 let name = self.raw_ident(&format!("in #{d}"))?;
                 self.expect_sym(Sym::RParen, &format!("to close #{d}"))?;
-                let defined = self.lookup(&name).is_some();
+                // Not `lookup`: testing a name is not using it, so held-back warnings stay held.
+                let defined = self.scopes.iter().any(|s| s.contains_key(&*name));
                 self.enter_if(defined == (d == "ifdef"), span)
             }
             "else" | "elseif" => match self.conds.pop() {
@@ -265,7 +266,12 @@ impl Parser {
             "after #declare"
         })?;
         self.expect_sym(Sym::Eq, &format!("after '{name}' in the declaration"))?;
+        // Warnings from identifiers used before this declaration belong where they were used.
+        self.flush_released();
+        let first_warning = self.warnings.len();
         let v = self.parse_rvalue()?;
+        self.flush_released();
+        self.defer_warnings(&name, first_warning);
         // The semicolon is optional for objects and required by POV-Ray for numbers; accept it
         // either way.
         if self.raw_peek_sym()? == Some(Sym::Semi) {

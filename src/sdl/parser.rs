@@ -6,6 +6,7 @@
 //! may stand in the middle of one. Loops rewind a frame's position; nothing is re-read from
 //! disk. Grammar areas live in sibling files as further `impl Parser` blocks.
 
+use std::cell::RefCell;
 use std::collections::{HashMap, HashSet};
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
@@ -97,6 +98,12 @@ pub struct Parser {
     pub scene: SceneDesc,
     pub warnings: Vec<Diagnostic>,
     warned: HashSet<(Rc<str>, Span)>,
+    /// Warnings raised while reading a declaration, held back until the identifier is used: an
+    /// include file declaring something lancer cannot render yet (shapes.inc's quadrics) must
+    /// not warn in every scene that includes it. Interior mutability because `lookup` is `&self`.
+    deferred: RefCell<HashMap<Rc<str>, Vec<Diagnostic>>>,
+    /// Deferred warnings whose identifier has been used, waiting to join `warnings`.
+    released: RefCell<Vec<Diagnostic>>,
     /// Inside `< >` the `>` closes the vector instead of comparing.
     pub(super) in_vector: bool,
     last_span: Span,
@@ -115,6 +122,8 @@ impl Parser {
             scene: super::default_scene(),
             warnings: Vec::new(),
             warned: HashSet::new(),
+            deferred: RefCell::default(),
+            released: RefCell::default(),
             in_vector: false,
             last_span: Span::default(),
         }
@@ -128,7 +137,9 @@ impl Parser {
             .unwrap_or_else(|| PathBuf::from("."));
         let (_, tokens) = self.load(path, None)?;
         self.push_frame(tokens, FrameKind::File, None, false)?;
-        self.parse_scene_items()
+        let r = self.parse_scene_items();
+        self.flush_released();
+        r
     }
 
     /// Parses scene text given directly (tests, snippets).
@@ -136,7 +147,28 @@ impl Parser {
         let id = self.sources.add(name.to_string(), text.to_string());
         let tokens = self.lex_file(id)?;
         self.push_frame(tokens, FrameKind::File, None, false)?;
-        self.parse_scene_items()
+        let r = self.parse_scene_items();
+        self.flush_released();
+        r
+    }
+
+    /// Moves the warnings of declarations used so far into `warnings`.
+    pub(super) fn flush_released(&mut self) {
+        let released = std::mem::take(self.released.get_mut());
+        self.warnings.extend(released);
+    }
+
+    /// Holds back the warnings from `from` on (those raised while reading the declaration of
+    /// `name`) until `name` is looked up.
+    pub(super) fn defer_warnings(&mut self, name: &Rc<str>, from: usize) {
+        if self.warnings.len() > from {
+            let held: Vec<Diagnostic> = self.warnings.drain(from..).collect();
+            self.deferred
+                .get_mut()
+                .entry(name.clone())
+                .or_default()
+                .extend(held);
+        }
     }
 
     fn lex_file(&mut self, id: u32) -> PResult<Rc<[Token]>> {
@@ -425,6 +457,11 @@ impl Parser {
     }
 
     pub fn lookup(&self, name: &str) -> Option<&Value> {
+        if !self.deferred.borrow().is_empty() {
+            if let Some(held) = self.deferred.borrow_mut().remove(name) {
+                self.released.borrow_mut().extend(held);
+            }
+        }
         self.scopes.iter().rev().find_map(|s| s.get(name))
     }
 

@@ -359,7 +359,7 @@ impl Parser {
                         }
                     }
                     "gamma" => {
-                        self.unsupported("image_map gamma", t.span);
+                        self.unsupported("gamma (in image_map)", t.span);
                         self.parse_float()?;
                     }
                     "use_color" | "use_colour" | "use_index" | "use_alpha" => {}
@@ -371,7 +371,7 @@ impl Parser {
             }
         }
         if map.map_type > 2 {
-            self.unsupported(&format!("image_map map_type {}", map.map_type), span);
+            self.unsupported(&format!("map_type {} (in image_map)", map.map_type), span);
         }
         let Some(path) = self.find_file(&name) else {
             return Err(self.error_at(name_span, format!("cannot find image file \"{name}\" (searched the scene directory and the library path)")));
@@ -420,7 +420,7 @@ impl Parser {
                     self.eat_keyword("albedo")?;
                     f.diffuse = self.parse_float()?;
                     if self.eat_sym(Sym::Comma)? {
-                        self.unsupported("diffuse backside value", t.span);
+                        self.unsupported("diffuse (backside value)", t.span);
                         self.parse_float()?;
                     }
                 }
@@ -513,7 +513,7 @@ impl Parser {
                     "fresnel" => r.fresnel = self.optional_flag()?,
                     "falloff" => r.falloff = self.parse_float()?,
                     "exponent" => {
-                        self.unsupported("reflection exponent", t.span);
+                        self.unsupported("exponent (in reflection)", t.span);
                         self.parse_float()?;
                     }
                     "metallic" => {
@@ -573,7 +573,7 @@ impl Parser {
                 "checker" | "hexagon" | "brick" | "material_map" | "tiles" | "texture_map"
                 | "image_pattern" | "gradient" | "bozo" | "granite" | "marble" | "wood"
                 | "agate" | "spotted" | "leopard" | "onion" | "radial" => {
-                    self.unsupported(&format!("patterned texture ({k})"), t.span);
+                    self.unsupported(&format!("{k} (patterned texture)"), t.span);
                     self.skip_texture_pattern()?;
                 }
                 _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in texture"))),
