@@ -9,6 +9,7 @@ pub mod api;
 pub mod cli;
 pub mod color;
 pub mod diag;
+pub mod func;
 pub mod geom;
 pub mod math;
 pub mod output;
