@@ -260,3 +260,168 @@ const A3000: f64 = 0.98282673256071906;
 const B1000: f64 = 0.79697976675745563;
 const C3000: f64 = 0.46624163525790013;
 const D1000: f64 = 0.24173867498564969;
+
+#[test]
+fn object_queries_match_povray() {
+    let p = parser(
+        "#declare N = <0,0,0>; #declare S = sphere { <0,0,0>, 1 scale 2 translate x }
+         #declare Hit = trace(S, <-5,0.5,0>, x, N); #declare Nh = N;
+         #declare Miss = trace(S, <-5,5,0>, x, N); #declare Nm = N;
+         #declare B = box { -1, 1 rotate 45*y }
+         #declare Mn = min_extent(B); #declare Mx = max_extent(B);
+         #declare In = inside(S, <2,0,0>) + 2 * inside(S, <4,0,0>);
+         #declare U = union { sphere {0,1} sphere {3*x, 1} }
+         #declare InU = inside(U, <3,0,0>); #declare Umin = min_extent(U);
+         #declare P = plane { y, 1 } #declare Pmin = min_extent(P); #declare InP = inside(P, 3*x);",
+    );
+    let near = |a: [f64; 3], b: [f64; 3]| (0..3).all(|i| (a[i] - b[i]).abs() < 1e-9);
+    assert!(near(vector(&p, "Hit"), [-0.936491673104, 0.5, 0.0]));
+    assert!(near(vector(&p, "Nh"), [-0.968245836552, 0.25, 0.0]));
+    assert!(near(vector(&p, "Miss"), [0.0; 3]));
+    assert!(near(vector(&p, "Nm"), [0.0; 3]));
+    // POV-Ray keeps bounds in single precision.
+    assert!(near(
+        vector(&p, "Mn"),
+        [-1.414213538170, -1.0, -1.414213538170]
+    ));
+    assert!(near(
+        vector(&p, "Mx"),
+        [1.414213538170, 1.0, 1.414213538170]
+    ));
+    assert_eq!(float(&p, "In"), 1.0);
+    assert_eq!(float(&p, "InU"), 1.0);
+    assert!(near(vector(&p, "Umin"), [-1.0; 3]));
+    assert!(near(vector(&p, "Pmin"), [-1e10; 3]));
+    assert_eq!(float(&p, "InP"), 1.0);
+    let m = err("#declare S = sphere {0,1} #declare R = trace(S, 0, x, Undeclared);");
+    assert!(m.contains("declared vector identifier"), "{m}");
+    let m = err("#declare R = inside(3, <0,0,0>);");
+    assert!(m.contains("object identifier"), "{m}");
+}
+
+#[test]
+fn user_functions_match_povray() {
+    let p = parser(
+        "#declare K = 3;
+         #declare Fa = function { x + y * z + K }
+         #declare G = function(a, b) { Fa(a, b, 2) * 2 - b }
+         #declare H = function(u, v) { x + y * v }
+         #declare Fact = function(C) { prod(i, 1, C, i) }
+         #declare Sq = function(n) { sum(i, 1, n, sum(j, 1, i, j)) }
+         #declare Cmp = function { (x = y) + 2*(x < y) + 4*(x > y | z) }
+         #declare Sel = function(a) { select(a, -1, 0, 1) + select(a, 10, 20) }
+         #declare M = function { min(x, y, z) + max(x, y) + mod(x, 2) + int(-y) + abs(z) }
+         #declare A = <Fa(1,2,3), G(1,2), H(2,3)>;
+         #declare B = <Fact(5), Sq(4), Cmp(1, 1+1e-12, 0)>;
+         #declare C = <Cmp(1, 2, 1), Sel(0), Sel(-0.5)>;
+         #declare D = M(3.5, -1.5, -2);
+         #declare T = function { transform { rotate 90*x scale 2 } }
+         #declare E = T(1, 2, 3);
+         #declare Passed = Fa;
+         #declare Fb = Passed(0, 0, 0);",
+    );
+    assert_eq!(vector(&p, "A"), [10.0, 14.0, 11.0]);
+    assert_eq!(vector(&p, "B"), [120.0, 20.0, 2.0]);
+    assert_eq!(vector(&p, "C"), [6.0, 20.0, 9.0]);
+    assert_eq!(float(&p, "D"), 6.0);
+    let e = vector(&p, "E");
+    assert!((e[0] - 2.0).abs() < 1e-12 && (e[1] + 6.0).abs() < 1e-12 && (e[2] - 4.0).abs() < 1e-12);
+    assert_eq!(float(&p, "Fb"), 3.0);
+}
+
+#[test]
+fn function_errors_come_when_called() {
+    // Declaring what lancer cannot evaluate is fine; calling it is an error at the call.
+    let p = parser(
+        "#declare N = function { internal(76) }
+         #declare W = function { 2 * N(x, y, z) - 1 }
+         #declare Pg = function { pigment { checker } }",
+    );
+    assert!(matches!(p.lookup("W"), Some(Value::Function(_))));
+    let m = err("#declare N = function { internal(76) } #declare R = N(1,2,3);");
+    assert!(
+        m.contains("f_noise3d") && m.contains("not supported"),
+        "{m}"
+    );
+    let m = err("#declare N = function { internal(76) } #declare W = function { N(x,y,z) } #declare R = W(1,2,3);");
+    assert!(m.contains("f_noise3d"), "{m}");
+    let m = err("#declare Pg = function { pigment { checker } } #declare R = Pg(1,2,3);");
+    assert!(m.contains("pigment functions"), "{m}");
+    let m = err("#declare F = function(a) { a } #declare R = F(1, 2);");
+    assert!(m.contains("takes 1 argument"), "{m}");
+    let m = err("#declare F = function(a, a) { a }");
+    assert!(m.contains("twice"), "{m}");
+    let m = err("#declare F = function { x + Nope }");
+    assert!(m.contains("Nope"), "{m}");
+    let m = err("#declare F = function { rand(x) }");
+    assert!(m.contains("rand"), "{m}");
+}
+
+#[test]
+fn function_body_runs_directives_and_macros_once() {
+    let p = parser(
+        "#macro Two() 2 #end
+         #declare F = function(a) { Two() * a + (#if (1) 1 #else 100 #end) }
+         #declare R = F(5);",
+    );
+    assert_eq!(float(&p, "R"), 11.0);
+}
+
+/// The standard include files, when POV-Ray's include directory is installed.
+fn include_dir() -> Option<&'static str> {
+    let d = "/usr/share/povray-3.7/include";
+    if std::path::Path::new(d).join("functions.inc").is_file() {
+        Some(d)
+    } else {
+        eprintln!("skipped: {d} is not installed (apt-get install povray-includes)");
+        None
+    }
+}
+
+#[test]
+fn standard_math_includes_parse_and_evaluate() {
+    if include_dir().is_none() {
+        return;
+    }
+    // Values printed by POV-Ray 3.7 for the same text.
+    let p = parser(
+        "#version 3.7;
+         #include \"functions.inc\"
+         #include \"math.inc\"
+         #include \"transforms.inc\"
+         #include \"rand.inc\"
+         #declare A = <f_sphere(1,2,3,1), sind(30), even(4) + 2*odd(3)>;
+         #declare B = <adj_range2(0.5, 0, 1, 10, 20), clamp(5.5, 0, 2), Interpolate(0.25, 0, 1, 10, 20, 0)>;
+         #declare C = Interpolate(0.25, 0, 1, 10, 20, 2);
+         #declare S = seed(7);
+         #declare V = VRand(S);
+         #declare Rr = RRand(2, 4, S);
+         #declare Vt = vtransform(<1,2,3>, transform { rotate 90*y translate 1 });
+         #declare Gr = vGradient(function { x*x + y }, <1,2,3>);
+         #declare Sp = sphere { 0, 1 }
+         #declare Vi = VRand_In_Obj(Sp, S);
+         #declare Tr = transform { Axis_Rotate_Trans(y, 30) }",
+    );
+    let near = |a: [f64; 3], b: [f64; 3], tol: f64| (0..3).all(|i| (a[i] - b[i]).abs() < tol);
+    assert!(near(vector(&p, "A"), [2.741657386773941, 0.5, 3.0], 1e-12));
+    assert!(near(
+        vector(&p, "B"),
+        [15.0, 1.5, 11.464466094067262],
+        1e-12
+    ));
+    assert_eq!(float(&p, "C"), 10.625);
+    assert!(near(
+        vector(&p, "V"),
+        [0.953932880646, 0.610466280396, 0.166852135716],
+        1e-11
+    ));
+    assert!((float(&p, "Rr") - 2.069734164995545).abs() < 1e-12);
+    assert!(near(vector(&p, "Vt"), [4.0, 3.0, 0.0], 1e-12));
+    // Central differences with step 0.001 in POV-Ray's float arithmetic.
+    assert!(near(vector(&p, "Gr"), [2.0, 1.0, 0.0], 1e-9));
+    assert!(near(
+        vector(&p, "Vi"),
+        [0.478693154053, -0.234048447859, -0.035941102318],
+        1e-11
+    ));
+}

@@ -203,3 +203,83 @@ fn first_unsupported(e: &Expr) -> Option<String> {
             .or_else(|| first_unsupported(body)),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn c(x: f64) -> Box<Expr> {
+        Box::new(Expr::Const(x))
+    }
+
+    fn slot(i: usize) -> Box<Expr> {
+        Box::new(Expr::Slot(i))
+    }
+
+    #[test]
+    fn nested_loops_and_calls() {
+        // sum(i, 1, x, prod(j, 1, i, y)) = y + y^2 + ... + y^x
+        let body = Expr::Loop {
+            product: false,
+            var: 2,
+            from: c(1.0),
+            to: slot(0),
+            body: Box::new(Expr::Loop {
+                product: true,
+                var: 3,
+                from: c(1.0),
+                to: slot(2),
+                body: slot(1),
+            }),
+        };
+        let f = Arc::new(Function::from_expr(vec!["x".into(), "y".into()], &body, 4));
+        assert_eq!(f.eval(&[3.0, 2.0]), 14.0);
+        assert_eq!(f.eval(&[0.0, 2.0]), 0.0);
+        let g = Function::from_expr(
+            vec!["a".into()],
+            &Expr::Bin(
+                BinOp::Add,
+                Box::new(Expr::Call(f.clone(), vec![Expr::Slot(0), Expr::Const(3.0)])),
+                Box::new(Expr::Call(f, vec![Expr::Const(1.0), Expr::Slot(0)])),
+            ),
+            1,
+        );
+        assert_eq!(g.eval(&[2.0]), (3.0 + 9.0) + 2.0);
+    }
+
+    #[test]
+    fn constant_parts_are_folded_and_large_bodies_still_run() {
+        let e = Expr::Bin(
+            BinOp::Mul,
+            c(2.0),
+            Box::new(Expr::Math1(f64::sqrt, c(16.0))),
+        );
+        let f = Function::from_expr(vec!["x".into()], &e, 1);
+        match &f.kind {
+            FnKind::Code(code) => assert_eq!(code.ops.len(), 1),
+            _ => unreachable!(),
+        }
+        assert_eq!(f.eval(&[0.0]), 8.0);
+        // A right-leaning chain deeper than the inline stack: 1 + (x + (x + ...)).
+        let mut e = Expr::Slot(0);
+        for _ in 0..300 {
+            e = Expr::Bin(BinOp::Add, slot(0), Box::new(e));
+        }
+        let f = Function::from_expr(vec!["x".into()], &e, 1);
+        assert_eq!(f.eval(&[1.0]), 301.0);
+    }
+
+    #[test]
+    fn select_and_comparisons_are_exact() {
+        let e = Expr::Select(vec![
+            Expr::Bin(BinOp::Sub, slot(0), slot(1)),
+            Expr::Const(-1.0),
+            Expr::Const(0.0),
+            Expr::Const(1.0),
+        ]);
+        let f = Function::from_expr(vec!["a".into(), "b".into()], &e, 2);
+        assert_eq!(f.eval(&[1.0, 1.0]), 0.0);
+        assert_eq!(f.eval(&[1.0, 1.0 + 1e-12]), -1.0);
+        assert_eq!(f.eval(&[2.0, 1.0]), 1.0);
+    }
+}
