@@ -161,7 +161,7 @@ impl Parser {
             return None;
         }
         Some(if name == "trace" {
-            self.trace_call(span)
+            self.trace_call()
         } else {
             self.call_args(name)
                 .and_then(|args| self.math_call(name, span, &args))
@@ -413,7 +413,7 @@ impl Parser {
     }
 
     /// `trace(Object, Start, Direction [, NormalIdentifier])`.
-    fn trace_call(&mut self, span: Span) -> PResult<Value> {
+    fn trace_call(&mut self) -> PResult<Value> {
         self.expect_sym(Sym::LParen, "after trace")?;
         let mut args = Vec::new();
         for i in 0..3 {
@@ -460,7 +460,6 @@ impl Parser {
         if let Some(n) = normal_var {
             self.set_var(n, Value::vec3(normal), false);
         }
-        let _ = span;
         Ok(Value::vec3(point))
     }
 
