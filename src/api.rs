@@ -29,7 +29,7 @@ pub fn render_file(
         library_paths: library_paths.to_vec(),
         image_width: settings.width,
         image_height: settings.height,
-        clock: 0.0,
+        ..ParseOptions::default()
     };
     let parsed = parse_file(path, opts);
     if let Some(e) = parsed.error {

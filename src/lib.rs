@@ -11,6 +11,7 @@ pub mod color;
 pub mod compare;
 pub mod conformance;
 pub mod diag;
+pub mod func;
 pub mod geom;
 pub mod math;
 pub mod output;

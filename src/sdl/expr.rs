@@ -319,10 +319,19 @@ impl Parser {
     }
 
     fn parse_ident_value(&mut self, k: Rc<str>, span: Span) -> PResult<Value> {
-        if let Some(v) = self.lookup(&k) {
-            return Ok(v.clone());
+        if let Some(v) = self.lookup(&k).cloned() {
+            if let Value::Function(func) = &v {
+                // A function identifier is called when followed by `(`; alone it is a value
+                // (passed to a macro, say).
+                if self.raw_peek_sym()? == Some(Sym::LParen) {
+                    return self.call_function(&k, func, span);
+                }
+            }
+            return Ok(v);
         }
-        let f = |x: f64| Ok(Value::Float(x));
+        if let Some(x) = self.builtin_float_ident(&k) {
+            return Ok(Value::Float(x));
+        }
         match &*k {
             "x" => Ok(Value::vec3(DVec3::X)),
             "y" => Ok(Value::vec3(DVec3::Y)),
@@ -330,18 +339,7 @@ impl Parser {
             "t" => Ok(Value::Vector([0.0, 0.0, 0.0, 1.0, 0.0], 4)),
             "u" => Ok(Value::Vector([1.0, 0.0, 0.0, 0.0, 0.0], 2)),
             "v" => Ok(Value::Vector([0.0, 1.0, 0.0, 0.0, 0.0], 2)),
-            "pi" => f(std::f64::consts::PI),
-            "tau" => f(std::f64::consts::TAU),
-            "true" | "on" | "yes" => f(1.0),
-            "false" | "off" | "no" => f(0.0),
-            "image_width" => f(self.options.image_width as f64),
-            "image_height" => f(self.options.image_height as f64),
-            "clock" => f(self.options.clock),
-            "clock_on" => f(0.0),
-            "clock_delta" => f(1.0),
-            "frame_number" | "initial_frame" | "final_frame" => f(0.0),
-            "initial_clock" | "final_clock" => f(0.0),
-            "version" => f(self.scene.version.unwrap_or(3.7)),
+            "function" => self.parse_function_literal(span),
             "color" | "colour" => self.parse_color_body(),
             "rgb" | "rgbf" | "rgbt" | "rgbft" | "srgb" | "srgbf" | "srgbt" | "srgbft" => {
                 let vspan = self.cur_span();
@@ -495,31 +493,15 @@ impl Parser {
     }
 
     fn builtin_call(&mut self, name: &str, span: Span) -> PResult<Value> {
+        if let Some(r) = self.math_builtin(name, span) {
+            return r;
+        }
         let arity: usize = match name {
-            "sin" | "cos" | "tan" | "asin" | "acos" | "sqrt" | "exp" | "log" | "ln" | "abs"
-            | "floor" | "ceil" | "int" | "radians" | "degrees" | "vlength" | "vnormalize"
-            | "sinh" | "cosh" | "tanh" | "asinh" | "acosh" | "atanh" | "strlen" | "val"
-            | "str_len" | "defined" => 1,
-            "atan2" | "pow" | "mod" | "div" | "vdot" | "vcross" | "vrotate" | "min" | "max"
-            | "atan" | "select" | "vaxis_rotate" | "str" | "concat" | "vstr" | "substr" | "chr"
-            | "asc" => 0,
+            "strlen" | "val" | "str_len" | "defined" => 1,
+            "str" | "concat" | "vstr" | "substr" | "chr" | "asc" => 0,
             _ => return Err(self.error_at(span, format!("undeclared identifier '{name}'"))),
         };
-        self.expect_sym(Sym::LParen, &format!("after the function name {name}"))?;
-        let mut args: Vec<(Value, Span)> = Vec::new();
-        if !self.eat_sym(Sym::RParen)? {
-            loop {
-                let s = self.next_span()?;
-                let saved = std::mem::replace(&mut self.in_vector, false);
-                let v = self.parse_expr();
-                self.in_vector = saved;
-                args.push((v?, s));
-                if self.eat_sym(Sym::RParen)? {
-                    break;
-                }
-                self.expect_sym(Sym::Comma, &format!("between the arguments of {name}"))?;
-            }
-        }
+        let args = self.call_args(name)?;
         let want = |n: usize| -> PResult<()> {
             if args.len() == n {
                 Ok(())
@@ -534,56 +516,8 @@ impl Parser {
             want(1)?;
         }
         let fl = |p: &Parser, i: usize| p.float_of(args[i].0.clone(), args[i].1);
-        let ve = |p: &Parser, i: usize| -> PResult<DVec3> {
-            match &args[i].0 {
-                Value::Float(f) => Ok(DVec3::splat(*f)),
-                Value::Vector(c, _) => Ok(DVec3::new(c[0], c[1], c[2])),
-                Value::Color(c) => Ok(c.rgb),
-                o => Err(p.error_at(
-                    args[i].1,
-                    format!("{name} needs a vector, found a {}", o.type_name()),
-                )),
-            }
-        };
         let r = |x: f64| Ok(Value::Float(x));
         match name {
-            "sin" => r(fl(self, 0)?.sin()),
-            "cos" => r(fl(self, 0)?.cos()),
-            "tan" => r(fl(self, 0)?.tan()),
-            "asin" => r(fl(self, 0)?.clamp(-1.0, 1.0).asin()),
-            "acos" => r(fl(self, 0)?.clamp(-1.0, 1.0).acos()),
-            "sinh" => r(fl(self, 0)?.sinh()),
-            "cosh" => r(fl(self, 0)?.cosh()),
-            "tanh" => r(fl(self, 0)?.tanh()),
-            "asinh" => r(fl(self, 0)?.asinh()),
-            "acosh" => r(fl(self, 0)?.acosh()),
-            "atanh" => r(fl(self, 0)?.atanh()),
-            "sqrt" => r(fl(self, 0)?.sqrt()),
-            "exp" => r(fl(self, 0)?.exp()),
-            "log" => r(fl(self, 0)?.log10()),
-            "ln" => r(fl(self, 0)?.ln()),
-            "abs" => match &args[0].0 {
-                Value::Float(f) => r(f.abs()),
-                Value::Vector(c, n) => Ok(Value::Vector(c.map(f64::abs), *n)),
-                o => Err(self.error_at(
-                    args[0].1,
-                    format!("abs needs a number, found a {}", o.type_name()),
-                )),
-            },
-            "floor" => r(fl(self, 0)?.floor()),
-            "ceil" => r(fl(self, 0)?.ceil()),
-            "int" => r(fl(self, 0)?.trunc()),
-            "radians" => r(fl(self, 0)?.to_radians()),
-            "degrees" => r(fl(self, 0)?.to_degrees()),
-            "vlength" => r(ve(self, 0)?.length()),
-            "vnormalize" => {
-                let v = ve(self, 0)?;
-                Ok(Value::vec3(if v == DVec3::ZERO {
-                    v
-                } else {
-                    v.normalize()
-                }))
-            }
             "strlen" | "str_len" => match &args[0].0 {
                 Value::Str(s) => r(s.chars().count() as f64),
                 o => Err(self.error_at(
@@ -591,83 +525,6 @@ impl Parser {
                     format!("strlen needs a string, found a {}", o.type_name()),
                 )),
             },
-            "atan" if args.len() == 1 => r(fl(self, 0)?.atan()),
-            "atan" | "atan2" => {
-                want(2)?;
-                r(fl(self, 0)?.atan2(fl(self, 1)?))
-            }
-            "pow" => {
-                want(2)?;
-                r(fl(self, 0)?.powf(fl(self, 1)?))
-            }
-            "mod" => {
-                want(2)?;
-                let (a, b) = (fl(self, 0)?, fl(self, 1)?);
-                r(if b == 0.0 { 0.0 } else { a % b })
-            }
-            "div" => {
-                want(2)?;
-                let (a, b) = (fl(self, 0)?, fl(self, 1)?);
-                r(if b == 0.0 { 0.0 } else { (a / b).trunc() })
-            }
-            "vdot" => {
-                want(2)?;
-                r(ve(self, 0)?.dot(ve(self, 1)?))
-            }
-            "vcross" => {
-                want(2)?;
-                Ok(Value::vec3(ve(self, 0)?.cross(ve(self, 1)?)))
-            }
-            "vrotate" => {
-                want(2)?;
-                Ok(Value::vec3(
-                    crate::math::Transform::rotate(ve(self, 1)?).point(ve(self, 0)?),
-                ))
-            }
-            "vaxis_rotate" => {
-                want(3)?;
-                let (p, axis, ang) = (ve(self, 0)?, ve(self, 1)?, fl(self, 2)?);
-                if axis == DVec3::ZERO {
-                    return Ok(Value::vec3(p));
-                }
-                // POV-Ray's angle sense is the left-handed one, which is glam's right-handed
-                // rotation with the same sign (see math::Transform::rotate).
-                let m = glam::DMat3::from_axis_angle(axis.normalize(), ang.to_radians());
-                Ok(Value::vec3(m * p))
-            }
-            "min" | "max" => {
-                if args.is_empty() {
-                    return Err(self.error_at(span, format!("{name} needs at least one argument")));
-                }
-                let mut acc = fl(self, 0)?;
-                for i in 1..args.len() {
-                    let x = fl(self, i)?;
-                    acc = if name == "min" {
-                        acc.min(x)
-                    } else {
-                        acc.max(x)
-                    };
-                }
-                r(acc)
-            }
-            "select" => {
-                if args.len() != 3 && args.len() != 4 {
-                    return Err(self.error_at(span, "select takes 3 or 4 arguments"));
-                }
-                let a = fl(self, 0)?;
-                let pick = if a < 0.0 {
-                    1
-                } else if args.len() == 3 || a > 0.0 {
-                    if args.len() == 3 {
-                        2
-                    } else {
-                        3
-                    }
-                } else {
-                    2
-                };
-                Ok(args[pick].0.clone())
-            }
             "str" => {
                 want(3)?;
                 let (v, w, p) = (fl(self, 0)?, fl(self, 1)?, fl(self, 2)?);

@@ -1,9 +1,11 @@
 //! The POV-Ray scene description language: lexer, token stream and the one parser that
 //! executes directives as it reads.
 
+pub mod builtins_math;
 pub mod camera;
 pub mod directive;
 pub mod expr;
+pub mod function_parse;
 pub mod lexer;
 pub mod object;
 pub mod parser;

@@ -27,7 +27,17 @@ pub struct ParseOptions {
     pub library_paths: Vec<PathBuf>,
     pub image_width: u32,
     pub image_height: u32,
+    /// Animation values the scene sees as `clock`, `clock_delta`, `clock_on`, `frame_number`,
+    /// `initial_frame`, `final_frame`, `initial_clock` and `final_clock`. The defaults are
+    /// POV-Ray's for a still picture: all zero, clock off.
     pub clock: f64,
+    pub clock_delta: f64,
+    pub clock_on: bool,
+    pub frame_number: i64,
+    pub initial_frame: i64,
+    pub final_frame: i64,
+    pub initial_clock: f64,
+    pub final_clock: f64,
 }
 
 impl Default for ParseOptions {
@@ -37,6 +47,13 @@ impl Default for ParseOptions {
             image_width: 320,
             image_height: 240,
             clock: 0.0,
+            clock_delta: 0.0,
+            clock_on: false,
+            frame_number: 0,
+            initial_frame: 0,
+            final_frame: 0,
+            initial_clock: 0.0,
+            final_clock: 0.0,
         }
     }
 }
@@ -107,6 +124,8 @@ pub struct Parser {
     /// Inside `< >` the `>` closes the vector instead of comparing.
     pub(super) in_vector: bool,
     last_span: Span,
+    /// States of the random streams `seed()` made, indexed by what it returned.
+    pub(super) rand_streams: Vec<u32>,
 }
 
 impl Parser {
@@ -126,6 +145,7 @@ impl Parser {
             released: RefCell::default(),
             in_vector: false,
             last_span: Span::default(),
+            rand_streams: Vec::new(),
         }
     }
 

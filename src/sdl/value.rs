@@ -1,6 +1,7 @@
 //! What an identifier can hold, and the arithmetic of POV-Ray's float/vector/colour values.
 
 use std::rc::Rc;
+use std::sync::Arc;
 
 use crate::color::Rgbft;
 use crate::math::{DVec3, Transform};
@@ -27,6 +28,8 @@ pub enum Value {
     Light(Box<LightDesc>),
     Transform(Box<Transform>),
     Macro(Rc<MacroDef>),
+    /// A `function { ... }`, shared with whatever evaluates it (Arc: render threads may).
+    Function(Arc<crate::func::Function>),
 }
 
 impl Value {
@@ -46,6 +49,7 @@ impl Value {
             Value::Light(_) => "light_source",
             Value::Transform(_) => "transform",
             Value::Macro(_) => "macro",
+            Value::Function(_) => "function",
         }
     }
 

@@ -1,0 +1,285 @@
+//! User-defined functions of the scene language (`function { ... }`), compiled once when they
+//! are declared and evaluated many times: while parsing (`F(1,2,3)`), and later by isosurfaces
+//! and function patterns, possibly from many render threads at once.
+//!
+//! A float function body becomes a [`Expr`] tree (built by the SDL parser, which owns the token
+//! stream), then a small stack bytecode ([`vm::Code`]) that evaluates without allocating.
+//! `internal(N)` bodies point at the built-in functions of `functions.inc` ([`internal`]).
+//! Special functions (`transform`, `pigment`, `pattern`, `spline`) are kept as what they are.
+//!
+//! A function that can be declared but not evaluated by lancer (an unknown internal number, a
+//! pigment function, or a float function calling one of those) carries the reason in
+//! [`Function::unsupported`]; callers check it once, before evaluating, so declaring such a
+//! function (as `functions.inc` does for all of them) is never an error.
+
+pub mod compile;
+pub mod internal;
+pub mod vm;
+
+use std::sync::Arc;
+
+use crate::math::{DVec3, Transform};
+
+/// Most parameters a function may declare (POV-Ray's limit).
+pub const MAX_PARAMS: usize = 56;
+
+/// A declared function. Shared between identifiers and callers with `Arc`, because the render
+/// threads of a later isosurface evaluate the same compiled code.
+#[derive(Debug)]
+pub struct Function {
+    /// Parameter names in call order (`x`, `y`, `z` when none were written).
+    pub params: Vec<String>,
+    pub kind: FnKind,
+    /// Why the function cannot be evaluated by lancer, if it cannot: it or a function it calls
+    /// is not implemented.
+    pub unsupported: Option<String>,
+}
+
+#[derive(Debug)]
+pub enum FnKind {
+    /// A float expression compiled to bytecode.
+    Code(vm::Code),
+    /// One of POV-Ray's built-in functions, bound by `functions.inc` as `internal(N)`.
+    Internal(internal::Internal),
+    /// `function { transform { ... } }`: a vector function of a point.
+    Transform(Transform),
+    /// `function { pigment {...} }`, `pattern {...}` or `spline {...}`: parsed, not evaluated.
+    Special(&'static str),
+}
+
+/// What a function returns when called from the scene language.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum FnValue {
+    Float(f64),
+    Vector(DVec3),
+}
+
+/// A float expression in the function language, as the parser read it.
+#[derive(Clone, Debug)]
+pub enum Expr {
+    Const(f64),
+    /// A parameter or a `sum`/`prod` iteration variable, by slot.
+    Slot(usize),
+    Neg(Box<Expr>),
+    Not(Box<Expr>),
+    Bin(BinOp, Box<Expr>, Box<Expr>),
+    /// A one-argument maths built-in (`sin`, `sqrt`, ...).
+    Math1(fn(f64) -> f64, Box<Expr>),
+    /// A two-argument maths built-in (`pow`, `atan2`, `mod`, ...).
+    Math2(fn(f64, f64) -> f64, Box<Expr>, Box<Expr>),
+    Min(Vec<Expr>),
+    Max(Vec<Expr>),
+    /// `select(a, b, c)` or `select(a, b, c, d)`.
+    Select(Vec<Expr>),
+    Call(Arc<Function>, Vec<Expr>),
+    /// `sum(i, from, to, body)` (`product` false) or `prod(...)` (`product` true).
+    Loop {
+        product: bool,
+        var: usize,
+        from: Box<Expr>,
+        to: Box<Expr>,
+        body: Box<Expr>,
+    },
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BinOp {
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Lt,
+    Le,
+    Eq,
+    Ne,
+    Ge,
+    Gt,
+    And,
+    Or,
+}
+
+impl Function {
+    /// A float function from a parsed body; `slots` counts parameters plus iteration variables.
+    pub fn from_expr(params: Vec<String>, body: &Expr, slots: usize) -> Function {
+        let unsupported = first_unsupported(body);
+        Function {
+            params,
+            kind: FnKind::Code(compile::compile(body, slots)),
+            unsupported,
+        }
+    }
+
+    pub fn internal(id: u32) -> Function {
+        let f = internal::Internal::from_id(id);
+        let unsupported = f.unsupported_reason();
+        Function {
+            params: (0..f.arity().unwrap_or(3))
+                .map(|i| match i {
+                    0 => "x".to_string(),
+                    1 => "y".to_string(),
+                    2 => "z".to_string(),
+                    n => format!("P{}", n - 3),
+                })
+                .collect(),
+            kind: FnKind::Internal(f),
+            unsupported,
+        }
+    }
+
+    pub fn transform(t: Transform) -> Function {
+        Function {
+            params: vec!["x".into(), "y".into(), "z".into()],
+            kind: FnKind::Transform(t),
+            unsupported: None,
+        }
+    }
+
+    pub fn special(what: &'static str) -> Function {
+        Function {
+            params: vec!["x".into(), "y".into(), "z".into()],
+            kind: FnKind::Special(what),
+            unsupported: Some(format!(
+                "{what} functions (function {{ {what} {{ ... }} }}) are not supported by lancer yet"
+            )),
+        }
+    }
+
+    /// How many arguments a call must pass; `None` for internal functions whose parameter
+    /// list lancer does not know (they are unsupported anyway).
+    pub fn arity(&self) -> Option<usize> {
+        match &self.kind {
+            FnKind::Internal(f) => f.arity(),
+            _ => Some(self.params.len()),
+        }
+    }
+
+    /// Whether the function returns a float (as opposed to a vector or colour).
+    pub fn is_float(&self) -> bool {
+        matches!(self.kind, FnKind::Code(_) | FnKind::Internal(_))
+    }
+
+    /// Evaluates a float function. `args` must have [`Function::arity`] values and the function
+    /// must be supported (check [`Function::unsupported`] first); otherwise the result is
+    /// meaningless (NaN), never a panic.
+    pub fn eval(&self, args: &[f64]) -> f64 {
+        match &self.kind {
+            FnKind::Code(c) => c.eval(args),
+            FnKind::Internal(f) => f.eval(args),
+            FnKind::Transform(_) | FnKind::Special(_) => f64::NAN,
+        }
+    }
+
+    /// Evaluates any supported function with the result type it has.
+    pub fn call(&self, args: &[f64]) -> FnValue {
+        match &self.kind {
+            FnKind::Transform(t) => {
+                let p = DVec3::new(
+                    args.first().copied().unwrap_or(0.0),
+                    args.get(1).copied().unwrap_or(0.0),
+                    args.get(2).copied().unwrap_or(0.0),
+                );
+                FnValue::Vector(t.point(p))
+            }
+            _ => FnValue::Float(self.eval(args)),
+        }
+    }
+}
+
+/// The first reason a function called from `e` cannot be evaluated.
+fn first_unsupported(e: &Expr) -> Option<String> {
+    match e {
+        Expr::Const(_) | Expr::Slot(_) => None,
+        Expr::Neg(a) | Expr::Not(a) | Expr::Math1(_, a) => first_unsupported(a),
+        Expr::Bin(_, a, b) | Expr::Math2(_, a, b) => {
+            first_unsupported(a).or_else(|| first_unsupported(b))
+        }
+        Expr::Min(v) | Expr::Max(v) | Expr::Select(v) => v.iter().find_map(first_unsupported),
+        Expr::Call(f, v) => f
+            .unsupported
+            .clone()
+            .or_else(|| v.iter().find_map(first_unsupported)),
+        Expr::Loop { from, to, body, .. } => first_unsupported(from)
+            .or_else(|| first_unsupported(to))
+            .or_else(|| first_unsupported(body)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn c(x: f64) -> Box<Expr> {
+        Box::new(Expr::Const(x))
+    }
+
+    fn slot(i: usize) -> Box<Expr> {
+        Box::new(Expr::Slot(i))
+    }
+
+    #[test]
+    fn nested_loops_and_calls() {
+        // sum(i, 1, x, prod(j, 1, i, y)) = y + y^2 + ... + y^x
+        let body = Expr::Loop {
+            product: false,
+            var: 2,
+            from: c(1.0),
+            to: slot(0),
+            body: Box::new(Expr::Loop {
+                product: true,
+                var: 3,
+                from: c(1.0),
+                to: slot(2),
+                body: slot(1),
+            }),
+        };
+        let f = Arc::new(Function::from_expr(vec!["x".into(), "y".into()], &body, 4));
+        assert_eq!(f.eval(&[3.0, 2.0]), 14.0);
+        assert_eq!(f.eval(&[0.0, 2.0]), 0.0);
+        let g = Function::from_expr(
+            vec!["a".into()],
+            &Expr::Bin(
+                BinOp::Add,
+                Box::new(Expr::Call(f.clone(), vec![Expr::Slot(0), Expr::Const(3.0)])),
+                Box::new(Expr::Call(f, vec![Expr::Const(1.0), Expr::Slot(0)])),
+            ),
+            1,
+        );
+        assert_eq!(g.eval(&[2.0]), (3.0 + 9.0) + 2.0);
+    }
+
+    #[test]
+    fn constant_parts_are_folded_and_large_bodies_still_run() {
+        let e = Expr::Bin(
+            BinOp::Mul,
+            c(2.0),
+            Box::new(Expr::Math1(f64::sqrt, c(16.0))),
+        );
+        let f = Function::from_expr(vec!["x".into()], &e, 1);
+        match &f.kind {
+            FnKind::Code(code) => assert_eq!(code.ops.len(), 1),
+            _ => unreachable!(),
+        }
+        assert_eq!(f.eval(&[0.0]), 8.0);
+        // A right-leaning chain deeper than the inline stack: 1 + (x + (x + ...)).
+        let mut e = Expr::Slot(0);
+        for _ in 0..300 {
+            e = Expr::Bin(BinOp::Add, slot(0), Box::new(e));
+        }
+        let f = Function::from_expr(vec!["x".into()], &e, 1);
+        assert_eq!(f.eval(&[1.0]), 301.0);
+    }
+
+    #[test]
+    fn select_and_comparisons_are_exact() {
+        let e = Expr::Select(vec![
+            Expr::Bin(BinOp::Sub, slot(0), slot(1)),
+            Expr::Const(-1.0),
+            Expr::Const(0.0),
+            Expr::Const(1.0),
+        ]);
+        let f = Function::from_expr(vec!["a".into(), "b".into()], &e, 2);
+        assert_eq!(f.eval(&[1.0, 1.0]), 0.0);
+        assert_eq!(f.eval(&[1.0, 1.0 + 1e-12]), -1.0);
+        assert_eq!(f.eval(&[2.0, 1.0]), 1.0);
+    }
+}

@@ -1,0 +1,187 @@
+//! The stack machine that runs compiled function bodies.
+//!
+//! One flat instruction list per function; operands live on a value stack and parameters and
+//! `sum`/`prod` variables in numbered slots. Both sit in one fixed array on the Rust stack, so
+//! an evaluation allocates nothing unless a body is unusually large.
+
+use std::sync::Arc;
+
+use super::Function;
+
+/// Values kept on the Rust stack per evaluation (slots plus operand stack); bigger bodies fall
+/// back to a heap buffer.
+const INLINE: usize = 128;
+
+#[derive(Clone, Debug)]
+pub enum Op {
+    Const(f64),
+    Load(u32),
+    /// Pops the top value into a slot.
+    Store(u32),
+    Neg,
+    Not,
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Lt,
+    Le,
+    Eq,
+    Ne,
+    Ge,
+    Gt,
+    And,
+    Or,
+    F1(fn(f64) -> f64),
+    F2(fn(f64, f64) -> f64),
+    /// Minimum or maximum of the top `n` values.
+    Min(u32),
+    Max(u32),
+    Select3,
+    Select4,
+    /// Calls `callees[i]` with the top `n` values as arguments.
+    Call(u32, u32),
+    /// Pushes a copy of the value `k` places below the top.
+    Pick(u32),
+    /// Drops the value just below the top.
+    Nip,
+    Jump(u32),
+    /// Pops a value and jumps when it is zero.
+    JumpIfZero(u32),
+}
+
+#[derive(Debug)]
+pub struct Code {
+    pub(super) ops: Vec<Op>,
+    pub(super) callees: Vec<Arc<Function>>,
+    /// Parameter and iteration-variable slots.
+    pub(super) slots: usize,
+    /// Deepest operand stack the code reaches.
+    pub(super) max_stack: usize,
+}
+
+fn truth(b: bool) -> f64 {
+    if b {
+        1.0
+    } else {
+        0.0
+    }
+}
+
+impl Code {
+    pub fn eval(&self, args: &[f64]) -> f64 {
+        let need = self.slots + self.max_stack;
+        if need <= INLINE {
+            let mut buf = [0.0; INLINE];
+            self.run(args, &mut buf[..need])
+        } else {
+            let mut buf = vec![0.0; need];
+            self.run(args, &mut buf)
+        }
+    }
+
+    fn run(&self, args: &[f64], buf: &mut [f64]) -> f64 {
+        let (slots, stack) = buf.split_at_mut(self.slots);
+        let n = args.len().min(slots.len());
+        slots[..n].copy_from_slice(&args[..n]);
+        let mut sp = 0usize;
+        let mut pc = 0usize;
+        macro_rules! bin {
+            ($f:expr) => {{
+                sp -= 1;
+                let b = stack[sp];
+                let a = stack[sp - 1];
+                stack[sp - 1] = $f(a, b);
+            }};
+        }
+        while let Some(op) = self.ops.get(pc) {
+            pc += 1;
+            match op {
+                Op::Const(c) => {
+                    stack[sp] = *c;
+                    sp += 1;
+                }
+                Op::Load(s) => {
+                    stack[sp] = slots[*s as usize];
+                    sp += 1;
+                }
+                Op::Store(s) => {
+                    sp -= 1;
+                    slots[*s as usize] = stack[sp];
+                }
+                Op::Neg => stack[sp - 1] = -stack[sp - 1],
+                Op::Not => stack[sp - 1] = truth(stack[sp - 1] == 0.0),
+                Op::Add => bin!(|a, b| a + b),
+                Op::Sub => bin!(|a, b| a - b),
+                Op::Mul => bin!(|a, b| a * b),
+                Op::Div => bin!(|a, b| a / b),
+                Op::Lt => bin!(|a, b| truth(a < b)),
+                Op::Le => bin!(|a, b| truth(a <= b)),
+                Op::Eq => bin!(|a, b| truth(a == b)),
+                Op::Ne => bin!(|a, b| truth(a != b)),
+                Op::Ge => bin!(|a, b| truth(a >= b)),
+                Op::Gt => bin!(|a, b| truth(a > b)),
+                Op::And => bin!(|a: f64, b: f64| truth(a != 0.0 && b != 0.0)),
+                Op::Or => bin!(|a: f64, b: f64| truth(a != 0.0 || b != 0.0)),
+                Op::F1(f) => stack[sp - 1] = f(stack[sp - 1]),
+                Op::F2(f) => bin!(f),
+                Op::Min(n) | Op::Max(n) => {
+                    let n = *n as usize;
+                    let vals = &stack[sp - n..sp];
+                    let r = if matches!(op, Op::Min(_)) {
+                        vals.iter().copied().fold(f64::INFINITY, f64::min)
+                    } else {
+                        vals.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+                    };
+                    sp -= n;
+                    stack[sp] = r;
+                    sp += 1;
+                }
+                Op::Select3 => {
+                    sp -= 3;
+                    let (a, b, c) = (stack[sp], stack[sp + 1], stack[sp + 2]);
+                    stack[sp] = if a < 0.0 { b } else { c };
+                    sp += 1;
+                }
+                Op::Select4 => {
+                    sp -= 4;
+                    let (a, b, c, d) = (stack[sp], stack[sp + 1], stack[sp + 2], stack[sp + 3]);
+                    stack[sp] = if a < 0.0 {
+                        b
+                    } else if a == 0.0 {
+                        c
+                    } else {
+                        d
+                    };
+                    sp += 1;
+                }
+                Op::Call(i, n) => {
+                    let n = *n as usize;
+                    sp -= n;
+                    stack[sp] = self.callees[*i as usize].eval(&stack[sp..sp + n]);
+                    sp += 1;
+                }
+                Op::Pick(k) => {
+                    stack[sp] = stack[sp - 1 - *k as usize];
+                    sp += 1;
+                }
+                Op::Nip => {
+                    stack[sp - 2] = stack[sp - 1];
+                    sp -= 1;
+                }
+                Op::Jump(t) => pc = *t as usize,
+                Op::JumpIfZero(t) => {
+                    sp -= 1;
+                    if stack[sp] == 0.0 {
+                        pc = *t as usize;
+                    }
+                }
+            }
+        }
+        if sp == 0 {
+            f64::NAN
+        } else {
+            stack[sp - 1]
+        }
+    }
+}

@@ -1,0 +1,448 @@
+//! `function { ... }` literals: parameter lists, the function language's expression grammar,
+//! and the special bodies (`internal(N)`, `transform`, `pigment`, `pattern`, `spline`).
+//!
+//! The function language is not the scene language: it has floats only, no vectors or
+//! strings, `>` always compares, and its built-ins are the maths functions plus `select`,
+//! `sum` and `prod`. Identifiers are parameters, `sum`/`prod` variables, declared floats
+//! (their value is taken now, as POV-Ray does) or declared functions (called at run time).
+//! Directives and macro calls inside a body run once, while it is read, like everywhere else.
+
+use std::rc::Rc;
+use std::sync::Arc;
+
+use crate::func::{BinOp, Expr, Function, MAX_PARAMS};
+
+use super::lexer::{Sym, Tok};
+use super::parser::{PResult, Parser};
+use super::source::Span;
+use super::value::Value;
+
+/// Names in scope while a body is read.
+struct FnScope {
+    params: Vec<String>,
+    /// `sum`/`prod` iteration variables, innermost last, with their slots.
+    locals: Vec<(String, usize)>,
+    max_slot: usize,
+}
+
+impl FnScope {
+    fn slot(&self, name: &str) -> Option<usize> {
+        if let Some((_, s)) = self.locals.iter().rev().find(|(n, _)| n == name) {
+            return Some(*s);
+        }
+        // x and u, y and v name the same parameter.
+        let alias = match name {
+            "x" => "u",
+            "u" => "x",
+            "y" => "v",
+            "v" => "y",
+            _ => name,
+        };
+        self.params.iter().position(|p| p == name || p == alias)
+    }
+}
+
+fn math1(name: &str) -> Option<fn(f64) -> f64> {
+    Some(match name {
+        "abs" => f64::abs,
+        "sin" => f64::sin,
+        "cos" => f64::cos,
+        "tan" => f64::tan,
+        "asin" => f64::asin,
+        "acos" => f64::acos,
+        "atan" => f64::atan,
+        "sinh" => f64::sinh,
+        "cosh" => f64::cosh,
+        "tanh" => f64::tanh,
+        "asinh" => f64::asinh,
+        "acosh" => f64::acosh,
+        "atanh" => f64::atanh,
+        "sqrt" => f64::sqrt,
+        "exp" => f64::exp,
+        "ln" => f64::ln,
+        "log" => f64::log10,
+        "floor" => f64::floor,
+        "ceil" => f64::ceil,
+        "int" => f64::trunc,
+        "radians" => f64::to_radians,
+        "degrees" => f64::to_degrees,
+        _ => return None,
+    })
+}
+
+fn math2(name: &str) -> Option<fn(f64, f64) -> f64> {
+    Some(match name {
+        "atan2" => f64::atan2,
+        "pow" => f64::powf,
+        "mod" => |a: f64, b: f64| a % b,
+        _ => return None,
+    })
+}
+
+impl Parser {
+    /// After the keyword `function`: an optional parameter list and the body in braces.
+    pub(super) fn parse_function_literal(&mut self, span: Span) -> PResult<Value> {
+        let params = if self.eat_sym(Sym::LParen)? {
+            self.function_params(span)?
+        } else {
+            vec!["x".to_string(), "y".to_string(), "z".to_string()]
+        };
+        self.expect_sym(Sym::LBrace, "to open the function body")?;
+        let special = match self.peek_ident()?.as_deref() {
+            Some(k @ ("internal" | "transform" | "pigment" | "pattern" | "spline")) => {
+                Some(k.to_string())
+            }
+            _ => None,
+        };
+        let f = match special.as_deref() {
+            Some("internal") => {
+                self.advance();
+                self.expect_sym(Sym::LParen, "after internal")?;
+                let n = self.parse_float()?;
+                self.expect_sym(Sym::RParen, "to close internal( )")?;
+                Function::internal(n.max(0.0) as u32)
+            }
+            Some("transform") => {
+                self.advance();
+                Function::transform(self.parse_transform_block()?)
+            }
+            Some(k) => {
+                self.advance();
+                self.skip_block()?;
+                Function::special(match k {
+                    "pigment" => "pigment",
+                    "pattern" => "pattern",
+                    _ => "spline",
+                })
+            }
+            None => {
+                let mut scope = FnScope {
+                    max_slot: params.len(),
+                    params,
+                    locals: Vec::new(),
+                };
+                let body = self.fn_or(&mut scope)?;
+                Function::from_expr(scope.params, &body, scope.max_slot)
+            }
+        };
+        self.expect_sym(Sym::RBrace, "to close the function body")?;
+        Ok(Value::Function(Arc::new(f)))
+    }
+
+    fn function_params(&mut self, span: Span) -> PResult<Vec<String>> {
+        let mut params: Vec<String> = Vec::new();
+        loop {
+            let t = self.raw_peek()?.ok_or_else(|| self.eof_error())?;
+            self.advance();
+            match &t.tok {
+                Tok::Ident(p) => {
+                    let scope = FnScope {
+                        params: params.clone(),
+                        locals: Vec::new(),
+                        max_slot: 0,
+                    };
+                    if scope.slot(p).is_some() {
+                        return Err(self.error_at(
+                            t.span,
+                            format!("the function parameter '{p}' is given twice (x and u, y and v are the same parameter)"),
+                        ));
+                    }
+                    params.push(p.to_string());
+                }
+                _ => {
+                    return Err(self.error_at(
+                        t.span,
+                        format!(
+                            "expected a parameter name in the function's parameter list, found {}",
+                            t.tok
+                        ),
+                    ))
+                }
+            }
+            let t = self.next_tok()?;
+            match t.tok {
+                Tok::Sym(Sym::Comma) => {}
+                Tok::Sym(Sym::RParen) => break,
+                _ => {
+                    return Err(self.error_at(
+                        t.span,
+                        format!(
+                            "expected ',' or ')' in the function's parameter list, found {}",
+                            t.tok
+                        ),
+                    ))
+                }
+            }
+        }
+        if params.len() > MAX_PARAMS {
+            return Err(self.error_at(
+                span,
+                format!("a function takes at most {MAX_PARAMS} parameters"),
+            ));
+        }
+        Ok(params)
+    }
+
+    fn fn_or(&mut self, s: &mut FnScope) -> PResult<Expr> {
+        let mut a = self.fn_and(s)?;
+        while self.raw_peek_sym()? == Some(Sym::Or) {
+            self.advance();
+            let b = self.fn_and(s)?;
+            a = Expr::Bin(BinOp::Or, Box::new(a), Box::new(b));
+        }
+        Ok(a)
+    }
+
+    fn fn_and(&mut self, s: &mut FnScope) -> PResult<Expr> {
+        let mut a = self.fn_rel(s)?;
+        while self.raw_peek_sym()? == Some(Sym::And) {
+            self.advance();
+            let b = self.fn_rel(s)?;
+            a = Expr::Bin(BinOp::And, Box::new(a), Box::new(b));
+        }
+        Ok(a)
+    }
+
+    fn fn_rel(&mut self, s: &mut FnScope) -> PResult<Expr> {
+        let mut a = self.fn_add(s)?;
+        loop {
+            let op = match self.raw_peek_sym()? {
+                Some(Sym::Lt) => BinOp::Lt,
+                Some(Sym::Le) => BinOp::Le,
+                Some(Sym::Eq) => BinOp::Eq,
+                Some(Sym::Ne) => BinOp::Ne,
+                Some(Sym::Ge) => BinOp::Ge,
+                Some(Sym::Gt) => BinOp::Gt,
+                _ => return Ok(a),
+            };
+            self.advance();
+            let b = self.fn_add(s)?;
+            a = Expr::Bin(op, Box::new(a), Box::new(b));
+        }
+    }
+
+    fn fn_add(&mut self, s: &mut FnScope) -> PResult<Expr> {
+        let mut a = self.fn_mul(s)?;
+        loop {
+            let op = match self.raw_peek_sym()? {
+                Some(Sym::Plus) => BinOp::Add,
+                Some(Sym::Minus) => BinOp::Sub,
+                _ => return Ok(a),
+            };
+            self.advance();
+            let b = self.fn_mul(s)?;
+            a = Expr::Bin(op, Box::new(a), Box::new(b));
+        }
+    }
+
+    fn fn_mul(&mut self, s: &mut FnScope) -> PResult<Expr> {
+        let mut a = self.fn_unary(s)?;
+        loop {
+            let op = match self.raw_peek_sym()? {
+                Some(Sym::Star) => BinOp::Mul,
+                Some(Sym::Slash) => BinOp::Div,
+                _ => return Ok(a),
+            };
+            self.advance();
+            let b = self.fn_unary(s)?;
+            a = Expr::Bin(op, Box::new(a), Box::new(b));
+        }
+    }
+
+    fn fn_unary(&mut self, s: &mut FnScope) -> PResult<Expr> {
+        match self.peek_sym()? {
+            Some(Sym::Minus) => {
+                self.advance();
+                Ok(Expr::Neg(Box::new(self.fn_unary(s)?)))
+            }
+            Some(Sym::Plus) => {
+                self.advance();
+                self.fn_unary(s)
+            }
+            Some(Sym::Bang) => {
+                self.advance();
+                Ok(Expr::Not(Box::new(self.fn_unary(s)?)))
+            }
+            _ => self.fn_primary(s),
+        }
+    }
+
+    fn fn_primary(&mut self, s: &mut FnScope) -> PResult<Expr> {
+        let t = self.next_tok()?;
+        match &t.tok {
+            Tok::Num(n) => Ok(Expr::Const(*n)),
+            Tok::Sym(Sym::LParen) => {
+                let e = self.fn_or(s)?;
+                self.expect_sym(Sym::RParen, "to close the parenthesis")?;
+                Ok(e)
+            }
+            Tok::Ident(k) => self.fn_ident(s, k.clone(), t.span),
+            _ => Err(self.error_at(
+                t.span,
+                format!("expected a value in the function body, found {}", t.tok),
+            )),
+        }
+    }
+
+    /// Comma-separated function-language arguments up to `)`, after the `(`.
+    fn fn_args(&mut self, s: &mut FnScope, name: &str) -> PResult<Vec<Expr>> {
+        self.expect_sym(Sym::LParen, &format!("after {name}"))?;
+        let mut v = Vec::new();
+        if self.eat_sym(Sym::RParen)? {
+            return Ok(v);
+        }
+        loop {
+            v.push(self.fn_or(s)?);
+            if self.eat_sym(Sym::RParen)? {
+                return Ok(v);
+            }
+            self.expect_sym(Sym::Comma, &format!("between the arguments of {name}"))?;
+        }
+    }
+
+    fn fn_ident(&mut self, s: &mut FnScope, k: Rc<str>, span: Span) -> PResult<Expr> {
+        if let Some(slot) = s.slot(&k) {
+            return Ok(Expr::Slot(slot));
+        }
+        match self.lookup(&k).cloned() {
+            Some(Value::Float(f)) => return Ok(Expr::Const(f)),
+            Some(v @ (Value::Vector(..) | Value::Color(_))) => {
+                // A declared vector may give one component: `V.x`.
+                if self.raw_peek_sym()? == Some(Sym::Dot) {
+                    self.advance();
+                    let c = self.next_tok()?;
+                    let idx = match &c.tok {
+                        Tok::Ident(n) => match &**n {
+                            "x" | "u" | "red" => Some(0),
+                            "y" | "v" | "green" => Some(1),
+                            "z" | "blue" => Some(2),
+                            "t" | "filter" => Some(3),
+                            "transmit" => Some(4),
+                            _ => None,
+                        },
+                        _ => None,
+                    };
+                    if let (Some(i), Some((comp, _))) = (idx, v.components()) {
+                        return Ok(Expr::Const(comp[i]));
+                    }
+                    return Err(self.error_at(c.span, format!("unknown component {}", c.tok)));
+                }
+                return Err(self.error_at(
+                    span,
+                    format!("'{k}' is a {} and a function body works with floats only; use one component such as {k}.x", v.type_name()),
+                ));
+            }
+            Some(Value::Function(f)) => {
+                let args = self.fn_args(s, &k)?;
+                if !f.is_float() {
+                    return Err(self.error_at(
+                        span,
+                        format!("'{k}' returns a vector or colour and cannot be called inside a float function"),
+                    ));
+                }
+                if let Some(n) = f.arity() {
+                    if args.len() != n {
+                        return Err(self.error_at(
+                            span,
+                            format!(
+                                "the function {k} takes {n} argument(s), {} given",
+                                args.len()
+                            ),
+                        ));
+                    }
+                }
+                return Ok(Expr::Call(f, args));
+            }
+            Some(other) => {
+                return Err(self.error_at(
+                    span,
+                    format!(
+                        "'{k}' is a {} and cannot be used in a function body",
+                        other.type_name()
+                    ),
+                ))
+            }
+            None => {}
+        }
+        if let Some(c) = self.builtin_float_ident(&k) {
+            return Ok(Expr::Const(c));
+        }
+        if let Some(f) = math1(&k) {
+            let mut a = self.fn_args(s, &k)?;
+            if k.as_ref() == "atan" && a.len() == 2 {
+                let b = a.pop().expect("two arguments");
+                let x = a.pop().expect("two arguments");
+                return Ok(Expr::Math2(f64::atan2, Box::new(x), Box::new(b)));
+            }
+            if a.len() != 1 {
+                return Err(self.error_at(span, format!("{k} takes 1 argument, {} given", a.len())));
+            }
+            return Ok(Expr::Math1(f, Box::new(a.pop().expect("one argument"))));
+        }
+        if let Some(f) = math2(&k) {
+            let mut a = self.fn_args(s, &k)?;
+            if a.len() != 2 {
+                return Err(
+                    self.error_at(span, format!("{k} takes 2 arguments, {} given", a.len()))
+                );
+            }
+            let b = a.pop().expect("two arguments");
+            return Ok(Expr::Math2(
+                f,
+                Box::new(a.pop().expect("two arguments")),
+                Box::new(b),
+            ));
+        }
+        match &*k {
+            "min" | "max" => {
+                let a = self.fn_args(s, &k)?;
+                if a.is_empty() {
+                    return Err(self.error_at(span, format!("{k} needs at least one argument")));
+                }
+                Ok(if &*k == "min" { Expr::Min(a) } else { Expr::Max(a) })
+            }
+            "select" => {
+                let a = self.fn_args(s, &k)?;
+                if a.len() != 3 && a.len() != 4 {
+                    return Err(self.error_at(span, "select takes 3 or 4 arguments"));
+                }
+                Ok(Expr::Select(a))
+            }
+            "sum" | "prod" => self.fn_loop(s, &k, span),
+            _ => Err(self.error_at(
+                span,
+                format!("'{k}' in a function body is not a parameter, a declared float or function, or a built-in the function language has"),
+            )),
+        }
+    }
+
+    /// `sum(i, from, to, expr)` and `prod(...)`.
+    fn fn_loop(&mut self, s: &mut FnScope, k: &str, span: Span) -> PResult<Expr> {
+        self.expect_sym(Sym::LParen, &format!("after {k}"))?;
+        let var = self.raw_ident(&format!("as the {k} variable"))?;
+        self.expect_sym(Sym::Comma, &format!("after the {k} variable"))?;
+        let slot = s.params.len() + s.locals.len();
+        if slot >= MAX_PARAMS + 56 {
+            return Err(self.error_at(span, format!("{k} is nested too deeply")));
+        }
+        s.locals.push((var.to_string(), slot));
+        s.max_slot = s.max_slot.max(slot + 1);
+        let r = (|| {
+            let from = self.fn_or(s)?;
+            self.expect_sym(Sym::Comma, &format!("after the {k} start value"))?;
+            let to = self.fn_or(s)?;
+            self.expect_sym(Sym::Comma, &format!("after the {k} end value"))?;
+            let body = self.fn_or(s)?;
+            self.expect_sym(Sym::RParen, &format!("to close {k}"))?;
+            Ok(Expr::Loop {
+                product: k == "prod",
+                var: slot,
+                from: Box::new(from),
+                to: Box::new(to),
+                body: Box::new(body),
+            })
+        })();
+        s.locals.pop();
+        r
+    }
+}
