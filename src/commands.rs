@@ -187,11 +187,10 @@ fn write_subset(
         }
     }
     let mut text = format!(
-        "# Scenes CI renders with povray and lancer (written by `lancer conformance --write-subset`):
-         # the sample scenes at SSIM >= 0.95 that POV-Ray renders within {max_seconds} s.
-         # .ci/run fails when fewer than min_good of them reach SSIM 0.95.
-         min_good {}
-",
+        "# Scenes CI renders with povray and lancer (written by `lancer conformance --write-subset`):\n\
+# the sample scenes at SSIM >= 0.95 that POV-Ray renders within {max_seconds} s.\n\
+# .ci/run fails when fewer than min_good of them reach SSIM 0.95.\n\
+min_good {}\n",
         good.len()
     );
     for g in good {
