@@ -52,10 +52,24 @@ fn builtin_functions() {
 }
 
 #[test]
-fn comparison_inside_vector_needs_no_parentheses_for_less_than() {
-    let s = parse("#declare B = <1 < 2, (3 > 2), 0>; sphere { B, 1 }");
+fn comparisons_only_inside_parentheses_and_commas_optional() {
+    // POV-Ray 3.7 reads `<`, `&`, `? :` only inside ( ); elsewhere `<` starts a vector, so
+    // `<1 < 2, 0>` is an error there too ("Float expected but vector or color").
+    let s = parse("#declare B = <(1 < 2), (3 > 2), 0>; sphere { B, 1 }");
     match s.objects[0].shape {
         ShapeDesc::Sphere { center, .. } => assert_eq!(center, glam::DVec3::new(1.0, 1.0, 0.0)),
+        _ => panic!(),
+    }
+    parse_err("#declare B = <1 < 2, 0>;");
+    // Two vectors without a comma, commas left out or trailing, `<1 -2 3>` as <-1, 3>:
+    // all checked against povray's #debug output.
+    let s =
+        parse("box { <-.5, -1.5, -1> <.5, 1.5, 1> } sphere { <1 2 3> 1 } sphere { <1, 2, 3,>, 1 }");
+    assert_eq!(s.objects.len(), 3);
+    assert_eq!(radii(&s), vec![1.0, 1.0]);
+    let s = parse("#declare U = <1 -2 3>; sphere { <U.u, U.v, 0>, 1 }");
+    match s.objects[0].shape {
+        ShapeDesc::Sphere { center, .. } => assert_eq!(center, glam::DVec3::new(-1.0, 3.0, 0.0)),
         _ => panic!(),
     }
 }

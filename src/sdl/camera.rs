@@ -49,6 +49,13 @@ impl Parser {
     }
 
     fn parse_sky_sphere(&mut self) -> PResult<()> {
+        let layers = self.parse_sky_sphere_block()?;
+        self.scene.sky_sphere = Some(layers);
+        Ok(())
+    }
+
+    /// `sky_sphere { [Identifier] pigment {...}... transforms }` after the keyword.
+    pub(super) fn parse_sky_sphere_block(&mut self) -> PResult<Vec<Pigment>> {
         self.expect_sym(Sym::LBrace, "after 'sky_sphere'")?;
         let mut layers: Vec<Pigment> = Vec::new();
         loop {
@@ -65,6 +72,8 @@ impl Parser {
                         for p in &mut layers {
                             p.apply_transform(&tr);
                         }
+                    } else if let Some(Value::SkySphere(s)) = self.lookup(k) {
+                        layers = (**s).clone();
                     } else {
                         return Err(
                             self.error_at(t.span, format!("unexpected '{k}' in sky_sphere"))
@@ -74,8 +83,7 @@ impl Parser {
                 _ => return Err(self.unexpected(&t, "in sky_sphere")),
             }
         }
-        self.scene.sky_sphere = Some(layers);
-        Ok(())
+        Ok(layers)
     }
 
     fn parse_global_settings(&mut self) -> PResult<()> {
@@ -108,8 +116,12 @@ impl Parser {
                 "charset" => {
                     self.next_tok()?;
                 }
-                "max_intersections" | "number_of_waves" | "noise_generator" | "hf_gray_16"
-                | "mm_per_unit" | "subsurface" => {
+                "hf_gray_16" => {
+                    // Only changes height-field output, which lancer does not write.
+                    self.optional_bool()?;
+                }
+                "max_intersections" | "number_of_waves" | "noise_generator" | "mm_per_unit"
+                | "subsurface" => {
                     if self.peek_sym()? == Some(Sym::LBrace) {
                         self.skip_block()?;
                     } else {

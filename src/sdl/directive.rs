@@ -260,11 +260,14 @@ impl Parser {
     }
 
     fn declare(&mut self, local: bool, _span: Span) -> PResult<()> {
-        let name = self.raw_ident(if local {
+        let mut name = self.raw_ident(if local {
             "after #local"
         } else {
             "after #declare"
         })?;
+        if &*name == "deprecated" {
+            name = self.deprecated_name()?;
+        }
         self.expect_sym(Sym::Eq, &format!("after '{name}' in the declaration"))?;
         // Warnings from identifiers used before this declaration belong where they were used.
         self.flush_released();
@@ -279,6 +282,22 @@ impl Parser {
         }
         self.set_var(name, v, local);
         Ok(())
+    }
+
+    /// `#declare deprecated [once] "message" Name = ...` (3.7): the message is a warning held
+    /// back, like the declaration's own warnings, until the name is used.
+    fn deprecated_name(&mut self) -> PResult<Rc<str>> {
+        let t = self.raw_peek()?.ok_or_else(|| self.eof_error())?;
+        if matches!(&t.tok, Tok::Ident(k) if &**k == "once") {
+            self.advance();
+        }
+        let span = self.cur_span();
+        let message = self.parse_string()?;
+        let name = self.raw_ident("after the deprecation message")?;
+        let from = self.warnings.len();
+        self.warn(span, format!("'{name}' is deprecated: {message}"));
+        self.defer_warnings(&name, from);
+        Ok(name)
     }
 
     /// The right-hand side of a declaration or a macro argument: anything an identifier can hold.
@@ -307,7 +326,17 @@ impl Parser {
             }
             "texture" => {
                 self.advance();
-                Ok(Value::Texture(Box::new(self.parse_texture_block()?)))
+                let mut tex = self.parse_texture_block()?;
+                // `#declare T = texture {...} texture {...}` declares a layered texture. Raw
+                // look-ahead: a directive after the declaration must not run before it ends.
+                while matches!(self.raw_peek()?, Some(Token { tok: Tok::Ident(ref k), .. }) if &**k == "texture")
+                {
+                    let span = self.next_span()?;
+                    self.advance();
+                    self.unsupported("layered textures (the last texture is used)", span);
+                    tex = self.parse_texture_block()?;
+                }
+                Ok(Value::Texture(Box::new(tex)))
             }
             "interior" => {
                 self.advance();
@@ -321,6 +350,25 @@ impl Parser {
                 self.advance();
                 Ok(Value::Transform(Box::new(self.parse_transform_block()?)))
             }
+            "color_map" | "colour_map" => {
+                self.advance();
+                Ok(Value::ColorMap(Box::new(self.parse_color_map()?)))
+            }
+            "material" => {
+                self.advance();
+                Ok(Value::Material(Box::new(self.parse_material_block()?)))
+            }
+            "sky_sphere" => {
+                self.advance();
+                Ok(Value::SkySphere(Box::new(self.parse_sky_sphere_block()?)))
+            }
+            "pigment_map" | "normal_map" | "slope_map" | "texture_map" | "density_map"
+            | "density" | "media" | "fog" | "rainbow" => {
+                self.advance();
+                self.unsupported(k, t.span);
+                self.skip_block()?;
+                Ok(Value::Skipped(k.clone()))
+            }
             _ => match self.lookup(k) {
                 Some(
                     v @ (Value::Object(_)
@@ -330,7 +378,11 @@ impl Parser {
                     | Value::Texture(_)
                     | Value::Interior(_)
                     | Value::Camera(_)
-                    | Value::Transform(_)),
+                    | Value::Transform(_)
+                    | Value::ColorMap(_)
+                    | Value::Material(_)
+                    | Value::SkySphere(_)
+                    | Value::Skipped(_)),
                 ) => {
                     let v = v.clone();
                     self.advance();

@@ -43,7 +43,7 @@ fn pad(c: Comp) -> [f64; 5] {
 impl Parser {
     pub fn parse_expr(&mut self) -> PResult<Value> {
         let c = self.parse_or()?;
-        if self.raw_peek_sym()? == Some(Sym::Question) {
+        if self.rel_ok && self.raw_peek_sym()? == Some(Sym::Question) {
             self.advance();
             let span = self.cur_span();
             let cond = self.float_of(c, span)?;
@@ -83,7 +83,7 @@ impl Parser {
 
     fn parse_or(&mut self) -> PResult<Value> {
         let mut a = self.parse_and()?;
-        while self.raw_peek_sym()? == Some(Sym::Or) {
+        while self.rel_ok && self.raw_peek_sym()? == Some(Sym::Or) {
             self.advance();
             let span = self.cur_span();
             let b = self.parse_and()?;
@@ -94,7 +94,7 @@ impl Parser {
 
     fn parse_and(&mut self) -> PResult<Value> {
         let mut a = self.parse_rel()?;
-        while self.raw_peek_sym()? == Some(Sym::And) {
+        while self.rel_ok && self.raw_peek_sym()? == Some(Sym::And) {
             self.advance();
             let span = self.cur_span();
             let b = self.parse_rel()?;
@@ -105,6 +105,11 @@ impl Parser {
 
     fn parse_rel(&mut self) -> PResult<Value> {
         let mut a = self.parse_add()?;
+        // POV-Ray reads comparisons, `&`, `|` and `? :` only inside parentheses, so that
+        // `box { <0,0,0> <1,1,1> }` is two vectors rather than a comparison.
+        if !self.rel_ok {
+            return Ok(a);
+        }
         loop {
             let op = match self.raw_peek_sym()? {
                 Some(s @ (Sym::Lt | Sym::Le | Sym::Eq | Sym::Ne | Sym::Ge)) => s,
@@ -266,8 +271,10 @@ impl Parser {
             Tok::Str(s) => Ok(Value::Str(s.clone())),
             Tok::Sym(Sym::LParen) => {
                 let saved = std::mem::replace(&mut self.in_vector, false);
+                let saved_rel = std::mem::replace(&mut self.rel_ok, true);
                 let v = self.parse_expr();
                 self.in_vector = saved;
+                self.rel_ok = saved_rel;
                 let v = v?;
                 self.expect_sym(Sym::RParen, "to close the parenthesis")?;
                 Ok(v)
@@ -286,6 +293,7 @@ impl Parser {
 
     fn parse_vector_literal(&mut self) -> PResult<Value> {
         let saved = std::mem::replace(&mut self.in_vector, true);
+        let saved_rel = std::mem::replace(&mut self.rel_ok, false);
         let r = (|| {
             let mut c = [0.0; 5];
             let mut n = 0usize;
@@ -297,15 +305,10 @@ impl Parser {
                 }
                 c[n] = self.float_of(v, span)?;
                 n += 1;
-                match self.next_tok()? {
-                    t if t.tok == Tok::Sym(Sym::Comma) => {}
-                    t if t.tok == Tok::Sym(Sym::Gt) => break,
-                    t => {
-                        return Err(self.error_at(
-                            t.span,
-                            format!("expected ',' or '>' in the vector, found {}", t.tok),
-                        ))
-                    }
+                // Commas are optional and may trail (`<1 2 3>`, `<1,2,3,>`), as in POV-Ray.
+                self.skip_optional_comma()?;
+                if self.eat_sym(Sym::Gt)? {
+                    break;
                 }
             }
             if n < 2 {
@@ -315,6 +318,7 @@ impl Parser {
             Ok(Value::Vector(c, n as u8))
         })();
         self.in_vector = saved;
+        self.rel_ok = saved_rel;
         r
     }
 

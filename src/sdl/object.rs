@@ -5,7 +5,7 @@ use std::sync::Arc;
 
 use crate::math::{DVec3, Transform};
 use crate::scene::desc::{
-    CsgOp, LightDesc, MeshData, MeshTriangle, ObjectDesc, ShapeDesc, Texture,
+    CsgOp, Interior, LightDesc, MeshData, MeshTriangle, ObjectDesc, ShapeDesc, Texture,
 };
 
 use super::lexer::{Sym, Tok};
@@ -184,7 +184,7 @@ impl Parser {
     }
 
     /// `on`/`off`/a float after a flag keyword, or true when nothing numeric follows.
-    fn optional_bool(&mut self) -> PResult<bool> {
+    pub(super) fn optional_bool(&mut self) -> PResult<bool> {
         match self.peek()?.map(|t| t.tok) {
             Some(Tok::Num(_)) => Ok(self.parse_float()? != 0.0),
             Some(Tok::Ident(k))
@@ -197,24 +197,43 @@ impl Parser {
     }
 
     fn material(&mut self, obj: &mut ObjectDesc) -> PResult<()> {
+        let (texture, interior) = self.parse_material_block()?;
+        if texture.is_some() {
+            obj.texture = texture;
+        }
+        if interior.is_some() {
+            obj.interior = interior;
+        }
+        Ok(())
+    }
+
+    /// `material { [Identifier] texture {...} interior {...} transforms }` after the keyword.
+    pub(super) fn parse_material_block(&mut self) -> PResult<(Option<Texture>, Option<Interior>)> {
         let open = self.open_brace("material")?;
+        let (mut texture, mut interior) = (None, None);
         loop {
             let t = self.next_tok()?;
             match &t.tok {
-                Tok::Sym(Sym::RBrace) => return Ok(()),
-                Tok::Ident(k) if &**k == "texture" => {
-                    obj.texture = Some(self.parse_texture_block()?)
-                }
+                Tok::Sym(Sym::RBrace) => return Ok((texture, interior)),
+                Tok::Ident(k) if &**k == "texture" => texture = Some(self.parse_texture_block()?),
                 Tok::Ident(k) if &**k == "interior" => {
-                    obj.interior = Some(self.parse_interior_block()?)
+                    interior = Some(self.parse_interior_block()?)
                 }
                 Tok::Ident(k) => {
                     if let Some(tr) = self.transform_item(k)? {
-                        if let Some(tex) = &mut obj.texture {
+                        if let Some(tex) = &mut texture {
                             tex.apply_transform(&tr);
                         }
-                    } else if !matches!(self.lookup(k), Some(Value::Texture(_))) {
-                        return Err(self.error_at(t.span, format!("unexpected '{k}' in material")));
+                    } else {
+                        match self.lookup(k) {
+                            Some(Value::Material(m)) => (texture, interior) = (**m).clone(),
+                            Some(Value::Texture(tex)) => texture = Some((**tex).clone()),
+                            _ => {
+                                return Err(
+                                    self.error_at(t.span, format!("unexpected '{k}' in material"))
+                                )
+                            }
+                        }
                     }
                 }
                 _ => return Err(self.error_at(open, format!("unexpected {} in material", t.tok))),
@@ -242,9 +261,7 @@ impl Parser {
                 let mut r = Ok(());
                 for (i, x) in v.iter_mut().enumerate() {
                     if i > 0 {
-                        if let Err(e) =
-                            self.expect_sym(Sym::Comma, "between the twelve matrix values")
-                        {
+                        if let Err(e) = self.skip_optional_comma() {
                             r = Err(e);
                             break;
                         }
@@ -309,7 +326,7 @@ impl Parser {
     fn sphere(&mut self, _s: Span) -> PResult<ObjectDesc> {
         let open = self.open_brace("sphere")?;
         let center = self.parse_vector()?;
-        self.expect_sym(Sym::Comma, "after the sphere's centre")?;
+        self.skip_optional_comma()?;
         let radius = self.parse_float()?;
         self.finish_object(ObjectDesc::new(ShapeDesc::Sphere { center, radius }), open)
     }
@@ -317,7 +334,7 @@ impl Parser {
     fn plane(&mut self, _s: Span) -> PResult<ObjectDesc> {
         let open = self.open_brace("plane")?;
         let normal = self.parse_vector()?;
-        self.expect_sym(Sym::Comma, "after the plane's normal")?;
+        self.skip_optional_comma()?;
         let distance = self.parse_float()?;
         self.finish_object(ObjectDesc::new(ShapeDesc::Plane { normal, distance }), open)
     }
@@ -325,7 +342,7 @@ impl Parser {
     fn box_object(&mut self, _s: Span) -> PResult<ObjectDesc> {
         let open = self.open_brace("box")?;
         let corner1 = self.parse_vector()?;
-        self.expect_sym(Sym::Comma, "after the box's first corner")?;
+        self.skip_optional_comma()?;
         let corner2 = self.parse_vector()?;
         self.finish_object(ObjectDesc::new(ShapeDesc::Box { corner1, corner2 }), open)
     }
@@ -333,9 +350,9 @@ impl Parser {
     fn cylinder(&mut self, _s: Span) -> PResult<ObjectDesc> {
         let open_b = self.open_brace("cylinder")?;
         let base = self.parse_vector()?;
-        self.expect_sym(Sym::Comma, "after the cylinder's base point")?;
+        self.skip_optional_comma()?;
         let cap = self.parse_vector()?;
-        self.expect_sym(Sym::Comma, "after the cylinder's cap point")?;
+        self.skip_optional_comma()?;
         let radius = self.parse_float()?;
         self.finish_object(
             ObjectDesc::new(ShapeDesc::Cylinder {
@@ -351,11 +368,11 @@ impl Parser {
     fn cone(&mut self, _s: Span) -> PResult<ObjectDesc> {
         let open_b = self.open_brace("cone")?;
         let base = self.parse_vector()?;
-        self.expect_sym(Sym::Comma, "after the cone's base point")?;
+        self.skip_optional_comma()?;
         let base_radius = self.parse_float()?;
-        self.expect_sym(Sym::Comma, "after the cone's base radius")?;
+        self.skip_optional_comma()?;
         let cap = self.parse_vector()?;
-        self.expect_sym(Sym::Comma, "after the cone's cap point")?;
+        self.skip_optional_comma()?;
         let cap_radius = self.parse_float()?;
         self.finish_object(
             ObjectDesc::new(ShapeDesc::Cone {
@@ -372,9 +389,9 @@ impl Parser {
     fn disc(&mut self, _s: Span) -> PResult<ObjectDesc> {
         let open = self.open_brace("disc")?;
         let center = self.parse_vector()?;
-        self.expect_sym(Sym::Comma, "after the disc's centre")?;
+        self.skip_optional_comma()?;
         let normal = self.parse_vector()?;
-        self.expect_sym(Sym::Comma, "after the disc's normal")?;
+        self.skip_optional_comma()?;
         let radius = self.parse_float()?;
         let hole_radius = if self.eat_sym(Sym::Comma)? {
             self.parse_float()?
@@ -395,7 +412,7 @@ impl Parser {
     fn torus(&mut self, _s: Span) -> PResult<ObjectDesc> {
         let open = self.open_brace("torus")?;
         let major = self.parse_float()?;
-        self.expect_sym(Sym::Comma, "after the torus' major radius")?;
+        self.skip_optional_comma()?;
         let minor = self.parse_float()?;
         self.finish_object(
             ObjectDesc::new(ShapeDesc::Torus {
@@ -407,20 +424,16 @@ impl Parser {
         )
     }
 
-    fn three_points(
-        &mut self,
-        what: &str,
-        with_normals: bool,
-    ) -> PResult<([DVec3; 3], [DVec3; 3])> {
+    fn three_points(&mut self, with_normals: bool) -> PResult<([DVec3; 3], [DVec3; 3])> {
         let mut p = [DVec3::ZERO; 3];
         let mut n = [DVec3::ZERO; 3];
         for i in 0..3 {
             if i > 0 {
-                self.expect_sym(Sym::Comma, &format!("between the {what}'s points"))?;
+                self.skip_optional_comma()?;
             }
             p[i] = self.parse_vector()?;
             if with_normals {
-                self.expect_sym(Sym::Comma, &format!("after a {what} point"))?;
+                self.skip_optional_comma()?;
                 n[i] = self.parse_vector()?;
             }
         }
@@ -429,13 +442,13 @@ impl Parser {
 
     fn triangle(&mut self, _s: Span) -> PResult<ObjectDesc> {
         let open = self.open_brace("triangle")?;
-        let (p, _) = self.three_points("triangle", false)?;
+        let (p, _) = self.three_points(false)?;
         self.finish_object(ObjectDesc::new(ShapeDesc::Triangle { p }), open)
     }
 
     fn smooth_triangle(&mut self, _s: Span) -> PResult<ObjectDesc> {
         let open = self.open_brace("smooth_triangle")?;
-        let (p, n) = self.three_points("smooth_triangle", true)?;
+        let (p, n) = self.three_points(true)?;
         self.finish_object(ObjectDesc::new(ShapeDesc::SmoothTriangle { p, n }), open)
     }
 
@@ -463,7 +476,7 @@ impl Parser {
             } else {
                 "triangle"
             })?;
-            let (p, n) = self.three_points("mesh triangle", smooth)?;
+            let (p, n) = self.three_points(smooth)?;
             let base = data.vertices.len() as u32;
             data.vertices.extend_from_slice(&p);
             let normals = smooth.then(|| {
@@ -553,6 +566,14 @@ impl Parser {
                         "color" | "colour" | "rgb" | "rgbf" | "rgbt" | "rgbft" | "srgb" => {
                             light.color = self.parse_color()?.rgb
                         }
+                        // A colour identifier starts an expression: `White*2`.
+                        _ if matches!(
+                            self.lookup(&k),
+                            Some(Value::Color(_) | Value::Vector(..))
+                        ) =>
+                        {
+                            light.color = self.parse_color()?.rgb
+                        }
                         _ => {
                             self.advance();
                             match &*k {
@@ -574,8 +595,6 @@ impl Parser {
                                 other => {
                                     if let Some(tr) = self.transform_item(other)? {
                                         obj_tf = obj_tf.then(&tr);
-                                    } else if let Some(Value::Color(c)) = self.lookup(other) {
-                                        light.color = c.rgb;
                                     } else {
                                         return Err(self.error_at(
                                             t.span,

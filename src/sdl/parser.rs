@@ -123,6 +123,8 @@ pub struct Parser {
     released: RefCell<Vec<Diagnostic>>,
     /// Inside `< >` the `>` closes the vector instead of comparing.
     pub(super) in_vector: bool,
+    /// Inside `( )`, where comparisons, logic and `? :` are read (see `parse_rel`).
+    pub(super) rel_ok: bool,
     last_span: Span,
     /// States of the random streams `seed()` made, indexed by what it returned.
     pub(super) rand_streams: Vec<u32>,
@@ -144,6 +146,7 @@ impl Parser {
             deferred: RefCell::default(),
             released: RefCell::default(),
             in_vector: false,
+            rel_ok: false,
             last_span: Span::default(),
             rand_streams: Vec::new(),
         }

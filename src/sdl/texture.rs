@@ -260,14 +260,21 @@ impl Parser {
         Ok(())
     }
 
-    fn parse_color_map(&mut self) -> PResult<ColorMap> {
+    pub(super) fn parse_color_map(&mut self) -> PResult<ColorMap> {
         self.begin_block("color_map")?;
         let mut map: ColorMap = Vec::new();
         if let Some(k) = self.peek_ident()? {
-            if let Some(Value::Pigment(p)) = self.lookup(&k) {
-                if let PigmentKind::Mapped { map: m, .. } = &p.kind {
-                    map = m.clone();
+            match self.lookup(&k) {
+                Some(Value::ColorMap(m)) => {
+                    map = (**m).clone();
+                    self.advance();
                 }
+                Some(Value::Pigment(p)) => {
+                    if let PigmentKind::Mapped { map: m, .. } = &p.kind {
+                        map = m.clone();
+                    }
+                }
+                _ => {}
             }
         }
         loop {

@@ -6,7 +6,7 @@ use std::sync::Arc;
 use crate::color::Rgbft;
 use crate::math::{DVec3, Transform};
 use crate::scene::desc::{
-    CameraDesc, Finish, Interior, LightDesc, Normal, ObjectDesc, Pigment, Texture,
+    CameraDesc, ColorMap, Finish, Interior, LightDesc, Normal, ObjectDesc, Pigment, Texture,
 };
 
 use super::lexer::Token;
@@ -30,6 +30,14 @@ pub enum Value {
     Macro(Rc<MacroDef>),
     /// A `function { ... }`, shared with whatever evaluates it (Arc: render threads may).
     Function(Arc<crate::func::Function>),
+    ColorMap(Box<ColorMap>),
+    /// `material { texture interior }`.
+    Material(Box<(Option<Texture>, Option<Interior>)>),
+    /// The pigment layers of a `sky_sphere`.
+    SkySphere(Box<Vec<Pigment>>),
+    /// Something lancer reads but does not render yet (`media`, `fog`, `pigment_map`, ...),
+    /// named by its keyword so it can still be declared, passed and used.
+    Skipped(Rc<str>),
 }
 
 impl Value {
@@ -50,6 +58,10 @@ impl Value {
             Value::Transform(_) => "transform",
             Value::Macro(_) => "macro",
             Value::Function(_) => "function",
+            Value::ColorMap(_) => "color_map",
+            Value::Material(_) => "material",
+            Value::SkySphere(_) => "sky_sphere",
+            Value::Skipped(_) => "unsupported item",
         }
     }
 
