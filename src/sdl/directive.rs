@@ -68,6 +68,11 @@ impl Parser {
             }
             "else" | "elseif" => match self.conds.pop() {
                 Some(Cond::If { .. }) => self.skip_inactive(span, false).map(|_| ()),
+                Some(c @ Cond::Switch { .. }) if d == "else" => {
+                    self.conds.push(c);
+                    self.switch_else();
+                    Ok(())
+                }
                 _ => Err(self.error_at(span, format!("#{d} without a matching #if"))),
             },
             "end" => self.end_directive(span),
@@ -94,7 +99,10 @@ impl Parser {
                 }
                 Ok(())
             }
-            "switch" | "case" | "range" | "break" | "fopen" | "fclose" | "read" | "write" => {
+            "switch" => self.switch_directive(span),
+            "case" | "range" => self.case_directive(d, span),
+            "break" => self.break_directive(span),
+            "fopen" | "fclose" | "read" | "write" => {
                 Err(self.error_at(span, format!("#{d} is not supported by lancer yet")))
             }
             _ => Err(self.error_at(span, format!("unknown directive #{d}"))),
@@ -167,7 +175,7 @@ impl Parser {
     fn end_directive(&mut self, span: Span) -> PResult<()> {
         let depth = self.frames.len() - 1;
         match self.conds.pop() {
-            Some(Cond::If { frame }) if frame == depth => Ok(()),
+            Some(Cond::If { frame }) | Some(Cond::Switch { frame, .. }) if frame == depth => Ok(()),
             Some(Cond::While { frame, cond_pos }) if frame == depth => {
                 self.frames[frame].pos = cond_pos;
                 if self.parse_float()? != 0.0 {

@@ -8,6 +8,7 @@ pub mod lexer;
 pub mod object;
 pub mod parser;
 pub mod source;
+pub mod switch;
 pub mod texture;
 pub mod value;
 

@@ -83,6 +83,12 @@ pub(super) enum Cond {
         end: f64,
         step: f64,
     },
+    /// Inside a `#switch`: `matched` once a clause was true (later clauses fall through).
+    Switch {
+        frame: usize,
+        value: f64,
+        matched: bool,
+    },
 }
 
 pub struct Parser {
@@ -294,7 +300,8 @@ impl Parser {
         let open = match self.conds.last() {
             Some(Cond::If { frame })
             | Some(Cond::While { frame, .. })
-            | Some(Cond::For { frame, .. }) => *frame == depth,
+            | Some(Cond::For { frame, .. })
+            | Some(Cond::Switch { frame, .. }) => *frame == depth,
             None => false,
         };
         if open {
