@@ -37,7 +37,10 @@ impl Parser {
             "declare" => self.declare(false, span),
             "local" => self.declare(true, span),
             "undef" => {
-                let name = self.raw_ident("after #undef")?;
+                let (name, elem) = self.raw_ident_or_element("after #undef")?;
+                if let Some(p) = elem {
+                    return self.set_element(&p, None);
+                }
                 for s in self.scopes.iter_mut().rev() {
                     if s.remove(&*name).is_some() {
                         break;
@@ -61,9 +64,9 @@ impl Parser {
             }
             "ifdef" | "ifndef" => {
                 self.expect_sym(Sym::LParen, &format!("after #{d}"))?;
-                let name = self.raw_ident(&format!("in #{d}"))?;
+                let (name, elem) = self.raw_ident_or_element(&format!("in #{d}"))?;
                 self.expect_sym(Sym::RParen, &format!("to close #{d}"))?;
-                let defined = self.lookup(&name).is_some();
+                let defined = self.is_defined(&name, &elem);
                 self.enter_if(defined == (d == "ifdef"), span)
             }
             "else" | "elseif" => match self.conds.pop() {
@@ -272,6 +275,9 @@ impl Parser {
         } else {
             "after #declare"
         })?;
+        if self.raw_peek_sym()? == Some(Sym::LBracket) {
+            return self.declare_element(name, _span);
+        }
         self.expect_sym(Sym::Eq, &format!("after '{name}' in the declaration"))?;
         let v = self.parse_rvalue()?;
         // The semicolon is optional for objects and required by POV-Ray for numbers; accept it
@@ -279,8 +285,7 @@ impl Parser {
         if self.raw_peek_sym()? == Some(Sym::Semi) {
             self.advance();
         }
-        self.set_var(name, v, local);
-        Ok(())
+        self.assign_var(name, v, local)
     }
 
     /// The right-hand side of a declaration or a macro argument: anything an identifier can hold.
@@ -322,6 +327,14 @@ impl Parser {
             "transform" => {
                 self.advance();
                 Ok(Value::Transform(Box::new(self.parse_transform_block()?)))
+            }
+            "array" => {
+                self.advance();
+                self.parse_array(t.span)
+            }
+            "spline" => {
+                self.advance();
+                self.parse_spline(t.span)
             }
             _ => match self.lookup(k) {
                 Some(
@@ -390,7 +403,7 @@ impl Parser {
                 if matches!(self.peek_sym()?, Some(Sym::Comma) | Some(Sym::RParen)) {
                     args.push(None);
                 } else {
-                    args.push(Some(self.parse_rvalue()?));
+                    args.push(Some(self.parse_macro_arg()?));
                 }
                 if self.eat_sym(Sym::RParen)? {
                     break;

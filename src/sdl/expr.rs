@@ -319,6 +319,9 @@ impl Parser {
     }
 
     fn parse_ident_value(&mut self, k: Rc<str>, span: Span) -> PResult<Value> {
+        if let Some(v) = self.lang_ident_value(&k, span)? {
+            return Ok(v);
+        }
         if let Some(v) = self.lookup(&k) {
             return Ok(v.clone());
         }

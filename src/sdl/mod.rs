@@ -1,6 +1,8 @@
 //! The POV-Ray scene description language: lexer, token stream and the one parser that
 //! executes directives as it reads.
 
+pub mod array;
+pub mod byref;
 pub mod camera;
 pub mod directive;
 pub mod expr;
@@ -8,6 +10,8 @@ pub mod lexer;
 pub mod object;
 pub mod parser;
 pub mod source;
+pub mod spline;
+pub mod strings;
 pub mod switch;
 pub mod texture;
 pub mod value;

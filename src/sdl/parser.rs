@@ -106,6 +106,9 @@ pub struct Parser {
     /// Inside `< >` the `>` closes the vector instead of comparing.
     pub(super) in_vector: bool,
     last_span: Span,
+    /// The array element most recently resolved and the token positions it spanned, so a
+    /// macro argument that is a lone element can be bound by reference.
+    pub(super) last_element: Option<super::array::LastElement>,
 }
 
 impl Parser {
@@ -123,6 +126,7 @@ impl Parser {
             warned: HashSet::new(),
             in_vector: false,
             last_span: Span::default(),
+            last_element: None,
         }
     }
 
@@ -343,6 +347,12 @@ impl Parser {
                         let m = m.clone();
                         self.advance();
                         self.invoke_macro(&m, t.span)?;
+                    } else if matches!(self.lookup(name), Some(Value::Array(_)))
+                        && self.at_subscript()
+                    {
+                        let name = name.clone();
+                        self.advance();
+                        self.push_element(name, t.span)?;
                     } else {
                         return Ok(Some(t));
                     }
@@ -432,7 +442,10 @@ impl Parser {
     }
 
     pub fn lookup(&self, name: &str) -> Option<&Value> {
-        self.scopes.iter().rev().find_map(|s| s.get(name))
+        match self.scopes.iter().rev().find_map(|s| s.get(name)) {
+            Some(Value::Ref(r)) => self.deref(r),
+            v => v,
+        }
     }
 
     /// An error at `span` with the include/macro chain of the current frames.

@@ -27,6 +27,12 @@ pub enum Value {
     Light(Box<LightDesc>),
     Transform(Box<Transform>),
     Macro(Rc<MacroDef>),
+    Array(Rc<super::array::ArrayVal>),
+    Spline(Rc<super::spline::SplineDef>),
+    /// An open `#fopen` handle, by its identifier.
+    File(Rc<str>),
+    /// A macro parameter bound by reference to the caller's variable or array element.
+    Ref(Rc<super::array::ElemPath>),
 }
 
 impl Value {
@@ -46,6 +52,10 @@ impl Value {
             Value::Light(_) => "light_source",
             Value::Transform(_) => "transform",
             Value::Macro(_) => "macro",
+            Value::Array(_) => "array",
+            Value::Spline(_) => "spline",
+            Value::File(_) => "file handle",
+            Value::Ref(_) => "reference",
         }
     }
 
