@@ -30,6 +30,7 @@ pub fn render_file(
         image_width: settings.width,
         image_height: settings.height,
         clock: 0.0,
+        ..ParseOptions::default()
     };
     let parsed = parse_file(path, opts);
     if let Some(e) = parsed.error {

@@ -49,6 +49,7 @@ fn render(job: lancer::cli::Job) -> ExitCode {
         image_width: job.settings.width,
         image_height: job.settings.height,
         clock: 0.0,
+        ..ParseOptions::default()
     };
     let parsed = lancer::api::parse_file(&job.scene, opts);
     let sources = &parsed.parser.sources;

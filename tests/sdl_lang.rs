@@ -437,3 +437,192 @@ fn spline_edge_cases_match_povray() {
     assert!((r[2] - -0.125).abs() < 1e-9, "{r:?}");
     assert!((r[10] - 1.75).abs() < 1e-9, "{r:?}");
 }
+
+// ---- file I/O ----
+
+/// A fresh directory for one test's files, below the cargo target directory.
+fn scratch(name: &str) -> std::path::PathBuf {
+    let d = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn parse_scene_file(
+    dir: &std::path::Path,
+    text: &str,
+    opts: ParseOptions,
+) -> Result<SceneDesc, String> {
+    let path = dir.join("scene.pov");
+    std::fs::write(&path, text).unwrap();
+    let parsed = lancer::api::parse_file(&path, opts);
+    match parsed.error {
+        Some(e) => Err(e.one_line(&parsed.parser.sources)),
+        None => Ok(parsed.parser.scene),
+    }
+}
+
+/// `#write` output is POV-Ray 3.7.0's byte for byte: `%g` floats, vectors with a trailing space.
+#[test]
+fn write_then_read_round_trip() {
+    let dir = scratch("io_round_trip");
+    let out = dir.join("data.txt");
+    let scene = format!(
+        "#fopen F \"{0}\" write
+         #write (F, 1.5, \",\", -2, \",\", <1,2,3>, \",\", <1,2>, \",\", 1/3, \",\", 1e20, \",\", \"\\\"str\\\"\", \",\\n\")
+         #fclose F
+         #fopen F \"{0}\" append
+         #write (F, 123456789, \",\", 0.000001234, \",\")
+         #fclose F
+         #fopen G \"{0}\" read
+         #read (G, A, B, C, D, E)
+         sphere {{ C, A + B }} sphere {{ <D.x, D.y, 0>, E }}
+         #declare N = 0;
+         #while (defined(G))
+           #read (G, V)
+           #declare N = N + 1;
+           #switch (N)
+             #case (1) sphere {{ 0, V / 1e19 }} #break
+             #case (2) #if (strcmp(V, \"str\") = 0) sphere {{ 0, 2 }} #end #break
+             #else sphere {{ 0, V }}
+           #end
+         #end
+         sphere {{ 0, 100 + N }}",
+        out.display()
+    );
+    let s = parse_scene_file(&dir, &scene, ParseOptions::default()).unwrap();
+    assert_eq!(
+        std::fs::read_to_string(&out).unwrap(),
+        "1.5,-2,<1,2,3> ,<1,2> ,0.333333,1e+20,\"str\",\n1.23457e+08,1.234e-06,"
+    );
+    let r = radii(&s);
+    assert_eq!(centers(&s)[0], [1.0, 2.0, 3.0]);
+    assert_eq!(&r[..5], &[-0.5, 0.333333, 10.0, 2.0, 123457000.0]);
+    // The last value is followed by a comma, so it is read; the next #read meets the end of
+    // the file, closes G and leaves V as it was, and the loop body finishes that round.
+    assert!((r[5] - 1.234e-6).abs() < 1e-12, "{r:?}");
+    assert_eq!(r[6], r[5]);
+    assert_eq!(r[7], 105.0);
+}
+
+/// POV-Ray 3.7.0 reads 1, 2 and 3 from "1, 2, 3\n4\n": a value followed by the end of the file
+/// is dropped, and a missing comma swallows the token after the value.
+#[test]
+fn read_drops_the_value_at_end_of_file_as_povray_does() {
+    let dir = scratch("io_eof");
+    std::fs::write(dir.join("in.txt"), "1, 2, 3\n4\n").unwrap();
+    std::fs::write(dir.join("in2.txt"), "1 2 3\n").unwrap();
+    let s = parse_scene_file(
+        &dir,
+        "#fopen G \"in.txt\" read
+         #while (defined(G)) #read (G, X) #ifdef (G) sphere { 0, X } #end #end
+         #fopen G \"in2.txt\" read
+         #while (defined(G)) #read (G, X) #ifdef (G) sphere { 0, 10 + X } #end #end
+         #fclose G",
+        ParseOptions::default(),
+    )
+    .unwrap();
+    assert_eq!(radii(&s), vec![1.0, 2.0, 3.0, 11.0]);
+}
+
+#[test]
+fn binary_words_in_write() {
+    let dir = scratch("io_binary");
+    parse_scene_file(
+        &dir,
+        "#fopen F \"lancer_sdl_lang_binary.bin\" write
+         #write (F, uint8 65, 66, \"x\", sint16le 258, 3, <1,2,3>)
+         #write (F, 67, sint8 -1)
+         #fclose F",
+        ParseOptions::default(),
+    )
+    .unwrap();
+    // Where POV-Ray resolves a relative name to write: the current directory.
+    let bytes = std::fs::read("lancer_sdl_lang_binary.bin").unwrap();
+    let _ = std::fs::remove_file("lancer_sdl_lang_binary.bin");
+    assert_eq!(bytes, b"A66x\x02\x013<1,2,3> 67\xff");
+}
+
+#[test]
+fn io_outside_the_scene_and_current_directories_needs_permission() {
+    let outside = std::env::temp_dir().join(format!("lancer_io_test_{}.txt", std::process::id()));
+    let scene = format!(
+        "#fopen F \"{}\" write #write (F, \"x\") #fclose F",
+        outside.display()
+    );
+    let mut p = Parser::new(ParseOptions::default());
+    let e = p.parse_str("snippet.pov", &scene).unwrap_err();
+    let e = e.one_line(&p.sources);
+    assert!(
+        e.starts_with("snippet.pov:1:1")
+            && e.contains("may not write")
+            && e.contains("lancer_io_test_"),
+        "{e}"
+    );
+    assert!(!outside.exists());
+    let opts = ParseOptions {
+        io_allowed_dirs: vec![std::env::temp_dir()],
+        ..ParseOptions::default()
+    };
+    parse_with(opts, &scene);
+    assert_eq!(std::fs::read_to_string(&outside).unwrap(), "x");
+    std::fs::remove_file(&outside).unwrap();
+    let e = parse_err("#fopen F \"/etc/hostname\" read");
+    assert!(e.contains("may not read /etc/hostname"), "{e}");
+    let e = parse_err("#declare X = 1; #read (X, Y)");
+    assert!(e.contains("'X' is not an open file"), "{e}");
+}
+
+// ---- limits ----
+
+#[test]
+fn loop_iteration_cap_is_an_error_when_set() {
+    let opts = ParseOptions {
+        max_loop_iterations: Some(1000),
+        ..ParseOptions::default()
+    };
+    let mut p = Parser::new(opts);
+    let e = p.parse_str("snippet.pov", "#while (1)\n#end").unwrap_err();
+    let e = e.one_line(&p.sources);
+    assert!(
+        e.starts_with("snippet.pov:2:1") && e.contains("more than 1000"),
+        "{e}"
+    );
+    // Off by default: a long loop runs.
+    let s = parse("#declare I = 0; #while (I < 20000) #declare I = I + 1; #end sphere { 0, I }");
+    assert_eq!(radii(&s), vec![20000.0]);
+}
+
+/// POV-Ray 3.7.0 accepts 31 nested include files and stops at the 32nd.
+#[test]
+fn include_depth_is_limited_as_in_povray() {
+    let dir = scratch("include_depth");
+    std::fs::write(
+        dir.join("self.inc"),
+        "#declare N = N + 1;\n#if (N < Max) #include \"self.inc\" #end\n",
+    )
+    .unwrap();
+    let s = parse_scene_file(
+        &dir,
+        "#declare Max = 31; #declare N = 0; #include \"self.inc\" sphere { 0, N }",
+        ParseOptions::default(),
+    )
+    .unwrap();
+    assert_eq!(radii(&s), vec![31.0]);
+    let e = parse_scene_file(
+        &dir,
+        "#declare Max = 32; #declare N = 0; #include \"self.inc\"",
+        ParseOptions::default(),
+    )
+    .unwrap_err();
+    assert!(
+        e.contains("self.inc:2:") && e.contains("too many nested include files"),
+        "{e}"
+    );
+}
+
+#[test]
+fn runaway_recursion_names_povray_wording() {
+    let e = parse_err("#macro R(N) R(N + 1) #end R(0)");
+    assert!(e.contains("Too many nested symbol tables"), "{e}");
+}

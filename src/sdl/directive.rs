@@ -105,9 +105,10 @@ impl Parser {
             "switch" => self.switch_directive(span),
             "case" | "range" => self.case_directive(d, span),
             "break" => self.break_directive(span),
-            "fopen" | "fclose" | "read" | "write" => {
-                Err(self.error_at(span, format!("#{d} is not supported by lancer yet")))
-            }
+            "fopen" => self.fopen_directive(span),
+            "fclose" => self.fclose_directive(span),
+            "read" => self.read_directive(span),
+            "write" => self.write_directive(span),
             _ => Err(self.error_at(span, format!("unknown directive #{d}"))),
         }
     }
@@ -180,6 +181,7 @@ impl Parser {
         match self.conds.pop() {
             Some(Cond::If { frame }) | Some(Cond::Switch { frame, .. }) if frame == depth => Ok(()),
             Some(Cond::While { frame, cond_pos }) if frame == depth => {
+                self.count_loop_iteration(span)?;
                 self.frames[frame].pos = cond_pos;
                 if self.parse_float()? != 0.0 {
                     self.conds.push(Cond::While { frame, cond_pos });
@@ -195,6 +197,7 @@ impl Parser {
                 end,
                 step,
             }) if frame == depth => {
+                self.count_loop_iteration(span)?;
                 let v = match self.lookup(&var) {
                     Some(Value::Float(v)) => *v + step,
                     _ => return Err(self.error_at(span, format!("the #for loop variable '{var}' was changed to a non-float inside the loop"))),
@@ -434,7 +437,7 @@ impl Parser {
             return Err(self.error_at(
                 span,
                 format!(
-                    "too many nested macro calls (more than 200): does {} call itself without end?",
+                    "too many nested macro calls (more than 200; POV-Ray says \"Too many nested symbol tables\"): does {} call itself without end?",
                     m.name
                 ),
             ));

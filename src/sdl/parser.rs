@@ -27,6 +27,14 @@ pub struct ParseOptions {
     pub image_width: u32,
     pub image_height: u32,
     pub clock: f64,
+    /// Lets `#fopen` read and write anywhere; by default only below the scene's directory
+    /// and the current directory (reads also in the library paths).
+    pub io_unrestricted: bool,
+    /// Further directories `#fopen` may read and write below.
+    pub io_allowed_dirs: Vec<PathBuf>,
+    /// Stops the parse with an error after this many `#while`/`#for` iterations in all;
+    /// `None` (the default) lets loops run as long as they like, as POV-Ray does.
+    pub max_loop_iterations: Option<u64>,
 }
 
 impl Default for ParseOptions {
@@ -36,6 +44,9 @@ impl Default for ParseOptions {
             image_width: 320,
             image_height: 240,
             clock: 0.0,
+            io_unrestricted: false,
+            io_allowed_dirs: Vec::new(),
+            max_loop_iterations: None,
         }
     }
 }
@@ -109,6 +120,9 @@ pub struct Parser {
     /// The array element most recently resolved and the token positions it spanned, so a
     /// macro argument that is a lone element can be bound by reference.
     pub(super) last_element: Option<super::array::LastElement>,
+    pub(super) files: super::fileio::Files,
+    /// `#while`/`#for` iterations so far, against `ParseOptions::max_loop_iterations`.
+    pub(super) loop_iterations: u64,
 }
 
 impl Parser {
@@ -127,6 +141,8 @@ impl Parser {
             in_vector: false,
             last_span: Span::default(),
             last_element: None,
+            files: Default::default(),
+            loop_iterations: 0,
         }
     }
 
@@ -228,6 +244,7 @@ impl Parser {
                     .with_note("POV-Ray's standard include files come with Debian's povray-includes package (apt-get install povray-includes); other directories can be added with +L<dir>"),
             ));
         };
+        self.check_include_depth(site)?;
         let (_, tokens) = self.load(&path, Some(site))?;
         self.push_frame(
             tokens,
@@ -246,7 +263,7 @@ impl Parser {
     ) -> PResult<()> {
         if self.frames.len() >= MAX_FRAME_DEPTH {
             let span = call_site.as_ref().map(|c| c.0).unwrap_or(self.last_span);
-            return Err(self.error_at(span, format!("too many nested include files or macro calls (more than {MAX_FRAME_DEPTH}); is a macro calling itself without end?")));
+            return Err(self.error_at(span, format!("too many nested macro calls (more than {MAX_FRAME_DEPTH}; POV-Ray says \"Too many nested symbol tables\"): is a macro calling itself without end?")));
         }
         let end = tokens.len();
         self.push_frame_range(tokens, 0, end, kind, call_site, scope);
