@@ -626,3 +626,47 @@ fn runaway_recursion_names_povray_wording() {
     let e = parse_err("#macro R(N) R(N + 1) #end R(0)");
     assert!(e.contains("Too many nested symbol tables"), "{e}");
 }
+
+// ---- optional commas, deprecated identifiers ----
+
+/// POV-Ray 3.7.0 reads initialisers and #write items without commas (allnormals.pov and
+/// html_gen.inc among the sample scenes do this).
+#[test]
+fn commas_are_optional_in_initialisers_and_write() {
+    let s = parse(
+        "#declare A = array[3] {\"a\" \"bc\"\n \"def\"};
+         #declare B = array[2][2] {{1 2}{3 4}};
+         sphere { 0, strlen(A[2]) + B[1][0] }",
+    );
+    assert_eq!(radii(&s), vec![6.0]);
+    let dir = scratch("io_no_commas");
+    parse_scene_file(
+        &dir,
+        "#fopen F \"lancer_sdl_lang_nocomma.txt\" write #write(F \"a\" 1 \"b\") #fclose F",
+        ParseOptions::default(),
+    )
+    .unwrap();
+    let text = std::fs::read_to_string("lancer_sdl_lang_nocomma.txt").unwrap();
+    let _ = std::fs::remove_file("lancer_sdl_lang_nocomma.txt");
+    assert_eq!(text, "a1b");
+}
+
+#[test]
+fn deprecated_identifiers_warn_where_used() {
+    let mut p = Parser::new(ParseOptions::default());
+    p.parse_str(
+        "d.pov",
+        "#declare deprecated once \"use T2\" T1 = 1;\n#declare deprecated Old = 2;\nsphere { 0, T1 + T1 }\nsphere { 0, Old }\nsphere { 0, Old }",
+    )
+    .unwrap();
+    let w: Vec<String> = p.warnings.iter().map(|w| w.one_line(&p.sources)).collect();
+    assert_eq!(w.len(), 3, "{w:?}");
+    assert!(
+        w[0].starts_with("d.pov:3:") && w[0].contains("use T2"),
+        "{w:?}"
+    );
+    assert!(
+        w[1].starts_with("d.pov:4:") && w[1].contains("Identifier Old was declared deprecated.")
+    );
+    assert!(w[2].starts_with("d.pov:5:"));
+}

@@ -331,6 +331,9 @@ impl Parser {
             }
         }
         if dims.is_empty() {
+            if self.peek_ident()?.as_deref() == Some("mixed") {
+                return Err(self.error_at(span, "'array mixed' is POV-Ray 3.8 syntax, not supported by lancer (POV-Ray 3.7 arrays hold one type)"));
+            }
             return Err(self.error_at(span, "expected '[' and a size after 'array'"));
         }
         let total = dims
@@ -359,14 +362,10 @@ impl Parser {
         let open = self.expect_sym(Sym::LBrace, "to open the array initialiser")?;
         let size = a.dims[d];
         for i in 0..size {
-            if i > 0 && self.peek_sym()? != Some(Sym::RBrace) {
-                self.expect_sym(
-                    Sym::Comma,
-                    &format!(
-                        "between array elements (dimension {} has {size} elements)",
-                        d + 1
-                    ),
-                )?;
+            // The manual asks for commas, but POV-Ray 3.7.0 reads `{"a" "b"}` and
+            // `{{1 2}{3 4}}` too, and the sample scenes rely on it.
+            if i > 0 {
+                self.eat_sym(Sym::Comma)?;
             }
             if self.peek_sym()? == Some(Sym::RBrace) {
                 let here = self.next_span()?;

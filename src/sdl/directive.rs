@@ -273,11 +273,15 @@ impl Parser {
     }
 
     fn declare(&mut self, local: bool, _span: Span) -> PResult<()> {
+        let deprecation = self.parse_deprecation()?;
         let name = self.raw_ident(if local {
             "after #local"
         } else {
             "after #declare"
         })?;
+        if let Some(d) = deprecation {
+            self.mark_deprecated(name.clone(), d);
+        }
         if self.raw_peek_sym()? == Some(Sym::LBracket) {
             return self.declare_element(name, _span);
         }

@@ -240,7 +240,12 @@ impl Parser {
     pub(super) fn write_directive(&mut self, _span: Span) -> PResult<()> {
         let id = self.handle("write")?;
         let mut out: Vec<u8> = Vec::new();
-        while self.eat_sym(Sym::Comma)? {
+        // Commas between items are optional to POV-Ray 3.7.0 (`#write (F "a" 1)`).
+        loop {
+            self.eat_sym(Sym::Comma)?;
+            if self.peek_sym()? == Some(Sym::RParen) {
+                break;
+            }
             let mut binary = None;
             if let Some(k) = self.peek_ident()? {
                 if binary_word(&k, 0.0).is_some() {
@@ -287,7 +292,11 @@ impl Parser {
     pub(super) fn read_directive(&mut self, span: Span) -> PResult<()> {
         let id = self.handle("read")?;
         let mut targets = Vec::new();
-        while self.eat_sym(Sym::Comma)? {
+        loop {
+            self.eat_sym(Sym::Comma)?;
+            if self.raw_peek_sym()? == Some(Sym::RParen) {
+                break;
+            }
             targets.push(self.raw_ident_or_element("to read into")?);
         }
         self.expect_sym(Sym::RParen, "to close #read")?;

@@ -4,6 +4,7 @@
 pub mod array;
 pub mod byref;
 pub mod camera;
+pub mod deprecated;
 pub mod directive;
 pub mod expr;
 pub mod fileio;

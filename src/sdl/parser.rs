@@ -121,6 +121,7 @@ pub struct Parser {
     /// macro argument that is a lone element can be bound by reference.
     pub(super) last_element: Option<super::array::LastElement>,
     pub(super) files: super::fileio::Files,
+    pub(super) deprecated: super::deprecated::Deprecations,
     /// `#while`/`#for` iterations so far, against `ParseOptions::max_loop_iterations`.
     pub(super) loop_iterations: u64,
 }
@@ -142,6 +143,7 @@ impl Parser {
             last_span: Span::default(),
             last_element: None,
             files: Default::default(),
+            deprecated: Default::default(),
             loop_iterations: 0,
         }
     }
@@ -360,6 +362,9 @@ impl Parser {
                     self.directive(&d, t.span)?;
                 }
                 Tok::Ident(name) => {
+                    if self.has_deprecations() {
+                        self.check_deprecated(name, t.span);
+                    }
                     if let Some(Value::Macro(m)) = self.lookup(name) {
                         let m = m.clone();
                         self.advance();
