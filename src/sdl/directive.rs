@@ -37,7 +37,10 @@ impl Parser {
             "declare" => self.declare(false, span),
             "local" => self.declare(true, span),
             "undef" => {
-                let name = self.raw_ident("after #undef")?;
+                let (name, elem) = self.raw_ident_or_element("after #undef")?;
+                if let Some(p) = elem {
+                    return self.set_element(&p, None);
+                }
                 for s in self.scopes.iter_mut().rev() {
                     if s.remove(&*name).is_some() {
                         break;
@@ -61,14 +64,18 @@ impl Parser {
             }
             "ifdef" | "ifndef" => {
                 self.expect_sym(Sym::LParen, &format!("after #{d}"))?;
-                let name = self.raw_ident(&format!("in #{d}"))?;
+                let (name, elem) = self.raw_ident_or_element(&format!("in #{d}"))?;
                 self.expect_sym(Sym::RParen, &format!("to close #{d}"))?;
-                // Not `lookup`: testing a name is not using it, so held-back warnings stay held.
-                let defined = self.scopes.iter().any(|s| s.contains_key(&*name));
+                let defined = self.is_defined(&name, &elem);
                 self.enter_if(defined == (d == "ifdef"), span)
             }
             "else" | "elseif" => match self.conds.pop() {
                 Some(Cond::If { .. }) => self.skip_inactive(span, false).map(|_| ()),
+                Some(c @ Cond::Switch { .. }) if d == "else" => {
+                    self.conds.push(c);
+                    self.switch_else();
+                    Ok(())
+                }
                 _ => Err(self.error_at(span, format!("#{d} without a matching #if"))),
             },
             "end" => self.end_directive(span),
@@ -95,9 +102,13 @@ impl Parser {
                 }
                 Ok(())
             }
-            "switch" | "case" | "range" | "break" | "fopen" | "fclose" | "read" | "write" => {
-                Err(self.error_at(span, format!("#{d} is not supported by lancer yet")))
-            }
+            "switch" => self.switch_directive(span),
+            "case" | "range" => self.case_directive(d, span),
+            "break" => self.break_directive(span),
+            "fopen" => self.fopen_directive(span),
+            "fclose" => self.fclose_directive(span),
+            "read" => self.read_directive(span),
+            "write" => self.write_directive(span),
             _ => Err(self.error_at(span, format!("unknown directive #{d}"))),
         }
     }
@@ -168,8 +179,9 @@ impl Parser {
     fn end_directive(&mut self, span: Span) -> PResult<()> {
         let depth = self.frames.len() - 1;
         match self.conds.pop() {
-            Some(Cond::If { frame }) if frame == depth => Ok(()),
+            Some(Cond::If { frame }) | Some(Cond::Switch { frame, .. }) if frame == depth => Ok(()),
             Some(Cond::While { frame, cond_pos }) if frame == depth => {
+                self.count_loop_iteration(span)?;
                 self.frames[frame].pos = cond_pos;
                 if self.parse_float()? != 0.0 {
                     self.conds.push(Cond::While { frame, cond_pos });
@@ -185,6 +197,7 @@ impl Parser {
                 end,
                 step,
             }) if frame == depth => {
+                self.count_loop_iteration(span)?;
                 let v = match self.lookup(&var) {
                     Some(Value::Float(v)) => *v + step,
                     _ => return Err(self.error_at(span, format!("the #for loop variable '{var}' was changed to a non-float inside the loop"))),
@@ -260,13 +273,17 @@ impl Parser {
     }
 
     fn declare(&mut self, local: bool, _span: Span) -> PResult<()> {
-        let mut name = self.raw_ident(if local {
+        let deprecation = self.parse_deprecation()?;
+        let name = self.raw_ident(if local {
             "after #local"
         } else {
             "after #declare"
         })?;
-        if &*name == "deprecated" {
-            name = self.deprecated_name()?;
+        if let Some(d) = deprecation {
+            self.mark_deprecated(name.clone(), d);
+        }
+        if self.raw_peek_sym()? == Some(Sym::LBracket) {
+            return self.declare_element(name, _span);
         }
         self.expect_sym(Sym::Eq, &format!("after '{name}' in the declaration"))?;
         // Warnings from identifiers used before this declaration belong where they were used.
@@ -280,24 +297,7 @@ impl Parser {
         if self.raw_peek_sym()? == Some(Sym::Semi) {
             self.advance();
         }
-        self.set_var(name, v, local);
-        Ok(())
-    }
-
-    /// `#declare deprecated [once] "message" Name = ...` (3.7): the message is a warning held
-    /// back, like the declaration's own warnings, until the name is used.
-    fn deprecated_name(&mut self) -> PResult<Rc<str>> {
-        let t = self.raw_peek()?.ok_or_else(|| self.eof_error())?;
-        if matches!(&t.tok, Tok::Ident(k) if &**k == "once") {
-            self.advance();
-        }
-        let span = self.cur_span();
-        let message = self.parse_string()?;
-        let name = self.raw_ident("after the deprecation message")?;
-        let from = self.warnings.len();
-        self.warn(span, format!("'{name}' is deprecated: {message}"));
-        self.defer_warnings(&name, from);
-        Ok(name)
+        self.assign_var(name, v, local)
     }
 
     /// The right-hand side of a declaration or a macro argument: anything an identifier can hold.
@@ -368,6 +368,14 @@ impl Parser {
                 self.unsupported(k, t.span);
                 self.skip_block()?;
                 Ok(Value::Skipped(k.clone()))
+            }
+            "array" => {
+                self.advance();
+                self.parse_array(t.span)
+            }
+            "spline" => {
+                self.advance();
+                self.parse_spline(t.span)
             }
             _ => match self.lookup(k) {
                 Some(
@@ -440,7 +448,7 @@ impl Parser {
                 if matches!(self.peek_sym()?, Some(Sym::Comma) | Some(Sym::RParen)) {
                     args.push(None);
                 } else {
-                    args.push(Some(self.parse_rvalue()?));
+                    args.push(Some(self.parse_macro_arg()?));
                 }
                 if self.eat_sym(Sym::RParen)? {
                     break;
@@ -471,7 +479,7 @@ impl Parser {
             return Err(self.error_at(
                 span,
                 format!(
-                    "too many nested macro calls (more than 200): does {} call itself without end?",
+                    "too many nested macro calls (more than 200; POV-Ray says \"Too many nested symbol tables\"): does {} call itself without end?",
                     m.name
                 ),
             ));

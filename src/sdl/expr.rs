@@ -323,6 +323,9 @@ impl Parser {
     }
 
     fn parse_ident_value(&mut self, k: Rc<str>, span: Span) -> PResult<Value> {
+        if let Some(v) = self.lang_ident_value(&k, span)? {
+            return Ok(v);
+        }
         if let Some(v) = self.lookup(&k).cloned() {
             if let Value::Function(func) = &v {
                 // A function identifier is called when followed by `(`; alone it is a value

@@ -1,15 +1,23 @@
 //! The POV-Ray scene description language: lexer, token stream and the one parser that
 //! executes directives as it reads.
 
+pub mod array;
 pub mod builtins_math;
+pub mod byref;
 pub mod camera;
+pub mod deprecated;
 pub mod directive;
 pub mod expr;
+pub mod fileio;
 pub mod function_parse;
 pub mod lexer;
+pub mod limits;
 pub mod object;
 pub mod parser;
 pub mod source;
+pub mod spline;
+pub mod strings;
+pub mod switch;
 pub mod texture;
 pub mod value;
 

@@ -38,6 +38,14 @@ pub struct ParseOptions {
     pub final_frame: i64,
     pub initial_clock: f64,
     pub final_clock: f64,
+    /// Lets `#fopen` read and write anywhere; by default only below the scene's directory
+    /// and the current directory (reads also in the library paths).
+    pub io_unrestricted: bool,
+    /// Further directories `#fopen` may read and write below.
+    pub io_allowed_dirs: Vec<PathBuf>,
+    /// Stops the parse with an error after this many `#while`/`#for` iterations in all;
+    /// `None` (the default) lets loops run as long as they like, as POV-Ray does.
+    pub max_loop_iterations: Option<u64>,
 }
 
 impl Default for ParseOptions {
@@ -54,6 +62,9 @@ impl Default for ParseOptions {
             final_frame: 0,
             initial_clock: 0.0,
             final_clock: 0.0,
+            io_unrestricted: false,
+            io_allowed_dirs: Vec::new(),
+            max_loop_iterations: None,
         }
     }
 }
@@ -101,6 +112,12 @@ pub(super) enum Cond {
         end: f64,
         step: f64,
     },
+    /// Inside a `#switch`: `matched` once a clause was true (later clauses fall through).
+    Switch {
+        frame: usize,
+        value: f64,
+        matched: bool,
+    },
 }
 
 pub struct Parser {
@@ -128,6 +145,13 @@ pub struct Parser {
     last_span: Span,
     /// States of the random streams `seed()` made, indexed by what it returned.
     pub(super) rand_streams: Vec<u32>,
+    /// The array element most recently resolved and the token positions it spanned, so a
+    /// macro argument that is a lone element can be bound by reference.
+    pub(super) last_element: Option<super::array::LastElement>,
+    pub(super) files: super::fileio::Files,
+    pub(super) deprecated: super::deprecated::Deprecations,
+    /// `#while`/`#for` iterations so far, against `ParseOptions::max_loop_iterations`.
+    pub(super) loop_iterations: u64,
 }
 
 impl Parser {
@@ -149,6 +173,10 @@ impl Parser {
             rel_ok: false,
             last_span: Span::default(),
             rand_streams: Vec::new(),
+            last_element: None,
+            files: Default::default(),
+            deprecated: Default::default(),
+            loop_iterations: 0,
         }
     }
 
@@ -273,6 +301,7 @@ impl Parser {
                     .with_note("POV-Ray's standard include files come with Debian's povray-includes package (apt-get install povray-includes); other directories can be added with +L<dir>"),
             ));
         };
+        self.check_include_depth(site)?;
         let (_, tokens) = self.load(&path, Some(site))?;
         self.push_frame(
             tokens,
@@ -291,7 +320,7 @@ impl Parser {
     ) -> PResult<()> {
         if self.frames.len() >= MAX_FRAME_DEPTH {
             let span = call_site.as_ref().map(|c| c.0).unwrap_or(self.last_span);
-            return Err(self.error_at(span, format!("too many nested include files or macro calls (more than {MAX_FRAME_DEPTH}); is a macro calling itself without end?")));
+            return Err(self.error_at(span, format!("too many nested macro calls (more than {MAX_FRAME_DEPTH}; POV-Ray says \"Too many nested symbol tables\"): is a macro calling itself without end?")));
         }
         let end = tokens.len();
         self.push_frame_range(tokens, 0, end, kind, call_site, scope);
@@ -349,7 +378,8 @@ impl Parser {
         let open = match self.conds.last() {
             Some(Cond::If { frame })
             | Some(Cond::While { frame, .. })
-            | Some(Cond::For { frame, .. }) => *frame == depth,
+            | Some(Cond::For { frame, .. })
+            | Some(Cond::Switch { frame, .. }) => *frame == depth,
             None => false,
         };
         if open {
@@ -387,10 +417,19 @@ impl Parser {
                     self.directive(&d, t.span)?;
                 }
                 Tok::Ident(name) => {
+                    if self.has_deprecations() {
+                        self.check_deprecated(name, t.span);
+                    }
                     if let Some(Value::Macro(m)) = self.lookup(name) {
                         let m = m.clone();
                         self.advance();
                         self.invoke_macro(&m, t.span)?;
+                    } else if matches!(self.lookup(name), Some(Value::Array(_)))
+                        && self.at_subscript()
+                    {
+                        let name = name.clone();
+                        self.advance();
+                        self.push_element(name, t.span)?;
                     } else {
                         return Ok(Some(t));
                     }
@@ -485,7 +524,15 @@ impl Parser {
                 self.released.borrow_mut().extend(held);
             }
         }
-        self.scopes.iter().rev().find_map(|s| s.get(name))
+        self.lookup_quiet(name)
+    }
+
+    /// `lookup` without counting as a use: `#ifdef`/`defined()` test a name, they do not use it.
+    pub(super) fn lookup_quiet(&self, name: &str) -> Option<&Value> {
+        match self.scopes.iter().rev().find_map(|s| s.get(name)) {
+            Some(Value::Ref(r)) => self.deref(r),
+            v => v,
+        }
     }
 
     /// An error at `span` with the include/macro chain of the current frames.

@@ -38,6 +38,12 @@ pub enum Value {
     /// Something lancer reads but does not render yet (`media`, `fog`, `pigment_map`, ...),
     /// named by its keyword so it can still be declared, passed and used.
     Skipped(Rc<str>),
+    Array(Rc<super::array::ArrayVal>),
+    Spline(Rc<super::spline::SplineDef>),
+    /// An open `#fopen` handle, by its identifier.
+    File(Rc<str>),
+    /// A macro parameter bound by reference to the caller's variable or array element.
+    Ref(Rc<super::array::ElemPath>),
 }
 
 impl Value {
@@ -62,6 +68,10 @@ impl Value {
             Value::Material(_) => "material",
             Value::SkySphere(_) => "sky_sphere",
             Value::Skipped(_) => "unsupported item",
+            Value::Array(_) => "array",
+            Value::Spline(_) => "spline",
+            Value::File(_) => "file handle",
+            Value::Ref(_) => "reference",
         }
     }
 
