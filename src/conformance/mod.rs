@@ -106,6 +106,23 @@ pub fn find_scenes(root: &Path) -> Result<Vec<String>, String> {
     Ok(out)
 }
 
+/// Copies a directory tree, following symbolic links (the sample scenes are a link farm).
+fn copy_tree(from: &Path, to: &Path) -> Result<(), String> {
+    std::fs::create_dir_all(to).map_err(|e| format!("cannot create {}: {e}", to.display()))?;
+    let entries =
+        std::fs::read_dir(from).map_err(|e| format!("cannot read {}: {e}", from.display()))?;
+    for e in entries.flatten() {
+        let (src, dst) = (e.path(), to.join(e.file_name()));
+        if src.is_dir() {
+            copy_tree(&src, &dst)?;
+        } else {
+            std::fs::copy(&src, &dst)
+                .map_err(|e| format!("cannot copy {}: {e}", src.display()))?;
+        }
+    }
+    Ok(())
+}
+
 /// The options both renderers get: POV-Ray's canonical ones from DESIGN.md (every option
 /// explicit, because Debian's povray.ini would otherwise open a display at 800×600).
 fn canonical_args(o: &Options, scene: &Path, out: &Path) -> Vec<String> {
@@ -135,6 +152,19 @@ pub fn run(o: &Options) -> Result<Vec<SceneResult>, String> {
     let scratch = std::env::temp_dir().join(format!("lancer-conformance-{}", std::process::id()));
     std::fs::create_dir_all(&scratch)
         .map_err(|e| format!("cannot create {}: {e}", scratch.display()))?;
+    // Some scenes write files (#fopen ... write) that others then read: both renderers work
+    // in a fresh copy, so the run neither changes the installed scenes nor depends on what an
+    // earlier run left there.
+    let copy = scratch.join("scenes");
+    copy_tree(&o.root, &copy)?;
+    let o = &Options {
+        root: copy,
+        only: o.only.clone(),
+        cache: o.cache.clone(),
+        povray: o.povray.clone(),
+        lancer: o.lancer.clone(),
+        ..*o
+    };
     let next = AtomicUsize::new(0);
     let results: Mutex<Vec<Option<SceneResult>>> =
         Mutex::new((0..names.len()).map(|_| None).collect());

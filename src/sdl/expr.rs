@@ -499,88 +499,12 @@ impl Parser {
         self.color_components(c, None)
     }
 
+    /// Math built-ins (string ones and `defined` are read earlier, in `lang_ident_value`).
     fn builtin_call(&mut self, name: &str, span: Span) -> PResult<Value> {
         if let Some(r) = self.math_builtin(name, span) {
             return r;
         }
-        let arity: usize = match name {
-            "strlen" | "val" | "str_len" | "defined" => 1,
-            "str" | "concat" | "vstr" | "substr" | "chr" | "asc" => 0,
-            _ => return Err(self.error_at(span, format!("undeclared identifier '{name}'"))),
-        };
-        let args = self.call_args(name)?;
-        let want = |n: usize| -> PResult<()> {
-            if args.len() == n {
-                Ok(())
-            } else {
-                Err(self.error_at(
-                    span,
-                    format!("{name} takes {n} argument(s), {} given", args.len()),
-                ))
-            }
-        };
-        if arity == 1 {
-            want(1)?;
-        }
-        let fl = |p: &Parser, i: usize| p.float_of(args[i].0.clone(), args[i].1);
-        let r = |x: f64| Ok(Value::Float(x));
-        match name {
-            "strlen" | "str_len" => match &args[0].0 {
-                Value::Str(s) => r(s.chars().count() as f64),
-                o => Err(self.error_at(
-                    args[0].1,
-                    format!("strlen needs a string, found a {}", o.type_name()),
-                )),
-            },
-            "str" => {
-                want(3)?;
-                let (v, w, p) = (fl(self, 0)?, fl(self, 1)?, fl(self, 2)?);
-                Ok(Value::Str(format_str(v, w as i64, p as i64).into()))
-            }
-            "concat" => {
-                let mut s = String::new();
-                for (v, sp) in &args {
-                    match v {
-                        Value::Str(x) => s.push_str(x),
-                        o => {
-                            return Err(self.error_at(
-                                *sp,
-                                format!("concat needs strings, found a {}", o.type_name()),
-                            ))
-                        }
-                    }
-                }
-                Ok(Value::Str(s.into()))
-            }
-            "chr" => {
-                want(1)?;
-                Ok(Value::Str(
-                    char::from_u32(fl(self, 0)? as u32)
-                        .unwrap_or(' ')
-                        .to_string()
-                        .into(),
-                ))
-            }
-            _ => Err(self.error_at(
-                span,
-                format!("the function {name} is not supported by lancer yet"),
-            )),
-        }
-    }
-}
-
-/// POV-Ray's `str(value, width, precision)`.
-fn format_str(v: f64, w: i64, p: i64) -> String {
-    let s = if p < 0 {
-        format!("{v}")
-    } else {
-        format!("{v:.*}", p as usize)
-    };
-    let w = w.unsigned_abs() as usize;
-    if s.len() < w {
-        format!("{s:>w$}")
-    } else {
-        s
+        Err(self.error_at(span, format!("undeclared identifier '{name}'")))
     }
 }
 
