@@ -286,3 +286,44 @@ fn unsupported_in_a_declaration_warns_only_when_used() {
     let unused_outer = format!("{decl}#declare U = union {{ object {{ Q }} }}\n");
     assert!(warnings(&unused_outer).is_empty());
 }
+
+#[test]
+fn local_whose_value_comes_out_of_a_macro_lands_in_the_callers_scope() {
+    // language/tracevines.pov: the macro's value ends while its scope is still open.
+    let s = parse(
+        "#macro Pick(A) #local Q = A * 2; Q #end
+         #macro Use() #local N = Pick(3); sphere { 0, N } #end
+         Use()",
+    );
+    assert_eq!(radii(&s), vec![6.0]);
+}
+
+#[test]
+fn blocks_lancer_skips_still_run_their_directives() {
+    // shapes.inc's mesh2 macros put the closing braces in #if branches.
+    let s = parse(
+        "#declare W = 0;
+         blob { threshold 0.5 #if (W) sphere { 0, 1, 1 } } #else sphere { 0, 2, 1 } } #end
+         #declare After = 3;
+         sphere { 0, After }",
+    );
+    assert_eq!(radii(&s), vec![3.0]);
+}
+
+#[test]
+fn older_and_looser_spellings_povray_accepts() {
+    // `default { }` without '#', a '#' no directive follows, multi-line strings, macro
+    // arguments without a comma after an object, a declared light_source reused.
+    let s = parse(
+        "default { finish { ambient 0.2 } }
+         #declare S = \"two
+lines\";
+         #macro Two(O, V) object { O translate V } #end
+         Two(sphere { 0, 1 } -y)
+         #declare L = light_source { <1, 2, 3> color rgb 1 }
+         light_source { L translate x }
+         camera { location -5*z look_at 0# 
+         }",
+    );
+    assert_eq!(s.objects.len(), 2);
+}

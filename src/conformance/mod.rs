@@ -116,8 +116,7 @@ fn copy_tree(from: &Path, to: &Path) -> Result<(), String> {
         if src.is_dir() {
             copy_tree(&src, &dst)?;
         } else {
-            std::fs::copy(&src, &dst)
-                .map_err(|e| format!("cannot copy {}: {e}", src.display()))?;
+            std::fs::copy(&src, &dst).map_err(|e| format!("cannot copy {}: {e}", src.display()))?;
         }
     }
     Ok(())

@@ -338,10 +338,11 @@ impl Parser {
                 let m = glam::DMat3::from_axis_angle(axis.normalize(), ang.to_radians());
                 Ok(Value::vec3(m * p))
             }
-            "vturbulence" => Err(self.error_at(
-                span,
-                "vturbulence is not supported by lancer yet (it needs POV-Ray's noise function)",
-            )),
+            "vturbulence" => {
+                // Needs POV-Ray's noise function, which lancer does not have yet.
+                self.unsupported("vturbulence (gives <0,0,0> here)", span);
+                Ok(Value::vec3(DVec3::ZERO))
+            }
             "seed" => {
                 let s = c_int(fl(self, 0)?) as u32;
                 self.rand_streams.push(s);
@@ -364,11 +365,15 @@ impl Parser {
             }
             "inside" => {
                 let p = ve(self, 1)?;
-                let obj = self.runtime_object(name, &args[0])?;
+                let Some(obj) = self.runtime_object(name, &args[0])? else {
+                    return f(0.0);
+                };
                 f(obj.inside(p) as u8 as f64)
             }
             "min_extent" | "max_extent" => {
-                let obj = self.runtime_object(name, &args[0])?;
+                let Some(obj) = self.runtime_object(name, &args[0])? else {
+                    return Ok(Value::vec3(DVec3::ZERO));
+                };
                 let b = obj.bounds;
                 let v = if name == "min_extent" { b.min } else { b.max };
                 Ok(Value::vec3(DVec3::new(
@@ -384,12 +389,14 @@ impl Parser {
         }
     }
 
-    /// The object an identifier argument holds, built as the renderer would build it.
+    /// The object an identifier argument holds, built as the renderer would build it; `None`,
+    /// with a warning, when nothing in it is geometry lancer renders yet (a `text` or `blob`):
+    /// the caller then answers as for an empty object, so the scene still parses.
     fn runtime_object(
-        &self,
+        &mut self,
         name: &str,
         a: &(Value, Span),
-    ) -> PResult<crate::scene::object::Object> {
+    ) -> PResult<Option<crate::scene::object::Object>> {
         let Value::Object(desc) = &a.0 else {
             return Err(self.error_at(
                 a.1,
@@ -404,11 +411,14 @@ impl Parser {
         scene.global.assumed_gamma = Some(1.0);
         let mut built = crate::scene::build::build(&scene, 1, 1).scene;
         match built.objects.pop() {
-            Some(o) if built.objects.is_empty() => Ok(o),
-            _ => Err(self.error_at(
-                a.1,
-                format!("{name}: this object has no geometry lancer can test"),
-            )),
+            Some(o) if built.objects.is_empty() => Ok(Some(o)),
+            _ => {
+                self.warn(
+                    a.1,
+                    format!("{name}: this object has no geometry lancer renders yet; answering as for an empty object (POV-Ray's answer will differ)"),
+                );
+                Ok(None)
+            }
         }
     }
 
@@ -450,7 +460,10 @@ impl Parser {
         let obj = self.runtime_object("trace", &args[0])?;
         let ray = Ray::new(start, dir.normalize());
         let mut scratch = crate::scene::object::Scratch::default();
-        let (point, normal) = match obj.first_hit(&ray, f64::INFINITY, &mut scratch) {
+        let hit = obj
+            .as_ref()
+            .and_then(|o| o.first_hit(&ray, f64::INFINITY, &mut scratch));
+        let (point, normal) = match hit {
             Some(h) => {
                 let p = ray.at(h.t);
                 (p, h.obj.normal(p, &h))
@@ -472,7 +485,10 @@ impl Parser {
     ) -> PResult<Value> {
         let args = self.call_args(name)?;
         if let Some(why) = &func.unsupported {
-            return Err(self.error_at(span, format!("cannot evaluate {name}: {why}")));
+            // As for any feature lancer lacks: a warning naming it, and a neutral value so the
+            // scene still parses (POV-Ray's picture will differ where the value matters).
+            self.unsupported(&format!("{why} ({name} gives 0 here)"), span);
+            return Ok(Value::Float(0.0));
         }
         if let Some(n) = func.arity() {
             if args.len() != n {

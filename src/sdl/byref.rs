@@ -83,10 +83,25 @@ impl Parser {
     /// `#declare`/`#local` of a name: writes through a by-reference parameter, otherwise
     /// binds as `set_var` does.
     pub(super) fn assign_var(&mut self, name: Rc<str>, v: Value, local: bool) -> PResult<()> {
+        let depth = self.scopes.len();
+        self.assign_var_at(name, v, local, depth)
+    }
+
+    /// Like `assign_var`, as seen from the scopes `..depth`: a declaration whose value came out
+    /// of a macro (`#local P = M();`) ends while the macro's scope is still open, and must
+    /// not land in it.
+    pub(super) fn assign_var_at(
+        &mut self,
+        name: Rc<str>,
+        v: Value,
+        local: bool,
+        depth: usize,
+    ) -> PResult<()> {
+        let depth = depth.clamp(1, self.scopes.len());
         let idx = if local {
-            self.scopes.len() - 1
+            depth - 1
         } else {
-            (1..self.scopes.len())
+            (1..depth)
                 .rev()
                 .find(|&i| self.scopes[i].contains_key(&name))
                 .unwrap_or(0)

@@ -31,6 +31,8 @@ impl Parser {
                     self.expect_sym(Sym::RBrace, "to close background")?;
                 }
                 "sky_sphere" => self.parse_sky_sphere()?,
+                // `default { ... }` without the `#` is the old spelling, still read by 3.7.
+                "default" => self.default_directive()?,
                 "global_settings" => self.parse_global_settings()?,
                 k if UNSUPPORTED_BLOCKS.contains(&k) => {
                     self.unsupported(k, t.span);
@@ -185,7 +187,8 @@ impl Parser {
                 "sky" => cam.sky = self.parse_vector()?,
                 "angle" => {
                     cam.angle = Some(self.parse_float()?);
-                    if self.starts_number()? {
+                    let comma = self.eat_sym(Sym::Comma)?;
+                    if comma || self.starts_number()? {
                         self.unsupported("angle (vertical camera angle)", t.span);
                         self.parse_float()?;
                     }

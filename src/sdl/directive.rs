@@ -288,6 +288,7 @@ impl Parser {
         self.expect_sym(Sym::Eq, &format!("after '{name}' in the declaration"))?;
         // Warnings from identifiers used before this declaration belong where they were used.
         self.flush_released();
+        let depth = self.scopes.len();
         let first_warning = self.warnings.len();
         let v = self.parse_rvalue()?;
         self.flush_released();
@@ -297,7 +298,7 @@ impl Parser {
         if self.raw_peek_sym()? == Some(Sym::Semi) {
             self.advance();
         }
-        self.assign_var(name, v, local)
+        self.assign_var_at(name, v, local, depth)
     }
 
     /// The right-hand side of a declaration or a macro argument: anything an identifier can hold.
@@ -453,7 +454,9 @@ impl Parser {
                 if self.eat_sym(Sym::RParen)? {
                     break;
                 }
-                self.expect_sym(Sym::Comma, "between macro arguments")?;
+                // POV-Ray lets the comma go after an argument that is not a plain expression
+                // (`Align_Object(Center_Object(...), x) -y, ...)` in incdemo/shapes.pov).
+                self.skip_optional_comma()?;
             }
         }
         if args.len() > m.params.len() || m.params[args.len()..].iter().any(|p| !p.1) {
@@ -494,7 +497,7 @@ impl Parser {
     }
 
     /// `#default { texture/pigment/finish }` changes what later objects start from.
-    fn default_directive(&mut self) -> PResult<()> {
+    pub(super) fn default_directive(&mut self) -> PResult<()> {
         self.expect_sym(Sym::LBrace, "after #default")?;
         loop {
             let t = self.next_tok()?;

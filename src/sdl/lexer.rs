@@ -117,12 +117,21 @@ pub fn lex(text: &str, file: u32) -> Result<Vec<Token>, LexError> {
         if rest.is_empty() {
             return Ok(out);
         }
+        // POV-Ray passes over a `#` that no directive name follows (`look_at <0,2,0>#` at the
+        // end of a line in camera/spherical.pov).
+        if let Some(after) = rest.strip_prefix('#') {
+            let t = after.trim_start_matches([' ', '\t']);
+            if !t.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_') {
+                rest = after;
+                continue;
+            }
+        }
         let start = text.len() - rest.len();
         let (next, tok) = token(rest).map_err(|_| {
             let c = rest.chars().next().unwrap_or('?');
             LexError {
                 message: if c == '"' {
-                    "unterminated string: a string must end with '\"' on the same line".to_string()
+                    "unterminated string: no closing '\"' before the end of the file".to_string()
                 } else if c.is_control() || c == '\u{fffd}' {
                     format!(
                         "unexpected byte {:#04x}: this does not look like scene text",
@@ -221,7 +230,7 @@ fn string(s: &str) -> IResult<&str, Tok> {
         match b[i] {
             b'\\' => i += 2,
             b'"' => return Ok((&r[i + 1..], Tok::Str(r[..i].into()))),
-            b'\n' => break,
+            // POV-Ray strings may run over several lines (shapes3.inc's #warning texts).
             _ => i += 1,
         }
     }

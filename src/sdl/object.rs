@@ -54,6 +54,7 @@ impl Parser {
             "smooth_triangle" => Parser::smooth_triangle,
             "mesh" => Parser::mesh,
             "union" => |p, s| p.csg(CsgOp::Union, s),
+            "light_group" => Parser::light_group,
             "merge" => |p, s| p.csg(CsgOp::Merge, s),
             "intersection" => |p, s| p.csg(CsgOp::Intersection, s),
             "difference" => |p, s| p.csg(CsgOp::Difference, s),
@@ -151,6 +152,10 @@ impl Parser {
             "interior" => obj.interior = Some(self.parse_interior_block()?),
             "material" => self.material(obj)?,
             "no_shadow" => obj.no_shadow = true,
+            // Only meaningful in a light_group, whose lights lancer does not keep apart yet.
+            "global_lights" => {
+                self.optional_bool()?;
+            }
             "inverse" => obj.inverse = !obj.inverse,
             "hollow" => obj.hollow = Some(self.optional_bool()?),
             "open" => match &mut obj.shape {
@@ -493,6 +498,16 @@ impl Parser {
                         data.textures.push(self.parse_texture_block()?);
                         texture = Some(data.textures.len() as u32 - 1);
                     }
+                    Tok::Ident(k) if &**k == "uv_vectors" => {
+                        // Texture coordinates for uv_mapping, which lancer does not do yet.
+                        self.unsupported(k, t.span);
+                        for i in 0..3 {
+                            if i > 0 {
+                                self.skip_optional_comma()?;
+                            }
+                            self.parse_expr()?;
+                        }
+                    }
                     _ => {
                         return Err(self
                             .error_at(inner, format!("unexpected {} in a mesh triangle", t.tok)))
@@ -514,6 +529,25 @@ impl Parser {
         while let Some(o) = self.parse_object()? {
             children.push(o);
         }
+        self.finish_object(ObjectDesc::new(ShapeDesc::Csg { op, children }), open)
+    }
+
+    /// `light_group { objects lights [global_lights] }`: lancer lights the objects with every
+    /// light in the scene, as a union would be, and says so.
+    fn light_group(&mut self, s: Span) -> PResult<ObjectDesc> {
+        self.unsupported("light_group (read as a union)", s);
+        let open = self.open_brace("light_group")?;
+        let mut children = Vec::new();
+        loop {
+            if let Some(o) = self.parse_object()? {
+                children.push(o);
+            } else if self.eat_keyword("global_lights")? {
+                self.optional_bool()?;
+            } else {
+                break;
+            }
+        }
+        let op = CsgOp::Union;
         self.finish_object(ObjectDesc::new(ShapeDesc::Csg { op, children }), open)
     }
 
@@ -541,14 +575,32 @@ impl Parser {
 
     fn light_source(&mut self, _s: Span) -> PResult<ObjectDesc> {
         let open = self.open_brace("light_source")?;
-        let position = self.parse_vector()?;
-        self.skip_optional_comma()?;
-        let mut light = LightDesc {
-            position,
-            color: DVec3::ONE,
-            shadowless: false,
-            fade_distance: None,
-            fade_power: 0.0,
+        // `light_source { DeclaredLight modifiers }` starts from a declared light.
+        let mut base: Option<ObjectDesc> = None;
+        if let Some(k) = self.peek_ident()? {
+            if let Some(Value::Object(o)) = self.lookup(&k) {
+                if matches!(o.shape, ShapeDesc::Light(_)) {
+                    base = Some((**o).clone());
+                    self.advance();
+                }
+            }
+        }
+        let mut light = match &base {
+            Some(ObjectDesc {
+                shape: ShapeDesc::Light(l),
+                ..
+            }) => l.clone(),
+            _ => {
+                let position = self.parse_vector()?;
+                self.skip_optional_comma()?;
+                LightDesc {
+                    position,
+                    color: DVec3::ONE,
+                    shadowless: false,
+                    fade_distance: None,
+                    fade_power: 0.0,
+                }
+            }
         };
         let mut obj_tf = Transform::IDENTITY;
         loop {
@@ -609,7 +661,13 @@ impl Parser {
                 _ => light.color = self.parse_color()?.rgb,
             }
         }
-        let mut obj = ObjectDesc::new(ShapeDesc::Light(light));
+        let mut obj = match base {
+            Some(mut b) => {
+                b.shape = ShapeDesc::Light(light);
+                b
+            }
+            None => ObjectDesc::new(ShapeDesc::Light(light)),
+        };
         obj.apply_transform(&obj_tf);
         Ok(obj)
     }

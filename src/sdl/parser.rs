@@ -569,12 +569,14 @@ impl Parser {
         self.warnings.push(d);
     }
 
-    /// Skips a balanced `{ ... }` block raw (used for blocks of unsupported features).
+    /// Skips a balanced `{ ... }` block (used for blocks of unsupported features).
     pub(super) fn skip_block(&mut self) -> PResult<()> {
         let open = self.expect_sym(Sym::LBrace, "to open the block")?;
         let mut depth = 1;
         while depth > 0 {
-            let Some(t) = self.raw_peek()? else {
+            // Directives and macro calls inside still run, as in POV-Ray: braces may sit in
+            // #if branches (shapes.inc's mesh2 macros), and declarations must happen.
+            let Some(t) = self.peek()? else {
                 return Err(self.error_at(open, "this '{' is never closed"));
             };
             self.advance();

@@ -63,13 +63,30 @@ const UNSUPPORTED_PATTERNS: &[&str] = &[
 ];
 
 /// Pattern modifiers that change the picture and that lancer reads past with a warning.
+/// Pattern modifiers followed by one value.
 const UNSUPPORTED_MODIFIERS: &[&str] = &[
     "turbulence",
     "octaves",
     "omega",
     "lambda",
     "noise_generator",
+    "agate_turb",
+    "metric",
+    "offset",
+    "form",
+    "control0",
+    "control1",
+    "interpolate",
+    "orientation",
+    "dist_exp",
+    "strength",
+    "mortar",
+    "brick_size",
+    "exponent",
 ];
+
+/// Pattern modifiers that stand alone.
+const UNSUPPORTED_FLAGS: &[&str] = &["uv_mapping", "solid"];
 
 impl Parser {
     fn begin_block(&mut self, what: &str) -> PResult<Span> {
@@ -200,6 +217,14 @@ impl Parser {
                     self.unsupported(k, t.span);
                     self.parse_expr()?;
                 }
+                k if UNSUPPORTED_FLAGS.contains(&k) => self.unsupported(k, t.span),
+                "interior" | "exterior" => {
+                    // Fractal patterns' inside and outside colouring: type, factor.
+                    self.unsupported(k, t.span);
+                    self.parse_float()?;
+                    self.skip_optional_comma()?;
+                    self.parse_float()?;
+                }
                 k if UNSUPPORTED_PATTERNS.contains(&k) => {
                     self.unsupported(&format!("{k} pattern"), t.span);
                     self.skip_pattern_args(k)?;
@@ -252,7 +277,13 @@ impl Parser {
                     self.skip_block()?;
                 }
             }
-            "julia" | "mandel" | "magnet" | "tiling" | "spiral1" | "spiral2" => {
+            "julia" => {
+                // julia <complex>, iterations
+                self.parse_vector()?;
+                self.skip_optional_comma()?;
+                self.parse_float()?;
+            }
+            "mandel" | "magnet" | "tiling" | "spiral1" | "spiral2" => {
                 self.parse_expr()?;
             }
             _ => {}
@@ -577,9 +608,20 @@ impl Parser {
                 "pigment" => tex.pigment = self.parse_pigment_block(Some(tex.pigment.clone()))?,
                 "finish" => tex.finish = self.parse_finish_block(Some(tex.finish.clone()))?,
                 "normal" => tex.normal = Some(self.parse_normal_block(t.span)?),
-                "checker" | "hexagon" | "brick" | "material_map" | "tiles" | "texture_map"
-                | "image_pattern" | "gradient" | "bozo" | "granite" | "marble" | "wood"
-                | "agate" | "spotted" | "leopard" | "onion" | "radial" => {
+                "uv_mapping" => self.unsupported(k, t.span),
+                k if UNSUPPORTED_PATTERNS.contains(&k)
+                    || matches!(
+                        k,
+                        "checker"
+                            | "gradient"
+                            | "material_map"
+                            | "tiles"
+                            | "texture_map"
+                            | "image_pattern"
+                            | "object"
+                            | "slope"
+                    ) =>
+                {
                     self.unsupported(&format!("{k} (patterned texture)"), t.span);
                     self.skip_texture_pattern()?;
                 }
@@ -592,7 +634,7 @@ impl Parser {
     fn skip_texture_pattern(&mut self) -> PResult<()> {
         let mut depth = 0;
         loop {
-            let t = self.raw_peek()?.ok_or_else(|| self.eof_error())?;
+            let t = self.peek()?.ok_or_else(|| self.eof_error())?;
             match t.tok {
                 Tok::Sym(Sym::LBrace) => depth += 1,
                 Tok::Sym(Sym::RBrace) if depth == 0 => return Ok(()),
