@@ -86,10 +86,10 @@ pub fn panic_message(stderr: &str, code: Option<i32>) -> String {
 /// lines POV-Ray wraps it onto.
 pub fn pov_error(stderr: &str) -> String {
     let lines: Vec<&str> = stderr.lines().collect();
-    let Some(i) = lines
-        .iter()
-        .position(|l| l.contains("Error") || l.contains("error"))
-    else {
+    // "Possible Parse Error" is POV-Ray's name for a warning.
+    let is_error =
+        |l: &&str| (l.contains("Error") || l.contains("error")) && !l.contains("Possible");
+    let Some(i) = lines.iter().position(|l| is_error(&l)) else {
         return "POV-Ray failed without an error message".to_string();
     };
     let mut msg = lines[i].trim().to_string();
@@ -355,7 +355,7 @@ mod tests {
 
     #[test]
     fn pov_error_joins_wrapped_lines_and_times_add_up() {
-        let err = "==== [Parsing...] ====\nFile 'x.pov' line 2: Parse Error: No matching } in 'sphere', camera found\n instead\nFatal error in parser: Cannot parse input.\n";
+        let err = "Possible Parse Error: assumed_gamma not specified\n==== [Parsing...] ====\nFile 'x.pov' line 2: Parse Error: No matching } in 'sphere', camera found\n instead\nFatal error in parser: Cannot parse input.\n";
         assert_eq!(
             pov_error(err),
             "File 'x.pov' line 2: Parse Error: No matching } in 'sphere', camera found instead"

@@ -132,15 +132,13 @@ impl Parser {
                     .unwrap_or_default();
                 Value::Str(name.into())
             }
-            "datetime" => {
-                return Err(self.error_at(span, format!("'{k}' is not supported by lancer yet")))
-            }
+            "datetime" => self.string_function(k, span)?,
             _ => return Ok(None),
         };
         Ok(Some(v))
     }
 
-    fn string_function(&mut self, name: &str, span: Span) -> PResult<Value> {
+    pub(super) fn string_function(&mut self, name: &str, span: Span) -> PResult<Value> {
         self.expect_sym(Sym::LParen, &format!("after the function name {name}"))?;
         let mut args: Vec<(Value, Span)> = Vec::new();
         if !self.eat_sym(Sym::RParen)? {
@@ -177,6 +175,26 @@ impl Parser {
             }
         };
         let out = match name {
+            "datetime" => {
+                if args.is_empty() || args.len() > 2 {
+                    return Err(self.error_at(span, "datetime takes 1 or 2 arguments"));
+                }
+                let days = fl(self, 0)?;
+                let format = if args.len() == 2 {
+                    st(self, 1)?
+                } else {
+                    "%Y-%m-%d %H:%M:%SZ".into()
+                };
+                match datetime(days, &format) {
+                    Some(s) => Value::Str(s.into()),
+                    None => {
+                        return Err(self.error_at(
+                            span,
+                            format!("datetime cannot format {days} days with \"{format}\""),
+                        ))
+                    }
+                }
+            }
             "str" => {
                 want(self, 3)?;
                 let (v, l, p) = (fl(self, 0)?, fl(self, 1)?, fl(self, 2)?);
@@ -320,5 +338,39 @@ mod tests {
         assert_eq!(strcmp("b", "a"), 1.0);
         assert_eq!(strcmp("abc", "abc"), 0.0);
         assert_eq!(strcmp("abcd", "abc"), 100.0);
+    }
+}
+
+/// `datetime(days, format)`: days since 2000-01-01 00:00:00 UTC (what `now` gives) formatted
+/// with strftime's conversions. `None` for a date out of range or a bad conversion, which
+/// chrono reports as a formatting error rather than text.
+fn datetime(days: f64, format: &str) -> Option<String> {
+    use std::fmt::Write as _;
+    let epoch = chrono::NaiveDate::from_ymd_opt(2000, 1, 1)?.and_hms_opt(0, 0, 0)?;
+    let ms = days * 86_400_000.0;
+    if !ms.is_finite() || ms.abs() > 1e15 {
+        return None;
+    }
+    let t = epoch.checked_add_signed(chrono::TimeDelta::milliseconds(ms as i64))?;
+    let mut out = String::new();
+    write!(out, "{}", t.format(format)).ok()?;
+    Some(out)
+}
+
+#[cfg(test)]
+mod datetime_tests {
+    #[test]
+    fn formats_days_since_2000() {
+        // The same strings as povray 3.7 prints for datetime(0) and datetime(366.5, "%Y-%m-%d %H:%M").
+        assert_eq!(
+            super::datetime(0.0, "%Y-%m-%d %H:%M:%SZ").unwrap(),
+            "2000-01-01 00:00:00Z"
+        );
+        assert_eq!(
+            super::datetime(366.5, "%Y-%m-%d %H:%M").unwrap(),
+            "2001-01-01 12:00"
+        );
+        assert!(super::datetime(0.0, "%Q").is_none());
+        assert!(super::datetime(f64::NAN, "%Y").is_none());
     }
 }
