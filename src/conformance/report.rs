@@ -89,7 +89,7 @@ pub fn pov_error(stderr: &str) -> String {
     // "Possible Parse Error" is POV-Ray's name for a warning.
     let is_error =
         |l: &&str| (l.contains("Error") || l.contains("error")) && !l.contains("Possible");
-    let Some(i) = lines.iter().position(|l| is_error(l)) else {
+    let Some(i) = lines.iter().position(is_error) else {
         return "POV-Ray failed without an error message".to_string();
     };
     let mut msg = lines[i].trim().to_string();
