@@ -168,6 +168,11 @@ impl Aabb {
             max: self.max.min(o.max),
         }
     }
+    /// Whether `p` lies in the box (its faces included).
+    pub fn contains(&self, p: DVec3) -> bool {
+        p.cmpge(self.min).all() && p.cmple(self.max).all()
+    }
+
     pub fn grow(&self, p: DVec3) -> Aabb {
         Aabb {
             min: self.min.min(p),

@@ -310,8 +310,6 @@ impl Scene {
     /// Whether `p` is inside any object other than `leaf` (CSG nodes holding `leaf` are
     /// judged by their other members).
     pub fn inside_other(&self, p: DVec3, leaf: &Object) -> bool {
-        self.objects
-            .iter()
-            .any(|o| o.bounds.grow(p) == o.bounds && o.inside_without(p, leaf))
+        self.objects.iter().any(|o| o.inside_without(p, leaf))
     }
 }

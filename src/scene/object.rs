@@ -145,7 +145,13 @@ impl Object {
             }
             ObjKind::Csg { op, children } => {
                 let mine = s.surface.len();
+                let inv_dir = ray.dir.recip();
                 for (i, c) in children.iter().enumerate() {
+                    // A child whose box the ray misses adds no crossings (transparent shadows
+                    // through a union of many parts would otherwise test every part).
+                    if c.bounds.hit(ray.origin, inv_dir, f64::INFINITY).is_none() {
+                        continue;
+                    }
                     // Each child's crossings are appended, then filtered in place.
                     let start = s.surface.len();
                     c.all_hits(ray, s);
@@ -169,6 +175,10 @@ impl Object {
     }
 
     pub fn inside(&self, p: DVec3) -> bool {
+        // Bounds enclose the (un-inverted) solid, so outside them the answer is known.
+        if !self.bounds.contains(p) {
+            return self.inverse;
+        }
         let r = match &self.kind {
             ObjKind::Shape(s) => {
                 let lp = match &self.transform {
@@ -192,7 +202,7 @@ impl Object {
 
     /// Like `inside`, but as if `leaf` were not part of this object.
     pub fn inside_without(&self, p: DVec3, leaf: &Object) -> bool {
-        if std::ptr::eq(self, leaf) {
+        if std::ptr::eq(self, leaf) || (!self.inverse && !self.bounds.contains(p)) {
             return false;
         }
         match &self.kind {

@@ -563,7 +563,12 @@ impl Parser {
         }
     }
 
+    /// A warning at `span`, once: a macro called 400 times says it once, not 400 times.
     pub fn warn(&mut self, span: Span, message: impl Into<String>) {
+        let message = message.into();
+        if !self.warned.insert((message.as_str().into(), span)) {
+            return;
+        }
         let mut d = Diagnostic::warning(message, Some(span));
         d.chain = self.chain();
         self.warnings.push(d);
