@@ -62,6 +62,8 @@ pub struct CheckArgs {
     /// Print only errors, not warnings. POV-Ray style `+Ldir` options add library paths.
     #[arg(short, long)]
     pub quiet: bool,
+    #[command(flatten)]
+    pub safety: SafetyArgs,
 }
 
 #[derive(Args, Debug)]
@@ -140,9 +142,35 @@ pub struct RenderArgs {
     /// No progress bar or statistics.
     #[arg(short, long)]
     pub quiet: bool,
+    #[command(flatten)]
+    pub safety: SafetyArgs,
     /// POV-Ray style options (+W640 +H480 -A +A0.3 +R3 -J +Oout.png +Iscene.pov +Ldir +FN16 +FE).
     #[arg(hide = true)]
     pub pov: Vec<String>,
+}
+
+/// Limits for scenes from untrusted sources, shared by `render` and `check`.
+#[derive(Args, Debug, Default, Clone)]
+pub struct SafetyArgs {
+    /// Stop with an error after this many #while/#for iterations in all (off by default, as in
+    /// POV-Ray; set it for scenes you do not trust).
+    #[arg(long, value_name = "N")]
+    pub max_loop_iterations: Option<u64>,
+    /// Let #fopen read and write below DIR as well as the scene's and the current directory
+    /// (repeatable).
+    #[arg(long = "allow-io", value_name = "DIR")]
+    pub allow_io: Vec<PathBuf>,
+    /// Let #fopen read and write anywhere.
+    #[arg(long)]
+    pub io_unrestricted: bool,
+}
+
+impl SafetyArgs {
+    pub fn apply(&self, o: &mut crate::sdl::ParseOptions) {
+        o.max_loop_iterations = self.max_loop_iterations;
+        o.io_allowed_dirs.extend(self.allow_io.iter().cloned());
+        o.io_unrestricted |= self.io_unrestricted;
+    }
 }
 
 /// Everything a render needs, after clap and POV-Ray options are merged (POV-Ray's later wins).
@@ -155,6 +183,7 @@ pub struct Job {
     pub library_paths: Vec<PathBuf>,
     pub threads: Option<usize>,
     pub quiet: bool,
+    pub safety: SafetyArgs,
     pub warnings: Vec<String>,
 }
 
@@ -260,6 +289,7 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
         library_paths: a.library_path,
         threads: a.threads,
         quiet: a.quiet,
+        safety: a.safety.clone(),
         warnings,
     })
 }

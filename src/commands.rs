@@ -46,10 +46,11 @@ pub fn check(a: CheckArgs, pov: &[String]) -> ExitCode {
     }
     let mut failed = 0;
     for file in &a.files {
-        let opts = ParseOptions {
+        let mut opts = ParseOptions {
             library_paths: library_paths.clone(),
             ..ParseOptions::default()
         };
+        a.safety.apply(&mut opts);
         let parsed = lancer::api::parse_file(file, opts);
         let sources = &parsed.parser.sources;
         if !a.quiet {

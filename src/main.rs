@@ -49,12 +49,13 @@ fn render(job: lancer::cli::Job) -> ExitCode {
         }
     }
     let start = Instant::now();
-    let opts = ParseOptions {
+    let mut opts = ParseOptions {
         library_paths: job.library_paths.clone(),
         image_width: job.settings.width,
         image_height: job.settings.height,
         ..ParseOptions::default()
     };
+    job.safety.apply(&mut opts);
     let parsed = lancer::api::parse_file(&job.scene, opts);
     let sources = &parsed.parser.sources;
     for w in &parsed.parser.warnings {

@@ -97,3 +97,43 @@ fn check_parses_without_rendering() {
     assert!(err.contains("bad.pov:1:"), "{err}");
     assert!(err.contains("1 of 2 files parsed"), "{err}");
 }
+
+#[test]
+fn loop_cap_and_io_permission_from_the_command_line() {
+    let endless = scratch("endless.pov");
+    std::fs::write(&endless, "#while (1) #end\n").unwrap();
+    let (code, _, err) = lancer(&[
+        "check",
+        "--max-loop-iterations",
+        "1000",
+        endless.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("endless.pov:1:"), "{err}");
+    let outside = std::env::temp_dir().join(format!("lancer-io-{}", std::process::id()));
+    std::fs::create_dir_all(&outside).unwrap();
+    let target = outside.join("out.txt");
+    let writer = scratch("writer.pov");
+    std::fs::write(
+        &writer,
+        format!(
+            "#fopen F \"{}\" write #write (F, \"hi\") #fclose F\n",
+            target.display()
+        ),
+    )
+    .unwrap();
+    let (code, _, err) = lancer(&["check", "-q", writer.to_str().unwrap()]);
+    assert_eq!(
+        code, 1,
+        "writing outside the scene's directory needs permission: {err}"
+    );
+    let (code, _, err) = lancer(&[
+        "check",
+        "-q",
+        "--allow-io",
+        outside.to_str().unwrap(),
+        writer.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(std::fs::read_to_string(&target).unwrap(), "hi");
+}
