@@ -327,3 +327,12 @@ lines\";
     );
     assert_eq!(s.objects.len(), 2);
 }
+
+#[test]
+fn declared_mesh_reused_inside_mesh() {
+    let s = parse(
+        "#declare M = mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> } }
+         mesh { M translate x }",
+    );
+    assert!(matches!(s.objects[0].shape, ShapeDesc::Mesh(_)));
+}

@@ -459,6 +459,16 @@ impl Parser {
 
     fn mesh(&mut self, _s: Span) -> PResult<ObjectDesc> {
         let open = self.open_brace("mesh")?;
+        // `mesh { DeclaredMesh modifiers }` (camera/mesh_camera) starts from a declared mesh.
+        if let Some(k) = self.peek_ident()? {
+            if let Some(Value::Object(o)) = self.lookup(&k) {
+                if matches!(o.shape, ShapeDesc::Mesh(_)) {
+                    let base = (**o).clone();
+                    self.advance();
+                    return self.finish_object(base, open);
+                }
+            }
+        }
         let mut data = MeshData::default();
         loop {
             let Some(t) = self.peek()? else {

@@ -18,6 +18,7 @@ use super::value::Value;
 /// Pattern keywords POV-Ray 3.7 has that lancer does not evaluate yet.
 const UNSUPPORTED_PATTERNS: &[&str] = &[
     "agate",
+    "image_pattern",
     "aoi",
     "average",
     "boxed",
@@ -269,7 +270,7 @@ impl Parser {
                     self.skip_optional_comma()?;
                 }
             }
-            "function" | "pigment_pattern" | "object" | "density_file" => {
+            "function" | "pigment_pattern" | "object" | "density_file" | "image_pattern" => {
                 if k == "density_file" {
                     self.next_tok()?;
                     self.next_tok()?;
