@@ -27,6 +27,9 @@ pub struct Diagnostic {
     pub span: Option<Span>,
     pub chain: Vec<ChainLink>,
     pub notes: Vec<String>,
+    /// A warning about something declared that lancer cannot render: it may wait until the
+    /// declared identifier is used (see the parser's `defer_warnings`).
+    pub deferrable: bool,
 }
 
 impl Diagnostic {
@@ -37,6 +40,7 @@ impl Diagnostic {
             span,
             chain: Vec::new(),
             notes: Vec::new(),
+            deferrable: false,
         }
     }
     pub fn warning(message: impl Into<String>, span: Option<Span>) -> Diagnostic {
@@ -46,6 +50,7 @@ impl Diagnostic {
             span,
             chain: Vec::new(),
             notes: Vec::new(),
+            deferrable: false,
         }
     }
     pub fn with_note(mut self, note: impl Into<String>) -> Diagnostic {

@@ -285,6 +285,10 @@ fn unsupported_in_a_declaration_warns_only_when_used() {
     assert_eq!(warnings(&through).len(), 1);
     let unused_outer = format!("{decl}#declare U = union {{ object {{ Q }} }}\n");
     assert!(warnings(&unused_outer).is_empty());
+    // A value computed from it is wrong now, used or not (language/trace2.pov): said at once.
+    let traced = format!("{decl}#declare P = trace(Q, <0,5,0>, -y);\n");
+    let w = warnings(&traced);
+    assert!(w.iter().any(|m| m.contains("trace")), "{w:?}");
 }
 
 #[test]

@@ -340,7 +340,7 @@ impl Parser {
             }
             "vturbulence" => {
                 // Needs POV-Ray's noise function, which lancer does not have yet.
-                self.unsupported("vturbulence (gives <0,0,0> here)", span);
+                self.unsupported_now("vturbulence (gives <0,0,0> here)", span);
                 Ok(Value::vec3(DVec3::ZERO))
             }
             "seed" => {
@@ -487,7 +487,7 @@ impl Parser {
         if let Some(why) = &func.unsupported {
             // As for any feature lancer lacks: a warning naming it, and a neutral value so the
             // scene still parses (POV-Ray's picture will differ where the value matters).
-            self.unsupported(&format!("{why} ({name} gives 0 here)"), span);
+            self.unsupported_now(&format!("{why} ({name} gives 0 here)"), span);
             return Ok(Value::Float(0.0));
         }
         if let Some(n) = func.arity() {

@@ -209,16 +209,22 @@ impl Parser {
         self.warnings.extend(released);
     }
 
-    /// Holds back the warnings from `from` on (those raised while reading the declaration of
-    /// `name`) until `name` is looked up.
+    /// Holds back the "not supported" warnings from `from` on (those raised while reading the
+    /// declaration of `name`) until `name` is looked up. Warnings about values computed now
+    /// (`trace` of something lancer cannot render, a function it cannot evaluate) stay: the
+    /// value is wrong whether or not the identifier is used later.
     pub(super) fn defer_warnings(&mut self, name: &Rc<str>, from: usize) {
         if self.warnings.len() > from {
-            let held: Vec<Diagnostic> = self.warnings.drain(from..).collect();
-            self.deferred
-                .get_mut()
-                .entry(name.clone())
-                .or_default()
-                .extend(held);
+            let (held, kept): (Vec<Diagnostic>, Vec<Diagnostic>) =
+                self.warnings.drain(from..).partition(|d| d.deferrable);
+            self.warnings.extend(kept);
+            if !held.is_empty() {
+                self.deferred
+                    .get_mut()
+                    .entry(name.clone())
+                    .or_default()
+                    .extend(held);
+            }
         }
     }
 
@@ -554,11 +560,23 @@ impl Parser {
             .collect()
     }
 
-    /// Warns once per place about a keyword lancer reads but does not render yet.
+    /// Warns once per place about a keyword lancer reads but does not render yet. Inside a
+    /// declaration the warning waits until the identifier is used.
     pub fn unsupported(&mut self, keyword: &str, span: Span) {
+        self.unsupported_warning(keyword, span, true);
+    }
+
+    /// Like `unsupported`, for a value computed now without the feature (a function lancer
+    /// cannot evaluate gives 0): said at once, used or not.
+    pub fn unsupported_now(&mut self, keyword: &str, span: Span) {
+        self.unsupported_warning(keyword, span, false);
+    }
+
+    fn unsupported_warning(&mut self, keyword: &str, span: Span, deferrable: bool) {
         if self.warned.insert((keyword.into(), span)) {
             let mut d = Diagnostic::warning(format!("'{keyword}' is not supported by lancer yet and is ignored; the picture will differ from POV-Ray's"), Some(span));
             d.chain = self.chain();
+            d.deferrable = deferrable;
             self.warnings.push(d);
         }
     }
