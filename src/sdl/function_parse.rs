@@ -184,6 +184,11 @@ impl Parser {
     }
 
     fn fn_or(&mut self, s: &mut FnScope) -> PResult<Expr> {
+        // Parentheses and call arguments recurse through here.
+        self.nested(|p| p.fn_or_level(s))
+    }
+
+    fn fn_or_level(&mut self, s: &mut FnScope) -> PResult<Expr> {
         let mut a = self.fn_and(s)?;
         while self.raw_peek_sym()? == Some(Sym::Or) {
             self.advance();
@@ -253,15 +258,15 @@ impl Parser {
         match self.peek_sym()? {
             Some(Sym::Minus) => {
                 self.advance();
-                Ok(Expr::Neg(Box::new(self.fn_unary(s)?)))
+                Ok(Expr::Neg(Box::new(self.nested(|p| p.fn_unary(s))?)))
             }
             Some(Sym::Plus) => {
                 self.advance();
-                self.fn_unary(s)
+                self.nested(|p| p.fn_unary(s))
             }
             Some(Sym::Bang) => {
                 self.advance();
-                Ok(Expr::Not(Box::new(self.fn_unary(s)?)))
+                Ok(Expr::Not(Box::new(self.nested(|p| p.fn_unary(s))?)))
             }
             _ => self.fn_primary(s),
         }
