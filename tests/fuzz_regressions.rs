@@ -92,3 +92,18 @@ fn nesting_below_the_limit_still_parses() {
              object { U(150) }";
     assert_eq!(parse_small_stack(m.to_string()), None);
 }
+
+// Panics in built-in functions.
+
+#[test]
+fn str_with_huge_width_or_precision() {
+    // Rust's formatter panicked ("Formatting argument out of range") past 65535.
+    for e in [
+        "str(1, 0, 1e9)",
+        "str(1, 1e10, 0)",
+        "str(1, 1e18, 1e18)",
+        "str(1, -1e300, 2)",
+    ] {
+        assert_eq!(parse_small_stack(format!("#declare S = {e};")), None, "{e}");
+    }
+}

@@ -567,14 +567,18 @@ impl Parser {
     }
 }
 
+/// Width and precision `str()` honours at most. Rust's formatter panics beyond 65535, and
+/// POV-Ray caps both too (its exact caps are not reproduced); no scene needs more.
+const MAX_STR_FIELD: u64 = 1000;
+
 /// POV-Ray's `str(value, width, precision)`.
 fn format_str(v: f64, w: i64, p: i64) -> String {
     let s = if p < 0 {
         format!("{v}")
     } else {
-        format!("{v:.*}", p as usize)
+        format!("{v:.*}", p.unsigned_abs().min(MAX_STR_FIELD) as usize)
     };
-    let w = w.unsigned_abs() as usize;
+    let w = w.unsigned_abs().min(MAX_STR_FIELD) as usize;
     if s.len() < w {
         format!("{s:>w$}")
     } else {
