@@ -107,3 +107,19 @@ fn str_with_huge_width_or_precision() {
         assert_eq!(parse_small_stack(format!("#declare S = {e};")), None, "{e}");
     }
 }
+
+// Quadratic time and stack overflow from long operator chains in function bodies.
+
+#[test]
+fn long_function_operator_chains() {
+    // 100,000 terms overflowed the stack after ~30 s of quadratic constant folding.
+    let long = format!("#declare F = function {{ x{} }}", "+x".repeat(100_000));
+    let msg = parse_small_stack(long).expect("should be an error");
+    assert!(msg.contains("at most"), "unexpected message: {msg}");
+    // Long chains below the cap still compile (and on a 2 MB stack).
+    let ok = format!(
+        "#declare F = function {{ x{} }}\n#declare A = F(1, 0, 0);",
+        "+x*1".repeat(4_000)
+    );
+    assert_eq!(parse_small_stack(ok), None);
+}
