@@ -42,6 +42,11 @@ fn pad(c: Comp) -> [f64; 5] {
 
 impl Parser {
     pub fn parse_expr(&mut self) -> PResult<Value> {
+        // Parentheses, vectors, calls and colours all come back here: the one depth check.
+        self.nested(Self::parse_conditional)
+    }
+
+    fn parse_conditional(&mut self) -> PResult<Value> {
         let c = self.parse_or()?;
         if self.rel_ok && self.raw_peek_sym()? == Some(Sym::Question) {
             self.advance();
@@ -198,17 +203,17 @@ impl Parser {
             Some(Sym::Minus) => {
                 self.advance();
                 let span = self.cur_span();
-                let v = self.parse_unary()?;
+                let v = self.nested(Self::parse_unary)?;
                 self.arith(Value::Float(0.0), v, span, |x, y| x - y)
             }
             Some(Sym::Plus) => {
                 self.advance();
-                self.parse_unary()
+                self.nested(Self::parse_unary)
             }
             Some(Sym::Bang) => {
                 self.advance();
                 let span = self.cur_span();
-                let v = self.parse_unary()?;
+                let v = self.nested(Self::parse_unary)?;
                 let f = self.float_of(v, span)?;
                 Ok(Value::Float((f == 0.0) as u8 as f64))
             }

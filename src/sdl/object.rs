@@ -77,7 +77,8 @@ impl Parser {
             return Ok(None);
         };
         self.advance();
-        f(self, t.span).map(Some)
+        // CSG and `object { object { ...` recurse through here.
+        self.nested(|p| f(p, t.span)).map(Some)
     }
 
     fn open_brace(&mut self, what: &str) -> PResult<Span> {

@@ -79,6 +79,11 @@ pub const SYSTEM_INCLUDE_DIRS: &[&str] = &[
 
 /// Limits that turn runaway scenes into errors instead of hangs or stack overflows.
 const MAX_FRAME_DEPTH: usize = 200;
+/// How deeply expressions, objects and function bodies may nest (see `Parser::nested`). A level
+/// of the recursive descent takes up to about 5.5 KB of stack in a release build, so 256 levels
+/// fit even the 2 MB stack of a spawned thread (tests, library users); POV-Ray itself gives up
+/// at about 100 nested macro calls, and hand-written scenes nest far less.
+const MAX_NESTING: u32 = 256;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(super) enum FrameKind {
@@ -152,6 +157,8 @@ pub struct Parser {
     pub(super) deprecated: super::deprecated::Deprecations,
     /// `#while`/`#for` iterations so far, against `ParseOptions::max_loop_iterations`.
     pub(super) loop_iterations: u64,
+    /// Current depth of `nested` calls.
+    nesting: u32,
 }
 
 impl Parser {
@@ -177,6 +184,7 @@ impl Parser {
             files: Default::default(),
             deprecated: Default::default(),
             loop_iterations: 0,
+            nesting: 0,
         }
     }
 
@@ -269,7 +277,7 @@ impl Parser {
     pub fn find_file(&self, name: &str) -> Option<PathBuf> {
         let p = Path::new(name);
         if p.is_absolute() {
-            return p.exists().then(|| p.to_path_buf());
+            return p.is_file().then(|| p.to_path_buf());
         }
         let mut dirs: Vec<PathBuf> = vec![self.scene_dir.clone()];
         // The directory of the file being read, so includes next to includes are found.
@@ -402,6 +410,25 @@ impl Parser {
             .and_then(|f| f.tokens.get(f.pos.saturating_sub(1)))
             .map(|t| t.span)
             .unwrap_or_default()
+    }
+
+    /// Runs one level of a recursive grammar rule, refusing to go deeper than `MAX_NESTING`:
+    /// `((((...` or `union { union { ...` thousands deep would otherwise overflow the stack
+    /// and abort the process instead of reporting an error.
+    pub(super) fn nested<T>(&mut self, f: impl FnOnce(&mut Self) -> PResult<T>) -> PResult<T> {
+        if self.nesting >= MAX_NESTING {
+            let span = self.last_span;
+            return Err(self.error_at(
+                span,
+                format!(
+                    "expressions, objects or function bodies nested more than {MAX_NESTING} deep"
+                ),
+            ));
+        }
+        self.nesting += 1;
+        let r = f(self);
+        self.nesting -= 1;
+        r
     }
 
     pub(super) fn advance(&mut self) {

@@ -18,6 +18,8 @@ use super::value::Value;
 
 /// Longest string a scene may build; longer ones are surely runaway loops.
 pub const MAX_STRING_LEN: usize = 1 << 24;
+/// Widest `str()` field honoured.
+const MAX_STR_WIDTH: usize = 1000;
 /// printf precision beyond this only pads zeros; capped to keep strings bounded.
 const MAX_PRECISION: i64 = 300;
 
@@ -28,7 +30,9 @@ pub fn format_float(v: f64, l: i64, p: i64) -> String {
     } else {
         p.min(MAX_PRECISION) as usize
     };
-    let w = (l.unsigned_abs() as usize).min(MAX_STRING_LEN);
+    // Rust's formatter panics on widths past 65535 (found by fuzzing); no scene needs more
+    // than a screenful of padding.
+    let w = (l.unsigned_abs() as usize).min(MAX_STR_WIDTH);
     if !v.is_finite() {
         let s = if v.is_nan() {
             "nan".to_string()
