@@ -8,6 +8,8 @@
 
 use std::cell::RefCell;
 use std::collections::{HashMap, HashSet};
+
+use rustc_hash::FxHashMap;
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
 
@@ -130,7 +132,12 @@ pub struct Parser {
     pub(super) frames: Vec<Frame>,
     pub(super) conds: Vec<Cond>,
     /// Symbol tables; [0] is global, one more per include file and macro call.
-    pub(super) scopes: Vec<HashMap<Rc<str>, Value>>,
+    /// FxHash: identifiers are looked up on every token, and SipHash's DoS resistance buys
+    /// nothing against a scene that can loop forever anyway.
+    pub(super) scopes: Vec<FxHashMap<Rc<str>, Value>>,
+    /// The token position (frame count, position, token list) last found by `peek` to be a
+    /// plain identifier, so peeking it again skips the macro and array lookups.
+    plain_ident_at: Option<(usize, usize, usize)>,
     file_cache: HashMap<PathBuf, (u32, Rc<[Token]>)>,
     pub options: ParseOptions,
     pub(super) scene_dir: PathBuf,
@@ -167,7 +174,8 @@ impl Parser {
             sources: Sources::default(),
             frames: Vec::new(),
             conds: Vec::new(),
-            scopes: vec![HashMap::new()],
+            scopes: vec![FxHashMap::default()],
+            plain_ident_at: None,
             file_cache: HashMap::new(),
             options,
             scene_dir: PathBuf::from("."),
@@ -359,11 +367,17 @@ impl Parser {
             scope,
         });
         if scope {
-            self.scopes.push(HashMap::new());
+            self.scopes.push(FxHashMap::default());
         }
     }
 
     /// The next token without executing directives or macro calls; pops finished frames.
+    /// The token at the position in the innermost frame, if that frame has one left.
+    fn current_token(&self) -> Option<&Token> {
+        let f = self.frames.last()?;
+        (f.pos < f.end).then(|| &f.tokens[f.pos])
+    }
+
     pub(super) fn raw_peek(&mut self) -> PResult<Option<Token>> {
         loop {
             let Some(f) = self.frames.last() else {
@@ -432,6 +446,7 @@ impl Parser {
     }
 
     pub(super) fn advance(&mut self) {
+        self.plain_ident_at = None;
         if let Some(f) = self.frames.last_mut() {
             f.pos += 1;
         }
@@ -439,6 +454,25 @@ impl Parser {
 
     /// The next token after executing any directives and macro calls in the way.
     pub fn peek(&mut self) -> PResult<Option<Token>> {
+        // Fast path, kept small so it inlines: literals, symbols and identifiers already
+        // known to be plain need no directive or macro handling.
+        if let Some(t) = self.current_token() {
+            let plain = match &t.tok {
+                Tok::Num(_) | Tok::Sym(_) | Tok::Str(_) => true,
+                Tok::Ident(_) => self.plain_ident_at == Some(self.position_key()),
+                Tok::Directive(_) => false,
+            };
+            if plain {
+                let t = t.clone();
+                self.last_span = t.span;
+                return Ok(Some(t));
+            }
+        }
+        self.peek_slow()
+    }
+
+    #[inline(never)]
+    fn peek_slow(&mut self) -> PResult<Option<Token>> {
         loop {
             let Some(t) = self.raw_peek()? else {
                 return Ok(None);
@@ -450,25 +484,44 @@ impl Parser {
                     self.directive(&d, t.span)?;
                 }
                 Tok::Ident(name) => {
+                    // Nothing can change what an identifier means between two peeks at the same
+                    // token without advancing (a directive would advance), so the answer is
+                    // kept until the next `advance`.
+                    let at = self.position_key();
+                    if self.plain_ident_at == Some(at) {
+                        return Ok(Some(t));
+                    }
                     if self.has_deprecations() {
                         self.check_deprecated(name, t.span);
                     }
-                    if let Some(Value::Macro(m)) = self.lookup(name) {
-                        let m = m.clone();
-                        self.advance();
-                        self.invoke_macro(&m, t.span)?;
-                    } else if matches!(self.lookup(name), Some(Value::Array(_)))
-                        && self.at_subscript()
-                    {
-                        let name = name.clone();
-                        self.advance();
-                        self.push_element(name, t.span)?;
-                    } else {
-                        return Ok(Some(t));
+                    match self.lookup(name) {
+                        Some(Value::Macro(m)) => {
+                            let m = m.clone();
+                            self.advance();
+                            self.invoke_macro(&m, t.span)?;
+                        }
+                        Some(Value::Array(_)) if self.at_subscript() => {
+                            let name = name.clone();
+                            self.advance();
+                            self.push_element(name, t.span)?;
+                        }
+                        _ => {
+                            self.plain_ident_at = Some(at);
+                            return Ok(Some(t));
+                        }
                     }
                 }
                 _ => return Ok(Some(t)),
             }
+        }
+    }
+
+    /// Where the token stream stands: frame count, position in the innermost frame, and that
+    /// frame's token list (two frames at the same depth and position are told apart by it).
+    fn position_key(&self) -> (usize, usize, usize) {
+        match self.frames.last() {
+            Some(f) => (self.frames.len(), f.pos, f.tokens.as_ptr() as usize),
+            None => (0, 0, 0),
         }
     }
 
@@ -490,6 +543,19 @@ impl Parser {
     }
 
     pub(super) fn peek_sym(&mut self) -> PResult<Option<Sym>> {
+        // Symbols and literals are never directives or macro calls: no need for `peek`.
+        if let Some(t) = self.current_token() {
+            let span = t.span;
+            let known = match t.tok {
+                Tok::Sym(s) => Some(Some(s)),
+                Tok::Num(_) | Tok::Str(_) => Some(None),
+                _ => None,
+            };
+            if let Some(sym) = known {
+                self.last_span = span;
+                return Ok(sym);
+            }
+        }
         Ok(match self.peek()? {
             Some(Token {
                 tok: Tok::Sym(s), ..
@@ -502,6 +568,16 @@ impl Parser {
     /// directive after an expression (`#declare A = 1 #end`) ends the expression rather than
     /// running inside it.
     pub(super) fn raw_peek_sym(&mut self) -> PResult<Option<Sym>> {
+        // Operator look-ahead runs at every precedence level for every operand; reading the
+        // token in place spares the clone.
+        if let Some(t) = self.current_token() {
+            let (span, sym) = match t.tok {
+                Tok::Sym(s) => (t.span, Some(s)),
+                _ => (t.span, None),
+            };
+            self.last_span = span;
+            return Ok(sym);
+        }
         Ok(match self.raw_peek()? {
             Some(Token {
                 tok: Tok::Sym(s), ..
