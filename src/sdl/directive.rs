@@ -7,14 +7,6 @@ use super::parser::{Cond, FrameKind, PResult, Parser};
 use super::source::Span;
 use super::value::{MacroDef, Value};
 
-/// Directives that open a block closed by `#end`, for skipping nested blocks.
-fn opens_block(d: &str) -> bool {
-    matches!(
-        d,
-        "if" | "ifdef" | "ifndef" | "while" | "for" | "switch" | "macro"
-    )
-}
-
 /// Whether a `#for` loop runs again with its variable at `v`.
 fn for_continues(v: f64, end: f64, step: f64) -> bool {
     if step > 0.0 {
@@ -152,28 +144,16 @@ impl Parser {
     /// Skips raw tokens of an inactive branch or loop body up to the matching `#end` (or
     /// `#else`/`#elseif` when `stop_at_else`), consuming the directive it stops at.
     fn skip_inactive(&mut self, open: Span, stop_at_else: bool) -> PResult<SkipStop> {
-        let mut depth = 0usize;
-        loop {
-            let f = self.frames.last_mut().expect("a frame");
-            if f.pos >= f.end {
-                return Err(self.error_at(
-                    open,
-                    "this block has no matching #end before the end of its file or macro",
-                ));
-            }
-            let t = &f.tokens[f.pos];
-            f.pos += 1;
-            if let Tok::Directive(d) = &t.tok {
-                match &**d {
-                    x if opens_block(x) => depth += 1,
-                    "end" if depth == 0 => return Ok(SkipStop::End),
-                    "end" => depth -= 1,
-                    "else" if depth == 0 && stop_at_else => return Ok(SkipStop::Else),
-                    "elseif" if depth == 0 && stop_at_else => return Ok(SkipStop::ElseIf),
-                    _ => {}
-                }
-            }
-        }
+        let stops: &[&str] = if stop_at_else {
+            &["else", "elseif"]
+        } else {
+            &[]
+        };
+        Ok(match &*self.skip_to_directive(open, 0, stops)? {
+            "else" => SkipStop::Else,
+            "elseif" => SkipStop::ElseIf,
+            _ => SkipStop::End,
+        })
     }
 
     fn end_directive(&mut self, span: Span) -> PResult<()> {

@@ -12,7 +12,7 @@ use super::lexer::{Sym, Tok};
 use super::parser::{Cond, PResult, Parser};
 use super::source::Span;
 
-/// Directives that open a block closed by `#end` (as directive.rs counts them when skipping).
+/// Directives that open a block closed by `#end`, for skipping nested blocks.
 fn opens_block(d: &str) -> bool {
     matches!(
         d,
@@ -141,7 +141,8 @@ impl Parser {
     }
 
     /// Skips raw tokens to a directive in `stops` (or `#end`) at nesting `depth` zero, starting
-    /// `depth` blocks deep, and consumes it.
+    /// `depth` blocks deep, and consumes it. Inactive `#if` branches and loop bodies are skipped
+    /// with this too.
     pub(super) fn skip_to_directive(
         &mut self,
         open: Span,
