@@ -24,12 +24,17 @@ pub fn scene_text(data: &[u8]) -> Option<String> {
     Some(String::from_utf8_lossy(data).into_owned())
 }
 
-/// Parses `data` as a whole scene with default options (no library paths). Errors are the
-/// expected outcome for most inputs; only panics, stack overflows and hangs are findings.
+/// Parses `data` as a whole scene with default options (no library paths) and a loop cap, so
+/// an endless `#while` (a valid scene) ends in an error instead of a libFuzzer timeout and
+/// real hangs stand out. Errors are the expected outcome for most inputs; only panics, stack
+/// overflows and hangs are findings.
 pub fn parse(data: &[u8]) {
     let Some(text) = scene_text(data) else {
         return;
     };
-    let mut p = lancer::sdl::Parser::new(lancer::sdl::ParseOptions::default());
+    let mut p = lancer::sdl::Parser::new(lancer::sdl::ParseOptions {
+        max_loop_iterations: Some(100_000),
+        ..lancer::sdl::ParseOptions::default()
+    });
     let _ = p.parse_str("fuzz.pov", &text);
 }
