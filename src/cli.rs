@@ -184,6 +184,9 @@ pub struct Job {
     pub threads: Option<usize>,
     pub quiet: bool,
     pub safety: SafetyArgs,
+    pub animation: crate::anim::Animation,
+    /// `+C`: skip frames whose picture already exists, so an interrupted animation resumes.
+    pub continue_trace: bool,
     pub warnings: Vec<String>,
 }
 
@@ -233,6 +236,7 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
     let mut s = RenderSettings::default();
     let mut format = None;
     let mut warnings = Vec::new();
+    let mut anim = AnimOpts::default();
     if let Some(w) = a.width {
         s.width = w;
     }
@@ -260,7 +264,9 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
         });
     }
     for opt in pov {
-        apply_pov_option(opt, &mut s, &mut a, &mut format, &mut warnings)?;
+        if !anim.apply(opt)? {
+            apply_pov_option(opt, &mut s, &mut a, &mut format, &mut warnings)?;
+        }
     }
     let scene = a
         .scene
@@ -290,8 +296,52 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
         threads: a.threads,
         quiet: a.quiet,
         safety: a.safety.clone(),
+        animation: anim.animation,
+        continue_trace: anim.continue_trace,
         warnings,
     })
+}
+
+/// The animation options among POV-Ray's: `+KFI1 +KFF24 +KI0 +KF1 +KC +SF5 +EF8 +K0.5 +C`.
+#[derive(Default)]
+struct AnimOpts {
+    animation: crate::anim::Animation,
+    continue_trace: bool,
+}
+
+impl AnimOpts {
+    /// Takes `opt` if it is an animation option.
+    fn apply(&mut self, opt: &str) -> Result<bool, String> {
+        let on = opt.starts_with('+');
+        let upper = opt[1..].to_ascii_uppercase();
+        let num = |t: &str| -> Result<f64, String> {
+            t.parse::<f64>()
+                .map_err(|_| format!("bad number in option {opt}"))
+        };
+        let a = &mut self.animation;
+        if let Some(v) = upper.strip_prefix("KFI") {
+            a.initial_frame = Some(num(v)? as i64);
+        } else if let Some(v) = upper.strip_prefix("KFF") {
+            a.final_frame = Some(num(v)? as i64);
+        } else if upper == "KC" {
+            a.cyclic = on;
+        } else if let Some(v) = upper.strip_prefix("KI") {
+            a.initial_clock = Some(num(v)?);
+        } else if let Some(v) = upper.strip_prefix("KF") {
+            a.final_clock = Some(num(v)?);
+        } else if let Some(v) = upper.strip_prefix('K') {
+            a.clock = Some(num(v)?);
+        } else if let Some(v) = upper.strip_prefix("SF") {
+            a.subset_start = Some(num(v)? as i64);
+        } else if let Some(v) = upper.strip_prefix("EF") {
+            a.subset_end = Some(num(v)? as i64);
+        } else if upper == "C" {
+            self.continue_trace = on;
+        } else {
+            return Ok(false);
+        }
+        Ok(true)
+    }
 }
 
 fn default_name(scene: &std::path::Path, f: Format) -> String {
@@ -443,6 +493,21 @@ mod tests {
         assert_eq!(j.threads, Some(2));
         assert_eq!(j.format, Format::Exr);
         assert_eq!(j.scene, PathBuf::from("scene.pov"));
+    }
+
+    #[test]
+    fn animation_options() {
+        let j = job(&[
+            "lancer", "a.pov", "+KFI1", "+KFF24", "+KI0", "+KF2", "+KC", "+SF5", "+EF8", "+C",
+        ])
+        .unwrap();
+        let a = &j.animation;
+        assert_eq!((a.initial_frame, a.final_frame), (Some(1), Some(24)));
+        assert_eq!((a.initial_clock, a.final_clock), (Some(0.0), Some(2.0)));
+        assert!(a.cyclic && j.continue_trace);
+        assert_eq!((a.subset_start, a.subset_end), (Some(5), Some(8)));
+        let j = job(&["lancer", "a.pov", "+K0.5"]).unwrap();
+        assert_eq!(j.animation.clock, Some(0.5));
     }
 
     #[test]

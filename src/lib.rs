@@ -5,6 +5,7 @@
 //! `scene::desc::SceneDesc`; `scene::build` turns it into a runtime scene with a BVH; `render`
 //! traces it into a film; `output` writes PNG/EXR.
 
+pub mod anim;
 pub mod api;
 pub mod cli;
 pub mod color;

@@ -1,0 +1,148 @@
+//! `lancer render` (the default command): a still picture, or an animation frame by frame with
+//! the scene parsed anew for each frame, as POV-Ray does. Part of the binary.
+
+use std::collections::HashSet;
+use std::process::ExitCode;
+use std::time::Instant;
+
+use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
+
+use lancer::anim::Frame;
+use lancer::cli::Job;
+use lancer::sdl::ParseOptions;
+
+pub fn render(job: Job) -> ExitCode {
+    for w in &job.warnings {
+        eprintln!("warning: {w}");
+    }
+    if let Some(n) = job.threads {
+        if let Err(e) = rayon::ThreadPoolBuilder::new()
+            .num_threads(n.max(1))
+            .build_global()
+        {
+            eprintln!("warning: cannot set the thread count: {e}");
+        }
+    }
+    let frames = match job.animation.frames(&job.output) {
+        Ok(f) => f,
+        Err(e) => {
+            eprintln!("lancer: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let animated = job.animation.is_animation();
+    let show = !job.quiet && std::io::IsTerminal::is_terminal(&std::io::stderr());
+    let bars = MultiProgress::new();
+    let frame_bar = if show && animated {
+        bars.add(ProgressBar::new(frames.len() as u64))
+    } else {
+        ProgressBar::hidden()
+    };
+    frame_bar.set_style(
+        ProgressStyle::with_template("animation [{bar:40}] {pos}/{len} frames, {eta} left")
+            .unwrap_or_else(|_| ProgressStyle::default_bar()),
+    );
+    // The scene is parsed for every frame; its warnings are the same each time.
+    let mut said = HashSet::new();
+    let start = Instant::now();
+    for f in &frames {
+        if job.continue_trace && f.output.exists() {
+            if !job.quiet {
+                eprintln!(
+                    "lancer: frame {} done already ({}), skipped",
+                    f.number,
+                    f.output.display()
+                );
+            }
+            frame_bar.inc(1);
+            continue;
+        }
+        let row_bar = if show {
+            bars.add(ProgressBar::new(job.settings.height as u64))
+        } else {
+            ProgressBar::hidden()
+        };
+        let code = render_frame(&job, f, animated, &mut said, &row_bar);
+        row_bar.finish_and_clear();
+        bars.remove(&row_bar);
+        if code != ExitCode::SUCCESS {
+            return code;
+        }
+        frame_bar.inc(1);
+    }
+    frame_bar.finish_and_clear();
+    if animated && !job.quiet {
+        eprintln!(
+            "lancer: {} frames in {:.2}s",
+            frames.len(),
+            start.elapsed().as_secs_f64()
+        );
+    }
+    ExitCode::SUCCESS
+}
+
+fn render_frame(
+    job: &Job,
+    f: &Frame,
+    animated: bool,
+    said: &mut HashSet<String>,
+    bar: &ProgressBar,
+) -> ExitCode {
+    let start = Instant::now();
+    let mut opts = ParseOptions {
+        library_paths: job.library_paths.clone(),
+        image_width: job.settings.width,
+        image_height: job.settings.height,
+        ..ParseOptions::default()
+    };
+    job.safety.apply(&mut opts);
+    f.apply(&mut opts, animated || job.animation.clock.is_some());
+    let parsed = lancer::api::parse_file(&job.scene, opts);
+    let sources = &parsed.parser.sources;
+    for w in &parsed.parser.warnings {
+        if said.insert(w.one_line(sources)) {
+            w.emit_stderr(sources);
+        }
+    }
+    if let Some(e) = &parsed.error {
+        e.emit_stderr(sources);
+        return ExitCode::from(1);
+    }
+    let parse_time = start.elapsed();
+    let built = lancer::scene::build::build(
+        &parsed.parser.scene,
+        job.settings.width,
+        job.settings.height,
+    );
+    for w in &built.warnings {
+        if said.insert(w.clone()) {
+            eprintln!("warning: {w}");
+        }
+    }
+    bar.set_style(
+        ProgressStyle::with_template("{spinner} rendering [{bar:40}] {pos}/{len} rows, {eta} left")
+            .unwrap_or_else(|_| ProgressStyle::default_bar()),
+    );
+    let trace_start = Instant::now();
+    let film = lancer::render::render(&built.scene, &job.settings, &|n| bar.inc(n));
+    if let Err(e) = lancer::output::write(&film, &f.output, job.format) {
+        eprintln!("lancer: {e}");
+        return ExitCode::from(1);
+    }
+    if !job.quiet {
+        let frame = if animated {
+            format!("frame {} (clock {}): ", f.number, f.clock)
+        } else {
+            String::new()
+        };
+        eprintln!(
+            "lancer: {frame}wrote {} ({}x{}) — parse {:.3}s, render {:.3}s",
+            f.output.display(),
+            job.settings.width,
+            job.settings.height,
+            parse_time.as_secs_f64(),
+            trace_start.elapsed().as_secs_f64()
+        );
+    }
+    ExitCode::SUCCESS
+}
