@@ -272,6 +272,7 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
         .scene
         .clone()
         .ok_or("no scene file given (lancer scene.pov, or +Iscene.pov)")?;
+    let scene = locate_scene(scene, &a.library_path);
     if s.width == 0 || s.height == 0 {
         return Err("width and height must be at least 1".into());
     }
@@ -342,6 +343,30 @@ impl AnimOpts {
         }
         Ok(true)
     }
+}
+
+/// Like POV-Ray: a scene not found where it is named is looked for in the library paths, and
+/// `.pov` is assumed when the name has no extension.
+fn locate_scene(scene: PathBuf, library: &[PathBuf]) -> PathBuf {
+    let mut names = vec![scene.clone()];
+    if scene.extension().is_none() {
+        names.push(scene.with_extension("pov"));
+    }
+    for n in &names {
+        if n.is_file() {
+            return n.clone();
+        }
+    }
+    if scene.is_relative() {
+        for dir in library {
+            for n in &names {
+                if dir.join(n).is_file() {
+                    return dir.join(n);
+                }
+            }
+        }
+    }
+    scene
 }
 
 fn default_name(scene: &std::path::Path, f: Format) -> String {

@@ -14,6 +14,7 @@ pub mod conformance;
 pub mod diag;
 pub mod func;
 pub mod geom;
+pub mod ini;
 pub mod math;
 pub mod output;
 pub mod render;

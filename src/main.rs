@@ -11,7 +11,19 @@ mod commands;
 mod render_cmd;
 
 fn main() -> ExitCode {
-    let (clap_args, pov) = split_args(std::env::args().collect());
+    // INI files on the command line become the switches they hold, where they stand.
+    let mut ini_warnings = Vec::new();
+    let args = match lancer::ini::expand(std::env::args().collect(), &mut ini_warnings) {
+        Ok(a) => a,
+        Err(e) => {
+            eprintln!("lancer: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    for w in &ini_warnings {
+        eprintln!("warning: {w}");
+    }
+    let (clap_args, pov) = split_args(args);
     let cli = match Cli::try_parse_from(clap_args) {
         Ok(c) => c,
         Err(e) => {

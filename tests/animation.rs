@@ -76,3 +76,29 @@ fn ten_or_more_frames_are_padded_to_the_last_frames_digits() {
     assert!(d.join("spin09.png").exists());
     assert!(d.join("spin10.png").exists());
 }
+
+#[test]
+fn ini_file_with_a_section_and_switches_after_it() {
+    let d = dir("ini");
+    std::fs::write(
+        d.join("spin.ini"),
+        "; the whole animation\nInput_File_Name=spin.pov\nInitial_Frame=1\nFinal_Frame=4\n\
+         Antialias=off\n[Small]\nInput_File_Name=spin.pov\nWidth=32\nHeight=24\nFinal_Frame=3\n\
+         Pre_Frame_Command=touch hacked\n",
+    )
+    .unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_lancer"))
+        .current_dir(&d)
+        .args(["spin.ini[small]", "+EF2"])
+        .output()
+        .expect("run lancer");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    assert!(err.contains("never runs shell commands"), "{err}");
+    assert!(!d.join("hacked").exists());
+    // The section's Final_Frame=3 (one digit), the command line's +EF2 after the INI file.
+    assert!(d.join("spin1.png").exists() && d.join("spin2.png").exists());
+    assert!(!d.join("spin3.png").exists());
+    let img = image::open(d.join("spin1.png")).unwrap();
+    assert_eq!((img.width(), img.height()), (32, 24));
+}
