@@ -102,3 +102,32 @@ fn ini_file_with_a_section_and_switches_after_it() {
     let img = image::open(d.join("spin1.png")).unwrap();
     assert_eq!((img.width(), img.height()), (32, 24));
 }
+
+#[test]
+fn partial_render_is_the_whole_render_inside_the_window_and_black_outside() {
+    let d = dir("partial");
+    let run = |out: &str, extra: &[&str]| {
+        let mut args = vec!["spin.pov", "+W40", "+H30", "-A", "+K0.5", "-q"];
+        args.extend_from_slice(extra);
+        args.push(out);
+        let o = Command::new(env!("CARGO_BIN_EXE_lancer"))
+            .current_dir(&d)
+            .args(&args)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        image::open(d.join(&out[2..])).unwrap().to_rgb8()
+    };
+    let whole = run("+Owhole.png", &[]);
+    // Rows 25%..80% (7..24), columns 10..30 counted from 1 (9..30): as povray 3.7 reads them.
+    let part = run("+Opart.png", &["+SR0.25", "+ER0.8", "+SC10", "+EC30"]);
+    assert_eq!(part.dimensions(), (40, 30));
+    for (x, y, p) in part.enumerate_pixels() {
+        let inside = (7..24).contains(&y) && (9..30).contains(&x);
+        if inside {
+            assert_eq!(p, whole.get_pixel(x, y), "({x}, {y})");
+        } else {
+            assert_eq!(p.0, [0, 0, 0], "({x}, {y}) should be black");
+        }
+    }
+}

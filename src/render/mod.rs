@@ -23,6 +23,25 @@ pub struct RenderSettings {
     pub aa_depth: u32,
     /// Jitter the supersamples (`+J`, on by default in POV-Ray).
     pub jitter: f64,
+    /// Partial render (`+SR +ER +SC +EC`): pixels `x0..x1` × `y0..y1` are traced and the rest
+    /// of the picture stays black, as in POV-Ray's output file.
+    pub window: Option<Window>,
+}
+
+/// A rectangle of pixels, end-exclusive.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Window {
+    pub x0: u32,
+    pub x1: u32,
+    pub y0: u32,
+    pub y1: u32,
+}
+
+impl Window {
+    fn contains(&self, x: usize, y: usize) -> bool {
+        (self.x0 as usize..self.x1 as usize).contains(&x)
+            && (self.y0 as usize..self.y1 as usize).contains(&y)
+    }
 }
 
 impl Default for RenderSettings {
@@ -33,6 +52,7 @@ impl Default for RenderSettings {
             antialias: None,
             aa_depth: 3,
             jitter: 1.0,
+            window: None,
         }
     }
 }
@@ -88,11 +108,15 @@ pub fn render(scene: &Scene, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)
     let (w, h) = (s.width as usize, s.height as usize);
     let tracer = Tracer::new(scene);
     let mut pixels = vec![DVec3::ZERO; w * h];
+    let inside = |x: usize, y: usize| s.window.is_none_or(|win| win.contains(x, y));
     pixels
         .par_chunks_mut(w)
         .enumerate()
         .for_each_init(TraceCtx::default, |ctx, (y, row)| {
             for (x, px) in row.iter_mut().enumerate() {
+                if !inside(x, y) {
+                    continue;
+                }
                 let ray = scene.camera.ray(x as f64 + 0.5, y as f64 + 0.5);
                 *px = tracer.trace(&ray, 1, 1.0, ctx);
             }
@@ -130,15 +154,20 @@ fn antialias(tracer: &Tracer, film: &mut Film, s: &RenderSettings, threshold: f6
         .map(|p| DVec3::new(adjust(p.x), adjust(p.y), adjust(p.z)))
         .collect();
     let differs = |a: usize, b: usize| (enc[a] - enc[b]).abs().element_sum() > threshold;
+    // Outside a partial render's window nothing was traced, so nothing is compared there.
+    let inside = |x: usize, y: usize| s.window.is_none_or(|win| win.contains(x, y));
     let mut mark = vec![false; w * h];
     for y in 0..h {
         for x in 0..w {
             let i = y * w + x;
-            if x > 0 && differs(i, i - 1) {
+            if !inside(x, y) {
+                continue;
+            }
+            if x > 0 && inside(x - 1, y) && differs(i, i - 1) {
                 mark[i] = true;
                 mark[i - 1] = true;
             }
-            if y > 0 && differs(i, i - w) {
+            if y > 0 && inside(x, y - 1) && differs(i, i - w) {
                 mark[i] = true;
                 mark[i - w] = true;
             }
