@@ -14,7 +14,20 @@ pub struct Parsed {
 }
 
 pub fn parse_file(path: &Path, options: ParseOptions) -> Parsed {
-    let mut parser = Parser::new(options);
+    parse_file_with(path, options, None)
+}
+
+/// Like `parse_file`, reusing the files an earlier parse of the same run read and lexed (the
+/// frames of an animation).
+pub fn parse_file_with(
+    path: &Path,
+    options: ParseOptions,
+    lexed: Option<crate::sdl::parser::Lexed>,
+) -> Parsed {
+    let mut parser = match lexed {
+        Some(l) => Parser::with_lexed(options, l),
+        None => Parser::new(options),
+    };
     let error = parser.parse_file(path).err();
     Parsed { parser, error }
 }

@@ -42,8 +42,10 @@ pub fn render(job: Job) -> ExitCode {
         ProgressStyle::with_template("animation [{bar:40}] {pos}/{len} frames, {eta} left")
             .unwrap_or_else(|_| ProgressStyle::default_bar()),
     );
-    // The scene is parsed for every frame; its warnings are the same each time.
+    // The scene is parsed for every frame; its warnings are the same each time, and the files
+    // it reads are lexed once and handed from frame to frame.
     let mut said = HashSet::new();
+    let mut lexed = None;
     let start = Instant::now();
     for f in &frames {
         if job.continue_trace && f.output.exists() {
@@ -62,7 +64,7 @@ pub fn render(job: Job) -> ExitCode {
         } else {
             ProgressBar::hidden()
         };
-        let code = render_frame(&job, f, animated, &mut said, &row_bar);
+        let code = render_frame(&job, f, animated, &mut said, &mut lexed, &row_bar);
         row_bar.finish_and_clear();
         bars.remove(&row_bar);
         if code != ExitCode::SUCCESS {
@@ -86,6 +88,7 @@ fn render_frame(
     f: &Frame,
     animated: bool,
     said: &mut HashSet<String>,
+    lexed: &mut Option<lancer::sdl::parser::Lexed>,
     bar: &ProgressBar,
 ) -> ExitCode {
     let start = Instant::now();
@@ -97,7 +100,7 @@ fn render_frame(
     };
     job.safety.apply(&mut opts);
     f.apply(&mut opts, animated || job.animation.clock.is_some());
-    let parsed = lancer::api::parse_file(&job.scene, opts);
+    let parsed = lancer::api::parse_file_with(&job.scene, opts, lexed.take());
     let sources = &parsed.parser.sources;
     for w in &parsed.parser.warnings {
         if said.insert(w.one_line(sources)) {
@@ -114,6 +117,7 @@ fn render_frame(
         job.settings.width,
         job.settings.height,
     );
+    *lexed = Some(parsed.parser.into_lexed());
     for w in &built.warnings {
         if said.insert(w.clone()) {
             eprintln!("warning: {w}");

@@ -340,3 +340,33 @@ fn declared_mesh_reused_inside_mesh() {
     );
     assert!(matches!(s.objects[0].shape, ShapeDesc::Mesh(_)));
 }
+
+#[test]
+fn lexed_files_carry_over_between_parses_until_they_change() {
+    let dir = std::env::temp_dir().join(format!("lancer-lexed-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("s.pov");
+    std::fs::write(&scene, "#include \"r.inc\"\nsphere { 0, R }\n").unwrap();
+    std::fs::write(dir.join("r.inc"), "#declare R = 1;\n").unwrap();
+    let radius = |p: &lancer::api::Parsed| match p.parser.scene.objects[0].shape {
+        ShapeDesc::Sphere { radius, .. } => radius,
+        _ => panic!(),
+    };
+    let first = lancer::api::parse_file_with(&scene, ParseOptions::default(), None);
+    assert_eq!(radius(&first), 1.0);
+    let again = lancer::api::parse_file_with(
+        &scene,
+        ParseOptions::default(),
+        Some(first.parser.into_lexed()),
+    );
+    assert_eq!(radius(&again), 1.0);
+    // Rewritten between frames (a longer file, so the stamp differs): read again.
+    std::fs::write(dir.join("r.inc"), "#declare R = 2.5;\n").unwrap();
+    let changed = lancer::api::parse_file_with(
+        &scene,
+        ParseOptions::default(),
+        Some(again.parser.into_lexed()),
+    );
+    assert!(changed.error.is_none());
+    assert_eq!(radius(&changed), 2.5);
+}

@@ -138,7 +138,7 @@ pub struct Parser {
     /// The token position (frame count, position, token list) last found by `peek` to be a
     /// plain identifier, so peeking it again skips the macro and array lookups.
     plain_ident_at: Option<(usize, usize, usize)>,
-    file_cache: HashMap<PathBuf, (u32, Rc<[Token]>)>,
+    file_cache: HashMap<PathBuf, CachedFile>,
     pub options: ParseOptions,
     pub(super) scene_dir: PathBuf,
     pub scene: SceneDesc,
@@ -166,6 +166,36 @@ pub struct Parser {
     pub(super) loop_iterations: u64,
     /// Current depth of `nested` calls.
     nesting: u32,
+}
+
+/// A file's tokens, kept for as long as the file on disk is unchanged.
+struct CachedFile {
+    id: u32,
+    tokens: Rc<[Token]>,
+    stamp: Option<FileStamp>,
+}
+
+/// Size and modification time: enough to notice a file rewritten between two frames.
+#[derive(Clone, Copy, PartialEq, Eq)]
+struct FileStamp {
+    len: u64,
+    modified: Option<std::time::SystemTime>,
+}
+
+impl FileStamp {
+    fn of(path: &Path) -> Option<FileStamp> {
+        let m = std::fs::metadata(path).ok()?;
+        Some(FileStamp {
+            len: m.len(),
+            modified: m.modified().ok(),
+        })
+    }
+}
+
+/// Sources and lexed files carried from one parse to the next within a run.
+pub struct Lexed {
+    sources: Sources,
+    files: HashMap<PathBuf, CachedFile>,
 }
 
 impl Parser {
@@ -261,8 +291,12 @@ impl Parser {
     /// Reads and lexes a file once per run; later includes reuse the tokens.
     fn load(&mut self, path: &Path, site: Option<Span>) -> PResult<(u32, Rc<[Token]>)> {
         let key = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
-        if let Some((id, t)) = self.file_cache.get(&key) {
-            return Ok((*id, t.clone()));
+        let stamp = FileStamp::of(path);
+        if let Some(c) = self.file_cache.get(&key) {
+            // A file the scene rewrote (#write, then #include) is read again.
+            if c.stamp == stamp {
+                return Ok((c.id, c.tokens.clone()));
+            }
         }
         let bytes = std::fs::read(path).map_err(|e| {
             let msg = format!("cannot read {}: {e}", path.display());
@@ -276,8 +310,32 @@ impl Parser {
         let text = String::from_utf8_lossy(&bytes).into_owned();
         let id = self.sources.add(path.display().to_string(), text);
         let tokens = self.lex_file(id)?;
-        self.file_cache.insert(key, (id, tokens.clone()));
+        self.file_cache.insert(
+            key,
+            CachedFile {
+                id,
+                tokens: tokens.clone(),
+                stamp,
+            },
+        );
         Ok((id, tokens))
+    }
+
+    /// The files read so far, lexed, for the next parse of the same run (the next frame of an
+    /// animation): include files are then read and lexed once per run, not once per frame.
+    pub fn into_lexed(self) -> Lexed {
+        Lexed {
+            sources: self.sources,
+            files: self.file_cache,
+        }
+    }
+
+    /// A parser that starts with the files an earlier parse of this run read.
+    pub fn with_lexed(options: ParseOptions, lexed: Lexed) -> Parser {
+        let mut p = Parser::new(options);
+        p.sources = lexed.sources;
+        p.file_cache = lexed.files;
+        p
     }
 
     /// Finds a file the way POV-Ray does: as given, the scene directory, the library path,
