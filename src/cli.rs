@@ -185,6 +185,10 @@ pub struct Job {
     pub quiet: bool,
     pub safety: SafetyArgs,
     pub animation: crate::anim::Animation,
+    /// `Declare=Name=Value`: floats the scene finds declared.
+    pub declares: Vec<(String, f64)>,
+    /// `-F` / `Output_To_File=off`: render without writing a file (timing runs).
+    pub write_output: bool,
     /// `+C`: skip frames whose picture already exists, so an interrupted animation resumes.
     pub continue_trace: bool,
     pub warnings: Vec<String>,
@@ -238,6 +242,8 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
     let mut warnings = Vec::new();
     let mut anim = AnimOpts::default();
     let mut partial = PartialOpts::default();
+    let mut declares = Vec::new();
+    let mut write_output = true;
     if let Some(w) = a.width {
         s.width = w;
     }
@@ -265,7 +271,20 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
         });
     }
     for opt in pov {
-        if !anim.apply(opt)? && !partial.apply(opt)? {
+        let upper = opt.to_ascii_uppercase();
+        if let Some(d) = upper.strip_prefix("+DECLARE=") {
+            // Keep the name's own spelling: identifiers are case-sensitive.
+            let rest = &opt[opt.len() - d.len()..];
+            let (name, v) = rest
+                .split_once('=')
+                .ok_or_else(|| format!("{opt}: expected Declare=Name=number"))?;
+            let v: f64 = v
+                .parse()
+                .map_err(|_| format!("{opt}: expected Declare=Name=number"))?;
+            declares.push((name.to_string(), v));
+        } else if upper == "+F" || upper == "-F" {
+            write_output = upper == "+F";
+        } else if !anim.apply(opt)? && !partial.apply(opt)? {
             apply_pov_option(opt, &mut s, &mut a, &mut format, &mut warnings)?;
         }
     }
@@ -300,6 +319,8 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
         quiet: a.quiet,
         safety: a.safety.clone(),
         animation: anim.animation,
+        declares,
+        write_output,
         continue_trace: anim.continue_trace,
         warnings,
     })

@@ -14,6 +14,17 @@ const MAX_DEPTH: usize = 10;
 pub fn expand(args: Vec<String>, warnings: &mut Vec<String>) -> Result<Vec<String>, String> {
     let mut out = Vec::with_capacity(args.len());
     for (i, a) in args.into_iter().enumerate() {
+        // POV-Ray takes INI-style `Key=Value` on the command line too (`Declare=Size=2`).
+        if i > 0 && !a.starts_with(['+', '-']) && a.contains('=') {
+            if let Some((key, value)) = a.split_once('=') {
+                match switch_for(key.trim(), unquote(value.trim())) {
+                    Ok(Some(s)) => out.push(s),
+                    Ok(None) => {}
+                    Err(w) => warnings.push(w),
+                }
+                continue;
+            }
+        }
         match (i > 0).then(|| ini_reference(&a, Path::new("."))).flatten() {
             Some((path, section)) => read(&path, section.as_deref(), 0, &mut out, warnings)?,
             None => out.push(a),
@@ -175,6 +186,13 @@ fn switch_for(key: &str, value: &str) -> Result<Option<String>, String> {
         "start_column" => with("SC"),
         "end_column" => with("EC"),
         "output_file_type" => Ok(Some(format!("+F{value}"))),
+        "output_to_file" => flag("F"),
+        "declare" => match value.split_once('=') {
+            Some((name, v)) if v.trim().parse::<f64>().is_ok() => {
+                Ok(Some(format!("+Declare={}={}", name.trim(), v.trim())))
+            }
+            _ => Err(format!("{key}={value}: expected Declare=Name=number")),
+        },
         "bits_per_color" => match value {
             "16" => Ok(Some("+FN16".into())),
             "8" => Ok(Some("+FN8".into())),
@@ -205,7 +223,6 @@ fn switch_for(key: &str, value: &str) -> Result<Option<String>, String> {
         | "statistic_file"
         | "warning_file"
         | "create_ini"
-        | "output_to_file"
         | "bounding"
         | "bounding_threshold"
         | "light_buffer"

@@ -99,6 +99,7 @@ fn render_frame(
         ..ParseOptions::default()
     };
     job.safety.apply(&mut opts);
+    opts.declares = job.declares.clone();
     f.apply(&mut opts, animated || job.animation.clock.is_some());
     let parsed = lancer::api::parse_file_with(&job.scene, opts, lexed.take());
     let sources = &parsed.parser.sources;
@@ -129,6 +130,17 @@ fn render_frame(
     );
     let trace_start = Instant::now();
     let film = lancer::render::render(&built.scene, &job.settings, &|n| bar.inc(n));
+    if !job.write_output {
+        if !job.quiet {
+            eprintln!(
+                "lancer: rendered frame {} without writing it (Output_To_File=off / -F) — parse {:.3}s, render {:.3}s",
+                f.number,
+                parse_time.as_secs_f64(),
+                trace_start.elapsed().as_secs_f64()
+            );
+        }
+        return ExitCode::SUCCESS;
+    }
     if let Err(e) = lancer::output::write(&film, &f.output, job.format) {
         eprintln!("lancer: {e}");
         return ExitCode::from(1);

@@ -131,3 +131,39 @@ fn partial_render_is_the_whole_render_inside_the_window_and_black_outside() {
         }
     }
 }
+
+#[test]
+fn declare_and_output_to_file_from_the_command_line() {
+    let d = dir("declare");
+    std::fs::write(
+        d.join("size.pov"),
+        "#version 3.7;\nglobal_settings { assumed_gamma 1 }\ncamera { location -5*z look_at 0 }\n\
+         light_source { <1, 2, -3> rgb 1 }\n#if (Big > 1) sphere { 0, 1 pigment { rgb 1 } } #end\n",
+    )
+    .unwrap();
+    let run = |args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_lancer"))
+            .current_dir(&d)
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    // Without the declaration `Big` is undeclared: an error.
+    assert!(!run(&["size.pov", "+W16", "+H12", "-q"]).status.success());
+    let o = run(&["size.pov", "+W16", "+H12", "Declare=Big=2", "-q"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(d.join("size.png").exists());
+    std::fs::remove_file(d.join("size.png")).unwrap();
+    let o = run(&[
+        "size.pov",
+        "+W16",
+        "+H12",
+        "Declare=Big=2",
+        "Output_To_File=off",
+    ]);
+    assert!(o.status.success());
+    assert!(
+        !d.join("size.png").exists(),
+        "Output_To_File=off writes nothing"
+    );
+}

@@ -48,6 +48,8 @@ pub struct ParseOptions {
     /// Stops the parse with an error after this many `#while`/`#for` iterations in all;
     /// `None` (the default) lets loops run as long as they like, as POV-Ray does.
     pub max_loop_iterations: Option<u64>,
+    /// `Declare=Name=Value` options: floats declared before the scene is read.
+    pub declares: Vec<(String, f64)>,
 }
 
 impl Default for ParseOptions {
@@ -67,6 +69,7 @@ impl Default for ParseOptions {
             io_unrestricted: false,
             io_allowed_dirs: Vec::new(),
             max_loop_iterations: None,
+            declares: Vec::new(),
         }
     }
 }
@@ -200,11 +203,15 @@ pub struct Lexed {
 
 impl Parser {
     pub fn new(options: ParseOptions) -> Parser {
+        let mut globals = FxHashMap::default();
+        for (name, v) in &options.declares {
+            globals.insert(Rc::from(name.as_str()), Value::Float(*v));
+        }
         Parser {
             sources: Sources::default(),
             frames: Vec::new(),
             conds: Vec::new(),
-            scopes: vec![FxHashMap::default()],
+            scopes: vec![globals],
             plain_ident_at: None,
             file_cache: HashMap::new(),
             options,
