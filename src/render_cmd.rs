@@ -152,12 +152,13 @@ fn render_frame(
             String::new()
         };
         eprintln!(
-            "lancer: {frame}wrote {} ({}x{}) — parse {:.3}s, render {:.3}s",
+            "lancer: {frame}wrote {} ({}x{}) — parse {:.3}s, render {:.3}s, {} rays",
             f.output.display(),
             job.settings.width,
             job.settings.height,
             parse_time.as_secs_f64(),
-            trace_start.elapsed().as_secs_f64()
+            trace_start.elapsed().as_secs_f64(),
+            film.rays
         );
     }
     ExitCode::SUCCESS

@@ -7,6 +7,8 @@ pub mod camera;
 pub mod pigment;
 pub mod trace;
 
+use std::sync::atomic::{AtomicU64, Ordering};
+
 use rayon::prelude::*;
 
 use crate::math::DVec3;
@@ -63,6 +65,8 @@ pub struct Film {
     pub height: u32,
     pub pixels: Vec<DVec3>,
     pub gamma: GammaMode,
+    /// Rays traced for this picture (camera, secondary and shadow rays).
+    pub rays: u64,
 }
 
 impl Film {
@@ -109,6 +113,7 @@ pub fn render(scene: &Scene, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)
     let tracer = Tracer::new(scene);
     let mut pixels = vec![DVec3::ZERO; w * h];
     let inside = |x: usize, y: usize| s.window.is_none_or(|win| win.contains(x, y));
+    let rays = AtomicU64::new(0);
     pixels
         .par_chunks_mut(w)
         .enumerate()
@@ -120,6 +125,7 @@ pub fn render(scene: &Scene, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)
                 let ray = scene.camera.ray(x as f64 + 0.5, y as f64 + 0.5);
                 *px = tracer.trace(&ray, 1, 1.0, ctx);
             }
+            rays.fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
             progress(1);
         });
     let mut film = Film {
@@ -127,6 +133,7 @@ pub fn render(scene: &Scene, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)
         height: s.height,
         pixels,
         gamma: scene.gamma,
+        rays: rays.into_inner(),
     };
     if let Some(threshold) = s.antialias {
         antialias(&tracer, &mut film, s, threshold);
@@ -175,6 +182,7 @@ fn antialias(tracer: &Tracer, film: &mut Film, s: &RenderSettings, threshold: f6
     }
     let n = s.aa_depth.max(1);
     let cam = &tracer.scene.camera;
+    let rays = AtomicU64::new(0);
     film.pixels
         .par_chunks_mut(w)
         .enumerate()
@@ -196,7 +204,9 @@ fn antialias(tracer: &Tracer, film: &mut Film, s: &RenderSettings, threshold: f6
                 }
                 *px = sum / (1 + n * n) as f64;
             }
+            rays.fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
         });
+    film.rays += rays.into_inner();
 }
 
 #[cfg(test)]

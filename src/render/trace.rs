@@ -44,6 +44,7 @@ impl<'a> Tracer<'a> {
     /// Colour seen along `ray` in the scene's working space. `depth` starts at 1 for primary
     /// rays; `weight` is this ray's share of the pixel, for adaptive depth control.
     pub fn trace(&self, ray: &Ray, depth: u32, weight: f64, ctx: &mut TraceCtx<'a>) -> DVec3 {
+        ctx.rays += 1;
         if depth > self.scene.max_trace_level {
             return DVec3::ZERO;
         }
@@ -196,6 +197,7 @@ impl<'a> Tracer<'a> {
     /// Light reaching `p` from a light `dist` away in direction `l`: zero behind an opaque
     /// object, filtered by each crossing of a transparent one.
     fn shadow(&self, p: DVec3, l: DVec3, dist: f64, ctx: &mut TraceCtx<'a>) -> DVec3 {
+        ctx.rays += 1;
         let ray = Ray::new(p, l);
         let mut att = DVec3::ONE;
         self.scene.for_each_candidate(&ray, dist, |obj| {

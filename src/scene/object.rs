@@ -37,6 +37,9 @@ pub struct Object {
 pub struct Scratch<'a> {
     pub hits: Vec<Hit>,
     pub surface: Vec<SurfaceHit<'a>>,
+    /// Rays traced with this scratch (camera, reflected, refracted and shadow rays), for the
+    /// statistics line.
+    pub rays: u64,
 }
 
 /// Whether a crossing at `p` of CSG member `i` is on the result's surface: every other member
