@@ -212,8 +212,8 @@ impl<'a> Tracer<'a> {
                 return false;
             }
             let start = ctx.surface.len();
-            obj.all_hits(&ray, ctx);
-            for h in ctx.surface[start..].iter().filter(|h| h.t < dist) {
+            obj.all_hits(&ray, dist, ctx);
+            for h in &ctx.surface[start..] {
                 let c = pigment::eval(&h.obj.texture_at(h).pigment, ray.at(h.t));
                 if c.is_opaque() {
                     att = DVec3::ZERO;

@@ -120,10 +120,9 @@ impl Object {
             }
             ObjKind::Csg { .. } => {
                 let start = s.surface.len();
-                self.all_hits(ray, s);
+                self.all_hits(ray, tmax, s);
                 let best = s.surface[start..]
                     .iter()
-                    .filter(|h| h.t < tmax)
                     .min_by(|a, b| a.t.total_cmp(&b.t))
                     .copied();
                 s.surface.truncate(start);
@@ -132,19 +131,22 @@ impl Object {
         }
     }
 
-    /// Appends every crossing with t > EPSILON, in no particular order, to `s.surface`.
-    pub fn all_hits<'a>(&'a self, ray: &Ray, s: &mut Scratch<'a>) {
+    /// Appends every crossing with t in (EPSILON, tmax), in no particular order, to
+    /// `s.surface`. Crossings beyond `tmax` are dropped before the CSG inside tests, which
+    /// are the expensive part.
+    pub fn all_hits<'a>(&'a self, ray: &Ray, tmax: f64, s: &mut Scratch<'a>) {
         match &self.kind {
             ObjKind::Shape(shape) => {
                 let r = self.local_ray(ray);
                 s.hits.clear();
                 shape.intersect_all(&r, &mut s.hits);
-                s.surface.extend(s.hits.iter().map(|&hit| SurfaceHit {
-                    t: hit.t,
-                    obj: self,
-                    hit,
-                    flip: self.inverse,
-                }));
+                s.surface
+                    .extend(s.hits.iter().filter(|h| h.t < tmax).map(|&hit| SurfaceHit {
+                        t: hit.t,
+                        obj: self,
+                        hit,
+                        flip: self.inverse,
+                    }));
             }
             ObjKind::Csg { op, children } => {
                 let mine = s.surface.len();
@@ -152,12 +154,12 @@ impl Object {
                 for (i, c) in children.iter().enumerate() {
                     // A child whose box the ray misses adds no crossings (transparent shadows
                     // through a union of many parts would otherwise test every part).
-                    if c.bounds.hit(ray.origin, inv_dir, f64::INFINITY).is_none() {
+                    if c.bounds.hit(ray.origin, inv_dir, tmax).is_none() {
                         continue;
                     }
                     // Each child's crossings are appended, then filtered in place.
                     let start = s.surface.len();
-                    c.all_hits(ray, s);
+                    c.all_hits(ray, tmax, s);
                     let mut k = start;
                     for j in start..s.surface.len() {
                         let mut h = s.surface[j];
