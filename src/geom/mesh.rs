@@ -16,6 +16,8 @@ pub struct Mesh {
     data: Arc<MeshData>,
     /// Per triangle; None for degenerate ones and ones with out-of-range vertex indices.
     tris: Vec<Option<TriGeom>>,
+    /// `data.normals` made unit length once, not on every hit.
+    unit_normals: Vec<DVec3>,
     bvh: Bvh,
 }
 
@@ -43,7 +45,13 @@ impl Mesh {
             .map(|t| t.map_or(Aabb::EMPTY, |g| g.bounds()))
             .collect();
         let bvh = Bvh::build(&boxes);
-        Mesh { data, tris, bvh }
+        let unit_normals = data.normals.iter().map(|n| n.normalize_or_zero()).collect();
+        Mesh {
+            data,
+            tris,
+            unit_normals,
+            bvh,
+        }
     }
 
     /// The per-triangle texture index (into `MeshData::textures`) of the triangle in
@@ -52,19 +60,10 @@ impl Mesh {
         self.data.triangles.get(part as usize)?.texture
     }
 
-    pub fn data(&self) -> &Arc<MeshData> {
-        &self.data
-    }
-
     /// Vertex normals of a smooth triangle, when all its normal indices are valid.
     fn vertex_normals(&self, i: usize) -> Option<[DVec3; 3]> {
         let n = self.data.triangles.get(i)?.n?;
-        let get = |k: u32| {
-            self.data
-                .normals
-                .get(k as usize)
-                .map(|v| v.normalize_or_zero())
-        };
+        let get = |k: u32| self.unit_normals.get(k as usize).copied();
         Some([get(n[0])?, get(n[1])?, get(n[2])?])
     }
 }
