@@ -52,4 +52,13 @@ impl Rgbft {
     pub fn is_opaque(&self) -> bool {
         self.filter <= 0.0 && self.transmit <= 0.0
     }
+    /// The share of the surface's own colour that shows: 1 − filter − transmit (POV-Ray lets
+    /// it go negative; callers that weight light by it clamp).
+    pub fn opacity(&self) -> f64 {
+        1.0 - self.filter - self.transmit
+    }
+    /// What light passing through becomes: filtered by the colour, plus the plain transmit.
+    pub fn transmitted(&self) -> DVec3 {
+        self.rgb * self.filter + DVec3::splat(self.transmit)
+    }
 }

@@ -11,13 +11,17 @@ use crate::scene::desc::{ColorMap, ImageMap, Pattern, Pigment, PigmentKind};
 const CHECKER_EPS: f64 = 1e-9;
 
 pub fn eval(p: &Pigment, world: DVec3) -> Rgbft {
+    // Most pigments are plain colours, which need no point in pattern space.
+    if let PigmentKind::Solid(c) = &p.kind {
+        return *c;
+    }
     let lp = if p.transform.is_identity() {
         world
     } else {
         p.transform.inv_point(world)
     };
     match &p.kind {
-        PigmentKind::Solid(c) => *c,
+        PigmentKind::Solid(c) => *c, // answered above
         PigmentKind::Mapped { pattern, map } => lookup(map, pattern_value(pattern, lp)),
         PigmentKind::List { pattern, items } => {
             let i = pattern_index(pattern, lp).min(items.len().saturating_sub(1));

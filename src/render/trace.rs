@@ -61,8 +61,7 @@ impl<'a> Tracer<'a> {
             let d = dir.normalize_or_zero();
             for layer in &s.sky {
                 let c = pigment::eval(layer, d);
-                col = c.rgb * (1.0 - c.filter - c.transmit)
-                    + col * (c.rgb * c.filter + DVec3::splat(c.transmit));
+                col = c.rgb * c.opacity() + col * c.transmitted();
             }
         }
         col
@@ -86,7 +85,10 @@ impl<'a> Tracer<'a> {
         let tex = obj.texture_at(h);
         let fin = &tex.finish;
         let c = pigment::eval(&tex.pigment, p);
-        let opacity = (1.0 - c.filter - c.transmit).max(0.0);
+        let opacity = c.opacity().max(0.0);
+        // Per hit, not per light.
+        let mirror = reflect(dir, nf);
+        let specular_exp = 1.0 / fin.roughness.max(1e-6);
 
         let mut col = (fin.ambient * s.ambient_light + fin.emission) * c.rgb * opacity;
 
@@ -123,7 +125,7 @@ impl<'a> Tracer<'a> {
                 continue;
             }
             if fin.phong > 0.0 {
-                let cos_r = reflect(dir, nf).dot(l);
+                let cos_r = mirror.dot(l);
                 if cos_r > 0.0 {
                     col += lc * highlight_tint * (fin.phong * cos_r.powf(fin.phong_size));
                 }
@@ -132,9 +134,7 @@ impl<'a> Tracer<'a> {
                 let hv = (l - dir).normalize_or_zero();
                 let cos_h = nf.dot(hv);
                 if cos_h > 0.0 {
-                    col += lc
-                        * highlight_tint
-                        * (fin.specular * cos_h.powf(1.0 / fin.roughness.max(1e-6)));
+                    col += lc * highlight_tint * (fin.specular * cos_h.powf(specular_exp));
                 }
             }
         }
@@ -166,13 +166,13 @@ impl<'a> Tracer<'a> {
             let tint = DVec3::ONE + (c.rgb - DVec3::ONE) * refl.metallic;
             let w = weight * refl_amount.max_element();
             if w > s.adc_bailout {
-                let rc = self.trace(&Ray::new(p, reflect(dir, nf)), depth + 1, w, ctx);
+                let rc = self.trace(&Ray::new(p, mirror), depth + 1, w, ctx);
                 col += rc * refl_amount * tint;
             }
         }
 
         if c.filter > 0.0 || c.transmit > 0.0 {
-            let mut tcol = c.rgb * c.filter + DVec3::splat(c.transmit);
+            let mut tcol = c.transmitted();
             if fin.conserve_energy {
                 tcol *= DVec3::ONE - refl_amount;
             }
@@ -186,7 +186,7 @@ impl<'a> Tracer<'a> {
                     (k >= 0.0).then(|| dir * eta + nf * (eta * cos_i - k.sqrt()))
                 };
                 // Total internal reflection sends the transmitted share back inside.
-                let tdir = tdir.unwrap_or_else(|| reflect(dir, nf));
+                let tdir = tdir.unwrap_or(mirror);
                 let tc = self.trace(&Ray::new(p, tdir), depth + 1, w, ctx);
                 col += tc * tcol;
             }
@@ -219,7 +219,7 @@ impl<'a> Tracer<'a> {
                     att = DVec3::ZERO;
                     break;
                 }
-                att *= c.rgb * c.filter + DVec3::splat(c.transmit);
+                att *= c.transmitted();
             }
             ctx.surface.truncate(start);
             att == DVec3::ZERO
