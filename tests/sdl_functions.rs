@@ -443,3 +443,11 @@ fn standard_math_includes_parse_and_evaluate() {
         1e-11
     ));
 }
+
+#[test]
+fn short_vectors_in_vector_functions_are_padded_with_zeros() {
+    // <3,4>+1 is the 2-vector <4,5>: povray 3.7 prints vlength 6.403124 (sqrt 41), not the
+    // sqrt 42 that the float's copy in the unused third component would give.
+    assert!(close(eval("vlength(<3,4>+1)"), 41f64.sqrt()));
+    assert!(close(eval("vdot(<1,2>+1, <1,1,1>)"), 5.0));
+}

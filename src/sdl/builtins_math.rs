@@ -180,15 +180,7 @@ impl Parser {
     }
 
     fn arg_vector(&self, name: &str, a: &(Value, Span)) -> PResult<DVec3> {
-        match &a.0 {
-            Value::Float(f) => Ok(DVec3::splat(*f)),
-            Value::Vector(c, _) => Ok(DVec3::new(c[0], c[1], c[2])),
-            Value::Color(c) => Ok(c.rgb),
-            o => Err(self.error_at(
-                a.1,
-                format!("{name} needs a vector here, found a {}", o.type_name()),
-            )),
-        }
+        self.vector_of(&a.0, a.1, &format!("{name} needs a vector here"))
     }
 
     fn math_call(&mut self, name: &str, span: Span, args: &[(Value, Span)]) -> PResult<Value> {

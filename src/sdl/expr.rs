@@ -30,7 +30,7 @@ fn binop(a: Value, b: Value, f: impl Fn(f64, f64) -> f64) -> Option<Value> {
 }
 
 /// A vector widened to more components: the new ones are zero (a float fills them all).
-fn pad(c: Comp) -> [f64; 5] {
+pub(super) fn pad(c: Comp) -> [f64; 5] {
     let (mut v, len) = c;
     if len > 1 {
         for x in v.iter_mut().skip(len as usize) {
@@ -465,17 +465,21 @@ impl Parser {
     pub fn parse_vector(&mut self) -> PResult<DVec3> {
         let span = self.next_span()?;
         let v = self.parse_expr()?;
+        self.vector_of(&v, span, "expected a vector")
+    }
+
+    /// A value as a 3-vector: a float fills all three, a shorter vector gets zeros (its unused
+    /// components may hold a float that was added to it), a colour gives its rgb. `what` starts
+    /// the error message.
+    pub(super) fn vector_of(&self, v: &Value, span: Span, what: &str) -> PResult<DVec3> {
         match v {
-            Value::Float(f) => Ok(DVec3::splat(f)),
+            Value::Float(f) => Ok(DVec3::splat(*f)),
             Value::Vector(c, n) => {
-                let c = pad((c, n));
+                let c = pad((*c, *n));
                 Ok(DVec3::new(c[0], c[1], c[2]))
             }
             Value::Color(c) => Ok(c.rgb),
-            other => Err(self.error_at(
-                span,
-                format!("expected a vector, found a {}", other.type_name()),
-            )),
+            other => Err(self.error_at(span, format!("{what}, found a {}", other.type_name()))),
         }
     }
 

@@ -209,11 +209,7 @@ impl Parser {
                 let n = (fl(self, 0)? as i64).clamp(2, 5) as usize;
                 let c = match &args[1].0 {
                     Value::Float(f) => [*f, 0.0, 0.0, 0.0, 0.0],
-                    Value::Vector(c, k) => {
-                        let mut v = [0.0; 5];
-                        v[..*k as usize].copy_from_slice(&c[..*k as usize]);
-                        v
-                    }
+                    Value::Vector(c, k) => super::expr::pad((*c, *k)),
                     Value::Color(c) => c.to_array(),
                     o => {
                         return Err(self.error_at(
