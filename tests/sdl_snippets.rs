@@ -370,3 +370,11 @@ fn lexed_files_carry_over_between_parses_until_they_change() {
     assert!(changed.error.is_none());
     assert_eq!(radius(&changed), 2.5);
 }
+
+#[test]
+fn flag_values_are_any_float_expression() {
+    // `hollow F` and `hollow (1)` are accepted by povray 3.7 (the value is a float).
+    let s = parse("#declare F = 0; sphere { 0, 1 hollow F } sphere { 0, 2 hollow (1) }");
+    assert_eq!(s.objects[0].hollow, Some(false));
+    assert_eq!(s.objects[1].hollow, Some(true));
+}

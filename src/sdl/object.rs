@@ -171,10 +171,8 @@ impl Parser {
             // Bounding only speeds POV-Ray up; lancer builds its own bounds.
             "bounded_by" => self.skip_block()?,
             "split_union" | "double_illuminate" | "no_image" | "no_reflection" | "no_radiosity" => {
-                if k == "split_union" {
-                    self.optional_bool()?;
-                } else {
-                    self.optional_bool()?;
+                self.optional_bool()?;
+                if k != "split_union" {
                     self.unsupported(k, span);
                 }
             }
@@ -190,15 +188,13 @@ impl Parser {
     }
 
     /// `on`/`off`/a float after a flag keyword, or true when nothing numeric follows.
+    /// A flag keyword's optional value (`hollow`, `hollow off`, `hollow F`, `hollow (1)`): any
+    /// float expression may follow, as in POV-Ray; nothing means on.
     pub(super) fn optional_bool(&mut self) -> PResult<bool> {
-        match self.peek()?.map(|t| t.tok) {
-            Some(Tok::Num(_)) => Ok(self.parse_float()? != 0.0),
-            Some(Tok::Ident(k))
-                if matches!(&*k, "on" | "off" | "true" | "false" | "yes" | "no") =>
-            {
-                Ok(self.parse_float()? != 0.0)
-            }
-            _ => Ok(true),
+        if self.starts_float()? {
+            Ok(self.parse_float()? != 0.0)
+        } else {
+            Ok(true)
         }
     }
 

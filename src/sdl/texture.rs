@@ -486,7 +486,7 @@ impl Parser {
                     self.unsupported(k, t.span);
                     self.parse_float()?;
                 }
-                "conserve_energy" => f.conserve_energy = self.optional_flag()?,
+                "conserve_energy" => f.conserve_energy = self.optional_bool()?,
                 "crand" => {
                     self.unsupported(k, t.span);
                     self.parse_float()?;
@@ -500,7 +500,7 @@ impl Parser {
         }
     }
 
-    fn starts_float(&mut self) -> PResult<bool> {
+    pub(super) fn starts_float(&mut self) -> PResult<bool> {
         Ok(match self.peek()?.map(|t| t.tok) {
             Some(Tok::Num(_)) | Some(Tok::Sym(Sym::LParen)) | Some(Tok::Sym(Sym::Minus)) => true,
             Some(Tok::Ident(k)) => {
@@ -509,14 +509,6 @@ impl Parser {
             }
             _ => false,
         })
-    }
-
-    fn optional_flag(&mut self) -> PResult<bool> {
-        if self.starts_float()? {
-            Ok(self.parse_float()? != 0.0)
-        } else {
-            Ok(true)
-        }
     }
 
     /// `reflection 0.3`, `reflection rgb <..>` or `reflection { [min,] max fresnel falloff ... }`.
@@ -549,7 +541,7 @@ impl Parser {
             match &t.tok {
                 Tok::Sym(Sym::RBrace) => break,
                 Tok::Ident(k) => match &**k {
-                    "fresnel" => r.fresnel = self.optional_flag()?,
+                    "fresnel" => r.fresnel = self.optional_bool()?,
                     "falloff" => r.falloff = self.parse_float()?,
                     "exponent" => {
                         self.unsupported("exponent (in reflection)", t.span);
