@@ -451,3 +451,16 @@ fn short_vectors_in_vector_functions_are_padded_with_zeros() {
     assert!(close(eval("vlength(<3,4>+1)"), 41f64.sqrt()));
     assert!(close(eval("vdot(<1,2>+1, <1,1,1>)"), 5.0));
 }
+
+#[test]
+fn trace_normal_reaches_a_by_reference_macro_parameter() {
+    // povray 3.7 prints <0,0,-1> for N here: trace's fourth argument is assigned like
+    // #declare, so it writes through the macro parameter to the caller's variable.
+    let p = parser(
+        "#declare S = sphere { 0, 1 }
+         #macro T(NV) #local P = trace(S, <0,0,-5>, z, NV); #end
+         #declare N = <0,0,0>;
+         T(N)",
+    );
+    assert_eq!(vector(&p, "N"), [0.0, 0.0, -1.0]);
+}

@@ -463,7 +463,7 @@ impl Parser {
             None => (DVec3::ZERO, DVec3::ZERO),
         };
         if let Some(n) = normal_var {
-            self.set_var(n, Value::vec3(normal), false);
+            self.assign_var(n, Value::vec3(normal), false)?;
         }
         Ok(Value::vec3(point))
     }

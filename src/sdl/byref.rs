@@ -80,8 +80,9 @@ impl Parser {
         Some(cur)
     }
 
-    /// `#declare`/`#local` of a name: writes through a by-reference parameter, otherwise
-    /// binds as `set_var` does.
+    /// `#declare`/`#local` of a name: writes through a by-reference parameter; otherwise
+    /// `#local` binds in the innermost table and `#declare` updates a local that already holds
+    /// the name (so loops in macros work) or binds globally.
     pub(super) fn assign_var(&mut self, name: Rc<str>, v: Value, local: bool) -> PResult<()> {
         let depth = self.scopes.len();
         self.assign_var_at(name, v, local, depth)

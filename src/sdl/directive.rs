@@ -182,7 +182,7 @@ impl Parser {
                     Some(Value::Float(v)) => *v + step,
                     _ => return Err(self.error_at(span, format!("the #for loop variable '{var}' was changed to a non-float inside the loop"))),
                 };
-                self.set_var(var.clone(), Value::Float(v), true);
+                self.assign_var(var.clone(), Value::Float(v), true)?;
                 if for_continues(v, end, step) {
                     self.frames[frame].pos = body_pos;
                     self.conds.push(Cond::For {
@@ -222,7 +222,7 @@ impl Parser {
         if step == 0.0 {
             return Err(self.error_at(span, "#for step is zero: the loop would never end"));
         }
-        self.set_var(var.clone(), Value::Float(start), true);
+        self.assign_var(var.clone(), Value::Float(start), true)?;
         if !for_continues(start, end, step) {
             return self.skip_inactive(span, false).map(|_| ());
         }
@@ -236,20 +236,6 @@ impl Parser {
             step,
         });
         Ok(())
-    }
-
-    /// `#local` binds in the innermost table; `#declare` updates a local that already holds
-    /// the name (so loops in macros work) and otherwise binds globally.
-    pub(super) fn set_var(&mut self, name: Rc<str>, v: Value, local: bool) {
-        let idx = if local {
-            self.scopes.len() - 1
-        } else {
-            (1..self.scopes.len())
-                .rev()
-                .find(|&i| self.scopes[i].contains_key(&name))
-                .unwrap_or(0)
-        };
-        self.scopes[idx].insert(name, v);
     }
 
     fn declare(&mut self, local: bool, _span: Span) -> PResult<()> {
@@ -416,7 +402,7 @@ impl Parser {
             body_start,
             body_end,
         };
-        self.set_var(name, Value::Macro(Rc::new(def)), false);
+        self.assign_var(name, Value::Macro(Rc::new(def)), false)?;
         Ok(())
     }
 
