@@ -378,3 +378,16 @@ fn flag_values_are_any_float_expression() {
     assert_eq!(s.objects[0].hollow, Some(false));
     assert_eq!(s.objects[1].hollow, Some(true));
 }
+
+#[test]
+fn light_colours_are_any_colour_expression() {
+    // povray 3.7 takes every colour keyword here, srgbt included, and identifiers in
+    // expressions.
+    let s = parse(
+        "#declare W = rgb 1;
+         light_source { <0, 5, -5> srgbt <1, 1, 1, 0> }
+         light_source { <0, 5, -5> W * 2 }
+         light_source { <0, 5, -5> color red 0.5 }",
+    );
+    assert_eq!(s.objects.len(), 3);
+}

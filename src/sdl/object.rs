@@ -81,7 +81,7 @@ impl Parser {
         self.nested(|p| f(p, t.span)).map(Some)
     }
 
-    fn open_brace(&mut self, what: &str) -> PResult<Span> {
+    pub(super) fn open_brace(&mut self, what: &str) -> PResult<Span> {
         self.expect_sym(Sym::LBrace, &format!("after '{what}'"))
     }
 
@@ -619,48 +619,35 @@ impl Parser {
                     self.advance();
                     break;
                 }
+                // Any colour expression: a keyword (`srgbt` too), or an identifier starting
+                // one (`White*2`).
+                Tok::Ident(_) if self.starts_color()? => light.color = self.parse_color()?.rgb,
                 Tok::Ident(k) => {
                     let k = k.clone();
+                    self.advance();
                     match &*k {
-                        "color" | "colour" | "rgb" | "rgbf" | "rgbt" | "rgbft" | "srgb" => {
-                            light.color = self.parse_color()?.rgb
+                        "shadowless" => light.shadowless = true,
+                        "fade_distance" => light.fade_distance = Some(self.parse_float()?),
+                        "fade_power" => light.fade_power = self.parse_float()?,
+                        "spotlight" | "cylinder" | "parallel" | "area_light" | "looks_like"
+                        | "projected_through" | "photons" | "media_interaction"
+                        | "media_attenuation" | "circular" | "orient" | "jitter" | "adaptive"
+                        | "area_illumination" => {
+                            self.unsupported(&k, t.span);
+                            self.skip_light_item(&k)?;
                         }
-                        // A colour identifier starts an expression: `White*2`.
-                        _ if matches!(
-                            self.lookup(&k),
-                            Some(Value::Color(_) | Value::Vector(..))
-                        ) =>
-                        {
-                            light.color = self.parse_color()?.rgb
+                        "point_at" | "radius" | "falloff" | "tightness" | "area_light_axis" => {
+                            self.unsupported(&k, t.span);
+                            self.parse_expr()?;
                         }
-                        _ => {
-                            self.advance();
-                            match &*k {
-                                "shadowless" => light.shadowless = true,
-                                "fade_distance" => light.fade_distance = Some(self.parse_float()?),
-                                "fade_power" => light.fade_power = self.parse_float()?,
-                                "spotlight" | "cylinder" | "parallel" | "area_light"
-                                | "looks_like" | "projected_through" | "photons"
-                                | "media_interaction" | "media_attenuation" | "circular"
-                                | "orient" | "jitter" | "adaptive" | "area_illumination" => {
-                                    self.unsupported(&k, t.span);
-                                    self.skip_light_item(&k)?;
-                                }
-                                "point_at" | "radius" | "falloff" | "tightness"
-                                | "area_light_axis" => {
-                                    self.unsupported(&k, t.span);
-                                    self.parse_expr()?;
-                                }
-                                other => {
-                                    if let Some(tr) = self.transform_item(other)? {
-                                        obj_tf = obj_tf.then(&tr);
-                                    } else {
-                                        return Err(self.error_at(
-                                            t.span,
-                                            format!("unexpected '{other}' in light_source"),
-                                        ));
-                                    }
-                                }
+                        other => {
+                            if let Some(tr) = self.transform_item(other)? {
+                                obj_tf = obj_tf.then(&tr);
+                            } else {
+                                return Err(self.error_at(
+                                    t.span,
+                                    format!("unexpected '{other}' in light_source"),
+                                ));
                             }
                         }
                     }

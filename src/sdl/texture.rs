@@ -86,37 +86,26 @@ const UNSUPPORTED_MODIFIERS: &[&str] = &[
     "exponent",
 ];
 
+/// Keywords that start a colour expression.
+const COLOR_KEYWORDS: &[&str] = &[
+    "color", "colour", "rgb", "rgbf", "rgbt", "rgbft", "srgb", "srgbf", "srgbt", "srgbft", "red",
+    "green", "blue",
+];
+
 /// Pattern modifiers that stand alone.
 const UNSUPPORTED_FLAGS: &[&str] = &["uv_mapping", "solid"];
 
 impl Parser {
-    fn begin_block(&mut self, what: &str) -> PResult<Span> {
-        self.expect_sym(Sym::LBrace, &format!("after '{what}'"))
-    }
-
-    /// Whether the next token starts a colour (so `pigment { Red }` is a solid colour).
-    fn starts_color(&mut self) -> PResult<bool> {
+    /// Whether the next token starts a colour (so `pigment { Red }` is a solid colour): a colour
+    /// keyword, a number, `<`, `(`, or an identifier holding a colour, vector or float.
+    pub(super) fn starts_color(&mut self) -> PResult<bool> {
         Ok(match self.peek()?.map(|t| t.tok) {
             Some(Tok::Ident(k)) => {
-                matches!(
-                    &*k,
-                    "color"
-                        | "colour"
-                        | "rgb"
-                        | "rgbf"
-                        | "rgbt"
-                        | "rgbft"
-                        | "srgb"
-                        | "srgbf"
-                        | "srgbt"
-                        | "srgbft"
-                        | "red"
-                        | "green"
-                        | "blue"
-                ) || matches!(
-                    self.lookup(&k),
-                    Some(Value::Color(_) | Value::Float(_) | Value::Vector(..))
-                )
+                COLOR_KEYWORDS.contains(&&*k)
+                    || matches!(
+                        self.lookup(&k),
+                        Some(Value::Color(_) | Value::Float(_) | Value::Vector(..))
+                    )
             }
             Some(Tok::Sym(Sym::Lt)) | Some(Tok::Num(_)) | Some(Tok::Sym(Sym::LParen)) => true,
             _ => false,
@@ -125,7 +114,7 @@ impl Parser {
 
     /// `pigment { ... }` after the keyword. `base` is the pigment being modified, if any.
     pub(super) fn parse_pigment_block(&mut self, base: Option<Pigment>) -> PResult<Pigment> {
-        self.begin_block("pigment")?;
+        self.open_brace("pigment")?;
         let mut p = base.unwrap_or_else(|| Pigment::solid(Rgbft::BLACK));
         if let Some(k) = self.peek_ident()? {
             if let Some(Value::Pigment(id)) = self.lookup(&k) {
@@ -293,7 +282,7 @@ impl Parser {
     }
 
     pub(super) fn parse_color_map(&mut self) -> PResult<ColorMap> {
-        self.begin_block("color_map")?;
+        self.open_brace("color_map")?;
         let mut map: ColorMap = Vec::new();
         if let Some(k) = self.peek_ident()? {
             match self.lookup(&k) {
@@ -340,7 +329,7 @@ impl Parser {
     }
 
     fn parse_image_map(&mut self, span: Span) -> PResult<ImageMap> {
-        self.begin_block("image_map")?;
+        self.open_brace("image_map")?;
         let mut kind = None;
         if let Some(k) = self.peek_ident()? {
             if matches!(
@@ -438,7 +427,7 @@ impl Parser {
     }
 
     pub(super) fn parse_finish_block(&mut self, base: Option<Finish>) -> PResult<Finish> {
-        self.begin_block("finish")?;
+        self.open_brace("finish")?;
         let mut f = base.unwrap_or_default();
         loop {
             let t = self.next_tok()?;
@@ -577,7 +566,7 @@ impl Parser {
     }
 
     pub(super) fn parse_texture_block(&mut self) -> PResult<Texture> {
-        self.begin_block("texture")?;
+        self.open_brace("texture")?;
         let mut tex = self.scene.default_texture.clone();
         if let Some(k) = self.peek_ident()? {
             if let Some(Value::Texture(id)) = self.lookup(&k) {
@@ -639,7 +628,7 @@ impl Parser {
     }
 
     pub(super) fn parse_interior_block(&mut self) -> PResult<Interior> {
-        self.begin_block("interior")?;
+        self.open_brace("interior")?;
         let mut int = Interior::default();
         loop {
             let t = self.next_tok()?;
