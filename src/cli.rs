@@ -194,6 +194,24 @@ pub struct Job {
     pub warnings: Vec<String>,
 }
 
+impl Job {
+    /// What the parser needs from the options, for `frame` of the run (the still picture's
+    /// frame when not animating): one place for render and check alike.
+    pub fn parse_options(&self, frame: &crate::anim::Frame) -> crate::sdl::ParseOptions {
+        let mut o = crate::sdl::ParseOptions {
+            library_paths: self.library_paths.clone(),
+            image_width: self.settings.width,
+            image_height: self.settings.height,
+            declares: self.declares.clone(),
+            ..crate::sdl::ParseOptions::default()
+        };
+        self.safety.apply(&mut o);
+        let animated = self.animation.is_animation();
+        frame.apply(&mut o, animated || self.animation.clock.is_some());
+        o
+    }
+}
+
 /// Splits POV-Ray style arguments from the rest so clap never sees them: anything starting
 /// with '+', and single-dash arguments other than lancer's own `-o`, `-q`, `-h`.
 pub fn split_args(args: Vec<String>) -> (Vec<String>, Vec<String>) {

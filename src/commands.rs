@@ -1,13 +1,11 @@
 //! The `compare`, `check` and `conformance` subcommands of the `lancer` binary (rendering lives
 //! in main.rs). Each returns the process exit code.
 
-use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Duration;
 
-use lancer::cli::{CheckArgs, CompareArgs, ConformanceArgs};
+use lancer::cli::{make_job, CheckArgs, CompareArgs, ConformanceArgs, RenderArgs};
 use lancer::conformance::{self, report, Options};
-use lancer::sdl::ParseOptions;
 
 pub fn compare(a: CompareArgs) -> ExitCode {
     let (c, base) = match lancer::compare::compare_files(&a.a, &a.b) {
@@ -37,20 +35,35 @@ pub fn compare(a: CompareArgs) -> ExitCode {
 }
 
 pub fn check(a: CheckArgs, pov: &[String]) -> ExitCode {
-    let mut library_paths = a.library_path.clone();
-    for opt in pov {
-        let body = &opt[1..];
-        if body.starts_with(['L', 'l']) {
-            library_paths.push(PathBuf::from(&body[1..]));
-        }
-    }
     let mut failed = 0;
     for file in &a.files {
-        let mut opts = ParseOptions {
-            library_paths: library_paths.clone(),
-            ..ParseOptions::default()
+        // The same options as a render of the file would get (+L, +W/+H, Declare=, +K, ...).
+        let args = RenderArgs {
+            scene: Some(file.clone()),
+            library_path: a.library_path.clone(),
+            safety: a.safety.clone(),
+            ..RenderArgs::default()
         };
-        a.safety.apply(&mut opts);
+        let job = match make_job(args, pov) {
+            Ok(j) => j,
+            Err(e) => {
+                eprintln!("lancer check: {e}");
+                return ExitCode::from(2);
+            }
+        };
+        let frame = match job.animation.frames(&job.output) {
+            Ok(f) => f.into_iter().next().expect("at least one frame"),
+            Err(e) => {
+                eprintln!("lancer check: {e}");
+                return ExitCode::from(2);
+            }
+        };
+        if file == &a.files[0] && !a.quiet {
+            for w in &job.warnings {
+                eprintln!("warning: {w}");
+            }
+        }
+        let opts = job.parse_options(&frame);
         let parsed = lancer::api::parse_file(file, opts);
         let sources = &parsed.parser.sources;
         if !a.quiet {

@@ -9,7 +9,6 @@ use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
 
 use lancer::anim::Frame;
 use lancer::cli::Job;
-use lancer::sdl::ParseOptions;
 
 pub fn render(job: Job) -> ExitCode {
     for w in &job.warnings {
@@ -92,15 +91,7 @@ fn render_frame(
     bar: &ProgressBar,
 ) -> ExitCode {
     let start = Instant::now();
-    let mut opts = ParseOptions {
-        library_paths: job.library_paths.clone(),
-        image_width: job.settings.width,
-        image_height: job.settings.height,
-        ..ParseOptions::default()
-    };
-    job.safety.apply(&mut opts);
-    opts.declares = job.declares.clone();
-    f.apply(&mut opts, animated || job.animation.clock.is_some());
+    let opts = job.parse_options(f);
     let parsed = lancer::api::parse_file_with(&job.scene, opts, lexed.take());
     let sources = &parsed.parser.sources;
     for w in &parsed.parser.warnings {

@@ -137,3 +137,11 @@ fn loop_cap_and_io_permission_from_the_command_line() {
     assert_eq!(code, 0, "{err}");
     assert_eq!(std::fs::read_to_string(&target).unwrap(), "hi");
 }
+
+#[test]
+fn check_takes_the_options_a_render_would() {
+    let f = scratch("declared.pov");
+    std::fs::write(&f, "sphere { 0, Size * clock }\n").unwrap();
+    let (code, _, err) = lancer(&["check", f.to_str().unwrap(), "Declare=Size=2", "+K0.5"]);
+    assert_eq!(code, 0, "{err}");
+}
