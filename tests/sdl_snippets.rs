@@ -391,3 +391,11 @@ fn light_colours_are_any_colour_expression() {
     );
     assert_eq!(s.objects.len(), 3);
 }
+
+#[test]
+fn call_arguments_read_comparisons_only_inside_their_own_parentheses() {
+    // povray 3.7: "Expected ')', > found" for the first; the second is fine.
+    parse_err("#declare A = (max(1 > 0, 2));");
+    let s = parse("#declare A = max((1 > 0), 2); sphere { 0, A }");
+    assert_eq!(radii(&s), vec![2.0]);
+}

@@ -183,10 +183,7 @@ impl Parser {
                 }
                 self.advance();
                 let ispan = self.next_span()?;
-                let saved = std::mem::replace(&mut self.in_vector, false);
-                let i = self.parse_float();
-                self.in_vector = saved;
-                let i = i?.trunc();
+                let i = self.with_rel(false, |p| p.parse_float())?.trunc();
                 let close = self.expect_sym(Sym::RBracket, "to close the array subscript")?;
                 p.span = Span {
                     end: close.end,

@@ -144,10 +144,7 @@ impl Parser {
         }
         loop {
             let s = self.next_span()?;
-            let saved = std::mem::replace(&mut self.in_vector, false);
-            let v = self.parse_expr();
-            self.in_vector = saved;
-            args.push((v?, s));
+            args.push((self.with_rel(false, |p| p.parse_expr())?, s));
             if self.eat_sym(Sym::RParen)? {
                 return Ok(args);
             }
@@ -423,10 +420,7 @@ impl Parser {
                 self.expect_sym(Sym::Comma, "between the arguments of trace")?;
             }
             let s = self.next_span()?;
-            let saved = std::mem::replace(&mut self.in_vector, false);
-            let v = self.parse_expr();
-            self.in_vector = saved;
-            args.push((v?, s));
+            args.push((self.with_rel(false, |p| p.parse_expr())?, s));
         }
         let mut normal_var = None;
         if self.eat_sym(Sym::Comma)? {

@@ -118,7 +118,7 @@ impl Parser {
         loop {
             let op = match self.raw_peek_sym()? {
                 Some(s @ (Sym::Lt | Sym::Le | Sym::Eq | Sym::Ne | Sym::Ge)) => s,
-                Some(Sym::Gt) if !self.in_vector => Sym::Gt,
+                Some(Sym::Gt) => Sym::Gt,
                 _ => return Ok(a),
             };
             self.advance();
@@ -275,12 +275,7 @@ impl Parser {
             Tok::Num(n) => Ok(Value::Float(*n)),
             Tok::Str(s) => Ok(Value::Str(s.clone())),
             Tok::Sym(Sym::LParen) => {
-                let saved = std::mem::replace(&mut self.in_vector, false);
-                let saved_rel = std::mem::replace(&mut self.rel_ok, true);
-                let v = self.parse_expr();
-                self.in_vector = saved;
-                self.rel_ok = saved_rel;
-                let v = v?;
+                let v = self.with_rel(true, |p| p.parse_expr())?;
                 self.expect_sym(Sym::RParen, "to close the parenthesis")?;
                 Ok(v)
             }
@@ -297,34 +292,29 @@ impl Parser {
     }
 
     fn parse_vector_literal(&mut self) -> PResult<Value> {
-        let saved = std::mem::replace(&mut self.in_vector, true);
-        let saved_rel = std::mem::replace(&mut self.rel_ok, false);
-        let r = (|| {
+        self.with_rel(false, |p| {
             let mut c = [0.0; 5];
             let mut n = 0usize;
             loop {
-                let span = self.cur_span();
-                let v = self.parse_expr()?;
+                let span = p.cur_span();
+                let v = p.parse_expr()?;
                 if n == 5 {
-                    return Err(self.error_at(span, "a vector has at most 5 components"));
+                    return Err(p.error_at(span, "a vector has at most 5 components"));
                 }
-                c[n] = self.float_of(v, span)?;
+                c[n] = p.float_of(v, span)?;
                 n += 1;
                 // Commas are optional and may trail (`<1 2 3>`, `<1,2,3,>`), as in POV-Ray.
-                self.skip_optional_comma()?;
-                if self.eat_sym(Sym::Gt)? {
+                p.skip_optional_comma()?;
+                if p.eat_sym(Sym::Gt)? {
                     break;
                 }
             }
             if n < 2 {
-                let span = self.cur_span();
-                return Err(self.error_at(span, "a vector needs at least 2 components"));
+                let span = p.cur_span();
+                return Err(p.error_at(span, "a vector needs at least 2 components"));
             }
             Ok(Value::Vector(c, n as u8))
-        })();
-        self.in_vector = saved;
-        self.rel_ok = saved_rel;
-        r
+        })
     }
 
     fn parse_ident_value(&mut self, k: Rc<str>, span: Span) -> PResult<Value> {

@@ -258,26 +258,16 @@ impl Parser {
             }
             "matrix" => {
                 self.expect_sym(Sym::Lt, "after 'matrix'")?;
-                let saved = std::mem::replace(&mut self.in_vector, true);
-                let mut v = [0.0; 12];
-                let mut r = Ok(());
-                for (i, x) in v.iter_mut().enumerate() {
-                    if i > 0 {
-                        if let Err(e) = self.skip_optional_comma() {
-                            r = Err(e);
-                            break;
+                let v = self.with_rel(false, |p| {
+                    let mut v = [0.0; 12];
+                    for (i, x) in v.iter_mut().enumerate() {
+                        if i > 0 {
+                            p.skip_optional_comma()?;
                         }
+                        *x = p.parse_float()?;
                     }
-                    match self.parse_float() {
-                        Ok(f) => *x = f,
-                        Err(e) => {
-                            r = Err(e);
-                            break;
-                        }
-                    }
-                }
-                self.in_vector = saved;
-                r?;
+                    Ok(v)
+                })?;
                 self.expect_sym(Sym::Gt, "to close the matrix")?;
                 Transform::pov_matrix(&v)
             }

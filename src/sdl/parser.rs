@@ -153,8 +153,6 @@ pub struct Parser {
     deferred: RefCell<HashMap<Rc<str>, Vec<Diagnostic>>>,
     /// Deferred warnings whose identifier has been used, waiting to join `warnings`.
     released: RefCell<Vec<Diagnostic>>,
-    /// Inside `< >` the `>` closes the vector instead of comparing.
-    pub(super) in_vector: bool,
     /// Inside `( )`, where comparisons, logic and `? :` are read (see `parse_rel`).
     pub(super) rel_ok: bool,
     last_span: Span,
@@ -221,7 +219,6 @@ impl Parser {
             warned: HashSet::new(),
             deferred: RefCell::default(),
             released: RefCell::default(),
-            in_vector: false,
             rel_ok: false,
             last_span: Span::default(),
             rand_streams: Vec::new(),
@@ -507,6 +504,20 @@ impl Parser {
         self.nesting += 1;
         let r = f(self);
         self.nesting -= 1;
+        r
+    }
+
+    /// Runs `f` with comparisons, `&`, `|` and `? :` read (`ok`) or not. POV-Ray reads them
+    /// only inside parentheses; vector literals, call arguments, subscripts and `matrix`
+    /// values start a context where they are not, so `max(1 > 0, 2)` is an error there too.
+    pub(super) fn with_rel<T>(
+        &mut self,
+        ok: bool,
+        f: impl FnOnce(&mut Self) -> PResult<T>,
+    ) -> PResult<T> {
+        let saved = std::mem::replace(&mut self.rel_ok, ok);
+        let r = f(self);
+        self.rel_ok = saved;
         r
     }
 

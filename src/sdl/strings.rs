@@ -143,21 +143,7 @@ impl Parser {
     }
 
     pub(super) fn string_function(&mut self, name: &str, span: Span) -> PResult<Value> {
-        self.expect_sym(Sym::LParen, &format!("after the function name {name}"))?;
-        let mut args: Vec<(Value, Span)> = Vec::new();
-        if !self.eat_sym(Sym::RParen)? {
-            loop {
-                let s = self.next_span()?;
-                let saved = std::mem::replace(&mut self.in_vector, false);
-                let v = self.parse_expr();
-                self.in_vector = saved;
-                args.push((v?, s));
-                if self.eat_sym(Sym::RParen)? {
-                    break;
-                }
-                self.expect_sym(Sym::Comma, &format!("between the arguments of {name}"))?;
-            }
-        }
+        let args = self.call_args(name)?;
         let want = |p: &Parser, n: usize| -> PResult<()> {
             if args.len() == n {
                 Ok(())
