@@ -215,8 +215,9 @@ impl Parser {
         }
     }
 
-    /// The value at a path: the array itself for an empty path, an element otherwise.
-    fn value_at(&self, p: &ElemPath) -> Option<&Value> {
+    /// The value at a path: the array itself for an empty path, an element otherwise (also
+    /// what a by-reference parameter points at, if it is still there).
+    pub(super) fn value_at(&self, p: &ElemPath) -> Option<&Value> {
         let mut cur = self.scopes.get(p.scope)?.get(&p.name)?;
         for &flat in &p.path {
             let Value::Array(a) = cur else { return None };

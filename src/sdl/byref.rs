@@ -70,16 +70,6 @@ impl Parser {
         }
     }
 
-    /// The value a reference points at, if it is still there.
-    pub(super) fn deref(&self, r: &ElemPath) -> Option<&Value> {
-        let mut cur = self.scopes.get(r.scope)?.get(&r.name)?;
-        for &flat in &r.path {
-            let Value::Array(a) = cur else { return None };
-            cur = a.items.get(flat)?.as_ref()?;
-        }
-        Some(cur)
-    }
-
     /// `#declare`/`#local` of a name: writes through a by-reference parameter; otherwise
     /// `#local` binds in the innermost table and `#declare` updates a local that already holds
     /// the name (so loops in macros work) or binds globally.

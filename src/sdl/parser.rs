@@ -715,7 +715,7 @@ impl Parser {
     /// `lookup` without counting as a use: `#ifdef`/`defined()` test a name, they do not use it.
     pub(super) fn lookup_quiet(&self, name: &str) -> Option<&Value> {
         match self.scopes.iter().rev().find_map(|s| s.get(name)) {
-            Some(Value::Ref(r)) => self.deref(r),
+            Some(Value::Ref(r)) => self.value_at(r),
             v => v,
         }
     }

@@ -6,7 +6,7 @@ use std::sync::Arc;
 use crate::color::Rgbft;
 use crate::math::{DVec3, Transform};
 use crate::scene::desc::{
-    CameraDesc, ColorMap, Finish, Interior, LightDesc, Normal, ObjectDesc, Pigment, Texture,
+    CameraDesc, ColorMap, Finish, Interior, Normal, ObjectDesc, Pigment, Texture,
 };
 
 use super::lexer::Token;
@@ -25,7 +25,6 @@ pub enum Value {
     Texture(Box<Texture>),
     Interior(Box<Interior>),
     Camera(Box<CameraDesc>),
-    Light(Box<LightDesc>),
     Transform(Box<Transform>),
     Macro(Rc<MacroDef>),
     /// A `function { ... }`, shared with whatever evaluates it (Arc: render threads may).
@@ -60,7 +59,6 @@ impl Value {
             Value::Texture(_) => "texture",
             Value::Interior(_) => "interior",
             Value::Camera(_) => "camera",
-            Value::Light(_) => "light_source",
             Value::Transform(_) => "transform",
             Value::Macro(_) => "macro",
             Value::Function(_) => "function",
