@@ -156,8 +156,8 @@ fn run_conformance(a: ConformanceArgs) -> Result<ExitCode, String> {
             a.lancer_timeout
         );
         let md = report::markdown(&results, &header);
-        write_atomically(&prefix.with_extension("md"), &md)?;
-        write_atomically(&prefix.with_extension("tsv"), &report::tsv(&results))?;
+        lancer::output::write_text_atomic(&prefix.with_extension("md"), &md)?;
+        lancer::output::write_text_atomic(&prefix.with_extension("tsv"), &report::tsv(&results))?;
     }
     if let Some(path) = &a.write_subset {
         write_subset(path, &results, a.subset_seconds)?;
@@ -211,15 +211,5 @@ min_good {}\n",
         text.push_str(g);
         text.push('\n');
     }
-    write_atomically(path, &text)
-}
-
-fn write_atomically(path: &std::path::Path, text: &str) -> Result<(), String> {
-    let tmp = path.with_extension(format!("tmp{}", std::process::id()));
-    std::fs::write(&tmp, text)
-        .and_then(|()| std::fs::rename(&tmp, path))
-        .map_err(|e| {
-            let _ = std::fs::remove_file(&tmp);
-            format!("cannot write {}: {e}", path.display())
-        })
+    lancer::output::write_text_atomic(path, &text)
 }

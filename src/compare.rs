@@ -99,21 +99,17 @@ impl Comparison {
                 bytes.push((v.clamp(0.0, 1.0) * 255.0 + 0.5) as u8);
             }
         }
-        let tmp = crate::output::temp_name(path);
-        let result = image::save_buffer_with_format(
-            &tmp,
-            &bytes,
-            *w,
-            *h,
-            image::ExtendedColorType::Rgb8,
-            image::ImageFormat::Png,
-        )
-        .map_err(|e| format!("{}: {e}", path.display()))
-        .and_then(|()| std::fs::rename(&tmp, path).map_err(|e| format!("{}: {e}", path.display())));
-        if result.is_err() {
-            let _ = std::fs::remove_file(&tmp);
-        }
-        result
+        crate::output::write_atomic(path, |tmp| {
+            image::save_buffer_with_format(
+                tmp,
+                &bytes,
+                *w,
+                *h,
+                image::ExtendedColorType::Rgb8,
+                image::ImageFormat::Png,
+            )
+            .map_err(|e| e.to_string())
+        })
     }
 }
 

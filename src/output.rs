@@ -48,22 +48,35 @@ fn channels<T: Send>(film: &Film, f: impl Fn(f64) -> T + Sync) -> Vec<T> {
 }
 
 pub fn write(film: &Film, path: &Path, format: Format) -> Result<(), String> {
+    write_atomic(path, |tmp| write_to(film, tmp, format))
+}
+
+/// Writes `path` under a temporary name beside it, then renames: whoever sees the name sees
+/// a finished file (frames skipped by `+C`, cache records, reports). `write` gets the
+/// temporary path; on any failure the temporary file is removed.
+pub fn write_atomic(
+    path: &Path,
+    write: impl FnOnce(&Path) -> Result<(), String>,
+) -> Result<(), String> {
     let tmp = temp_name(path);
-    let result = write_to(film, &tmp, format);
-    if let Err(e) = result {
+    if let Err(e) = write(&tmp) {
         let _ = std::fs::remove_file(&tmp);
         return Err(format!("cannot write {}: {e}", path.display()));
     }
     std::fs::rename(&tmp, path).map_err(|e| {
         let _ = std::fs::remove_file(&tmp);
-        format!(
-            "cannot move the finished picture to {}: {e}",
-            path.display()
-        )
+        format!("cannot move the finished file to {}: {e}", path.display())
     })
 }
 
-pub(crate) fn temp_name(path: &Path) -> PathBuf {
+/// `write_atomic` for text.
+pub fn write_text_atomic(path: &Path, text: &str) -> Result<(), String> {
+    write_atomic(path, |tmp| {
+        std::fs::write(tmp, text).map_err(|e| e.to_string())
+    })
+}
+
+fn temp_name(path: &Path) -> PathBuf {
     let name = path
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())

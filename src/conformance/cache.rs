@@ -93,8 +93,6 @@ impl Cache {
     /// Stores the record last, through a temporary name, so an interrupted run never leaves a
     /// record that claims a picture which is not there.
     pub fn put(&self, key: u64, r: &PovResult) -> Result<(), String> {
-        let path = self.record(key);
-        let tmp = path.with_extension(format!("txt.{}.tmp", std::process::id()));
         let line = format!(
             "{}\t{:.3}\t{:.3}\t{}\n",
             r.status.as_str(),
@@ -102,9 +100,7 @@ impl Cache {
             r.work_seconds,
             r.message.replace(['\t', '\n'], " ")
         );
-        std::fs::write(&tmp, line)
-            .and_then(|()| std::fs::rename(&tmp, &path))
-            .map_err(|e| format!("cannot write {}: {e}", path.display()))
+        crate::output::write_text_atomic(&self.record(key), &line)
     }
 }
 
