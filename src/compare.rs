@@ -46,8 +46,7 @@ pub fn compare_files(a: &Path, b: &Path) -> Result<(Comparison, Picture), Compar
 }
 
 pub fn compare(a: &Picture, b: &Picture) -> Result<Comparison, String> {
-    let ssim = ssim::ssim(a, b)?;
-    let map = ssim::ssim_map(a, b)?;
+    let (ssim, map) = ssim::ssim_and_map(a, b)?;
     let worst_tile = ssim::worst_tile_at(&map, TILE);
     let psnr = ssim::psnr(a, b)?;
     Ok(Comparison {

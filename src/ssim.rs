@@ -129,34 +129,53 @@ fn clamp01(v: f32) -> f32 {
 /// refuses those too).
 pub fn ssim(a: &Picture, b: &Picture) -> Result<f64, String> {
     let (w, h) = check(a, b)?;
+    Ok(mean_ssim(&channel_maps(a, b, w, h), w, h))
+}
+
+/// The SSIM and the per-pixel map together, computing the expensive channel maps once.
+pub fn ssim_and_map(a: &Picture, b: &Picture) -> Result<(f64, SsimMap), String> {
+    let (w, h) = check(a, b)?;
     let maps = channel_maps(a, b, w, h);
+    Ok((
+        mean_ssim(&maps, w, h),
+        (a.width, a.height, average_map(&maps)),
+    ))
+}
+
+/// Mean over channels of each map's mean away from the border (scikit-image's cropping).
+fn mean_ssim(maps: &[Vec<f64>; 3], w: usize, h: usize) -> f64 {
     let m = RADIUS;
     let count = ((w - 2 * m) * (h - 2 * m)) as f64;
     let mut total = 0.0;
-    for map in &maps {
+    for map in maps {
         let sum: f64 = (m..h - m)
             .map(|y| map[y * w + m..y * w + w - m].iter().sum::<f64>())
             .sum();
         total += sum / count;
     }
-    Ok(total / 3.0)
+    total / 3.0
 }
+
+/// The channel maps averaged pixel by pixel.
+fn average_map([m0, m1, m2]: &[Vec<f64>; 3]) -> Vec<f32> {
+    m0.iter()
+        .zip(m1)
+        .zip(m2)
+        .map(|((x, y), z)| ((x + y + z) / 3.0) as f32)
+        .collect()
+}
+
+/// Width, height and the per-pixel SSIM values, row-major.
+pub type SsimMap = (u32, u32, Vec<f32>);
 
 /// Per-pixel SSIM map (mean over channels), for heat maps and worst-tile reports.
 ///
 /// The map has the picture's full size, border included (scikit-image's `full=True` output
 /// averaged over channels), so it overlays the image pixel for pixel; `ssim` averages only the
 /// part at least `BORDER` pixels from every edge.
-pub fn ssim_map(a: &Picture, b: &Picture) -> Result<(u32, u32, Vec<f32>), String> {
+pub fn ssim_map(a: &Picture, b: &Picture) -> Result<SsimMap, String> {
     let (w, h) = check(a, b)?;
-    let [m0, m1, m2] = channel_maps(a, b, w, h);
-    let map = m0
-        .iter()
-        .zip(&m1)
-        .zip(&m2)
-        .map(|((x, y), z)| ((x + y + z) / 3.0) as f32)
-        .collect();
-    Ok((a.width, a.height, map))
+    Ok((a.width, a.height, average_map(&channel_maps(a, b, w, h))))
 }
 
 /// Mean SSIM of the worst 16×16 tile, or `tile`×`tile` for another `tile`.

@@ -213,8 +213,14 @@ fn run_one(
     let dir = scene.parent().unwrap_or(Path::new(".")).to_path_buf();
     let content =
         std::fs::read(&scene).map_err(|e| format!("cannot read {}: {e}", scene.display()))?;
-    let size = format!("{}x{} +FN8 -A +WT1 povray-3.7", o.width, o.height);
-    let key = cache::fnv64(&[&content, size.as_bytes(), name.as_bytes()]);
+    // The options POV-Ray gets, less the paths (which change with every run's scratch copy),
+    // so that changing `canonical_args` can never reuse a stale picture.
+    let options: String = canonical_args(o, &scene, Path::new(""))
+        .into_iter()
+        .filter(|a| !a.starts_with("+L") && !a.starts_with("+I") && !a.starts_with("+O"))
+        .collect::<Vec<_>>()
+        .join(" ");
+    let key = cache::fnv64(&[&content, options.as_bytes(), b"povray-3.7", name.as_bytes()]);
     let pov = match cache.get(key) {
         Some(r) => r,
         None => {
@@ -242,18 +248,23 @@ fn run_one(
     } else if run.code != Some(0) {
         Class::Error(report::first_error(&run.stderr))
     } else {
-        match crate::compare::compare_files(&out, &cache.picture(key)) {
-            Ok((c, _)) => {
-                ssim = Some(c.ssim);
-                if c.ssim >= GOOD {
+        // Only the score is reported here: no map, tile or PSNR to compute.
+        let score = crate::ssim::Picture::load(&out).and_then(|mine| {
+            let theirs = crate::ssim::Picture::load(&cache.picture(key))?;
+            crate::ssim::ssim(&mine, &theirs)
+        });
+        match score {
+            Ok(s) => {
+                ssim = Some(s);
+                if s >= GOOD {
                     Class::Good
-                } else if c.ssim >= CLOSE {
+                } else if s >= CLOSE {
                     Class::Close
                 } else {
                     Class::Low
                 }
             }
-            Err(e) => Class::Error(format!("cannot compare the pictures: {}", e.0)),
+            Err(e) => Class::Error(format!("cannot compare the pictures: {e}")),
         }
     };
     let _ = std::fs::remove_file(&out);
