@@ -2,6 +2,8 @@
 //! resuming, and frames that are the same bytes however the run is split (the basis of
 //! spreading an animation over machines).
 
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -21,15 +23,12 @@ fn dir(name: &str) -> PathBuf {
     d
 }
 
+/// Renders frames 1-6 of spin.pov in `d` (more options after), which must succeed; stderr.
 fn lancer(d: &Path, args: &[&str]) -> String {
-    let out = Command::new(env!("CARGO_BIN_EXE_lancer"))
-        .current_dir(d)
-        .args(["spin.pov", "+W48", "+H36", "+A0.3", "+KFI1", "+KFF6"])
-        .args(args)
-        .output()
-        .expect("run lancer");
-    let err = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert!(out.status.success(), "{err}");
+    let mut all = vec!["spin.pov", "+W48", "+H36", "+A0.3", "+KFI1", "+KFF6"];
+    all.extend_from_slice(args);
+    let (code, _, err) = common::lancer_in(d, &all);
+    assert_eq!(code, 0, "{err}");
     err
 }
 

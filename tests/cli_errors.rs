@@ -1,18 +1,14 @@
 //! The binary's behaviour on bad input: exit 1 with file and line, never a panic or a hang;
 //! exit 2 on usage errors.
 
-use std::path::PathBuf;
-use std::process::Command;
+mod common;
 
+use std::path::{Path, PathBuf};
+
+/// Exit code and stderr.
 fn lancer(args: &[&str]) -> (i32, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_lancer"))
-        .args(args)
-        .output()
-        .expect("run lancer");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
+    let (code, _, err) = common::lancer_in(Path::new("."), args);
+    (code, err)
 }
 
 fn scene_file(name: &str, content: &[u8]) -> PathBuf {

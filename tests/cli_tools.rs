@@ -1,19 +1,12 @@
 //! The `compare` and `check` subcommands as a user's script meets them: what they print and
 //! which exit codes they give.
 
+mod common;
+
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 fn lancer(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_lancer"))
-        .args(args)
-        .output()
-        .expect("run lancer");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
+    common::lancer_in(Path::new("."), args)
 }
 
 fn reference(name: &str) -> String {

@@ -3,16 +3,11 @@
 //! are kept with the digits it printed.
 #![allow(clippy::excessive_precision)]
 
+mod common;
+
+use common::parser;
 use lancer::sdl::value::Value;
 use lancer::sdl::{ParseOptions, Parser};
-
-fn parser(src: &str) -> Parser {
-    let mut p = Parser::new(ParseOptions::default());
-    if let Err(e) = p.parse_str("snippet.pov", src) {
-        panic!("{}", e.one_line(&p.sources));
-    }
-    p
-}
 
 fn float(p: &Parser, name: &str) -> f64 {
     match p.lookup(name) {

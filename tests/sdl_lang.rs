@@ -1,41 +1,12 @@
 //! Snippet tests for the scene language's control flow, arrays, strings, splines, file I/O and
 //! limits. Expected values come from running POV-Ray 3.7.0 on the same text (`#debug` output).
 
+mod common;
+
+use common::{parse, parse_err, parse_with, radii};
 use lancer::scene::desc::{SceneDesc, ShapeDesc};
 use lancer::sdl::{ParseOptions, Parser};
 
-fn parse(src: &str) -> SceneDesc {
-    parse_with(ParseOptions::default(), src)
-}
-
-fn parse_with(opts: ParseOptions, src: &str) -> SceneDesc {
-    let mut p = Parser::new(opts);
-    if let Err(e) = p.parse_str("snippet.pov", src) {
-        panic!("{}", e.one_line(&p.sources));
-    }
-    p.scene
-}
-
-fn parse_err(src: &str) -> String {
-    let mut p = Parser::new(ParseOptions::default());
-    match p.parse_str("snippet.pov", src) {
-        Ok(()) => panic!("expected an error"),
-        Err(e) => e.one_line(&p.sources),
-    }
-}
-
-/// Sphere radii in scene order: the snippets print values as `sphere { 0, value }`.
-fn radii(s: &SceneDesc) -> Vec<f64> {
-    s.objects
-        .iter()
-        .filter_map(|o| match o.shape {
-            ShapeDesc::Sphere { radius, .. } => Some(radius),
-            _ => None,
-        })
-        .collect()
-}
-
-#[allow(dead_code)]
 fn centers(s: &SceneDesc) -> Vec<[f64; 3]> {
     s.objects
         .iter()

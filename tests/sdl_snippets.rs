@@ -1,33 +1,10 @@
 //! Snippet tests for the scene language: small texts parsed into scene descriptions.
 
-use lancer::scene::desc::{PigmentKind, SceneDesc, ShapeDesc};
+mod common;
+
+use common::{parse, parse_err, radii};
+use lancer::scene::desc::{PigmentKind, ShapeDesc};
 use lancer::sdl::{ParseOptions, Parser};
-
-fn parse(src: &str) -> SceneDesc {
-    let mut p = Parser::new(ParseOptions::default());
-    if let Err(e) = p.parse_str("snippet.pov", src) {
-        panic!("{}", e.one_line(&p.sources));
-    }
-    p.scene
-}
-
-fn parse_err(src: &str) -> String {
-    let mut p = Parser::new(ParseOptions::default());
-    match p.parse_str("snippet.pov", src) {
-        Ok(()) => panic!("expected an error"),
-        Err(e) => e.one_line(&p.sources),
-    }
-}
-
-fn radii(s: &SceneDesc) -> Vec<f64> {
-    s.objects
-        .iter()
-        .filter_map(|o| match o.shape {
-            ShapeDesc::Sphere { radius, .. } => Some(radius),
-            _ => None,
-        })
-        .collect()
-}
 
 #[test]
 fn expressions_and_promotion() {
