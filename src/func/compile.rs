@@ -3,7 +3,7 @@
 use std::sync::Arc;
 
 use super::vm::{Code, Op};
-use super::{BinOp, Expr, Function};
+use super::{truth, BinOp, Expr, Function};
 
 struct Emitter {
     ops: Vec<Op>,
@@ -38,7 +38,7 @@ impl Emitter {
             Expr::Bin(op, a, b) => {
                 self.expr(a);
                 self.expr(b);
-                self.push(bin_op(*op), -1);
+                self.push(Op::Bin(*op), -1);
             }
             Expr::Math1(f, a) => {
                 self.expr(a);
@@ -102,14 +102,15 @@ impl Emitter {
                 let top = self.ops.len() as u32;
                 self.push(Op::Pick(1), 1);
                 self.push(Op::Load(var), 1);
-                self.push(Op::Ge, -1);
+                self.push(Op::Bin(BinOp::Ge), -1);
                 let jump_at = self.ops.len();
                 self.push(Op::JumpIfZero(0), -1);
                 self.expr(body);
-                self.push(if *product { Op::Mul } else { Op::Add }, -1);
+                let step = if *product { BinOp::Mul } else { BinOp::Add };
+                self.push(Op::Bin(step), -1);
                 self.push(Op::Load(var), 1);
                 self.push(Op::Const(1.0), 1);
-                self.push(Op::Add, -1);
+                self.push(Op::Bin(BinOp::Add), -1);
                 self.push(Op::Store(var), -1);
                 self.push(Op::Jump(top), 0);
                 let exit = self.ops.len() as u32;
@@ -120,26 +121,8 @@ impl Emitter {
     }
 }
 
-fn bin_op(op: BinOp) -> Op {
-    match op {
-        BinOp::Add => Op::Add,
-        BinOp::Sub => Op::Sub,
-        BinOp::Mul => Op::Mul,
-        BinOp::Div => Op::Div,
-        BinOp::Lt => Op::Lt,
-        BinOp::Le => Op::Le,
-        BinOp::Eq => Op::Eq,
-        BinOp::Ne => Op::Ne,
-        BinOp::Ge => Op::Ge,
-        BinOp::Gt => Op::Gt,
-        BinOp::And => Op::And,
-        BinOp::Or => Op::Or,
-    }
-}
-
 /// The value of an expression that depends on no slot and calls nothing.
 fn fold(e: &Expr) -> Option<f64> {
-    let truth = |b: bool| if b { 1.0 } else { 0.0 };
     Some(match e {
         Expr::Const(c) => *c,
         Expr::Slot(_) | Expr::Call(..) | Expr::Loop { .. } => return None,
@@ -147,23 +130,7 @@ fn fold(e: &Expr) -> Option<f64> {
         Expr::Not(a) => truth(fold(a)? == 0.0),
         Expr::Math1(f, a) => f(fold(a)?),
         Expr::Math2(f, a, b) => f(fold(a)?, fold(b)?),
-        Expr::Bin(op, a, b) => {
-            let (a, b) = (fold(a)?, fold(b)?);
-            match op {
-                BinOp::Add => a + b,
-                BinOp::Sub => a - b,
-                BinOp::Mul => a * b,
-                BinOp::Div => a / b,
-                BinOp::Lt => truth(a < b),
-                BinOp::Le => truth(a <= b),
-                BinOp::Eq => truth(a == b),
-                BinOp::Ne => truth(a != b),
-                BinOp::Ge => truth(a >= b),
-                BinOp::Gt => truth(a > b),
-                BinOp::And => truth(a != 0.0 && b != 0.0),
-                BinOp::Or => truth(a != 0.0 || b != 0.0),
-            }
-        }
+        Expr::Bin(op, a, b) => op.apply(fold(a)?, fold(b)?),
         Expr::Min(v) => v
             .iter()
             .map(fold)

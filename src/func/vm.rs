@@ -6,7 +6,7 @@
 
 use std::sync::Arc;
 
-use super::Function;
+use super::{truth, BinOp, Function};
 
 /// Values kept on the Rust stack per evaluation (slots plus operand stack); bigger bodies fall
 /// back to a heap buffer.
@@ -20,18 +20,7 @@ pub enum Op {
     Store(u32),
     Neg,
     Not,
-    Add,
-    Sub,
-    Mul,
-    Div,
-    Lt,
-    Le,
-    Eq,
-    Ne,
-    Ge,
-    Gt,
-    And,
-    Or,
+    Bin(BinOp),
     F1(fn(f64) -> f64),
     F2(fn(f64, f64) -> f64),
     /// Minimum or maximum of the top `n` values.
@@ -58,14 +47,6 @@ pub struct Code {
     pub(super) slots: usize,
     /// Deepest operand stack the code reaches.
     pub(super) max_stack: usize,
-}
-
-fn truth(b: bool) -> f64 {
-    if b {
-        1.0
-    } else {
-        0.0
-    }
 }
 
 impl Code {
@@ -111,18 +92,7 @@ impl Code {
                 }
                 Op::Neg => stack[sp - 1] = -stack[sp - 1],
                 Op::Not => stack[sp - 1] = truth(stack[sp - 1] == 0.0),
-                Op::Add => bin!(|a, b| a + b),
-                Op::Sub => bin!(|a, b| a - b),
-                Op::Mul => bin!(|a, b| a * b),
-                Op::Div => bin!(|a, b| a / b),
-                Op::Lt => bin!(|a, b| truth(a < b)),
-                Op::Le => bin!(|a, b| truth(a <= b)),
-                Op::Eq => bin!(|a, b| truth(a == b)),
-                Op::Ne => bin!(|a, b| truth(a != b)),
-                Op::Ge => bin!(|a, b| truth(a >= b)),
-                Op::Gt => bin!(|a, b| truth(a > b)),
-                Op::And => bin!(|a: f64, b: f64| truth(a != 0.0 && b != 0.0)),
-                Op::Or => bin!(|a: f64, b: f64| truth(a != 0.0 || b != 0.0)),
+                Op::Bin(o) => bin!(|a, b| o.apply(a, b)),
                 Op::F1(f) => stack[sp - 1] = f(stack[sp - 1]),
                 Op::F2(f) => bin!(f),
                 Op::Min(n) | Op::Max(n) => {
