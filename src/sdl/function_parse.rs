@@ -87,6 +87,22 @@ fn math2(name: &str) -> Option<fn(f64, f64) -> f64> {
     })
 }
 
+/// The function language's binary operators by precedence, loosest first.
+const LEVELS: [&[(Sym, BinOp)]; 5] = [
+    &[(Sym::Or, BinOp::Or)],
+    &[(Sym::And, BinOp::And)],
+    &[
+        (Sym::Lt, BinOp::Lt),
+        (Sym::Le, BinOp::Le),
+        (Sym::Eq, BinOp::Eq),
+        (Sym::Ne, BinOp::Ne),
+        (Sym::Ge, BinOp::Ge),
+        (Sym::Gt, BinOp::Gt),
+    ],
+    &[(Sym::Plus, BinOp::Add), (Sym::Minus, BinOp::Sub)],
+    &[(Sym::Star, BinOp::Mul), (Sym::Slash, BinOp::Div)],
+];
+
 impl Parser {
     /// After the keyword `function`: an optional parameter list and the body in braces.
     pub(super) fn parse_function_literal(&mut self, span: Span) -> PResult<Value> {
@@ -207,75 +223,27 @@ impl Parser {
 
     fn fn_or(&mut self, s: &mut FnScope) -> PResult<Expr> {
         // Parentheses and call arguments recurse through here.
-        self.nested(|p| p.fn_or_level(s))
+        self.nested(|p| p.fn_level(s, 0))
     }
 
-    fn fn_or_level(&mut self, s: &mut FnScope) -> PResult<Expr> {
-        let mut a = self.fn_and(s)?;
-        while self.raw_peek_sym()? == Some(Sym::Or) {
-            self.advance();
-            let b = self.fn_and(s)?;
-            self.count_operator(s)?;
-            a = Expr::Bin(BinOp::Or, Box::new(a), Box::new(b));
-        }
-        Ok(a)
-    }
-
-    fn fn_and(&mut self, s: &mut FnScope) -> PResult<Expr> {
-        let mut a = self.fn_rel(s)?;
-        while self.raw_peek_sym()? == Some(Sym::And) {
-            self.advance();
-            let b = self.fn_rel(s)?;
-            self.count_operator(s)?;
-            a = Expr::Bin(BinOp::And, Box::new(a), Box::new(b));
-        }
-        Ok(a)
-    }
-
-    fn fn_rel(&mut self, s: &mut FnScope) -> PResult<Expr> {
-        let mut a = self.fn_add(s)?;
+    /// One precedence level of binary operators (`LEVELS[level]`), left-associative, whose
+    /// operands are the next tighter level or, past the last, a unary expression.
+    fn fn_level(&mut self, s: &mut FnScope, level: usize) -> PResult<Expr> {
+        let operand = |p: &mut Self, s: &mut FnScope| {
+            if level + 1 < LEVELS.len() {
+                p.fn_level(s, level + 1)
+            } else {
+                p.fn_unary(s)
+            }
+        };
+        let mut a = operand(self, s)?;
         loop {
-            let op = match self.raw_peek_sym()? {
-                Some(Sym::Lt) => BinOp::Lt,
-                Some(Sym::Le) => BinOp::Le,
-                Some(Sym::Eq) => BinOp::Eq,
-                Some(Sym::Ne) => BinOp::Ne,
-                Some(Sym::Ge) => BinOp::Ge,
-                Some(Sym::Gt) => BinOp::Gt,
-                _ => return Ok(a),
+            let sym = self.raw_peek_sym()?;
+            let Some(&(_, op)) = LEVELS[level].iter().find(|(t, _)| Some(*t) == sym) else {
+                return Ok(a);
             };
             self.advance();
-            let b = self.fn_add(s)?;
-            self.count_operator(s)?;
-            a = Expr::Bin(op, Box::new(a), Box::new(b));
-        }
-    }
-
-    fn fn_add(&mut self, s: &mut FnScope) -> PResult<Expr> {
-        let mut a = self.fn_mul(s)?;
-        loop {
-            let op = match self.raw_peek_sym()? {
-                Some(Sym::Plus) => BinOp::Add,
-                Some(Sym::Minus) => BinOp::Sub,
-                _ => return Ok(a),
-            };
-            self.advance();
-            let b = self.fn_mul(s)?;
-            self.count_operator(s)?;
-            a = Expr::Bin(op, Box::new(a), Box::new(b));
-        }
-    }
-
-    fn fn_mul(&mut self, s: &mut FnScope) -> PResult<Expr> {
-        let mut a = self.fn_unary(s)?;
-        loop {
-            let op = match self.raw_peek_sym()? {
-                Some(Sym::Star) => BinOp::Mul,
-                Some(Sym::Slash) => BinOp::Div,
-                _ => return Ok(a),
-            };
-            self.advance();
-            let b = self.fn_unary(s)?;
+            let b = operand(self, s)?;
             self.count_operator(s)?;
             a = Expr::Bin(op, Box::new(a), Box::new(b));
         }
