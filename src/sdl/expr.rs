@@ -318,17 +318,27 @@ impl Parser {
     }
 
     fn parse_ident_value(&mut self, k: Rc<str>, span: Span) -> PResult<Value> {
-        if let Some(v) = self.lang_ident_value(&k, span)? {
-            return Ok(v);
-        }
-        if let Some(v) = self.lookup(&k).cloned() {
-            if let Value::Function(func) = &v {
-                // A function identifier is called when followed by `(`; alone it is a value
-                // (passed to a macro, say).
+        // One lookup per identifier. Function and spline identifiers are called when `(`
+        // follows; alone they are values (passed to a macro, say).
+        match self.lookup(&k) {
+            Some(Value::Function(f)) => {
+                let f = f.clone();
                 if self.raw_peek_sym()? == Some(Sym::LParen) {
-                    return self.call_function(&k, func, span);
+                    return self.call_function(&k, &f, span);
                 }
+                return Ok(Value::Function(f));
             }
+            Some(Value::Spline(s)) => {
+                let s = s.clone();
+                if self.raw_peek_sym()? == Some(Sym::LParen) {
+                    return self.call_spline(s, &k);
+                }
+                return Ok(Value::Spline(s));
+            }
+            Some(v) => return Ok(v.clone()),
+            None => {}
+        }
+        if let Some(v) = self.lang_ident_value(&k, span)? {
             return Ok(v);
         }
         if let Some(x) = self.builtin_float_ident(&k) {

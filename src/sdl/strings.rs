@@ -104,19 +104,9 @@ pub fn strcmp(a: &str, b: &str) -> f64 {
 }
 
 impl Parser {
-    /// Built-ins handled by the language modules; `None` when `k` is none of them.
+    /// Built-ins handled by the language modules (for a name no identifier holds); `None` when
+    /// `k` is none of them.
     pub(super) fn lang_ident_value(&mut self, k: &Rc<str>, span: Span) -> PResult<Option<Value>> {
-        match self.lookup(k) {
-            Some(Value::Spline(s)) => {
-                let s = s.clone();
-                if self.raw_peek_sym()? == Some(Sym::LParen) {
-                    return self.call_spline(s, k).map(Some);
-                }
-                return Ok(None);
-            }
-            Some(_) => return Ok(None),
-            None => {}
-        }
         let v = match &**k {
             "dimensions" | "dimension_size" => self.array_function(k, span)?,
             "defined" => {
