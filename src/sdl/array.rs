@@ -148,8 +148,13 @@ impl Parser {
             },
         };
         loop {
-            let dims = match self.value_at(&p) {
-                Some(Value::Array(a)) => a.dims.clone(),
+            // Copied out (at most MAX_DIMS) rather than cloned: this runs for every `A[i]`.
+            let (dims, nd) = match self.value_at(&p) {
+                Some(Value::Array(a)) => {
+                    let mut d = [0usize; MAX_DIMS];
+                    d[..a.dims.len()].copy_from_slice(&a.dims);
+                    (d, a.dims.len())
+                }
                 Some(other) => {
                     let t = other.type_name();
                     return Err(self.error_at(
@@ -168,8 +173,16 @@ impl Parser {
                 }
             };
             let mut flat = 0usize;
-            let mut shown = self.describe(&p);
-            for (d, &size) in dims.iter().enumerate() {
+            // The subscripts read so far, spelled out only in an error message.
+            let mut subs = [0.0f64; MAX_DIMS];
+            let shown = |me: &Self, p: &ElemPath, subs: &[f64]| {
+                let mut s = me.describe(p);
+                for i in subs {
+                    s.push_str(&format!("[{i}]"));
+                }
+                s
+            };
+            for (d, &size) in dims[..nd].iter().enumerate() {
                 if self.raw_peek_sym()? != Some(Sym::LBracket) {
                     let here = self.next_span()?;
                     return Err(self.error_at(
@@ -177,7 +190,7 @@ impl Parser {
                         format!(
                             "{} has {} dimensions but only {d} subscripts are given; a row of a multi-dimensional array cannot be used on its own",
                             self.describe(&p),
-                            dims.len()
+                            nd
                         ),
                     ));
                 }
@@ -189,13 +202,15 @@ impl Parser {
                     end: close.end,
                     ..p.span
                 };
-                shown.push_str(&format!("[{i}]"));
+                subs[d] = i;
                 if i < 0.0 {
+                    let shown = shown(self, &p, &subs[..=d]);
                     return Err(
                         self.error_at(ispan, format!("negative array subscript in {shown}"))
                     );
                 }
                 if i >= size as f64 {
+                    let shown = shown(self, &p, &subs[..=d]);
                     return Err(self.error_at(
                         ispan,
                         format!(
@@ -236,8 +251,7 @@ impl Parser {
     /// The array holding the element at `p`, for changing it.
     fn array_mut(&mut self, p: &ElemPath) -> Option<&mut ArrayVal> {
         let mut cur = self.scopes.get_mut(p.scope)?.get_mut(&p.name)?;
-        let (last, walk) = p.path.split_last()?;
-        let _ = last;
+        let (_, walk) = p.path.split_last()?;
         for &flat in walk {
             let Value::Array(a) = cur else { return None };
             cur = Rc::make_mut(a).items.get_mut(flat)?.as_mut()?;
@@ -251,20 +265,22 @@ impl Parser {
     /// Sets (or with `None` unsets) an element, enforcing one type per array.
     pub(super) fn set_element(&mut self, p: &ElemPath, v: Option<Value>) -> PResult<()> {
         let flat = *p.path.last().expect("an element path");
-        let desc = self.describe(p);
         let new_kind = v.as_ref().map(kind_of);
-        let Some(a) = self.array_mut(p) else {
+        // The element's name is spelled out only for an error: assignments in loops are common.
+        let Some(kind) = self.array_mut(p).map(|a| a.kind) else {
+            let desc = self.describe(p);
             return Err(self.error_at(p.span, format!("{desc} is not an array element")));
         };
-        if let (Some(k), Some(nk)) = (a.kind, new_kind) {
+        if let (Some(k), Some(nk)) = (kind, new_kind) {
             if k != nk {
-                let span = p.span;
+                let desc = self.describe(p);
                 return Err(self.error_at(
-                    span,
+                    p.span,
                     format!("cannot set {desc} to a {nk}: the array holds {k}s (POV-Ray: attempted to redefine {k} identifier as {nk} identifier)"),
                 ));
             }
         }
+        let a = self.array_mut(p).expect("found just above");
         if a.kind.is_none() {
             a.kind = new_kind;
         }
