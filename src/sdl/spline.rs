@@ -16,6 +16,7 @@
 //! longest vector given (2 to 5); a shorter vector takes its missing components from the point
 //! written before it (zeros for the first), as POV-Ray's parser leaves them.
 
+use std::cell::OnceCell;
 use std::rc::Rc;
 
 use super::lexer::{Sym, Tok};
@@ -43,13 +44,28 @@ impl SplineKind {
     }
 }
 
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct SplineDef {
     pub kind: SplineKind,
     /// Sorted by parameter, parameters distinct.
     pub points: Vec<(f64, [f64; 5])>,
     /// Components of the result, 2 to 5.
     pub dim: u8,
+    /// The natural spline's second derivatives at each point, solved once on first use (a
+    /// camera path is evaluated once per frame, a #while may evaluate it thousands of times).
+    natural_m: OnceCell<Vec<P>>,
+}
+
+impl Clone for SplineDef {
+    /// A copy (`spline { S ... }`) may get more points, so the solved system stays behind.
+    fn clone(&self) -> Self {
+        SplineDef {
+            kind: self.kind,
+            points: self.points.clone(),
+            dim: self.dim,
+            natural_m: OnceCell::new(),
+        }
+    }
 }
 
 type P = [f64; 5];
@@ -61,6 +77,7 @@ fn lerp(a: &P, b: &P, s: f64) -> P {
 impl SplineDef {
     /// Adds a point, replacing one with the same parameter.
     pub fn insert(&mut self, t: f64, v: P, n: u8) {
+        self.natural_m = OnceCell::new();
         self.dim = self.dim.max(n);
         match self.points.binary_search_by(|p| p.0.total_cmp(&t)) {
             Ok(i) => self.points[i].1 = v,
@@ -113,7 +130,12 @@ impl SplineDef {
                 }
                 out
             }
-            SplineKind::Natural => natural(pts, i, t),
+            SplineKind::Natural => {
+                let m = self
+                    .natural_m
+                    .get_or_init(|| natural_second_derivatives(pts));
+                natural(pts, m, i, t)
+            }
             SplineKind::Cubic => unreachable!("handled above"),
         }
     }
@@ -157,46 +179,54 @@ fn linear_in(pts: &[(f64, P)], i: usize, t: f64) -> P {
     lerp(&pts[i].1, &pts[i + 1].1, s)
 }
 
-/// The natural cubic spline on segment `i`: second derivatives from the tridiagonal system
-/// with zero end conditions, solved per component (Thomas algorithm).
-fn natural(pts: &[(f64, P)], i: usize, t: f64) -> P {
+/// The natural cubic spline's second derivatives at every point: the tridiagonal system with
+/// zero end conditions, solved per component (Thomas algorithm).
+fn natural_second_derivatives(pts: &[(f64, P)]) -> Vec<P> {
     let n = pts.len();
+    let mut mm = vec![[0.0; 5]; n];
+    if n < 3 {
+        return mm;
+    }
     let h: Vec<f64> = (0..n - 1).map(|j| pts[j + 1].0 - pts[j].0).collect();
-    let mut out = [0.0; 5];
-    for (k, o) in out.iter_mut().enumerate() {
+    // Unknowns M_1..M_{n-2}; M_0 = M_{n-1} = 0.
+    let m = n - 2;
+    let (mut diag, mut rhs) = (vec![0.0; m], vec![0.0; m]);
+    // `k` is a component index into every point's array, not a walk over one slice.
+    #[allow(clippy::needless_range_loop)]
+    for k in 0..5 {
         let y = |j: usize| pts[j].1[k];
-        // Unknowns M_1..M_{n-2}; M_0 = M_{n-1} = 0.
-        let m = n - 2;
-        let mut diag = vec![0.0; m];
-        let mut rhs = vec![0.0; m];
-        let mut sub = vec![0.0; m];
-        let mut sup = vec![0.0; m];
         for r in 0..m {
             let j = r + 1;
-            sub[r] = h[j - 1];
             diag[r] = 2.0 * (h[j - 1] + h[j]);
-            sup[r] = h[j];
             rhs[r] = 6.0 * ((y(j + 1) - y(j)) / h[j] - (y(j) - y(j - 1)) / h[j - 1]);
         }
+        // Sub-diagonal h[r] (row r+1), super-diagonal h[r+1] (row r).
         for r in 1..m {
-            let w = sub[r] / diag[r - 1];
-            diag[r] -= w * sup[r - 1];
+            let w = h[r] / diag[r - 1];
+            diag[r] -= w * h[r];
             rhs[r] -= w * rhs[r - 1];
         }
-        let mut mm = vec![0.0; n];
         for r in (0..m).rev() {
-            let next = if r + 1 < m { mm[r + 2] } else { 0.0 };
-            mm[r + 1] = (rhs[r] - sup[r] * next) / diag[r];
+            let next = if r + 1 < m { mm[r + 2][k] } else { 0.0 };
+            mm[r + 1][k] = (rhs[r] - h[r + 1] * next) / diag[r];
         }
-        let (a, b) = (pts[i].0, pts[i + 1].0);
-        let hi = h[i];
-        let (da, db) = (b - t, t - a);
-        *o = mm[i] * da.powi(3) / (6.0 * hi)
-            + mm[i + 1] * db.powi(3) / (6.0 * hi)
-            + (y(i) / hi - mm[i] * hi / 6.0) * da
-            + (y(i + 1) / hi - mm[i + 1] * hi / 6.0) * db;
     }
-    out
+    mm
+}
+
+/// The natural cubic spline on segment `i`, from the second derivatives `mm`.
+fn natural(pts: &[(f64, P)], mm: &[P], i: usize, t: f64) -> P {
+    let (a, b) = (pts[i].0, pts[i + 1].0);
+    let hi = b - a;
+    let (da, db) = (b - t, t - a);
+    std::array::from_fn(|k| {
+        let (y0, y1) = (pts[i].1[k], pts[i + 1].1[k]);
+        let (m0, m1) = (mm[i][k], mm[i + 1][k]);
+        m0 * da.powi(3) / (6.0 * hi)
+            + m1 * db.powi(3) / (6.0 * hi)
+            + (y0 / hi - m0 * hi / 6.0) * da
+            + (y1 / hi - m1 * hi / 6.0) * db
+    })
 }
 
 impl Parser {
@@ -207,6 +237,7 @@ impl Parser {
             kind: SplineKind::Linear,
             points: Vec::new(),
             dim: 2,
+            natural_m: OnceCell::new(),
         };
         // A point with fewer components than an earlier one keeps that one's extra components:
         // POV-Ray 3.7.0 gives `0,<0,0,1> 1,<1,2>` the second point <1,2,1>.
@@ -290,6 +321,7 @@ mod tests {
             kind,
             points: Vec::new(),
             dim: 2,
+            natural_m: OnceCell::new(),
         };
         for &(t, x) in pts {
             s.insert(t, [x, 0.0, 0.0, 0.0, 0.0], 2);
