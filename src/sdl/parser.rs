@@ -349,6 +349,16 @@ impl Parser {
         if p.is_absolute() {
             return p.is_file().then(|| p.to_path_buf());
         }
+        self.search_dirs()
+            .into_iter()
+            .map(|d| d.join(p))
+            .find(|c| c.is_file())
+    }
+
+    /// Where relative include and image names are looked for, in order: the scene's
+    /// directory, the directory of the file being read, the library paths, the system include
+    /// directories, the current directory.
+    fn search_dirs(&self) -> Vec<PathBuf> {
         let mut dirs: Vec<PathBuf> = vec![self.scene_dir.clone()];
         // The directory of the file being read, so includes next to includes are found.
         if let Some(f) = self
@@ -366,19 +376,16 @@ impl Parser {
         dirs.extend(self.options.library_paths.iter().cloned());
         dirs.extend(SYSTEM_INCLUDE_DIRS.iter().map(PathBuf::from));
         dirs.push(PathBuf::from("."));
-        dirs.into_iter().map(|d| d.join(p)).find(|c| c.is_file())
+        dirs
     }
 
     pub(super) fn include(&mut self, name: &str, site: Span) -> PResult<()> {
         let Some(path) = self.find_file(name) else {
-            let mut searched: Vec<String> = vec![self.scene_dir.display().to_string()];
-            searched.extend(
-                self.options
-                    .library_paths
-                    .iter()
-                    .map(|p| p.display().to_string()),
-            );
-            searched.extend(SYSTEM_INCLUDE_DIRS.iter().map(|s| s.to_string()));
+            let searched: Vec<String> = self
+                .search_dirs()
+                .iter()
+                .map(|d| d.display().to_string())
+                .collect();
             let d = self.error_at(site, format!("cannot find include file \"{name}\""));
             return Err(Box::new(
                 d.with_note(format!("searched: {}", searched.join(", ")))
