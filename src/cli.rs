@@ -494,12 +494,24 @@ fn apply_pov_option(
             .map_err(|_| format!("bad number in option {opt}"))
     };
     if let Some(rest) = upper.strip_prefix("AM") {
-        let m = num(rest)?;
-        if m != 1.0 {
-            warnings.push(format!(
-                "{opt}: anti-aliasing method {m} is not supported yet; using method 1"
-            ));
-        }
+        s.sampling_method = match num(rest)? {
+            m if m == 1.0 || m == 2.0 => m as u32,
+            m => return Err(format!("{opt}: the sampling method is 1 or 2, not {m}")),
+        };
+    } else if let Some(rest) = upper.strip_prefix("AG") {
+        s.aa_gamma = match num(rest)? {
+            g if g > 0.0 => g,
+            g => {
+                return Err(format!(
+                    "{opt}: the anti-aliasing gamma must be positive, not {g}"
+                ))
+            }
+        };
+    } else if upper == "UA" {
+        s.alpha = on;
+    } else if let Some(rest) = upper.strip_prefix('Q') {
+        // POV-Ray clips the level to 0..=11.
+        s.quality = num(rest)?.clamp(0.0, 11.0) as u32;
     } else if upper.starts_with("WT") {
         a.threads = Some(num(&body[2..])? as usize);
     } else if let Some(rest) = upper.strip_prefix('W') {
@@ -544,14 +556,8 @@ fn apply_pov_option(
         upper.as_str(),
         "D" | "V" | "P" | "X" | "GA" | "GS" | "GR" | "GD" | "GF" | "GW" | "GP"
     ) || upper.starts_with('D')
-        || upper.starts_with('Q')
     {
         // Display, verbosity, pause and stream options do not change the picture.
-        if upper.starts_with('Q') {
-            warnings.push(format!(
-                "{opt}: quality levels are not supported yet; rendering at full quality"
-            ));
-        }
     } else {
         warnings.push(format!(
             "option {opt} is not supported by lancer yet and is ignored"

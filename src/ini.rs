@@ -169,6 +169,8 @@ fn switch_for(key: &str, value: &str) -> Result<Option<String>, String> {
         "antialias_threshold" => with("A"),
         "antialias_depth" => with("R"),
         "sampling_method" => with("AM"),
+        "antialias_gamma" => with("AG"),
+        "output_alpha" => flag("UA"),
         "jitter" => flag("J"),
         "jitter_amount" => with("J"),
         "quality" => with("Q"),

@@ -3,6 +3,7 @@
 //! rayon; jitter comes from a hash of the pixel and sample, so the picture is the same for any
 //! thread count.
 
+mod aa;
 pub mod camera;
 pub mod pigment;
 pub mod trace;
@@ -13,7 +14,7 @@ use rayon::prelude::*;
 
 use crate::math::DVec3;
 use crate::scene::build::{GammaMode, Scene};
-use trace::{TraceCtx, Tracer};
+use trace::{Quality, Seen, TraceCtx, Tracer};
 
 #[derive(Clone, Debug)]
 pub struct RenderSettings {
@@ -28,6 +29,14 @@ pub struct RenderSettings {
     /// Partial render (`+SR +ER +SC +EC`): pixels `x0..x1` × `y0..y1` are traced and the rest
     /// of the picture stays black, as in POV-Ray's output file.
     pub window: Option<Window>,
+    /// `+UA`: keep the background's share of each pixel as alpha.
+    pub alpha: bool,
+    /// `+Q0..11`: which parts of the lighting model are computed (9, all of them, by default).
+    pub quality: u32,
+    /// `+AG`: anti-aliasing compares and averages samples on linear light raised to 1/this.
+    pub aa_gamma: f64,
+    /// `+AM`: 1 is POV-Ray's non-recursive adaptive method, 2 the recursive one.
+    pub sampling_method: u32,
 }
 
 /// A rectangle of pixels, end-exclusive.
@@ -55,6 +64,10 @@ impl Default for RenderSettings {
             aa_depth: 3,
             jitter: 1.0,
             window: None,
+            alpha: false,
+            quality: 9,
+            aa_gamma: 2.5,
+            sampling_method: 1,
         }
     }
 }
@@ -63,7 +76,10 @@ impl Default for RenderSettings {
 pub struct Film {
     pub width: u32,
     pub height: u32,
+    /// With alpha, premultiplied: the colour over black.
     pub pixels: Vec<DVec3>,
+    /// `+UA`: each pixel's opacity, 1 − the share of background seen through it.
+    pub alpha: Option<Vec<f64>>,
     pub gamma: GammaMode,
     /// Rays traced for this picture (camera, secondary and shadow rays).
     pub rays: u64,
@@ -97,7 +113,7 @@ pub fn srgb_encode(l: f64) -> f64 {
 }
 
 /// A deterministic value in [-0.5, 0.5) for a pixel and sample index.
-fn jitter_hash(x: u32, y: u32, i: u32) -> f64 {
+pub(crate) fn jitter_hash(x: u32, y: u32, i: u32) -> f64 {
     let mut h = (x as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15)
         ^ (y as u64).wrapping_mul(0xC2B2_AE3D_27D4_EB4F)
         ^ (i as u64).wrapping_mul(0x1656_67B1_9E37_79F9);
@@ -110,103 +126,44 @@ fn jitter_hash(x: u32, y: u32, i: u32) -> f64 {
 /// Renders the scene; `progress` is called once per finished row (from any thread).
 pub fn render(scene: &Scene, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)) -> Film {
     let (w, h) = (s.width as usize, s.height as usize);
-    let tracer = Tracer::new(scene);
-    let mut pixels = vec![DVec3::ZERO; w * h];
-    let inside = |x: usize, y: usize| s.window.is_none_or(|win| win.contains(x, y));
+    let tracer = Tracer::new(scene, s.alpha, Quality::level(s.quality));
+    let mut samples = vec![Seen::default(); w * h];
     let rays = AtomicU64::new(0);
-    pixels
+    samples
         .par_chunks_mut(w)
         .enumerate()
         .for_each_init(TraceCtx::default, |ctx, (y, row)| {
             for (x, px) in row.iter_mut().enumerate() {
-                if !inside(x, y) {
+                if !s.inside(x, y) {
                     continue;
                 }
                 let ray = scene.camera.ray(x as f64 + 0.5, y as f64 + 0.5);
-                *px = tracer.trace(&ray, 1, 1.0, ctx);
+                *px = tracer.trace_camera(&ray, ctx);
             }
             rays.fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
             progress(1);
         });
-    let mut film = Film {
+    let mut rays = rays.into_inner();
+    if let Some(threshold) = s.antialias {
+        rays += aa::antialias(&tracer, &mut samples, s, threshold);
+    }
+    Film {
         width: s.width,
         height: s.height,
-        pixels,
+        pixels: samples.iter().map(|p| p.rgb).collect(),
+        alpha: s
+            .alpha
+            .then(|| samples.iter().map(|p| 1.0 - p.clear).collect()),
         gamma: scene.gamma,
-        rays: rays.into_inner(),
-    };
-    if let Some(threshold) = s.antialias {
-        antialias(&tracer, &mut film, s, threshold);
+        rays,
     }
-    film
 }
 
-/// POV-Ray compares pixels for anti-aliasing on linear light raised to 1/2.5 (its default
-/// Antialias_Gamma), not on the file's encoding.
-const AA_GAMMA: f64 = 2.5;
-
-/// Method 1: a pixel whose gamma-adjusted colour differs from its left or upper neighbour by
-/// more than the threshold (sum over channels) is supersampled on a depth×depth grid, and so
-/// is that neighbour; the samples are averaged with the first one.
-fn antialias(tracer: &Tracer, film: &mut Film, s: &RenderSettings, threshold: f64) {
-    let (w, h) = (film.width as usize, film.height as usize);
-    let working_gamma = match film.gamma {
-        GammaMode::Corrected(g) => g,
-        GammaMode::None => 1.0,
-    };
-    let adjust = |v: f64| v.clamp(0.0, 1.0).powf(working_gamma / AA_GAMMA);
-    let enc: Vec<DVec3> = film
-        .pixels
-        .iter()
-        .map(|p| DVec3::new(adjust(p.x), adjust(p.y), adjust(p.z)))
-        .collect();
-    let differs = |a: usize, b: usize| (enc[a] - enc[b]).abs().element_sum() > threshold;
-    // Outside a partial render's window nothing was traced, so nothing is compared there.
-    let inside = |x: usize, y: usize| s.window.is_none_or(|win| win.contains(x, y));
-    let mut mark = vec![false; w * h];
-    for y in 0..h {
-        for x in 0..w {
-            let i = y * w + x;
-            if !inside(x, y) {
-                continue;
-            }
-            if x > 0 && inside(x - 1, y) && differs(i, i - 1) {
-                mark[i] = true;
-                mark[i - 1] = true;
-            }
-            if y > 0 && inside(x, y - 1) && differs(i, i - w) {
-                mark[i] = true;
-                mark[i - w] = true;
-            }
-        }
+impl RenderSettings {
+    /// Whether pixel (x, y) is traced: outside a partial render's window it stays black.
+    fn inside(&self, x: usize, y: usize) -> bool {
+        self.window.is_none_or(|win| win.contains(x, y))
     }
-    let n = s.aa_depth.max(1);
-    let cam = &tracer.scene.camera;
-    let rays = AtomicU64::new(0);
-    film.pixels
-        .par_chunks_mut(w)
-        .enumerate()
-        .for_each_init(TraceCtx::default, |ctx, (y, row)| {
-            for (x, px) in row.iter_mut().enumerate() {
-                if !mark[y * w + x] {
-                    continue;
-                }
-                let mut sum = *px;
-                for j in 0..n {
-                    for i in 0..n {
-                        let k = j * n + i;
-                        let jx = jitter_hash(x as u32, y as u32, 2 * k) * s.jitter;
-                        let jy = jitter_hash(x as u32, y as u32, 2 * k + 1) * s.jitter;
-                        let sx = x as f64 + (i as f64 + 0.5 + jx) / n as f64;
-                        let sy = y as f64 + (j as f64 + 0.5 + jy) / n as f64;
-                        sum += tracer.trace(&cam.ray(sx, sy), 1, 1.0, ctx);
-                    }
-                }
-                *px = sum / (1 + n * n) as f64;
-            }
-            rays.fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
-        });
-    film.rays += rays.into_inner();
 }
 
 #[cfg(test)]

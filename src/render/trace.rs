@@ -17,6 +17,54 @@ pub type TraceCtx<'a> = Scratch<'a>;
 
 pub struct Tracer<'a> {
     pub scene: &'a Scene,
+    /// `+UA`: the output keeps the background's share of each pixel in an alpha channel.
+    pub alpha: bool,
+    pub quality: Quality,
+}
+
+/// What POV-Ray's `+Q0..11` levels switch on (manual 3.2.8.3, each level checked against
+/// `povray` in tests/options.rs).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Quality {
+    /// Below 2 a surface shows its pigment colour unlit.
+    pub lighting: bool,
+    pub shadows: bool,
+    /// Below 6 a pigment's `quick_color` stands in for it, and nothing is seen through.
+    pub quick_colors: bool,
+    pub transmission: bool,
+    pub reflection: bool,
+}
+
+impl Quality {
+    pub fn level(q: u32) -> Quality {
+        Quality {
+            lighting: q >= 2,
+            shadows: q >= 4,
+            quick_colors: q <= 5,
+            transmission: q >= 6,
+            reflection: q >= 8,
+        }
+    }
+}
+
+impl Default for Quality {
+    fn default() -> Self {
+        Quality::level(9)
+    }
+}
+
+/// What a ray brings back: colour, and with `+UA` how much of the background shows through
+/// along it (1 where it reaches the background unobstructed).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Seen {
+    pub rgb: DVec3,
+    pub clear: f64,
+}
+
+/// POV-Ray's grey of a filter colour when it reduces filtering to one number for the alpha
+/// channel (the classic NTSC-like weights; measured: a yellow rgbf pane, tests/options.rs).
+fn grey(c: DVec3) -> f64 {
+    0.297 * c.x + 0.589 * c.y + 0.114 * c.z
 }
 
 fn reflect(d: DVec3, n: DVec3) -> DVec3 {
@@ -37,34 +85,74 @@ pub fn fresnel(cos_i: f64, n1: f64, n2: f64) -> f64 {
 }
 
 impl<'a> Tracer<'a> {
-    pub fn new(scene: &'a Scene) -> Tracer<'a> {
-        Tracer { scene }
+    pub fn new(scene: &'a Scene, alpha: bool, quality: Quality) -> Tracer<'a> {
+        Tracer {
+            scene,
+            alpha,
+            quality,
+        }
     }
 
-    /// Colour seen along `ray` in the scene's working space. `depth` starts at 1 for primary
-    /// rays; `weight` is this ray's share of the pixel, for adaptive depth control.
+    /// A camera ray: colour in the scene's working space, and the background's share.
+    pub fn trace_camera(&self, ray: &Ray, ctx: &mut TraceCtx<'a>) -> Seen {
+        self.trace_seen(ray, 1, 1.0, true, ctx)
+    }
+
+    /// Colour seen along a reflected ray. `depth` starts at 1 for primary rays; `weight` is
+    /// this ray's share of the pixel, for adaptive depth control.
     pub fn trace(&self, ray: &Ray, depth: u32, weight: f64, ctx: &mut TraceCtx<'a>) -> DVec3 {
+        self.trace_seen(ray, depth, weight, false, ctx).rgb
+    }
+
+    /// `straight`: the ray continues the camera ray through transparent surfaces only, so the
+    /// background it reaches counts towards the pixel's transparency.
+    fn trace_seen(
+        &self,
+        ray: &Ray,
+        depth: u32,
+        weight: f64,
+        straight: bool,
+        ctx: &mut TraceCtx<'a>,
+    ) -> Seen {
         ctx.rays += 1;
         if depth > self.scene.max_trace_level {
-            return DVec3::ZERO;
+            return Seen::default();
         }
         match self.scene.first_hit(ray, f64::INFINITY, ctx) {
-            Some(h) => self.shade(ray, &h, depth, weight, ctx),
-            None => self.background(ray.dir),
+            Some(h) => self.shade(ray, &h, depth, weight, straight, ctx),
+            None => self.background(ray.dir, straight),
         }
     }
 
-    pub fn background(&self, dir: DVec3) -> DVec3 {
+    /// POV-Ray 3.7 treats the background as a colour over black: its transmit darkens it
+    /// (filter does nothing) unless the alpha channel is on, where a straight ray's background
+    /// share goes to the alpha channel instead and reflections see the background's full colour.
+    pub fn background(&self, dir: DVec3, straight: bool) -> Seen {
         let s = self.scene;
-        let mut col = s.background.rgb;
+        let bg = &s.background;
+        let mut seen = match (self.alpha, straight) {
+            (false, _) => Seen {
+                rgb: bg.rgb * (1.0 - bg.transmit),
+                clear: 0.0,
+            },
+            (true, true) => Seen {
+                rgb: bg.rgb * bg.opacity(),
+                clear: bg.filter * grey(bg.rgb) + bg.transmit,
+            },
+            (true, false) => Seen {
+                rgb: bg.rgb,
+                clear: 0.0,
+            },
+        };
         if !s.sky.is_empty() {
             let d = dir.normalize_or_zero();
             for layer in &s.sky {
                 let c = pigment::eval(layer, d);
-                col = c.rgb * c.opacity() + col * c.transmitted();
+                seen.rgb = c.rgb * c.opacity() + seen.rgb * c.transmitted();
+                seen.clear *= c.filter * grey(c.rgb) + c.transmit;
             }
         }
-        col
+        seen
     }
 
     fn shade(
@@ -73,9 +161,11 @@ impl<'a> Tracer<'a> {
         h: &SurfaceHit,
         depth: u32,
         weight: f64,
+        straight: bool,
         ctx: &mut TraceCtx<'a>,
-    ) -> DVec3 {
+    ) -> Seen {
         let s = self.scene;
+        let q = self.quality;
         let obj = h.obj;
         let p = ray.at(h.t);
         let dir = ray.dir.normalize();
@@ -84,7 +174,16 @@ impl<'a> Tracer<'a> {
         let nf = if entering { n } else { -n };
         let tex = obj.texture_at(h);
         let fin = &tex.finish;
-        let c = pigment::eval(&tex.pigment, p);
+        let c = match tex.pigment.quick {
+            Some(quick) if q.quick_colors => quick,
+            _ => pigment::eval(&tex.pigment, p),
+        };
+        if !q.lighting {
+            return Seen {
+                rgb: c.rgb,
+                clear: 0.0,
+            };
+        }
         let opacity = c.opacity().max(0.0);
         // Per hit, not per light.
         let mirror = reflect(dir, nf);
@@ -106,7 +205,7 @@ impl<'a> Tracer<'a> {
                 continue;
             }
             let mut lc = light.color * fade(light, dist);
-            if !light.shadowless {
+            if !light.shadowless && q.shadows {
                 lc *= self.shadow(p, l, dist, ctx);
                 if lc == DVec3::ZERO {
                     continue;
@@ -147,7 +246,7 @@ impl<'a> Tracer<'a> {
         };
         let refl = &fin.reflection;
         let mut refl_amount = DVec3::ZERO;
-        if !refl.is_zero() {
+        if !refl.is_zero() && q.reflection {
             // Where a ray leaves an object at a point still inside another object (a wall
             // plane whose inside holds the camera, say), POV-Ray takes the leaving object's ior
             // for both sides of the Fresnel term, which makes it zero; elsewhere the exit is
@@ -171,7 +270,8 @@ impl<'a> Tracer<'a> {
             }
         }
 
-        if c.filter > 0.0 || c.transmit > 0.0 {
+        let mut clear = 0.0;
+        if (c.filter > 0.0 || c.transmit > 0.0) && q.transmission {
             let mut tcol = c.transmitted();
             if fin.conserve_energy {
                 tcol *= DVec3::ONE - refl_amount;
@@ -187,11 +287,12 @@ impl<'a> Tracer<'a> {
                 };
                 // Total internal reflection sends the transmitted share back inside.
                 let tdir = tdir.unwrap_or(mirror);
-                let tc = self.trace(&Ray::new(p, tdir), depth + 1, w, ctx);
-                col += tc * tcol;
+                let tc = self.trace_seen(&Ray::new(p, tdir), depth + 1, w, straight, ctx);
+                col += tc.rgb * tcol;
+                clear = tc.clear * (c.filter * grey(c.rgb) + c.transmit);
             }
         }
-        col
+        Seen { rgb: col, clear }
     }
 
     /// Light reaching `p` from a light `dist` away in direction `l`: zero behind an opaque

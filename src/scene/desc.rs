@@ -238,6 +238,8 @@ pub struct Pigment {
     pub kind: PigmentKind,
     /// Pattern space to world space.
     pub transform: Transform,
+    /// `quick_color`: what `+Q5` and below show instead of the pigment.
+    pub quick: Option<Rgbft>,
 }
 
 impl Pigment {
@@ -245,6 +247,7 @@ impl Pigment {
         Pigment {
             kind: PigmentKind::Solid(c),
             transform: Transform::IDENTITY,
+            quick: None,
         }
     }
     pub fn apply_transform(&mut self, t: &Transform) {

@@ -184,7 +184,7 @@ impl Parser {
                 "frequency" => freq_phase.0 = self.parse_float()?,
                 "phase" => freq_phase.1 = self.parse_float()?,
                 "quick_color" | "quick_colour" => {
-                    self.parse_color()?;
+                    p.quick = Some(self.parse_color()?);
                 }
                 "warp" => {
                     self.unsupported("warp", t.span);
