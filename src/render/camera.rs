@@ -1,4 +1,4 @@
-//! The perspective camera: POV-Ray's camera items resolved in its fixed order (angle, then
+//! The perspective and orthographic cameras: POV-Ray's camera items resolved in its fixed order (angle, then
 //! look_at with sky, then transforms) and primary rays through pixel positions.
 
 use crate::math::{DVec3, Ray};
@@ -10,6 +10,8 @@ pub struct Camera {
     pub direction: DVec3,
     pub right: DVec3,
     pub up: DVec3,
+    /// Parallel rays from points spread over right × up around the location.
+    orthographic: bool,
     width: f64,
     height: f64,
 }
@@ -45,8 +47,18 @@ impl Camera {
                 up = -up;
             }
         }
+        if d.orthographic && (!d.sized || d.angle_given) {
+            // The view area of the perspective camera this one replaces, taken at the look_at
+            // point: objects there keep their size (manual 3.4.2.2.2). Without look_at POV-Ray
+            // measures to its default look_at, <0,0,1> (checked with povray 3.7).
+            let dist = (d.look_at.unwrap_or(DVec3::Z) - d.location).length();
+            let k = dist / dir.length().max(1e-12);
+            right *= k;
+            up *= k;
+        }
         let t = &d.transform;
         Camera {
+            orthographic: d.orthographic,
             location: t.point(d.location),
             direction: t.vector(dir),
             right: t.vector(right),
@@ -61,6 +73,12 @@ impl Camera {
     pub fn ray(&self, px: f64, py: f64) -> Ray {
         let dx = px / self.width - 0.5;
         let dy = 0.5 - py / self.height;
+        if self.orthographic {
+            return Ray::new(
+                self.location + self.right * dx + self.up * dy,
+                self.direction,
+            );
+        }
         Ray::new(
             self.location,
             self.direction + self.right * dx + self.up * dy,

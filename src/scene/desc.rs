@@ -58,6 +58,12 @@ pub struct CameraDesc {
     pub angle: Option<f64>,
     /// Transforms written inside the camera block, applied after everything else.
     pub transform: Transform,
+    pub orthographic: bool,
+    /// `right` or `up` written in the block: an orthographic camera then takes its view size
+    /// from them, otherwise from the perspective view it replaces.
+    pub sized: bool,
+    /// `angle` written (with or without a value).
+    pub angle_given: bool,
 }
 
 impl Default for CameraDesc {
@@ -71,6 +77,9 @@ impl Default for CameraDesc {
             look_at: None,
             angle: None,
             transform: Transform::IDENTITY,
+            orthographic: false,
+            sized: false,
+            angle_given: false,
         }
     }
 }

@@ -169,9 +169,10 @@ impl Parser {
                 continue;
             }
             match &**k {
-                "perspective" => {}
-                "orthographic" | "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic"
-                | "spherical" | "cylinder" | "mesh_camera" => {
+                "perspective" => cam.orthographic = false,
+                "orthographic" => cam.orthographic = true,
+                "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "spherical"
+                | "cylinder" | "mesh_camera" => {
                     self.unsupported(&format!("{k} camera (rendered as perspective)"), t.span);
                     if &**k == "cylinder" {
                         self.parse_float()?;
@@ -181,11 +182,22 @@ impl Parser {
                 }
                 "location" => cam.location = self.parse_vector()?,
                 "look_at" => cam.look_at = Some(self.parse_vector()?),
-                "right" => cam.right = self.parse_vector()?,
-                "up" => cam.up = self.parse_vector()?,
+                "right" => {
+                    cam.right = self.parse_vector()?;
+                    cam.sized = true;
+                }
+                "up" => {
+                    cam.up = self.parse_vector()?;
+                    cam.sized = true;
+                }
                 "direction" => cam.direction = self.parse_vector()?,
                 "sky" => cam.sky = self.parse_vector()?,
                 "angle" => {
+                    cam.angle_given = true;
+                    // An orthographic camera's angle may come without a value.
+                    if cam.orthographic && !self.starts_float()? {
+                        continue;
+                    }
                     cam.angle = Some(self.parse_float()?);
                     let comma = self.eat_sym(Sym::Comma)?;
                     if comma || self.starts_number()? {

@@ -1,0 +1,8 @@
+// Orthographic camera sized by right and up: parallel rays.
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { orthographic location <0,0,-5> look_at 0 right x*8 up y*6 }
+light_source { <3,4,-5> rgb 1 }
+#for (i,-3,3) #for (j,-2,2) sphere { <i,j,0>, 0.15 pigment { rgb <1,0.5,0.2> } } #end #end
+sphere { <1,1,6>, 1 pigment { rgb <0.2,0.5,1> } }
+plane { z, 8 pigment { checker rgb 1 rgb 0.3 } }
