@@ -16,8 +16,11 @@ pub struct Animation {
     pub final_clock: Option<f64>,
     /// `+KC`: the last frame is one step before the first again, for loops.
     pub cyclic: bool,
-    pub subset_start: Option<i64>,
-    pub subset_end: Option<i64>,
+    /// `+SF`/`+EF`: a frame number, or below 1 a fraction of the frame count.
+    pub subset_start: Option<f64>,
+    pub subset_end: Option<f64>,
+    /// `+STP` (Frame_Step): render every n-th frame of the subset.
+    pub step: Option<i64>,
     /// `+K`: the clock of a still picture.
     pub clock: Option<f64>,
 }
@@ -80,15 +83,31 @@ impl Animation {
         );
         let steps = (last - first + i64::from(self.cyclic)) as f64;
         let delta = (c1 - c0) / steps;
-        let from = self.subset_start.unwrap_or(first).max(first);
-        let to = self.subset_end.unwrap_or(last).min(last);
+        // POV-Ray 3.7 turns a fraction into floor(f × frame count) and takes that as a frame
+        // number, not an offset from the first frame (checked with +KFI5 +KFF14 +EF0.5: only
+        // frame 5).
+        let count = (last - first + 1) as f64;
+        let frame_of = |v: f64| {
+            if v < 1.0 {
+                (v * count).floor() as i64
+            } else {
+                v as i64
+            }
+        };
+        let from = self.subset_start.map_or(first, frame_of).max(first);
+        let to = self.subset_end.map_or(last, frame_of).min(last);
         if from > to {
             return Err(format!(
                 "the subset of frames {from} to {to} is empty (the animation has frames {first} to {last})"
             ));
         }
         let digits = last.max(1).to_string().len();
+        let step = self.step.unwrap_or(1);
+        if step < 1 {
+            return Err(format!("the frame step must be at least 1, not {step}"));
+        }
         Ok((from..=to)
+            .step_by(step as usize)
             .map(|n| Frame {
                 number: n,
                 clock: c0 + (n - first) as f64 * delta,
@@ -135,8 +154,8 @@ mod tests {
     #[test]
     fn twelve_frames_subset_three_to_four() {
         let a = Animation {
-            subset_start: Some(3),
-            subset_end: Some(4),
+            subset_start: Some(3.0),
+            subset_end: Some(4.0),
             ..anim(1, 12)
         };
         let f = a.frames(Path::new("a.png")).unwrap();
@@ -189,10 +208,46 @@ mod tests {
     }
 
     #[test]
+    fn subset_fractions_and_frame_step_as_povray_picks_them() {
+        // The frames povray 3.7 wrote for each option set.
+        let numbers = |a: Animation| -> Vec<i64> {
+            a.frames(Path::new("t.png"))
+                .unwrap()
+                .iter()
+                .map(|f| f.number)
+                .collect()
+        };
+        let sub = |first, last, sf: Option<f64>, ef: Option<f64>, step: Option<i64>| Animation {
+            subset_start: sf,
+            subset_end: ef,
+            step,
+            ..anim(first, last)
+        };
+        assert_eq!(
+            numbers(sub(1, 10, Some(0.333), Some(0.667), None)),
+            [3, 4, 5, 6]
+        );
+        assert_eq!(
+            numbers(sub(1, 10, Some(0.5), None, None)),
+            [5, 6, 7, 8, 9, 10]
+        );
+        assert_eq!(numbers(sub(1, 10, None, Some(0.25), None)), [1, 2]);
+        assert_eq!(numbers(sub(1, 10, None, None, Some(3))), [1, 4, 7, 10]);
+        assert_eq!(
+            numbers(sub(1, 10, Some(2.0), Some(9.0), Some(3))),
+            [2, 5, 8]
+        );
+        assert_eq!(numbers(sub(1, 10, Some(0.0), Some(1.0), None)), [1]);
+        assert_eq!(numbers(sub(5, 14, None, Some(0.5), None)), [5]);
+        assert_eq!(numbers(sub(5, 14, Some(0.25), Some(0.75), None)), [5, 6, 7]);
+        assert_eq!(numbers(sub(0, 9, Some(0.5), None, None)), [5, 6, 7, 8, 9]);
+    }
+
+    #[test]
     fn empty_subset_is_an_error() {
         let a = Animation {
-            subset_start: Some(9),
-            subset_end: Some(4),
+            subset_start: Some(9.0),
+            subset_end: Some(4.0),
             ..anim(1, 12)
         };
         assert!(a.frames(Path::new("a.png")).is_err());

@@ -191,6 +191,10 @@ pub struct Job {
     pub write_output: bool,
     /// `+C`: skip frames whose picture already exists, so an interrupted animation resumes.
     pub continue_trace: bool,
+    /// `+MV` / `Version=`: the language version a scene starts in.
+    pub version: Option<f64>,
+    /// `+HI` / `Include_Header=`: a file included before the scene.
+    pub include_header: Option<String>,
     pub warnings: Vec<String>,
 }
 
@@ -203,6 +207,8 @@ impl Job {
             image_width: self.settings.width,
             image_height: self.settings.height,
             declares: self.declares.clone(),
+            version: self.version,
+            include_header: self.include_header.clone(),
             ..crate::sdl::ParseOptions::default()
         };
         self.safety.apply(&mut o);
@@ -262,6 +268,8 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
     let mut partial = PartialOpts::default();
     let mut declares = Vec::new();
     let mut write_output = true;
+    let mut version = None;
+    let mut include_header = None;
     if let Some(w) = a.width {
         s.width = w;
     }
@@ -302,6 +310,14 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
             declares.push((name.to_string(), v));
         } else if upper == "+F" || upper == "-F" {
             write_output = upper == "+F";
+        } else if let Some(v) = upper[1..].strip_prefix("MV") {
+            version = Some(
+                v.parse::<f64>()
+                    .map_err(|_| format!("{opt}: expected a version number such as +MV3.7"))?,
+            );
+        } else if upper[1..].starts_with("HI") {
+            // A file name keeps its own spelling.
+            include_header = Some(opt[3..].to_string()).filter(|n| !n.is_empty());
         } else if !anim.apply(opt)? && !partial.apply(opt)? {
             apply_pov_option(opt, &mut s, &mut a, &mut format, &mut warnings)?;
         }
@@ -340,6 +356,8 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
         declares,
         write_output,
         continue_trace: anim.continue_trace,
+        version,
+        include_header,
         warnings,
     })
 }
@@ -434,10 +452,12 @@ impl AnimOpts {
             a.final_clock = Some(num(v)?);
         } else if let Some(v) = upper.strip_prefix('K') {
             a.clock = Some(num(v)?);
+        } else if let Some(v) = upper.strip_prefix("STP") {
+            a.step = Some(num(v)? as i64);
         } else if let Some(v) = upper.strip_prefix("SF") {
-            a.subset_start = Some(num(v)? as i64);
+            a.subset_start = Some(num(v)?);
         } else if let Some(v) = upper.strip_prefix("EF") {
-            a.subset_end = Some(num(v)? as i64);
+            a.subset_end = Some(num(v)?);
         } else if upper == "C" {
             self.continue_trace = on;
         } else {
@@ -493,6 +513,15 @@ fn apply_pov_option(
         t.parse::<f64>()
             .map_err(|_| format!("bad number in option {opt}"))
     };
+    // Memory (+MI), render order (+RP +RS +BS), bounding (+B +BM) and warning-level (+WL)
+    // options do not change the picture. Field rendering (+UF +UO) is accepted and ignored by
+    // povray 3.7 as well: its frames are whole pictures either way (checked).
+    if ["MI", "RP", "RS", "BS", "WL", "UF", "UO", "B"]
+        .iter()
+        .any(|p| upper.starts_with(p))
+    {
+        return Ok(());
+    }
     if let Some(rest) = upper.strip_prefix("AM") {
         s.sampling_method = match num(rest)? {
             m if m == 1.0 || m == 2.0 => m as u32,
@@ -657,7 +686,7 @@ mod tests {
         assert_eq!((a.initial_frame, a.final_frame), (Some(1), Some(24)));
         assert_eq!((a.initial_clock, a.final_clock), (Some(0.0), Some(2.0)));
         assert!(a.cyclic && j.continue_trace);
-        assert_eq!((a.subset_start, a.subset_end), (Some(5), Some(8)));
+        assert_eq!((a.subset_start, a.subset_end), (Some(5.0), Some(8.0)));
         let j = job(&["lancer", "a.pov", "+K0.5"]).unwrap();
         assert_eq!(j.animation.clock, Some(0.5));
     }

@@ -182,6 +182,9 @@ fn switch_for(key: &str, value: &str) -> Result<Option<String>, String> {
         "cyclic_animation" => flag("KC"),
         "subset_start_frame" => with("SF"),
         "subset_end_frame" => with("EF"),
+        "frame_step" => with("STP"),
+        "version" => with("MV"),
+        "include_header" => with("HI"),
         "continue_trace" => flag("C"),
         "start_row" => with("SR"),
         "end_row" => with("ER"),
@@ -239,7 +242,12 @@ fn switch_for(key: &str, value: &str) -> Result<Option<String>, String> {
         | "buffer_output"
         | "buffer_size"
         | "field_render"
-        | "odd_field" => Ok(None),
+        | "odd_field"
+        | "max_image_buffer_memory"
+        | "render_pattern"
+        | "render_block_size"
+        | "render_block_step"
+        | "warning_level" => Ok(None),
         "pre_scene_command"
         | "pre_frame_command"
         | "post_scene_command"

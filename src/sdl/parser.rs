@@ -50,6 +50,10 @@ pub struct ParseOptions {
     pub max_loop_iterations: Option<u64>,
     /// `Declare=Name=Value` options: floats declared before the scene is read.
     pub declares: Vec<(String, f64)>,
+    /// `Version=n.n` / `+MVn.n`: the language version before any `#version`.
+    pub version: Option<f64>,
+    /// `Include_Header=file` / `+HIfile`: included before the scene's first line.
+    pub include_header: Option<String>,
 }
 
 impl Default for ParseOptions {
@@ -70,6 +74,8 @@ impl Default for ParseOptions {
             io_allowed_dirs: Vec::new(),
             max_loop_iterations: None,
             declares: Vec::new(),
+            version: None,
+            include_header: None,
         }
     }
 }
@@ -238,9 +244,35 @@ impl Parser {
             .unwrap_or_else(|| PathBuf::from("."));
         let (_, tokens) = self.load(path, None)?;
         self.push_frame(tokens, FrameKind::File, None, false)?;
+        if let Some(v) = self.options.version {
+            self.scene.version = Some(v);
+        }
+        if let Some(name) = self.options.include_header.clone() {
+            self.include_header(&name)?;
+        }
         let r = self.parse_scene_items();
         self.flush_released();
         r
+    }
+
+    /// `Include_Header`: the file is read as if the scene's first line included it.
+    fn include_header(&mut self, name: &str) -> PResult<()> {
+        let Some(path) = self.find_file(name) else {
+            let searched: Vec<String> = self
+                .search_dirs()
+                .iter()
+                .map(|d| d.display().to_string())
+                .collect();
+            return Err(Box::new(
+                Diagnostic::error(
+                    format!("cannot find the Include_Header file \"{name}\" (+HI option)"),
+                    None,
+                )
+                .with_note(format!("searched: {}", searched.join(", "))),
+            ));
+        };
+        let (_, tokens) = self.load(&path, None)?;
+        self.push_frame(tokens, FrameKind::Include, None, true)
     }
 
     /// Parses scene text given directly (tests, snippets).
@@ -376,7 +408,19 @@ impl Parser {
         dirs.extend(self.options.library_paths.iter().cloned());
         dirs.extend(SYSTEM_INCLUDE_DIRS.iter().map(PathBuf::from));
         dirs.push(PathBuf::from("."));
-        dirs
+        // A scene named without a directory has "" as its directory: that is ".", and each
+        // directory is searched (and listed in a "searched:" note) once.
+        let mut seen = HashSet::new();
+        dirs.into_iter()
+            .map(|d| {
+                if d.as_os_str().is_empty() {
+                    PathBuf::from(".")
+                } else {
+                    d
+                }
+            })
+            .filter(|d| seen.insert(d.clone()))
+            .collect()
     }
 
     pub(super) fn include(&mut self, name: &str, site: Span) -> PResult<()> {
