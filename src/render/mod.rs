@@ -6,6 +6,7 @@
 mod aa;
 pub mod camera;
 pub mod pigment;
+mod shadow;
 pub mod trace;
 
 use std::sync::atomic::{AtomicU64, Ordering};

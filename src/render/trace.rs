@@ -29,6 +29,8 @@ pub struct Quality {
     /// Below 2 a surface shows its pigment colour unlit.
     pub lighting: bool,
     pub shadows: bool,
+    /// Level 4 shadows treat area lights as points.
+    pub area_lights: bool,
     /// Below 6 a pigment's `quick_color` stands in for it, and nothing is seen through.
     pub quick_colors: bool,
     pub transmission: bool,
@@ -40,6 +42,7 @@ impl Quality {
         Quality {
             lighting: q >= 2,
             shadows: q >= 4,
+            area_lights: q >= 5,
             quick_colors: q <= 5,
             transmission: q >= 6,
             reflection: q >= 8,
@@ -194,21 +197,21 @@ impl<'a> Tracer<'a> {
         // Highlights take the surface colour in proportion to `metallic`.
         let highlight_tint = DVec3::ONE + (c.rgb - DVec3::ONE) * fin.metallic;
         for light in &s.lights {
-            let to_light = light.position - p;
-            let dist = to_light.length();
-            if dist <= 0.0 {
+            let Some(inc) = light.incidence(p) else {
                 continue;
-            }
-            let l = to_light / dist;
+            };
+            let l = inc.l;
             let cos_n = nf.dot(l);
             if cos_n <= 0.0 {
                 continue;
             }
-            let mut lc = light.color * fade(light, dist);
+            let mut lc = light.color * (fade(light, inc.dist) * inc.beam);
             if !light.shadowless && q.shadows {
-                lc *= self.shadow(p, l, dist, ctx);
-                if lc == DVec3::ZERO {
-                    continue;
+                if let Some(dist) = inc.shadow_dist {
+                    lc *= self.light_seen(p, light, l, dist, ctx);
+                    if lc == DVec3::ZERO {
+                        continue;
+                    }
                 }
             }
             if fin.diffuse > 0.0 {
@@ -293,39 +296,6 @@ impl<'a> Tracer<'a> {
             }
         }
         Seen { rgb: col, clear }
-    }
-
-    /// Light reaching `p` from a light `dist` away in direction `l`: zero behind an opaque
-    /// object, filtered by each crossing of a transparent one.
-    fn shadow(&self, p: DVec3, l: DVec3, dist: f64, ctx: &mut TraceCtx<'a>) -> DVec3 {
-        ctx.rays += 1;
-        let ray = Ray::new(p, l);
-        let mut att = DVec3::ONE;
-        self.scene.for_each_candidate(&ray, dist, |obj| {
-            if obj.no_shadow {
-                return false;
-            }
-            if !obj.transparent {
-                if obj.first_hit(&ray, dist, ctx).is_some() {
-                    att = DVec3::ZERO;
-                    return true;
-                }
-                return false;
-            }
-            let start = ctx.surface.len();
-            obj.all_hits(&ray, dist, ctx);
-            for h in &ctx.surface[start..] {
-                let c = pigment::eval(&h.obj.texture_at(h).pigment, ray.at(h.t));
-                if c.is_opaque() {
-                    att = DVec3::ZERO;
-                    break;
-                }
-                att *= c.transmitted();
-            }
-            ctx.surface.truncate(start);
-            att == DVec3::ZERO
-        });
-        att
     }
 }
 

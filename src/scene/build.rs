@@ -8,7 +8,7 @@ use std::sync::Arc;
 use crate::color::Rgbft;
 use crate::geom::bvh::Bvh;
 use crate::geom::Shape;
-use crate::math::{Aabb, DVec3, Ray};
+use crate::math::{Aabb, DVec3, Ray, Transform};
 use crate::render::camera::Camera;
 use crate::scene::desc::{
     ImageMap, Interior, MeshData, ObjectDesc, Pigment, PigmentKind, SceneDesc, ShapeDesc, Texture,
@@ -16,14 +16,7 @@ use crate::scene::desc::{
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
 use crate::scene::shapes::make_shape;
 
-#[derive(Clone, Debug)]
-pub struct Light {
-    pub position: DVec3,
-    pub color: DVec3,
-    pub shadowless: bool,
-    pub fade_distance: Option<f64>,
-    pub fade_power: f64,
-}
+pub use super::light::Light;
 
 /// How working values become file values.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -177,14 +170,13 @@ impl Ctx {
         let ior = int.map_or(1.0, |i| i.ior);
         let (kind, bounds, mesh) = match &o.shape {
             ShapeDesc::Light(l) => {
-                self.lights.push(Light {
-                    position: o.transform.point(l.position),
-                    color: l.color,
-                    shadowless: l.shadowless,
-                    fade_distance: l.fade_distance,
-                    fade_power: l.fade_power,
-                });
-                return None;
+                self.lights.push(Light::new(l, &o.transform));
+                // `looks_like` is drawn at the light's location and casts no shadow.
+                let shape = l.looks_like.as_ref()?;
+                let mut shape = (**shape).clone();
+                shape.apply_transform(&Transform::translate(l.position).then(&o.transform));
+                shape.no_shadow = true;
+                return self.object(&shape, parent_tex, parent_int, default);
             }
             ShapeDesc::Csg { op, children } => {
                 let kids: Vec<Object> = children

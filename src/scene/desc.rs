@@ -91,6 +91,74 @@ pub struct LightDesc {
     pub shadowless: bool,
     pub fade_distance: Option<f64>,
     pub fade_power: f64,
+    pub kind: LightKind,
+    /// Where a spotlight, cylinder or parallel light points (POV-Ray's default <0,0,1>).
+    pub point_at: DVec3,
+    /// Hot-spot and edge: degrees for spotlights, distances from the axis for cylinders;
+    /// None takes the kind's default.
+    pub radius: Option<f64>,
+    pub falloff: Option<f64>,
+    pub tightness: f64,
+    pub parallel: bool,
+    pub area: Option<AreaLightDesc>,
+    /// `looks_like`: an object drawn at the light (placed at its location), casting no shadow.
+    pub looks_like: Option<Box<ObjectDesc>>,
+}
+
+impl LightDesc {
+    pub fn at(position: DVec3) -> LightDesc {
+        LightDesc {
+            position,
+            color: DVec3::ONE,
+            shadowless: false,
+            fade_distance: None,
+            fade_power: 0.0,
+            kind: LightKind::Point,
+            point_at: DVec3::Z,
+            radius: None,
+            falloff: None,
+            tightness: 0.0,
+            parallel: false,
+            area: None,
+            looks_like: None,
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LightKind {
+    Point,
+    Spot,
+    Cylinder,
+}
+
+/// `area_light <axis1>, <axis2>, size1, size2` and its modifiers.
+#[derive(Clone, Debug)]
+pub struct AreaLightDesc {
+    pub axis1: DVec3,
+    pub axis2: DVec3,
+    pub size1: u32,
+    pub size2: u32,
+    pub adaptive: Option<u32>,
+    pub jitter: bool,
+    pub circular: bool,
+    pub orient: bool,
+}
+
+impl AreaLightDesc {
+    /// A 1×1 array: the modifiers of an area light given before its `area_light` line.
+    pub fn point() -> AreaLightDesc {
+        AreaLightDesc {
+            axis1: DVec3::ZERO,
+            axis2: DVec3::ZERO,
+            size1: 1,
+            size2: 1,
+            adaptive: None,
+            jitter: false,
+            circular: false,
+            orient: false,
+        }
+    }
 }
 
 #[derive(Clone, Debug)]

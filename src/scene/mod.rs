@@ -3,5 +3,6 @@
 pub mod build;
 pub mod desc;
 pub mod image;
+pub mod light;
 pub mod object;
 pub mod shapes;

@@ -5,7 +5,8 @@ use std::sync::Arc;
 
 use crate::math::{DVec3, Transform};
 use crate::scene::desc::{
-    CsgOp, Interior, LightDesc, MeshData, MeshTriangle, ObjectDesc, ShapeDesc, Texture,
+    AreaLightDesc, CsgOp, Interior, LightDesc, LightKind, MeshData, MeshTriangle, ObjectDesc,
+    ShapeDesc, Texture,
 };
 
 use super::lexer::{Sym, Tok};
@@ -590,13 +591,7 @@ impl Parser {
             _ => {
                 let position = self.parse_vector()?;
                 self.skip_optional_comma()?;
-                LightDesc {
-                    position,
-                    color: DVec3::ONE,
-                    shadowless: false,
-                    fade_distance: None,
-                    fade_power: 0.0,
-                }
+                LightDesc::at(position)
             }
         };
         let mut obj_tf = Transform::IDENTITY;
@@ -619,16 +614,36 @@ impl Parser {
                         "shadowless" => light.shadowless = true,
                         "fade_distance" => light.fade_distance = Some(self.parse_float()?),
                         "fade_power" => light.fade_power = self.parse_float()?,
-                        "spotlight" | "cylinder" | "parallel" | "area_light" | "looks_like"
-                        | "projected_through" | "photons" | "media_interaction"
-                        | "media_attenuation" | "circular" | "orient" | "jitter" | "adaptive"
-                        | "area_illumination" => {
+                        "spotlight" => light.kind = LightKind::Spot,
+                        "cylinder" => light.kind = LightKind::Cylinder,
+                        "parallel" => light.parallel = true,
+                        "point_at" => light.point_at = self.parse_vector()?,
+                        "radius" => light.radius = Some(self.parse_float()?),
+                        "falloff" => light.falloff = Some(self.parse_float()?),
+                        "tightness" => light.tightness = self.parse_float()?,
+                        "area_light" => {
+                            let area = self.parse_area_light(light.area.take())?;
+                            light.area = Some(area);
+                        }
+                        "adaptive" | "jitter" | "circular" | "orient" => {
+                            let area = light.area.get_or_insert_with(AreaLightDesc::point);
+                            match &*k {
+                                "adaptive" => {
+                                    area.adaptive = Some(self.parse_float()?.max(0.0) as u32)
+                                }
+                                "jitter" => area.jitter = true,
+                                "circular" => area.circular = self.optional_bool()?,
+                                _ => area.orient = self.optional_bool()?,
+                            }
+                        }
+                        "looks_like" => {
+                            let o = self.object_ref(t.span)?;
+                            light.looks_like = Some(Box::new(o));
+                        }
+                        "projected_through" | "photons" | "media_interaction"
+                        | "media_attenuation" | "area_illumination" => {
                             self.unsupported(&k, t.span);
                             self.skip_light_item(&k)?;
-                        }
-                        "point_at" | "radius" | "falloff" | "tightness" | "area_light_axis" => {
-                            self.unsupported(&k, t.span);
-                            self.parse_expr()?;
                         }
                         other => {
                             if let Some(tr) = self.transform_item(other)? {
@@ -654,6 +669,24 @@ impl Parser {
         };
         obj.apply_transform(&obj_tf);
         Ok(obj)
+    }
+
+    /// `area_light <axis1>, <axis2>, size1, size2`, keeping modifiers written before it.
+    fn parse_area_light(&mut self, before: Option<AreaLightDesc>) -> PResult<AreaLightDesc> {
+        let axis1 = self.parse_vector()?;
+        self.skip_optional_comma()?;
+        let axis2 = self.parse_vector()?;
+        self.skip_optional_comma()?;
+        let size1 = self.parse_float()?;
+        self.skip_optional_comma()?;
+        let size2 = self.parse_float()?;
+        Ok(AreaLightDesc {
+            axis1,
+            axis2,
+            size1: size1.max(1.0) as u32,
+            size2: size2.max(1.0) as u32,
+            ..before.unwrap_or_else(AreaLightDesc::point)
+        })
     }
 
     /// Reads past the arguments of an unsupported light item so parsing can go on.

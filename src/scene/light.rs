@@ -1,0 +1,332 @@
+//! Light sources as the renderer uses them: point, spot and cylinder lights, parallel lights
+//! and area lights, resolved from the scene description into world space.
+//!
+//! The spot and cylinder falloff curves were measured with povray 3.7 on a plane lit from
+//! above (tests/probes/light_*.pov): full intensity inside `radius`, a smoothstep down to zero
+//! at `falloff`, times cos(angle)^tightness for spotlights and (1 − distance/falloff)^tightness
+//! for cylinders. A cylinder light shines along its axis, like a parallel light.
+
+use crate::math::{DVec3, Transform};
+use crate::scene::desc::{AreaLightDesc, LightDesc, LightKind};
+
+#[derive(Clone, Debug)]
+pub struct Light {
+    pub position: DVec3,
+    pub color: DVec3,
+    pub shadowless: bool,
+    pub fade_distance: Option<f64>,
+    pub fade_power: f64,
+    pub cone: Cone,
+    /// Unit direction the light travels, for parallel and cylinder lights.
+    pub parallel: Option<DVec3>,
+    pub area: Option<AreaLight>,
+}
+
+/// The shape of a light's beam.
+#[derive(Clone, Copy, Debug)]
+pub enum Cone {
+    Point,
+    Spot {
+        axis: DVec3,
+        cos_radius: f64,
+        cos_falloff: f64,
+        tightness: f64,
+    },
+    Cylinder {
+        axis: DVec3,
+        radius: f64,
+        falloff: f64,
+        tightness: f64,
+    },
+}
+
+/// An array of point lights for soft shadows; lighting itself comes from the centre.
+#[derive(Clone, Debug)]
+pub struct AreaLight {
+    pub axis1: DVec3,
+    pub axis2: DVec3,
+    pub size1: u32,
+    pub size2: u32,
+    pub adaptive: Option<u32>,
+    pub jitter: bool,
+    pub circular: bool,
+    pub orient: bool,
+}
+
+/// How a light reaches a point.
+#[derive(Clone, Copy, Debug)]
+pub struct Incidence {
+    /// Unit vector from the point towards the light.
+    pub l: DVec3,
+    /// Length of the shadow ray; None where the point gets light without shadows (above a
+    /// parallel light's plane).
+    pub shadow_dist: Option<f64>,
+    /// Distance for fading, always to the light's location.
+    pub dist: f64,
+    /// The beam's share at this point (1 outside spot and cylinder lights).
+    pub beam: f64,
+}
+
+impl Light {
+    pub fn new(d: &LightDesc, t: &Transform) -> Light {
+        let position = t.point(d.position);
+        let point_at = t.point(d.point_at);
+        let axis = (point_at - position).normalize_or(DVec3::Z);
+        let cone = match d.kind {
+            LightKind::Point => Cone::Point,
+            LightKind::Spot => {
+                let radius = d.radius.unwrap_or(30.0);
+                // A falloff inside the hot-spot makes a hard edge at the radius.
+                let falloff = d.falloff.unwrap_or(45.0).max(radius);
+                Cone::Spot {
+                    axis,
+                    cos_radius: radius.to_radians().cos(),
+                    cos_falloff: falloff.to_radians().cos(),
+                    tightness: d.tightness,
+                }
+            }
+            LightKind::Cylinder => {
+                let radius = d.radius.unwrap_or(0.75);
+                Cone::Cylinder {
+                    axis,
+                    radius,
+                    falloff: d.falloff.unwrap_or(1.0).max(radius),
+                    tightness: d.tightness,
+                }
+            }
+        };
+        let parallel = (d.parallel || d.kind == LightKind::Cylinder).then_some(axis);
+        Light {
+            position,
+            color: d.color,
+            shadowless: d.shadowless,
+            fade_distance: d.fade_distance,
+            fade_power: d.fade_power,
+            cone,
+            parallel,
+            area: d.area.as_ref().map(|a| AreaLight::new(a, t)),
+        }
+    }
+
+    /// How this light reaches `p`, or None where it does not (outside the beam, or at the
+    /// light itself).
+    pub fn incidence(&self, p: DVec3) -> Option<Incidence> {
+        let to_light = self.position - p;
+        let dist = to_light.length();
+        if dist <= 0.0 {
+            return None;
+        }
+        let beam = self.beam(p);
+        if beam <= 0.0 {
+            return None;
+        }
+        let (l, shadow_dist) = match self.parallel {
+            Some(dir) => {
+                // Shadow rays go back along the beam to the plane through the light's
+                // location; points beyond that plane are lit but unshadowed.
+                let along = to_light.dot(-dir);
+                (-dir, (along > 0.0).then_some(along))
+            }
+            None => (to_light / dist, Some(dist)),
+        };
+        Some(Incidence {
+            l,
+            shadow_dist,
+            dist,
+            beam,
+        })
+    }
+
+    fn beam(&self, p: DVec3) -> f64 {
+        match self.cone {
+            Cone::Point => 1.0,
+            Cone::Spot {
+                axis,
+                cos_radius,
+                cos_falloff,
+                tightness,
+            } => {
+                let c = (p - self.position).normalize_or_zero().dot(axis);
+                if c <= cos_falloff {
+                    return 0.0;
+                }
+                let edge = if c >= cos_radius || cos_radius <= cos_falloff {
+                    1.0
+                } else {
+                    smoothstep((c - cos_falloff) / (cos_radius - cos_falloff))
+                };
+                if tightness != 0.0 {
+                    edge * c.powf(tightness)
+                } else {
+                    edge
+                }
+            }
+            Cone::Cylinder {
+                axis,
+                radius,
+                falloff,
+                tightness,
+            } => {
+                let v = p - self.position;
+                if v.dot(axis) <= 0.0 {
+                    return 0.0;
+                }
+                let d = (v - axis * v.dot(axis)).length();
+                if d >= falloff {
+                    return 0.0;
+                }
+                let edge = if d <= radius || falloff <= radius {
+                    1.0
+                } else {
+                    smoothstep((falloff - d) / (falloff - radius))
+                };
+                if tightness != 0.0 {
+                    edge * (1.0 - d / falloff).powf(tightness)
+                } else {
+                    edge
+                }
+            }
+        }
+    }
+}
+
+fn smoothstep(t: f64) -> f64 {
+    let t = t.clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
+impl AreaLight {
+    fn new(a: &AreaLightDesc, t: &Transform) -> AreaLight {
+        AreaLight {
+            axis1: t.vector(a.axis1),
+            axis2: t.vector(a.axis2),
+            size1: a.size1.max(1),
+            size2: a.size2.max(1),
+            adaptive: a.adaptive,
+            jitter: a.jitter,
+            circular: a.circular,
+            orient: a.orient,
+        }
+    }
+
+    /// The array point (i, j) relative to the light's centre, for a light seen from `from`
+    /// (unit vector from the light towards the shaded point, used by `orient`). `jitter` is a
+    /// pair in [-0.5, 0.5) moving the point within its cell.
+    pub fn point(&self, i: u32, j: u32, from: DVec3, jitter: (f64, f64)) -> DVec3 {
+        let frac = |k: u32, n: u32, jit: f64| {
+            if n <= 1 {
+                0.0
+            } else {
+                let cell = 1.0 / (n - 1) as f64;
+                (k as f64 * cell - 0.5 + jit * cell).clamp(-0.5, 0.5)
+            }
+        };
+        let mut u = frac(i, self.size1, jitter.0);
+        let mut v = frac(j, self.size2, jitter.1);
+        if self.circular {
+            (u, v) = square_to_disc(u * 2.0, v * 2.0);
+            u *= 0.5;
+            v *= 0.5;
+        }
+        let (a1, a2) = if self.orient {
+            orient_axes(self.axis1, self.axis2, from)
+        } else {
+            (self.axis1, self.axis2)
+        };
+        a1 * u + a2 * v
+    }
+}
+
+/// [-1, 1]² onto the unit disc, each point pulled in along its ray from the centre so the
+/// square's rings become circles (closest to povray of the mappings tried: concentric and
+/// elliptical-grid were further off).
+fn square_to_disc(a: f64, b: f64) -> (f64, f64) {
+    let len = (a * a + b * b).sqrt();
+    if len == 0.0 {
+        return (0.0, 0.0);
+    }
+    let k = a.abs().max(b.abs()) / len;
+    (a * k, b * k)
+}
+
+/// Axes of the same lengths turned to face along `from`, the first kept as close to its
+/// own direction as it can be.
+fn orient_axes(a1: DVec3, a2: DVec3, from: DVec3) -> (DVec3, DVec3) {
+    let n = from.normalize_or(DVec3::Z);
+    let mut u = a1 - n * a1.dot(n);
+    if u.length_squared() < 1e-12 {
+        u = a2 - n * a2.dot(n);
+    }
+    if u.length_squared() < 1e-12 {
+        u = n.any_orthonormal_vector();
+    }
+    let u = u.normalize();
+    let v = n.cross(u);
+    (u * a1.length(), v * a2.length())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn light(kind: LightKind, radius: f64, falloff: f64, tightness: f64) -> Light {
+        let mut d = LightDesc::at(DVec3::new(0.0, 10.0, 0.0));
+        d.kind = kind;
+        d.point_at = DVec3::ZERO;
+        d.radius = Some(radius);
+        d.falloff = Some(falloff);
+        d.tightness = tightness;
+        Light::new(&d, &Transform::IDENTITY)
+    }
+
+    #[test]
+    fn spot_falloff_matches_povray_samples() {
+        // Intensities povray 3.7 gave on a plane 10 below the light (divided by cos θ).
+        let s = light(LightKind::Spot, 10.0, 30.0, 0.0);
+        let at = |x: f64| s.beam(DVec3::new(x, 0.0, 0.0));
+        assert!((at(1.0) - 1.0).abs() < 1e-9);
+        assert!((at(3.99) - 0.54262).abs() < 2e-3);
+        assert!((at(2.79) - 0.91232).abs() < 2e-3);
+        assert_eq!(at(6.0), 0.0);
+        let t = light(LightKind::Spot, 10.0, 30.0, 10.0);
+        assert!((t.beam(DVec3::new(2.39, 0.0, 0.0)) - 0.73419).abs() < 3e-3);
+    }
+
+    #[test]
+    fn cylinder_falloff_matches_povray_samples() {
+        let c = light(LightKind::Cylinder, 2.0, 4.0, 0.0);
+        let at = |x: f64| c.beam(DVec3::new(x, 0.0, 0.0));
+        assert_eq!(at(1.9), 1.0);
+        assert!((at(3.19) - 0.35775).abs() < 5e-3);
+        assert_eq!(at(4.1), 0.0);
+        let t = light(LightKind::Cylinder, 2.0, 4.0, 10.0);
+        assert!((t.beam(DVec3::new(0.8, 0.0, 0.0)) - 0.10804).abs() < 2e-3);
+        // Cylinder light shines straight down its axis.
+        let i = c.incidence(DVec3::new(1.0, 0.0, 0.0)).unwrap();
+        assert!((i.l - DVec3::Y).length() < 1e-12);
+        assert!((i.shadow_dist.unwrap() - 10.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn area_points_span_the_axes() {
+        let a = AreaLight {
+            axis1: DVec3::X * 2.0,
+            axis2: DVec3::Z * 2.0,
+            size1: 3,
+            size2: 3,
+            adaptive: None,
+            jitter: false,
+            circular: false,
+            orient: false,
+        };
+        assert_eq!(
+            a.point(0, 0, DVec3::Y, (0.0, 0.0)),
+            DVec3::new(-1.0, 0.0, -1.0)
+        );
+        assert_eq!(a.point(1, 1, DVec3::Y, (0.0, 0.0)), DVec3::ZERO);
+        assert_eq!(
+            a.point(2, 0, DVec3::Y, (0.0, 0.0)),
+            DVec3::new(1.0, 0.0, -1.0)
+        );
+    }
+}
