@@ -5,6 +5,7 @@
 
 mod aa;
 pub mod camera;
+mod fog;
 pub mod pigment;
 mod shadow;
 pub mod trace;

@@ -121,9 +121,14 @@ impl<'a> Tracer<'a> {
         if depth > self.scene.max_trace_level {
             return Seen::default();
         }
-        match self.scene.first_hit(ray, f64::INFINITY, ctx) {
-            Some(h) => self.shade(ray, &h, depth, weight, straight, ctx),
-            None => self.background(ray.dir, straight),
+        let (seen, t) = match self.scene.first_hit(ray, f64::INFINITY, ctx) {
+            Some(h) => (self.shade(ray, &h, depth, weight, straight, ctx), h.t),
+            None => (self.background(ray.dir, straight), f64::INFINITY),
+        };
+        if self.scene.fogs.is_empty() {
+            seen
+        } else {
+            super::fog::apply(&self.scene.fogs, ray, t, seen)
         }
     }
 

@@ -11,7 +11,8 @@ use crate::geom::Shape;
 use crate::math::{Aabb, DVec3, Ray, Transform};
 use crate::render::camera::Camera;
 use crate::scene::desc::{
-    ImageMap, Interior, MeshData, ObjectDesc, Pigment, PigmentKind, SceneDesc, ShapeDesc, Texture,
+    FogDesc, ImageMap, Interior, MeshData, ObjectDesc, Pigment, PigmentKind, SceneDesc, ShapeDesc,
+    Texture,
 };
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
 use crate::scene::shapes::make_shape;
@@ -41,6 +42,8 @@ pub struct Scene {
     pub adc_bailout: f64,
     pub ambient_light: DVec3,
     pub gamma: GammaMode,
+    /// Fog layers with a distance (POV-Ray treats distance 0 as no fog), up made unit.
+    pub fogs: Vec<FogDesc>,
 }
 
 pub struct BuildOutput {
@@ -98,6 +101,15 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
         adc_bailout: desc.global.adc_bailout,
         ambient_light: desc.global.ambient_light,
         gamma,
+        fogs: desc
+            .fogs
+            .iter()
+            .filter(|f| f.distance > 0.0)
+            .map(|f| FogDesc {
+                up: f.up.normalize_or(DVec3::Y),
+                ..f.clone()
+            })
+            .collect(),
     };
     BuildOutput { scene, warnings }
 }

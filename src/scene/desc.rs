@@ -24,6 +24,33 @@ pub struct SceneDesc {
     pub default_texture: Texture,
     /// `#version` in force at the end of parsing, if the scene set one.
     pub version: Option<f64>,
+    /// Fog layers, applied in the order given.
+    pub fogs: Vec<FogDesc>,
+}
+
+/// `fog { ... }`: constant (type 1) or ground fog (type 2).
+#[derive(Clone, Debug)]
+pub struct FogDesc {
+    pub ground: bool,
+    pub distance: f64,
+    pub color: Rgbft,
+    pub offset: f64,
+    pub alt: f64,
+    /// The up direction of ground fog, transformed with the fog.
+    pub up: DVec3,
+}
+
+impl Default for FogDesc {
+    fn default() -> Self {
+        FogDesc {
+            ground: false,
+            distance: 0.0,
+            color: Rgbft::BLACK,
+            offset: 0.0,
+            alt: 0.0,
+            up: DVec3::Y,
+        }
+    }
 }
 
 #[derive(Clone, Debug)]

@@ -9,7 +9,7 @@ use super::parser::{PResult, Parser};
 use super::value::Value;
 
 /// Atmospheric and global effects POV-Ray renders that lancer reads past with a warning.
-const UNSUPPORTED_BLOCKS: &[&str] = &["fog", "media", "rainbow", "photons", "radiosity"];
+const UNSUPPORTED_BLOCKS: &[&str] = &["media", "rainbow", "photons", "radiosity"];
 
 impl Parser {
     pub(super) fn parse_scene_items(&mut self) -> PResult<()> {
@@ -31,6 +31,10 @@ impl Parser {
                     self.expect_sym(Sym::RBrace, "to close background")?;
                 }
                 "sky_sphere" => self.parse_sky_sphere()?,
+                "fog" => {
+                    let fog = self.parse_fog_block()?;
+                    self.scene.fogs.push(fog);
+                }
                 // `default { ... }` without the `#` is the old spelling, still read by 3.7.
                 "default" => self.default_directive()?,
                 "global_settings" => self.parse_global_settings()?,

@@ -329,8 +329,12 @@ impl Parser {
                 self.advance();
                 Ok(Value::SkySphere(Box::new(self.parse_sky_sphere_block()?)))
             }
+            "fog" => {
+                self.advance();
+                Ok(Value::Fog(Box::new(self.parse_fog_block()?)))
+            }
             "pigment_map" | "normal_map" | "slope_map" | "texture_map" | "density_map"
-            | "density" | "media" | "fog" | "rainbow" => {
+            | "density" | "media" | "rainbow" => {
                 self.advance();
                 self.unsupported(k, t.span);
                 self.skip_block()?;
@@ -357,6 +361,7 @@ impl Parser {
                     | Value::ColorMap(_)
                     | Value::Material(_)
                     | Value::SkySphere(_)
+                    | Value::Fog(_)
                     | Value::Skipped(_)),
                 ) => {
                     let v = v.clone();

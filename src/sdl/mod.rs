@@ -2,6 +2,7 @@
 //! executes directives as it reads.
 
 pub mod array;
+pub mod atmosphere;
 pub mod builtins_math;
 pub mod byref;
 pub mod camera;
@@ -35,5 +36,6 @@ pub fn default_scene() -> SceneDesc {
         global: GlobalSettings::default(),
         default_texture: Texture::default(),
         version: None,
+        fogs: Vec::new(),
     }
 }

@@ -34,6 +34,7 @@ pub enum Value {
     Material(Box<(Option<Texture>, Option<Interior>)>),
     /// The pigment layers of a `sky_sphere`.
     SkySphere(Box<Vec<Pigment>>),
+    Fog(Box<crate::scene::desc::FogDesc>),
     /// Something lancer reads but does not render yet (`media`, `fog`, `pigment_map`, ...),
     /// named by its keyword so it can still be declared, passed and used.
     Skipped(Rc<str>),
@@ -65,6 +66,7 @@ impl Value {
             Value::ColorMap(_) => "color_map",
             Value::Material(_) => "material",
             Value::SkySphere(_) => "sky_sphere",
+            Value::Fog(_) => "fog",
             Value::Skipped(_) => "unsupported item",
             Value::Array(_) => "array",
             Value::Spline(_) => "spline",
