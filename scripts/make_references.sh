@@ -5,8 +5,9 @@
 #   reference/S.png     320x240, no anti-aliasing  (-A)
 #   reference/S_aa.png  320x240, anti-aliasing     (+A0.3)
 #   reference/S_aaj.png 320x240, anti-aliasing without jitter (+A0.3 -J)
+#   reference/S_am2.png 320x240, anti-aliasing method 2 without jitter (+A0.3 +AM2 -J)
 # and nothing else.  reference/manifest.tsv is maintained by hand; this
-# script only checks that every scene has its two rows there.
+# script only checks that every scene has its rows there.
 #
 # POV-Ray warnings are collected and printed at the end.
 #
@@ -81,6 +82,7 @@ for pov in "${scenes[@]}"; do
   render "$pov" -A     "$REF/$name.png"
   render "$pov" +A0.3  "$REF/${name}_aa.png"
   render "$pov" "+A0.3 -J" "$REF/${name}_aaj.png"
+  render "$pov" "+A0.3 +AM2 -J" "$REF/${name}_am2.png"
 done
 
 if [ "$warnings" -gt 0 ]; then
@@ -100,7 +102,7 @@ fi
 missing=0
 for pov in "$SCENES"/*.pov; do
   name="$(basename "$pov" .pov)"
-  for ref in "$name.png" "${name}_aa.png" "${name}_aaj.png"; do
+  for ref in "$name.png" "${name}_aa.png" "${name}_aaj.png" "${name}_am2.png"; do
     if ! awk -F'\t' -v s="$name.pov" -v r="$ref" \
          'NR > 1 && $1 == s && $3 == r { found = 1 } END { exit !found }' "$MANIFEST"; then
       echo "warning: manifest.tsv has no row for $name.pov -> $ref" >&2

@@ -143,13 +143,14 @@ fn render_frame(
             String::new()
         };
         eprintln!(
-            "lancer: {frame}wrote {} ({}x{}) — parse {:.3}s, render {:.3}s, {} rays",
+            "lancer: {frame}wrote {} ({}x{}) — parse {:.3}s, render {:.3}s, {} rays ({} camera)",
             f.output.display(),
             job.settings.width,
             job.settings.height,
             parse_time.as_secs_f64(),
             trace_start.elapsed().as_secs_f64(),
-            film.rays
+            film.rays,
+            film.camera_rays
         );
     }
     ExitCode::SUCCESS

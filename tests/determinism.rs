@@ -4,7 +4,7 @@
 use std::path::Path;
 
 use lancer::output::{write, Format};
-use lancer::render::RenderSettings;
+use lancer::render::{RenderSettings, Window};
 
 fn render_with_threads(n: usize, settings: &RenderSettings) -> Vec<u8> {
     let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/glass.pov");
@@ -30,6 +30,38 @@ fn same_bytes_for_any_thread_count() {
     let one = render_with_threads(1, &s);
     assert_eq!(one, render_with_threads(2, &s));
     assert_eq!(one, render_with_threads(5, &s));
+}
+
+#[test]
+fn method2_same_bytes_for_any_thread_count_and_row_split() {
+    let s = RenderSettings {
+        width: 96,
+        height: 72,
+        antialias: Some(0.1),
+        sampling_method: 2,
+        ..RenderSettings::default()
+    };
+    let one = render_with_threads(1, &s);
+    assert_eq!(one, render_with_threads(2, &s));
+    assert_eq!(one, render_with_threads(5, &s));
+    // A method-2 pixel depends on nothing outside itself (its corners and its own
+    // sub-samples), so a picture rendered as bands of rows, as when a frame is split across
+    // machines, must have the bands' pixels byte for byte.
+    let row = 96 * 3;
+    for (y0, y1) in [(0, 29), (29, 72)] {
+        let band = RenderSettings {
+            window: Some(Window {
+                x0: 0,
+                x1: 96,
+                y0,
+                y1,
+            }),
+            ..s.clone()
+        };
+        let part = render_with_threads(2, &band);
+        let rows = y0 as usize * row..y1 as usize * row;
+        assert_eq!(part[rows.clone()], one[rows], "rows {y0}..{y1}");
+    }
 }
 
 #[test]

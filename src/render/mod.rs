@@ -1,7 +1,7 @@
 //! Rendering a built scene into a film: one sample per pixel, then POV-Ray's anti-aliasing
-//! method 1 on pixels that differ from their neighbours. Rows are traced in parallel with
-//! rayon; jitter comes from a hash of the pixel and sample, so the picture is the same for any
-//! thread count.
+//! method 1 on pixels that differ from their neighbours, or instead method 2's recursive
+//! subdivision from the pixel corners. Rows are traced in parallel with rayon; jitter comes
+//! from a hash of the pixel and sample, so the picture is the same for any thread count.
 
 mod aa;
 pub mod camera;
@@ -85,6 +85,8 @@ pub struct Film {
     pub gamma: GammaMode,
     /// Rays traced for this picture (camera, secondary and shadow rays).
     pub rays: u64,
+    /// Of those, camera rays: one per pixel without anti-aliasing, more with it.
+    pub camera_rays: u64,
 }
 
 impl Film {
@@ -127,28 +129,21 @@ pub(crate) fn jitter_hash(x: u32, y: u32, i: u32) -> f64 {
 
 /// Renders the scene; `progress` is called once per finished row (from any thread).
 pub fn render(scene: &Scene, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)) -> Film {
-    let (w, h) = (s.width as usize, s.height as usize);
     let tracer = Tracer::new(scene, s.alpha, Quality::level(s.quality));
-    let mut samples = vec![Seen::default(); w * h];
-    let rays = AtomicU64::new(0);
-    samples
-        .par_chunks_mut(w)
-        .enumerate()
-        .for_each_init(TraceCtx::default, |ctx, (y, row)| {
-            for (x, px) in row.iter_mut().enumerate() {
-                if !s.inside(x, y) {
-                    continue;
-                }
-                let ray = scene.camera.ray(x as f64 + 0.5, y as f64 + 0.5);
-                *px = tracer.trace_camera(&ray, ctx);
+    let pass = match s.antialias {
+        // Method 2 never looks at a pixel's centre, so the first pass would be wasted.
+        Some(threshold) if s.sampling_method == 2 => aa::method2(&tracer, s, threshold, progress),
+        threshold => {
+            let mut pass = first_pass(&tracer, s, progress);
+            if let Some(threshold) = threshold {
+                let (rays, camera_rays) = aa::method1(&tracer, &mut pass.samples, s, threshold);
+                pass.rays += rays;
+                pass.camera_rays += camera_rays;
             }
-            rays.fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
-            progress(1);
-        });
-    let mut rays = rays.into_inner();
-    if let Some(threshold) = s.antialias {
-        rays += aa::antialias(&tracer, &mut samples, s, threshold);
-    }
+            pass
+        }
+    };
+    let samples = pass.samples;
     Film {
         width: s.width,
         height: s.height,
@@ -157,7 +152,38 @@ pub fn render(scene: &Scene, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)
             .alpha
             .then(|| samples.iter().map(|p| 1.0 - p.clear).collect()),
         gamma: scene.gamma,
-        rays,
+        rays: pass.rays,
+        camera_rays: pass.camera_rays,
+    }
+}
+
+/// One sample at each pixel's centre.
+fn first_pass(tracer: &Tracer, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)) -> aa::Pass {
+    let (w, h) = (s.width as usize, s.height as usize);
+    let mut samples = vec![Seen::default(); w * h];
+    let rays = AtomicU64::new(0);
+    let camera_rays = AtomicU64::new(0);
+    samples
+        .par_chunks_mut(w)
+        .enumerate()
+        .for_each_init(TraceCtx::default, |ctx, (y, row)| {
+            let mut traced = 0;
+            for (x, px) in row.iter_mut().enumerate() {
+                if !s.inside(x, y) {
+                    continue;
+                }
+                let ray = tracer.scene.camera.ray(x as f64 + 0.5, y as f64 + 0.5);
+                *px = tracer.trace_camera(&ray, ctx);
+                traced += 1;
+            }
+            camera_rays.fetch_add(traced, Ordering::Relaxed);
+            rays.fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
+            progress(1);
+        });
+    aa::Pass {
+        samples,
+        rays: rays.into_inner(),
+        camera_rays: camera_rays.into_inner(),
     }
 }
 
