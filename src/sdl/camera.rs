@@ -234,4 +234,10 @@ impl Parser {
 }
 
 /// Background colour when a scene sets none.
-pub const DEFAULT_BACKGROUND: Rgbft = Rgbft::BLACK;
+/// Black and fully transmitting: the same black without alpha, and transparent with `+UA`
+/// (povray writes alpha 0 where a scene without `background` shows it).
+pub const DEFAULT_BACKGROUND: Rgbft = Rgbft {
+    rgb: crate::math::DVec3::ZERO,
+    filter: 0.0,
+    transmit: 1.0,
+};
