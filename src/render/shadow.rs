@@ -131,13 +131,16 @@ impl<'a> Tracer<'a> {
             }
             let start = ctx.surface.len();
             obj.all_hits(&ray, dist, ctx);
-            for h in &ctx.surface[start..] {
-                let c = pigment::eval(&h.obj.texture_at(h).pigment, ray.at(h.t));
-                if c.is_opaque() {
-                    att = DVec3::ZERO;
-                    break;
+            'hits: for h in &ctx.surface[start..] {
+                // Through each layer of a layered texture in turn.
+                for layer in h.obj.texture_at(h).layers() {
+                    let c = pigment::eval(&layer.pigment, ray.at(h.t));
+                    if c.is_opaque() {
+                        att = DVec3::ZERO;
+                        break 'hits;
+                    }
+                    att *= c.transmitted();
                 }
-                att *= c.transmitted();
             }
             ctx.surface.truncate(start);
             att == DVec3::ZERO

@@ -6,6 +6,7 @@
 //! at every surface crossing; shadowless lights make no highlights; rays past max_trace_level
 //! return black.
 
+use crate::color::Rgbft;
 use crate::math::{DVec3, Ray};
 use crate::scene::build::{Light, Scene};
 use crate::scene::object::{Scratch, SurfaceHit};
@@ -180,28 +181,107 @@ impl<'a> Tracer<'a> {
         let n = obj.normal(p, h);
         let entering = n.dot(dir) < 0.0;
         let nf = if entering { n } else { -n };
-        let tex = obj.texture_at(h);
-        let fin = &tex.finish;
-        let c = match tex.pigment.quick {
+        let top = obj.texture_at(h);
+        let eval = |tex: &crate::scene::desc::Texture| match tex.pigment.quick {
             Some(quick) if q.quick_colors => quick,
             _ => pigment::eval(&tex.pigment, p),
         };
         if !q.lighting {
             return Seen {
-                rgb: c.rgb,
+                rgb: eval(top).rgb,
                 clear: 0.0,
             };
         }
-        let opacity = c.opacity().max(0.0);
-        // Per hit, not per light.
+        // Per hit, not per light or layer.
         let mirror = reflect(dir, nf);
-        let specular_exp = 1.0 / fin.roughness.max(1e-6);
+        self.gather_lights(p, nf, ctx);
+        let cos_i = (-dir.dot(nf)).clamp(0.0, 1.0);
+        let (n1, n2) = if entering {
+            (1.0, obj.ior)
+        } else {
+            (obj.ior, 1.0)
+        };
 
-        let mut col = (fin.ambient * s.ambient_light + fin.emission) * c.rgb * opacity;
+        // Layers from the top down (one for most textures). Measured with povray 3.7
+        // (tests/probes/layered_*): each layer lights its own colour weighted by what the
+        // layers above let through and by its own opacity; its highlights only by what the
+        // layers above let through; reflections of all layers add up unweighted; what passes
+        // every layer goes on through the object.
+        let mut col = DVec3::ZERO;
+        let mut through = DVec3::ONE;
+        let mut refl_amount = DVec3::ZERO;
+        let mut refl_tinted = DVec3::ZERO;
+        let mut last = Rgbft::BLACK;
+        let mut conserve = false;
+        for tex in top.layers() {
+            let c = eval(tex);
+            let fin = &tex.finish;
+            col += through * self.layer_light(&c, fin, dir, nf, mirror, ctx);
+            let refl = &fin.reflection;
+            if !refl.is_zero() && q.reflection {
+                // Where a ray leaves an object at a point still inside another object (a wall
+                // plane whose inside holds the camera, say), POV-Ray takes the leaving object's
+                // ior for both sides of the Fresnel term, which makes it zero; elsewhere the
+                // exit is an ordinary glass-to-air interface. Measured: tests/probes.
+                let f = if refl.min == refl.max {
+                    // The blend factor does not matter; skip the powf on this per-hit path.
+                    0.0
+                } else if !refl.fresnel {
+                    (1.0 - cos_i).powf(refl.falloff)
+                } else if entering || !s.inside_other(p, obj) {
+                    fresnel(cos_i, n1, n2)
+                } else {
+                    0.0
+                };
+                let amount = refl.min + (refl.max - refl.min) * f;
+                refl_amount += amount;
+                refl_tinted += amount * (DVec3::ONE + (c.rgb - DVec3::ONE) * refl.metallic);
+            }
+            through *= c.transmitted();
+            conserve = fin.conserve_energy;
+            last = c;
+        }
+        if refl_amount != DVec3::ZERO {
+            let w = weight * refl_amount.max_element();
+            if w > s.adc_bailout {
+                let rc = self.trace(&Ray::new(p, mirror), depth + 1, w, ctx);
+                col += rc * refl_tinted;
+            }
+        }
 
-        // Highlights take the surface colour in proportion to `metallic`.
-        let highlight_tint = DVec3::ONE + (c.rgb - DVec3::ONE) * fin.metallic;
-        for light in &s.lights {
+        let mut clear = 0.0;
+        if (last.filter > 0.0 || last.transmit > 0.0) && through != DVec3::ZERO && q.transmission {
+            let mut tcol = through;
+            if conserve {
+                tcol *= DVec3::ONE - refl_amount;
+            }
+            let w = weight * tcol.max_element();
+            if w > s.adc_bailout {
+                let tdir = if n1 == n2 {
+                    Some(dir)
+                } else {
+                    let eta = n1 / n2;
+                    let k = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
+                    (k >= 0.0).then(|| dir * eta + nf * (eta * cos_i - k.sqrt()))
+                };
+                // Total internal reflection sends the transmitted share back inside.
+                let tdir = tdir.unwrap_or(mirror);
+                let tc = self.trace_seen(&Ray::new(p, tdir), depth + 1, w, straight, ctx);
+                col += tc.rgb * tcol;
+                clear = tc.clear * grey(through);
+            }
+        }
+        Seen { rgb: col, clear }
+    }
+}
+
+impl<'a> Tracer<'a> {
+    /// The lights reaching `p` (after shadows) into `ctx.lit`, once per hit for all layers.
+    fn gather_lights(&self, p: DVec3, nf: DVec3, ctx: &mut TraceCtx<'a>) {
+        let q = self.quality;
+        let mut lit = std::mem::take(&mut ctx.lit);
+        lit.clear();
+        for light in &self.scene.lights {
             let Some(inc) = light.incidence(p) else {
                 continue;
             };
@@ -219,16 +299,44 @@ impl<'a> Tracer<'a> {
                     }
                 }
             }
+            lit.push(LitBy {
+                color: lc,
+                l,
+                cos_n,
+                shadowless: light.shadowless,
+            });
+        }
+        ctx.lit = lit;
+    }
+
+    /// One texture layer's own light: ambient and diffuse weighted by its opacity,
+    /// highlights not.
+    fn layer_light(
+        &self,
+        c: &Rgbft,
+        fin: &crate::scene::desc::Finish,
+        dir: DVec3,
+        nf: DVec3,
+        mirror: DVec3,
+        ctx: &TraceCtx<'a>,
+    ) -> DVec3 {
+        let opacity = c.opacity().max(0.0);
+        let specular_exp = 1.0 / fin.roughness.max(1e-6);
+        let mut col = (fin.ambient * self.scene.ambient_light + fin.emission) * c.rgb * opacity;
+        // Highlights take the surface colour in proportion to `metallic`.
+        let highlight_tint = DVec3::ONE + (c.rgb - DVec3::ONE) * fin.metallic;
+        for lb in &ctx.lit {
+            let (lc, l) = (lb.color, lb.l);
             if fin.diffuse > 0.0 {
                 let d = if fin.brilliance == 1.0 {
-                    cos_n
+                    lb.cos_n
                 } else {
-                    cos_n.powf(fin.brilliance)
+                    lb.cos_n.powf(fin.brilliance)
                 };
                 col += lc * c.rgb * (fin.diffuse * d * opacity);
             }
             // POV-Ray 3.7 gives shadowless lights no highlights (tests/probes/shadowless_*).
-            if light.shadowless {
+            if lb.shadowless {
                 continue;
             }
             if fin.phong > 0.0 {
@@ -245,63 +353,16 @@ impl<'a> Tracer<'a> {
                 }
             }
         }
-
-        let cos_i = (-dir.dot(nf)).clamp(0.0, 1.0);
-        let (n1, n2) = if entering {
-            (1.0, obj.ior)
-        } else {
-            (obj.ior, 1.0)
-        };
-        let refl = &fin.reflection;
-        let mut refl_amount = DVec3::ZERO;
-        if !refl.is_zero() && q.reflection {
-            // Where a ray leaves an object at a point still inside another object (a wall
-            // plane whose inside holds the camera, say), POV-Ray takes the leaving object's ior
-            // for both sides of the Fresnel term, which makes it zero; elsewhere the exit is
-            // an ordinary glass-to-air interface. Measured with povray 3.7: tests/probes.
-            let f = if refl.min == refl.max {
-                // The blend factor does not matter; skip the powf on this per-hit path.
-                0.0
-            } else if !refl.fresnel {
-                (1.0 - cos_i).powf(refl.falloff)
-            } else if entering || !s.inside_other(p, obj) {
-                fresnel(cos_i, n1, n2)
-            } else {
-                0.0
-            };
-            refl_amount = refl.min + (refl.max - refl.min) * f;
-            let tint = DVec3::ONE + (c.rgb - DVec3::ONE) * refl.metallic;
-            let w = weight * refl_amount.max_element();
-            if w > s.adc_bailout {
-                let rc = self.trace(&Ray::new(p, mirror), depth + 1, w, ctx);
-                col += rc * refl_amount * tint;
-            }
-        }
-
-        let mut clear = 0.0;
-        if (c.filter > 0.0 || c.transmit > 0.0) && q.transmission {
-            let mut tcol = c.transmitted();
-            if fin.conserve_energy {
-                tcol *= DVec3::ONE - refl_amount;
-            }
-            let w = weight * tcol.max_element();
-            if w > s.adc_bailout {
-                let tdir = if n1 == n2 {
-                    Some(dir)
-                } else {
-                    let eta = n1 / n2;
-                    let k = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
-                    (k >= 0.0).then(|| dir * eta + nf * (eta * cos_i - k.sqrt()))
-                };
-                // Total internal reflection sends the transmitted share back inside.
-                let tdir = tdir.unwrap_or(mirror);
-                let tc = self.trace_seen(&Ray::new(p, tdir), depth + 1, w, straight, ctx);
-                col += tc.rgb * tcol;
-                clear = tc.clear * (c.filter * grey(c.rgb) + c.transmit);
-            }
-        }
-        Seen { rgb: col, clear }
+        col
     }
+}
+
+/// A light reaching the point being shaded, after shadows.
+pub struct LitBy {
+    pub color: DVec3,
+    pub l: DVec3,
+    pub cos_n: f64,
+    pub shadowless: bool,
 }
 
 fn fade(light: &Light, dist: f64) -> f64 {

@@ -163,9 +163,16 @@ impl Ctx {
         }
     }
 
+    /// The texture ready to render, and whether light can pass through it: through every
+    /// layer of a layered one.
     fn texture(&mut self, t: &Texture) -> (Arc<Texture>, bool) {
         let mut t = t.clone();
-        let transparent = self.pigment(&mut t.pigment);
+        let mut transparent = true;
+        let mut layer = Some(&mut t);
+        while let Some(l) = layer {
+            transparent &= self.pigment(&mut l.pigment);
+            layer = l.under.as_deref_mut();
+        }
         (Arc::new(t), transparent)
     }
 

@@ -316,6 +316,8 @@ pub struct Texture {
     pub pigment: Pigment,
     pub normal: Option<Normal>,
     pub finish: Finish,
+    /// A layered texture's next layer down (`texture {A} texture {B}` puts B over A).
+    pub under: Option<Box<Texture>>,
 }
 
 impl Default for Texture {
@@ -324,6 +326,7 @@ impl Default for Texture {
             pigment: Pigment::solid(Rgbft::BLACK),
             normal: None,
             finish: Finish::default(),
+            under: None,
         }
     }
 }
@@ -334,6 +337,24 @@ impl Texture {
         if let Some(n) = &mut self.normal {
             n.transform = n.transform.then(t);
         }
+        if let Some(u) = &mut self.under {
+            u.apply_transform(t);
+        }
+    }
+
+    /// This texture (itself possibly layered) laid over `below`.
+    pub fn over(mut self, below: Texture) -> Texture {
+        let mut bottom = &mut self;
+        while bottom.under.is_some() {
+            bottom = bottom.under.as_mut().unwrap();
+        }
+        bottom.under = Some(Box::new(below));
+        self
+    }
+
+    /// The layers from the top down.
+    pub fn layers(&self) -> impl Iterator<Item = &Texture> {
+        std::iter::successors(Some(self), |t| t.under.as_deref())
     }
 }
 

@@ -40,6 +40,8 @@ pub struct Scratch<'a> {
     /// Rays traced with this scratch (camera, reflected, refracted and shadow rays), for the
     /// statistics line.
     pub rays: u64,
+    /// The lights reaching the point being shaded, shared by its texture layers.
+    pub lit: Vec<crate::render::trace::LitBy>,
 }
 
 /// Whether a crossing at `p` of CSG member `i` is on the result's surface: every other member

@@ -298,10 +298,8 @@ impl Parser {
                 // look-ahead: a directive after the declaration must not run before it ends.
                 while matches!(self.raw_peek()?, Some(Token { tok: Tok::Ident(ref k), .. }) if &**k == "texture")
                 {
-                    let span = self.next_span()?;
                     self.advance();
-                    self.unsupported("layered textures (the last texture is used)", span);
-                    tex = self.parse_texture_block()?;
+                    tex = self.parse_texture_block()?.over(tex);
                 }
                 Ok(Value::Texture(Box::new(tex)))
             }

@@ -131,10 +131,11 @@ impl Parser {
         }
         match k {
             "texture" => {
-                if obj.texture.is_some() {
-                    self.unsupported("layered textures (the last texture is used)", span);
-                }
-                obj.texture = Some(self.parse_texture_block()?);
+                let t = self.parse_texture_block()?;
+                obj.texture = Some(match obj.texture.take() {
+                    Some(below) => t.over(below),
+                    None => t,
+                });
             }
             "pigment" => {
                 let mut tex = self.texture_mut(obj);
