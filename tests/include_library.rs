@@ -11,6 +11,8 @@ const LIBRARY: &str = "/usr/share/povray-3.7/include";
 /// first (checked with `povray +I<file>`: each stops at the first colour or shape name).
 const NEEDS: &[(&str, &[&str])] = &[
     ("shapes2.inc", &["shapes.inc"]),
+    // Its Helix is clipped by shapes.inc's Cylinder_Z (povray: "undeclared identifier").
+    ("shapesq.inc", &["shapes.inc"]),
     ("skies.inc", &["colors.inc"]),
     ("stdcam.inc", &["colors.inc"]),
     ("stoneold.inc", &["colors.inc"]),

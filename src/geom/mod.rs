@@ -56,6 +56,7 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
     fn normal(&self, p: DVec3, hit: &Hit) -> DVec3;
 }
 
+pub mod algebraic;
 pub mod boxes;
 pub mod bvh;
 pub mod cone;

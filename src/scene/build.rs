@@ -249,6 +249,13 @@ impl Ctx {
                 (ObjKind::Shape(s), bounds, mesh)
             }
         };
+        let clip: Vec<Object> = o
+            .clipped_by
+            .iter()
+            .filter_map(|c| self.object(c, None, None, default))
+            .collect();
+        // Only what lies inside every clipping object is left.
+        let bounds = clip.iter().fold(bounds, |b, c| b.intersection(&c.bounds));
         let bounds = if o.inverse { Aabb::INFINITE } else { bounds };
         Some(Object {
             kind,
@@ -260,6 +267,7 @@ impl Ctx {
             inverse: o.inverse,
             bounds,
             transparent,
+            clip,
         })
     }
 }

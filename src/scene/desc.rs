@@ -198,6 +198,8 @@ pub struct ObjectDesc {
     pub no_shadow: bool,
     pub hollow: Option<bool>,
     pub inverse: bool,
+    /// `clipped_by { ... }`: only the surface inside all of these is kept.
+    pub clipped_by: Vec<ObjectDesc>,
 }
 
 impl ObjectDesc {
@@ -210,6 +212,7 @@ impl ObjectDesc {
             no_shadow: false,
             hollow: None,
             inverse: false,
+            clipped_by: Vec::new(),
         }
     }
 
@@ -217,6 +220,9 @@ impl ObjectDesc {
     pub fn apply_transform(&mut self, t: &Transform) {
         if let Some(tex) = &mut self.texture {
             tex.apply_transform(t);
+        }
+        for c in &mut self.clipped_by {
+            c.apply_transform(t);
         }
         match &mut self.shape {
             ShapeDesc::Csg { children, .. } => {
@@ -284,6 +290,13 @@ pub enum ShapeDesc {
         n: [DVec3; 3],
     },
     Mesh(Arc<MeshData>),
+    /// `quadric`, `cubic`, `quartic`, `poly`, `polynomial`: zero set of a polynomial.
+    Algebraic {
+        order: usize,
+        /// (powers of x, y, z; coefficient).
+        terms: Vec<([u8; 3], f64)>,
+        sturm: bool,
+    },
     Csg {
         op: CsgOp,
         children: Vec<ObjectDesc>,

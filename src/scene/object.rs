@@ -29,6 +29,8 @@ pub struct Object {
     /// Whether any colour of the texture has filter or transmit, so shadow rays must look at
     /// the surface colour instead of stopping at the first crossing.
     pub transparent: bool,
+    /// `clipped_by`: crossings outside any of these are dropped.
+    pub clip: Vec<Object>,
 }
 
 /// Per-thread buffers for intersection, so no ray allocates: shape crossings, and surface
@@ -90,6 +92,18 @@ impl Object {
         tmax: f64,
         s: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
+        if !self.clip.is_empty() {
+            // The nearest crossing may be clipped away: look at all of them.
+            let start = s.surface.len();
+            self.all_hits(ray, tmax, s);
+            let best = s.surface[start..]
+                .iter()
+                .filter(|h| h.t > crate::math::EPSILON)
+                .min_by(|a, b| a.t.total_cmp(&b.t))
+                .copied();
+            s.surface.truncate(start);
+            return best;
+        }
         match &self.kind {
             ObjKind::Shape(shape) => {
                 let r = self.local_ray(ray);
@@ -137,6 +151,23 @@ impl Object {
     /// `s.surface`. Crossings beyond `tmax` are dropped before the CSG inside tests, which
     /// are the expensive part.
     pub fn all_hits<'a>(&'a self, ray: &Ray, tmax: f64, s: &mut Scratch<'a>) {
+        let start = s.surface.len();
+        self.all_hits_unclipped(ray, tmax, s);
+        if !self.clip.is_empty() {
+            let mut k = start;
+            for j in start..s.surface.len() {
+                let h = s.surface[j];
+                let p = ray.at(h.t);
+                if self.clip.iter().all(|c| c.inside(p)) {
+                    s.surface[k] = h;
+                    k += 1;
+                }
+            }
+            s.surface.truncate(k);
+        }
+    }
+
+    fn all_hits_unclipped<'a>(&'a self, ray: &Ray, tmax: f64, s: &mut Scratch<'a>) {
         match &self.kind {
             ObjKind::Shape(shape) => {
                 let r = self.local_ray(ray);
@@ -203,6 +234,7 @@ impl Object {
                 }
             },
         };
+        let r = r && self.clip.iter().all(|c| c.inside(p));
         // A shape's own `inverse` is folded in here; CSG nodes likewise.
         r != self.inverse
     }

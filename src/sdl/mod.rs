@@ -1,6 +1,7 @@
 //! The POV-Ray scene description language: lexer, token stream and the one parser that
 //! executes directives as it reads.
 
+pub mod algebraic;
 pub mod array;
 pub mod atmosphere;
 pub mod builtins_math;

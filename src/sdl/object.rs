@@ -20,7 +20,6 @@ type ObjectFn = fn(&mut Parser, Span) -> PResult<ObjectDesc>;
 const UNSUPPORTED_OBJECTS: &[&str] = &[
     "bicubic_patch",
     "blob",
-    "cubic",
     "height_field",
     "isosurface",
     "julia_fractal",
@@ -28,12 +27,8 @@ const UNSUPPORTED_OBJECTS: &[&str] = &[
     "lemon",
     "ovus",
     "parametric",
-    "poly",
     "polygon",
-    "polynomial",
     "prism",
-    "quadric",
-    "quartic",
     "sor",
     "sphere_sweep",
     "superellipsoid",
@@ -54,6 +49,11 @@ impl Parser {
             "triangle" => Parser::triangle,
             "smooth_triangle" => Parser::smooth_triangle,
             "mesh" => Parser::mesh,
+            "quadric" => Parser::quadric,
+            "cubic" => |p, s| p.poly_fixed(3, s),
+            "quartic" => |p, s| p.poly_fixed(4, s),
+            "poly" => Parser::poly,
+            "polynomial" => Parser::polynomial,
             "union" => |p, s| p.csg(CsgOp::Union, s),
             "light_group" => Parser::light_group,
             "merge" => |p, s| p.csg(CsgOp::Merge, s),
@@ -87,7 +87,7 @@ impl Parser {
     }
 
     /// Parses modifiers up to and including the closing brace.
-    fn finish_object(&mut self, mut obj: ObjectDesc, open: Span) -> PResult<ObjectDesc> {
+    pub(super) fn finish_object(&mut self, mut obj: ObjectDesc, open: Span) -> PResult<ObjectDesc> {
         loop {
             let Some(t) = self.peek()? else {
                 return Err(self.error_at(open, "this '{' is never closed"));
@@ -166,7 +166,9 @@ impl Parser {
                 _ => self.warn(span, "'open' only applies to cylinders and cones; ignored"),
             },
             "sturm" => {
-                if let ShapeDesc::Torus { sturm, .. } = &mut obj.shape {
+                if let ShapeDesc::Torus { sturm, .. } | ShapeDesc::Algebraic { sturm, .. } =
+                    &mut obj.shape
+                {
                     *sturm = self.optional_bool()?;
                 }
             }
@@ -179,7 +181,33 @@ impl Parser {
                 }
             }
             "photons" | "radiosity" => self.skip_block()?,
-            "clipped_by" | "interior_texture" => {
+            "clipped_by" => {
+                let open = self.open_brace("clipped_by")?;
+                let mut clips = Vec::new();
+                loop {
+                    if let Some(o) = self.parse_object()? {
+                        clips.push(o);
+                        continue;
+                    }
+                    let t = self.next_tok()?;
+                    match &t.tok {
+                        Tok::Sym(Sym::RBrace) => break,
+                        // `clipped_by { bounded_by }`: clip by the bounding objects, which
+                        // lancer does not keep (it bounds objects itself).
+                        Tok::Ident(k) if &**k == "bounded_by" => {
+                            self.unsupported("clipped_by { bounded_by }", t.span)
+                        }
+                        _ => {
+                            return Err(
+                                self.unexpected(&t, "in clipped_by; expected objects or '}'")
+                            )
+                        }
+                    }
+                }
+                let _ = open;
+                obj.clipped_by.extend(clips);
+            }
+            "interior_texture" => {
                 self.unsupported(k, span);
                 self.skip_block()?;
             }

@@ -1,0 +1,213 @@
+//! Algebraic surfaces: POV-Ray's `quadric`, `cubic`, `quartic`, `poly` and `polynomial`, the
+//! points where a polynomial in x, y, z is zero (inside where it is negative).
+//!
+//! A ray substituted into the polynomial gives a polynomial in t, whose real roots are the
+//! crossings (found by `poly`'s isolation and polishing). The shapes are unbounded, as in
+//! POV-Ray; `clipped_by` gives them bounds.
+
+use crate::geom::poly::{roots_in, sturm_roots_in, MAX_DEGREE};
+use crate::geom::{Hit, Shape};
+use crate::math::{Aabb, DVec3, Ray, EPSILON};
+
+/// Highest order accepted (POV-Ray allows 35; the root finder handles this many).
+pub const MAX_ORDER: usize = MAX_DEGREE;
+
+/// Far limit of the root search for rays that never leave the surface's reach.
+const FAR: f64 = 1e7;
+
+#[derive(Clone, Debug)]
+pub struct Algebraic {
+    order: usize,
+    /// (powers of x, y, z; coefficient), zero coefficients left out.
+    terms: Vec<([u8; 3], f64)>,
+    sturm: bool,
+}
+
+/// The terms of an order-`order` polynomial in POV-Ray's coefficient order: powers of x
+/// falling, then of y, then of z, each from what the order leaves down to 0 (so a quartic's
+/// A1 is x⁴, A5 x²y², A10 x², A21 y⁴, A35 the constant; manual 3.4.5.3.5).
+pub fn pov_term_order(order: usize) -> Vec<[u8; 3]> {
+    let mut v = Vec::new();
+    for i in (0..=order).rev() {
+        for j in (0..=order - i).rev() {
+            for k in (0..=order - i - j).rev() {
+                v.push([i as u8, j as u8, k as u8]);
+            }
+        }
+    }
+    v
+}
+
+impl Algebraic {
+    pub fn new(order: usize, terms: &[([u8; 3], f64)], sturm: bool) -> Algebraic {
+        let terms: Vec<([u8; 3], f64)> = terms
+            .iter()
+            .filter(|(p, c)| {
+                *c != 0.0 && c.is_finite() && (p[0] + p[1] + p[2]) as usize <= MAX_ORDER
+            })
+            .copied()
+            .collect();
+        let order = terms
+            .iter()
+            .map(|(p, _)| (p[0] + p[1] + p[2]) as usize)
+            .max()
+            .unwrap_or(0)
+            .max(order.min(MAX_ORDER));
+        Algebraic {
+            order,
+            terms,
+            sturm,
+        }
+    }
+
+    pub fn value(&self, p: DVec3) -> f64 {
+        self.terms
+            .iter()
+            .map(|([i, j, k], c)| {
+                c * p.x.powi(*i as i32) * p.y.powi(*j as i32) * p.z.powi(*k as i32)
+            })
+            .sum()
+    }
+
+    /// The polynomial along `origin + t·dir` (ascending coefficients in t).
+    fn along(&self, origin: DVec3, dir: DVec3) -> [f64; MAX_ORDER + 1] {
+        let n = self.order;
+        // Powers of (o + t d) per axis as polynomials in t.
+        let mut pw = [[[0.0f64; MAX_ORDER + 1]; MAX_ORDER + 1]; 3];
+        for (axis, (o, d)) in [(origin.x, dir.x), (origin.y, dir.y), (origin.z, dir.z)]
+            .into_iter()
+            .enumerate()
+        {
+            pw[axis][0][0] = 1.0;
+            for e in 1..=n {
+                let (prev, cur) = pw[axis].split_at_mut(e);
+                let prev = &prev[e - 1];
+                let cur = &mut cur[0];
+                for k in 0..e {
+                    cur[k] += prev[k] * o;
+                    cur[k + 1] += prev[k] * d;
+                }
+            }
+        }
+        let mut out = [0.0; MAX_ORDER + 1];
+        let mut xy = [0.0; MAX_ORDER + 1];
+        for ([i, j, k], c) in &self.terms {
+            let (i, j, k) = (*i as usize, *j as usize, *k as usize);
+            xy[..=i + j].fill(0.0);
+            for a in 0..=i {
+                for b in 0..=j {
+                    xy[a + b] += pw[0][i][a] * pw[1][j][b];
+                }
+            }
+            for a in 0..=i + j {
+                if xy[a] == 0.0 {
+                    continue;
+                }
+                for b in 0..=k {
+                    out[a + b] += c * xy[a] * pw[2][k][b];
+                }
+            }
+        }
+        out
+    }
+}
+
+impl Shape for Algebraic {
+    fn bounds(&self) -> Aabb {
+        Aabb::INFINITE
+    }
+
+    fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
+        let len = ray.dir.length();
+        if !(len > 0.0 && len.is_finite()) || self.terms.is_empty() {
+            return;
+        }
+        let u = ray.dir / len;
+        let c = self.along(ray.origin, u);
+        let c = &c[..=self.order];
+        // Cauchy's bound on the roots keeps the search interval finite.
+        let lead = c.iter().rposition(|v| *v != 0.0).unwrap_or(0);
+        let hi = if lead == 0 {
+            return;
+        } else {
+            let m = c[..lead]
+                .iter()
+                .map(|v| (v / c[lead]).abs())
+                .fold(0.0, f64::max);
+            (1.0 + m).min(FAR)
+        };
+        let roots = if self.sturm {
+            sturm_roots_in(c, EPSILON * len, hi)
+        } else {
+            roots_in(c, EPSILON * len, hi)
+        };
+        out.extend(roots.iter().map(|t| Hit::new(t / len)));
+    }
+
+    fn inside(&self, p: DVec3) -> bool {
+        self.value(p) < 0.0
+    }
+
+    fn normal(&self, p: DVec3, _hit: &Hit) -> DVec3 {
+        let mut g = DVec3::ZERO;
+        for ([i, j, k], c) in &self.terms {
+            let (i, j, k) = (*i as i32, *j as i32, *k as i32);
+            let (x, y, z) = (p.x, p.y, p.z);
+            if i > 0 {
+                g.x += c * i as f64 * x.powi(i - 1) * y.powi(j) * z.powi(k);
+            }
+            if j > 0 {
+                g.y += c * j as f64 * x.powi(i) * y.powi(j - 1) * z.powi(k);
+            }
+            if k > 0 {
+                g.z += c * k as f64 * x.powi(i) * y.powi(j) * z.powi(k - 1);
+            }
+        }
+        g
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quartic_term_order_matches_the_manuals_torus() {
+        let order = pov_term_order(4);
+        assert_eq!(order.len(), 35);
+        assert_eq!(order[0], [4, 0, 0]);
+        assert_eq!(order[4], [2, 2, 0]);
+        assert_eq!(order[9], [2, 0, 0]);
+        assert_eq!(order[20], [0, 4, 0]);
+        assert_eq!(order[25], [0, 2, 0]);
+        assert_eq!(order[34], [0, 0, 0]);
+        assert_eq!(pov_term_order(2).len(), 10);
+        assert_eq!(pov_term_order(3).len(), 20);
+    }
+
+    #[test]
+    fn unit_sphere_as_a_quadric() {
+        let s = Algebraic::new(
+            2,
+            &[
+                ([2, 0, 0], 1.0),
+                ([0, 2, 0], 1.0),
+                ([0, 0, 2], 1.0),
+                ([0, 0, 0], -1.0),
+            ],
+            false,
+        );
+        let mut hits = Vec::new();
+        s.intersect_all(
+            &Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z * 2.0),
+            &mut hits,
+        );
+        let mut t: Vec<f64> = hits.iter().map(|h| h.t).collect();
+        t.sort_by(f64::total_cmp);
+        assert_eq!(t.len(), 2);
+        assert!((t[0] - 2.0).abs() < 1e-9 && (t[1] - 3.0).abs() < 1e-9);
+        assert!(s.inside(DVec3::ZERO) && !s.inside(DVec3::X * 2.0));
+        let n = s.normal(DVec3::X, &hits[0]);
+        assert!((n.normalize() - DVec3::X).length() < 1e-12);
+    }
+}
