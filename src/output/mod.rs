@@ -202,9 +202,20 @@ impl OutputSpec {
             .then_some(self.dither_method)
     }
 
-    /// POV-Ray's warning when `+UA` meets a type without alpha.
+    /// POV-Ray's warning when `+UA` meets a type without (official) alpha.
     pub fn alpha_warning(&self, alpha: bool) -> Option<String> {
-        (alpha && !self.file_type.has_alpha()).then(|| {
+        if !alpha {
+            return None;
+        }
+        if self.file_type == FileType::Bmp {
+            // POV-Ray warns here too, yet writes the alpha.
+            return Some(
+                "alpha in BMP files is not officially supported: written as POV-Ray writes it \
+                 (32-bit, straight alpha in the fourth byte), which many readers ignore"
+                    .into(),
+            );
+        }
+        (!self.file_type.has_alpha()).then(|| {
             format!(
                 "alpha channel output is not supported for {} files: written without alpha \
                  (the colour over black), as POV-Ray does",
@@ -342,6 +353,8 @@ mod tests {
         assert_eq!(s.effective_dither(), None);
         s.file_type = FileType::Bmp;
         assert_eq!(s.effective_dither(), Some(DitherMethod::FloydSteinberg));
+        assert!(s.alpha_warning(true).unwrap().contains("BMP"));
+        s.file_type = FileType::Tga;
         assert!(s.alpha_warning(true).is_none());
         s.file_type = FileType::Ppm;
         assert!(s.alpha_warning(true).is_some());
