@@ -285,24 +285,7 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
         s.jitter = 0.0;
     }
     if let Some(f) = &a.format {
-        let (t, bits) = match f.to_ascii_lowercase().as_str() {
-            "png" => (FileType::Png, 8),
-            "png16" => (FileType::Png, 16),
-            "ppm" => (FileType::Ppm, 8),
-            "ppm16" => (FileType::Ppm, 16),
-            "tga" => (FileType::Tga, 8),
-            "tga-rle" => (FileType::TgaRle, 8),
-            "bmp" => (FileType::Bmp, 8),
-            "jpeg" | "jpg" => (FileType::Jpeg, 8),
-            "hdr" => (FileType::Hdr, 8),
-            "exr" => (FileType::Exr, 8),
-            other => {
-                return Err(format!(
-                    "unknown --format '{other}' (png, png16, ppm, ppm16, tga, tga-rle, bmp, \
-                     jpeg, hdr or exr)"
-                ))
-            }
-        };
+        let (t, bits) = FileType::from_format_name(f)?;
         out.spec.file_type = t;
         out.spec.set_bits(bits);
         out.type_given = true;
@@ -334,7 +317,11 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
     s.window = partial.window(s.width, s.height)?;
     let mut spec = out.spec;
     if !out.type_given {
-        if let Some(o) = a.output.as_deref().filter(|o| o.extension().is_some()) {
+        if let Some(o) = a
+            .output
+            .as_deref()
+            .filter(|o| o.extension().is_some() && !o.is_dir())
+        {
             spec.file_type = FileType::from_path(o);
         }
     }

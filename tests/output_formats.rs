@@ -501,3 +501,14 @@ fn files_match_povray() {
         assert!(off * 100 <= 15 * mine.len(), "{m}: {off} samples differ");
     }
 }
+
+#[test]
+fn animation_frames_keep_every_extension() {
+    for t in ["png", "ppm", "tga", "bmp", "jpg", "hdr", "exr"] {
+        let out = Path::new("frames").join(format!("fly.{t}"));
+        assert_eq!(
+            lancer::anim::numbered(&out, 7, 3),
+            Path::new("frames").join(format!("fly007.{t}"))
+        );
+    }
+}

@@ -68,6 +68,28 @@ impl FileType {
         })
     }
 
+    /// lancer's `--format` names, with the bits they imply.
+    pub fn from_format_name(name: &str) -> Result<(FileType, u32), String> {
+        Ok(match name.to_ascii_lowercase().as_str() {
+            "png" => (FileType::Png, 8),
+            "png16" => (FileType::Png, 16),
+            "ppm" => (FileType::Ppm, 8),
+            "ppm16" => (FileType::Ppm, 16),
+            "tga" => (FileType::Tga, 8),
+            "tga-rle" => (FileType::TgaRle, 8),
+            "bmp" => (FileType::Bmp, 8),
+            "jpeg" | "jpg" => (FileType::Jpeg, 8),
+            "hdr" => (FileType::Hdr, 8),
+            "exr" => (FileType::Exr, 8),
+            other => {
+                return Err(format!(
+                    "unknown --format '{other}' (png, png16, ppm, ppm16, tga, tga-rle, bmp, \
+                     jpeg, hdr or exr)"
+                ))
+            }
+        })
+    }
+
     /// The type a file name asks for when no option names one.
     pub fn from_path(p: &Path) -> FileType {
         let ext = p
