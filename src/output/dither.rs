@@ -138,7 +138,7 @@ fn diffuse(
     // Errors received by the current and the next row.
     let mut this_row = vec![[0.0; 4]; width];
     let mut next_row = vec![[0.0; 4]; width];
-    for row in lin.chunks(width) {
+    for row in lin.chunks(width.max(1)) {
         let mut carry = [0.0; 4];
         for (x, l) in row.iter().enumerate() {
             let mut px = [0; 4];
