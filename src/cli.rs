@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser as ClapParser, Subcommand};
 
-use crate::output::Format;
+use crate::output::{DitherMethod, FileGamma, FileType, OutputSpec};
 use crate::render::RenderSettings;
 
 #[derive(ClapParser, Debug)]
@@ -112,7 +112,9 @@ pub struct ConformanceArgs {
 pub struct RenderArgs {
     /// The .pov scene file.
     pub scene: Option<PathBuf>,
-    /// Output file (.png or .exr); default: the scene name with .png, in the current directory.
+    /// Output file; default: the scene name with the file type's extension, in the current
+    /// directory. Without a file type option the extension picks it (.png .ppm .tga .bmp .jpg
+    /// .hdr .exr).
     #[arg(short = 'o', long)]
     pub output: Option<PathBuf>,
     #[arg(long)]
@@ -136,7 +138,8 @@ pub struct RenderArgs {
     /// Directory searched for include files and images (repeatable).
     #[arg(long = "library-path", value_name = "DIR")]
     pub library_path: Vec<PathBuf>,
-    /// png, png16 or exr (default: from the output name).
+    /// png, png16, ppm, ppm16, tga, tga-rle, bmp, jpeg, hdr or exr (default: from the output
+    /// name). POV-Ray's +F<type><bits> does the same.
     #[arg(long)]
     pub format: Option<String>,
     /// No progress bar or statistics.
@@ -144,7 +147,8 @@ pub struct RenderArgs {
     pub quiet: bool,
     #[command(flatten)]
     pub safety: SafetyArgs,
-    /// POV-Ray style options (+W640 +H480 -A +A0.3 +R3 -J +Oout.png +Iscene.pov +Ldir +FN16 +FE).
+    /// POV-Ray style options (+W640 +H480 -A +A0.3 +R3 -J +Oout.png +Iscene.pov +Ldir +FN16 +FE
+    /// +FT +THfs).
     #[arg(hide = true)]
     pub pov: Vec<String>,
 }
@@ -178,7 +182,8 @@ impl SafetyArgs {
 pub struct Job {
     pub scene: PathBuf,
     pub output: PathBuf,
-    pub format: Format,
+    /// File type, bits, file gamma, dithering, JPEG quality.
+    pub output_spec: OutputSpec,
     pub settings: RenderSettings,
     pub library_paths: Vec<PathBuf>,
     pub threads: Option<usize>,
@@ -262,12 +267,11 @@ pub fn split_args(args: Vec<String>) -> (Vec<String>, Vec<String>) {
 
 pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
     let mut s = RenderSettings::default();
-    let mut format = None;
+    let mut out = OutputOpts::default();
     let mut warnings = Vec::new();
     let mut anim = AnimOpts::default();
     let mut partial = PartialOpts::default();
     let mut declares = Vec::new();
-    let mut write_output = true;
     let mut version = None;
     let mut include_header = None;
     if let Some(w) = a.width {
@@ -289,12 +293,10 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
         s.jitter = 0.0;
     }
     if let Some(f) = &a.format {
-        format = Some(match f.as_str() {
-            "png" => Format::Png8,
-            "png16" => Format::Png16,
-            "exr" => Format::Exr,
-            other => return Err(format!("unknown --format '{other}' (png, png16 or exr)")),
-        });
+        let (t, bits) = FileType::from_format_name(f)?;
+        out.spec.file_type = t;
+        out.spec.set_bits(bits);
+        out.type_given = true;
     }
     for opt in pov {
         let upper = opt.to_ascii_uppercase();
@@ -308,8 +310,6 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
                 .parse()
                 .map_err(|_| format!("{opt}: expected Declare=Name=number"))?;
             declares.push((name.to_string(), v));
-        } else if upper == "+F" || upper == "-F" {
-            write_output = upper == "+F";
         } else if let Some(v) = upper[1..].strip_prefix("MV") {
             version = Some(
                 v.parse::<f64>()
@@ -319,7 +319,7 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
             // A file name keeps its own spelling.
             include_header = Some(opt[3..].to_string()).filter(|n| !n.is_empty());
         } else if !anim.apply(opt)? && !partial.apply(opt)? {
-            apply_pov_option(opt, &mut s, &mut a, &mut format, &mut warnings)?;
+            apply_pov_option(opt, &mut s, &mut a, &mut out, &mut warnings)?;
         }
     }
     let scene = a
@@ -331,22 +331,28 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
         return Err("width and height must be at least 1".into());
     }
     s.window = partial.window(s.width, s.height)?;
-    let format = format.unwrap_or_else(|| {
-        a.output
+    let mut spec = out.spec;
+    if !out.type_given {
+        if let Some(o) = a
+            .output
             .as_deref()
-            .map(Format::from_path)
-            .unwrap_or(Format::Png8)
-    });
+            .filter(|o| o.extension().is_some() && !o.is_dir())
+        {
+            spec.file_type = FileType::from_path(o);
+        }
+    }
+    warnings.extend(spec.alpha_warning(s.alpha));
+    let ext = spec.file_type.extension();
     let output = match a.output.clone() {
-        Some(o) if o.is_dir() => o.join(default_name(&scene, format)),
-        Some(o) if o.extension().is_none() => o.with_extension(format.extension()),
+        Some(o) if o.is_dir() => o.join(default_name(&scene, ext)),
+        Some(o) if o.extension().is_none() => o.with_extension(ext),
         Some(o) => o,
-        None => PathBuf::from(default_name(&scene, format)),
+        None => PathBuf::from(default_name(&scene, ext)),
     };
     Ok(Job {
         scene,
         output,
-        format,
+        output_spec: spec,
         settings: s,
         library_paths: a.library_path,
         threads: a.threads,
@@ -354,7 +360,7 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
         safety: a.safety.clone(),
         animation: anim.animation,
         declares,
-        write_output,
+        write_output: out.to_file,
         continue_trace: anim.continue_trace,
         version,
         include_header,
@@ -491,21 +497,94 @@ fn locate_scene(scene: PathBuf, library: &[PathBuf]) -> PathBuf {
     scene
 }
 
-fn default_name(scene: &std::path::Path, f: Format) -> String {
+fn default_name(scene: &std::path::Path, ext: &str) -> String {
     let stem = scene
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| "scene".into());
-    format!("{stem}.{}", f.extension())
+    format!("{stem}.{ext}")
+}
+
+/// The file output options as they are read, before the output name may pick the type.
+struct OutputOpts {
+    spec: OutputSpec,
+    /// A type option was given; otherwise the output name's extension picks the type.
+    type_given: bool,
+    /// `+F` / `-F` / `Output_To_File`.
+    to_file: bool,
+}
+
+impl Default for OutputOpts {
+    fn default() -> OutputOpts {
+        OutputOpts {
+            spec: OutputSpec::default(),
+            type_given: false,
+            to_file: true,
+        }
+    }
+}
+
+/// Takes `opt` if it is a file output option: `+F<type><bits>` / `-F<type><bits>` (`-F`
+/// turns file output off but keeps the type for later, as in POV-Ray; a type without bits
+/// keeps the bits already set), `+TH[method]` / `-TH[method]`, and the INI-only keys that
+/// ini.rs passes on as `+Key=value` (`File_Gamma`, `Bits_Per_Color`, `Dither_Method`,
+/// `Compression`).
+fn apply_output_option(opt: &str, out: &mut OutputOpts) -> Result<bool, String> {
+    let on = opt.starts_with('+');
+    let body = &opt[1..];
+    let upper = body.to_ascii_uppercase();
+    let spec = &mut out.spec;
+    let whole = |v: &str| -> Result<i64, String> {
+        v.trim()
+            .parse::<i64>()
+            .map_err(|_| format!("{body}: expected a whole number"))
+    };
+    if let Some((key, value)) = body.split_once('=') {
+        match key.to_ascii_lowercase().as_str() {
+            "file_gamma" => spec.file_gamma = FileGamma::parse(value)?,
+            "bits_per_color" => spec.set_bits(whole(value)?.clamp(0, 64) as u32),
+            "compression" => spec.set_compression(whole(value)?),
+            "dither_method" => {
+                spec.dither_method =
+                    DitherMethod::parse(value).map_err(|e| format!("{body}: {e}"))?
+            }
+            _ => return Ok(false),
+        }
+    } else if let Some(method) = upper.strip_prefix("TH") {
+        spec.dither = on;
+        if !method.is_empty() {
+            spec.dither_method = DitherMethod::parse(method).map_err(|e| format!("{opt}: {e}"))?;
+        }
+    } else if let Some(rest) = upper.strip_prefix('F') {
+        out.to_file = on;
+        let mut chars = rest.chars();
+        if let Some(letter) = chars.next() {
+            spec.file_type = FileType::from_letter(letter).map_err(|e| format!("{opt}: {e}"))?;
+            out.type_given = true;
+            let bits = chars.as_str();
+            if !bits.is_empty() {
+                let n: u32 = bits.parse().map_err(|_| {
+                    format!("{opt}: expected the bits per colour after the type, as in +FN16")
+                })?;
+                spec.set_bits(n);
+            }
+        }
+    } else {
+        return Ok(false);
+    }
+    Ok(true)
 }
 
 fn apply_pov_option(
     opt: &str,
     s: &mut RenderSettings,
     a: &mut RenderArgs,
-    format: &mut Option<Format>,
+    out: &mut OutputOpts,
     warnings: &mut Vec<String>,
 ) -> Result<(), String> {
+    if apply_output_option(opt, out)? {
+        return Ok(());
+    }
     let on = opt.starts_with('+');
     let body = &opt[1..];
     let upper = body.to_ascii_uppercase();
@@ -573,14 +652,6 @@ fn apply_pov_option(
         a.scene = Some(PathBuf::from(&body[1..]));
     } else if upper.starts_with('L') {
         a.library_path.push(PathBuf::from(&body[1..]));
-    } else if let Some(rest) = upper.strip_prefix("FN") {
-        *format = Some(if rest == "16" {
-            Format::Png16
-        } else {
-            Format::Png8
-        });
-    } else if upper.starts_with("FE") {
-        *format = Some(Format::Exr);
     } else if matches!(
         upper.as_str(),
         "D" | "V" | "P" | "X" | "GA" | "GS" | "GR" | "GD" | "GF" | "GW" | "GP"
@@ -653,7 +724,7 @@ mod tests {
         .unwrap();
         assert_eq!(j.settings.antialias, None);
         assert_eq!(j.threads, Some(2));
-        assert_eq!(j.format, Format::Exr);
+        assert_eq!(j.output_spec.file_type, FileType::Exr);
         assert_eq!(j.scene, PathBuf::from("scene.pov"));
     }
 
@@ -695,7 +766,85 @@ mod tests {
     fn input_option_and_16_bit() {
         let j = job(&["lancer", "+Iscene.pov", "+FN16", "-A"]).unwrap();
         assert_eq!(j.scene, PathBuf::from("scene.pov"));
-        assert_eq!(j.format, Format::Png16);
+        assert_eq!(j.output_spec.file_type, FileType::Png);
+        assert_eq!(j.output_spec.bits, 16);
         assert_eq!(j.output, PathBuf::from("scene.png"));
+    }
+
+    #[test]
+    fn file_output_options_as_povray_reads_them() {
+        let spec = |opts: &[&str]| {
+            let mut args = vec!["lancer", "a.pov"];
+            args.extend_from_slice(opts);
+            job(&args).unwrap()
+        };
+        // Bits stay when only the type changes; other types than PNG and PPM write 8.
+        let j = spec(&["+FN12", "+FP"]);
+        assert_eq!(j.output_spec.file_type, FileType::Ppm);
+        assert_eq!(j.output_spec.effective_bits(), 12);
+        assert_eq!(j.output, PathBuf::from("a.ppm"));
+        let j = spec(&["+FN12", "+FC"]);
+        assert_eq!(j.output_spec.effective_bits(), 8);
+        assert_eq!(j.output, PathBuf::from("a.tga"));
+        assert_eq!(spec(&["+FN3"]).output_spec.bits, 5);
+        assert_eq!(spec(&["+FN17"]).output_spec.bits, 16);
+        // -F<type> turns file output off and keeps the type; +F turns it on again.
+        let j = spec(&["-FJ"]);
+        assert!(!j.write_output);
+        assert_eq!(j.output, PathBuf::from("a.jpg"));
+        assert!(spec(&["-FB", "+F"]).write_output);
+        // The output name picks the type when no option does.
+        assert_eq!(spec(&["+Oout.bmp"]).output_spec.file_type, FileType::Bmp);
+        assert_eq!(spec(&["+Oout.hdr"]).output_spec.file_type, FileType::Hdr);
+        assert_eq!(
+            spec(&["+FT", "+Oout.png"]).output_spec.file_type,
+            FileType::Tga
+        );
+        // +TH alone keeps the method set before; -THxx sets it with dithering off.
+        let j = spec(&["-THb2", "+TH"]);
+        assert!(j.output_spec.dither);
+        assert_eq!(j.output_spec.dither_method, DitherMethod::Bayer2);
+        let j = spec(&["+TH"]);
+        assert_eq!(j.output_spec.dither_method, DitherMethod::FloydSteinberg);
+        assert!(!spec(&["+THd1", "-TH"]).output_spec.dither);
+        // INI-only keys, as ini.rs passes them on.
+        let j = spec(&[
+            "+File_Gamma=2.2",
+            "+Bits_Per_Color=10",
+            "+Dither_Method=b4",
+            "+Compression=1",
+        ]);
+        assert_eq!(j.output_spec.file_gamma, FileGamma::Power(2.2));
+        assert_eq!(j.output_spec.bits, 10);
+        assert_eq!(j.output_spec.dither_method, DitherMethod::Bayer4);
+        assert!(!j.output_spec.dither);
+        assert_eq!(j.output_spec.jpeg_quality, 85);
+        assert_eq!(
+            spec(&["--format", "tga-rle"]).output_spec.file_type,
+            FileType::TgaRle
+        );
+        // Alpha with a type that cannot hold it: a warning, as POV-Ray gives.
+        assert!(spec(&["+UA", "+FP"])
+            .warnings
+            .iter()
+            .any(|w| w.contains("alpha")));
+        assert!(spec(&["+UA", "+FN"]).warnings.is_empty());
+    }
+
+    #[test]
+    fn bad_file_output_options_name_themselves() {
+        let err = |opts: &[&str]| {
+            let mut args = vec!["lancer", "a.pov"];
+            args.extend_from_slice(opts);
+            job(&args).unwrap_err()
+        };
+        let e = err(&["+FS"]);
+        assert!(e.contains("+FS") && e.contains("+FN"), "{e}");
+        assert!(err(&["+FX"]).contains("+FX"));
+        assert!(err(&["+FNx"]).contains("+FNx"));
+        assert!(err(&["+THq"]).contains("+THq"));
+        assert!(err(&["+File_Gamma=-1"]).contains("File_Gamma"));
+        assert!(err(&["+Bits_Per_Color=many"]).contains("Bits_Per_Color"));
+        assert!(err(&["--format", "gif"]).contains("gif"));
     }
 }

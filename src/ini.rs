@@ -198,13 +198,11 @@ fn switch_for(key: &str, value: &str) -> Result<Option<String>, String> {
             }
             _ => Err(format!("{key}={value}: expected Declare=Name=number")),
         },
-        "bits_per_color" => match value {
-            "16" => Ok(Some("+FN16".into())),
-            "8" => Ok(Some("+FN8".into())),
-            _ => Err(format!(
-                "{key}={value}: lancer writes 8 or 16 bits per colour"
-            )),
-        },
+        "dither" => flag("TH"),
+        // No switch of their own: passed on as `+Key=value` for cli.rs to read.
+        "bits_per_color" | "file_gamma" | "dither_method" | "compression" => {
+            Ok(Some(format!("+{key}={value}")))
+        }
         // Display, pause, verbosity, statistics and text streams do not change the picture.
         "display"
         | "pause_when_done"
@@ -333,6 +331,27 @@ mod tests {
         )
         .unwrap_err()
         .contains("no section"));
+    }
+
+    #[test]
+    fn file_output_keys() {
+        let p = tmp(
+            "out.ini",
+            "Output_File_Type=T\nBits_Per_Color=12\nFile_Gamma=sRGB\nDither=on\nDither_Method=b2\nCompression=90\nDisplay_Gamma=2.2\n",
+        );
+        let (out, w) = expand_one(p.to_str().unwrap());
+        assert_eq!(
+            out,
+            vec![
+                "+FT",
+                "+Bits_Per_Color=12",
+                "+File_Gamma=sRGB",
+                "+TH",
+                "+Dither_Method=b2",
+                "+Compression=90"
+            ]
+        );
+        assert!(w.is_empty(), "{w:?}");
     }
 
     #[test]

@@ -132,7 +132,7 @@ fn render_frame(
         }
         return ExitCode::SUCCESS;
     }
-    if let Err(e) = lancer::output::write(&film, &f.output, job.format) {
+    if let Err(e) = lancer::output::write(&film, &f.output, &job.output_spec) {
         eprintln!("lancer: {e}");
         return ExitCode::from(1);
     }

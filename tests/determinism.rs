@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use lancer::output::{write, Format};
+use lancer::output::{write, FileType, OutputSpec};
 use lancer::render::{RenderSettings, Window};
 
 fn render_with_threads(n: usize, settings: &RenderSettings) -> Vec<u8> {
@@ -76,11 +76,11 @@ fn png16_and_exr_are_written_and_readable() {
     let dir = std::env::temp_dir().join(format!("lancer-out-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let p16 = dir.join("a.png");
-    write(&film, &p16, Format::Png16).unwrap();
+    write(&film, &p16, &OutputSpec::new(FileType::Png).with_bits(16)).unwrap();
     let img = image::open(&p16).unwrap();
     assert!(matches!(img, image::DynamicImage::ImageRgb16(_)));
     let exr = dir.join("a.exr");
-    write(&film, &exr, Format::Exr).unwrap();
+    write(&film, &exr, &OutputSpec::new(FileType::Exr)).unwrap();
     let img = image::open(&exr).unwrap().to_rgb32f();
     assert_eq!(img.dimensions(), (32, 24));
     // The 8-bit encoding of the EXR's linear value equals what the 8-bit PNG holds.
