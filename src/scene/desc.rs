@@ -189,6 +189,8 @@ pub enum ShapeDesc {
         n: [DVec3; 3],
     },
     Mesh(Arc<MeshData>),
+    /// Laid-out glyphs shared by every copy of a `#declare`d text.
+    Text(Arc<crate::geom::text::TextData>),
     Csg {
         op: CsgOp,
         children: Vec<ObjectDesc>,

@@ -4,7 +4,7 @@ use std::sync::Arc;
 
 use crate::geom::{
     boxes::BoxShape, cone::Cone, cylinder::Cylinder, disc::Disc, mesh::Mesh, plane::Plane,
-    sphere::Sphere, torus::Torus, triangle::Triangle, Shape,
+    sphere::Sphere, text::Text, torus::Torus, triangle::Triangle, Shape,
 };
 use crate::scene::desc::ShapeDesc;
 
@@ -41,6 +41,7 @@ pub fn make_shape(d: &ShapeDesc) -> Arc<dyn Shape> {
         ShapeDesc::Triangle { p } => Arc::new(Triangle::new(*p)),
         ShapeDesc::SmoothTriangle { p, n } => Arc::new(Triangle::smooth(*p, *n)),
         ShapeDesc::Mesh(data) => Arc::new(Mesh::new(data.clone())),
+        ShapeDesc::Text(data) => Arc::new(Text::new(data.clone())),
         ShapeDesc::Csg { .. } | ShapeDesc::Light(_) => {
             unreachable!("CSG and lights are built by scene::build")
         }

@@ -36,7 +36,6 @@ const UNSUPPORTED_OBJECTS: &[&str] = &[
     "sor",
     "sphere_sweep",
     "superellipsoid",
-    "text",
     "mesh2",
 ];
 
@@ -53,6 +52,7 @@ impl Parser {
             "triangle" => Parser::triangle,
             "smooth_triangle" => Parser::smooth_triangle,
             "mesh" => Parser::mesh,
+            "text" => Parser::text_object,
             "union" => |p, s| p.csg(CsgOp::Union, s),
             "light_group" => Parser::light_group,
             "merge" => |p, s| p.csg(CsgOp::Merge, s),
@@ -86,7 +86,7 @@ impl Parser {
     }
 
     /// Parses modifiers up to and including the closing brace.
-    fn finish_object(&mut self, mut obj: ObjectDesc, open: Span) -> PResult<ObjectDesc> {
+    pub(super) fn finish_object(&mut self, mut obj: ObjectDesc, open: Span) -> PResult<ObjectDesc> {
         loop {
             let Some(t) = self.peek()? else {
                 return Err(self.error_at(open, "this '{' is never closed"));
