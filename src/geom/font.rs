@@ -566,6 +566,19 @@ mod tests {
     }
 
     #[test]
+    fn fonts_and_glyphs_are_read_once() {
+        let Some(a) = font("timrom.ttf") else { return };
+        let b = font("timrom.ttf").unwrap();
+        assert!(Arc::ptr_eq(&a, &b), "the second load is the cached font");
+        let (x, y) = (
+            a.layout("HH", DVec2::ZERO, true),
+            b.layout("H", DVec2::ZERO, true),
+        );
+        assert!(Arc::ptr_eq(&x.glyphs[0].glyph, &x.glyphs[1].glyph));
+        assert!(Arc::ptr_eq(&x.glyphs[0].glyph, &y.glyphs[0].glyph));
+    }
+
+    #[test]
     fn bad_font_bytes_are_an_error() {
         assert!(Font::from_bytes(Path::new("x.ttf"), b"not a font".to_vec()).is_err());
         assert!(Font::from_bytes(Path::new("x.ttf"), Vec::new()).is_err());
