@@ -476,10 +476,12 @@ fn write_then_read_round_trip() {
     assert_eq!(r[7], 105.0);
 }
 
-/// POV-Ray 3.7.0 reads 1, 2 and 3 from "1, 2, 3\n4\n": a value followed by the end of the file
-/// is dropped, and a missing comma swallows the token after the value.
+/// POV-Ray 3.7.0 reads 1, 2 and 3 from "1, 2, 3\n4\n": a missing comma swallows the token
+/// after the value. A value followed by the end of the file is read and the file closed at
+/// once, so `#ifdef (G)` right after that #read is false (checked with povray's #debug:
+/// "1,2,3" read in a `#while (defined(G))` loop gives 1, 2, 3; "1,2,3," gives 1, 2, 3, 3).
 #[test]
-fn read_drops_the_value_at_end_of_file_as_povray_does() {
+fn read_at_end_of_file_closes_as_povray_does() {
     let dir = scratch("io_eof");
     std::fs::write(dir.join("in.txt"), "1, 2, 3\n4\n").unwrap();
     std::fs::write(dir.join("in2.txt"), "1 2 3\n").unwrap();
@@ -494,6 +496,23 @@ fn read_drops_the_value_at_end_of_file_as_povray_does() {
     )
     .unwrap();
     assert_eq!(radii(&s), vec![1.0, 2.0, 3.0, 11.0]);
+    std::fs::write(dir.join("in3.txt"), "1,2,3").unwrap();
+    std::fs::write(dir.join("in4.txt"), "1,2,3,").unwrap();
+    std::fs::write(dir.join("in5.txt"), "\"s\",5,<1,2,3> \n").unwrap();
+    let s = parse_scene_file(
+        &dir,
+        "#fopen G \"in3.txt\" read
+         #while (defined(G)) #read (G, X) sphere { 0, X } #end
+         #fopen G \"in4.txt\" read
+         #while (defined(G)) #read (G, X) sphere { 0, 10 + X } #end
+         #fopen G \"in5.txt\" read
+         #read (G, S, F, V)
+         sphere { V, F }",
+        ParseOptions::default(),
+    )
+    .unwrap();
+    assert_eq!(radii(&s), vec![1.0, 2.0, 3.0, 11.0, 12.0, 13.0, 13.0, 5.0]);
+    assert_eq!(centers(&s).last().copied(), Some([1.0, 2.0, 3.0]));
 }
 
 #[test]

@@ -62,10 +62,12 @@ pub mod bvh;
 pub mod cone;
 pub mod cylinder;
 pub mod disc;
+pub mod font;
 pub mod mesh;
 pub mod plane;
 pub mod poly;
 pub mod sphere;
+pub mod text;
 pub mod torus;
 pub mod triangle;
 

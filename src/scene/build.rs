@@ -7,6 +7,7 @@ use std::sync::Arc;
 
 use crate::color::Rgbft;
 use crate::geom::bvh::Bvh;
+use crate::geom::text::TextData;
 use crate::geom::Shape;
 use crate::math::{Aabb, DVec3, Ray, Transform};
 use crate::render::camera::Camera;
@@ -63,6 +64,7 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
     };
     let mut ctx = Ctx {
         meshes: HashMap::new(),
+        texts: HashMap::new(),
         images: HashMap::new(),
         lights: Vec::new(),
         gamma,
@@ -117,6 +119,8 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
 struct Ctx {
     /// One runtime mesh (with its BVH) per `#declare`d mesh, shared by every copy.
     meshes: HashMap<*const MeshData, Arc<dyn Shape>>,
+    /// Likewise one runtime text (with its glyph BVH) per `#declare`d text.
+    texts: HashMap<*const TextData, Arc<dyn Shape>>,
     /// Each image map converted to the working gamma once, with whether any pixel lets light
     /// through, however many objects use it. Keyed by the description's image.
     images: HashMap<*const ImageMap, (Arc<ImageMap>, bool)>,
@@ -226,6 +230,11 @@ impl Ctx {
                             .or_insert_with(|| make_shape(shape))
                             .clone()
                     }
+                    ShapeDesc::Text(data) => self
+                        .texts
+                        .entry(Arc::as_ptr(data))
+                        .or_insert_with(|| make_shape(shape))
+                        .clone(),
                     _ => make_shape(shape),
                 };
                 let b = s.bounds();

@@ -297,6 +297,8 @@ pub enum ShapeDesc {
         terms: Vec<([u8; 3], f64)>,
         sturm: bool,
     },
+    /// Laid-out glyphs shared by every copy of a `#declare`d text.
+    Text(Arc<crate::geom::text::TextData>),
     Csg {
         op: CsgOp,
         children: Vec<ObjectDesc>,

@@ -4,7 +4,7 @@ use std::sync::Arc;
 
 use crate::geom::{
     algebraic::Algebraic, boxes::BoxShape, cone::Cone, cylinder::Cylinder, disc::Disc, mesh::Mesh,
-    plane::Plane, sphere::Sphere, torus::Torus, triangle::Triangle, Shape,
+    plane::Plane, sphere::Sphere, text::Text, torus::Torus, triangle::Triangle, Shape,
 };
 use crate::scene::desc::ShapeDesc;
 
@@ -46,6 +46,7 @@ pub fn make_shape(d: &ShapeDesc) -> Arc<dyn Shape> {
             terms,
             sturm,
         } => Arc::new(Algebraic::new(*order, terms, *sturm)),
+        ShapeDesc::Text(data) => Arc::new(Text::new(data.clone())),
         ShapeDesc::Csg { .. } | ShapeDesc::Light(_) => {
             unreachable!("CSG and lights are built by scene::build")
         }

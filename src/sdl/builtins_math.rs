@@ -379,7 +379,7 @@ impl Parser {
     }
 
     /// The object an identifier argument holds, built as the renderer would build it; `None`,
-    /// with a warning, when nothing in it is geometry lancer renders yet (a `text` or `blob`):
+    /// with a warning, when nothing in it is geometry lancer renders yet (a `blob`):
     /// the caller then answers as for an empty object, so the scene still parses.
     fn runtime_object(
         &mut self,

@@ -120,7 +120,20 @@ impl Parser {
                     self.scene.global.ambient_light = c.rgb;
                 }
                 "charset" => {
-                    self.next_tok()?;
+                    let t = self.next_tok()?;
+                    match &t.tok {
+                        Tok::Ident(c) if &**c == "ascii" => self.utf8_strings = false,
+                        // sys is the system's character set, UTF-8 on the systems lancer
+                        // runs on.
+                        Tok::Ident(c) if &**c == "utf8" || &**c == "sys" => {
+                            self.utf8_strings = true
+                        }
+                        _ => {
+                            return Err(
+                                self.unexpected(&t, "after charset; expected ascii, utf8 or sys")
+                            )
+                        }
+                    }
                 }
                 "hf_gray_16" => {
                     // Only changes height-field output, which lancer does not write.

@@ -483,6 +483,20 @@ impl Parser {
         }
     }
 
+    /// One string term (a literal, identifier or call, no operators after it), as POV-Ray reads
+    /// the strings of a `text`, where a signed thickness may follow without a comma:
+    /// `text { ttf "timrom.ttf" "gj" -0.4, 0 }`.
+    pub(super) fn parse_string_term(&mut self) -> PResult<String> {
+        let span = self.next_span()?;
+        match self.nested(Self::parse_postfix)? {
+            Value::Str(s) => Ok(s.to_string()),
+            other => Err(self.error_at(
+                span,
+                format!("expected a string, found a {}", other.type_name()),
+            )),
+        }
+    }
+
     pub fn parse_string(&mut self) -> PResult<String> {
         let span = self.next_span()?;
         match self.parse_expr()? {

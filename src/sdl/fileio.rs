@@ -304,19 +304,25 @@ impl Parser {
             return Err(self.error_at(span, format!("'{id}' was opened for writing, not reading")));
         }
         for (name, elem) in targets {
-            let Some(v) = self.read_value(&id)? else {
+            let Some((v, last)) = self.read_value(&id)? else {
                 return self.close_file(&id, span);
             };
             match elem {
                 Some(p) => self.set_element(&p, Some(v))?,
                 None => self.assign_var(name, v, false)?,
             }
+            // The file's last item, with no comma after it, is read and the file closed at
+            // once (POV-Ray reads "1,2,3" as three values, and a loop on defined() stops).
+            if last {
+                return self.close_file(&id, span);
+            }
         }
         Ok(())
     }
 
-    /// One data item and the comma after it; `None` at the end of the file.
-    fn read_value(&mut self, id: &Rc<str>) -> PResult<Option<Value>> {
+    /// One data item and the comma after it, with whether it was the file's last; `None` at
+    /// the end of the file.
+    fn read_value(&mut self, id: &Rc<str>) -> PResult<Option<(Value, bool)>> {
         let Some(OpenFile::Read { tokens, pos }) = self.files.get_mut(id) else {
             return Ok(None);
         };
@@ -401,8 +407,7 @@ impl Parser {
         let after = next();
         match v {
             Err((s, m)) => Err(self.error_at(s, m)),
-            Ok(_) if after.is_none() => Ok(None),
-            Ok(v) => Ok(Some(v)),
+            Ok(v) => Ok(Some((v, after.is_none()))),
         }
     }
 }

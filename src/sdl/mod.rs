@@ -20,6 +20,7 @@ pub mod source;
 pub mod spline;
 pub mod strings;
 pub mod switch;
+pub mod text;
 pub mod texture;
 pub mod value;
 

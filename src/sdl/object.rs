@@ -32,7 +32,6 @@ const UNSUPPORTED_OBJECTS: &[&str] = &[
     "sor",
     "sphere_sweep",
     "superellipsoid",
-    "text",
     "mesh2",
 ];
 
@@ -54,6 +53,7 @@ impl Parser {
             "quartic" => |p, s| p.poly_fixed(4, s),
             "poly" => Parser::poly,
             "polynomial" => Parser::polynomial,
+            "text" => Parser::text_object,
             "union" => |p, s| p.csg(CsgOp::Union, s),
             "light_group" => Parser::light_group,
             "merge" => |p, s| p.csg(CsgOp::Merge, s),

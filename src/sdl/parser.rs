@@ -173,6 +173,9 @@ pub struct Parser {
     pub(super) loop_iterations: u64,
     /// Current depth of `nested` calls.
     nesting: u32,
+    /// `global_settings { charset utf8 }` (or `sys`) seen: text objects read strings as
+    /// Unicode; POV-Ray's default, ascii, has only codes 0 to 127.
+    pub(super) utf8_strings: bool,
 }
 
 /// A file's tokens, kept for as long as the file on disk is unchanged.
@@ -233,6 +236,7 @@ impl Parser {
             deprecated: Default::default(),
             loop_iterations: 0,
             nesting: 0,
+            utf8_strings: false,
         }
     }
 
@@ -390,7 +394,7 @@ impl Parser {
     /// Where relative include and image names are looked for, in order: the scene's
     /// directory, the directory of the file being read, the library paths, the system include
     /// directories, the current directory.
-    fn search_dirs(&self) -> Vec<PathBuf> {
+    pub(super) fn search_dirs(&self) -> Vec<PathBuf> {
         let mut dirs: Vec<PathBuf> = vec![self.scene_dir.clone()];
         // The directory of the file being read, so includes next to includes are found.
         if let Some(f) = self
