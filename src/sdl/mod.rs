@@ -14,6 +14,7 @@ pub mod fileio;
 pub mod function_parse;
 pub mod lexer;
 pub mod limits;
+pub mod mesh2;
 pub mod object;
 pub mod parser;
 pub mod source;

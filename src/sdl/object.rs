@@ -32,7 +32,6 @@ const UNSUPPORTED_OBJECTS: &[&str] = &[
     "sor",
     "sphere_sweep",
     "superellipsoid",
-    "mesh2",
 ];
 
 impl Parser {
@@ -48,6 +47,7 @@ impl Parser {
             "triangle" => Parser::triangle,
             "smooth_triangle" => Parser::smooth_triangle,
             "mesh" => Parser::mesh,
+            "mesh2" => Parser::mesh2,
             "quadric" => Parser::quadric,
             "cubic" => |p, s| p.poly_fixed(3, s),
             "quartic" => |p, s| p.poly_fixed(4, s),

@@ -1,0 +1,156 @@
+//! Reading `mesh2 { vertex_vectors normal_vectors uv_vectors texture_list face_indices
+//! normal_indices uv_indices }` into the same triangle data as `mesh`.
+
+use std::sync::Arc;
+
+use crate::math::DVec3;
+use crate::scene::desc::{MeshData, MeshTriangle, ObjectDesc, ShapeDesc};
+
+use super::lexer::{Sym, Tok};
+use super::parser::{PResult, Parser};
+use super::source::Span;
+
+impl Parser {
+    pub(super) fn mesh2(&mut self, _s: Span) -> PResult<ObjectDesc> {
+        let open = self.open_brace("mesh2")?;
+        let mut data = MeshData::default();
+        let mut faces: Vec<([u32; 3], Option<u32>)> = Vec::new();
+        let mut normal_idx: Option<Vec<[u32; 3]>> = None;
+        let mut face_span = open;
+        loop {
+            let Some(k) = self.peek_ident()? else { break };
+            let span = self.next_span()?;
+            match &*k {
+                "vertex_vectors" => {
+                    self.advance();
+                    data.vertices = self.vector_list("vertex_vectors")?;
+                }
+                "normal_vectors" => {
+                    self.advance();
+                    data.normals = self.vector_list("normal_vectors")?;
+                }
+                "uv_vectors" => {
+                    // Texture coordinates serve uv_mapping, which lancer does not do yet.
+                    self.advance();
+                    self.unsupported("uv_vectors", span);
+                    self.vector_list("uv_vectors")?;
+                }
+                "uv_indices" => {
+                    self.advance();
+                    self.index_list("uv_indices", false)?;
+                }
+                "texture_list" => {
+                    self.advance();
+                    self.open_brace("texture_list")?;
+                    let n = self.parse_float()?.max(0.0) as usize;
+                    for _ in 0..n {
+                        self.skip_optional_comma()?;
+                        if !self.eat_keyword("texture")? {
+                            return Err(self.error_at(span, "texture_list: expected a texture"));
+                        }
+                        data.textures.push(self.parse_texture_block()?);
+                    }
+                    self.skip_optional_comma()?;
+                    self.expect_sym(Sym::RBrace, "to close texture_list")?;
+                }
+                "face_indices" => {
+                    self.advance();
+                    face_span = span;
+                    faces = self.index_list("face_indices", true)?;
+                }
+                "normal_indices" => {
+                    self.advance();
+                    let list = self.index_list("normal_indices", false)?;
+                    normal_idx = Some(list.into_iter().map(|(v, _)| v).collect());
+                }
+                "inside_vector" => {
+                    self.advance();
+                    self.parse_vector()?;
+                }
+                _ => break,
+            }
+        }
+        let nv = data.vertices.len() as u32;
+        let nn = data.normals.len() as u32;
+        let nt = data.textures.len() as u32;
+        for (i, (v, tex)) in faces.iter().enumerate() {
+            if v.iter().any(|&k| k >= nv) {
+                return Err(self.error_at(
+                    face_span,
+                    format!("face {i} uses vertex {v:?} but the mesh2 has {nv} vertices"),
+                ));
+            }
+            if tex.is_some_and(|t| t >= nt) {
+                return Err(self.error_at(
+                    face_span,
+                    format!(
+                        "face {i} uses texture {} but texture_list has {nt}",
+                        tex.unwrap()
+                    ),
+                ));
+            }
+            // Normals follow normal_indices when given, else the face's own vertex indices.
+            let n = match &normal_idx {
+                Some(list) => list.get(i).copied(),
+                None if nn > 0 => Some(*v),
+                None => None,
+            }
+            .filter(|n| n.iter().all(|&k| k < nn));
+            data.triangles.push(MeshTriangle {
+                v: *v,
+                n,
+                texture: *tex,
+            });
+        }
+        self.finish_object(ObjectDesc::new(ShapeDesc::Mesh(Arc::new(data))), open)
+    }
+
+    /// `{ N, <v>, <v>, ... }`.
+    fn vector_list(&mut self, what: &str) -> PResult<Vec<DVec3>> {
+        self.open_brace(what)?;
+        let n = self.parse_float()?.max(0.0) as usize;
+        let mut v = Vec::with_capacity(n.min(1 << 20));
+        for _ in 0..n {
+            self.skip_optional_comma()?;
+            v.push(self.parse_vector()?);
+        }
+        self.skip_optional_comma()?;
+        self.expect_sym(Sym::RBrace, &format!("to close {what} (after {n} entries)"))?;
+        Ok(v)
+    }
+
+    /// `{ N, <a,b,c> [, t | , t1, t2, t3], ... }`: texture indices only in face_indices. Of
+    /// three per-vertex textures the first is used (POV-Ray blends them).
+    fn index_list(&mut self, what: &str, textures: bool) -> PResult<Vec<([u32; 3], Option<u32>)>> {
+        self.open_brace(what)?;
+        let n = self.parse_float()?.max(0.0) as usize;
+        let mut out = Vec::with_capacity(n.min(1 << 20));
+        for _ in 0..n {
+            self.skip_optional_comma()?;
+            let v = self.parse_vector()?;
+            let idx = |x: f64| x.max(0.0) as u32;
+            let mut tex = None;
+            if textures {
+                let mut given = Vec::new();
+                while given.len() < 3 {
+                    let comma = self.eat_sym(Sym::Comma)?;
+                    if comma && matches!(self.peek()?.map(|t| t.tok), Some(Tok::Sym(Sym::Lt))) {
+                        // The comma belonged to the next face.
+                        break;
+                    }
+                    if !(comma || given.is_empty() && self.starts_float()?)
+                        || !self.starts_float()?
+                    {
+                        break;
+                    }
+                    given.push(self.parse_float()?);
+                }
+                tex = given.first().map(|&t| idx(t));
+            }
+            out.push(([idx(v.x), idx(v.y), idx(v.z)], tex));
+        }
+        self.skip_optional_comma()?;
+        self.expect_sym(Sym::RBrace, &format!("to close {what} (after {n} entries)"))?;
+        Ok(out)
+    }
+}
