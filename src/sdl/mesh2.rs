@@ -17,8 +17,7 @@ impl Parser {
         let mut faces: Vec<([u32; 3], Option<u32>)> = Vec::new();
         let mut normal_idx: Option<Vec<[u32; 3]>> = None;
         let mut face_span = open;
-        loop {
-            let Some(k) = self.peek_ident()? else { break };
+        while let Some(k) = self.peek_ident()? {
             let span = self.next_span()?;
             match &*k {
                 "vertex_vectors" => {
