@@ -344,6 +344,16 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
     warnings.extend(spec.alpha_warning(s.alpha));
     let ext = spec.file_type.extension();
     let output = match a.output.clone() {
+        // `+O-`: standard output, for a still picture only (frames need names).
+        Some(o) if o.as_os_str() == "-" => {
+            if anim.animation.is_animation() {
+                return Err(
+                    "+O- writes one picture to standard output; an animation's frames need file names"
+                        .into(),
+                );
+            }
+            o
+        }
         Some(o) if o.is_dir() => o.join(default_name(&scene, ext)),
         Some(o) if o.extension().is_none() => o.with_extension(ext),
         Some(o) => o,

@@ -98,3 +98,20 @@ fn options_without_effect_are_accepted_quietly() {
     assert!(!err.contains("warning"), "{err}");
     assert!(Path::new(&dir.join("t.png")).is_file());
 }
+
+#[test]
+fn output_to_standard_output() {
+    let dir = scratch("stdout");
+    std::fs::write(
+        dir.join("t.pov"),
+        "global_settings { assumed_gamma 1 } sphere { 0, 1 pigment { rgb 1 } }\n",
+    )
+    .unwrap();
+    let (code, out, err) = common::lancer_in(&dir, &["t.pov", "+W4", "+H3", "+O-", "+FP"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.starts_with("P6\n"), "{out:?}");
+    assert!(!dir.join("-").exists() && !dir.join("-.ppm").exists());
+    let (code, _, err) = common::lancer_in(&dir, &["t.pov", "+W4", "+H3", "+O-", "+KFF3"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("+O-"), "{err}");
+}

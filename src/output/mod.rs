@@ -254,8 +254,33 @@ pub fn to_rgb8(film: &Film) -> Vec<u8> {
     plane.data.iter().map(|&v| v as u8).collect()
 }
 
+/// Writes the picture to `path`, or to standard output when `path` is `-` (POV-Ray's `+O-`,
+/// for piping into another program).
 pub fn write(film: &Film, path: &Path, spec: &OutputSpec) -> Result<(), String> {
+    if path == Path::new("-") {
+        return write_stdout(film, spec);
+    }
     write_atomic(path, |tmp| write_to(film, tmp, spec))
+}
+
+fn write_stdout(film: &Film, spec: &OutputSpec) -> Result<(), String> {
+    use std::io::Write;
+    // The encoders write files; the finished file is copied out whole, so a failed render
+    // sends nothing down the pipe.
+    let tmp = std::env::temp_dir().join(format!(
+        "lancer-stdout-{}.{}",
+        std::process::id(),
+        spec.file_type.extension()
+    ));
+    let r = write_to(film, &tmp, spec).and_then(|()| {
+        let bytes = std::fs::read(&tmp).map_err(|e| e.to_string())?;
+        let mut out = std::io::stdout().lock();
+        out.write_all(&bytes)
+            .and_then(|()| out.flush())
+            .map_err(|e| e.to_string())
+    });
+    let _ = std::fs::remove_file(&tmp);
+    r.map_err(|e| format!("cannot write the picture to standard output: {e}"))
 }
 
 /// Writes `path` under a temporary name beside it, then renames: whoever sees the name sees
