@@ -142,6 +142,20 @@ impl<'a> Tracer<'a> {
                     att *= c.transmitted();
                 }
             }
+            // Fading interiors dim the light over each stretch the ray spends inside them:
+            // from the last crossing (or the shaded point) to a crossing that leaves.
+            if att != DVec3::ZERO && ctx.surface[start..].iter().any(|h| h.obj.fade.is_some()) {
+                ctx.surface[start..].sort_by(|a, b| a.t.total_cmp(&b.t));
+                let mut last = 0.0;
+                for h in &ctx.surface[start..] {
+                    if let Some(int) = &h.obj.fade {
+                        if h.obj.normal(ray.at(h.t), h).dot(l) > 0.0 {
+                            att *= int.fade(h.t - last);
+                        }
+                    }
+                    last = h.t;
+                }
+            }
             ctx.surface.truncate(start);
             att == DVec3::ZERO
         });

@@ -9,6 +9,7 @@
 use crate::color::Rgbft;
 use crate::math::{DVec3, Ray};
 use crate::scene::build::{Light, Scene};
+use crate::scene::desc::Interior;
 use crate::scene::object::{Scratch, SurfaceHit};
 
 use super::pigment;
@@ -99,13 +100,13 @@ impl<'a> Tracer<'a> {
 
     /// A camera ray: colour in the scene's working space, and the background's share.
     pub fn trace_camera(&self, ray: &Ray, ctx: &mut TraceCtx<'a>) -> Seen {
-        self.trace_seen(ray, 1, 1.0, true, ctx)
+        self.trace_seen(ray, 1, 1.0, true, None, ctx)
     }
 
     /// Colour seen along a reflected ray. `depth` starts at 1 for primary rays; `weight` is
     /// this ray's share of the pixel, for adaptive depth control.
     pub fn trace(&self, ray: &Ray, depth: u32, weight: f64, ctx: &mut TraceCtx<'a>) -> DVec3 {
-        self.trace_seen(ray, depth, weight, false, ctx).rgb
+        self.trace_seen(ray, depth, weight, false, None, ctx).rgb
     }
 
     /// `straight`: the ray continues the camera ray through transparent surfaces only, so the
@@ -116,6 +117,7 @@ impl<'a> Tracer<'a> {
         depth: u32,
         weight: f64,
         straight: bool,
+        medium: Option<&'a Interior>,
         ctx: &mut TraceCtx<'a>,
     ) -> Seen {
         ctx.rays += 1;
@@ -123,7 +125,10 @@ impl<'a> Tracer<'a> {
             return Seen::default();
         }
         let (seen, t) = match self.scene.first_hit(ray, f64::INFINITY, ctx) {
-            Some(h) => (self.shade(ray, &h, depth, weight, straight, ctx), h.t),
+            Some(h) => (
+                self.shade(ray, &h, depth, weight, straight, medium, ctx),
+                h.t,
+            ),
             None => (self.background(ray.dir, straight), f64::INFINITY),
         };
         if self.scene.fogs.is_empty() {
@@ -167,10 +172,11 @@ impl<'a> Tracer<'a> {
     fn shade(
         &self,
         ray: &Ray,
-        h: &SurfaceHit,
+        h: &SurfaceHit<'a>,
         depth: u32,
         weight: f64,
         straight: bool,
+        medium: Option<&'a Interior>,
         ctx: &mut TraceCtx<'a>,
     ) -> Seen {
         let s = self.scene;
@@ -244,7 +250,10 @@ impl<'a> Tracer<'a> {
         if refl_amount != DVec3::ZERO {
             let w = weight * refl_amount.max_element();
             if w > s.adc_bailout {
-                let rc = self.trace(&Ray::new(p, mirror), depth + 1, w, ctx);
+                // A reflection stays on the side the ray came from, in its medium.
+                let rc = self
+                    .trace_seen(&Ray::new(p, mirror), depth + 1, w, false, medium, ctx)
+                    .rgb;
                 col += rc * refl_tinted;
             }
         }
@@ -266,8 +275,18 @@ impl<'a> Tracer<'a> {
                 };
                 // Total internal reflection sends the transmitted share back inside.
                 let tdir = tdir.unwrap_or(mirror);
-                let tc = self.trace_seen(&Ray::new(p, tdir), depth + 1, w, straight, ctx);
-                col += tc.rgb * tcol;
+                // Into the object's interior, or back out (into air: nested interiors are
+                // not tracked).
+                let inside = if entering { obj.fade.as_deref() } else { None };
+                let tc = self.trace_seen(&Ray::new(p, tdir), depth + 1, w, straight, inside, ctx);
+                // Light coming in through the far side of a fading interior is dimmed by the
+                // stretch the ray spent inside; the far surface's own light is not (measured:
+                // ambient on both faces of a fading slab).
+                let fade = match medium {
+                    Some(int) if !entering => int.fade(h.t * ray.dir.length()),
+                    _ => DVec3::ONE,
+                };
+                col += tc.rgb * tcol * fade;
                 clear = tc.clear * grey(through);
             }
         }

@@ -277,6 +277,7 @@ impl Ctx {
             bounds,
             transparent,
             clip,
+            fade: int.filter(|i| i.fades()).map(|i| Box::new(i.clone())),
         })
     }
 }

@@ -6,8 +6,8 @@ use std::sync::Arc;
 use crate::color::Rgbft;
 use crate::math::DVec3;
 use crate::scene::desc::{
-    ColorMap, Finish, ImageMap, Interior, Normal, NormalKind, Pattern, Pigment, PigmentKind,
-    Reflection, Texture,
+    ColorMap, Finish, ImageMap, Normal, NormalKind, Pattern, Pigment, PigmentKind, Reflection,
+    Texture,
 };
 
 use super::lexer::{Sym, Tok};
@@ -624,43 +624,6 @@ impl Parser {
                 _ => {}
             }
             self.advance();
-        }
-    }
-
-    pub(super) fn parse_interior_block(&mut self) -> PResult<Interior> {
-        self.open_brace("interior")?;
-        let mut int = Interior::default();
-        loop {
-            let t = self.next_tok()?;
-            let Tok::Ident(k) = &t.tok else {
-                if t.tok == Tok::Sym(Sym::RBrace) {
-                    return Ok(int);
-                }
-                return Err(self.unexpected(&t, "in interior"));
-            };
-            if let Some(Value::Interior(id)) = self.lookup(k) {
-                int = (**id).clone();
-                continue;
-            }
-            match &**k {
-                "ior" => int.ior = self.parse_float()?,
-                "caustics" => {
-                    self.parse_float()?;
-                }
-                "fade_distance" | "fade_power" | "dispersion" | "dispersion_samples" => {
-                    self.unsupported(k, t.span);
-                    self.parse_float()?;
-                }
-                "fade_color" | "fade_colour" => {
-                    self.unsupported(k, t.span);
-                    self.parse_color()?;
-                }
-                "media" => {
-                    self.unsupported(k, t.span);
-                    self.skip_block()?;
-                }
-                _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in interior"))),
-            }
         }
     }
 }

@@ -1,0 +1,45 @@
+//! `interior { ior fade_distance fade_power fade_color ... }`.
+
+use crate::scene::desc::Interior;
+
+use super::lexer::{Sym, Tok};
+use super::parser::{PResult, Parser};
+use super::value::Value;
+
+impl Parser {
+    pub(super) fn parse_interior_block(&mut self) -> PResult<Interior> {
+        self.open_brace("interior")?;
+        let mut int = Interior::default();
+        loop {
+            let t = self.next_tok()?;
+            let Tok::Ident(k) = &t.tok else {
+                if t.tok == Tok::Sym(Sym::RBrace) {
+                    return Ok(int);
+                }
+                return Err(self.unexpected(&t, "in interior"));
+            };
+            if let Some(Value::Interior(id)) = self.lookup(k) {
+                int = (**id).clone();
+                continue;
+            }
+            match &**k {
+                "ior" => int.ior = self.parse_float()?,
+                "caustics" => {
+                    self.parse_float()?;
+                }
+                "fade_distance" => int.fade_distance = self.parse_float()?,
+                "fade_power" => int.fade_power = self.parse_float()?,
+                "fade_color" | "fade_colour" => int.fade_color = self.parse_color()?.rgb,
+                "dispersion" | "dispersion_samples" => {
+                    self.unsupported(k, t.span);
+                    self.parse_float()?;
+                }
+                "media" => {
+                    self.unsupported(k, t.span);
+                    self.skip_block()?;
+                }
+                _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in interior"))),
+            }
+        }
+    }
+}
