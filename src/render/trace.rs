@@ -58,6 +58,37 @@ impl Default for Quality {
     }
 }
 
+/// Where a ray is in the tree of rays from the camera.
+#[derive(Clone, Copy)]
+pub struct Path<'a> {
+    /// 1 for camera rays.
+    depth: u32,
+    /// The ray's share of the pixel, for adaptive depth control.
+    weight: f64,
+    /// The camera ray continued through transparent surfaces only (see `trace_seen`).
+    straight: bool,
+    /// The fading interior the ray travels in, if any.
+    medium: Option<&'a Interior>,
+}
+
+impl<'a> Path<'a> {
+    const CAMERA: Path<'static> = Path {
+        depth: 1,
+        weight: 1.0,
+        straight: true,
+        medium: None,
+    };
+
+    fn next(self, weight: f64, straight: bool, medium: Option<&'a Interior>) -> Path<'a> {
+        Path {
+            depth: self.depth + 1,
+            weight,
+            straight,
+            medium,
+        }
+    }
+}
+
 /// What a ray brings back: colour, and with `+UA` how much of the background shows through
 /// along it (1 where it reaches the background unobstructed).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -100,36 +131,31 @@ impl<'a> Tracer<'a> {
 
     /// A camera ray: colour in the scene's working space, and the background's share.
     pub fn trace_camera(&self, ray: &Ray, ctx: &mut TraceCtx<'a>) -> Seen {
-        self.trace_seen(ray, 1, 1.0, true, None, ctx)
+        self.trace_seen(ray, Path::CAMERA, ctx)
     }
 
     /// Colour seen along a reflected ray. `depth` starts at 1 for primary rays; `weight` is
     /// this ray's share of the pixel, for adaptive depth control.
     pub fn trace(&self, ray: &Ray, depth: u32, weight: f64, ctx: &mut TraceCtx<'a>) -> DVec3 {
-        self.trace_seen(ray, depth, weight, false, None, ctx).rgb
+        let path = Path {
+            depth,
+            weight,
+            straight: false,
+            medium: None,
+        };
+        self.trace_seen(ray, path, ctx).rgb
     }
 
-    /// `straight`: the ray continues the camera ray through transparent surfaces only, so the
+    /// `path.straight`: the ray continues the camera ray through transparent surfaces only, so the
     /// background it reaches counts towards the pixel's transparency.
-    fn trace_seen(
-        &self,
-        ray: &Ray,
-        depth: u32,
-        weight: f64,
-        straight: bool,
-        medium: Option<&'a Interior>,
-        ctx: &mut TraceCtx<'a>,
-    ) -> Seen {
+    fn trace_seen(&self, ray: &Ray, path: Path<'a>, ctx: &mut TraceCtx<'a>) -> Seen {
         ctx.rays += 1;
-        if depth > self.scene.max_trace_level {
+        if path.depth > self.scene.max_trace_level {
             return Seen::default();
         }
         let (seen, t) = match self.scene.first_hit(ray, f64::INFINITY, ctx) {
-            Some(h) => (
-                self.shade(ray, &h, depth, weight, straight, medium, ctx),
-                h.t,
-            ),
-            None => (self.background(ray.dir, straight), f64::INFINITY),
+            Some(h) => (self.shade(ray, &h, path, ctx), h.t),
+            None => (self.background(ray.dir, path.straight), f64::INFINITY),
         };
         if self.scene.fogs.is_empty() {
             seen
@@ -169,16 +195,7 @@ impl<'a> Tracer<'a> {
         seen
     }
 
-    fn shade(
-        &self,
-        ray: &Ray,
-        h: &SurfaceHit<'a>,
-        depth: u32,
-        weight: f64,
-        straight: bool,
-        medium: Option<&'a Interior>,
-        ctx: &mut TraceCtx<'a>,
-    ) -> Seen {
+    fn shade(&self, ray: &Ray, h: &SurfaceHit<'a>, path: Path<'a>, ctx: &mut TraceCtx<'a>) -> Seen {
         let s = self.scene;
         let q = self.quality;
         let obj = h.obj;
@@ -248,11 +265,11 @@ impl<'a> Tracer<'a> {
             last = c;
         }
         if refl_amount != DVec3::ZERO {
-            let w = weight * refl_amount.max_element();
+            let w = path.weight * refl_amount.max_element();
             if w > s.adc_bailout {
                 // A reflection stays on the side the ray came from, in its medium.
                 let rc = self
-                    .trace_seen(&Ray::new(p, mirror), depth + 1, w, false, medium, ctx)
+                    .trace_seen(&Ray::new(p, mirror), path.next(w, false, path.medium), ctx)
                     .rgb;
                 col += rc * refl_tinted;
             }
@@ -264,7 +281,7 @@ impl<'a> Tracer<'a> {
             if conserve {
                 tcol *= DVec3::ONE - refl_amount;
             }
-            let w = weight * tcol.max_element();
+            let w = path.weight * tcol.max_element();
             if w > s.adc_bailout {
                 let tdir = if n1 == n2 {
                     Some(dir)
@@ -278,11 +295,12 @@ impl<'a> Tracer<'a> {
                 // Into the object's interior, or back out (into air: nested interiors are
                 // not tracked).
                 let inside = if entering { obj.fade.as_deref() } else { None };
-                let tc = self.trace_seen(&Ray::new(p, tdir), depth + 1, w, straight, inside, ctx);
+                let tc =
+                    self.trace_seen(&Ray::new(p, tdir), path.next(w, path.straight, inside), ctx);
                 // Light coming in through the far side of a fading interior is dimmed by the
                 // stretch the ray spent inside; the far surface's own light is not (measured:
                 // ambient on both faces of a fading slab).
-                let fade = match medium {
+                let fade = match path.medium {
                     Some(int) if !entering => int.fade(h.t * ray.dir.length()),
                     _ => DVec3::ONE,
                 };
