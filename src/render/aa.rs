@@ -131,7 +131,7 @@ pub fn method1(
                         let jy = jitter_hash(x as u32, y as u32, 2 * k + 1) * s.jitter;
                         let sx = x as f64 + (i as f64 + 0.5 + jx) / n as f64;
                         let sy = y as f64 + (j as f64 + 0.5 + jy) / n as f64;
-                        let t = tracer.trace_camera(&cam.ray(sx, sy), ctx);
+                        let t = tracer.trace_camera(cam.ray(sx, sy), ctx);
                         sum.rgb += t.rgb;
                         sum.clear += t.clear;
                     }
@@ -199,7 +199,7 @@ pub fn method2(
             let mut traced = 0;
             for (i, c) in row.iter_mut().enumerate() {
                 if corner_needed(i, j) {
-                    *c = tracer.trace_camera(&cam.ray(i as f64, j as f64), ctx);
+                    *c = tracer.trace_camera(cam.ray(i as f64, j as f64), ctx);
                     traced += 1;
                 }
             }
@@ -349,7 +349,7 @@ impl Pixel<'_, '_> {
         let sy = self.y as f64 + gj as f64 / n + jy;
         let seen = self
             .tracer
-            .trace_camera(&self.tracer.scene.camera.ray(sx, sy), self.ctx);
+            .trace_camera(self.tracer.scene.camera.ray(sx, sy), self.ctx);
         self.traced += 1;
         let s = self.measure.sample(seen);
         self.cache.stamps[k] = self.cache.stamp;
@@ -412,7 +412,7 @@ mod tests {
 
     fn trace(scene: &Scene, sx: f64, sy: f64) -> Seen {
         let tracer = Tracer::new(scene, false, Quality::level(9));
-        tracer.trace_camera(&scene.camera.ray(sx, sy), &mut TraceCtx::default())
+        tracer.trace_camera(scene.camera.ray(sx, sy), &mut TraceCtx::default())
     }
 
     fn close(a: Seen, b: Seen) -> bool {

@@ -1,8 +1,11 @@
-//! The perspective and orthographic cameras: POV-Ray's camera items resolved in its fixed order (angle, then
-//! look_at with sky, then transforms) and primary rays through pixel positions.
+//! POV-Ray's cameras: the items resolved in its fixed order (angle, then look_at with sky,
+//! then transforms) and primary rays through pixel positions for each projection
+//! (perspective, orthographic, fisheye, ultra wide angle, panoramic, spherical, cylinder 1–4).
+
+use std::f64::consts::PI;
 
 use crate::math::{DVec3, Ray};
-use crate::scene::desc::CameraDesc;
+use crate::scene::desc::{CameraDesc, Projection};
 
 #[derive(Clone, Debug)]
 pub struct Camera {
@@ -12,6 +15,10 @@ pub struct Camera {
     pub up: DVec3,
     /// Parallel rays from points spread over right × up around the location.
     orthographic: bool,
+    projection: Projection,
+    /// Horizontal and vertical viewing angles (radians) of the angular projections.
+    h_angle: f64,
+    v_angle: f64,
     width: f64,
     height: f64,
 }
@@ -21,7 +28,17 @@ impl Camera {
         let mut dir = d.direction;
         let mut right = d.right;
         let mut up = d.up;
-        if let Some(angle) = d.angle {
+        // The angular projections take the angle as it is (when none is given, 360° for the
+        // spherical camera and 90° for the others, as povray does); the perspective one turns
+        // it into the direction's length.
+        let default = if d.projection == Projection::Spherical {
+            360.0
+        } else {
+            90.0
+        };
+        let h_angle = d.angle.unwrap_or(default).to_radians();
+        let v_angle = d.v_angle.map(f64::to_radians).unwrap_or(h_angle * 0.5);
+        if let (Some(angle), Projection::Perspective) = (d.angle, d.projection) {
             let a = angle.clamp(1e-6, 179.999).to_radians();
             dir = dir.normalize_or(DVec3::Z) * (0.5 * right.length() / (a * 0.5).tan());
         }
@@ -59,6 +76,9 @@ impl Camera {
         let t = &d.transform;
         Camera {
             orthographic: d.orthographic,
+            projection: d.projection,
+            h_angle,
+            v_angle,
             location: t.point(d.location),
             direction: t.vector(dir),
             right: t.vector(right),
@@ -69,20 +89,65 @@ impl Camera {
     }
 
     /// Ray through image position (px, py) in pixels from the top-left corner; pixel centres
-    /// are at +0.5.
-    pub fn ray(&self, px: f64, py: f64) -> Ray {
+    /// are at +0.5. None where the projection shows nothing (outside a fisheye's circle).
+    pub fn ray(&self, px: f64, py: f64) -> Option<Ray> {
         let dx = px / self.width - 0.5;
         let dy = 0.5 - py / self.height;
         if self.orthographic {
-            return Ray::new(
+            return Some(Ray::new(
                 self.location + self.right * dx + self.up * dy,
                 self.direction,
-            );
+            ));
         }
-        Ray::new(
-            self.location,
-            self.direction + self.right * dx + self.up * dy,
-        )
+        let (d, r, u) = (
+            self.direction.normalize_or(DVec3::Z),
+            self.right.normalize_or(DVec3::X),
+            self.up.normalize_or(DVec3::Y),
+        );
+        let dir = match self.projection {
+            Projection::Perspective => self.direction + self.right * dx + self.up * dy,
+            Projection::Fisheye | Projection::Omnimax => {
+                // A circle filling the height; the right/up lengths keep it round.
+                let x = 2.0 * dx * self.right.length() / self.up.length().max(1e-12);
+                let y = 2.0 * dy;
+                let rad = (x * x + y * y).sqrt();
+                if rad > 1.0 {
+                    return None;
+                }
+                let angle = if self.projection == Projection::Omnimax {
+                    PI
+                } else {
+                    self.h_angle
+                };
+                let theta = rad * angle * 0.5;
+                let phi = y.atan2(x);
+                d * theta.cos() + (r * phi.cos() + u * phi.sin()) * theta.sin()
+            }
+            Projection::UltraWideAngle => {
+                let v = self.h_angle * self.up.length() / self.right.length().max(1e-12);
+                let (xa, ya) = (dx * self.h_angle, dy * v);
+                r * xa.sin() + u * ya.sin() + d * (xa.cos() * ya.cos())
+            }
+            Projection::Panoramic => {
+                // The vectors' own lengths shape the view (manual 3.4.2.2.7).
+                let (xa, ya) = (dx * PI, dy * PI);
+                (self.direction * xa.cos() + self.right * xa.sin()) * ya.cos() + self.up * ya.sin()
+            }
+            Projection::Spherical => {
+                let (xa, ya) = (dx * self.h_angle, dy * self.v_angle);
+                (d * xa.cos() + r * xa.sin()) * ya.cos() + u * ya.sin()
+            }
+            Projection::Cylinder(kind) => {
+                let (xa, ya) = (dx * self.h_angle, dy * self.h_angle);
+                return Some(match kind {
+                    1 => Ray::new(self.location, d * xa.cos() + r * xa.sin() + self.up * dy),
+                    2 => Ray::new(self.location, d * ya.cos() + u * ya.sin() + self.right * dx),
+                    3 => Ray::new(self.location + self.up * dy, d * xa.cos() + r * xa.sin()),
+                    _ => Ray::new(self.location + self.right * dx, d * ya.cos() + u * ya.sin()),
+                });
+            }
+        };
+        Some(Ray::new(self.location, dir))
     }
 }
 
@@ -93,7 +158,7 @@ mod tests {
     #[test]
     fn default_camera_looks_down_z() {
         let c = Camera::new(&CameraDesc::default(), 4, 3);
-        let r = c.ray(2.0, 1.5);
+        let r = c.ray(2.0, 1.5).unwrap();
         assert!((r.dir - DVec3::Z).length() < 1e-12);
     }
 

@@ -173,7 +173,7 @@ fn first_pass(tracer: &Tracer, s: &RenderSettings, progress: &(dyn Fn(u64) + Syn
                     continue;
                 }
                 let ray = tracer.scene.camera.ray(x as f64 + 0.5, y as f64 + 0.5);
-                *px = tracer.trace_camera(&ray, ctx);
+                *px = tracer.trace_camera(ray, ctx);
                 traced += 1;
             }
             camera_rays.fetch_add(traced, Ordering::Relaxed);

@@ -129,9 +129,13 @@ impl<'a> Tracer<'a> {
         }
     }
 
-    /// A camera ray: colour in the scene's working space, and the background's share.
-    pub fn trace_camera(&self, ray: &Ray, ctx: &mut TraceCtx<'a>) -> Seen {
-        self.trace_seen(ray, Path::CAMERA, ctx)
+    /// A camera ray: colour in the scene's working space, and the background's share. No ray
+    /// (outside a fisheye's circle) is black.
+    pub fn trace_camera(&self, ray: Option<Ray>, ctx: &mut TraceCtx<'a>) -> Seen {
+        match ray {
+            Some(ray) => self.trace_seen(&ray, Path::CAMERA, ctx),
+            None => Seen::default(),
+        }
     }
 
     /// Colour seen along a reflected ray. `depth` starts at 1 for primary rays; `weight` is

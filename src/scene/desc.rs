@@ -86,6 +86,10 @@ pub struct CameraDesc {
     /// Transforms written inside the camera block, applied after everything else.
     pub transform: Transform,
     pub orthographic: bool,
+    /// Projections other than perspective and orthographic.
+    pub projection: Projection,
+    /// `angle H, V`: the vertical angle of a spherical camera.
+    pub v_angle: Option<f64>,
     /// `right` or `up` written in the block: an orthographic camera then takes its view size
     /// from them, otherwise from the perspective view it replaces.
     pub sized: bool,
@@ -105,10 +109,25 @@ impl Default for CameraDesc {
             angle: None,
             transform: Transform::IDENTITY,
             orthographic: false,
+            projection: Projection::Perspective,
+            v_angle: None,
             sized: false,
             angle_given: false,
         }
     }
+}
+
+/// POV-Ray's camera projections (orthographic is a flag of its own, `CameraDesc::orthographic`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Projection {
+    Perspective,
+    Fisheye,
+    UltraWideAngle,
+    Omnimax,
+    Panoramic,
+    Spherical,
+    /// `cylinder 1..4`.
+    Cylinder(u8),
 }
 
 #[derive(Clone, Debug)]

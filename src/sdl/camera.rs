@@ -2,7 +2,7 @@
 //! reads a whole scene.
 
 use crate::color::Rgbft;
-use crate::scene::desc::{CameraDesc, Pigment};
+use crate::scene::desc::{CameraDesc, Pigment, Projection};
 
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
@@ -186,16 +186,34 @@ impl Parser {
                 continue;
             }
             match &**k {
-                "perspective" => cam.orthographic = false,
-                "orthographic" => cam.orthographic = true,
-                "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "spherical"
-                | "cylinder" | "mesh_camera" => {
-                    self.unsupported(&format!("{k} camera (rendered as perspective)"), t.span);
-                    if &**k == "cylinder" {
-                        self.parse_float()?;
-                    } else if &**k == "mesh_camera" {
-                        self.skip_block()?;
-                    }
+                "perspective" | "orthographic" | "fisheye" | "ultra_wide_angle" | "omnimax"
+                | "panoramic" | "spherical" | "cylinder" => {
+                    cam.orthographic = &**k == "orthographic";
+                    cam.projection = match &**k {
+                        "fisheye" => Projection::Fisheye,
+                        "ultra_wide_angle" => Projection::UltraWideAngle,
+                        "omnimax" => {
+                            self.unsupported("omnimax camera (rendered as a 180° fisheye)", t.span);
+                            Projection::Omnimax
+                        }
+                        "panoramic" => Projection::Panoramic,
+                        "spherical" => Projection::Spherical,
+                        "cylinder" => {
+                            let n = self.parse_float()?;
+                            if !(1.0..=4.0).contains(&n) {
+                                return Err(self.error_at(
+                                    t.span,
+                                    format!("the cylinder camera type must be 1 to 4, not {n}"),
+                                ));
+                            }
+                            Projection::Cylinder(n as u8)
+                        }
+                        _ => Projection::Perspective,
+                    };
+                }
+                "mesh_camera" => {
+                    self.unsupported("mesh_camera (rendered as perspective)", t.span);
+                    self.skip_block()?;
                 }
                 "location" => cam.location = self.parse_vector()?,
                 "look_at" => cam.look_at = Some(self.parse_vector()?),
@@ -218,8 +236,15 @@ impl Parser {
                     cam.angle = Some(self.parse_float()?);
                     let comma = self.eat_sym(Sym::Comma)?;
                     if comma || self.starts_number()? {
-                        self.unsupported("angle (vertical camera angle)", t.span);
-                        self.parse_float()?;
+                        let v = self.parse_float()?;
+                        if cam.projection == Projection::Spherical {
+                            cam.v_angle = Some(v);
+                        } else {
+                            self.unsupported(
+                                "angle (vertical angle, spherical cameras only)",
+                                t.span,
+                            );
+                        }
                     }
                 }
                 "aperture" | "blur_samples" | "focal_point" | "confidence" | "variance" => {

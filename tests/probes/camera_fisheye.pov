@@ -1,0 +1,9 @@
+// Fisheye camera, 180 degrees: a circle filling the height, black outside.
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { fisheye location <0,0.5,0> look_at <0,0.5,1> angle 180 }
+light_source { <3,8,-4> rgb 1 }
+background { rgb <0.2,0.3,0.6> }
+plane { y, -1 pigment { checker rgb 1 rgb 0.4 } }
+#for (i,0,11) sphere { <4*sin(i*pi/6), 0, 4*cos(i*pi/6)>, 0.7 pigment { rgb <mod(i,3)/2, mod(i,4)/3, 1-mod(i,5)/4> } } #end
+sphere { <0,4,2>, 1 pigment { rgb <1,1,0> } }
