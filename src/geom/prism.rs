@@ -463,6 +463,83 @@ mod tests {
         assert!((n - want).length() < 1e-12, "{n}");
     }
 
+    /// Random rays against the crossings found by walking the ray with the inside test.
+    #[test]
+    fn random_rays_match_the_inside_test() {
+        use crate::geom::test_rng::Lcg;
+        let quad: Vec<P2> = vec![
+            [1.0, -1.0],
+            [0.0, 0.0],
+            [6.0, 0.0],
+            [6.0, 8.0],
+            [0.0, 8.0],
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [1.0, 1.0],
+            [5.0, 1.0],
+            [5.0, 7.0],
+            [1.0, 7.0],
+            [1.0, 1.0],
+        ];
+        let bez: Vec<P2> = vec![
+            [0.0, 0.0],
+            [4.0, -2.0],
+            [7.0, 3.0],
+            [6.0, 6.0],
+            [6.0, 6.0],
+            [3.0, 9.0],
+            [-2.0, 4.0],
+            [0.0, 0.0],
+        ];
+        let mut rng = Lcg(11);
+        for (kind, pts, conic) in [
+            (SplineKind::Quadratic, &quad, false),
+            (SplineKind::Bezier, &bez, false),
+            (SplineKind::Bezier, &bez, true),
+        ] {
+            let pieces = outline(kind, pts).unwrap().pieces;
+            let pr = Prism::new(pieces, 0.3, 2.0, conic, false);
+            let mut bad = 0;
+            for _ in 0..300 {
+                let target = DVec3::new(3.0, 1.0, 3.0) + rng.vec(10.0);
+                let origin = target + rng.vec(1.0).normalize() * 25.0;
+                let r = Ray::new(origin, (target - origin) * 0.1);
+                let got: Vec<f64> = hits(&pr, &r).iter().map(|h| h.0).collect();
+                let far = 50.0 / r.dir.length();
+                let mut want = Vec::new();
+                let steps = 5000;
+                let mut prev = pr.inside(r.at(0.0));
+                for i in 1..=steps {
+                    let (mut a, mut b) = (
+                        far * (i - 1) as f64 / steps as f64,
+                        far * i as f64 / steps as f64,
+                    );
+                    let cur = pr.inside(r.at(b));
+                    if cur != prev {
+                        for _ in 0..80 {
+                            let m = 0.5 * (a + b);
+                            if pr.inside(r.at(m)) == prev {
+                                a = m;
+                            } else {
+                                b = m;
+                            }
+                        }
+                        want.push(0.5 * (a + b));
+                    }
+                    prev = cur;
+                }
+                let ok = got.len() == want.len()
+                    && got.iter().zip(&want).all(|(a, b)| (a - b).abs() < 1e-6);
+                if !ok {
+                    bad += 1;
+                    eprintln!("{kind:?} conic {conic}: got {got:?} want {want:?}");
+                }
+            }
+            // A step may hold two crossings closer than it: allow a rare miss.
+            assert!(bad <= 3, "{kind:?} conic {conic}: {bad} of 300");
+        }
+    }
+
     #[test]
     fn curved_outline_round_trip() {
         // A Catmull-Rom ring: rays from the centre leave it once, wherever they point.

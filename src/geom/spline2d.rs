@@ -144,6 +144,9 @@ pub fn sign_changes(c: &[f64], lo: f64, hi: f64, f_lo: f64, f_hi: f64, mut found
         return;
     }
     let c = &c[..n];
+    if n > 2 && lo == 0.0 && hi == 1.0 && no_sign_change(c, f_lo, f_hi) {
+        return;
+    }
     // Extrema cut [lo, hi] into monotone pieces with at most one sign change each; inflection
     // points where the derivative only touches zero do not break monotonicity.
     let mut d = [0.0; 16];
@@ -168,6 +171,33 @@ pub fn sign_changes(c: &[f64], lo: f64, hi: f64, f_lo: f64, f_hi: f64, mut found
         a = b;
         fa = fb;
     }
+}
+
+/// Whether the polynomial surely keeps one sign on [0, 1], ends included: its Bernstein
+/// coefficients (whose hull holds the curve) all share the sign of both end values. Most
+/// pieces a ray passes near have no crossing, and this is far cheaper than isolating roots.
+fn no_sign_change(c: &[f64], f_lo: f64, f_hi: f64) -> bool {
+    let n = c.len() - 1;
+    let positive = f_lo >= 0.0;
+    if positive != (f_hi >= 0.0) {
+        return false;
+    }
+    // b_k = Σ_{i ≤ k} C(k, i) / C(n, i) · c_i
+    let mut binom = [[0.0f64; 17]; 17];
+    for k in 0..=n {
+        binom[k][0] = 1.0;
+        for i in 1..=k {
+            binom[k][i] = binom[k - 1][i - 1] + if i < k { binom[k - 1][i] } else { 0.0 };
+        }
+    }
+    (0..=n).all(|k| {
+        let b: f64 = (0..=k).map(|i| binom[k][i] / binom[n][i] * c[i]).sum();
+        if positive {
+            b > 0.0
+        } else {
+            b < 0.0
+        }
+    })
 }
 
 /// A root in the bracket `[a, b]` by Newton steps kept inside a shrinking bracket.
@@ -277,6 +307,14 @@ mod tests {
         for (got, want) in v.iter().zip([0.25, 0.5, 0.75]) {
             assert!((got - want).abs() < 1e-14);
         }
+        // The Bernstein shortcut: no roots in [0, 1] here, two there.
+        let far = [2.0, -3.0, 1.5]; // 1.5 s² - 3 s + 2 > 0
+        assert!(no_sign_change(&far, 2.0, 0.5));
+        let two = [0.2, -1.5, 1.5]; // roots near 0.18 and 0.82
+        assert!(!no_sign_change(&two, 0.2, 0.2));
+        let mut n = 0;
+        sign_changes(&two, 0.0, 1.0, 0.2, 0.2, |_| n += 1);
+        assert_eq!(n, 2);
         // A root exactly at an end: counted by the piece where the sign changes, zero positive.
         let c = [0.0, 1.0];
         let mut n = 0;
