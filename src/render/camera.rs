@@ -43,8 +43,11 @@ impl Camera {
             dir = dir.normalize_or(DVec3::Z) * (0.5 * right.length() / (a * 0.5).tan());
         }
         if let Some(look) = d.look_at {
-            // Keep the handedness the vectors had (right = -x cameras stay mirrored).
-            let left_handed = up.cross(dir).dot(right) >= 0.0;
+            // Keep the handedness the vectors had (right = -x cameras stay mirrored). When up
+            // and direction are parallel (`up z` with the default direction, sample scenes
+            // objects/prism3*.pov) the test gives zero, which POV-Ray takes as right-handed:
+            // its pictures of those scenes are mirrored.
+            let left_handed = up.cross(dir).dot(right) > 0.0;
             let dl = dir.length();
             let new_dir = (look - d.location).normalize_or(dir.normalize_or(DVec3::Z));
             let mut r = d.sky.cross(new_dir);

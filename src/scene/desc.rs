@@ -318,6 +318,12 @@ pub enum ShapeDesc {
     },
     /// Laid-out glyphs shared by every copy of a `#declare`d text.
     Text(Arc<crate::geom::text::TextData>),
+    /// Spline-swept objects and polygons, built when parsed (see `sdl::sweep`).
+    Prism(Arc<crate::geom::prism::Prism>),
+    Lathe(Arc<crate::geom::lathe::Lathe>),
+    Sor(Arc<crate::geom::sor::Sor>),
+    Polygon(Arc<crate::geom::polygon::Polygon>),
+    SphereSweep(Arc<crate::geom::sphere_sweep::SphereSweep>),
     Csg {
         op: CsgOp,
         children: Vec<ObjectDesc>,

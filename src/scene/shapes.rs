@@ -47,6 +47,11 @@ pub fn make_shape(d: &ShapeDesc) -> Arc<dyn Shape> {
             sturm,
         } => Arc::new(Algebraic::new(*order, terms, *sturm)),
         ShapeDesc::Text(data) => Arc::new(Text::new(data.clone())),
+        ShapeDesc::Prism(s) => s.clone(),
+        ShapeDesc::Lathe(s) => s.clone(),
+        ShapeDesc::Sor(s) => s.clone(),
+        ShapeDesc::Polygon(s) => s.clone(),
+        ShapeDesc::SphereSweep(s) => s.clone(),
         ShapeDesc::Csg { .. } | ShapeDesc::Light(_) => {
             unreachable!("CSG and lights are built by scene::build")
         }

@@ -21,6 +21,7 @@ pub mod parser;
 pub mod source;
 pub mod spline;
 pub mod strings;
+pub mod sweep;
 pub mod switch;
 pub mod text;
 pub mod texture;

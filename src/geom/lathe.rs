@@ -1,0 +1,345 @@
+//! POV-Ray `lathe`: a 2-D spline of (radius, height) points turned about the y axis.
+//!
+//! A ray meets the surface traced by piece point (r(s), h(s)) where the ray's height is h(s)
+//! and its distance from the axis is |r(s)|. Eliminating the ray parameter t = (h − oy) / dy
+//! gives a polynomial in s of degree twice the piece's (six for cubic pieces), whose sign
+//! changes on [0, 1] are the crossings. That elimination loses accuracy as the ray turns
+//! horizontal (its roots pair up at distance ∝ dy), so nearly horizontal rays take the
+//! horizontal solution instead (h(s) = oy, then the circle of radius r(s)) polished by Newton
+//! steps on the exact equations.
+//!
+//! The problem is scaled so the bounding cylinder has radius 1 and the ray origin moved to
+//! where the ray enters it, as the torus does, so the coefficients stay of order one.
+
+use crate::geom::spline2d::{inside_even_odd, sign_changes, Piece, SplineKind, P2};
+use crate::geom::{Hit, Shape};
+use crate::math::{Aabb, DVec3, Ray, EPSILON};
+
+/// Below this |dy| (unit direction) the ray counts as nearly horizontal.
+const FLAT: f64 = 1e-3;
+
+#[derive(Clone, Debug)]
+pub struct Lathe {
+    /// Pieces scaled by `1 / scale`.
+    pieces: Vec<Piece>,
+    scale: f64,
+    /// Largest |radius| and the height range, scaled.
+    radius: f64,
+    y: [f64; 2],
+}
+
+/// The pieces of a lathe's profile, or POV-Ray's reason to refuse the points. The profile is
+/// not closed automatically.
+pub fn profile(kind: SplineKind, p: &[P2]) -> Result<Vec<Piece>, String> {
+    let n = p.len();
+    let (need, word) = match kind {
+        SplineKind::Linear => (2, "two"),
+        SplineKind::Quadratic => (3, "three"),
+        SplineKind::Cubic => (4, "four"),
+        SplineKind::Bezier => (4, "four"),
+    };
+    if kind == SplineKind::Bezier && !n.is_multiple_of(4) {
+        return Err("Lathe with Bezier splines must have four points per segment.".into());
+    }
+    if n < need {
+        return Err(format!(
+            "Lathe with {} splines must have at least {word} points.",
+            kind.name()
+        ));
+    }
+    Ok(match kind {
+        SplineKind::Linear => (1..n).map(|i| Piece::linear(p[i - 1], p[i])).collect(),
+        SplineKind::Quadratic => (1..n - 1)
+            .map(|i| Piece::quadratic(p[i - 1], p[i], p[i + 1]))
+            .collect(),
+        SplineKind::Cubic => (1..n - 2)
+            .map(|i| Piece::cubic(p[i - 1], p[i], p[i + 1], p[i + 2]))
+            .collect(),
+        SplineKind::Bezier => (0..n)
+            .step_by(4)
+            .map(|i| Piece::bezier(p[i], p[i + 1], p[i + 2], p[i + 3]))
+            .collect(),
+    })
+}
+
+/// Products of polynomials in ascending order (degrees up to 3 here).
+fn mul(a: &[f64; 4], b: &[f64; 4]) -> [f64; 7] {
+    let mut c = [0.0; 7];
+    for i in 0..4 {
+        for j in 0..4 {
+            c[i + j] += a[i] * b[j];
+        }
+    }
+    c
+}
+
+impl Lathe {
+    pub fn new(pieces: Vec<Piece>) -> Lathe {
+        let mut radius: f64 = 0.0;
+        let mut y = [f64::INFINITY, f64::NEG_INFINITY];
+        for pc in &pieces {
+            radius = radius.max(pc.lo[0].abs()).max(pc.hi[0].abs());
+            y = [y[0].min(pc.lo[1]), y[1].max(pc.hi[1])];
+        }
+        let scale = radius.max(y[0].abs()).max(y[1].abs());
+        let scale = if scale > 0.0 && scale.is_finite() {
+            scale
+        } else {
+            1.0
+        };
+        let k = 1.0 / scale;
+        let scaled = |q: P2| [q[0] * k, q[1] * k];
+        let pieces = pieces
+            .iter()
+            .map(|pc| Piece {
+                x: pc.x.map(|c| c * k),
+                y: pc.y.map(|c| c * k),
+                p0: scaled(pc.p0),
+                p1: scaled(pc.p1),
+                lo: scaled(pc.lo),
+                hi: scaled(pc.hi),
+            })
+            .collect();
+        Lathe {
+            pieces,
+            scale,
+            radius: radius * k,
+            y: [y[0] * k, y[1] * k],
+        }
+    }
+
+    /// Calls `found(t, piece, s)` for each crossing, t in scaled unit-direction units from `o`.
+    fn crossings(
+        &self,
+        o: DVec3,
+        u: DVec3,
+        t_lo: f64,
+        t_hi: f64,
+        found: &mut impl FnMut(f64, usize, f64),
+    ) {
+        let a = u.x * u.x + u.z * u.z;
+        let b = o.x * u.x + o.z * u.z;
+        let c = o.x * o.x + o.z * o.z;
+        let dy = u.y;
+        for (i, pc) in self.pieces.iter().enumerate() {
+            // The ray must pass through the piece's own cylindrical shell.
+            let r_max = pc.lo[0].abs().max(pc.hi[0].abs());
+            let disc = b * b - a * (c - r_max * r_max);
+            if disc < 0.0 && c > r_max * r_max {
+                continue;
+            }
+            let (mut lo, mut hi) = (t_lo, t_hi);
+            if a > 0.0 {
+                let h = disc.max(0.0).sqrt();
+                lo = lo.max((-b - h) / a);
+                hi = hi.min((-b + h) / a);
+            }
+            if dy != 0.0 {
+                let (y0, y1) = ((pc.lo[1] - o.y) / dy, (pc.hi[1] - o.y) / dy);
+                lo = lo.max(y0.min(y1));
+                hi = hi.min(y0.max(y1));
+            } else if o.y < pc.lo[1] || o.y > pc.hi[1] {
+                continue;
+            }
+            // A degenerate ray leaves NaN bounds: nothing to find.
+            if lo.is_nan() || hi.is_nan() || lo > hi + 1e-9 {
+                continue;
+            }
+            if dy.abs() >= FLAT {
+                self.sloped(pc, i, o, [a, b, c], dy, found);
+            } else {
+                self.flat(pc, i, o, [a, b, c], dy, found);
+            }
+        }
+    }
+
+    fn sloped(
+        &self,
+        pc: &Piece,
+        i: usize,
+        o: DVec3,
+        [a, b, c]: [f64; 3],
+        dy: f64,
+        found: &mut impl FnMut(f64, usize, f64),
+    ) {
+        // dy²(c − r²) + 2 b dy (h − oy) + a (h − oy)², zero where the ray meets the surface.
+        let mut hh = pc.y;
+        hh[0] -= o.y;
+        let (r2, h2) = (mul(&pc.x, &pc.x), mul(&hh, &hh));
+        let mut f = [0.0; 7];
+        for k in 0..7 {
+            f[k] = -dy * dy * r2[k] + a * h2[k];
+            if k < 4 {
+                f[k] += 2.0 * b * dy * hh[k];
+            }
+        }
+        f[0] += dy * dy * c;
+        let end = |q: P2| {
+            let e = q[1] - o.y;
+            dy * dy * (c - q[0] * q[0]) + 2.0 * b * dy * e + a * e * e
+        };
+        sign_changes(&f, 0.0, 1.0, end(pc.p0), end(pc.p1), |s| {
+            let t = (crate::geom::poly::eval(&pc.y, s) - o.y) / dy;
+            found(t, i, s);
+        });
+    }
+
+    fn flat(
+        &self,
+        pc: &Piece,
+        i: usize,
+        o: DVec3,
+        [a, b, c]: [f64; 3],
+        dy: f64,
+        found: &mut impl FnMut(f64, usize, f64),
+    ) {
+        if a == 0.0 {
+            return;
+        }
+        let mut hh = pc.y;
+        hh[0] -= o.y;
+        sign_changes(&hh, 0.0, 1.0, pc.p0[1] - o.y, pc.p1[1] - o.y, |s0| {
+            let r = pc.at(s0)[0];
+            let disc = b * b - a * (c - r * r);
+            if disc < 0.0 {
+                return;
+            }
+            let root = disc.sqrt();
+            for t0 in [(-b - root) / a, (-b + root) / a] {
+                let (mut s, mut t) = (s0, t0);
+                // Newton on h(s) − oy − t dy = 0 and a t² + 2 b t + c − r(s)² = 0.
+                for _ in 0..8 {
+                    let (q, tan) = (pc.at(s), pc.tangent(s));
+                    let e1 = q[1] - o.y - t * dy;
+                    let e2 = a * t * t + 2.0 * b * t + c - q[0] * q[0];
+                    let (j11, j12) = (tan[1], -dy);
+                    let (j21, j22) = (-2.0 * q[0] * tan[0], 2.0 * (a * t + b));
+                    let det = j11 * j22 - j12 * j21;
+                    if det == 0.0 || !det.is_finite() {
+                        break;
+                    }
+                    let ds = (e1 * j22 - j12 * e2) / det;
+                    let dt = (j11 * e2 - j21 * e1) / det;
+                    if !(ds.abs() < 0.1 && dt.abs() < 0.5) {
+                        // Leaving the neighbourhood: keep the horizontal answer.
+                        (s, t) = (s0, t0);
+                        break;
+                    }
+                    s -= ds;
+                    t -= dt;
+                    if ds.abs() < 1e-15 && dt.abs() < 1e-15 {
+                        break;
+                    }
+                }
+                found(t, i, s);
+            }
+        });
+    }
+
+    /// Ray in scaled space with a unit direction, plus the factor from scaled distance back to
+    /// ray units, and the part of the ray inside the bounding cylinder.
+    fn setup(&self, ray: &Ray) -> Option<(DVec3, DVec3, f64, f64, f64)> {
+        let len = ray.dir.length();
+        if !(len > 0.0 && len.is_finite()) || self.pieces.is_empty() {
+            return None;
+        }
+        let u = ray.dir / len;
+        let o = ray.origin / self.scale;
+        let a = u.x * u.x + u.z * u.z;
+        let b = o.x * u.x + o.z * u.z;
+        let c = o.x * o.x + o.z * o.z - self.radius * self.radius;
+        let margin = 1e-9;
+        let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+        if a > 0.0 {
+            let disc = b * b - a * c;
+            if disc < 0.0 {
+                return None;
+            }
+            let h = disc.sqrt();
+            lo = (-b - h) / a - margin;
+            hi = (-b + h) / a + margin;
+        } else if c > 0.0 {
+            return None;
+        }
+        if u.y != 0.0 {
+            let (y0, y1) = ((self.y[0] - o.y) / u.y, (self.y[1] - o.y) / u.y);
+            lo = lo.max(y0.min(y1) - margin);
+            hi = hi.min(y0.max(y1) + margin);
+        } else if o.y < self.y[0] || o.y > self.y[1] {
+            return None;
+        }
+        let min_dist = EPSILON * len / self.scale;
+        lo = lo.max(min_dist);
+        (lo <= hi).then_some((o, u, lo, hi, self.scale / len))
+    }
+
+    fn each_hit(&self, ray: &Ray, mut f: impl FnMut(Hit)) {
+        let Some((o, u, lo, hi, back)) = self.setup(ray) else {
+            return;
+        };
+        // Solve from the entry point so the coefficients do not depend on a far origin.
+        let shift = lo;
+        let o2 = o + u * shift;
+        self.crossings(o2, u, 0.0, hi - shift, &mut |t, i, s| {
+            let t = (t + shift) * back;
+            if t > EPSILON {
+                f(Hit {
+                    t,
+                    part: i as u32,
+                    uv: [s, 0.0],
+                });
+            }
+        });
+    }
+}
+
+impl Shape for Lathe {
+    fn bounds(&self) -> Aabb {
+        if self.pieces.is_empty() {
+            return Aabb::EMPTY;
+        }
+        let (r, k) = (self.radius * self.scale, self.scale);
+        Aabb::new(
+            DVec3::new(-r, self.y[0] * k, -r),
+            DVec3::new(r, self.y[1] * k, r),
+        )
+    }
+
+    fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
+        self.each_hit(ray, |h| out.push(h));
+    }
+
+    fn inside(&self, p: DVec3) -> bool {
+        let q = p / self.scale;
+        let rho = (q.x * q.x + q.z * q.z).sqrt();
+        inside_even_odd(&self.pieces, [rho, q.y], true)
+    }
+
+    fn normal(&self, p: DVec3, hit: &Hit) -> DVec3 {
+        let Some(pc) = self.pieces.get(hit.part as usize) else {
+            return DVec3::Y;
+        };
+        let s = hit.uv[0];
+        let (r, tan) = (pc.at(s)[0], pc.tangent(s));
+        // The profile as seen in the half plane of the hit: radius |r|.
+        let dr = if r < 0.0 { -tan[0] } else { tan[0] };
+        let mut m = [tan[1], -dr];
+        let q = p / self.scale;
+        let rho = (q.x * q.x + q.z * q.z).sqrt();
+        let len = (m[0] * m[0] + m[1] * m[1]).sqrt();
+        if len > 0.0 {
+            let e = 1e-7 / len;
+            if inside_even_odd(&self.pieces, [rho + e * m[0], q.y + e * m[1]], true) {
+                m = [-m[0], -m[1]];
+            }
+        }
+        if rho > 0.0 {
+            DVec3::new(m[0] * q.x / rho, m[1], m[0] * q.z / rho)
+        } else {
+            DVec3::new(0.0, m[1].signum(), 0.0)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;
