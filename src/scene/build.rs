@@ -66,6 +66,7 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
         images: HashMap::new(),
         lights: Vec::new(),
         gamma,
+        noise_generator: desc.global.noise_generator,
     };
     let mut objects = Vec::new();
     for o in &desc.objects {
@@ -122,6 +123,7 @@ struct Ctx {
     images: HashMap<*const ImageMap, (Arc<ImageMap>, bool)>,
     lights: Vec<Light>,
     gamma: GammaMode,
+    noise_generator: u8,
 }
 
 impl Ctx {
@@ -149,11 +151,26 @@ impl Ctx {
 
     /// Converts a pigment's images to working space; returns whether it may let light through.
     fn pigment(&mut self, p: &mut Pigment) -> bool {
+        // Patterns that named no noise generator use the scene's.
+        let gen = self.noise_generator;
+        match &mut p.kind {
+            PigmentKind::Mapped { pattern, .. }
+            | PigmentKind::List { pattern, .. }
+            | PigmentKind::PigmentMap { pattern, .. }
+                if pattern.noise_generator == 0 =>
+            {
+                pattern.noise_generator = gen
+            }
+            _ => {}
+        }
         match &mut p.kind {
             PigmentKind::Solid(c) => !c.is_opaque(),
             PigmentKind::Mapped { map, .. } => map.iter().any(|(_, c)| !c.is_opaque()),
             PigmentKind::List { items, .. } => {
                 items.iter_mut().fold(false, |t, i| self.pigment(i) | t)
+            }
+            PigmentKind::PigmentMap { map, .. } => {
+                map.iter_mut().fold(false, |t, (_, i)| self.pigment(i) | t)
             }
             PigmentKind::ImageMap(im) => {
                 let (converted, transparent) = self.image(im);

@@ -11,6 +11,7 @@ use std::sync::Arc;
 
 use crate::color::Rgbft;
 use crate::math::{DVec3, Transform};
+pub use crate::scene::pattern::Pattern;
 
 #[derive(Clone, Debug)]
 pub struct SceneDesc {
@@ -60,6 +61,8 @@ pub struct GlobalSettings {
     pub max_trace_level: u32,
     pub adc_bailout: f64,
     pub ambient_light: DVec3,
+    /// `noise_generator` for patterns that do not name their own.
+    pub noise_generator: u8,
 }
 
 impl Default for GlobalSettings {
@@ -69,6 +72,7 @@ impl Default for GlobalSettings {
             max_trace_level: 5,
             adc_bailout: 1.0 / 255.0,
             ambient_light: DVec3::ONE,
+            noise_generator: 2,
         }
     }
 }
@@ -389,25 +393,21 @@ pub enum PigmentKind {
         pattern: Pattern,
         map: ColorMap,
     },
-    /// A discrete pattern choosing between whole pigments (checker).
+    /// A discrete pattern choosing between whole pigments (checker, hexagon, brick).
     List {
         pattern: Pattern,
         items: Vec<Pigment>,
+    },
+    /// `pigment_map`: a continuous pattern blending whole pigments, sorted by value.
+    PigmentMap {
+        pattern: Pattern,
+        map: Vec<(f64, Pigment)>,
     },
     ImageMap(Arc<ImageMap>),
 }
 
 /// Colour map entries sorted by value, as POV-Ray's `color_map { [v colour] ... }`.
 pub type ColorMap = Vec<(f64, Rgbft)>;
-
-#[derive(Clone, Debug, PartialEq)]
-pub enum Pattern {
-    Checker,
-    /// `gradient <v>`: the fractional part of p · v.
-    Gradient(DVec3),
-    /// A pattern lancer does not evaluate yet (already warned about): the middle of its map.
-    Unsupported,
-}
 
 #[derive(Clone, Debug)]
 pub struct ImageMap {

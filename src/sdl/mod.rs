@@ -15,6 +15,7 @@ pub mod lexer;
 pub mod limits;
 pub mod object;
 pub mod parser;
+pub mod pattern;
 pub mod source;
 pub mod spline;
 pub mod strings;
