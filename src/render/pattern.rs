@@ -137,7 +137,7 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
         }
         PatternKind::Agate { turb } => {
             let t = noise::turbulence(q, 7, 0.5, 2.0, gen);
-            let v = 0.5 + 0.5 * (TAU * (q.z * 0.5 + turb * 4.0 * t)).sin();
+            let v = 0.5 + 0.5 * (TAU * (q.z * 0.5 + turb * 1.6 * t)).sin();
             v.clamp(0.0, 1.0)
         }
         // Scaled to POV-Ray's spread (mean 0.51, deviation 0.13 on a plane).

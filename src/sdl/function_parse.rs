@@ -334,6 +334,16 @@ impl Parser {
             }
             Some(Value::Function(f)) => {
                 let args = self.fn_args(s, &k)?;
+                if !f.is_float()
+                    && f.unsupported.is_some()
+                    && self.raw_peek_sym()? == Some(Sym::Dot)
+                {
+                    // `P(x,y,z).gray` of a pigment function lancer cannot evaluate: the call
+                    // makes the whole function unsupported, reported where it is used.
+                    self.advance();
+                    self.next_tok()?;
+                    return Ok(Expr::Call(f, args));
+                }
                 if !f.is_float() {
                     return Err(self.error_at(
                         span,

@@ -34,6 +34,41 @@ pub(super) const UNSUPPORTED_PATTERNS: &[&str] = &[
     "proportion",
 ];
 
+/// Pattern keywords lancer evaluates (see `pattern_keyword`).
+const PATTERNS: &[&str] = &[
+    "checker",
+    "gradient",
+    "onion",
+    "radial",
+    "spherical",
+    "cylindrical",
+    "boxed",
+    "planar",
+    "leopard",
+    "marble",
+    "wood",
+    "spiral1",
+    "brick",
+    "hexagon",
+    "bozo",
+    "spotted",
+    "bumps",
+    "granite",
+    "agate",
+    "wrinkles",
+    "dents",
+    "ripples",
+    "waves",
+    "crackle",
+    "cells",
+    "function",
+];
+
+/// Whether `k` names a pattern of POV-Ray 3.7, evaluated by lancer or not.
+pub(super) fn is_pattern_keyword(k: &str) -> bool {
+    PATTERNS.contains(&k) || UNSUPPORTED_PATTERNS.contains(&k)
+}
+
 /// Modifiers of patterns lancer does not evaluate, read past with a warning (one value each).
 const UNSUPPORTED_MODIFIERS: &[&str] = &[
     "control0",
@@ -140,7 +175,7 @@ impl Parser {
                             .unsupported
                             .clone()
                             .unwrap_or_else(|| "function pattern of this kind".into());
-                        self.unsupported(&format!("function pattern ({why})"), span);
+                        self.warn(span, format!("this function pattern is not supported by lancer yet: {why}; it shows the middle of its map and the picture will differ from POV-Ray's"));
                         PatternKind::Unsupported
                     }
                     _ => PatternKind::Unsupported,

@@ -13,7 +13,7 @@ use crate::scene::pattern::PatternKind;
 
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
-use super::pattern::{default_items, default_map, UNSUPPORTED_PATTERNS};
+use super::pattern::{default_items, default_map, is_pattern_keyword};
 use super::source::Span;
 use super::value::Value;
 
@@ -127,7 +127,18 @@ impl Parser {
             }
             match &**k {
                 "color_map" | "colour_map" => form = Form::Colors(Some(self.parse_color_map()?)),
-                "pigment_map" => form = Form::Pigments(self.parse_pigment_map()?),
+                "pigment_map" => {
+                    if pat
+                        .as_ref()
+                        .is_some_and(|q| matches!(q.kind, PatternKind::Unsupported))
+                    {
+                        // The entries of an unsupported pattern (`average`'s weights) may not
+                        // follow the usual form; the pattern was already warned about.
+                        self.skip_block()?;
+                    } else {
+                        form = Form::Pigments(self.parse_pigment_map()?);
+                    }
+                }
                 "image_map" => form = Form::Image(Arc::new(self.parse_image_map(t.span)?)),
                 "quick_color" | "quick_colour" => {
                     p.quick = Some(self.parse_color()?);
@@ -505,7 +516,7 @@ impl Parser {
                 "finish" => tex.finish = self.parse_finish_block(Some(tex.finish.clone()))?,
                 "normal" => tex.normal = Some(self.parse_normal_block(t.span)?),
                 "uv_mapping" => self.unsupported(k, t.span),
-                k if UNSUPPORTED_PATTERNS.contains(&k)
+                k if is_pattern_keyword(k)
                     || matches!(
                         k,
                         "checker"
