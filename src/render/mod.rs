@@ -10,6 +10,7 @@ pub mod noise;
 pub mod pattern;
 pub mod pigment;
 mod shadow;
+pub mod texture_map;
 pub mod trace;
 pub mod warp;
 

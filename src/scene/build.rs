@@ -12,7 +12,7 @@ use crate::math::{Aabb, DVec3, Ray, Transform};
 use crate::render::camera::Camera;
 use crate::scene::desc::{
     FogDesc, ImageMap, Interior, MeshData, ObjectDesc, Pigment, PigmentKind, SceneDesc, ShapeDesc,
-    Texture,
+    Texture, TextureEntries,
 };
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
 use crate::scene::shapes::make_shape;
@@ -184,13 +184,34 @@ impl Ctx {
     /// layer of a layered one.
     fn texture(&mut self, t: &Texture) -> (Arc<Texture>, bool) {
         let mut t = t.clone();
+        let transparent = self.prepare_texture(&mut t);
+        (Arc::new(t), transparent)
+    }
+
+    /// Readies a texture's pigments (patterned ones' entries too); whether light may pass.
+    fn prepare_texture(&mut self, t: &mut Texture) -> bool {
         let mut transparent = true;
-        let mut layer = Some(&mut t);
+        let mut layer = Some(t);
         while let Some(l) = layer {
-            transparent &= self.pigment(&mut l.pigment);
+            let mut this = self.pigment(&mut l.pigment);
+            if let Some(tp) = &mut l.pattern {
+                if tp.pattern.noise_generator == 0 {
+                    tp.pattern.noise_generator = self.noise_generator;
+                }
+                // Light may pass where any of the textures lets it.
+                this = match &mut tp.entries {
+                    TextureEntries::List(items) => items
+                        .iter_mut()
+                        .fold(false, |a, e| self.prepare_texture(e) | a),
+                    TextureEntries::Map(map) => map
+                        .iter_mut()
+                        .fold(false, |a, (_, e)| self.prepare_texture(e) | a),
+                };
+            }
+            transparent &= this;
             layer = l.under.as_deref_mut();
         }
-        (Arc::new(t), transparent)
+        transparent
     }
 
     fn object(

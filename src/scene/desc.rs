@@ -322,6 +322,27 @@ pub struct Texture {
     pub finish: Finish,
     /// A layered texture's next layer down (`texture {A} texture {B}` puts B over A).
     pub under: Option<Box<Texture>>,
+    /// A patterned texture (`texture { checker texture {..} texture {..} }`, `texture_map`):
+    /// when set, it decides the pigment and finish and this layer's own are unused.
+    pub pattern: Option<Box<TexturePattern>>,
+}
+
+/// The pattern of a patterned texture and the textures it chooses or blends between, which
+/// are evaluated in the pattern's space.
+#[derive(Clone, Debug)]
+pub struct TexturePattern {
+    pub pattern: Pattern,
+    /// Pattern space to world space.
+    pub transform: Transform,
+    pub entries: TextureEntries,
+}
+
+#[derive(Clone, Debug)]
+pub enum TextureEntries {
+    /// A block pattern's listed textures.
+    List(Vec<Texture>),
+    /// `texture_map`, sorted by value.
+    Map(Vec<(f64, Texture)>),
 }
 
 impl Default for Texture {
@@ -331,6 +352,7 @@ impl Default for Texture {
             normal: None,
             finish: Finish::default(),
             under: None,
+            pattern: None,
         }
     }
 }
@@ -338,6 +360,9 @@ impl Default for Texture {
 impl Texture {
     pub fn apply_transform(&mut self, t: &Transform) {
         self.pigment.apply_transform(t);
+        if let Some(tp) = &mut self.pattern {
+            tp.transform = tp.transform.then(t);
+        }
         if let Some(n) = &mut self.normal {
             n.transform = n.transform.then(t);
         }
@@ -435,7 +460,7 @@ pub enum NormalKind {
     Unsupported,
 }
 
-#[derive(Clone, Debug)]
+#[derive(Clone, Copy, Debug)]
 pub struct Finish {
     pub ambient: DVec3,
     pub emission: DVec3,
@@ -468,7 +493,7 @@ impl Default for Finish {
     }
 }
 
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Copy, Debug, Default)]
 pub struct Reflection {
     /// Reflectivity facing the viewer (`reflection { min max }`: min).
     pub min: DVec3,

@@ -335,8 +335,11 @@ impl Parser {
                 self.advance();
                 Ok(Value::PigmentMap(Box::new(self.parse_pigment_map()?)))
             }
-            "normal_map" | "slope_map" | "texture_map" | "density_map" | "density" | "media"
-            | "rainbow" => {
+            "texture_map" => {
+                self.advance();
+                Ok(Value::TextureMap(Box::new(self.parse_texture_map()?)))
+            }
+            "normal_map" | "slope_map" | "density_map" | "density" | "media" | "rainbow" => {
                 self.advance();
                 self.unsupported(k, t.span);
                 self.skip_block()?;
@@ -362,6 +365,7 @@ impl Parser {
                     | Value::Transform(_)
                     | Value::ColorMap(_)
                     | Value::PigmentMap(_)
+                    | Value::TextureMap(_)
                     | Value::Material(_)
                     | Value::SkySphere(_)
                     | Value::Fog(_)

@@ -21,6 +21,7 @@ pub mod spline;
 pub mod strings;
 pub mod switch;
 pub mod texture;
+pub mod texture_block;
 pub mod value;
 
 use crate::scene::desc::{CameraDesc, GlobalSettings, SceneDesc, Texture};

@@ -1,5 +1,5 @@
-//! Texture statements: pigment (colours, patterns, colour maps, image maps), finish, normal,
-//! texture and interior blocks.
+//! Texture statements: pigment (colours, patterns, colour maps, pigment maps, image maps),
+//! finish, normal and interior blocks. Texture blocks are in texture_block.rs.
 
 use std::sync::Arc;
 
@@ -7,13 +7,13 @@ use crate::color::Rgbft;
 use crate::math::DVec3;
 use crate::scene::desc::{
     ColorMap, Finish, ImageMap, Interior, Normal, NormalKind, Pattern, Pigment, PigmentKind,
-    Reflection, Texture,
+    Reflection,
 };
 use crate::scene::pattern::PatternKind;
 
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
-use super::pattern::{default_items, default_map, is_pattern_keyword};
+use super::pattern::{default_items, default_map};
 use super::source::Span;
 use super::value::Value;
 
@@ -488,68 +488,6 @@ impl Parser {
             amount: 0.0,
             transform: Default::default(),
         })
-    }
-
-    pub(super) fn parse_texture_block(&mut self) -> PResult<Texture> {
-        self.open_brace("texture")?;
-        let mut tex = self.scene.default_texture.clone();
-        if let Some(k) = self.peek_ident()? {
-            if let Some(Value::Texture(id)) = self.lookup(&k) {
-                tex = (**id).clone();
-                self.advance();
-            }
-        }
-        loop {
-            let t = self.next_tok()?;
-            let Tok::Ident(k) = &t.tok else {
-                if t.tok == Tok::Sym(Sym::RBrace) {
-                    return Ok(tex);
-                }
-                return Err(self.unexpected(&t, "in texture"));
-            };
-            if let Some(tr) = self.transform_item(k)? {
-                tex.apply_transform(&tr);
-                continue;
-            }
-            match &**k {
-                "pigment" => tex.pigment = self.parse_pigment_block(Some(tex.pigment.clone()))?,
-                "finish" => tex.finish = self.parse_finish_block(Some(tex.finish.clone()))?,
-                "normal" => tex.normal = Some(self.parse_normal_block(t.span)?),
-                "uv_mapping" => self.unsupported(k, t.span),
-                k if is_pattern_keyword(k)
-                    || matches!(
-                        k,
-                        "checker"
-                            | "gradient"
-                            | "material_map"
-                            | "tiles"
-                            | "texture_map"
-                            | "image_pattern"
-                            | "object"
-                            | "slope"
-                    ) =>
-                {
-                    self.unsupported(&format!("{k} (patterned texture)"), t.span);
-                    self.skip_texture_pattern()?;
-                }
-                _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in texture"))),
-            }
-        }
-    }
-
-    /// Reads past the rest of a patterned texture up to (not including) its closing brace.
-    fn skip_texture_pattern(&mut self) -> PResult<()> {
-        let mut depth = 0;
-        loop {
-            let t = self.peek()?.ok_or_else(|| self.eof_error())?;
-            match t.tok {
-                Tok::Sym(Sym::LBrace) => depth += 1,
-                Tok::Sym(Sym::RBrace) if depth == 0 => return Ok(()),
-                Tok::Sym(Sym::RBrace) => depth -= 1,
-                _ => {}
-            }
-            self.advance();
-        }
     }
 
     pub(super) fn parse_interior_block(&mut self) -> PResult<Interior> {
