@@ -460,7 +460,7 @@ pub enum NormalKind {
     Unsupported,
 }
 
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct Finish {
     pub ambient: DVec3,
     pub emission: DVec3,
@@ -493,7 +493,7 @@ impl Default for Finish {
     }
 }
 
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub struct Reflection {
     /// Reflectivity facing the viewer (`reflection { min max }`: min).
     pub min: DVec3,
