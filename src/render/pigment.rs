@@ -6,6 +6,7 @@ use std::f64::consts::PI;
 use crate::color::Rgbft;
 use crate::math::DVec3;
 use crate::scene::desc::{ColorMap, ImageMap, Pigment, PigmentKind};
+use crate::scene::pattern::PatternKind;
 
 use super::pattern;
 
@@ -31,10 +32,28 @@ pub fn eval(p: &Pigment, world: DVec3) -> Rgbft {
             items.get(i).map_or(Rgbft::BLACK, |item| eval(item, lp))
         }
         PigmentKind::PigmentMap { pattern: pat, map } => {
+            if matches!(pat.kind, PatternKind::Average) {
+                return average(map, lp);
+            }
             pigment_map(map, pattern::value(pat, lp), lp)
         }
         PigmentKind::ImageMap(im) => image(im, lp),
     }
+}
+
+/// `average`: every entry's pigment weighted by its value.
+fn average(map: &[(f64, Pigment)], lp: DVec3) -> Rgbft {
+    let total: f64 = map.iter().map(|e| e.0).sum();
+    if total == 0.0 {
+        return Rgbft::BLACK;
+    }
+    let mut sum = [0.0; 5];
+    for (w, p) in map {
+        for (s, v) in sum.iter_mut().zip(eval(p, lp).to_array()) {
+            *s += v * w / total;
+        }
+    }
+    Rgbft::from_array(sum)
 }
 
 /// Pigment map lookup: like a colour map, but only the one or two pigments that the value

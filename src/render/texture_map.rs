@@ -8,6 +8,7 @@
 use crate::color::Rgbft;
 use crate::math::DVec3;
 use crate::scene::desc::{Finish, Texture, TextureEntries};
+use crate::scene::pattern::PatternKind;
 
 use super::{pattern, pigment};
 
@@ -40,6 +41,14 @@ pub fn blend(
             let i = pattern::index(&tp.pattern, lp).min(items.len().saturating_sub(1));
             if let Some(t) = items.get(i) {
                 blend(t, lp, quick, weight, f);
+            }
+        }
+        TextureEntries::Map(map) if matches!(tp.pattern.kind, PatternKind::Average) => {
+            let total: f64 = map.iter().map(|e| e.0).sum();
+            if total != 0.0 {
+                for (w, t) in map {
+                    blend(t, lp, quick, weight * w / total, f);
+                }
             }
         }
         TextureEntries::Map(map) => {

@@ -94,6 +94,15 @@ pub enum PatternKind {
         solid: bool,
     },
     Cells,
+    /// `mandel N`: iterations of z² + c from z = c, c = x + iy.
+    Mandel(u32),
+    /// `julia <c>, N`: iterations of z² + c from z = x + iy.
+    Julia {
+        c: (f64, f64),
+        iterations: u32,
+    },
+    /// `average`: the map's entries mixed by their weights, not chosen by a value.
+    Average,
     /// `function { ... }` of x, y, z.
     Function(Arc<Function>),
     /// A pattern lancer does not evaluate yet (already warned about): the middle of its map.

@@ -15,13 +15,10 @@ use super::value::Value;
 pub(super) const UNSUPPORTED_PATTERNS: &[&str] = &[
     "image_pattern",
     "aoi",
-    "average",
     "cubic",
     "density_file",
     "facets",
-    "julia",
     "magnet",
-    "mandel",
     "object",
     "pavement",
     "pigment_pattern",
@@ -62,6 +59,9 @@ const PATTERNS: &[&str] = &[
     "crackle",
     "cells",
     "function",
+    "mandel",
+    "julia",
+    "average",
 ];
 
 /// Whether `k` names a pattern of POV-Ray 3.7, evaluated by lancer or not.
@@ -77,7 +77,6 @@ const UNSUPPORTED_MODIFIERS: &[&str] = &[
     "orientation",
     "dist_exp",
     "strength",
-    "exponent",
 ];
 
 /// The colours a pattern uses when no map or list is given (measured with povray).
@@ -103,6 +102,14 @@ pub fn default_map(kind: &PatternKind) -> Vec<(f64, Rgbft)> {
             (1.0 / 3.0, c(1.0, 1.0, 0.0)),
             (2.0 / 3.0, c(1.0, 0.0, 1.0)),
             (1.0, c(0.0, 1.0, 1.0)),
+        ],
+        PatternKind::Mandel(_) | PatternKind::Julia { .. } => vec![
+            (0.0, c(0.0, 0.0, 0.0)),
+            (0.001, c(0.0, 0.0, 0.0)),
+            (0.001, c(0.0, 1.0, 1.0)),
+            (0.012, c(1.0, 1.0, 0.0)),
+            (0.015, c(1.0, 0.0, 1.0)),
+            (0.1, c(0.0, 1.0, 1.0)),
         ],
         PatternKind::Agate { .. } => vec![
             (0.0, c(1.0, 1.0, 1.0)),
@@ -164,6 +171,17 @@ impl Parser {
                 solid: false,
             },
             "cells" => PatternKind::Cells,
+            "average" => PatternKind::Average,
+            "mandel" => PatternKind::Mandel(self.parse_float()?.clamp(0.0, 1e6) as u32),
+            "julia" => {
+                let c = self.parse_vector()?;
+                self.skip_optional_comma()?;
+                let n = self.parse_float()?.clamp(0.0, 1e6) as u32;
+                PatternKind::Julia {
+                    c: (c.x, c.y),
+                    iterations: n,
+                }
+            }
             "function" => {
                 let v = self.parse_function_literal(span)?;
                 match v {
@@ -203,13 +221,18 @@ impl Parser {
                 self.next_tok()?;
                 self.next_tok()?;
             }
-            "julia" => {
-                // julia <complex>, iterations
-                self.parse_vector()?;
-                self.skip_optional_comma()?;
+            "magnet" => {
+                // magnet 1|2 mandel N, or magnet 1|2 julia <c>, N
+                self.parse_float()?;
+                if self.eat_keyword("julia")? {
+                    self.parse_vector()?;
+                    self.skip_optional_comma()?;
+                } else {
+                    self.eat_keyword("mandel")?;
+                }
                 self.parse_float()?;
             }
-            "mandel" | "magnet" | "tiling" | "spiral2" => {
+            "tiling" | "spiral2" => {
                 self.parse_expr()?;
             }
             _ => {}
@@ -270,6 +293,14 @@ impl Parser {
                     } else {
                         *size = v;
                     }
+                }
+            }
+            "exponent" => {
+                let e = self.parse_float()?;
+                if e != 2.0
+                    && matches!(pat.kind, PatternKind::Mandel(_) | PatternKind::Julia { .. })
+                {
+                    self.unsupported("exponent (other than 2, in mandel or julia)", span);
                 }
             }
             "form" | "metric" | "offset" | "solid" => {

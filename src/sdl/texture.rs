@@ -136,7 +136,10 @@ impl Parser {
                         // follow the usual form; the pattern was already warned about.
                         self.skip_block()?;
                     } else {
-                        form = Form::Pigments(self.parse_pigment_map()?);
+                        let weights_optional = pat
+                            .as_ref()
+                            .is_some_and(|q| matches!(q.kind, PatternKind::Average));
+                        form = Form::Pigments(self.parse_pigment_map_entries(weights_optional)?);
                     }
                 }
                 "image_map" => form = Form::Image(Arc::new(self.parse_image_map(t.span)?)),
@@ -183,6 +186,14 @@ impl Parser {
 
     /// `pigment_map { [v PIGMENT_BODY] ... }` after the keyword, or a declared one.
     pub(super) fn parse_pigment_map(&mut self) -> PResult<Vec<(f64, Pigment)>> {
+        self.parse_pigment_map_entries(false)
+    }
+
+    /// `weights_optional`: `average`'s entries may leave out their weight (1).
+    fn parse_pigment_map_entries(
+        &mut self,
+        weights_optional: bool,
+    ) -> PResult<Vec<(f64, Pigment)>> {
         self.open_brace("pigment_map")?;
         let mut map = Vec::new();
         loop {
@@ -190,7 +201,11 @@ impl Parser {
             match &t.tok {
                 Tok::Sym(Sym::RBrace) => break,
                 Tok::Sym(Sym::LBracket) => {
-                    let v = self.parse_float()?;
+                    let v = if weights_optional && !self.starts_float()? {
+                        1.0
+                    } else {
+                        self.parse_float()?
+                    };
                     self.skip_optional_comma()?;
                     let pig = self.parse_pigment_body(None, Sym::RBracket)?;
                     map.push((v, pig));

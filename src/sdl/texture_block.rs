@@ -48,7 +48,11 @@ impl Parser {
                 "normal" => tex.normal = Some(self.parse_normal_block(t.span)?),
                 "uv_mapping" => self.unsupported(k, t.span),
                 "texture_map" => {
-                    let map = self.parse_texture_map()?;
+                    let weights_optional = tex
+                        .pattern
+                        .as_ref()
+                        .is_some_and(|tp| matches!(tp.pattern.kind, PatternKind::Average));
+                    let map = self.parse_texture_map_entries(weights_optional)?;
                     match &mut tex.pattern {
                         Some(tp) => tp.entries = TextureEntries::Map(map),
                         None => {
@@ -168,6 +172,14 @@ impl Parser {
 
     /// `texture_map { [v TEXTURE_BODY] ... }` after the keyword, or a declared one.
     pub(super) fn parse_texture_map(&mut self) -> PResult<Vec<(f64, Texture)>> {
+        self.parse_texture_map_entries(false)
+    }
+
+    /// `weights_optional`: `average`'s entries may leave out their weight (1).
+    fn parse_texture_map_entries(
+        &mut self,
+        weights_optional: bool,
+    ) -> PResult<Vec<(f64, Texture)>> {
         self.open_brace("texture_map")?;
         let mut map = Vec::new();
         loop {
@@ -175,7 +187,11 @@ impl Parser {
             match &t.tok {
                 Tok::Sym(Sym::RBrace) => break,
                 Tok::Sym(Sym::LBracket) => {
-                    let v = self.parse_float()?;
+                    let v = if weights_optional && !self.starts_float()? {
+                        1.0
+                    } else {
+                        self.parse_float()?
+                    };
                     self.skip_optional_comma()?;
                     let tex = self.parse_texture_body(Sym::RBracket)?;
                     map.push((v, tex));
