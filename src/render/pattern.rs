@@ -43,8 +43,8 @@ pub fn index(pat: &Pattern, p: DVec3) -> usize {
     }
 }
 
-/// The point after warps and turbulence.
-fn warped(pat: &Pattern, p: DVec3) -> DVec3 {
+/// The point after warps and turbulence (what `average` evaluates its entries at).
+pub fn warped(pat: &Pattern, p: DVec3) -> DVec3 {
     let mut q = p;
     for w in pat.warps.iter().rev() {
         q = warp::apply(w, q, pat.noise_generator);

@@ -33,7 +33,8 @@ pub fn eval(p: &Pigment, world: DVec3) -> Rgbft {
         }
         PigmentKind::PigmentMap { pattern: pat, map } => {
             if matches!(pat.kind, PatternKind::Average) {
-                return average(map, lp);
+                // Average's warps move the point its entries see (measured: blkhole.pov).
+                return average(map, pattern::warped(pat, lp));
             }
             pigment_map(map, pattern::value(pat, lp), lp)
         }

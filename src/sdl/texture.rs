@@ -59,6 +59,11 @@ impl Parser {
         self.parse_pigment_body(base, Sym::RBrace)
     }
 
+    /// A pigment body whose opening brace was just read, up to its closing brace.
+    pub(super) fn parse_pigment_body_in_braces(&mut self) -> PResult<Pigment> {
+        self.parse_pigment_body(None, Sym::RBrace)
+    }
+
     /// The inside of a pigment up to and including `close` (`}` for a block, `]` for a
     /// pigment map entry).
     fn parse_pigment_body(&mut self, base: Option<Pigment>, close: Sym) -> PResult<Pigment> {
