@@ -39,6 +39,9 @@ pub fn index(pat: &Pattern, p: DVec3) -> usize {
         PatternKind::Checker => checker(q),
         PatternKind::Hexagon => hexagon(q),
         PatternKind::Brick { size, mortar } => brick(q, *size, *mortar),
+        PatternKind::Square => square(q),
+        PatternKind::Triangular => triangular(q),
+        PatternKind::Cubic => cubic(q),
         _ => (shape(pat, raw(pat, q)) >= 0.5) as usize,
     }
 }
@@ -94,6 +97,13 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
         PatternKind::Checker => checker(q) as f64,
         PatternKind::Hexagon => hexagon(q) as f64 / 2.0,
         PatternKind::Brick { size, mortar } => brick(q, *size, *mortar) as f64,
+        PatternKind::Square => square(q) as f64,
+        PatternKind::Triangular => triangular(q) as f64,
+        PatternKind::Cubic => cubic(q) as f64,
+        PatternKind::PigmentPattern(p) => {
+            let c = super::pigment::eval(p, q);
+            0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z
+        }
         PatternKind::Gradient(a) => q.dot(*a) % 1.0,
         PatternKind::Onion => q.length() % 1.0,
         PatternKind::Radial => {
@@ -210,6 +220,40 @@ fn hexagon(q: DVec3) -> usize {
         }
     }
     (best.2 - best.1).rem_euclid(3.0) as usize
+}
+
+/// Unit squares in the x-z plane: items 0 and 3 alternate along x where floor(z) is even,
+/// 1 and 2 where it is odd (measured).
+fn square(q: DVec3) -> usize {
+    let ix = q.x.floor().rem_euclid(2.0) as usize;
+    let iz = q.z.floor().rem_euclid(2.0) as usize;
+    [[0, 3], [1, 2]][iz][ix]
+}
+
+/// Triangles of side 1 in the x-z plane, one side along x. In the skewed coordinates
+/// u = x − z/√3, w = 2z/√3 each unit cell holds a lower and an upper triangle; the item depends
+/// on (⌊w⌋ − ⌊u⌋) mod 3 and which half (measured: six items around every vertex).
+fn triangular(q: DVec3) -> usize {
+    let s3 = 3f64.sqrt();
+    let u = q.x - q.z / s3;
+    let w = 2.0 * q.z / s3;
+    let (iu, iw) = (u.floor(), w.floor());
+    let upper = (u - iu) + (w - iw) > 1.0;
+    let d = (iw - iu).rem_euclid(3.0) as usize;
+    [[0, 3], [2, 1], [4, 5]][d.min(2)][upper as usize]
+}
+
+/// The half-axis the point is nearest: +x, +y, +z, −x, −y, −z give items 0 to 5.
+fn cubic(q: DVec3) -> usize {
+    let a = q.abs();
+    let (axis, v) = if a.x >= a.y && a.x >= a.z {
+        (0, q.x)
+    } else if a.y >= a.z {
+        (1, q.y)
+    } else {
+        (2, q.z)
+    };
+    axis + if v < 0.0 { 3 } else { 0 }
 }
 
 /// Bricks of `size` (mortar included) with the mortar on the high side of each brick; odd

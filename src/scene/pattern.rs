@@ -40,11 +40,17 @@ impl Pattern {
         }
     }
 
-    /// Checker, hexagon and brick choose among listed items instead of reading a map.
+    /// Block patterns (checker, hexagon, brick, square, triangular, cubic) choose among listed
+    /// items instead of reading a map.
     pub fn is_block(&self) -> bool {
         matches!(
             self.kind,
-            PatternKind::Checker | PatternKind::Hexagon | PatternKind::Brick { .. }
+            PatternKind::Checker
+                | PatternKind::Hexagon
+                | PatternKind::Brick { .. }
+                | PatternKind::Square
+                | PatternKind::Triangular
+                | PatternKind::Cubic
         )
     }
 }
@@ -77,6 +83,14 @@ pub enum PatternKind {
         mortar: f64,
     },
     Hexagon,
+    /// Unit squares in the x-z plane, four items.
+    Square,
+    /// Triangles of side 1 in the x-z plane, six items.
+    Triangular,
+    /// The six pyramids around the half-axes (+x, +y, +z, -x, -y, -z), six items.
+    Cubic,
+    /// `pigment_pattern { ... }`: the pigment's grey (0.297 r + 0.589 g + 0.114 b).
+    PigmentPattern(Box<crate::scene::desc::Pigment>),
     /// bozo, spotted and (as a pigment) bumps: one octave of noise.
     Bozo,
     Granite,

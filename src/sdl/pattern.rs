@@ -15,19 +15,15 @@ use super::value::Value;
 pub(super) const UNSUPPORTED_PATTERNS: &[&str] = &[
     "image_pattern",
     "aoi",
-    "cubic",
     "density_file",
     "facets",
     "magnet",
     "object",
     "pavement",
-    "pigment_pattern",
     "quilted",
     "slope",
     "spiral2",
-    "square",
     "tiling",
-    "triangular",
     "proportion",
 ];
 
@@ -62,6 +58,10 @@ const PATTERNS: &[&str] = &[
     "mandel",
     "julia",
     "average",
+    "square",
+    "triangular",
+    "cubic",
+    "pigment_pattern",
 ];
 
 /// Whether `k` names a pattern of POV-Ray 3.7, evaluated by lancer or not.
@@ -129,6 +129,20 @@ pub fn default_items(kind: &PatternKind) -> Vec<Rgbft> {
     match kind {
         PatternKind::Hexagon => vec![c(0.0, 0.0, 1.0), c(0.0, 1.0, 0.0), c(1.0, 0.0, 0.0)],
         PatternKind::Brick { .. } => vec![c(0.5, 0.5, 0.5), c(0.6, 0.15, 0.15)],
+        PatternKind::Square => vec![
+            c(1.0, 0.0, 0.0),
+            c(0.0, 1.0, 0.0),
+            c(0.0, 0.0, 1.0),
+            c(1.0, 1.0, 0.0),
+        ],
+        PatternKind::Triangular | PatternKind::Cubic => vec![
+            c(1.0, 0.0, 0.0),
+            c(0.0, 1.0, 0.0),
+            c(0.0, 0.0, 1.0),
+            c(1.0, 1.0, 0.0),
+            c(0.0, 1.0, 1.0),
+            c(1.0, 0.0, 1.0),
+        ],
         _ => vec![c(0.0, 0.0, 1.0), c(0.0, 1.0, 0.0)],
     }
 }
@@ -171,6 +185,13 @@ impl Parser {
                 solid: false,
             },
             "cells" => PatternKind::Cells,
+            "square" => PatternKind::Square,
+            "triangular" => PatternKind::Triangular,
+            "cubic" => PatternKind::Cubic,
+            "pigment_pattern" => {
+                self.open_brace("pigment_pattern")?;
+                PatternKind::PigmentPattern(Box::new(self.parse_pigment_body_in_braces()?))
+            }
             "average" => PatternKind::Average,
             "mandel" => PatternKind::Mandel(self.parse_float()?.clamp(0.0, 1e6) as u32),
             "julia" => {
@@ -210,13 +231,7 @@ impl Parser {
 
     fn skip_pattern_args(&mut self, k: &str) -> PResult<()> {
         match k {
-            "cubic" | "square" | "triangular" => {
-                while self.starts_color()? {
-                    self.parse_color()?;
-                    self.skip_optional_comma()?;
-                }
-            }
-            "pigment_pattern" | "object" | "image_pattern" => self.skip_block()?,
+            "object" | "image_pattern" => self.skip_block()?,
             "density_file" => {
                 self.next_tok()?;
                 self.next_tok()?;
