@@ -100,6 +100,15 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
         PatternKind::Square => square(q) as f64,
         PatternKind::Triangular => triangular(q) as f64,
         PatternKind::Cubic => cubic(q) as f64,
+        PatternKind::ImagePattern(im) => {
+            let c = super::pigment::image(im, q);
+            if im.use_alpha {
+                // Measured: opaque pixels give 0, so the value is the transparency.
+                c.transmit
+            } else {
+                0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z
+            }
+        }
         PatternKind::PigmentPattern(p) => {
             let c = super::pigment::eval(p, q);
             0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z

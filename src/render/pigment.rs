@@ -102,7 +102,8 @@ pub fn lookup(map: &ColorMap, v: f64) -> Rgbft {
     map.last().map_or(Rgbft::BLACK, |l| l.1)
 }
 
-fn image(im: &ImageMap, lp: DVec3) -> Rgbft {
+/// The image map's colour at pattern-space point `lp` (also what image patterns read).
+pub fn image(im: &ImageMap, lp: DVec3) -> Rgbft {
     let (u, v) = match im.map_type {
         1 => {
             // Spherical: u starts at +x and runs towards +z (a -y rotation); v = 1 at +y.

@@ -443,8 +443,10 @@ pub struct ImageMap {
     pub interpolate: u32,
     pub width: u32,
     pub height: u32,
-    /// Linear-light pixels, row 0 at the top.
+    /// Linear-light pixels, row 0 at the top (as stored in the file for an image pattern).
     pub pixels: Vec<Rgbft>,
+    /// `use_alpha` (image patterns take their value from the alpha channel).
+    pub use_alpha: bool,
 }
 
 #[derive(Clone, Debug)]

@@ -91,6 +91,9 @@ pub enum PatternKind {
     Cubic,
     /// `pigment_pattern { ... }`: the pigment's grey (0.297 r + 0.589 g + 0.114 b).
     PigmentPattern(Box<crate::scene::desc::Pigment>),
+    /// `image_pattern { ... }`: the image's grey (file values), or with `use_alpha` its
+    /// transparency (1 − alpha).
+    ImagePattern(Arc<crate::scene::desc::ImageMap>),
     /// bozo, spotted and (as a pigment) bumps: one octave of noise.
     Bozo,
     Granite,

@@ -13,7 +13,6 @@ use super::value::Value;
 
 /// Pattern keywords POV-Ray 3.7 has that lancer does not evaluate yet.
 pub(super) const UNSUPPORTED_PATTERNS: &[&str] = &[
-    "image_pattern",
     "aoi",
     "density_file",
     "facets",
@@ -62,6 +61,7 @@ const PATTERNS: &[&str] = &[
     "triangular",
     "cubic",
     "pigment_pattern",
+    "image_pattern",
 ];
 
 /// Whether `k` names a pattern of POV-Ray 3.7, evaluated by lancer or not.
@@ -188,6 +188,11 @@ impl Parser {
             "square" => PatternKind::Square,
             "triangular" => PatternKind::Triangular,
             "cubic" => PatternKind::Cubic,
+            "image_pattern" => {
+                let mut im = self.parse_image_map(span)?;
+                crate::scene::image::to_file_values(&mut im);
+                PatternKind::ImagePattern(std::sync::Arc::new(im))
+            }
             "pigment_pattern" => {
                 self.open_brace("pigment_pattern")?;
                 PatternKind::PigmentPattern(Box::new(self.parse_pigment_body_in_braces()?))
@@ -231,7 +236,7 @@ impl Parser {
 
     fn skip_pattern_args(&mut self, k: &str) -> PResult<()> {
         match k {
-            "object" | "image_pattern" => self.skip_block()?,
+            "object" => self.skip_block()?,
             "density_file" => {
                 self.next_tok()?;
                 self.next_tok()?;

@@ -273,7 +273,7 @@ impl Parser {
         Ok(map)
     }
 
-    fn parse_image_map(&mut self, span: Span) -> PResult<ImageMap> {
+    pub(super) fn parse_image_map(&mut self, span: Span) -> PResult<ImageMap> {
         self.open_brace("image_map")?;
         let mut kind = None;
         if let Some(k) = self.peek_ident()? {
@@ -306,6 +306,7 @@ impl Parser {
             width: 0,
             height: 0,
             pixels: Vec::new(),
+            use_alpha: false,
         };
         let (mut filter_all, mut transmit_all) = (None, None);
         loop {
@@ -335,7 +336,8 @@ impl Parser {
                         self.unsupported("gamma (in image_map)", t.span);
                         self.parse_float()?;
                     }
-                    "use_color" | "use_colour" | "use_index" | "use_alpha" => {}
+                    "use_alpha" => map.use_alpha = true,
+                    "use_color" | "use_colour" | "use_index" => {}
                     _ => {
                         return Err(self.error_at(t.span, format!("unexpected '{k}' in image_map")))
                     }
