@@ -117,15 +117,21 @@ pub fn unit(h: u32) -> f64 {
     (h >> 8) as f64 / (1u32 << 24) as f64
 }
 
-/// A unit gradient for a lattice point: one of many directions, so the noise has no grid-aligned
-/// creases (POV-Ray's older generators also draw from a large random set of gradients).
+/// A gradient for a lattice point: three hash fields of 10 bits as components in [-1, 1],
+/// scaled to unit length, so the noise has no grid-aligned creases (POV-Ray's older generators
+/// also draw from a large random set of gradients). No trigonometry: this runs 8 times per
+/// noise value.
 #[inline]
 fn lattice_gradient(x: i64, y: i64, z: i64, salt: u32) -> DVec3 {
     let h = hash3(x, y, z, salt);
-    let u = unit(h) * 2.0 - 1.0;
-    let phi = unit(h.rotate_left(13) ^ 0x5bd1_e995) * std::f64::consts::TAU;
-    let s = (1.0 - u * u).max(0.0).sqrt();
-    DVec3::new(s * phi.cos(), s * phi.sin(), u)
+    let c = |shift: u32| ((h >> shift) & 1023) as f64 / 511.5 - 1.0;
+    let g = DVec3::new(c(0), c(10), c(20));
+    let len2 = g.length_squared();
+    if len2 < 1e-6 {
+        DVec3::X
+    } else {
+        g / len2.sqrt()
+    }
 }
 
 /// Gradient noise with a cubic (Hermite) blend like Perlin's 1985 noise, about in [-1, 1].
