@@ -10,6 +10,10 @@
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Internal {
     Ellipsoid,
+    /// `f_noise3d`: the default noise generator's value in [0, 1].
+    Noise3d,
+    /// `f_noise_generator(x, y, z, generator)`.
+    NoiseGenerator,
     Paraboloid,
     Ph,
     R,
@@ -125,6 +129,8 @@ impl Internal {
             69 => Internal::Th,
             70 => Internal::Torus,
             71 => Internal::Torus2,
+            76 => Internal::Noise3d,
+            78 => Internal::NoiseGenerator,
             n => Internal::Unknown(n),
         }
     }
@@ -132,8 +138,8 @@ impl Internal {
     /// Number of arguments: x, y, z and the extra parameters.
     pub fn arity(self) -> Option<usize> {
         Some(match self {
-            Internal::Ph | Internal::R | Internal::Th => 3,
-            Internal::Sphere | Internal::Paraboloid => 4,
+            Internal::Ph | Internal::R | Internal::Th | Internal::Noise3d => 3,
+            Internal::Sphere | Internal::Paraboloid | Internal::NoiseGenerator => 4,
             Internal::Torus | Internal::Superellipsoid => 5,
             Internal::Ellipsoid | Internal::Torus2 => 6,
             Internal::RoundedBox => 7,
@@ -194,6 +200,13 @@ impl Internal {
                 let xy = x.abs().powf(2.0 / e) + y.abs().powf(2.0 / e);
                 1.0 - (xy.powf(e / n) + z.abs().powf(2.0 / n)).powf(n / 2.0)
             }
+            // lancer's noise, not POV-Ray's: same range and character, different features
+            // (see render::noise).
+            Internal::Noise3d => crate::render::noise::noise(crate::math::DVec3::new(x, y, z), 2),
+            Internal::NoiseGenerator => crate::render::noise::noise(
+                crate::math::DVec3::new(x, y, z),
+                (g(3) as i64).clamp(1, 3) as u8,
+            ),
             Internal::Unknown(_) => f64::NAN,
         }
     }
@@ -253,8 +266,8 @@ mod tests {
 
     #[test]
     fn unknown_numbers_are_named_in_the_reason() {
-        let r = Internal::from_id(76).unsupported_reason().unwrap();
-        assert!(r.contains("f_noise3d"), "{r}");
+        let r = Internal::from_id(0).unsupported_reason().unwrap();
+        assert!(r.contains("f_algbr_cyl1"), "{r}");
         assert!(Internal::from_id(61).unsupported_reason().is_none());
         assert!(Internal::from_id(500)
             .unsupported_reason()

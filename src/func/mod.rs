@@ -5,7 +5,8 @@
 //! A float function body becomes a [`Expr`] tree (built by the SDL parser, which owns the token
 //! stream), then a small stack bytecode ([`vm::Code`]) that evaluates without allocating.
 //! `internal(N)` bodies point at the built-in functions of `functions.inc` ([`internal`]).
-//! Special functions (`transform`, `pigment`, `pattern`, `spline`) are kept as what they are.
+//! Special functions (`transform`, `pigment`, `pattern`, `spline`) are kept as what they are;
+//! pigment and pattern functions are evaluated by the renderer's pigment and pattern code.
 //!
 //! A function that can be declared but not evaluated by lancer (an unknown internal number, a
 //! pigment function, or a float function calling one of those) carries the reason in
@@ -43,7 +44,15 @@ pub enum FnKind {
     Internal(internal::Internal),
     /// `function { transform { ... } }`: a vector function of a point.
     Transform(Transform),
-    /// `function { pigment {...} }`, `pattern {...}` or `spline {...}`: parsed, not evaluated.
+    /// `function { pigment {...} }`: a colour function of a point.
+    Pigment(Box<crate::scene::desc::Pigment>),
+    /// `function { pattern {...} }`: the pattern's value (a block pattern's item number),
+    /// kept as the pigment it was read as, for its transform.
+    Pattern(Box<crate::scene::desc::Pigment>),
+    /// One component of a vector or colour function's result (`F(x,y,z).y`, `P(..).gray`):
+    /// 0-4 red, green, blue, filter, transmit; 5 POV-Ray's grey (0.297, 0.589, 0.114).
+    Component(Arc<Function>, u8),
+    /// `function { spline {...} }`: parsed, not evaluated.
     Special(&'static str),
 }
 
@@ -165,6 +174,36 @@ impl Function {
         }
     }
 
+    pub fn pigment(p: crate::scene::desc::Pigment) -> Function {
+        Function {
+            params: vec!["x".into(), "y".into(), "z".into()],
+            kind: FnKind::Pigment(Box::new(p)),
+            unsupported: None,
+        }
+    }
+
+    pub fn pattern(p: crate::scene::desc::Pigment) -> Function {
+        Function {
+            params: vec!["x".into(), "y".into(), "z".into()],
+            kind: FnKind::Pattern(Box::new(p)),
+            unsupported: None,
+        }
+    }
+
+    /// The float function giving component `index` (see [`FnKind::Component`]) of `f`.
+    pub fn component(f: Arc<Function>, index: u8) -> Function {
+        Function {
+            params: f.params.clone(),
+            unsupported: f.unsupported.clone(),
+            kind: FnKind::Component(f, index),
+        }
+    }
+
+    /// Whether `.x`, `.red`, `.gray` ... can be taken of this function's result.
+    pub fn has_components(&self) -> bool {
+        matches!(self.kind, FnKind::Transform(_) | FnKind::Pigment(_))
+    }
+
     pub fn special(what: &'static str) -> Function {
         Function {
             params: vec!["x".into(), "y".into(), "z".into()],
@@ -186,7 +225,10 @@ impl Function {
 
     /// Whether the function returns a float (as opposed to a vector or colour).
     pub fn is_float(&self) -> bool {
-        matches!(self.kind, FnKind::Code(_) | FnKind::Internal(_))
+        matches!(
+            self.kind,
+            FnKind::Code(_) | FnKind::Internal(_) | FnKind::Pattern(_) | FnKind::Component(..)
+        )
     }
 
     /// Evaluates a float function. `args` must have [`Function::arity`] values and the function
@@ -196,24 +238,55 @@ impl Function {
         match &self.kind {
             FnKind::Code(c) => c.eval(args),
             FnKind::Internal(f) => f.eval(args),
-            FnKind::Transform(_) | FnKind::Special(_) => f64::NAN,
+            FnKind::Pattern(p) => {
+                use crate::scene::desc::PigmentKind;
+                let world = point(args);
+                let lp = p.transform.inv_point(world);
+                match &p.kind {
+                    PigmentKind::List { pattern, .. } => {
+                        crate::render::pattern::index(pattern, lp) as f64
+                    }
+                    PigmentKind::Mapped { pattern, .. }
+                    | PigmentKind::PigmentMap { pattern, .. } => {
+                        crate::render::pattern::value(pattern, lp)
+                    }
+                    _ => 0.0,
+                }
+            }
+            FnKind::Component(f, i) => match (&f.kind, *i) {
+                (FnKind::Pigment(p), i) => {
+                    let c = crate::render::pigment::eval(p, point(args));
+                    match i {
+                        0..=2 => c.rgb[i as usize],
+                        3 => c.filter,
+                        4 => c.transmit,
+                        _ => 0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z,
+                    }
+                }
+                (FnKind::Transform(t), i) if i < 3 => t.point(point(args))[i as usize],
+                _ => f64::NAN,
+            },
+            FnKind::Transform(_) | FnKind::Pigment(_) | FnKind::Special(_) => f64::NAN,
         }
     }
 
     /// Evaluates any supported function with the result type it has.
     pub fn call(&self, args: &[f64]) -> FnValue {
         match &self.kind {
-            FnKind::Transform(t) => {
-                let p = DVec3::new(
-                    args.first().copied().unwrap_or(0.0),
-                    args.get(1).copied().unwrap_or(0.0),
-                    args.get(2).copied().unwrap_or(0.0),
-                );
-                FnValue::Vector(t.point(p))
-            }
+            FnKind::Transform(t) => FnValue::Vector(t.point(point(args))),
+            FnKind::Pigment(p) => FnValue::Vector(crate::render::pigment::eval(p, point(args)).rgb),
             _ => FnValue::Float(self.eval(args)),
         }
     }
+}
+
+/// The point a function of x, y, z is called at (missing arguments read as 0).
+fn point(args: &[f64]) -> DVec3 {
+    DVec3::new(
+        args.first().copied().unwrap_or(0.0),
+        args.get(1).copied().unwrap_or(0.0),
+        args.get(2).copied().unwrap_or(0.0),
+    )
 }
 
 /// The first reason a function called from `e` cannot be evaluated.

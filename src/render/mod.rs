@@ -6,9 +6,13 @@
 mod aa;
 pub mod camera;
 mod fog;
+pub mod noise;
+pub mod pattern;
 pub mod pigment;
 mod shadow;
+pub mod texture_map;
 pub mod trace;
+pub mod warp;
 
 use std::sync::atomic::{AtomicU64, Ordering};
 

@@ -1,14 +1,14 @@
-//! Evaluating pigments at a world point: patterns, colour maps and image maps.
+//! Evaluating pigments at a world point: colour maps, pigment lists, pigment maps and image
+//! maps over the pattern values of `render::pattern`.
 
 use std::f64::consts::PI;
 
 use crate::color::Rgbft;
 use crate::math::DVec3;
-use crate::scene::desc::{ColorMap, ImageMap, Pattern, Pigment, PigmentKind};
+use crate::scene::desc::{ColorMap, ImageMap, Pigment, PigmentKind};
+use crate::scene::pattern::PatternKind;
 
-/// Keeps points that sit exactly on a checker boundary (a plane at y = 0 computed as -1e-17)
-/// on the same side every time.
-const CHECKER_EPS: f64 = 1e-9;
+use super::pattern;
 
 pub fn eval(p: &Pigment, world: DVec3) -> Rgbft {
     // Most pigments are plain colours, which need no point in pattern space.
@@ -22,36 +22,62 @@ pub fn eval(p: &Pigment, world: DVec3) -> Rgbft {
     };
     match &p.kind {
         PigmentKind::Solid(c) => *c, // answered above
-        PigmentKind::Mapped { pattern, map } => lookup(map, pattern_value(pattern, lp)),
-        PigmentKind::List { pattern, items } => {
-            let i = pattern_index(pattern, lp).min(items.len().saturating_sub(1));
+        PigmentKind::Mapped { pattern: pat, map } => lookup(map, pattern::value(pat, lp)),
+        PigmentKind::List {
+            pattern: pat,
+            items,
+        } => {
+            let i = pattern::index(pat, lp).min(items.len().saturating_sub(1));
+            // Listed pigments live in the outer pigment's space, unwarped.
             items.get(i).map_or(Rgbft::BLACK, |item| eval(item, lp))
+        }
+        PigmentKind::PigmentMap { pattern: pat, map } => {
+            if matches!(pat.kind, PatternKind::Average) {
+                // Average's warps move the point its entries see (measured: blkhole.pov).
+                return average(map, pattern::warped(pat, lp));
+            }
+            pigment_map(map, pattern::value(pat, lp), lp)
         }
         PigmentKind::ImageMap(im) => image(im, lp),
     }
 }
 
-fn pattern_value(p: &Pattern, lp: DVec3) -> f64 {
-    match p {
-        Pattern::Checker => pattern_index(p, lp) as f64,
-        Pattern::Gradient(axis) => {
-            let v = lp.dot(*axis);
-            v - v.floor()
-        }
-        Pattern::Unsupported => 0.5,
+/// `average`: every entry's pigment weighted by its value.
+fn average(map: &[(f64, Pigment)], lp: DVec3) -> Rgbft {
+    let total: f64 = map.iter().map(|e| e.0).sum();
+    if total == 0.0 {
+        return Rgbft::BLACK;
     }
+    let mut sum = [0.0; 5];
+    for (w, p) in map {
+        for (s, v) in sum.iter_mut().zip(eval(p, lp).to_array()) {
+            *s += v * w / total;
+        }
+    }
+    Rgbft::from_array(sum)
 }
 
-fn pattern_index(p: &Pattern, lp: DVec3) -> usize {
-    match p {
-        Pattern::Checker => {
-            let s = (lp.x + CHECKER_EPS).floor()
-                + (lp.y + CHECKER_EPS).floor()
-                + (lp.z + CHECKER_EPS).floor();
-            s.rem_euclid(2.0) as usize
-        }
-        other => (pattern_value(other, lp) >= 0.5) as usize,
+/// Pigment map lookup: like a colour map, but only the one or two pigments that the value
+/// falls between are evaluated.
+fn pigment_map(map: &[(f64, Pigment)], v: f64, lp: DVec3) -> Rgbft {
+    let Some(first) = map.first() else {
+        return Rgbft::BLACK;
+    };
+    if v <= first.0 {
+        return eval(&first.1, lp);
     }
+    for w in map.windows(2) {
+        let (a, b) = (&w[0], &w[1]);
+        if v <= b.0 {
+            let span = b.0 - a.0;
+            if span <= 0.0 {
+                return eval(&b.1, lp);
+            }
+            let t = (v - a.0) / span;
+            return eval(&a.1, lp).lerp(eval(&b.1, lp), t);
+        }
+    }
+    map.last().map_or(Rgbft::BLACK, |l| eval(&l.1, lp))
 }
 
 /// Colour map lookup: flat beyond the first and last entries, linear in between.
@@ -76,7 +102,8 @@ pub fn lookup(map: &ColorMap, v: f64) -> Rgbft {
     map.last().map_or(Rgbft::BLACK, |l| l.1)
 }
 
-fn image(im: &ImageMap, lp: DVec3) -> Rgbft {
+/// The image map's colour at pattern-space point `lp` (also what image patterns read).
+pub fn image(im: &ImageMap, lp: DVec3) -> Rgbft {
     let (u, v) = match im.map_type {
         1 => {
             // Spherical: u starts at +x and runs towards +z (a -y rotation); v = 1 at +y.
@@ -133,14 +160,6 @@ fn image(im: &ImageMap, lp: DVec3) -> Rgbft {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn checker_alternates_and_is_stable_at_zero() {
-        let p = Pattern::Checker;
-        assert_eq!(pattern_index(&p, DVec3::new(0.5, -1e-15, 0.5)), 0);
-        assert_eq!(pattern_index(&p, DVec3::new(1.5, 0.0, 0.5)), 1);
-        assert_eq!(pattern_index(&p, DVec3::new(-0.5, 0.0, 0.5)), 1);
-    }
 
     #[test]
     fn color_map_interpolates_and_clamps() {

@@ -4,7 +4,7 @@
 use crate::math::{DVec3, Ray};
 use crate::scene::light::{AreaLight, Light};
 
-use super::pigment;
+use super::texture_map;
 use super::trace::{TraceCtx, Tracer};
 
 /// Corner samples within this (summed over channels) count as the same light, so an adaptive
@@ -134,7 +134,7 @@ impl<'a> Tracer<'a> {
             'hits: for h in &ctx.surface[start..] {
                 // Through each layer of a layered texture in turn.
                 for layer in h.obj.texture_at(h).layers() {
-                    let c = pigment::eval(&layer.pigment, ray.at(h.t));
+                    let c = texture_map::color_at(layer, ray.at(h.t), false);
                     if c.is_opaque() {
                         att = DVec3::ZERO;
                         break 'hits;

@@ -12,7 +12,7 @@ use crate::scene::build::{Light, Scene};
 use crate::scene::desc::Interior;
 use crate::scene::object::{Scratch, SurfaceHit};
 
-use super::pigment;
+use super::{pigment, texture_map};
 
 /// Per-thread scratch buffers so tracing allocates nothing per ray.
 pub type TraceCtx<'a> = Scratch<'a>;
@@ -209,13 +209,9 @@ impl<'a> Tracer<'a> {
         let entering = n.dot(dir) < 0.0;
         let nf = if entering { n } else { -n };
         let top = obj.texture_at(h);
-        let eval = |tex: &crate::scene::desc::Texture| match tex.pigment.quick {
-            Some(quick) if q.quick_colors => quick,
-            _ => pigment::eval(&tex.pigment, p),
-        };
         if !q.lighting {
             return Seen {
-                rgb: eval(top).rgb,
+                rgb: texture_map::color_at(top, p, q.quick_colors).rgb,
                 clear: 0.0,
             };
         }
@@ -241,31 +237,39 @@ impl<'a> Tracer<'a> {
         let mut last = Rgbft::BLACK;
         let mut conserve = false;
         for tex in top.layers() {
-            let c = eval(tex);
-            let fin = &tex.finish;
-            col += through * self.layer_light(&c, fin, dir, nf, mirror, ctx);
-            let refl = &fin.reflection;
-            if !refl.is_zero() && q.reflection {
-                // Where a ray leaves an object at a point still inside another object (a wall
-                // plane whose inside holds the camera, say), POV-Ray takes the leaving object's
-                // ior for both sides of the Fresnel term, which makes it zero; elsewhere the
-                // exit is an ordinary glass-to-air interface. Measured: tests/probes.
-                let f = if refl.min == refl.max {
-                    // The blend factor does not matter; skip the powf on this per-hit path.
-                    0.0
-                } else if !refl.fresnel {
-                    (1.0 - cos_i).powf(refl.falloff)
-                } else if entering || !s.inside_other(p, obj) {
-                    fresnel(cos_i, n1, n2)
-                } else {
-                    0.0
-                };
-                let amount = refl.min + (refl.max - refl.min) * f;
-                refl_amount += amount;
-                refl_tinted += amount * (DVec3::ONE + (c.rgb - DVec3::ONE) * refl.metallic);
-            }
+            // A patterned texture is shaded as the plain textures it is made of here, each
+            // weighted (texture_map blends); a plain one is itself with weight 1.
+            let mut layer_c = [0.0; 5];
+            texture_map::blend(tex, p, q.quick_colors, 1.0, &mut |c, fin, w| {
+                col += through * w * self.layer_light(&c, fin, dir, nf, mirror, ctx);
+                let refl = &fin.reflection;
+                if !refl.is_zero() && q.reflection {
+                    // Where a ray leaves an object at a point still inside another object (a
+                    // wall plane whose inside holds the camera, say), POV-Ray takes the leaving
+                    // object's ior for both sides of the Fresnel term, which makes it zero;
+                    // elsewhere the exit is an ordinary glass-to-air interface. Measured:
+                    // tests/probes.
+                    let f = if refl.min == refl.max {
+                        // The blend factor does not matter; skip the powf on this per-hit path.
+                        0.0
+                    } else if !refl.fresnel {
+                        (1.0 - cos_i).powf(refl.falloff)
+                    } else if entering || !s.inside_other(p, obj) {
+                        fresnel(cos_i, n1, n2)
+                    } else {
+                        0.0
+                    };
+                    let amount = (refl.min + (refl.max - refl.min) * f) * w;
+                    refl_amount += amount;
+                    refl_tinted += amount * (DVec3::ONE + (c.rgb - DVec3::ONE) * refl.metallic);
+                }
+                for (l, v) in layer_c.iter_mut().zip(c.to_array()) {
+                    *l += v * w;
+                }
+                conserve = fin.conserve_energy;
+            });
+            let c = Rgbft::from_array(layer_c);
             through *= c.transmitted();
-            conserve = fin.conserve_energy;
             last = c;
         }
         if refl_amount != DVec3::ZERO {

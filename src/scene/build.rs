@@ -13,7 +13,7 @@ use crate::math::{Aabb, DVec3, Ray, Transform};
 use crate::render::camera::Camera;
 use crate::scene::desc::{
     FogDesc, ImageMap, Interior, MeshData, ObjectDesc, Pigment, PigmentKind, SceneDesc, ShapeDesc,
-    Texture,
+    Texture, TextureEntries,
 };
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
 use crate::scene::shapes::make_shape;
@@ -68,6 +68,7 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
         images: HashMap::new(),
         lights: Vec::new(),
         gamma,
+        noise_generator: desc.global.noise_generator,
     };
     let mut objects = Vec::new();
     for o in &desc.objects {
@@ -126,6 +127,7 @@ struct Ctx {
     images: HashMap<*const ImageMap, (Arc<ImageMap>, bool)>,
     lights: Vec<Light>,
     gamma: GammaMode,
+    noise_generator: u8,
 }
 
 impl Ctx {
@@ -153,11 +155,26 @@ impl Ctx {
 
     /// Converts a pigment's images to working space; returns whether it may let light through.
     fn pigment(&mut self, p: &mut Pigment) -> bool {
+        // Patterns that named no noise generator use the scene's.
+        let gen = self.noise_generator;
+        match &mut p.kind {
+            PigmentKind::Mapped { pattern, .. }
+            | PigmentKind::List { pattern, .. }
+            | PigmentKind::PigmentMap { pattern, .. }
+                if pattern.noise_generator == 0 =>
+            {
+                pattern.noise_generator = gen
+            }
+            _ => {}
+        }
         match &mut p.kind {
             PigmentKind::Solid(c) => !c.is_opaque(),
             PigmentKind::Mapped { map, .. } => map.iter().any(|(_, c)| !c.is_opaque()),
             PigmentKind::List { items, .. } => {
                 items.iter_mut().fold(false, |t, i| self.pigment(i) | t)
+            }
+            PigmentKind::PigmentMap { map, .. } => {
+                map.iter_mut().fold(false, |t, (_, i)| self.pigment(i) | t)
             }
             PigmentKind::ImageMap(im) => {
                 let (converted, transparent) = self.image(im);
@@ -171,13 +188,34 @@ impl Ctx {
     /// layer of a layered one.
     fn texture(&mut self, t: &Texture) -> (Arc<Texture>, bool) {
         let mut t = t.clone();
+        let transparent = self.prepare_texture(&mut t);
+        (Arc::new(t), transparent)
+    }
+
+    /// Readies a texture's pigments (patterned ones' entries too); whether light may pass.
+    fn prepare_texture(&mut self, t: &mut Texture) -> bool {
         let mut transparent = true;
-        let mut layer = Some(&mut t);
+        let mut layer = Some(t);
         while let Some(l) = layer {
-            transparent &= self.pigment(&mut l.pigment);
+            let mut this = self.pigment(&mut l.pigment);
+            if let Some(tp) = &mut l.pattern {
+                if tp.pattern.noise_generator == 0 {
+                    tp.pattern.noise_generator = self.noise_generator;
+                }
+                // Light may pass where any of the textures lets it.
+                this = match &mut tp.entries {
+                    TextureEntries::List(items) => items
+                        .iter_mut()
+                        .fold(false, |a, e| self.prepare_texture(e) | a),
+                    TextureEntries::Map(map) => map
+                        .iter_mut()
+                        .fold(false, |a, (_, e)| self.prepare_texture(e) | a),
+                };
+            }
+            transparent &= this;
             layer = l.under.as_deref_mut();
         }
-        (Arc::new(t), transparent)
+        transparent
     }
 
     fn object(

@@ -11,6 +11,7 @@ use std::sync::Arc;
 
 use crate::color::Rgbft;
 use crate::math::{DVec3, Transform};
+pub use crate::scene::pattern::Pattern;
 
 #[derive(Clone, Debug)]
 pub struct SceneDesc {
@@ -60,6 +61,8 @@ pub struct GlobalSettings {
     pub max_trace_level: u32,
     pub adc_bailout: f64,
     pub ambient_light: DVec3,
+    /// `noise_generator` for patterns that do not name their own.
+    pub noise_generator: u8,
 }
 
 impl Default for GlobalSettings {
@@ -69,6 +72,7 @@ impl Default for GlobalSettings {
             max_trace_level: 5,
             adc_bailout: 1.0 / 255.0,
             ambient_light: DVec3::ONE,
+            noise_generator: 2,
         }
     }
 }
@@ -358,6 +362,27 @@ pub struct Texture {
     pub finish: Finish,
     /// A layered texture's next layer down (`texture {A} texture {B}` puts B over A).
     pub under: Option<Box<Texture>>,
+    /// A patterned texture (`texture { checker texture {..} texture {..} }`, `texture_map`):
+    /// when set, it decides the pigment and finish and this layer's own are unused.
+    pub pattern: Option<Box<TexturePattern>>,
+}
+
+/// The pattern of a patterned texture and the textures it chooses or blends between, which
+/// are evaluated in the pattern's space.
+#[derive(Clone, Debug)]
+pub struct TexturePattern {
+    pub pattern: Pattern,
+    /// Pattern space to world space.
+    pub transform: Transform,
+    pub entries: TextureEntries,
+}
+
+#[derive(Clone, Debug)]
+pub enum TextureEntries {
+    /// A block pattern's listed textures.
+    List(Vec<Texture>),
+    /// `texture_map`, sorted by value.
+    Map(Vec<(f64, Texture)>),
 }
 
 impl Default for Texture {
@@ -367,6 +392,7 @@ impl Default for Texture {
             normal: None,
             finish: Finish::default(),
             under: None,
+            pattern: None,
         }
     }
 }
@@ -374,6 +400,9 @@ impl Default for Texture {
 impl Texture {
     pub fn apply_transform(&mut self, t: &Transform) {
         self.pigment.apply_transform(t);
+        if let Some(tp) = &mut self.pattern {
+            tp.transform = tp.transform.then(t);
+        }
         if let Some(n) = &mut self.normal {
             n.transform = n.transform.then(t);
         }
@@ -429,25 +458,21 @@ pub enum PigmentKind {
         pattern: Pattern,
         map: ColorMap,
     },
-    /// A discrete pattern choosing between whole pigments (checker).
+    /// A discrete pattern choosing between whole pigments (checker, hexagon, brick).
     List {
         pattern: Pattern,
         items: Vec<Pigment>,
+    },
+    /// `pigment_map`: a continuous pattern blending whole pigments, sorted by value.
+    PigmentMap {
+        pattern: Pattern,
+        map: Vec<(f64, Pigment)>,
     },
     ImageMap(Arc<ImageMap>),
 }
 
 /// Colour map entries sorted by value, as POV-Ray's `color_map { [v colour] ... }`.
 pub type ColorMap = Vec<(f64, Rgbft)>;
-
-#[derive(Clone, Debug, PartialEq)]
-pub enum Pattern {
-    Checker,
-    /// `gradient <v>`: the fractional part of p · v.
-    Gradient(DVec3),
-    /// A pattern lancer does not evaluate yet (already warned about): the middle of its map.
-    Unsupported,
-}
 
 #[derive(Clone, Debug)]
 pub struct ImageMap {
@@ -458,8 +483,10 @@ pub struct ImageMap {
     pub interpolate: u32,
     pub width: u32,
     pub height: u32,
-    /// Linear-light pixels, row 0 at the top.
+    /// Linear-light pixels, row 0 at the top (as stored in the file for an image pattern).
     pub pixels: Vec<Rgbft>,
+    /// `use_alpha` (image patterns take their value from the alpha channel).
+    pub use_alpha: bool,
 }
 
 #[derive(Clone, Debug)]

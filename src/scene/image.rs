@@ -15,6 +15,36 @@ pub fn srgb_to_linear(c: f64) -> f64 {
     }
 }
 
+/// Linear back to the sRGB-encoded value (image patterns read the file's own values).
+pub fn linear_to_srgb(c: f64) -> f64 {
+    if c <= 0.0031308 {
+        c * 12.92
+    } else {
+        1.055 * c.powf(1.0 / 2.4) - 0.055
+    }
+}
+
+/// Re-encodes a loaded image's pixels to the values stored in the file, for `image_pattern`
+/// (measured: POV-Ray's value is the grey of the raw 8-bit values, 128 giving 0.502). Float
+/// images (EXR, HDR) are stored linear and stay so.
+pub fn to_file_values(map: &mut ImageMap) {
+    let float = map
+        .path
+        .extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("exr") || e.eq_ignore_ascii_case("hdr"));
+    if float {
+        return;
+    }
+    for p in &mut map.pixels {
+        p.rgb = crate::math::DVec3::new(
+            linear_to_srgb(p.rgb.x),
+            linear_to_srgb(p.rgb.y),
+            linear_to_srgb(p.rgb.z),
+        );
+    }
+}
+
 pub fn load_image_map(path: &Path, map: &mut ImageMap) -> Result<(), String> {
     let img =
         image::open(path).map_err(|e| format!("cannot read image {}: {e}", path.display()))?;

@@ -5,4 +5,5 @@ pub mod desc;
 pub mod image;
 pub mod light;
 pub mod object;
+pub mod pattern;
 pub mod shapes;

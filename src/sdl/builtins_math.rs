@@ -328,9 +328,14 @@ impl Parser {
                 Ok(Value::vec3(m * p))
             }
             "vturbulence" => {
-                // Needs POV-Ray's noise function, which lancer does not have yet.
-                self.unsupported_now("vturbulence (gives <0,0,0> here)", span);
-                Ok(Value::vec3(DVec3::ZERO))
+                // vturbulence(lambda, omega, octaves, point): lancer's turbulence, same kind as
+                // POV-Ray's but not its values (see render::noise).
+                let (lambda, omega, octaves) = (fl(self, 0)?, fl(self, 1)?, fl(self, 2)?);
+                let p = ve(self, 3)?;
+                let octaves = (octaves as i64).clamp(1, 10) as u32;
+                Ok(Value::vec3(crate::render::noise::turbulence_vec(
+                    p, octaves, omega, lambda, 2,
+                )))
             }
             "seed" => {
                 let s = c_int(fl(self, 0)?) as u32;

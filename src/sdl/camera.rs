@@ -139,8 +139,11 @@ impl Parser {
                     // Only changes height-field output, which lancer does not write.
                     self.optional_bool()?;
                 }
-                "max_intersections" | "number_of_waves" | "noise_generator" | "mm_per_unit"
-                | "subsurface" => {
+                "noise_generator" => {
+                    let v = self.parse_float()?;
+                    self.scene.global.noise_generator = (v as i64).clamp(1, 3) as u8;
+                }
+                "max_intersections" | "number_of_waves" | "mm_per_unit" | "subsurface" => {
                     if self.peek_sym()? == Some(Sym::LBrace) {
                         self.skip_block()?;
                     } else {

@@ -331,8 +331,15 @@ impl Parser {
                 self.advance();
                 Ok(Value::Fog(Box::new(self.parse_fog_block()?)))
             }
-            "pigment_map" | "normal_map" | "slope_map" | "texture_map" | "density_map"
-            | "density" | "media" | "rainbow" => {
+            "pigment_map" => {
+                self.advance();
+                Ok(Value::PigmentMap(Box::new(self.parse_pigment_map()?)))
+            }
+            "texture_map" => {
+                self.advance();
+                Ok(Value::TextureMap(Box::new(self.parse_texture_map()?)))
+            }
+            "normal_map" | "slope_map" | "density_map" | "density" | "media" | "rainbow" => {
                 self.advance();
                 self.unsupported(k, t.span);
                 self.skip_block()?;
@@ -357,6 +364,8 @@ impl Parser {
                     | Value::Camera(_)
                     | Value::Transform(_)
                     | Value::ColorMap(_)
+                    | Value::PigmentMap(_)
+                    | Value::TextureMap(_)
                     | Value::Material(_)
                     | Value::SkySphere(_)
                     | Value::Fog(_)

@@ -130,14 +130,20 @@ impl Parser {
                 self.advance();
                 Function::transform(self.parse_transform_block()?)
             }
-            Some(k) => {
+            Some("pigment") => {
+                self.advance();
+                Function::pigment(self.parse_pigment_block(None)?)
+            }
+            Some("pattern") => {
+                // A pattern body reads like a pigment's; only its pattern is used.
+                self.advance();
+                self.open_brace("pattern")?;
+                Function::pattern(self.parse_pigment_body_in_braces()?)
+            }
+            Some(_) => {
                 self.advance();
                 self.skip_block()?;
-                Function::special(match k {
-                    "pigment" => "pigment",
-                    "pattern" => "pattern",
-                    _ => "spline",
-                })
+                Function::special("spline")
             }
             None => {
                 let mut scope = FnScope {
@@ -334,6 +340,39 @@ impl Parser {
             }
             Some(Value::Function(f)) => {
                 let args = self.fn_args(s, &k)?;
+                if f.has_components() && self.raw_peek_sym()? == Some(Sym::Dot) {
+                    self.advance();
+                    let c = self.next_tok()?;
+                    let idx = match &c.tok {
+                        Tok::Ident(n) => match &**n {
+                            "x" | "u" | "red" => Some(0),
+                            "y" | "v" | "green" => Some(1),
+                            "z" | "blue" => Some(2),
+                            "t" | "filter" => Some(3),
+                            "transmit" => Some(4),
+                            "gray" | "grey" => Some(5),
+                            _ => None,
+                        },
+                        _ => None,
+                    };
+                    let Some(idx) = idx else {
+                        return Err(self.error_at(c.span, format!("unknown component {}", c.tok)));
+                    };
+                    return Ok(Expr::Call(
+                        Arc::new(Function::component(f.clone(), idx)),
+                        args,
+                    ));
+                }
+                if !f.is_float()
+                    && f.unsupported.is_some()
+                    && self.raw_peek_sym()? == Some(Sym::Dot)
+                {
+                    // `P(x,y,z).gray` of a pigment function lancer cannot evaluate: the call
+                    // makes the whole function unsupported, reported where it is used.
+                    self.advance();
+                    self.next_tok()?;
+                    return Ok(Expr::Call(f, args));
+                }
                 if !f.is_float() {
                     return Err(self.error_at(
                         span,

@@ -18,6 +18,7 @@ pub mod limits;
 pub mod mesh2;
 pub mod object;
 pub mod parser;
+pub mod pattern;
 pub mod source;
 pub mod spline;
 pub mod strings;
@@ -25,6 +26,7 @@ pub mod sweep;
 pub mod switch;
 pub mod text;
 pub mod texture;
+pub mod texture_block;
 pub mod value;
 
 use crate::scene::desc::{CameraDesc, GlobalSettings, SceneDesc, Texture};

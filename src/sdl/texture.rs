@@ -1,5 +1,5 @@
-//! Texture statements: pigment (colours, patterns, colour maps, image maps), finish, normal,
-//! texture and interior blocks.
+//! Texture statements: pigment (colours, patterns, colour maps, pigment maps, image maps),
+//! finish, normal and interior blocks. Texture blocks are in texture_block.rs.
 
 use std::sync::Arc;
 
@@ -7,84 +7,14 @@ use crate::color::Rgbft;
 use crate::math::DVec3;
 use crate::scene::desc::{
     ColorMap, Finish, ImageMap, Normal, NormalKind, Pattern, Pigment, PigmentKind, Reflection,
-    Texture,
 };
+use crate::scene::pattern::PatternKind;
 
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
+use super::pattern::{default_items, default_map};
 use super::source::Span;
 use super::value::Value;
-
-/// Pattern keywords POV-Ray 3.7 has that lancer does not evaluate yet.
-const UNSUPPORTED_PATTERNS: &[&str] = &[
-    "agate",
-    "image_pattern",
-    "aoi",
-    "average",
-    "boxed",
-    "bozo",
-    "brick",
-    "bumps",
-    "cells",
-    "crackle",
-    "cubic",
-    "cylindrical",
-    "density_file",
-    "dents",
-    "facets",
-    "function",
-    "gradient_x",
-    "granite",
-    "hexagon",
-    "julia",
-    "leopard",
-    "magnet",
-    "mandel",
-    "marble",
-    "object",
-    "onion",
-    "pavement",
-    "pigment_pattern",
-    "planar",
-    "quilted",
-    "radial",
-    "ripples",
-    "slope",
-    "spherical",
-    "spiral1",
-    "spiral2",
-    "spotted",
-    "square",
-    "tiling",
-    "triangular",
-    "waves",
-    "wood",
-    "wrinkles",
-    "proportion",
-];
-
-/// Pattern modifiers that change the picture and that lancer reads past with a warning.
-/// Pattern modifiers followed by one value.
-const UNSUPPORTED_MODIFIERS: &[&str] = &[
-    "turbulence",
-    "octaves",
-    "omega",
-    "lambda",
-    "noise_generator",
-    "agate_turb",
-    "metric",
-    "offset",
-    "form",
-    "control0",
-    "control1",
-    "interpolate",
-    "orientation",
-    "dist_exp",
-    "strength",
-    "mortar",
-    "brick_size",
-    "exponent",
-];
 
 /// Keywords that start a colour expression.
 const COLOR_KEYWORDS: &[&str] = &[
@@ -93,7 +23,17 @@ const COLOR_KEYWORDS: &[&str] = &[
 ];
 
 /// Pattern modifiers that stand alone.
-const UNSUPPORTED_FLAGS: &[&str] = &["uv_mapping", "solid"];
+const UNSUPPORTED_FLAGS: &[&str] = &["uv_mapping"];
+
+/// What a pigment body has said so far besides its pattern.
+enum Form {
+    Solid(Rgbft),
+    /// An explicit colour map (None: the pattern's default).
+    Colors(Option<ColorMap>),
+    Items(Vec<Pigment>),
+    Pigments(Vec<(f64, Pigment)>),
+    Image(Arc<ImageMap>),
+}
 
 impl Parser {
     /// Whether the next token starts a colour (so `pigment { Red }` is a solid colour): a colour
@@ -115,6 +55,17 @@ impl Parser {
     /// `pigment { ... }` after the keyword. `base` is the pigment being modified, if any.
     pub(super) fn parse_pigment_block(&mut self, base: Option<Pigment>) -> PResult<Pigment> {
         self.open_brace("pigment")?;
+        self.parse_pigment_body(base, Sym::RBrace)
+    }
+
+    /// A pigment body whose opening brace was just read, up to its closing brace.
+    pub(super) fn parse_pigment_body_in_braces(&mut self) -> PResult<Pigment> {
+        self.parse_pigment_body(None, Sym::RBrace)
+    }
+
+    /// The inside of a pigment up to and including `close` (`}` for a block, `]` for a
+    /// pigment map entry).
+    fn parse_pigment_body(&mut self, base: Option<Pigment>, close: Sym) -> PResult<Pigment> {
         let mut p = base.unwrap_or_else(|| Pigment::solid(Rgbft::BLACK));
         if let Some(k) = self.peek_ident()? {
             if let Some(Value::Pigment(id)) = self.lookup(&k) {
@@ -125,87 +76,83 @@ impl Parser {
         if self.starts_color()? {
             p = Pigment::solid(self.parse_color()?);
         }
-        let mut freq_phase = (1.0, 0.0);
+        let (mut pat, mut form) = split_pigment(p.kind);
+        p.kind = PigmentKind::Solid(Rgbft::BLACK);
         loop {
+            if let Some(k) = self.peek_ident()? {
+                if COLOR_KEYWORDS.contains(&&*k) {
+                    // A colour after other items (`pigment { P1 color Red }`) replaces them.
+                    form = Form::Solid(self.parse_color()?);
+                    pat = None;
+                    continue;
+                }
+            }
             let t = self.next_tok()?;
             let Tok::Ident(k) = &t.tok else {
-                if t.tok == Tok::Sym(Sym::RBrace) {
+                if t.tok == Tok::Sym(close) {
                     break;
                 }
                 return Err(self.unexpected(&t, "in pigment"));
             };
             if let Some(tr) = self.transform_item(k)? {
+                // Listed and mapped pigments are evaluated in this pigment's space, so they
+                // follow its transforms without being changed themselves.
                 p.apply_transform(&tr);
                 continue;
             }
+            if let Some(kind) = self.pattern_keyword(k, t.span)? {
+                let mut np = Pattern::new(kind);
+                if let Some(old) = pat.take() {
+                    // Modifiers written before the pattern keyword still count.
+                    np.turbulence = old.turbulence;
+                    np.warps = old.warps;
+                    np.frequency = old.frequency;
+                    np.phase = old.phase;
+                    np.noise_generator = old.noise_generator;
+                } else {
+                    np.noise_generator = 0;
+                }
+                if np.is_block() {
+                    form = Form::Items(self.parse_pattern_items(&np.kind)?);
+                } else if !matches!(form, Form::Colors(Some(_)) | Form::Pigments(_)) {
+                    form = Form::Colors(None);
+                }
+                pat = Some(np);
+                continue;
+            }
+            let space = p.transform;
+            let pm = pat.get_or_insert_with(|| {
+                let mut u = Pattern::new(PatternKind::Unsupported);
+                u.noise_generator = 0;
+                u
+            });
+            if self.pattern_modifier(k, t.span, pm, &space)? {
+                continue;
+            }
             match &**k {
-                "checker" => {
-                    let mut items = vec![
-                        Pigment::solid(Rgbft::rgb(DVec3::new(0.0, 0.0, 1.0))),
-                        Pigment::solid(Rgbft::rgb(DVec3::new(0.0, 1.0, 0.0))),
-                    ];
-                    for item in items.iter_mut() {
-                        if self.eat_keyword("pigment")? {
-                            *item = self.parse_pigment_block(None)?;
-                        } else if self.starts_color()? {
-                            *item = Pigment::solid(self.parse_color()?);
-                        } else {
-                            break;
-                        }
-                        self.skip_optional_comma()?;
-                    }
-                    p.kind = PigmentKind::List {
-                        pattern: Pattern::Checker,
-                        items,
-                    };
-                }
-                "gradient" => {
-                    let axis = self.parse_vector()?;
-                    p.kind = PigmentKind::Mapped {
-                        pattern: Pattern::Gradient(axis),
-                        map: self.current_map(&p),
-                    };
-                }
-                "color_map" | "colour_map" => {
-                    let map = self.parse_color_map()?;
-                    match &mut p.kind {
-                        PigmentKind::Mapped { map: m, .. } => *m = map,
-                        _ => {
-                            p.kind = PigmentKind::Mapped {
-                                pattern: Pattern::Gradient(DVec3::X),
-                                map,
-                            }
-                        }
+                "color_map" | "colour_map" => form = Form::Colors(Some(self.parse_color_map()?)),
+                "pigment_map" => {
+                    if pat
+                        .as_ref()
+                        .is_some_and(|q| matches!(q.kind, PatternKind::Unsupported))
+                    {
+                        // The entries of an unsupported pattern (`average`'s weights) may not
+                        // follow the usual form; the pattern was already warned about.
+                        self.skip_block()?;
+                    } else {
+                        let weights_optional = pat
+                            .as_ref()
+                            .is_some_and(|q| matches!(q.kind, PatternKind::Average));
+                        form = Form::Pigments(self.parse_pigment_map_entries(weights_optional)?);
                     }
                 }
-                "image_map" => {
-                    p.kind = PigmentKind::ImageMap(Arc::new(self.parse_image_map(t.span)?))
-                }
-                "frequency" => freq_phase.0 = self.parse_float()?,
-                "phase" => freq_phase.1 = self.parse_float()?,
+                "image_map" => form = Form::Image(Arc::new(self.parse_image_map(t.span)?)),
                 "quick_color" | "quick_colour" => {
                     p.quick = Some(self.parse_color()?);
                 }
-                "warp" => {
-                    self.unsupported("warp", t.span);
-                    self.skip_block()?;
-                }
-                "pigment_map" | "color_map_entries" => {
+                "color_map_entries" => {
                     self.unsupported(k, t.span);
                     self.skip_block()?;
-                }
-                "ramp_wave" | "sine_wave" | "triangle_wave" | "scallop_wave" | "cubic_wave" => {
-                    if &**k != "ramp_wave" {
-                        self.unsupported(k, t.span);
-                    }
-                }
-                "poly_wave" => {
-                    self.unsupported(k, t.span);
-                    self.parse_float()?;
-                }
-                k if UNSUPPORTED_MODIFIERS.contains(&k) => {
-                    self.unsupported(k, t.span);
-                    self.parse_expr()?;
                 }
                 k if UNSUPPORTED_FLAGS.contains(&k) => self.unsupported(k, t.span),
                 "interior" | "exterior" => {
@@ -215,70 +162,67 @@ impl Parser {
                     self.skip_optional_comma()?;
                     self.parse_float()?;
                 }
-                k if UNSUPPORTED_PATTERNS.contains(&k) => {
-                    self.unsupported(&format!("{k} pattern"), t.span);
-                    self.skip_pattern_args(k)?;
-                    p.kind = PigmentKind::Mapped {
-                        pattern: Pattern::Unsupported,
-                        map: self.current_map(&p),
-                    };
-                }
                 _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in pigment"))),
             }
         }
-        if freq_phase != (1.0, 0.0) {
-            if let PigmentKind::Mapped {
-                pattern: Pattern::Gradient(a),
-                ..
-            } = &mut p.kind
-            {
-                // gradient with frequency f is the same ramp over a vector f times as long.
-                *a *= freq_phase.0;
-            }
-            if freq_phase.1 != 0.0 {
-                let span = self.cur_span();
-                self.unsupported("phase", span);
-            }
-        }
+        p.kind = join_pigment(pat, form);
         Ok(p)
     }
 
-    fn current_map(&self, p: &Pigment) -> ColorMap {
-        match &p.kind {
-            PigmentKind::Mapped { map, .. } => map.clone(),
-            // POV-Ray's default map for most patterns is a black-to-white ramp.
-            _ => vec![(0.0, Rgbft::BLACK), (1.0, Rgbft::rgb(DVec3::ONE))],
+    /// The colours or pigments listed after a block pattern's keyword, defaults filling in.
+    fn parse_pattern_items(&mut self, kind: &PatternKind) -> PResult<Vec<Pigment>> {
+        let mut items: Vec<Pigment> = default_items(kind)
+            .into_iter()
+            .map(Pigment::solid)
+            .collect();
+        for item in items.iter_mut() {
+            if self.eat_keyword("pigment")? {
+                *item = self.parse_pigment_block(None)?;
+            } else if self.starts_color()? {
+                *item = Pigment::solid(self.parse_color()?);
+            } else {
+                break;
+            }
+            self.skip_optional_comma()?;
         }
+        Ok(items)
     }
 
-    fn skip_pattern_args(&mut self, k: &str) -> PResult<()> {
-        match k {
-            "brick" | "hexagon" | "cubic" | "square" | "triangular" => {
-                while self.starts_color()? {
-                    self.parse_color()?;
+    /// `pigment_map { [v PIGMENT_BODY] ... }` after the keyword, or a declared one.
+    pub(super) fn parse_pigment_map(&mut self) -> PResult<Vec<(f64, Pigment)>> {
+        self.parse_pigment_map_entries(false)
+    }
+
+    /// `weights_optional`: `average`'s entries may leave out their weight (1).
+    fn parse_pigment_map_entries(
+        &mut self,
+        weights_optional: bool,
+    ) -> PResult<Vec<(f64, Pigment)>> {
+        self.open_brace("pigment_map")?;
+        let mut map = Vec::new();
+        loop {
+            let t = self.next_tok()?;
+            match &t.tok {
+                Tok::Sym(Sym::RBrace) => break,
+                Tok::Sym(Sym::LBracket) => {
+                    let v = if weights_optional && !self.starts_float()? {
+                        1.0
+                    } else {
+                        self.parse_float()?
+                    };
                     self.skip_optional_comma()?;
+                    let pig = self.parse_pigment_body(None, Sym::RBracket)?;
+                    map.push((v, pig));
                 }
+                Tok::Ident(k) => match self.lookup(k) {
+                    Some(Value::PigmentMap(m)) => map = (**m).clone(),
+                    _ => return Err(self.unexpected(&t, "in pigment_map")),
+                },
+                _ => return Err(self.unexpected(&t, "in pigment_map; expected '[value pigment]'")),
             }
-            "function" | "pigment_pattern" | "object" | "density_file" | "image_pattern" => {
-                if k == "density_file" {
-                    self.next_tok()?;
-                    self.next_tok()?;
-                } else {
-                    self.skip_block()?;
-                }
-            }
-            "julia" => {
-                // julia <complex>, iterations
-                self.parse_vector()?;
-                self.skip_optional_comma()?;
-                self.parse_float()?;
-            }
-            "mandel" | "magnet" | "tiling" | "spiral1" | "spiral2" => {
-                self.parse_expr()?;
-            }
-            _ => {}
         }
-        Ok(())
+        map.sort_by(|a, b| a.0.total_cmp(&b.0));
+        Ok(map)
     }
 
     pub(super) fn parse_color_map(&mut self) -> PResult<ColorMap> {
@@ -328,7 +272,7 @@ impl Parser {
         Ok(map)
     }
 
-    fn parse_image_map(&mut self, span: Span) -> PResult<ImageMap> {
+    pub(super) fn parse_image_map(&mut self, span: Span) -> PResult<ImageMap> {
         self.open_brace("image_map")?;
         let mut kind = None;
         if let Some(k) = self.peek_ident()? {
@@ -361,6 +305,7 @@ impl Parser {
             width: 0,
             height: 0,
             pixels: Vec::new(),
+            use_alpha: false,
         };
         let (mut filter_all, mut transmit_all) = (None, None);
         loop {
@@ -390,7 +335,8 @@ impl Parser {
                         self.unsupported("gamma (in image_map)", t.span);
                         self.parse_float()?;
                     }
-                    "use_color" | "use_colour" | "use_index" | "use_alpha" => {}
+                    "use_alpha" => map.use_alpha = true,
+                    "use_color" | "use_colour" | "use_index" => {}
                     _ => {
                         return Err(self.error_at(t.span, format!("unexpected '{k}' in image_map")))
                     }
@@ -564,66 +510,58 @@ impl Parser {
             transform: Default::default(),
         })
     }
+}
 
-    pub(super) fn parse_texture_block(&mut self) -> PResult<Texture> {
-        self.open_brace("texture")?;
-        let mut tex = self.scene.default_texture.clone();
-        if let Some(k) = self.peek_ident()? {
-            if let Some(Value::Texture(id)) = self.lookup(&k) {
-                tex = (**id).clone();
-                self.advance();
-            }
-        }
-        loop {
-            let t = self.next_tok()?;
-            let Tok::Ident(k) = &t.tok else {
-                if t.tok == Tok::Sym(Sym::RBrace) {
-                    return Ok(tex);
-                }
-                return Err(self.unexpected(&t, "in texture"));
-            };
-            if let Some(tr) = self.transform_item(k)? {
-                tex.apply_transform(&tr);
-                continue;
-            }
-            match &**k {
-                "pigment" => tex.pigment = self.parse_pigment_block(Some(tex.pigment.clone()))?,
-                "finish" => tex.finish = self.parse_finish_block(Some(tex.finish.clone()))?,
-                "normal" => tex.normal = Some(self.parse_normal_block(t.span)?),
-                "uv_mapping" => self.unsupported(k, t.span),
-                k if UNSUPPORTED_PATTERNS.contains(&k)
-                    || matches!(
-                        k,
-                        "checker"
-                            | "gradient"
-                            | "material_map"
-                            | "tiles"
-                            | "texture_map"
-                            | "image_pattern"
-                            | "object"
-                            | "slope"
-                    ) =>
-                {
-                    self.unsupported(&format!("{k} (patterned texture)"), t.span);
-                    self.skip_texture_pattern()?;
-                }
-                _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in texture"))),
-            }
-        }
+/// A pigment's pattern and the rest, so a body can modify a declared pigment.
+fn split_pigment(kind: PigmentKind) -> (Option<Pattern>, Form) {
+    match kind {
+        PigmentKind::Solid(c) => (None, Form::Solid(c)),
+        PigmentKind::Mapped { pattern, map } => (Some(pattern), Form::Colors(Some(map))),
+        PigmentKind::List { pattern, items } => (Some(pattern), Form::Items(items)),
+        PigmentKind::PigmentMap { pattern, map } => (Some(pattern), Form::Pigments(map)),
+        PigmentKind::ImageMap(im) => (None, Form::Image(im)),
     }
+}
 
-    /// Reads past the rest of a patterned texture up to (not including) its closing brace.
-    fn skip_texture_pattern(&mut self) -> PResult<()> {
-        let mut depth = 0;
-        loop {
-            let t = self.peek()?.ok_or_else(|| self.eof_error())?;
-            match t.tok {
-                Tok::Sym(Sym::LBrace) => depth += 1,
-                Tok::Sym(Sym::RBrace) if depth == 0 => return Ok(()),
-                Tok::Sym(Sym::RBrace) => depth -= 1,
-                _ => {}
-            }
-            self.advance();
+fn join_pigment(pat: Option<Pattern>, form: Form) -> PigmentKind {
+    let Some(pattern) = pat else {
+        return match form {
+            Form::Solid(c) => PigmentKind::Solid(c),
+            Form::Image(im) => PigmentKind::ImageMap(im),
+            // A map with no pattern ramps along x, as POV-Ray's default gradient does.
+            Form::Colors(map) => PigmentKind::Mapped {
+                pattern: Pattern::new(PatternKind::Gradient(DVec3::X)),
+                map: map.unwrap_or_else(|| default_map(&PatternKind::Gradient(DVec3::X))),
+            },
+            Form::Items(items) => PigmentKind::List {
+                pattern: Pattern::new(PatternKind::Checker),
+                items,
+            },
+            Form::Pigments(map) => PigmentKind::PigmentMap {
+                pattern: Pattern::new(PatternKind::Gradient(DVec3::X)),
+                map,
+            },
+        };
+    };
+    if pattern.is_block() {
+        let items = match form {
+            Form::Items(items) => items,
+            _ => default_items(&pattern.kind)
+                .into_iter()
+                .map(Pigment::solid)
+                .collect(),
+        };
+        return PigmentKind::List { pattern, items };
+    }
+    match form {
+        Form::Image(im) => PigmentKind::ImageMap(im),
+        // Only modifiers were given to a plain colour: it stays plain.
+        Form::Solid(c) if matches!(pattern.kind, PatternKind::Unsupported) => PigmentKind::Solid(c),
+        Form::Pigments(map) => PigmentKind::PigmentMap { pattern, map },
+        Form::Colors(Some(map)) => PigmentKind::Mapped { pattern, map },
+        Form::Colors(None) | Form::Items(_) | Form::Solid(_) => {
+            let map = default_map(&pattern.kind);
+            PigmentKind::Mapped { pattern, map }
         }
     }
 }

@@ -30,6 +30,8 @@ pub enum Value {
     /// A `function { ... }`, shared with whatever evaluates it (Arc: render threads may).
     Function(Arc<crate::func::Function>),
     ColorMap(Box<ColorMap>),
+    PigmentMap(Box<Vec<(f64, Pigment)>>),
+    TextureMap(Box<Vec<(f64, Texture)>>),
     /// `material { texture interior }`.
     Material(Box<(Option<Texture>, Option<Interior>)>),
     /// The pigment layers of a `sky_sphere`.
@@ -64,6 +66,8 @@ impl Value {
             Value::Macro(_) => "macro",
             Value::Function(_) => "function",
             Value::ColorMap(_) => "color_map",
+            Value::PigmentMap(_) => "pigment_map",
+            Value::TextureMap(_) => "texture_map",
             Value::Material(_) => "material",
             Value::SkySphere(_) => "sky_sphere",
             Value::Fog(_) => "fog",

@@ -1,0 +1,396 @@
+//! Pattern evaluation: the scalar value (or block index) of a pattern at a point in its own
+//! space, independent of what the value then selects (colours, pigments, and later normals).
+//!
+//! Order, as POV-Ray 3.7 does it: warps from the last written to the first, then classic
+//! turbulence (always innermost), then the pattern's function, then frequency and phase
+//! (`fmod(v·f + phase, 1.00001)`, wrapped to positive; the period just over 1 keeps a value of
+//! exactly 1, such as `spherical` at its centre, at the top of the map), then the wave type.
+//! The formulas of the deterministic patterns were measured against the `povray` binary with
+//! 16-bit renders of each pattern on a plane (see tests/probes/pattern_*.pov).
+
+use std::f64::consts::{PI, TAU};
+
+use crate::math::DVec3;
+use crate::scene::pattern::{Pattern, PatternKind, Wave};
+
+use super::noise;
+use super::warp;
+
+/// Keeps points that sit exactly on a checker boundary (a plane at y = 0 computed as -1e-17)
+/// on the same side every time.
+const CHECKER_EPS: f64 = 1e-9;
+
+/// POV-Ray's period for frequency and phase: a hair over 1 (measured: `spherical frequency 2`
+/// keeps the centre at the top of the map).
+const WRAP: f64 = 1.00001;
+
+/// The pattern's value in [0, 1] at `p` (pattern space, before warps), ready for a map lookup.
+pub fn value(pat: &Pattern, p: DVec3) -> f64 {
+    let q = warped(pat, p);
+    let v = raw(pat, q);
+    shape(pat, v)
+}
+
+/// Which listed item a block pattern (checker, hexagon, brick) picks at `p`; for other
+/// patterns, whether the value is in the upper half.
+pub fn index(pat: &Pattern, p: DVec3) -> usize {
+    let q = warped(pat, p);
+    match &pat.kind {
+        PatternKind::Checker => checker(q),
+        PatternKind::Hexagon => hexagon(q),
+        PatternKind::Brick { size, mortar } => brick(q, *size, *mortar),
+        PatternKind::Square => square(q),
+        PatternKind::Triangular => triangular(q),
+        PatternKind::Cubic => cubic(q),
+        _ => (shape(pat, raw(pat, q)) >= 0.5) as usize,
+    }
+}
+
+/// The point after warps and turbulence (what `average` evaluates its entries at).
+pub fn warped(pat: &Pattern, p: DVec3) -> DVec3 {
+    let mut q = p;
+    for w in pat.warps.iter().rev() {
+        q = warp::apply(w, q, pat.noise_generator);
+    }
+    if let Some(t) = &pat.turbulence {
+        // Marble adds its turbulence to the value instead (see `raw`).
+        if !matches!(pat.kind, PatternKind::Marble) {
+            q += t.amount
+                * noise::turbulence_vec(q, t.octaves, t.omega, t.lambda, pat.noise_generator);
+        }
+    }
+    q
+}
+
+/// Frequency, phase and wave type.
+fn shape(pat: &Pattern, v: f64) -> f64 {
+    if pat.is_block() {
+        return v;
+    }
+    let mut v = (v * pat.frequency + pat.phase) % WRAP;
+    if v < 0.0 {
+        v += WRAP;
+    }
+    if !v.is_finite() {
+        v = 0.0;
+    }
+    match pat.wave {
+        Wave::Ramp => v,
+        Wave::Triangle => {
+            if v < 0.5 {
+                2.0 * v
+            } else {
+                2.0 - 2.0 * v
+            }
+        }
+        Wave::Sine => 0.5 + 0.5 * (TAU * v).sin(),
+        Wave::Scallop => (PI * v).sin().abs(),
+        Wave::Cubic => v * v * (3.0 - 2.0 * v),
+        Wave::Poly(e) => v.max(0.0).powf(e),
+    }
+}
+
+/// The pattern's own function before frequency, phase and wave.
+fn raw(pat: &Pattern, q: DVec3) -> f64 {
+    let gen = pat.noise_generator;
+    match &pat.kind {
+        PatternKind::Checker => checker(q) as f64,
+        PatternKind::Hexagon => hexagon(q) as f64 / 2.0,
+        PatternKind::Brick { size, mortar } => brick(q, *size, *mortar) as f64,
+        PatternKind::Square => square(q) as f64,
+        PatternKind::Triangular => triangular(q) as f64,
+        PatternKind::Cubic => cubic(q) as f64,
+        PatternKind::ImagePattern(im) => {
+            let c = super::pigment::image(im, q);
+            if im.use_alpha {
+                // Measured: opaque pixels give 0, so the value is the transparency.
+                c.transmit
+            } else {
+                0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z
+            }
+        }
+        PatternKind::PigmentPattern(p) => {
+            let c = super::pigment::eval(p, q);
+            0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z
+        }
+        PatternKind::Gradient(a) => q.dot(*a) % 1.0,
+        PatternKind::Onion => q.length() % 1.0,
+        PatternKind::Radial => {
+            let a = (-q.z).atan2(q.x) / TAU;
+            a - a.floor()
+        }
+        PatternKind::Spherical => 1.0 - q.length().min(1.0),
+        PatternKind::Cylindrical => 1.0 - (q.x * q.x + q.z * q.z).sqrt().min(1.0),
+        PatternKind::Boxed => 1.0 - q.x.abs().max(q.y.abs()).max(q.z.abs()).min(1.0),
+        PatternKind::Planar => 1.0 - q.y.abs().min(1.0),
+        PatternKind::Leopard => {
+            let s = (q.x.sin() + q.y.sin() + q.z.sin()) / 3.0;
+            s * s
+        }
+        PatternKind::Marble => {
+            let t = pat.turbulence.map_or(0.0, |t| {
+                t.amount.x * noise::turbulence(q, t.octaves, t.omega, t.lambda, gen)
+            });
+            q.x + t
+        }
+        PatternKind::Wood => (q.x * q.x + q.y * q.y).sqrt(),
+        PatternKind::Spiral1(arms) => {
+            let r = (q.x * q.x + q.y * q.y).sqrt();
+            if r == 0.0 {
+                q.z
+            } else {
+                r + q.z + arms * (q.y.atan2(q.x) / TAU + 0.25)
+            }
+        }
+        PatternKind::Bozo => noise::noise(q, gen),
+        PatternKind::Granite => {
+            // A 1/f sum of the noise's distance from its middle over six octaves.
+            let mut sum = 0.0;
+            let mut f = 1.0;
+            for _ in 0..6 {
+                sum += (0.5 - noise::noise(q * (4.0 * f), gen)).abs() / f;
+                f *= 2.0;
+            }
+            // Scaled to POV-Ray's spread (mean 0.40, deviation 0.16 on a plane).
+            (2.1 * sum).min(1.0)
+        }
+        PatternKind::Agate { turb } => {
+            let t = noise::turbulence(q, 7, 0.5, 2.0, gen);
+            let v = 0.5 + 0.5 * (TAU * (q.z * 0.5 + turb * 1.6 * t)).sin();
+            v.clamp(0.0, 1.0)
+        }
+        // Scaled to POV-Ray's spread (mean 0.51, deviation 0.13 on a plane).
+        PatternKind::Wrinkles => (0.2 + 0.8 * noise::turbulence(q, 10, 0.5, 2.0, gen)).min(1.0),
+        PatternKind::Dents => noise::noise(q, gen).powi(3),
+        PatternKind::Ripples | PatternKind::Waves => waves(pat, q),
+        PatternKind::Crackle {
+            form,
+            metric,
+            offset,
+            solid,
+        } => crackle(q, *form, *metric, *offset, *solid),
+        PatternKind::Cells => {
+            let h = noise::hash3(
+                q.x.floor() as i64,
+                q.y.floor() as i64,
+                q.z.floor() as i64,
+                7,
+            );
+            noise::unit(h)
+        }
+        PatternKind::Mandel(n) => fractal((q.x, q.y), (q.x, q.y), *n),
+        PatternKind::Julia { c, iterations } => fractal((q.x, q.y), *c, *iterations),
+        PatternKind::Function(f) => {
+            if f.unsupported.is_some() {
+                0.0
+            } else {
+                f.eval(&[q.x, q.y, q.z])
+            }
+        }
+        // Maps handle `average` themselves; as a plain value it is the middle.
+        PatternKind::Unsupported | PatternKind::Average => 0.5,
+    }
+}
+
+/// Escape-time value of z ← z² + c starting from `z`: k/N when the k-th step (from 0) leaves
+/// the radius-2 disc, 1 inside (measured with povray's mandel and julia patterns).
+fn fractal(z: (f64, f64), c: (f64, f64), n: u32) -> f64 {
+    let (mut zr, mut zi) = z;
+    for k in 0..n {
+        (zr, zi) = (zr * zr - zi * zi + c.0, 2.0 * zr * zi + c.1);
+        if zr * zr + zi * zi > 4.0 {
+            return k as f64 / n as f64;
+        }
+    }
+    1.0
+}
+
+fn checker(q: DVec3) -> usize {
+    let s = (q.x + CHECKER_EPS).floor() + (q.y + CHECKER_EPS).floor() + (q.z + CHECKER_EPS).floor();
+    s.rem_euclid(2.0) as usize
+}
+
+/// Hexagons of side 1 in the x-z plane: the nearest centre of the lattice spanned by
+/// (1.5, √3/2) and (0, √3), coloured so that no two neighbours share an item (item 0 at the
+/// origin, item 1 at +z).
+fn hexagon(q: DVec3) -> usize {
+    let s3 = 3f64.sqrt();
+    let fi = q.x / 1.5;
+    let fj = (q.z - fi * s3 / 2.0) / s3;
+    let (i0, j0) = (fi.floor(), fj.floor());
+    let mut best = (f64::INFINITY, 0.0, 0.0);
+    // The basis vectors meet at 60°, so the nearest centre is a corner of the parallelogram.
+    for (di, dj) in [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)] {
+        let (i, j) = (i0 + di, j0 + dj);
+        let (cx, cz) = (i * 1.5, i * s3 / 2.0 + j * s3);
+        let d = (q.x - cx).powi(2) + (q.z - cz).powi(2);
+        if d < best.0 {
+            best = (d, i, j);
+        }
+    }
+    (best.2 - best.1).rem_euclid(3.0) as usize
+}
+
+/// Unit squares in the x-z plane: items 0 and 3 alternate along x where floor(z) is even,
+/// 1 and 2 where it is odd (measured).
+fn square(q: DVec3) -> usize {
+    let ix = q.x.floor().rem_euclid(2.0) as usize;
+    let iz = q.z.floor().rem_euclid(2.0) as usize;
+    [[0, 3], [1, 2]][iz][ix]
+}
+
+/// Triangles of side 1 in the x-z plane, one side along x. In the skewed coordinates
+/// u = x − z/√3, w = 2z/√3 each unit cell holds a lower and an upper triangle; the item depends
+/// on (⌊w⌋ − ⌊u⌋) mod 3 and which half (measured: six items around every vertex).
+fn triangular(q: DVec3) -> usize {
+    let s3 = 3f64.sqrt();
+    let u = q.x - q.z / s3;
+    let w = 2.0 * q.z / s3;
+    let (iu, iw) = (u.floor(), w.floor());
+    let upper = (u - iu) + (w - iw) > 1.0;
+    let d = (iw - iu).rem_euclid(3.0) as usize;
+    [[0, 3], [2, 1], [4, 5]][d.min(2)][upper as usize]
+}
+
+/// The half-axis the point is nearest: +x, +y, +z, −x, −y, −z give items 0 to 5.
+fn cubic(q: DVec3) -> usize {
+    let a = q.abs();
+    let (axis, v) = if a.x >= a.y && a.x >= a.z {
+        (0, q.x)
+    } else if a.y >= a.z {
+        (1, q.y)
+    } else {
+        (2, q.z)
+    };
+    axis + if v < 0.0 { 3 } else { 0 }
+}
+
+/// Bricks of `size` (mortar included) with the mortar on the high side of each brick; odd
+/// rows (in y) are shifted half a brick in x, even rows half a brick in z. Item 0 is the
+/// mortar.
+fn brick(q: DVec3, size: DVec3, mortar: f64) -> usize {
+    if size.min_element() <= 0.0 {
+        return 1;
+    }
+    let row = (q.y / size.y).floor();
+    let odd = row.rem_euclid(2.0) != 0.0;
+    let x = if odd { q.x + size.x / 2.0 } else { q.x };
+    let z = if odd { q.z } else { q.z + size.z / 2.0 };
+    let xm = x.rem_euclid(size.x);
+    let ym = q.y.rem_euclid(size.y);
+    let zm = z.rem_euclid(size.z);
+    let in_mortar = xm >= size.x - mortar || ym >= size.y - mortar || zm >= size.z - mortar;
+    (!in_mortar) as usize
+}
+
+/// Ripples and waves: circular waves from ten fixed centres in the unit cube.
+fn waves(pat: &Pattern, q: DVec3) -> f64 {
+    const N: u32 = 10;
+    let mut sum = 0.0;
+    for i in 0..N {
+        let c = DVec3::new(
+            noise::unit(noise::hash3(i as i64, 0, 0, 11)),
+            noise::unit(noise::hash3(i as i64, 1, 0, 11)),
+            noise::unit(noise::hash3(i as i64, 2, 0, 11)),
+        );
+        let d = (q - c).length();
+        sum += match pat.kind {
+            // Ripples: sharp-crested rings about a unit apart.
+            PatternKind::Ripples => (TAU * d).sin(),
+            // Waves: broader, rounder swells.
+            _ => (TAU * d).cos(),
+        };
+    }
+    // POV-Ray's values of both stay within about 0.13..0.87 (standard deviation 0.12).
+    0.5 + 0.5 * sum / N as f64
+}
+
+/// Crackle: `form` weighs the distances to the nearest three of one random point per unit
+/// cube; `solid` gives each cell one value instead.
+fn crackle(q: DVec3, form: DVec3, metric: f64, offset: f64, solid: bool) -> f64 {
+    let base = q.floor();
+    let mut d = [f64::INFINITY; 3];
+    let mut nearest_cell = (0i64, 0i64, 0i64);
+    for dz in -1..=1 {
+        for dy in -1..=1 {
+            for dx in -1..=1 {
+                let (cx, cy, cz) = (base.x as i64 + dx, base.y as i64 + dy, base.z as i64 + dz);
+                let pt = DVec3::new(
+                    cx as f64 + noise::unit(noise::hash3(cx, cy, cz, 21)),
+                    cy as f64 + noise::unit(noise::hash3(cx, cy, cz, 22)),
+                    cz as f64 + noise::unit(noise::hash3(cx, cy, cz, 23)),
+                );
+                let v = (pt - q).abs();
+                let dist = if metric == 2.0 {
+                    v.length()
+                } else if metric == 1.0 {
+                    v.x + v.y + v.z
+                } else {
+                    (v.x.powf(metric) + v.y.powf(metric) + v.z.powf(metric)).powf(1.0 / metric)
+                };
+                if dist < d[0] {
+                    d = [dist, d[0], d[1]];
+                    nearest_cell = (cx, cy, cz);
+                } else if dist < d[1] {
+                    d = [d[0], dist, d[1]];
+                } else if dist < d[2] {
+                    d[2] = dist;
+                }
+            }
+        }
+    }
+    if solid {
+        let (x, y, z) = nearest_cell;
+        return noise::unit(noise::hash3(x, y, z, 24));
+    }
+    form.x * d[0] + form.y * d[1] + form.z * d[2] + offset
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pat(kind: PatternKind) -> Pattern {
+        Pattern::new(kind)
+    }
+
+    #[test]
+    fn checker_alternates_and_is_stable_at_zero() {
+        let p = pat(PatternKind::Checker);
+        assert_eq!(index(&p, DVec3::new(0.5, -1e-15, 0.5)), 0);
+        assert_eq!(index(&p, DVec3::new(1.5, 0.0, 0.5)), 1);
+        assert_eq!(index(&p, DVec3::new(-0.5, 0.0, 0.5)), 1);
+    }
+
+    #[test]
+    fn hexagon_items_around_the_origin() {
+        let p = pat(PatternKind::Hexagon);
+        let s3 = 3f64.sqrt();
+        assert_eq!(index(&p, DVec3::ZERO), 0);
+        assert_eq!(index(&p, DVec3::new(0.0, 0.0, s3)), 1);
+        assert_eq!(index(&p, DVec3::new(1.5, 0.0, s3 / 2.0)), 2);
+    }
+
+    #[test]
+    fn frequency_keeps_one_at_the_top_and_wraps_negatives() {
+        let mut p = pat(PatternKind::Spherical);
+        p.frequency = 2.0;
+        assert!(value(&p, DVec3::ZERO) > 0.999);
+        let mut g = pat(PatternKind::Gradient(DVec3::X));
+        g.frequency = -1.5;
+        g.phase = 0.3;
+        // Measured with povray: gradient x, frequency -1.5, phase 0.3 at x = 1.4125.
+        assert!((value(&g, DVec3::new(1.4125, 0.0, 0.0)) - 0.68125).abs() < 1e-4);
+    }
+
+    #[test]
+    fn waves_shape_the_value() {
+        let mut g = pat(PatternKind::Gradient(DVec3::X));
+        g.wave = Wave::Triangle;
+        assert!((value(&g, DVec3::new(0.75, 0.0, 0.0)) - 0.5).abs() < 1e-9);
+        g.wave = Wave::Scallop;
+        assert!((value(&g, DVec3::new(0.5, 0.0, 0.0)) - 1.0).abs() < 1e-9);
+        g.wave = Wave::Poly(2.0);
+        assert!((value(&g, DVec3::new(0.5, 0.0, 0.0)) - 0.25).abs() < 1e-9);
+    }
+}

@@ -1,0 +1,96 @@
+//! Patterned textures (`texture { checker texture {..} texture {..} }`, `texture_map`, `tiles`):
+//! the colour and finish one texture layer has at a point.
+//!
+//! Block patterns pick one listed texture. Between two `texture_map` entries POV-Ray shades
+//! both textures, each with its own finish, and mixes the results by the entries' weights; the
+//! shading code does the same with the parts `blend` hands it.
+
+use crate::color::Rgbft;
+use crate::math::DVec3;
+use crate::scene::desc::{Finish, Texture, TextureEntries};
+use crate::scene::pattern::PatternKind;
+
+use super::{pattern, pigment};
+
+/// Calls `f(colour, finish, weight)` for each plain texture that `tex` (one layer) is made of
+/// at world point `p`: itself when it is plain, one listed texture for a block pattern, the one
+/// or two `texture_map` entries around the pattern's value (nested maps recursively). The
+/// weights add up to `weight`; `quick` uses quick colours.
+pub fn blend(
+    tex: &Texture,
+    p: DVec3,
+    quick: bool,
+    weight: f64,
+    f: &mut dyn FnMut(Rgbft, &Finish, f64),
+) {
+    let Some(tp) = &tex.pattern else {
+        let c = match tex.pigment.quick {
+            Some(q) if quick => q,
+            _ => pigment::eval(&tex.pigment, p),
+        };
+        f(c, &tex.finish, weight);
+        return;
+    };
+    let lp = if tp.transform.is_identity() {
+        p
+    } else {
+        tp.transform.inv_point(p)
+    };
+    match &tp.entries {
+        TextureEntries::List(items) => {
+            let i = pattern::index(&tp.pattern, lp).min(items.len().saturating_sub(1));
+            if let Some(t) = items.get(i) {
+                blend(t, lp, quick, weight, f);
+            }
+        }
+        TextureEntries::Map(map) if matches!(tp.pattern.kind, PatternKind::Average) => {
+            let total: f64 = map.iter().map(|e| e.0).sum();
+            if total != 0.0 {
+                for (w, t) in map {
+                    blend(t, lp, quick, weight * w / total, f);
+                }
+            }
+        }
+        TextureEntries::Map(map) => {
+            let v = pattern::value(&tp.pattern, lp);
+            let (Some(first), Some(last)) = (map.first(), map.last()) else {
+                return;
+            };
+            if v <= first.0 {
+                return blend(&first.1, lp, quick, weight, f);
+            }
+            for w in map.windows(2) {
+                let ((va, ta), (vb, tb)) = (&w[0], &w[1]);
+                if v <= *vb {
+                    let span = vb - va;
+                    if span <= 0.0 {
+                        return blend(tb, lp, quick, weight, f);
+                    }
+                    let t = (v - va) / span;
+                    if t < 1.0 {
+                        blend(ta, lp, quick, weight * (1.0 - t), f);
+                    }
+                    if t > 0.0 {
+                        blend(tb, lp, quick, weight * t, f);
+                    }
+                    return;
+                }
+            }
+            blend(&last.1, lp, quick, weight, f)
+        }
+    }
+}
+
+/// The colour alone (unlit pictures, light passing through in shadow rays).
+pub fn color_at(tex: &Texture, p: DVec3, quick: bool) -> Rgbft {
+    if tex.pattern.is_none() && !quick {
+        return pigment::eval(&tex.pigment, p);
+    }
+    let mut sum = [0.0; 5];
+    blend(tex, p, quick, 1.0, &mut |c, _, w| {
+        for (s, v) in sum.iter_mut().zip(c.to_array()) {
+            *s += v * w;
+        }
+    });
+    Rgbft::from_array(sum)
+}

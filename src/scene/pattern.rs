@@ -1,0 +1,184 @@
+//! Pattern descriptions: which scalar field a pigment (and later a normal or texture) follows,
+//! and the modifiers POV-Ray applies around it (turbulence, warps, frequency, phase, wave type,
+//! noise generator). Evaluation is in `render::pattern`; this is plain data the parser builds.
+
+use std::sync::Arc;
+
+use crate::func::Function;
+use crate::math::{DVec3, Transform};
+
+#[derive(Clone, Debug)]
+pub struct Pattern {
+    pub kind: PatternKind,
+    pub wave: Wave,
+    pub frequency: f64,
+    pub phase: f64,
+    /// Turbulence written outside a warp: applied to the point before everything else
+    /// (innermost), whatever its position among the transforms.
+    pub turbulence: Option<Turbulence>,
+    /// Warps in the order written; each keeps the pattern transform in force when it was read.
+    pub warps: Vec<Warp>,
+    /// 1, 2 or 3: which noise function the noise-based patterns and turbulence use.
+    pub noise_generator: u8,
+}
+
+impl Pattern {
+    pub fn new(kind: PatternKind) -> Pattern {
+        // Wood, marble and the spirals are triangle waves unless told otherwise.
+        let wave = match kind {
+            PatternKind::Marble | PatternKind::Wood | PatternKind::Spiral1(_) => Wave::Triangle,
+            _ => Wave::Ramp,
+        };
+        Pattern {
+            kind,
+            wave,
+            frequency: 1.0,
+            phase: 0.0,
+            turbulence: None,
+            warps: Vec::new(),
+            noise_generator: 2,
+        }
+    }
+
+    /// Block patterns (checker, hexagon, brick, square, triangular, cubic) choose among listed
+    /// items instead of reading a map.
+    pub fn is_block(&self) -> bool {
+        matches!(
+            self.kind,
+            PatternKind::Checker
+                | PatternKind::Hexagon
+                | PatternKind::Brick { .. }
+                | PatternKind::Square
+                | PatternKind::Triangular
+                | PatternKind::Cubic
+        )
+    }
+}
+
+impl PartialEq for Pattern {
+    /// Patterns compare by kind only (enough for tests and for deduplicating warnings).
+    fn eq(&self, other: &Self) -> bool {
+        std::mem::discriminant(&self.kind) == std::mem::discriminant(&other.kind)
+    }
+}
+
+#[derive(Clone, Debug)]
+pub enum PatternKind {
+    Checker,
+    /// `gradient <v>`: the fractional part of p · v, v of unit length.
+    Gradient(DVec3),
+    Onion,
+    Radial,
+    Spherical,
+    Cylindrical,
+    Boxed,
+    Planar,
+    Leopard,
+    Marble,
+    Wood,
+    /// `spiral1 arms`.
+    Spiral1(f64),
+    Brick {
+        size: DVec3,
+        mortar: f64,
+    },
+    Hexagon,
+    /// Unit squares in the x-z plane, four items.
+    Square,
+    /// Triangles of side 1 in the x-z plane, six items.
+    Triangular,
+    /// The six pyramids around the half-axes (+x, +y, +z, -x, -y, -z), six items.
+    Cubic,
+    /// `pigment_pattern { ... }`: the pigment's grey (0.297 r + 0.589 g + 0.114 b).
+    PigmentPattern(Box<crate::scene::desc::Pigment>),
+    /// `image_pattern { ... }`: the image's grey (file values), or with `use_alpha` its
+    /// transparency (1 − alpha).
+    ImagePattern(Arc<crate::scene::desc::ImageMap>),
+    /// bozo, spotted and (as a pigment) bumps: one octave of noise.
+    Bozo,
+    Granite,
+    Agate {
+        turb: f64,
+    },
+    Wrinkles,
+    Dents,
+    Ripples,
+    Waves,
+    Crackle {
+        form: DVec3,
+        metric: f64,
+        offset: f64,
+        solid: bool,
+    },
+    Cells,
+    /// `mandel N`: iterations of z² + c from z = c, c = x + iy.
+    Mandel(u32),
+    /// `julia <c>, N`: iterations of z² + c from z = x + iy.
+    Julia {
+        c: (f64, f64),
+        iterations: u32,
+    },
+    /// `average`: the map's entries mixed by their weights, not chosen by a value.
+    Average,
+    /// `function { ... }` of x, y, z.
+    Function(Arc<Function>),
+    /// A pattern lancer does not evaluate yet (already warned about): the middle of its map.
+    Unsupported,
+}
+
+/// How the pattern's value (after frequency and phase) is shaped before the map lookup.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Wave {
+    Ramp,
+    Triangle,
+    Sine,
+    Scallop,
+    Cubic,
+    Poly(f64),
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Turbulence {
+    pub amount: DVec3,
+    pub octaves: u32,
+    pub omega: f64,
+    pub lambda: f64,
+}
+
+impl Default for Turbulence {
+    fn default() -> Self {
+        Turbulence {
+            amount: DVec3::ZERO,
+            octaves: 6,
+            omega: 0.5,
+            lambda: 2.0,
+        }
+    }
+}
+
+#[derive(Clone, Debug)]
+pub struct Warp {
+    /// The pattern's transform when the warp was read: the warp acts in that space.
+    pub space: Transform,
+    pub kind: WarpKind,
+}
+
+#[derive(Clone, Debug)]
+pub enum WarpKind {
+    Turbulence(Turbulence),
+    Repeat {
+        /// The repeat vector (one non-zero component).
+        dir: DVec3,
+        offset: DVec3,
+        flip: DVec3,
+    },
+    BlackHole {
+        center: DVec3,
+        radius: f64,
+        strength: f64,
+        falloff: f64,
+        inverse: bool,
+        repeat: DVec3,
+        turbulence: DVec3,
+    },
+}

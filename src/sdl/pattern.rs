@@ -1,0 +1,469 @@
+//! Pattern keywords and pattern modifiers, shared by everything patterned (pigments today;
+//! normals and textures can reuse them): which pattern, its arguments, frequency, phase, wave
+//! types, turbulence, warps and noise generator. Colour maps and pigment maps are in texture.rs.
+
+use crate::color::Rgbft;
+use crate::math::{DVec3, Transform};
+use crate::scene::pattern::{Pattern, PatternKind, Turbulence, Warp, WarpKind, Wave};
+
+use super::lexer::{Sym, Tok};
+use super::parser::{PResult, Parser};
+use super::source::Span;
+use super::value::Value;
+
+/// Pattern keywords POV-Ray 3.7 has that lancer does not evaluate yet.
+pub(super) const UNSUPPORTED_PATTERNS: &[&str] = &[
+    "aoi",
+    "density_file",
+    "facets",
+    "magnet",
+    "object",
+    "pavement",
+    "quilted",
+    "slope",
+    "spiral2",
+    "tiling",
+    "proportion",
+];
+
+/// Pattern keywords lancer evaluates (see `pattern_keyword`).
+const PATTERNS: &[&str] = &[
+    "checker",
+    "gradient",
+    "onion",
+    "radial",
+    "spherical",
+    "cylindrical",
+    "boxed",
+    "planar",
+    "leopard",
+    "marble",
+    "wood",
+    "spiral1",
+    "brick",
+    "hexagon",
+    "bozo",
+    "spotted",
+    "bumps",
+    "granite",
+    "agate",
+    "wrinkles",
+    "dents",
+    "ripples",
+    "waves",
+    "crackle",
+    "cells",
+    "function",
+    "mandel",
+    "julia",
+    "average",
+    "square",
+    "triangular",
+    "cubic",
+    "pigment_pattern",
+    "image_pattern",
+];
+
+/// Whether `k` names a pattern of POV-Ray 3.7, evaluated by lancer or not.
+pub(super) fn is_pattern_keyword(k: &str) -> bool {
+    PATTERNS.contains(&k) || UNSUPPORTED_PATTERNS.contains(&k)
+}
+
+/// Modifiers of patterns lancer does not evaluate, read past with a warning (one value each).
+const UNSUPPORTED_MODIFIERS: &[&str] = &[
+    "control0",
+    "control1",
+    "interpolate",
+    "orientation",
+    "dist_exp",
+    "strength",
+];
+
+/// The colours a pattern uses when no map or list is given (measured with povray).
+pub fn default_map(kind: &PatternKind) -> Vec<(f64, Rgbft)> {
+    let c = |r: f64, g: f64, b: f64| Rgbft::rgb(DVec3::new(r, g, b));
+    match kind {
+        PatternKind::Bozo => vec![
+            (0.4, c(1.0, 1.0, 1.0)),
+            (0.4, c(0.0, 1.0, 0.0)),
+            (0.6, c(0.0, 1.0, 0.0)),
+            (0.6, c(0.0, 0.0, 1.0)),
+            (0.8, c(0.0, 0.0, 1.0)),
+            (0.8, c(1.0, 0.0, 0.0)),
+        ],
+        PatternKind::Marble => vec![
+            (0.0, c(0.9, 0.8, 0.8)),
+            (0.9, c(0.9, 0.08, 0.08)),
+            (0.9, c(0.0, 0.0, 0.0)),
+        ],
+        PatternKind::Wood => vec![(0.6, c(0.666, 0.312, 0.2)), (0.6, c(0.4, 0.1333, 0.066))],
+        PatternKind::Radial => vec![
+            (0.0, c(0.0, 1.0, 1.0)),
+            (1.0 / 3.0, c(1.0, 1.0, 0.0)),
+            (2.0 / 3.0, c(1.0, 0.0, 1.0)),
+            (1.0, c(0.0, 1.0, 1.0)),
+        ],
+        PatternKind::Mandel(_) | PatternKind::Julia { .. } => vec![
+            (0.0, c(0.0, 0.0, 0.0)),
+            (0.001, c(0.0, 0.0, 0.0)),
+            (0.001, c(0.0, 1.0, 1.0)),
+            (0.012, c(1.0, 1.0, 0.0)),
+            (0.015, c(1.0, 0.0, 1.0)),
+            (0.1, c(0.0, 1.0, 1.0)),
+        ],
+        PatternKind::Agate { .. } => vec![
+            (0.0, c(1.0, 1.0, 1.0)),
+            (0.5, c(0.95, 0.75, 0.5)),
+            (0.5, c(0.9, 0.7, 0.5)),
+            (0.6, c(0.9, 0.7, 0.4)),
+            (0.6, c(1.0, 0.7, 0.4)),
+            (1.0, c(0.6, 0.3, 0.0)),
+        ],
+        _ => vec![(0.0, Rgbft::BLACK), (1.0, c(1.0, 1.0, 1.0))],
+    }
+}
+
+/// The items a block pattern uses when none are listed.
+pub fn default_items(kind: &PatternKind) -> Vec<Rgbft> {
+    let c = |r: f64, g: f64, b: f64| Rgbft::rgb(DVec3::new(r, g, b));
+    match kind {
+        PatternKind::Hexagon => vec![c(0.0, 0.0, 1.0), c(0.0, 1.0, 0.0), c(1.0, 0.0, 0.0)],
+        PatternKind::Brick { .. } => vec![c(0.5, 0.5, 0.5), c(0.6, 0.15, 0.15)],
+        PatternKind::Square => vec![
+            c(1.0, 0.0, 0.0),
+            c(0.0, 1.0, 0.0),
+            c(0.0, 0.0, 1.0),
+            c(1.0, 1.0, 0.0),
+        ],
+        PatternKind::Triangular | PatternKind::Cubic => vec![
+            c(1.0, 0.0, 0.0),
+            c(0.0, 1.0, 0.0),
+            c(0.0, 0.0, 1.0),
+            c(1.0, 1.0, 0.0),
+            c(0.0, 1.0, 1.0),
+            c(1.0, 0.0, 1.0),
+        ],
+        _ => vec![c(0.0, 0.0, 1.0), c(0.0, 1.0, 0.0)],
+    }
+}
+
+impl Parser {
+    /// The pattern a keyword just read names, with its arguments; None when `k` is not a
+    /// pattern lancer evaluates. Unsupported patterns give `PatternKind::Unsupported` after a
+    /// warning.
+    pub(super) fn pattern_keyword(&mut self, k: &str, span: Span) -> PResult<Option<PatternKind>> {
+        Ok(Some(match k {
+            "checker" => PatternKind::Checker,
+            // POV-Ray uses only the direction: `gradient 2*x` repeats every unit too.
+            "gradient" => PatternKind::Gradient(self.parse_vector()?.normalize_or_zero()),
+            "onion" => PatternKind::Onion,
+            "radial" => PatternKind::Radial,
+            "spherical" => PatternKind::Spherical,
+            "cylindrical" => PatternKind::Cylindrical,
+            "boxed" => PatternKind::Boxed,
+            "planar" => PatternKind::Planar,
+            "leopard" => PatternKind::Leopard,
+            "marble" => PatternKind::Marble,
+            "wood" => PatternKind::Wood,
+            "spiral1" => PatternKind::Spiral1(self.parse_float()?),
+            "brick" => PatternKind::Brick {
+                size: DVec3::new(8.0, 3.0, 4.5),
+                mortar: 0.5,
+            },
+            "hexagon" => PatternKind::Hexagon,
+            "bozo" | "spotted" | "bumps" => PatternKind::Bozo,
+            "granite" => PatternKind::Granite,
+            "agate" => PatternKind::Agate { turb: 1.0 },
+            "wrinkles" => PatternKind::Wrinkles,
+            "dents" => PatternKind::Dents,
+            "ripples" => PatternKind::Ripples,
+            "waves" => PatternKind::Waves,
+            "crackle" => PatternKind::Crackle {
+                form: DVec3::new(-1.0, 1.0, 0.0),
+                metric: 2.0,
+                offset: 0.0,
+                solid: false,
+            },
+            "cells" => PatternKind::Cells,
+            "square" => PatternKind::Square,
+            "triangular" => PatternKind::Triangular,
+            "cubic" => PatternKind::Cubic,
+            "image_pattern" => {
+                let mut im = self.parse_image_map(span)?;
+                crate::scene::image::to_file_values(&mut im);
+                PatternKind::ImagePattern(std::sync::Arc::new(im))
+            }
+            "pigment_pattern" => {
+                self.open_brace("pigment_pattern")?;
+                PatternKind::PigmentPattern(Box::new(self.parse_pigment_body_in_braces()?))
+            }
+            "average" => PatternKind::Average,
+            "mandel" => PatternKind::Mandel(self.parse_float()?.clamp(0.0, 1e6) as u32),
+            "julia" => {
+                let c = self.parse_vector()?;
+                self.skip_optional_comma()?;
+                let n = self.parse_float()?.clamp(0.0, 1e6) as u32;
+                PatternKind::Julia {
+                    c: (c.x, c.y),
+                    iterations: n,
+                }
+            }
+            "function" => {
+                let v = self.parse_function_literal(span)?;
+                match v {
+                    Value::Function(f) if f.is_float() && f.unsupported.is_none() => {
+                        PatternKind::Function(f)
+                    }
+                    Value::Function(f) => {
+                        let why = f
+                            .unsupported
+                            .clone()
+                            .unwrap_or_else(|| "function pattern of this kind".into());
+                        self.warn(span, format!("this function pattern is not supported by lancer yet: {why}; it shows the middle of its map and the picture will differ from POV-Ray's"));
+                        PatternKind::Unsupported
+                    }
+                    _ => PatternKind::Unsupported,
+                }
+            }
+            k if UNSUPPORTED_PATTERNS.contains(&k) => {
+                self.unsupported(&format!("{k} pattern"), span);
+                self.skip_pattern_args(k)?;
+                PatternKind::Unsupported
+            }
+            _ => return Ok(None),
+        }))
+    }
+
+    fn skip_pattern_args(&mut self, k: &str) -> PResult<()> {
+        match k {
+            "object" => self.skip_block()?,
+            "density_file" => {
+                self.next_tok()?;
+                self.next_tok()?;
+            }
+            "magnet" => {
+                // magnet 1|2 mandel N, or magnet 1|2 julia <c>, N
+                self.parse_float()?;
+                if self.eat_keyword("julia")? {
+                    self.parse_vector()?;
+                    self.skip_optional_comma()?;
+                } else {
+                    self.eat_keyword("mandel")?;
+                }
+                self.parse_float()?;
+            }
+            "tiling" | "spiral2" => {
+                self.parse_expr()?;
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
+    /// A pattern modifier just read as keyword `k`; false when `k` is not one. `space` is the
+    /// pattern's transform so far, which a warp keeps.
+    pub(super) fn pattern_modifier(
+        &mut self,
+        k: &str,
+        span: Span,
+        pat: &mut Pattern,
+        space: &Transform,
+    ) -> PResult<bool> {
+        match k {
+            "frequency" => pat.frequency = self.parse_float()?,
+            "phase" => pat.phase = self.parse_float()?,
+            "ramp_wave" => pat.wave = Wave::Ramp,
+            "triangle_wave" => pat.wave = Wave::Triangle,
+            "sine_wave" => pat.wave = Wave::Sine,
+            "scallop_wave" => pat.wave = Wave::Scallop,
+            "cubic_wave" => pat.wave = Wave::Cubic,
+            "poly_wave" => {
+                let e = if self.starts_float()? {
+                    self.parse_float()?
+                } else {
+                    1.0
+                };
+                pat.wave = Wave::Poly(e);
+            }
+            "turbulence" => {
+                let amount = self.parse_vector()?;
+                pat.turbulence
+                    .get_or_insert_with(Turbulence::default)
+                    .amount = amount;
+            }
+            "octaves" | "omega" | "lambda" => {
+                let v = self.parse_float()?;
+                let t = pat.turbulence.get_or_insert_with(Turbulence::default);
+                set_turb_param(t, k, v);
+            }
+            "noise_generator" => {
+                pat.noise_generator = (self.parse_float()? as i64).clamp(1, 3) as u8;
+            }
+            "agate_turb" => {
+                let v = self.parse_float()?;
+                if let PatternKind::Agate { turb } = &mut pat.kind {
+                    *turb = v;
+                }
+            }
+            "brick_size" | "mortar" => {
+                let v = self.parse_vector()?;
+                if let PatternKind::Brick { size, mortar } = &mut pat.kind {
+                    if k == "mortar" {
+                        *mortar = v.x;
+                    } else {
+                        *size = v;
+                    }
+                }
+            }
+            "exponent" => {
+                let e = self.parse_float()?;
+                if e != 2.0
+                    && matches!(pat.kind, PatternKind::Mandel(_) | PatternKind::Julia { .. })
+                {
+                    self.unsupported("exponent (other than 2, in mandel or julia)", span);
+                }
+            }
+            "form" | "metric" | "offset" | "solid" => {
+                let v = if k == "solid" {
+                    DVec3::ONE
+                } else if k == "form" {
+                    self.parse_vector()?
+                } else {
+                    DVec3::splat(self.parse_float()?)
+                };
+                if let PatternKind::Crackle {
+                    form,
+                    metric,
+                    offset,
+                    solid,
+                } = &mut pat.kind
+                {
+                    match k {
+                        "form" => *form = v,
+                        "metric" => *metric = v.x,
+                        "offset" => *offset = v.x,
+                        _ => *solid = true,
+                    }
+                }
+            }
+            "warp" => {
+                if let Some(kind) = self.parse_warp_block(span)? {
+                    pat.warps.push(Warp {
+                        space: *space,
+                        kind,
+                    });
+                }
+            }
+            k if UNSUPPORTED_MODIFIERS.contains(&k) => {
+                self.unsupported(k, span);
+                self.parse_expr()?;
+            }
+            _ => return Ok(false),
+        }
+        Ok(true)
+    }
+
+    /// `warp { ... }` after the keyword; None (after a warning) for warps lancer lacks.
+    fn parse_warp_block(&mut self, span: Span) -> PResult<Option<WarpKind>> {
+        self.open_brace("warp")?;
+        let t = self.next_tok()?;
+        let Tok::Ident(k) = &t.tok else {
+            return Err(self.unexpected(&t, "in warp"));
+        };
+        let mut kind = match &**k {
+            "turbulence" => WarpKind::Turbulence(Turbulence {
+                amount: self.parse_vector()?,
+                ..Turbulence::default()
+            }),
+            "repeat" => WarpKind::Repeat {
+                dir: self.parse_vector()?,
+                offset: DVec3::ZERO,
+                flip: DVec3::ZERO,
+            },
+            "black_hole" => {
+                let center = self.parse_vector()?;
+                self.skip_optional_comma()?;
+                WarpKind::BlackHole {
+                    center,
+                    radius: self.parse_float()?,
+                    strength: 1.0,
+                    falloff: 2.0,
+                    inverse: false,
+                    repeat: DVec3::ZERO,
+                    turbulence: DVec3::ZERO,
+                }
+            }
+            other => {
+                self.unsupported(&format!("warp {other}"), span);
+                self.skip_rest_of_block()?;
+                return Ok(None);
+            }
+        };
+        loop {
+            let t = self.next_tok()?;
+            let Tok::Ident(m) = &t.tok else {
+                if t.tok == Tok::Sym(Sym::RBrace) {
+                    return Ok(Some(kind));
+                }
+                return Err(self.unexpected(&t, "in warp"));
+            };
+            match (&mut kind, &**m) {
+                (WarpKind::Turbulence(tb), "octaves" | "omega" | "lambda") => {
+                    let v = self.parse_float()?;
+                    set_turb_param(tb, m, v);
+                }
+                (WarpKind::Repeat { offset, .. }, "offset") => *offset = self.parse_vector()?,
+                (WarpKind::Repeat { flip, .. }, "flip") => *flip = self.parse_vector()?,
+                (
+                    WarpKind::BlackHole {
+                        strength,
+                        falloff,
+                        inverse,
+                        repeat,
+                        turbulence,
+                        ..
+                    },
+                    key,
+                ) if matches!(
+                    key,
+                    "strength" | "falloff" | "inverse" | "repeat" | "turbulence" | "type"
+                ) =>
+                {
+                    match key {
+                        "strength" => *strength = self.parse_float()?,
+                        "falloff" => *falloff = self.parse_float()?,
+                        "inverse" => *inverse = true,
+                        "repeat" => *repeat = self.parse_vector()?,
+                        "turbulence" => *turbulence = self.parse_vector()?,
+                        _ => {
+                            self.parse_float()?;
+                        }
+                    }
+                }
+                _ => return Err(self.error_at(t.span, format!("unexpected '{m}' in warp"))),
+            }
+        }
+    }
+
+    /// Reads to the closing brace of a block whose opening brace was already read.
+    fn skip_rest_of_block(&mut self) -> PResult<()> {
+        let mut depth = 1;
+        while depth > 0 {
+            let t = self.next_tok()?;
+            match t.tok {
+                Tok::Sym(Sym::LBrace) => depth += 1,
+                Tok::Sym(Sym::RBrace) => depth -= 1,
+                _ => {}
+            }
+        }
+        Ok(())
+    }
+}
+
+fn set_turb_param(t: &mut Turbulence, k: &str, v: f64) {
+    match k {
+        "octaves" => t.octaves = (v as i64).clamp(1, 10) as u32,
+        "omega" => t.omega = v,
+        _ => t.lambda = v,
+    }
+}

@@ -1,0 +1,224 @@
+//! `texture { ... }` blocks: plain textures (pigment, finish, normal), and patterned ones —
+//! a block pattern with listed textures, `texture_map`, or the old `tiles`.
+
+use crate::scene::desc::{Texture, TextureEntries, TexturePattern};
+use crate::scene::pattern::{Pattern, PatternKind};
+
+use super::lexer::{Sym, Tok};
+use super::parser::{PResult, Parser};
+use super::pattern::is_pattern_keyword;
+use super::value::Value;
+
+impl Parser {
+    pub(super) fn parse_texture_block(&mut self) -> PResult<Texture> {
+        self.open_brace("texture")?;
+        self.parse_texture_body(Sym::RBrace)
+    }
+
+    /// The inside of a texture up to and including `close` (`}`, or `]` in a texture map).
+    fn parse_texture_body(&mut self, close: Sym) -> PResult<Texture> {
+        let mut tex = self.scene.default_texture.clone();
+        if let Some(k) = self.peek_ident()? {
+            if let Some(Value::Texture(id)) = self.lookup(&k) {
+                tex = (**id).clone();
+                self.advance();
+            }
+        }
+        loop {
+            let t = self.next_tok()?;
+            let Tok::Ident(k) = &t.tok else {
+                if t.tok == Tok::Sym(close) {
+                    break;
+                }
+                return Err(self.unexpected(&t, "in texture"));
+            };
+            if let Some(tr) = self.transform_item(k)? {
+                tex.apply_transform(&tr);
+                continue;
+            }
+            if let Some(tp) = &mut tex.pattern {
+                let space = tp.transform;
+                if self.pattern_modifier(k, t.span, &mut tp.pattern, &space)? {
+                    continue;
+                }
+            }
+            match &**k {
+                "pigment" => tex.pigment = self.parse_pigment_block(Some(tex.pigment.clone()))?,
+                "finish" => tex.finish = self.parse_finish_block(Some(tex.finish.clone()))?,
+                "normal" => tex.normal = Some(self.parse_normal_block(t.span)?),
+                "uv_mapping" => self.unsupported(k, t.span),
+                "texture_map" => {
+                    let weights_optional = tex
+                        .pattern
+                        .as_ref()
+                        .is_some_and(|tp| matches!(tp.pattern.kind, PatternKind::Average));
+                    let map = self.parse_texture_map_entries(weights_optional)?;
+                    match &mut tex.pattern {
+                        Some(tp) => tp.entries = TextureEntries::Map(map),
+                        None => {
+                            // A map with no pattern follows POV-Ray's default gradient x.
+                            tex.pattern = Some(Box::new(TexturePattern {
+                                pattern: Pattern::new(PatternKind::Gradient(crate::math::DVec3::X)),
+                                transform: Default::default(),
+                                entries: TextureEntries::Map(map),
+                            }))
+                        }
+                    }
+                }
+                "tiles" => {
+                    // The old form of a checker of two textures, `tiles { T1 tile2 T2 }`, with
+                    // T2 where checker puts its first item (measured with povray).
+                    self.open_brace("tiles")?;
+                    let a = self.parse_tile_textures(true)?;
+                    let b = self.parse_tile_textures(false)?;
+                    let mut pattern = Pattern::new(PatternKind::Checker);
+                    pattern.noise_generator = 0;
+                    tex.pattern = Some(Box::new(TexturePattern {
+                        pattern,
+                        transform: Default::default(),
+                        entries: TextureEntries::List(vec![b, a]),
+                    }));
+                }
+                k if is_pattern_keyword(k) => {
+                    let Some(kind) = self.pattern_keyword(k, t.span)? else {
+                        return Err(self.error_at(t.span, format!("unexpected '{k}' in texture")));
+                    };
+                    if matches!(kind, PatternKind::Unsupported) {
+                        // Already warned about; the texture stays as it was.
+                        self.skip_texture_pattern()?;
+                        continue;
+                    }
+                    let mut pattern = Pattern::new(kind);
+                    pattern.noise_generator = 0;
+                    let entries = if pattern.is_block() {
+                        TextureEntries::List(self.parse_texture_items()?)
+                    } else {
+                        TextureEntries::Map(Vec::new())
+                    };
+                    tex.pattern = Some(Box::new(TexturePattern {
+                        pattern,
+                        transform: Default::default(),
+                        entries,
+                    }));
+                }
+                "material_map" => {
+                    self.unsupported(&format!("{k} (patterned texture)"), t.span);
+                    self.skip_texture_pattern()?;
+                }
+                _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in texture"))),
+            }
+        }
+        if let Some(tp) = &tex.pattern {
+            let empty = match &tp.entries {
+                TextureEntries::List(l) => l.is_empty(),
+                TextureEntries::Map(m) => m.is_empty(),
+            };
+            if empty {
+                // POV-Ray requires a texture_map here; keep the plain texture.
+                tex.pattern = None;
+            }
+        }
+        Ok(tex)
+    }
+
+    /// The textures listed after a block pattern in a texture (`texture {..}` or declared
+    /// texture identifiers, commas optional).
+    fn parse_texture_items(&mut self) -> PResult<Vec<Texture>> {
+        let mut items = Vec::new();
+        loop {
+            if self.eat_keyword("texture")? {
+                items.push(self.parse_texture_block()?);
+            } else if let Some(k) = self.peek_ident()? {
+                match self.lookup(&k) {
+                    Some(Value::Texture(t)) => {
+                        items.push((**t).clone());
+                        self.advance();
+                    }
+                    _ => break,
+                }
+            } else {
+                break;
+            }
+            self.skip_optional_comma()?;
+        }
+        Ok(items)
+    }
+
+    /// One side of `tiles`: texture blocks (layered) up to `tile2` (first side) or the
+    /// closing brace (second side), which are read too.
+    fn parse_tile_textures(&mut self, first: bool) -> PResult<Texture> {
+        let mut layers: Option<Texture> = None;
+        loop {
+            let done = if first {
+                self.eat_keyword("tile2")?
+            } else {
+                self.eat_sym(Sym::RBrace)?
+            };
+            if done {
+                return Ok(layers.unwrap_or_else(|| self.scene.default_texture.clone()));
+            }
+            if self.eat_keyword("texture")? {
+                let t = self.parse_texture_block()?;
+                layers = Some(match layers {
+                    Some(below) => t.over(below),
+                    None => t,
+                });
+            } else {
+                let t = self.next_tok()?;
+                return Err(self.unexpected(&t, "in tiles; expected 'texture'"));
+            }
+        }
+    }
+
+    /// `texture_map { [v TEXTURE_BODY] ... }` after the keyword, or a declared one.
+    pub(super) fn parse_texture_map(&mut self) -> PResult<Vec<(f64, Texture)>> {
+        self.parse_texture_map_entries(false)
+    }
+
+    /// `weights_optional`: `average`'s entries may leave out their weight (1).
+    fn parse_texture_map_entries(
+        &mut self,
+        weights_optional: bool,
+    ) -> PResult<Vec<(f64, Texture)>> {
+        self.open_brace("texture_map")?;
+        let mut map = Vec::new();
+        loop {
+            let t = self.next_tok()?;
+            match &t.tok {
+                Tok::Sym(Sym::RBrace) => break,
+                Tok::Sym(Sym::LBracket) => {
+                    let v = if weights_optional && !self.starts_float()? {
+                        1.0
+                    } else {
+                        self.parse_float()?
+                    };
+                    self.skip_optional_comma()?;
+                    let tex = self.parse_texture_body(Sym::RBracket)?;
+                    map.push((v, tex));
+                }
+                Tok::Ident(k) => match self.lookup(k) {
+                    Some(Value::TextureMap(m)) => map = (**m).clone(),
+                    _ => return Err(self.unexpected(&t, "in texture_map")),
+                },
+                _ => return Err(self.unexpected(&t, "in texture_map; expected '[value texture]'")),
+            }
+        }
+        map.sort_by(|a, b| a.0.total_cmp(&b.0));
+        Ok(map)
+    }
+
+    /// Reads past the rest of a patterned texture up to (not including) its closing brace.
+    fn skip_texture_pattern(&mut self) -> PResult<()> {
+        let mut depth = 0;
+        loop {
+            let t = self.peek()?.ok_or_else(|| self.eof_error())?;
+            match t.tok {
+                Tok::Sym(Sym::LBrace) | Tok::Sym(Sym::LBracket) => depth += 1,
+                Tok::Sym(Sym::RBrace) | Tok::Sym(Sym::RBracket) if depth == 0 => return Ok(()),
+                Tok::Sym(Sym::RBrace) | Tok::Sym(Sym::RBracket) => depth -= 1,
+                _ => {}
+            }
+            self.advance();
+        }
+    }
+}
