@@ -67,6 +67,7 @@ pub mod mesh;
 pub mod plane;
 pub mod poly;
 pub mod sphere;
+pub mod superellipsoid;
 pub mod text;
 pub mod torus;
 pub mod triangle;

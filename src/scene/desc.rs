@@ -299,6 +299,11 @@ pub enum ShapeDesc {
     },
     /// Laid-out glyphs shared by every copy of a `#declare`d text.
     Text(Arc<crate::geom::text::TextData>),
+    /// `superellipsoid { <e, n> }`, exponents already clamped to be positive.
+    Superellipsoid {
+        e: f64,
+        n: f64,
+    },
     Csg {
         op: CsgOp,
         children: Vec<ObjectDesc>,

@@ -47,6 +47,9 @@ pub fn make_shape(d: &ShapeDesc) -> Arc<dyn Shape> {
             sturm,
         } => Arc::new(Algebraic::new(*order, terms, *sturm)),
         ShapeDesc::Text(data) => Arc::new(Text::new(data.clone())),
+        ShapeDesc::Superellipsoid { e, n } => {
+            Arc::new(crate::geom::superellipsoid::Superellipsoid::new(*e, *n))
+        }
         ShapeDesc::Csg { .. } | ShapeDesc::Light(_) => {
             unreachable!("CSG and lights are built by scene::build")
         }

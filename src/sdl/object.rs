@@ -31,7 +31,6 @@ const UNSUPPORTED_OBJECTS: &[&str] = &[
     "prism",
     "sor",
     "sphere_sweep",
-    "superellipsoid",
 ];
 
 impl Parser {
@@ -54,6 +53,7 @@ impl Parser {
             "poly" => Parser::poly,
             "polynomial" => Parser::polynomial,
             "text" => Parser::text_object,
+            "superellipsoid" => Parser::superellipsoid,
             "union" => |p, s| p.csg(CsgOp::Union, s),
             "light_group" => Parser::light_group,
             "merge" => |p, s| p.csg(CsgOp::Merge, s),
