@@ -284,7 +284,7 @@ fn blocks_lancer_skips_still_run_their_directives() {
     // shapes.inc's mesh2 macros put the closing braces in #if branches.
     let s = parse(
         "#declare W = 0;
-         blob { threshold 0.5 #if (W) sphere { 0, 1, 1 } } #else sphere { 0, 2, 1 } } #end
+         julia_fractal { <1,0,0,0> #if (W) sphere { 0, 1, 1 } } #else sphere { 0, 2, 1 } } #end
          #declare After = 3;
          sphere { 0, After }",
     );

@@ -57,6 +57,7 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
 }
 
 pub mod algebraic;
+pub mod blob;
 pub mod boxes;
 pub mod bvh;
 pub mod cone;

@@ -230,6 +230,12 @@ impl ObjectDesc {
                     c.apply_transform(t);
                 }
             }
+            ShapeDesc::Blob { textures, .. } => {
+                for tex in textures.iter_mut().flatten() {
+                    tex.apply_transform(t);
+                }
+                self.transform = self.transform.then(t);
+            }
             _ => self.transform = self.transform.then(t),
         }
     }
@@ -303,6 +309,11 @@ pub enum ShapeDesc {
     Superellipsoid {
         e: f64,
         n: f64,
+    },
+    /// `blob { ... }`, with each component's own texture (None: the blob's).
+    Blob {
+        data: Arc<crate::geom::blob::BlobData>,
+        textures: Vec<Option<Texture>>,
     },
     Csg {
         op: CsgOp,

@@ -50,6 +50,7 @@ pub fn make_shape(d: &ShapeDesc) -> Arc<dyn Shape> {
         ShapeDesc::Superellipsoid { e, n } => {
             Arc::new(crate::geom::superellipsoid::Superellipsoid::new(*e, *n))
         }
+        ShapeDesc::Blob { data, .. } => Arc::new(crate::geom::blob::Blob::new(data)),
         ShapeDesc::Csg { .. } | ShapeDesc::Light(_) => {
             unreachable!("CSG and lights are built by scene::build")
         }
