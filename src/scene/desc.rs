@@ -310,6 +310,8 @@ pub enum ShapeDesc {
         e: f64,
         n: f64,
     },
+    /// `isosurface { ... }`.
+    Isosurface(Arc<crate::geom::isosurface::IsoData>),
     /// `blob { ... }`, with each component's own texture (None: the blob's).
     Blob {
         data: Arc<crate::geom::blob::BlobData>,

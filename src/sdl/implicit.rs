@@ -3,13 +3,16 @@
 
 use std::sync::Arc;
 
+use crate::func::Function;
 use crate::geom::blob::{BlobData, Component, ComponentKind};
-use crate::math::Transform;
-use crate::scene::desc::{ObjectDesc, ShapeDesc, Texture};
+use crate::geom::isosurface::{Container, IsoData};
+use crate::math::{DVec3, Transform};
+use crate::scene::desc::{CsgOp, ObjectDesc, ShapeDesc, Texture};
 
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
 use super::source::Span;
+use super::value::Value;
 
 /// The exponent a superellipsoid gets instead of a zero, negative or non-finite one: small
 /// enough to look like POV-Ray's sharp-edged box for tiny exponents.
@@ -190,5 +193,205 @@ impl Parser {
             },
             holder.texture,
         ))
+    }
+}
+
+impl Parser {
+    /// `isosurface { function { ... } [contained_by { box {...} | sphere {...} }]
+    /// [threshold T] [accuracy A] [max_gradient G] [evaluate P0, P1, P2] [open]
+    /// [max_trace N | all_intersections] modifiers }`.
+    pub(super) fn isosurface(&mut self, s: Span) -> PResult<ObjectDesc> {
+        let open = self.open_brace("isosurface")?;
+        let fspan = self.next_span()?;
+        if !self.eat_keyword("function")? {
+            return Err(self.error_at(fspan, "an isosurface starts with its function { ... }"));
+        }
+        let function = match self.iso_function(fspan)? {
+            Ok(f) => f,
+            Err(why) => {
+                self.warn(
+                    fspan,
+                    format!("this isosurface is not rendered: {why}; the picture will differ from POV-Ray's"),
+                );
+                // The rest of the isosurface is of no use; read past it (its '{' is open).
+                let mut depth = 1;
+                while depth > 0 {
+                    match self.next_tok()?.tok {
+                        Tok::Sym(Sym::LBrace) => depth += 1,
+                        Tok::Sym(Sym::RBrace) => depth -= 1,
+                        _ => {}
+                    }
+                }
+                let _ = open;
+                return Ok(ObjectDesc::new(ShapeDesc::Csg {
+                    op: CsgOp::Union,
+                    children: Vec::new(),
+                }));
+            }
+        };
+        let mut data = IsoData {
+            function,
+            container: Container::Box {
+                min: DVec3::splat(-1.0),
+                max: DVec3::splat(1.0),
+            },
+            threshold: 0.0,
+            accuracy: 0.001,
+            max_gradient: 1.1,
+            evaluate: None,
+            open: false,
+            max_trace: Some(1),
+        };
+        // A stand-in shape while the modifiers are read (a CSG one would not keep transforms).
+        let mut obj = ObjectDesc::new(ShapeDesc::Sphere {
+            center: DVec3::ZERO,
+            radius: 0.0,
+        });
+        loop {
+            let Some(t) = self.peek()? else {
+                return Err(self.error_at(open, "this '{' is never closed"));
+            };
+            let k = match &t.tok {
+                Tok::Sym(Sym::RBrace) => {
+                    self.advance();
+                    break;
+                }
+                Tok::Ident(k) => k.clone(),
+                _ => {
+                    return Err(self.unexpected(
+                        &t,
+                        "in the isosurface; expected an isosurface item, a modifier or '}'",
+                    ))
+                }
+            };
+            self.advance();
+            match &*k {
+                "contained_by" => data.container = self.iso_container()?,
+                "threshold" => data.threshold = self.parse_float()?,
+                "accuracy" => {
+                    let v = self.parse_float()?;
+                    if v.is_nan() || v <= 0.0 {
+                        self.warn(
+                            t.span,
+                            format!(
+                                "isosurface accuracy must be positive, not {v}; 0.000001 is used"
+                            ),
+                        );
+                    }
+                    data.accuracy = v;
+                }
+                "max_gradient" => {
+                    let v = self.parse_float()?;
+                    if v.is_nan() || v <= 0.0 {
+                        self.warn(
+                            t.span,
+                            format!(
+                                "isosurface max_gradient must be positive, not {v}; 1.1 is used"
+                            ),
+                        );
+                    }
+                    data.max_gradient = v;
+                }
+                "evaluate" => {
+                    let mut p = [0.0; 3];
+                    for (i, v) in p.iter_mut().enumerate() {
+                        if i > 0 {
+                            self.skip_optional_comma()?;
+                        }
+                        *v = self.parse_float()?;
+                    }
+                    data.evaluate = Some(p);
+                }
+                "open" => data.open = self.optional_bool()?,
+                "max_trace" => {
+                    let v = self.parse_float()?;
+                    data.max_trace = Some(v.clamp(1.0, u32::MAX as f64) as u32);
+                }
+                "all_intersections" => data.max_trace = None,
+                // POV-Ray 3.5's solver choice; 3.7 reads and ignores it.
+                "method" => {
+                    self.parse_float()?;
+                }
+                _ => {
+                    if !self.object_modifier(&mut obj, &k, t.span)? {
+                        return Err(self.error_at(
+                            t.span,
+                            format!("'{k}' is not an isosurface item or an object modifier"),
+                        ));
+                    }
+                }
+            }
+        }
+        if let Some(why) = &data.function.unsupported {
+            // Nothing lancer can evaluate: an empty object, as for unsupported objects.
+            self.warn(
+                fspan,
+                format!("this isosurface is not rendered: {why}; the picture will differ from POV-Ray's"),
+            );
+            let _ = s;
+            obj.shape = ShapeDesc::Csg {
+                op: CsgOp::Union,
+                children: Vec::new(),
+            };
+            return Ok(obj);
+        }
+        obj.shape = ShapeDesc::Isosurface(Arc::new(data));
+        Ok(obj)
+    }
+
+    /// The function after `isosurface { function`. A body lancer cannot read (a call lancer's
+    /// function language does not have yet) is skipped and its error message returned as the
+    /// reason, so the scene still renders without the isosurface; that is possible only when
+    /// the error left the token stream in the same file or macro body, which is then rewound.
+    fn iso_function(&mut self, fspan: Span) -> PResult<Result<Arc<Function>, String>> {
+        let frames = self.frames.len();
+        let at = self.frames.last().map(|f| (f.pos, f.tokens.as_ptr()));
+        let conds = self.conds.len();
+        match self.parse_function_literal(fspan) {
+            Ok(Value::Function(f)) => Ok(Ok(f)),
+            Ok(_) => unreachable!("parse_function_literal makes functions"),
+            Err(e) => {
+                let same = self.frames.len() == frames
+                    && self.conds.len() == conds
+                    && self.frames.last().map(|f| f.tokens.as_ptr()) == at.map(|a| a.1);
+                let (Some((pos, _)), true) = (at, same) else {
+                    return Err(e);
+                };
+                if let Some(f) = self.frames.last_mut() {
+                    f.pos = pos;
+                }
+                if self.peek_sym()? != Some(Sym::LBrace) {
+                    return Err(e);
+                }
+                self.skip_block()?;
+                Ok(Err(e.message))
+            }
+        }
+    }
+
+    /// `{ box { A, B } }` or `{ sphere { C, R } }` after `contained_by`.
+    fn iso_container(&mut self) -> PResult<Container> {
+        let open = self.open_brace("contained_by")?;
+        let span = self.next_span()?;
+        let Some(o) = self.parse_object()? else {
+            return Err(self.error_at(span, "contained_by takes a box or a sphere"));
+        };
+        if !o.transform.is_identity() {
+            self.warn(span, "transforms of an isosurface's container are ignored (POV-Ray ignores them too); transform the isosurface");
+        }
+        let c = match o.shape {
+            ShapeDesc::Box { corner1, corner2 } => Container::Box {
+                min: corner1.min(corner2),
+                max: corner1.max(corner2),
+            },
+            ShapeDesc::Sphere { center, radius } => Container::Sphere {
+                center,
+                radius: radius.abs(),
+            },
+            _ => return Err(self.error_at(span, "contained_by takes a box or a sphere")),
+        };
+        self.expect_sym(Sym::RBrace, "to close contained_by")?;
+        let _ = open;
+        Ok(c)
     }
 }

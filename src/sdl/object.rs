@@ -20,7 +20,6 @@ type ObjectFn = fn(&mut Parser, Span) -> PResult<ObjectDesc>;
 const UNSUPPORTED_OBJECTS: &[&str] = &[
     "bicubic_patch",
     "height_field",
-    "isosurface",
     "julia_fractal",
     "lathe",
     "lemon",
@@ -54,6 +53,7 @@ impl Parser {
             "text" => Parser::text_object,
             "superellipsoid" => Parser::superellipsoid,
             "blob" => Parser::blob,
+            "isosurface" => Parser::isosurface,
             "union" => |p, s| p.csg(CsgOp::Union, s),
             "light_group" => Parser::light_group,
             "merge" => |p, s| p.csg(CsgOp::Merge, s),
