@@ -169,3 +169,106 @@ fn isosurface_errors_and_unsupported_functions() {
     let p = parser("isosurface { function { x } accuracy 0 max_gradient -1 }");
     assert_eq!(p.warnings.len(), 2, "{:?}", p.warnings);
 }
+
+/// A scratch directory for image files the height field tests write.
+fn scratch(name: &str) -> std::path::PathBuf {
+    let d = std::env::temp_dir().join(format!("lancer-implicit-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn parse_in(dir: &std::path::Path, src: &str) -> Result<lancer::sdl::Parser, String> {
+    let path = dir.join("scene.pov");
+    std::fs::write(&path, src).unwrap();
+    let mut p = lancer::sdl::Parser::new(lancer::sdl::ParseOptions::default());
+    match p.parse_file(&path) {
+        Ok(()) => Ok(p),
+        Err(e) => Err(e.one_line(&p.sources)),
+    }
+}
+
+fn heights(p: &lancer::sdl::Parser) -> (usize, usize, Vec<u16>) {
+    match &p.scene.objects[0].shape {
+        ShapeDesc::HeightField(d) => (d.width, d.depth, d.heights.clone()),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn height_field_images_by_povrays_rules() {
+    let dir = scratch("images");
+    // 8-bit grey: rows run from z = 1 down; 128 stays, 102 is one of the values povray
+    // reads one lower from a grey PNG.
+    let mut g = image::GrayImage::new(2, 2);
+    g.put_pixel(0, 0, image::Luma([128]));
+    g.put_pixel(1, 0, image::Luma([102]));
+    g.save(dir.join("g.png")).unwrap();
+    let p = parse_in(
+        &dir,
+        "height_field { png \"g.png\" smooth water_level 0.1 }",
+    )
+    .unwrap();
+    let (w, h, v) = heights(&p);
+    assert_eq!((w, h), (2, 2));
+    assert_eq!(v, vec![0, 0, 128 * 257, 101 * 257]);
+    let ShapeDesc::HeightField(d) = &p.scene.objects[0].shape else {
+        unreachable!()
+    };
+    assert!(d.smooth && d.water_level == 0.1);
+    // 8-bit colour: red is the high byte, green the low one; the same in a TGA.
+    let mut c = image::RgbImage::new(2, 2);
+    c.put_pixel(0, 1, image::Rgb([100, 200, 50]));
+    c.save(dir.join("c.png")).unwrap();
+    c.save(dir.join("c.tga")).unwrap();
+    for f in ["png \"c.png\"", "tga \"c.tga\"", "\"c.tga\""] {
+        let p = parse_in(&dir, &format!("height_field {{ {f} }}")).unwrap();
+        assert_eq!(heights(&p).2[0], 100 * 256 + 200, "{f}");
+    }
+    // A gamma decodes first and truncates back to 8 bits.
+    let p = parse_in(&dir, "height_field { png \"g.png\" gamma 2.2 }").unwrap();
+    assert_eq!(heights(&p).2[2], 55 * 257);
+}
+
+#[test]
+fn height_field_functions_wrap_like_povray() {
+    let s = parse("height_field { function 3, 2 { x - 0.5 } }");
+    let ShapeDesc::HeightField(d) = &s.objects[0].shape else {
+        panic!()
+    };
+    assert_eq!((d.width, d.depth), (3, 2));
+    // -0.5 wraps to 0.5 (truncated towards zero first), 0 stays, 0.5 stays.
+    assert_eq!(&d.heights[..3], &[32769, 0, 32767]);
+    // y runs down the "image": row 0 (y = 0) is at z = 1.
+    let s = parse("height_field { function 2, 2 { y * 0.5 } }");
+    let ShapeDesc::HeightField(d) = &s.objects[0].shape else {
+        panic!()
+    };
+    assert_eq!(d.heights, vec![32767, 32767, 0, 0]);
+}
+
+#[test]
+fn height_field_errors() {
+    let dir = scratch("errors");
+    let e = parse_in(&dir, "\nheight_field { png \"missing.png\" }")
+        .err()
+        .unwrap();
+    assert!(
+        e.contains("scene.pov:2:20") && e.contains("cannot find height field image"),
+        "{e}"
+    );
+    std::fs::write(dir.join("bad.png"), b"\x89PNG not really").unwrap();
+    let e = parse_in(&dir, "height_field { png \"bad.png\" }")
+        .err()
+        .unwrap();
+    assert!(e.contains("cannot read PNG"), "{e}");
+    let e = parse_err("height_field { function 1, 5 { x } }");
+    assert!(e.contains("at least 2×2"), "{e}");
+    let e = parse_err("height_field { function 100000, 100000 { x } }");
+    assert!(e.contains("at most"), "{e}");
+    let e = parse_err("height_field { function 2, 2 { x } sturm 3 }");
+    assert!(e.contains("unexpected"), "{e}");
+    // A format lancer does not read leaves the object out with a warning.
+    let p = parser("height_field { pot \"mtmand.pot\" smooth }");
+    assert!(matches!(p.scene.objects[0].shape, ShapeDesc::Csg { .. }));
+    assert!(!p.warnings.is_empty());
+}

@@ -64,6 +64,7 @@ pub mod cone;
 pub mod cylinder;
 pub mod disc;
 pub mod font;
+pub mod height_field;
 pub mod isosurface;
 pub mod mesh;
 pub mod plane;

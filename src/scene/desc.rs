@@ -310,6 +310,8 @@ pub enum ShapeDesc {
         e: f64,
         n: f64,
     },
+    /// `height_field { ... }` from an image or a function.
+    HeightField(Arc<crate::geom::height_field::HeightData>),
     /// `isosurface { ... }`.
     Isosurface(Arc<crate::geom::isosurface::IsoData>),
     /// `blob { ... }`, with each component's own texture (None: the blob's).

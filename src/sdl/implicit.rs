@@ -5,9 +5,11 @@ use std::sync::Arc;
 
 use crate::func::Function;
 use crate::geom::blob::{BlobData, Component, ComponentKind};
+use crate::geom::height_field::HeightData;
 use crate::geom::isosurface::{Container, IsoData};
 use crate::math::{DVec3, Transform};
 use crate::scene::desc::{CsgOp, ObjectDesc, ShapeDesc, Texture};
+use crate::scene::height_image::{load_heights, HfGamma, MAX_PIXELS};
 
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
@@ -206,7 +208,7 @@ impl Parser {
         if !self.eat_keyword("function")? {
             return Err(self.error_at(fspan, "an isosurface starts with its function { ... }"));
         }
-        let function = match self.iso_function(fspan)? {
+        let function = match self.function_body(fspan)? {
             Ok(f) => f,
             Err(why) => {
                 self.warn(
@@ -339,11 +341,11 @@ impl Parser {
         Ok(obj)
     }
 
-    /// The function after `isosurface { function`. A body lancer cannot read (a call lancer's
+    /// The function after `isosurface { function` or `height_field { function W, H`. A body lancer cannot read (a call lancer's
     /// function language does not have yet) is skipped and its error message returned as the
     /// reason, so the scene still renders without the isosurface; that is possible only when
     /// the error left the token stream in the same file or macro body, which is then rewound.
-    fn iso_function(&mut self, fspan: Span) -> PResult<Result<Arc<Function>, String>> {
+    fn function_body(&mut self, fspan: Span) -> PResult<Result<Arc<Function>, String>> {
         let frames = self.frames.len();
         let at = self.frames.last().map(|f| (f.pos, f.tokens.as_ptr()));
         let conds = self.conds.len();
@@ -393,5 +395,185 @@ impl Parser {
         self.expect_sym(Sym::RBrace, "to close contained_by")?;
         let _ = open;
         Ok(c)
+    }
+}
+
+/// Image types POV-Ray reads for height fields that lancer cannot decode.
+const HF_UNREADABLE: &[&str] = &["gif", "iff", "pot", "sys", "tiff"];
+/// Image type keywords a height field may start with.
+const HF_TYPES: &[&str] = &[
+    "exr", "gif", "hdr", "iff", "jpeg", "pgm", "png", "pot", "ppm", "sys", "tga", "tiff", "bmp",
+];
+
+impl Parser {
+    /// `height_field { [type] "file" [gamma G] [premultiplied B] | function W, H { ... }
+    /// [smooth] [water_level L] [hierarchy B] modifiers }`.
+    pub(super) fn height_field(&mut self, _s: Span) -> PResult<ObjectDesc> {
+        let open = self.open_brace("height_field")?;
+        let span = self.next_span()?;
+        let grid = if self.eat_keyword("function")? {
+            self.hf_function(span)?
+        } else {
+            self.hf_image(span)?
+        };
+        let mut data = grid.map(|(width, depth, heights)| HeightData {
+            width,
+            depth,
+            heights,
+            smooth: false,
+            water_level: 0.0,
+        });
+        // A stand-in shape while the modifiers are read (a CSG one would not keep transforms).
+        let mut obj = ObjectDesc::new(ShapeDesc::Sphere {
+            center: DVec3::ZERO,
+            radius: 0.0,
+        });
+        loop {
+            let Some(t) = self.peek()? else {
+                return Err(self.error_at(open, "this '{' is never closed"));
+            };
+            let k = match &t.tok {
+                Tok::Sym(Sym::RBrace) => {
+                    self.advance();
+                    break;
+                }
+                Tok::Ident(k) => k.clone(),
+                _ => {
+                    return Err(self.unexpected(
+                        &t,
+                        "in the height_field; expected smooth, water_level, a modifier or '}'",
+                    ))
+                }
+            };
+            self.advance();
+            match &*k {
+                "smooth" => {
+                    let on = self.optional_bool()?;
+                    if let Some(d) = &mut data {
+                        d.smooth = on;
+                    }
+                }
+                "water_level" => {
+                    let v = self.parse_float()?;
+                    if let Some(d) = &mut data {
+                        d.water_level = v;
+                    }
+                }
+                "hierarchy" => {
+                    self.optional_bool()?;
+                }
+                _ => {
+                    if !self.object_modifier(&mut obj, &k, t.span)? {
+                        return Err(self.error_at(
+                            t.span,
+                            format!("'{k}' is not a height_field item or an object modifier"),
+                        ));
+                    }
+                }
+            }
+        }
+        obj.shape = match data {
+            Some(d) => ShapeDesc::HeightField(Arc::new(d)),
+            None => ShapeDesc::Csg {
+                op: CsgOp::Union,
+                children: Vec::new(),
+            },
+        };
+        Ok(obj)
+    }
+
+    /// `[type] "file" [gamma G | gamma srgb] [premultiplied B]`: the grid, j from z = 0.
+    fn hf_image(&mut self, span: Span) -> PResult<Option<(usize, usize, Vec<u16>)>> {
+        let mut kind = None;
+        if let Some(k) = self.peek_ident()? {
+            if HF_TYPES.contains(&&*k) {
+                self.advance();
+                kind = Some(k);
+            }
+        }
+        let name_span = self.next_span()?;
+        let name = self.parse_string()?;
+        let mut gamma = None;
+        loop {
+            if self.eat_keyword("gamma")? {
+                gamma = Some(if self.eat_keyword("srgb")? {
+                    HfGamma::Srgb
+                } else {
+                    let g = self.parse_float()?;
+                    if g > 0.0 && g.is_finite() {
+                        HfGamma::Power(g)
+                    } else {
+                        self.warn(name_span, format!("gamma {g} is not positive; ignored"));
+                        continue;
+                    }
+                });
+            } else if self.eat_keyword("premultiplied")? {
+                // Alpha does not make heights.
+                self.optional_bool()?;
+            } else {
+                break;
+            }
+        }
+        if let Some(k) = &kind {
+            if HF_UNREADABLE.contains(&&**k) {
+                self.unsupported(&format!("height_field {k} files (png, tga, ppm, pgm, bmp, jpeg, hdr and exr are read)"), span);
+                return Ok(None);
+            }
+        }
+        let Some(path) = self.find_file(&name) else {
+            return Err(self.error_at(
+                name_span,
+                format!("cannot find height field image \"{name}\" (searched the scene directory and the library path)"),
+            ));
+        };
+        let img = load_heights(&path, gamma).map_err(|e| self.error_at(name_span, e))?;
+        // Image rows run from the top (z = 1) down.
+        let (w, h) = (img.width, img.height);
+        let mut grid = vec![0u16; w * h];
+        for r in 0..h {
+            let j = h - 1 - r;
+            grid[j * w..(j + 1) * w].copy_from_slice(&img.heights[r * w..(r + 1) * w]);
+        }
+        Ok(Some((w, h, grid)))
+    }
+
+    /// `W, H { body }` after `function`: the body sampled as a W×H image, x and y from 0 to
+    /// 1 across and down it. Values are kept as POV-Ray keeps them: times 65535, truncated and
+    /// wrapped to 16 bits (measured: -0.3 gives 0.7, 1.5 gives 0.5).
+    fn hf_function(&mut self, span: Span) -> PResult<Option<(usize, usize, Vec<u16>)>> {
+        let w = self.parse_float()?;
+        self.skip_optional_comma()?;
+        let h = self.parse_float()?;
+        if !(w >= 2.0 && h >= 2.0) || w * h > MAX_PIXELS as f64 {
+            return Err(self.error_at(
+                span,
+                format!("a height_field function's resolution must be at least 2×2 and at most {MAX_PIXELS} points, not {w}×{h}"),
+            ));
+        }
+        let (w, h) = (w as usize, h as usize);
+        let fspan = self.next_span()?;
+        let f = match self.function_body(fspan)? {
+            Ok(f) => f,
+            Err(why) => {
+                self.warn(fspan, format!("this height_field is not rendered: {why}; the picture will differ from POV-Ray's"));
+                return Ok(None);
+            }
+        };
+        if let Some(why) = &f.unsupported {
+            self.warn(fspan, format!("this height_field is not rendered: {why}; the picture will differ from POV-Ray's"));
+            return Ok(None);
+        }
+        let mut grid = vec![0u16; w * h];
+        for r in 0..h {
+            let y = r as f64 / (h - 1) as f64;
+            let j = h - 1 - r;
+            for i in 0..w {
+                let x = i as f64 / (w - 1) as f64;
+                let v = f.eval(&[x, y, 0.0]);
+                // NaN becomes 0 in the cast.
+                grid[j * w + i] = ((v * 65535.0).trunc() as i64).rem_euclid(65536) as u16;
+            }
+        }
+        Ok(Some((w, h, grid)))
     }
 }

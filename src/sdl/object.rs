@@ -19,7 +19,6 @@ type ObjectFn = fn(&mut Parser, Span) -> PResult<ObjectDesc>;
 /// Objects POV-Ray 3.7 has that lancer reads past (with a warning) but does not render yet.
 const UNSUPPORTED_OBJECTS: &[&str] = &[
     "bicubic_patch",
-    "height_field",
     "julia_fractal",
     "lathe",
     "lemon",
@@ -54,6 +53,7 @@ impl Parser {
             "superellipsoid" => Parser::superellipsoid,
             "blob" => Parser::blob,
             "isosurface" => Parser::isosurface,
+            "height_field" => Parser::height_field,
             "union" => |p, s| p.csg(CsgOp::Union, s),
             "light_group" => Parser::light_group,
             "merge" => |p, s| p.csg(CsgOp::Merge, s),
