@@ -208,22 +208,24 @@ impl Parser {
         if !self.eat_keyword("function")? {
             return Err(self.error_at(fspan, "an isosurface starts with its function { ... }"));
         }
-        let function = match self.function_body(fspan)? {
+        // A function lancer cannot read or evaluate: the rest of the isosurface is of no use
+        // and is read past, as lancer reads past objects it does not render (its modifiers
+        // may use what lancer cannot parse either).
+        let why = match self.function_body(fspan)? {
+            Ok(f) => match &f.unsupported {
+                None => Ok(f),
+                Some(why) => Err(why.clone()),
+            },
+            Err(why) => Err(why),
+        };
+        let function = match why {
             Ok(f) => f,
             Err(why) => {
                 self.warn(
                     fspan,
                     format!("this isosurface is not rendered: {why}; the picture will differ from POV-Ray's"),
                 );
-                // The rest of the isosurface is of no use; read past it (its '{' is open).
-                let mut depth = 1;
-                while depth > 0 {
-                    match self.next_tok()?.tok {
-                        Tok::Sym(Sym::LBrace) => depth += 1,
-                        Tok::Sym(Sym::RBrace) => depth -= 1,
-                        _ => {}
-                    }
-                }
+                self.skip_to_close()?;
                 let _ = open;
                 return Ok(ObjectDesc::new(ShapeDesc::Csg {
                     op: CsgOp::Union,
@@ -324,19 +326,7 @@ impl Parser {
                 }
             }
         }
-        if let Some(why) = &data.function.unsupported {
-            // Nothing lancer can evaluate: an empty object, as for unsupported objects.
-            self.warn(
-                fspan,
-                format!("this isosurface is not rendered: {why}; the picture will differ from POV-Ray's"),
-            );
-            let _ = s;
-            obj.shape = ShapeDesc::Csg {
-                op: CsgOp::Union,
-                children: Vec::new(),
-            };
-            return Ok(obj);
-        }
+        let _ = s;
         obj.shape = ShapeDesc::Isosurface(Arc::new(data));
         Ok(obj)
     }
@@ -369,6 +359,20 @@ impl Parser {
                 Ok(Err(e.message))
             }
         }
+    }
+
+    /// Reads past the rest of an object whose '{' is open, up to its '}' (directives inside
+    /// still run).
+    fn skip_to_close(&mut self) -> PResult<()> {
+        let mut depth = 1;
+        while depth > 0 {
+            match self.next_tok()?.tok {
+                Tok::Sym(Sym::LBrace) => depth += 1,
+                Tok::Sym(Sym::RBrace) => depth -= 1,
+                _ => {}
+            }
+        }
+        Ok(())
     }
 
     /// `{ box { A, B } }` or `{ sphere { C, R } }` after `contained_by`.
@@ -416,13 +420,21 @@ impl Parser {
         } else {
             self.hf_image(span)?
         };
-        let mut data = grid.map(|(width, depth, heights)| HeightData {
+        // Not rendered (already warned about): read past the rest, as for isosurfaces.
+        let Some((width, depth, heights)) = grid else {
+            self.skip_to_close()?;
+            return Ok(ObjectDesc::new(ShapeDesc::Csg {
+                op: CsgOp::Union,
+                children: Vec::new(),
+            }));
+        };
+        let mut data = HeightData {
             width,
             depth,
             heights,
             smooth: false,
             water_level: 0.0,
-        });
+        };
         // A stand-in shape while the modifiers are read (a CSG one would not keep transforms).
         let mut obj = ObjectDesc::new(ShapeDesc::Sphere {
             center: DVec3::ZERO,
@@ -447,18 +459,8 @@ impl Parser {
             };
             self.advance();
             match &*k {
-                "smooth" => {
-                    let on = self.optional_bool()?;
-                    if let Some(d) = &mut data {
-                        d.smooth = on;
-                    }
-                }
-                "water_level" => {
-                    let v = self.parse_float()?;
-                    if let Some(d) = &mut data {
-                        d.water_level = v;
-                    }
-                }
+                "smooth" => data.smooth = self.optional_bool()?,
+                "water_level" => data.water_level = self.parse_float()?,
                 "hierarchy" => {
                     self.optional_bool()?;
                 }
@@ -472,13 +474,7 @@ impl Parser {
                 }
             }
         }
-        obj.shape = match data {
-            Some(d) => ShapeDesc::HeightField(Arc::new(d)),
-            None => ShapeDesc::Csg {
-                op: CsgOp::Union,
-                children: Vec::new(),
-            },
-        };
+        obj.shape = ShapeDesc::HeightField(Arc::new(data));
         Ok(obj)
     }
 
