@@ -57,12 +57,15 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
 }
 
 pub mod algebraic;
+pub mod blob;
 pub mod boxes;
 pub mod bvh;
 pub mod cone;
 pub mod cylinder;
 pub mod disc;
 pub mod font;
+pub mod height_field;
+pub mod isosurface;
 pub mod lathe;
 pub mod mesh;
 pub mod plane;
@@ -73,6 +76,7 @@ pub mod sor;
 pub mod sphere;
 pub mod sphere_sweep;
 pub mod spline2d;
+pub mod superellipsoid;
 pub mod text;
 pub mod torus;
 pub mod triangle;

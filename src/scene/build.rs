@@ -229,6 +229,7 @@ impl Ctx {
         let int = o.interior.as_ref().or(parent_int);
         let (texture, mut transparent) = self.texture(tex_desc.unwrap_or(default));
         let ior = int.map_or(1.0, |i| i.ior);
+        let mut blob = None;
         let (kind, bounds, mesh) = match &o.shape {
             ShapeDesc::Light(l) => {
                 self.lights.push(Light::new(l, &o.transform));
@@ -273,6 +274,20 @@ impl Ctx {
                         .entry(Arc::as_ptr(data))
                         .or_insert_with(|| make_shape(shape))
                         .clone(),
+                    ShapeDesc::Blob { data, textures } if textures.iter().any(Option::is_some) => {
+                        let shape = Arc::new(crate::geom::blob::Blob::new(data));
+                        let mut texes = Vec::with_capacity(textures.len());
+                        for t in textures {
+                            let (tex, tr) = match t {
+                                Some(t) => self.texture(t),
+                                None => (texture.clone(), false),
+                            };
+                            transparent |= tr;
+                            texes.push(tex);
+                        }
+                        blob = Some((shape.clone(), texes));
+                        shape
+                    }
                     _ => make_shape(shape),
                 };
                 let b = s.bounds();
@@ -309,6 +324,7 @@ impl Ctx {
             transform: (!o.transform.is_identity()).then_some(o.transform),
             texture,
             mesh,
+            blob,
             ior,
             no_shadow: o.no_shadow,
             inverse: o.inverse,

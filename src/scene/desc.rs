@@ -253,6 +253,12 @@ impl ObjectDesc {
                     c.apply_transform(t);
                 }
             }
+            ShapeDesc::Blob { textures, .. } => {
+                for tex in textures.iter_mut().flatten() {
+                    tex.apply_transform(t);
+                }
+                self.transform = self.transform.then(t);
+            }
             _ => self.transform = self.transform.then(t),
         }
     }
@@ -328,6 +334,20 @@ pub enum ShapeDesc {
     Sor(Arc<crate::geom::sor::Sor>),
     Polygon(Arc<crate::geom::polygon::Polygon>),
     SphereSweep(Arc<crate::geom::sphere_sweep::SphereSweep>),
+    /// `superellipsoid { <e, n> }`, exponents already clamped to be positive.
+    Superellipsoid {
+        e: f64,
+        n: f64,
+    },
+    /// `height_field { ... }` from an image or a function.
+    HeightField(Arc<crate::geom::height_field::HeightData>),
+    /// `isosurface { ... }`.
+    Isosurface(Arc<crate::geom::isosurface::IsoData>),
+    /// `blob { ... }`, with each component's own texture (None: the blob's).
+    Blob {
+        data: Arc<crate::geom::blob::BlobData>,
+        textures: Vec<Option<Texture>>,
+    },
     Csg {
         op: CsgOp,
         children: Vec<ObjectDesc>,

@@ -21,6 +21,9 @@ pub struct Object {
     pub texture: Arc<Texture>,
     /// Per-triangle textures of a mesh, indexed by `MeshData::triangles[i].texture`.
     pub mesh: Option<(Arc<MeshData>, Vec<Arc<Texture>>)>,
+    /// A blob whose components have textures, and each component's texture (see
+    /// `geom::blob::PART_BLENDED`).
+    pub blob: Option<(Arc<crate::geom::blob::Blob>, Vec<Arc<Texture>>)>,
     pub ior: f64,
     pub no_shadow: bool,
     pub inverse: bool,
@@ -283,8 +286,16 @@ impl Object {
         }
     }
 
-    /// The texture at a hit: a mesh triangle's own texture, else the object's.
+    /// The texture at a hit: a mesh triangle's own texture, a blob component's, else the
+    /// object's.
     pub fn texture_at(&self, h: &SurfaceHit) -> &Texture {
+        if let Some(t) = self
+            .blob
+            .as_ref()
+            .and_then(|(_, t)| t.get(h.hit.part as usize))
+        {
+            return t;
+        }
         if let Some((data, texes)) = &self.mesh {
             if let Some(ti) = data
                 .triangles

@@ -52,6 +52,14 @@ pub fn make_shape(d: &ShapeDesc) -> Arc<dyn Shape> {
         ShapeDesc::Sor(s) => s.clone(),
         ShapeDesc::Polygon(s) => s.clone(),
         ShapeDesc::SphereSweep(s) => s.clone(),
+        ShapeDesc::Superellipsoid { e, n } => {
+            Arc::new(crate::geom::superellipsoid::Superellipsoid::new(*e, *n))
+        }
+        ShapeDesc::Blob { data, .. } => Arc::new(crate::geom::blob::Blob::new(data)),
+        ShapeDesc::HeightField(data) => {
+            Arc::new(crate::geom::height_field::HeightField::new(data.clone()))
+        }
+        ShapeDesc::Isosurface(data) => Arc::new(crate::geom::isosurface::Isosurface::new(data)),
         ShapeDesc::Csg { .. } | ShapeDesc::Light(_) => {
             unreachable!("CSG and lights are built by scene::build")
         }

@@ -12,6 +12,7 @@ pub mod directive;
 pub mod expr;
 pub mod fileio;
 pub mod function_parse;
+pub mod implicit;
 pub mod interior;
 pub mod lexer;
 pub mod limits;

@@ -19,14 +19,10 @@ type ObjectFn = fn(&mut Parser, Span) -> PResult<ObjectDesc>;
 /// Objects POV-Ray 3.7 has that lancer reads past (with a warning) but does not render yet.
 const UNSUPPORTED_OBJECTS: &[&str] = &[
     "bicubic_patch",
-    "blob",
-    "height_field",
-    "isosurface",
     "julia_fractal",
     "lemon",
     "ovus",
     "parametric",
-    "superellipsoid",
 ];
 
 impl Parser {
@@ -54,6 +50,10 @@ impl Parser {
             "sor" => Parser::sor,
             "polygon" => Parser::polygon,
             "sphere_sweep" => Parser::sphere_sweep,
+            "superellipsoid" => Parser::superellipsoid,
+            "blob" => Parser::blob,
+            "isosurface" => Parser::isosurface,
+            "height_field" => Parser::height_field,
             "union" => |p, s| p.csg(CsgOp::Union, s),
             "light_group" => Parser::light_group,
             "merge" => |p, s| p.csg(CsgOp::Merge, s),

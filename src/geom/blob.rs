@@ -1,0 +1,536 @@
+//! POV-Ray `blob`: the surface where a sum of component fields equals the threshold.
+//!
+//! Each component (a sphere, or a cylinder with hemispherical caps, possibly transformed on
+//! its own) adds `strength · (1 − d²/r²)²` within radius `r` of its centre or axis, nothing
+//! beyond. Along a ray d² is a quadratic in the ray parameter, so each component's field is a
+//! quartic on the stretch of the ray inside it (a cylinder gives up to three: cap, body, cap,
+//! cut where the ray crosses the planes through the ends). The ray is cut at every place a
+//! component's stretch starts or ends; between two cuts the field is one quartic, the sum of
+//! the components present, and its roots at the threshold are the crossings. Strengths may be
+//! negative (components that dent the others).
+//!
+//! The crossings are computed from the ray's entry into the first component it meets and with
+//! a unit direction, so the quartics are never evaluated far from where they matter (as for
+//! the torus). A bounding-volume hierarchy over the components keeps blobs with many
+//! components fast.
+
+use std::cell::RefCell;
+
+use crate::geom::bvh::Bvh;
+use crate::geom::poly::{roots_in, sturm_roots_in};
+use crate::geom::{Hit, Shape};
+use crate::math::{Aabb, DVec3, Ray, Transform, EPSILON};
+
+/// The `Hit::part` of blob crossings. The renderer shades a blob whose components have textures
+/// once per component reaching the hit, setting `part` to the component; a crossing still
+/// carrying this value (a shadow ray's) takes the blob's own texture.
+pub const PART_BLENDED: u32 = u32::MAX;
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ComponentKind {
+    Sphere {
+        center: DVec3,
+    },
+    /// From `a` to `b`, with hemispherical caps.
+    Cylinder {
+        a: DVec3,
+        b: DVec3,
+    },
+}
+
+/// One blob component as written.
+#[derive(Clone, Copy, Debug)]
+pub struct Component {
+    pub kind: ComponentKind,
+    pub radius: f64,
+    pub strength: f64,
+    /// Component space to blob space (the component's own transforms).
+    pub transform: Transform,
+}
+
+/// The blob as the parser reads it; shared by every copy of a `#declare`d blob.
+#[derive(Clone, Debug)]
+pub struct BlobData {
+    pub components: Vec<Component>,
+    pub threshold: f64,
+    pub sturm: bool,
+}
+
+/// A component prepared for tracing: in its own space, the field depends only on the squared
+/// distance to a point or a segment.
+#[derive(Clone, Copy, Debug)]
+struct Prepared {
+    /// Segment start (the centre for spheres), unit axis and length (0 for spheres).
+    a: DVec3,
+    axis: DVec3,
+    len: f64,
+    r2: f64,
+    strength: f64,
+    /// None when the component has no transform of its own.
+    transform: Option<Transform>,
+    /// Position in `BlobData::components`, which per-component textures are indexed by.
+    index: usize,
+}
+
+impl Prepared {
+    fn local_point(&self, p: DVec3) -> DVec3 {
+        self.transform.map_or(p, |t| t.inv_point(p))
+    }
+
+    /// Vector from the nearest point of the segment to the local point `q`.
+    fn offset(&self, q: DVec3) -> DVec3 {
+        let d = q - self.a;
+        if self.len == 0.0 {
+            return d;
+        }
+        let h = d.dot(self.axis).clamp(0.0, self.len);
+        d - self.axis * h
+    }
+
+    /// The component's field at a blob-space point.
+    fn density(&self, p: DVec3) -> f64 {
+        let d2 = self.offset(self.local_point(p)).length_squared();
+        if d2 < self.r2 {
+            let w = 1.0 - d2 / self.r2;
+            self.strength * w * w
+        } else {
+            0.0
+        }
+    }
+
+    /// Appends the stretches of the local ray `q0 + s v` inside the component, each with its
+    /// field as a quartic in s (ascending coefficients).
+    fn pieces(&self, q0: DVec3, v: DVec3, out: &mut Vec<Piece>) {
+        // Squared distance to a point c: |q0 - c|² + 2 s (q0 - c)·v + s² v·v.
+        let to_point = |c: DVec3| {
+            let d = q0 - c;
+            [d.length_squared(), 2.0 * d.dot(v), v.length_squared()]
+        };
+        if self.len == 0.0 {
+            self.push(to_point(self.a), f64::NEG_INFINITY, f64::INFINITY, out);
+            return;
+        }
+        // Height along the axis, h0 + s h1; the body lies where 0 <= h <= len.
+        let d = q0 - self.a;
+        let (h0, h1) = (d.dot(self.axis), v.dot(self.axis));
+        let (s_lo, s_hi) = if h1 != 0.0 {
+            let (s0, s1) = (-h0 / h1, (self.len - h0) / h1);
+            (s0.min(s1), s0.max(s1))
+        } else if (0.0..=self.len).contains(&h0) {
+            (f64::NEG_INFINITY, f64::INFINITY)
+        } else {
+            (f64::NAN, f64::NAN)
+        };
+        let pa = to_point(self.a);
+        let body = [pa[0] - h0 * h0, pa[1] - 2.0 * h0 * h1, pa[2] - h1 * h1];
+        if !s_lo.is_nan() {
+            self.push(body, s_lo, s_hi, out);
+        }
+        // The caps: before the body and after it along the ray; which end is which depends on
+        // the ray's direction along the axis.
+        let b = self.a + self.axis * self.len;
+        let (first, last) = if h1 >= 0.0 { (self.a, b) } else { (b, self.a) };
+        if s_lo.is_nan() {
+            // Parallel to the end planes, outside the body: only one cap can be reached.
+            let end = if h0 < 0.0 { self.a } else { b };
+            self.push(to_point(end), f64::NEG_INFINITY, f64::INFINITY, out);
+        } else {
+            self.push(to_point(first), f64::NEG_INFINITY, s_lo, out);
+            self.push(to_point(last), s_hi, f64::INFINITY, out);
+        }
+    }
+
+    /// The stretch where the quadratic distance `d2` is below r², clipped to [lo, hi].
+    fn push(&self, d2: [f64; 3], lo: f64, hi: f64, out: &mut Vec<Piece>) {
+        let [c, b, a] = d2;
+        let (c0, c1) = if a > 0.0 {
+            let disc = b * b - 4.0 * a * (c - self.r2);
+            if disc <= 0.0 {
+                return;
+            }
+            let q = -0.5 * (b + b.signum() * disc.sqrt());
+            let (x, y) = (q / a, if q != 0.0 { (c - self.r2) / q } else { q / a });
+            (x.min(y), x.max(y))
+        } else if c < self.r2 {
+            (f64::NEG_INFINITY, f64::INFINITY)
+        } else {
+            return;
+        };
+        let (lo, hi) = (lo.max(c0), hi.min(c1));
+        if !lo.is_finite() || !hi.is_finite() || lo >= hi {
+            return;
+        }
+        // strength · (1 - d2/r²)², with w = 1 - d2/r² a quadratic.
+        let k = 1.0 / self.r2;
+        let w = [1.0 - c * k, -b * k, -a * k];
+        let s = self.strength;
+        out.push(Piece {
+            lo,
+            hi,
+            c: [
+                s * w[0] * w[0],
+                s * 2.0 * w[0] * w[1],
+                s * (w[1] * w[1] + 2.0 * w[0] * w[2]),
+                s * 2.0 * w[1] * w[2],
+                s * w[2] * w[2],
+            ],
+        });
+    }
+}
+
+/// A stretch of the ray with one component's field as a quartic.
+#[derive(Clone, Copy, Debug)]
+struct Piece {
+    lo: f64,
+    hi: f64,
+    c: [f64; 5],
+}
+
+#[derive(Default)]
+struct Work {
+    pieces: Vec<Piece>,
+    cuts: Vec<f64>,
+}
+
+thread_local! {
+    static WORK: RefCell<Work> = RefCell::new(Work::default());
+}
+
+#[derive(Debug)]
+pub struct Blob {
+    comps: Vec<Prepared>,
+    /// Blob-space bounds of each component, for the hierarchy.
+    bvh: Bvh,
+    bounds: Aabb,
+    threshold: f64,
+    sturm: bool,
+}
+
+impl Blob {
+    pub fn new(data: &BlobData) -> Blob {
+        let mut comps = Vec::new();
+        let mut boxes = Vec::new();
+        for (index, c) in data.components.iter().enumerate() {
+            let r = c.radius.abs();
+            if !(r > 0.0 && r.is_finite() && c.strength.is_finite()) || c.strength == 0.0 {
+                continue;
+            }
+            let (a, axis, len) = match c.kind {
+                ComponentKind::Sphere { center } => (center, DVec3::X, 0.0),
+                ComponentKind::Cylinder { a, b } => {
+                    let d = b - a;
+                    let len = d.length();
+                    if len > 0.0 && len.is_finite() {
+                        (a, d / len, len)
+                    } else {
+                        (a, DVec3::X, 0.0)
+                    }
+                }
+            };
+            let end = a + axis * len;
+            let local = Aabb::new(a.min(end) - DVec3::splat(r), a.max(end) + DVec3::splat(r));
+            let tf = (!c.transform.is_identity()).then_some(c.transform);
+            boxes.push(tf.map_or(local, |t| local.transformed(&t)));
+            comps.push(Prepared {
+                a,
+                axis,
+                len,
+                r2: r * r,
+                strength: c.strength,
+                transform: tf,
+                index,
+            });
+        }
+        // Only components adding to the field can hold surface when the threshold is positive.
+        let bounds = if data.threshold > 0.0 {
+            comps
+                .iter()
+                .zip(&boxes)
+                .filter(|(c, _)| c.strength > 0.0)
+                .fold(Aabb::EMPTY, |acc, (_, b)| acc.union(b))
+        } else {
+            Aabb::INFINITE
+        };
+        Blob {
+            bvh: Bvh::build(&boxes),
+            comps,
+            bounds,
+            threshold: data.threshold,
+            sturm: data.sturm,
+        }
+    }
+
+    /// The summed field at a blob-space point.
+    pub fn field(&self, p: DVec3) -> f64 {
+        self.comps.iter().map(|c| c.density(p)).sum()
+    }
+
+    /// The components whose field reaches `p`, as (index in `BlobData::components`, field).
+    pub fn densities(&self, p: DVec3, out: &mut Vec<(usize, f64)>) {
+        out.clear();
+        out.extend(
+            self.comps
+                .iter()
+                .map(|c| (c.index, c.density(p)))
+                .filter(|&(_, d)| d != 0.0),
+        );
+    }
+
+    fn crossings(&self, ray: &Ray, w: &mut Work, out: &mut Vec<Hit>) {
+        let len = ray.dir.length();
+        if !(len > 0.0 && len.is_finite() && ray.origin.is_finite()) {
+            return;
+        }
+        let u = ray.dir / len;
+        let unit = Ray::new(ray.origin, u);
+        w.pieces.clear();
+        self.bvh.traverse(&unit, f64::INFINITY, |i, _| {
+            let c = &self.comps[i];
+            let (q0, v) = match &c.transform {
+                Some(t) => (t.inv_point(ray.origin), t.inv_vector(u)),
+                None => (ray.origin, u),
+            };
+            c.pieces(q0, v, &mut w.pieces);
+            false
+        });
+        let min_s = EPSILON * len;
+        w.pieces.retain(|p| p.hi > min_s);
+        if w.pieces.is_empty() {
+            return;
+        }
+        // Re-centre every quartic on the first entry so they are evaluated near their roots.
+        let shift = w
+            .pieces
+            .iter()
+            .map(|p| p.lo)
+            .fold(f64::INFINITY, f64::min)
+            .max(0.0);
+        w.cuts.clear();
+        for p in &mut w.pieces {
+            p.c = shifted(&p.c, shift);
+            p.lo -= shift;
+            p.hi -= shift;
+            w.cuts.push(p.lo);
+            w.cuts.push(p.hi);
+        }
+        w.cuts.sort_by(f64::total_cmp);
+        w.cuts.dedup();
+        let mut last = f64::NEG_INFINITY;
+        for k in 0..w.cuts.len().saturating_sub(1) {
+            let (lo, hi) = (w.cuts[k], w.cuts[k + 1]);
+            let mid = 0.5 * (lo + hi);
+            let mut sum = [-self.threshold, 0.0, 0.0, 0.0, 0.0];
+            let mut any = false;
+            for p in w.pieces.iter().filter(|p| p.lo <= mid && mid < p.hi) {
+                for (s, c) in sum.iter_mut().zip(p.c) {
+                    *s += c;
+                }
+                any = true;
+            }
+            if !any {
+                continue;
+            }
+            let roots = if self.sturm {
+                sturm_roots_in(&sum, lo, hi)
+            } else {
+                roots_in(&sum, lo, hi)
+            };
+            for &s in roots.iter() {
+                // A root on a cut is found from both sides.
+                if s - last <= 1e-12 * (1.0 + s.abs()) {
+                    continue;
+                }
+                last = s;
+                let t = (s + shift) / len;
+                if t > EPSILON {
+                    // No component chosen yet: see `PART_BLENDED`.
+                    out.push(Hit::with_part(t, PART_BLENDED));
+                }
+            }
+        }
+    }
+}
+
+/// The quartic `c` in s re-expressed in s' = s − shift.
+fn shifted(c: &[f64; 5], shift: f64) -> [f64; 5] {
+    // Taylor expansion at `shift`: coefficient k is p^(k)(shift) / k!.
+    let mut out = *c;
+    for k in 0..5 {
+        for j in (k..4).rev() {
+            out[j] += shift * out[j + 1];
+        }
+    }
+    out
+}
+
+impl Shape for Blob {
+    fn bounds(&self) -> Aabb {
+        self.bounds
+    }
+
+    fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
+        WORK.with(|w| match w.try_borrow_mut() {
+            Ok(mut w) => self.crossings(ray, &mut w, out),
+            // Never re-entered in practice; a fresh buffer keeps it correct if it were.
+            Err(_) => self.crossings(ray, &mut Work::default(), out),
+        });
+    }
+
+    fn inside(&self, p: DVec3) -> bool {
+        self.field(p) > self.threshold
+    }
+
+    fn normal(&self, p: DVec3, _hit: &Hit) -> DVec3 {
+        // Minus the field's gradient: each component contributes
+        // 4·strength·(1 − d²/r²)/r² times the offset from its centre or axis, taken back to
+        // blob space by the inverse transpose of its transform.
+        let mut n = DVec3::ZERO;
+        for c in &self.comps {
+            let q = c.local_point(p);
+            let off = c.offset(q);
+            let d2 = off.length_squared();
+            if d2 >= c.r2 {
+                continue;
+            }
+            let g = off * (4.0 * c.strength * (1.0 - d2 / c.r2) / c.r2);
+            n += match &c.transform {
+                Some(t) => t.normal(g),
+                None => g,
+            };
+        }
+        n
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sphere(c: DVec3, r: f64, s: f64) -> Component {
+        Component {
+            kind: ComponentKind::Sphere { center: c },
+            radius: r,
+            strength: s,
+            transform: Transform::IDENTITY,
+        }
+    }
+
+    fn hits(b: &Blob, o: DVec3, d: DVec3) -> Vec<f64> {
+        let mut v = Vec::new();
+        b.intersect_all(&Ray::new(o, d), &mut v);
+        v.iter().map(|h| h.t).collect()
+    }
+
+    #[test]
+    fn single_sphere_radius() {
+        // strength 1, threshold t: surface where (1 - d²/r²)² = t, d = r sqrt(1 - sqrt t).
+        let b = Blob::new(&BlobData {
+            components: vec![sphere(DVec3::ZERO, 2.0, 1.0)],
+            threshold: 0.25,
+            sturm: false,
+        });
+        let d = 2.0 * (0.5f64).sqrt();
+        let t = hits(&b, DVec3::new(0.0, 0.0, -5.0), DVec3::Z * 2.0);
+        assert_eq!(t.len(), 2, "{t:?}");
+        assert!((t[0] - (5.0 - d) / 2.0).abs() < 1e-12 && (t[1] - (5.0 + d) / 2.0).abs() < 1e-12);
+        let n = b.normal(DVec3::new(0.0, 0.0, -d), &Hit::new(0.0));
+        assert!((n.normalize() - DVec3::NEG_Z).length() < 1e-12);
+        assert!(b.inside(DVec3::ZERO) && !b.inside(DVec3::new(0.0, 1.5, 0.0)));
+        // Above the strength the component vanishes.
+        let b = Blob::new(&BlobData {
+            components: vec![sphere(DVec3::ZERO, 2.0, 1.0)],
+            threshold: 1.5,
+            sturm: true,
+        });
+        assert!(hits(&b, DVec3::new(0.0, 0.0, -5.0), DVec3::Z).is_empty());
+    }
+
+    #[test]
+    fn cylinder_body_and_caps() {
+        let c = Component {
+            kind: ComponentKind::Cylinder {
+                a: DVec3::new(-1.0, 0.0, 0.0),
+                b: DVec3::new(1.0, 0.0, 0.0),
+            },
+            radius: 1.0,
+            strength: 1.0,
+            transform: Transform::IDENTITY,
+        };
+        for sturm in [false, true] {
+            let b = Blob::new(&BlobData {
+                components: vec![c],
+                threshold: 0.25,
+                sturm,
+            });
+            // Radius of the surface: (1 - d²)² = 0.25, d = sqrt(0.5).
+            let d = 0.5f64.sqrt();
+            // Along the axis: through both caps.
+            let t = hits(&b, DVec3::new(-5.0, 0.0, 0.0), DVec3::X);
+            assert_eq!(t.len(), 2);
+            assert!((t[0] - (4.0 - d)).abs() < 1e-12 && (t[1] - (6.0 + d)).abs() < 1e-12);
+            // Across the body, and obliquely through a cap and the body.
+            let t = hits(&b, DVec3::new(0.3, -5.0, 0.0), DVec3::Y);
+            assert!((t[0] - (5.0 - d)).abs() < 1e-12, "{t:?}");
+            let dir = DVec3::new(1.0, 1.0, 0.0).normalize();
+            let t = hits(&b, DVec3::new(-1.5, -0.5, 0.0) - dir * 3.0, dir);
+            assert_eq!(t.len(), 2, "{t:?}");
+            for &ti in &t {
+                let p = DVec3::new(-1.5, -0.5, 0.0) + dir * (ti - 3.0);
+                assert!((b.field(p) - 0.25).abs() < 1e-12, "{p} {}", b.field(p));
+            }
+        }
+    }
+
+    #[test]
+    fn negative_and_transformed_components() {
+        let mut squash = sphere(DVec3::ZERO, 1.0, 1.0);
+        squash.transform = Transform::scale(DVec3::new(2.0, 1.0, 1.0));
+        let b = Blob::new(&BlobData {
+            components: vec![squash, sphere(DVec3::new(2.0, 0.0, 0.0), 1.0, -1.0)],
+            threshold: 0.25,
+            sturm: false,
+        });
+        let t = hits(&b, DVec3::new(-5.0, 0.0, 0.0), DVec3::X);
+        assert_eq!(t.len(), 2, "{t:?}");
+        // Left end of the ellipsoid: x = -2 sqrt(0.5); the right end is dented inwards.
+        assert!((t[0] - (5.0 - 2.0 * 0.5f64.sqrt())).abs() < 1e-12);
+        assert!(t[1] < 5.0 + 2.0 * 0.5f64.sqrt() - 0.1);
+        let p = DVec3::new(-5.0 + t[1], 0.0, 0.0);
+        assert!((b.field(p) - 0.25).abs() < 1e-12);
+        assert!(b.normal(p, &Hit::new(0.0)).x > 0.0);
+        // The negative component adds nothing to the bounds.
+        assert!(b.bounds().max.x <= 2.0 + 1e-12);
+    }
+
+    #[test]
+    fn shifting_quartics() {
+        let c = [1.0, -2.0, 0.5, 3.0, -1.0];
+        let s = shifted(&c, 1.5);
+        for x in [-1.0, 0.0, 0.7, 2.0] {
+            let a = crate::geom::poly::eval(&c, x + 1.5);
+            let b = crate::geom::poly::eval(&s, x);
+            assert!((a - b).abs() < 1e-9, "{a} {b}");
+        }
+    }
+
+    #[test]
+    fn degenerate_input() {
+        let b = Blob::new(&BlobData {
+            components: vec![
+                sphere(DVec3::ZERO, 0.0, 1.0),
+                sphere(DVec3::ZERO, 1.0, f64::NAN),
+            ],
+            threshold: 0.5,
+            sturm: false,
+        });
+        assert!(hits(&b, DVec3::new(0.0, 0.0, -5.0), DVec3::Z).is_empty());
+        assert!(b.bounds().is_empty());
+        let b = Blob::new(&BlobData {
+            components: vec![sphere(DVec3::ZERO, 1.0, 1.0)],
+            threshold: 0.5,
+            sturm: false,
+        });
+        assert!(hits(&b, DVec3::splat(f64::NAN), DVec3::Z).is_empty());
+        assert!(hits(&b, DVec3::ZERO, DVec3::ZERO).is_empty());
+    }
+}

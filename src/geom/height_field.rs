@@ -1,0 +1,542 @@
+//! POV-Ray `height_field`: a grid of heights over the unit square, x and z from 0 to 1, each
+//! grid cell split into two triangles.
+//!
+//! Vertex (i, j) sits at x = i/(W−1), z = j/(H−1) (j counts from z = 0; image files have their
+//! top row at z = 1). Heights are 16-bit values over 65536, as POV-Ray keeps them. A cell's
+//! diagonal runs from (i, j+1) to (i+1, j) (measured with povray's `trace`). There are no side
+//! walls; `water_level` removes the surface below that height. Points over the square and below
+//! the surface, however far below, are inside.
+//!
+//! Rays are traced through a min/max pyramid over the cells (each level halves the grid), so a
+//! ray skips every block whose height range it passes above or below and only tests the
+//! triangles of the cells it actually reaches, nearest first.
+//!
+//! `smooth` interpolates vertex normals across each triangle. POV-Ray's vertex normals could not
+//! be reproduced exactly (measured on planes they are tilted by up to ten percent, differently
+//! at different vertices); lancer takes the central difference of the neighbouring heights.
+
+use crate::geom::{Hit, Shape};
+use crate::math::{Aabb, DVec3, Ray, EPSILON};
+
+/// Heights as POV-Ray stores them: the 16-bit value over 65536.
+const SCALE: f64 = 1.0 / 65536.0;
+
+/// How far below y = 0 the solid reaches. POV-Ray counts every point under the surface as
+/// inside, however deep (measured with `inside()`: CSG keeps a sphere's part below the field);
+/// the bounds, which decide inside tests first, must reach down that far too.
+const SOLID_DEPTH: f64 = 1e4;
+
+/// The grid as read from an image or a function.
+#[derive(Clone, Debug)]
+pub struct HeightData {
+    /// Vertices along x (image columns) and along z (image rows); both at least 2.
+    pub width: usize,
+    pub depth: usize,
+    /// `heights[j * width + i]`, j from z = 0.
+    pub heights: Vec<u16>,
+    pub smooth: bool,
+    pub water_level: f64,
+}
+
+impl HeightData {
+    fn h(&self, i: usize, j: usize) -> f64 {
+        self.heights[j * self.width + i] as f64 * SCALE
+    }
+}
+
+/// One pyramid level: the smallest and largest height under each block of cells.
+#[derive(Debug)]
+struct Level {
+    nx: usize,
+    nz: usize,
+    min: Vec<u16>,
+    max: Vec<u16>,
+}
+
+#[derive(Debug)]
+pub struct HeightField {
+    data: std::sync::Arc<HeightData>,
+    /// Level 0 has one block per cell; the last level has a single block.
+    levels: Vec<Level>,
+    bounds: Aabb,
+}
+
+/// A ray in grid space (x and z in cell units, y in object units) and what its walk found.
+struct GridRay<'a> {
+    o: DVec3,
+    d: DVec3,
+    inv: DVec3,
+    /// Only crossings before this; shrinks as crossings are found when `first`.
+    tmax: f64,
+    first: bool,
+    out: &'a mut Vec<Hit>,
+}
+
+impl HeightField {
+    pub fn new(data: std::sync::Arc<HeightData>) -> HeightField {
+        let (w, h) = (data.width, data.depth);
+        let ok = w >= 2 && h >= 2 && data.heights.len() == w * h;
+        let mut levels = Vec::new();
+        let mut top = 0.0;
+        if ok {
+            let (nx, nz) = (w - 1, h - 1);
+            let mut min = vec![0u16; nx * nz];
+            let mut max = vec![0u16; nx * nz];
+            for j in 0..nz {
+                for i in 0..nx {
+                    let c = [
+                        data.heights[j * w + i],
+                        data.heights[j * w + i + 1],
+                        data.heights[(j + 1) * w + i],
+                        data.heights[(j + 1) * w + i + 1],
+                    ];
+                    min[j * nx + i] = *c.iter().min().unwrap();
+                    max[j * nx + i] = *c.iter().max().unwrap();
+                }
+            }
+            levels.push(Level { nx, nz, min, max });
+            while levels.last().is_some_and(|l| l.nx > 1 || l.nz > 1) {
+                let l = levels.last().unwrap();
+                let (px, pz) = (l.nx.div_ceil(2), l.nz.div_ceil(2));
+                let mut min = vec![u16::MAX; px * pz];
+                let mut max = vec![0u16; px * pz];
+                for j in 0..l.nz {
+                    for i in 0..l.nx {
+                        let k = (j / 2) * px + i / 2;
+                        min[k] = min[k].min(l.min[j * l.nx + i]);
+                        max[k] = max[k].max(l.max[j * l.nx + i]);
+                    }
+                }
+                levels.push(Level {
+                    nx: px,
+                    nz: pz,
+                    min,
+                    max,
+                });
+            }
+            top = levels.last().unwrap().max[0] as f64 * SCALE;
+        }
+        let bounds = if ok && top >= data.water_level {
+            Aabb::new(
+                DVec3::new(0.0, -SOLID_DEPTH, 0.0),
+                DVec3::new(1.0, top, 1.0),
+            )
+        } else {
+            Aabb::EMPTY
+        };
+        HeightField {
+            data,
+            levels,
+            bounds,
+        }
+    }
+
+    fn cells(&self) -> (f64, f64) {
+        ((self.data.width - 1) as f64, (self.data.depth - 1) as f64)
+    }
+
+    /// Visits the blocks the ray crosses, nearest first; `tmax` shrinks as hits are found
+    /// when only the first is wanted.
+    fn visit(&self, r: &mut GridRay, level: usize, bi: usize, bj: usize) {
+        let l = &self.levels[level];
+        let k = bj * l.nx + bi;
+        let ymax = l.max[k] as f64 * SCALE;
+        if ymax < self.data.water_level {
+            return;
+        }
+        let span = (1usize << level) as f64;
+        let (cx, cz) = self.cells();
+        let lo = DVec3::new(bi as f64 * span, l.min[k] as f64 * SCALE, bj as f64 * span);
+        let hi = DVec3::new(
+            ((bi + 1) as f64 * span).min(cx),
+            ymax,
+            ((bj + 1) as f64 * span).min(cz),
+        );
+        if slab(r, lo, hi).is_none() {
+            return;
+        }
+        if level == 0 {
+            self.cell_hits(r, bi, bj);
+            return;
+        }
+        let below = &self.levels[level - 1];
+        let mut kids = [(0.0, 0usize, 0usize); 4];
+        let mut n = 0;
+        for (di, dj) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+            let (ci, cj) = (bi * 2 + di, bj * 2 + dj);
+            if ci < below.nx && cj < below.nz {
+                let s = (1usize << (level - 1)) as f64;
+                let clo = DVec3::new(ci as f64 * s, f64::NEG_INFINITY, cj as f64 * s);
+                let chi = DVec3::new(
+                    ((ci + 1) as f64 * s).min(cx),
+                    f64::INFINITY,
+                    ((cj + 1) as f64 * s).min(cz),
+                );
+                if let Some((t, _)) = slab(r, clo, chi) {
+                    kids[n] = (t, ci, cj);
+                    n += 1;
+                }
+            }
+        }
+        let kids = &mut kids[..n];
+        if r.first {
+            kids.sort_by(|a, b| a.0.total_cmp(&b.0));
+        }
+        for &(t, ci, cj) in kids.iter() {
+            if r.first && t > r.tmax {
+                break;
+            }
+            self.visit(r, level - 1, ci, cj);
+        }
+    }
+
+    /// The two triangles of cell (i, j).
+    fn cell_hits(&self, r: &mut GridRay, i: usize, j: usize) {
+        let d = &self.data;
+        let (h00, h10, h01, h11) = (d.h(i, j), d.h(i + 1, j), d.h(i, j + 1), d.h(i + 1, j + 1));
+        // Local cell coordinates u = x - i, v = z - j along the ray.
+        let (ou, ov) = (r.o.x - i as f64, r.o.z - j as f64);
+        const TOL: f64 = 1e-9;
+        for tri in 0..2u32 {
+            // Height as a + b u + c v over the triangle.
+            let (a, b, c) = if tri == 0 {
+                (h00, h10 - h00, h01 - h00)
+            } else {
+                // h11 + (h01 - h11)(1 - u) + (h10 - h11)(1 - v)
+                (h01 + h10 - h11, h11 - h01, h11 - h10)
+            };
+            // r.o.y + t d.y = a + b (ou + t du) + c (ov + t dv)
+            let den = r.d.y - b * r.d.x - c * r.d.z;
+            if den == 0.0 {
+                continue;
+            }
+            let t = (a + b * ou + c * ov - r.o.y) / den;
+            // Not `t >= tmax`: the other triangle of an edge must get its say (see below).
+            if t.is_nan() || t <= EPSILON || t > r.tmax + 1e-12 * t.max(1.0) {
+                continue;
+            }
+            let (u, v) = (ou + t * r.d.x, ov + t * r.d.z);
+            let inside = if tri == 0 {
+                u >= -TOL && v >= -TOL && u + v <= 1.0 + TOL
+            } else {
+                u <= 1.0 + TOL && v <= 1.0 + TOL && u + v >= 1.0 - TOL
+            };
+            if !inside || r.o.y + t * r.d.y < d.water_level {
+                continue;
+            }
+            let cell = (j * (d.width - 1) + i) as u32;
+            let hit = Hit {
+                t,
+                part: cell * 2 + tri,
+                uv: [u.clamp(0.0, 1.0), v.clamp(0.0, 1.0)],
+            };
+            // A crossing on a shared edge is found from both sides: keep one, the second
+            // triangle or the cell further along x or z, as povray's trace answers there.
+            if let Some(h) = r
+                .out
+                .iter_mut()
+                .find(|h| (h.t - t).abs() <= 1e-12 * t.max(1.0))
+            {
+                if hit.part > h.part {
+                    *h = hit;
+                }
+                continue;
+            }
+            r.out.push(hit);
+            if r.first {
+                r.tmax = r.tmax.min(t);
+            }
+        }
+    }
+
+    fn trace(&self, ray: &Ray, tmax: f64, first: bool, out: &mut Vec<Hit>) {
+        if self.bounds.is_empty() {
+            return;
+        }
+        let (cx, cz) = self.cells();
+        let o = DVec3::new(ray.origin.x * cx, ray.origin.y, ray.origin.z * cz);
+        let d = DVec3::new(ray.dir.x * cx, ray.dir.y, ray.dir.z * cz);
+        if !o.is_finite() || !d.is_finite() || d == DVec3::ZERO {
+            return;
+        }
+        let mut r = GridRay {
+            o,
+            d,
+            inv: d.recip(),
+            tmax,
+            first,
+            out,
+        };
+        let top = self.levels.len() - 1;
+        self.visit(&mut r, top, 0, 0);
+    }
+
+    /// Unit normal at vertex (i, j) from the neighbouring heights, in object space.
+    fn vertex_normal(&self, i: usize, j: usize) -> DVec3 {
+        let d = &self.data;
+        let (cx, cz) = self.cells();
+        let (i0, i1) = (i.saturating_sub(1), (i + 1).min(d.width - 1));
+        let (j0, j1) = (j.saturating_sub(1), (j + 1).min(d.depth - 1));
+        let dx = (d.h(i1, j) - d.h(i0, j)) / ((i1 - i0) as f64 / cx);
+        let dz = (d.h(i, j1) - d.h(i, j0)) / ((j1 - j0) as f64 / cz);
+        DVec3::new(-dx, 1.0, -dz).normalize()
+    }
+}
+
+/// Slab test in grid space; the entry distance when the ray meets the box before its `tmax`.
+fn slab(r: &GridRay, lo: DVec3, hi: DVec3) -> Option<(f64, f64)> {
+    let mut t0 = 0.0f64;
+    let mut t1 = r.tmax;
+    for a in 0..3 {
+        if r.d[a] == 0.0 {
+            if r.o[a] < lo[a] || r.o[a] > hi[a] {
+                return None;
+            }
+            continue;
+        }
+        let (u, v) = ((lo[a] - r.o[a]) * r.inv[a], (hi[a] - r.o[a]) * r.inv[a]);
+        t0 = t0.max(u.min(v));
+        t1 = t1.min(u.max(v));
+    }
+    // A little slack so crossings on block faces are not lost to rounding.
+    (t0 <= t1 + 1e-9 * t1.abs().max(1.0)).then_some((t0, t1))
+}
+
+impl Shape for HeightField {
+    fn bounds(&self) -> Aabb {
+        self.bounds
+    }
+
+    fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
+        let start = out.len();
+        let mut mine = Vec::new();
+        self.trace(ray, f64::INFINITY, false, &mut mine);
+        out.truncate(start);
+        out.extend(mine);
+    }
+
+    fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
+        scratch.clear();
+        self.trace(ray, tmax, true, scratch);
+        scratch
+            .iter()
+            .filter(|h| h.t < tmax)
+            .min_by(|a, b| a.t.total_cmp(&b.t))
+            .copied()
+    }
+
+    fn inside(&self, p: DVec3) -> bool {
+        if self.bounds.is_empty() || !(0.0..=1.0).contains(&p.x) || !(0.0..=1.0).contains(&p.z) {
+            return false;
+        }
+        let (cx, cz) = self.cells();
+        let (gx, gz) = (p.x * cx, p.z * cz);
+        let i = (gx.floor() as usize).min(self.data.width - 2);
+        let j = (gz.floor() as usize).min(self.data.depth - 2);
+        let (u, v) = (gx - i as f64, gz - j as f64);
+        let d = &self.data;
+        let h = if u + v <= 1.0 {
+            d.h(i, j) + (d.h(i + 1, j) - d.h(i, j)) * u + (d.h(i, j + 1) - d.h(i, j)) * v
+        } else {
+            d.h(i + 1, j + 1)
+                + (d.h(i, j + 1) - d.h(i + 1, j + 1)) * (1.0 - u)
+                + (d.h(i + 1, j) - d.h(i + 1, j + 1)) * (1.0 - v)
+        };
+        p.y < h
+    }
+
+    fn normal(&self, _p: DVec3, hit: &Hit) -> DVec3 {
+        let d = &self.data;
+        let cell = (hit.part / 2) as usize;
+        let tri = hit.part % 2;
+        let (i, j) = (cell % (d.width - 1), cell / (d.width - 1));
+        let (cx, cz) = self.cells();
+        if d.smooth {
+            let [u, v] = hit.uv;
+            let n = if tri == 0 {
+                self.vertex_normal(i, j) * (1.0 - u - v)
+                    + self.vertex_normal(i + 1, j) * u
+                    + self.vertex_normal(i, j + 1) * v
+            } else {
+                self.vertex_normal(i, j + 1) * (1.0 - u)
+                    + self.vertex_normal(i + 1, j + 1) * (u + v - 1.0)
+                    + self.vertex_normal(i + 1, j) * (1.0 - v)
+            };
+            if n != DVec3::ZERO {
+                return n;
+            }
+        }
+        let (h00, h10, h01, h11) = (d.h(i, j), d.h(i + 1, j), d.h(i, j + 1), d.h(i + 1, j + 1));
+        // Slopes per grid step, then per object unit.
+        let (du, dv) = if tri == 0 {
+            (h10 - h00, h01 - h00)
+        } else {
+            (h11 - h01, h11 - h10)
+        };
+        DVec3::new(-du * cx, 1.0, -dv * cz)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::sync::Arc;
+
+    /// A W×H grid from a function of the vertex (i, j), as 16-bit heights.
+    fn grid(w: usize, h: usize, f: impl Fn(usize, usize) -> f64, water: f64) -> HeightField {
+        let mut heights = Vec::new();
+        for j in 0..h {
+            for i in 0..w {
+                heights.push((f(i, j) * 65536.0) as u16);
+            }
+        }
+        HeightField::new(Arc::new(HeightData {
+            width: w,
+            depth: h,
+            heights,
+            smooth: false,
+            water_level: water,
+        }))
+    }
+
+    fn down(hf: &HeightField, x: f64, z: f64) -> Option<(f64, DVec3)> {
+        let r = Ray::new(DVec3::new(x, 5.0, z), DVec3::NEG_Y);
+        let h = hf.intersect_first(&r, f64::INFINITY, &mut Vec::new())?;
+        Some((5.0 - h.t, hf.normal(r.at(h.t), &h).normalize()))
+    }
+
+    #[test]
+    fn diagonal_and_orientation() {
+        // One cell, corner (0, 1) raised: the diagonal from (0, 1) to (1, 0) splits it into
+        // h = z below it and h = 1 - x above it.
+        let hf = grid(2, 2, |i, j| if (i, j) == (0, 1) { 0.5 } else { 0.0 }, 0.0);
+        let (y, n) = down(&hf, 0.3, 0.3).unwrap();
+        assert!((y - 0.15).abs() < 1e-9, "{y}");
+        assert!(
+            (n - DVec3::new(0.0, 2.0, -1.0).normalize()).length() < 1e-9,
+            "{n}"
+        );
+        let (y, n) = down(&hf, 0.75, 0.5).unwrap();
+        assert!((y - 0.125).abs() < 1e-9, "{y}");
+        assert!(
+            (n - DVec3::new(1.0, 2.0, 0.0).normalize()).length() < 1e-9,
+            "{n}"
+        );
+        // On the diagonal itself the second triangle answers, as in povray.
+        let (_, n) = down(&hf, 0.5, 0.5).unwrap();
+        assert!(n.x > 0.0 && n.z.abs() < 1e-9, "{n}");
+        assert!(hf.inside(DVec3::new(0.3, 0.1, 0.3)) && !hf.inside(DVec3::new(0.3, 0.2, 0.3)));
+        // However deep below, and only over the square.
+        assert!(hf.inside(DVec3::new(0.3, -50.0, 0.3)) && !hf.inside(DVec3::new(1.3, 0.0, 0.3)));
+    }
+
+    #[test]
+    fn large_grid_matches_brute_force() {
+        let f =
+            |i: usize, j: usize| 0.5 + 0.3 * ((i as f64 * 0.37).sin() * (j as f64 * 0.23).cos());
+        let hf = grid(97, 61, f, 0.0);
+        let mut seed = 7u64;
+        let mut rnd = move || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for _ in 0..400 {
+            let o = DVec3::new(rnd() * 3.0 - 1.0, 1.0 + rnd(), rnd() * 3.0 - 1.0);
+            let target = DVec3::new(rnd(), rnd() * 0.8, rnd());
+            let ray = Ray::new(o, target - o);
+            let first = hf.intersect_first(&ray, f64::INFINITY, &mut Vec::new());
+            let mut all = Vec::new();
+            hf.intersect_all(&ray, &mut all);
+            // March along the ray for the first sign change of y - h.
+            let h_at = |p: DVec3| {
+                let (gx, gz) = (p.x * 96.0, p.z * 60.0);
+                if !(0.0..=96.0).contains(&gx) || !(0.0..=60.0).contains(&gz) {
+                    return None;
+                }
+                let (i, j) = ((gx as usize).min(95), (gz as usize).min(59));
+                let (u, v) = (gx - i as f64, gz - j as f64);
+                let g = |a, b| (f(a, b) * 65536.0) as u16 as f64 / 65536.0;
+                Some(if u + v <= 1.0 {
+                    g(i, j) + (g(i + 1, j) - g(i, j)) * u + (g(i, j + 1) - g(i, j)) * v
+                } else {
+                    g(i + 1, j + 1)
+                        + (g(i, j + 1) - g(i + 1, j + 1)) * (1.0 - u)
+                        + (g(i + 1, j) - g(i + 1, j + 1)) * (1.0 - v)
+                })
+            };
+            // The first step across the surface, either way (there are no side walls).
+            let mut want = None;
+            let steps = 20000;
+            let mut last: Option<bool> = None;
+            for k in 1..=steps {
+                let t = k as f64 / steps as f64 * 1.5;
+                let p = ray.at(t);
+                let now = h_at(p).map(|h| p.y < h);
+                if now.is_some() && last.is_some() && now != last {
+                    want = Some(t);
+                    break;
+                }
+                last = now;
+            }
+            match (first, want) {
+                (Some(h), Some(t)) => assert!((h.t - t).abs() < 2e-4, "{} vs {t}", h.t),
+                (None, None) => {}
+                (got, want) => panic!("{got:?} vs {want:?} for {ray:?}"),
+            }
+            assert_eq!(!all.is_empty(), first.is_some());
+            if let Some(h) = first {
+                let min = all.iter().map(|h| h.t).fold(f64::INFINITY, f64::min);
+                assert_eq!(min, h.t);
+            }
+        }
+    }
+
+    #[test]
+    fn water_level_and_degenerate_grids() {
+        let hf = grid(11, 11, |i, _| i as f64 / 10.0 * 0.99, 0.5);
+        assert!(down(&hf, 0.3, 0.5).is_none());
+        let (y, _) = down(&hf, 0.8, 0.5).unwrap();
+        assert!((y - 0.8 * 0.99).abs() < 1e-4);
+        let flat = HeightField::new(Arc::new(HeightData {
+            width: 1,
+            depth: 5,
+            heights: vec![0; 5],
+            smooth: true,
+            water_level: 0.0,
+        }));
+        assert!(flat.bounds().is_empty() && down(&flat, 0.5, 0.5).is_none());
+        assert!(!flat.inside(DVec3::splat(0.5)));
+        let hf = grid(3, 3, |_, _| 0.5, 0.0);
+        let mut v = Vec::new();
+        hf.intersect_all(&Ray::new(DVec3::splat(f64::NAN), DVec3::Y), &mut v);
+        hf.intersect_all(&Ray::new(DVec3::ZERO, DVec3::ZERO), &mut v);
+        assert!(v.is_empty());
+    }
+
+    #[test]
+    fn smooth_normals_follow_the_slopes() {
+        let mut heights = Vec::new();
+        for _ in 0..5 {
+            for i in 0..5 {
+                let x = i as f64 / 4.0;
+                heights.push((0.5 * x * x * 65536.0) as u16);
+            }
+        }
+        let hf = HeightField::new(Arc::new(HeightData {
+            width: 5,
+            depth: 5,
+            heights,
+            smooth: true,
+            water_level: 0.0,
+        }));
+        // At the middle vertex the central difference is the true slope of 0.5 x² at 0.5.
+        let (_, n) = down(&hf, 0.5 + 1e-9, 0.5).unwrap();
+        assert!((-n.x / n.y - 0.5).abs() < 1e-3, "{n}");
+        // Between vertices the normal turns smoothly.
+        let (_, a) = down(&hf, 0.55, 0.5).unwrap();
+        let (_, b) = down(&hf, 0.7, 0.5).unwrap();
+        assert!(-a.x / a.y > 0.5 && -b.x / b.y > -a.x / a.y);
+    }
+}

@@ -1,0 +1,313 @@
+//! POV-Ray `superellipsoid { <e, n> }`: the points where
+//! `(|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1`, inside the box from -1 to 1.
+//!
+//! The field is no polynomial, so crossings are found numerically: the ray's stretch inside the
+//! box is cut where it meets the planes the field is not smooth across (x = 0, y = 0, z = 0) and
+//! the symmetry planes between the axes (x = ±y, x = ±z, y = ±z), each piece is sampled a few
+//! times for changes of sign, and each change is narrowed down to a root by regula falsi kept
+//! honest by bisection. Within such a piece the field varies slowly enough that two crossings
+//! closer than a sample step only happen where the ray grazes the surface.
+//!
+//! Small exponents make powers of numbers below one underflow and above one overflow; the
+//! field is therefore evaluated as `m^(2/n) · (1 + (min/max)^(2/e))^(e/n)` with `m` the larger
+//! of |x| and |y|, and the gradient in logarithms.
+
+use crate::geom::{Hit, Shape};
+use crate::math::{Aabb, DVec3, Ray, EPSILON};
+
+/// Widening of the box searched, so a crossing on the box's faces (e or n near zero) is kept.
+const MARGIN: f64 = 1e-6;
+/// Samples per piece between breakpoints.
+const SAMPLES: usize = 4;
+
+#[derive(Clone, Copy, Debug)]
+pub struct Superellipsoid {
+    /// 2/e, the exponent of |x| and |y|.
+    a: f64,
+    /// e/n, the exponent of their sum.
+    b: f64,
+    /// 2/n, the exponent of |z|.
+    c: f64,
+}
+
+impl Superellipsoid {
+    /// Exponents must be positive and finite; callers clamp (the parser warns).
+    pub fn new(e: f64, n: f64) -> Superellipsoid {
+        Superellipsoid {
+            a: 2.0 / e,
+            b: e / n,
+            c: 2.0 / n,
+        }
+    }
+
+    /// Negative inside, zero on the surface.
+    pub fn value(&self, p: DVec3) -> f64 {
+        let (x, y, z) = (p.x.abs(), p.y.abs(), p.z.abs());
+        let m = x.max(y);
+        let xy = if m > 0.0 {
+            let r = x.min(y) / m;
+            m.powf(self.c) * (1.0 + r.powf(self.a)).powf(self.b)
+        } else {
+            0.0
+        };
+        xy + z.powf(self.c) - 1.0
+    }
+
+    /// Crossings as distances along the unit direction `u` from `o`, within `[lo, hi]`.
+    fn crossings(&self, o: DVec3, u: DVec3, lo: f64, hi: f64, out: &mut Vec<f64>) {
+        // Breakpoints: where the ray meets each plane n·p = 0.
+        const PLANES: [[f64; 3]; 9] = [
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+            [1.0, 1.0, 0.0],
+            [1.0, -1.0, 0.0],
+            [1.0, 0.0, 1.0],
+            [1.0, 0.0, -1.0],
+            [0.0, 1.0, 1.0],
+            [0.0, 1.0, -1.0],
+        ];
+        let mut cuts = [0.0f64; PLANES.len() + 2];
+        let mut nc = 0;
+        cuts[nc] = lo;
+        nc += 1;
+        for pl in PLANES {
+            let nv = DVec3::from_array(pl);
+            let den = nv.dot(u);
+            if den != 0.0 {
+                let s = -nv.dot(o) / den;
+                if s > lo && s < hi {
+                    cuts[nc] = s;
+                    nc += 1;
+                }
+            }
+        }
+        cuts[nc] = hi;
+        nc += 1;
+        let cuts = &mut cuts[..nc];
+        cuts.sort_by(f64::total_cmp);
+
+        let f = |s: f64| self.value(o + u * s);
+        let (mut s0, mut f0) = (lo, f(lo));
+        for w in cuts.windows(2) {
+            let (a, b) = (w[0], w[1]);
+            if b <= a {
+                continue;
+            }
+            for k in 1..=SAMPLES {
+                let s1 = if k == SAMPLES {
+                    b
+                } else {
+                    a + (b - a) * k as f64 / SAMPLES as f64
+                };
+                let f1 = f(s1);
+                if (f0 < 0.0) != (f1 < 0.0) {
+                    out.push(refine(&f, s0, f0, s1, f1));
+                }
+                (s0, f0) = (s1, f1);
+            }
+        }
+    }
+}
+
+/// A root of `f` between `a` and `b`, where `f` is negative at exactly one end: regula falsi
+/// (Illinois variant), bisecting when the end values are too lopsided for it to make progress.
+pub(crate) fn refine(f: &impl Fn(f64) -> f64, a: f64, fa: f64, b: f64, fb: f64) -> f64 {
+    let (mut a, mut fa, mut b, mut fb) = (a, fa, b, fb);
+    let tol = 1e-13 * a.abs().max(b.abs()).max(1.0);
+    let mut side = 0i8;
+    for _ in 0..200 {
+        if (b - a).abs() <= tol {
+            break;
+        }
+        let ratio = (fa / fb).abs();
+        let m = if fa.is_finite() && fb.is_finite() && (1e-3..=1e3).contains(&ratio) {
+            let m = b - fb * (b - a) / (fb - fa);
+            if m > a.min(b) && m < a.max(b) {
+                m
+            } else {
+                0.5 * (a + b)
+            }
+        } else {
+            0.5 * (a + b)
+        };
+        let fm = f(m);
+        if fm.is_nan() {
+            return m;
+        }
+        if (fm < 0.0) == (fa < 0.0) {
+            (a, fa) = (m, fm);
+            if side == -1 {
+                fb *= 0.5;
+            }
+            side = -1;
+        } else {
+            (b, fb) = (m, fm);
+            if side == 1 {
+                fa *= 0.5;
+            }
+            side = 1;
+        }
+    }
+    0.5 * (a + b)
+}
+
+/// The stretch of the ray `o + s u` inside the box |x|, |y|, |z| <= r, or None.
+fn box_interval(o: DVec3, u: DVec3, r: f64) -> Option<(f64, f64)> {
+    let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+    for i in 0..3 {
+        if u[i] != 0.0 {
+            let (a, b) = ((-r - o[i]) / u[i], (r - o[i]) / u[i]);
+            lo = lo.max(a.min(b));
+            hi = hi.min(a.max(b));
+        } else if o[i].abs() > r {
+            return None;
+        }
+    }
+    (lo <= hi).then_some((lo, hi))
+}
+
+impl Shape for Superellipsoid {
+    fn bounds(&self) -> Aabb {
+        Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0))
+    }
+
+    fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
+        let len = ray.dir.length();
+        if !(len > 0.0 && len.is_finite()) {
+            return;
+        }
+        let u = ray.dir / len;
+        let Some((lo, hi)) = box_interval(ray.origin, u, 1.0 + MARGIN) else {
+            return;
+        };
+        let lo = lo.max(EPSILON * len);
+        if lo >= hi || lo.is_nan() || hi.is_nan() {
+            return;
+        }
+        // Distances are measured from the box entry so the samples keep their digits.
+        let o = ray.origin + u * lo;
+        let mut s = Vec::new();
+        self.crossings(o, u, 0.0, hi - lo, &mut s);
+        out.extend(
+            s.into_iter()
+                .map(|s| (s + lo) / len)
+                .filter(|&t| t > EPSILON)
+                .map(Hit::new),
+        );
+    }
+
+    fn inside(&self, p: DVec3) -> bool {
+        self.value(p) < 0.0
+    }
+
+    fn normal(&self, p: DVec3, _hit: &Hit) -> DVec3 {
+        // Gradient components (2/n)·S^(e/n - 1)·|x|^(2/e - 1) for x and y, with S the sum of
+        // their powers, and (2/n)·|z|^(2/n - 1) for z; as logarithms, scaled by the largest.
+        let (x, y, z) = (p.x.abs(), p.y.abs(), p.z.abs());
+        let m = x.max(y);
+        let ln_s = if m > 0.0 {
+            let r = x.min(y) / m;
+            self.a * m.ln() + (1.0 + r.powf(self.a)).ln()
+        } else {
+            f64::NEG_INFINITY
+        };
+        let part = |v: f64, k: f64| if k == 0.0 { 0.0 } else { k * v.ln() };
+        let lx = (self.b - 1.0) * ln_s + part(x, self.a - 1.0);
+        let ly = (self.b - 1.0) * ln_s + part(y, self.a - 1.0);
+        let lz = part(z, self.c - 1.0);
+        let l = [lx, ly, lz];
+        let top = l
+            .iter()
+            .copied()
+            .filter(|v| !v.is_nan())
+            .fold(f64::NEG_INFINITY, f64::max);
+        let mag = |li: f64| {
+            if top == f64::INFINITY {
+                if li == f64::INFINITY {
+                    1.0
+                } else {
+                    0.0
+                }
+            } else if li.is_nan() || top == f64::NEG_INFINITY {
+                0.0
+            } else {
+                (li - top).exp()
+            }
+        };
+        let n = DVec3::new(
+            mag(lx).copysign(p.x),
+            mag(ly).copysign(p.y),
+            mag(lz).copysign(p.z),
+        );
+        if n == DVec3::ZERO {
+            p
+        } else {
+            n
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn hits(s: &Superellipsoid, o: DVec3, d: DVec3) -> Vec<f64> {
+        let mut v = Vec::new();
+        s.intersect_all(&Ray::new(o, d), &mut v);
+        let mut t: Vec<f64> = v.iter().map(|h| h.t).collect();
+        t.sort_by(f64::total_cmp);
+        t
+    }
+
+    #[test]
+    fn sphere_case() {
+        let s = Superellipsoid::new(1.0, 1.0);
+        let t = hits(&s, DVec3::new(0.3, 0.2, -5.0), DVec3::Z * 2.0);
+        let h = (1.0f64 - 0.13).sqrt();
+        assert_eq!(t.len(), 2);
+        assert!((t[0] - (5.0 - h) / 2.0).abs() < 1e-12, "{t:?}");
+        assert!((t[1] - (5.0 + h) / 2.0).abs() < 1e-12);
+        let p = DVec3::new(0.3, 0.2, -h);
+        let n = s.normal(p, &Hit::new(0.0)).normalize();
+        assert!((n - p.normalize()).length() < 1e-12, "{n}");
+        assert!(s.inside(DVec3::splat(0.5)) && !s.inside(DVec3::splat(0.6)));
+    }
+
+    #[test]
+    fn boxy_and_pinched() {
+        // Nearly a box: crossings at the faces.
+        let s = Superellipsoid::new(0.01, 0.01);
+        let t = hits(&s, DVec3::new(0.2, -0.3, -3.0), DVec3::Z);
+        assert_eq!(t.len(), 2);
+        assert!(
+            (t[0] - 2.0).abs() < 1e-3 && (t[1] - 4.0).abs() < 1e-3,
+            "{t:?}"
+        );
+        let n = s.normal(DVec3::new(0.2, -0.3, -0.999), &Hit::new(0.0));
+        assert!((n.normalize() - DVec3::NEG_Z).length() < 1e-9, "{n}");
+        // A star (e = n = 3) hit along a diagonal: |x| = |y| = |z| = k with 2^(3/2)... solve.
+        let s = Superellipsoid::new(3.0, 3.0);
+        let d = DVec3::ONE.normalize();
+        let t = hits(&s, -d * 4.0, d);
+        // (2 k^(2/3))^(1) + k^(2/3) = 1  =>  k = 3^(-3/2); the distance is sqrt(3) k.
+        let r = 3f64.sqrt() * 3f64.powf(-1.5);
+        assert_eq!(t.len(), 2);
+        assert!((t[0] - (4.0 - r)).abs() < 1e-10, "{t:?}");
+        // Normals at the cusps stay finite.
+        for p in [DVec3::X, DVec3::Y, DVec3::Z, DVec3::ZERO] {
+            let n = s.normal(p, &Hit::new(0.0));
+            assert!(n.is_finite() && n != DVec3::ZERO, "{p} {n}");
+        }
+    }
+
+    #[test]
+    fn odd_rays() {
+        let s = Superellipsoid::new(0.5, 2.0);
+        assert!(hits(&s, DVec3::ZERO, DVec3::ZERO).is_empty());
+        assert!(hits(&s, DVec3::splat(f64::NAN), DVec3::X).is_empty());
+        assert!(hits(&s, DVec3::new(0.0, 5.0, 0.0), DVec3::X).is_empty());
+        // From inside: one crossing.
+        assert_eq!(hits(&s, DVec3::ZERO, DVec3::new(0.3, 0.1, 0.2)).len(), 1);
+    }
+}
