@@ -3,11 +3,10 @@ global_settings { assumed_gamma 1.0 }
 
 // height_fields.pov -- lancer example scene
 //
-// Terrain from function height fields: a smooth one (vertex normals
-// interpolated across each triangle) with a water plane cutting it at its
-// water_level, and a faceted one cut by a sphere in a CSG intersection.
-// POV-Ray's smooth height field normals are its own (see
-// geom/height_field.rs), so this scene is compared by SSIM.
+// Terrain from function height fields: a smooth one (corner normals
+// mixed across each cell) with a water plane cutting it at its
+// water_level, and a faceted one cut by a sphere in a CSG intersection
+// (the field's solid reaches below y = 0, so the sphere's lower half stays).
 //
 // References: reference/height_fields*.png, 320x240, rendered by
 // scripts/make_references.sh.

@@ -268,7 +268,7 @@ fn height_field_errors() {
     let e = parse_err("height_field { function 2, 2 { x } sturm 3 }");
     assert!(e.contains("unexpected"), "{e}");
     // A format lancer does not read leaves the object out with a warning.
-    let p = parser("height_field { pot \"mtmand.pot\" smooth }");
+    let p = parser("height_field { tiff \"x.tif\" smooth }");
     assert!(matches!(p.scene.objects[0].shape, ShapeDesc::Csg { .. }));
     assert!(!p.warnings.is_empty());
 }

@@ -11,9 +11,9 @@
 //! ray skips every block whose height range it passes above or below and only tests the
 //! triangles of the cells it actually reaches, nearest first.
 //!
-//! `smooth` interpolates vertex normals across each triangle. POV-Ray's vertex normals could not
-//! be reproduced exactly (measured on planes they are tilted by up to ten percent, differently
-//! at different vertices); lancer takes the central difference of the neighbouring heights.
+//! `smooth` mixes the four corner normals of the cell bilinearly; the corner normals are made
+//! and kept the way POV-Ray keeps them, as 16-bit integers in grid units, whose rounding tilts
+//! them visibly on steep slopes (see `vertex_normal`).
 
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
@@ -271,15 +271,38 @@ impl HeightField {
         self.visit(&mut r, top, 0, 0);
     }
 
-    /// Unit normal at vertex (i, j) from the neighbouring heights, in object space.
+    /// The normal at vertex (i, j) as povray keeps it: in grid units (one per grid step, heights
+    /// in 16-bit steps), the sum of the unit normals of the four triangles the vertex makes
+    /// with its neighbours along x and z, normalised and truncated to 16-bit integers. Both
+    /// details show: in those units slopes are large, so the sum weighs gentle sides more (a
+    /// harmonic mean of the slopes), and the y component is a small integer whose truncation
+    /// tilts the normal (measured with `trace`: a ramp rising d per vertex shows the slope
+    /// (W-1) / (2 floor(32767 / d)), a parabola the harmonic mean of the slopes on either side,
+    /// and random grids match to six digits).
     fn vertex_normal(&self, i: usize, j: usize) -> DVec3 {
         let d = &self.data;
-        let (cx, cz) = self.cells();
-        let (i0, i1) = (i.saturating_sub(1), (i + 1).min(d.width - 1));
-        let (j0, j1) = (j.saturating_sub(1), (j + 1).min(d.depth - 1));
-        let dx = (d.h(i1, j) - d.h(i0, j)) / ((i1 - i0) as f64 / cx);
-        let dz = (d.h(i, j1) - d.h(i, j0)) / ((j1 - j0) as f64 / cz);
-        DVec3::new(-dx, 1.0, -dz).normalize()
+        let raw = |i: usize, j: usize| d.heights[j * d.width + i] as f64;
+        // The four triangles the vertex makes with its neighbours along x and z, taken in
+        // turn (+x, +z), (+z, -x), (-x, -z), (-z, +x); at the edges the missing ones drop out.
+        let p = |di: isize, dj: isize| -> Option<DVec3> {
+            let (a, b) = (i as isize + di, j as isize + dj);
+            (a >= 0 && b >= 0 && (a as usize) < d.width && (b as usize) < d.depth).then(|| {
+                DVec3::new(
+                    di as f64,
+                    raw(a as usize, b as usize) - raw(i, j),
+                    dj as f64,
+                )
+            })
+        };
+        let around = [p(1, 0), p(0, 1), p(-1, 0), p(0, -1)];
+        let mut n = DVec3::ZERO;
+        for k in 0..4 {
+            if let (Some(a), Some(b)) = (around[k], around[(k + 1) % 4]) {
+                let c = b.cross(a);
+                n += if c.y < 0.0 { -c } else { c }.normalize();
+            }
+        }
+        (n.normalize_or_zero() * 32767.0).trunc()
     }
 }
 
@@ -352,16 +375,18 @@ impl Shape for HeightField {
         let (i, j) = (cell % (d.width - 1), cell / (d.width - 1));
         let (cx, cz) = self.cells();
         if d.smooth {
+            // Each corner's normal taken to object units, then mixed bilinearly over the cell
+            // (not by the triangle's barycentric weights): povray's trace() answers match this
+            // exactly inside cells of a random grid.
             let [u, v] = hit.uv;
-            let n = if tri == 0 {
-                self.vertex_normal(i, j) * (1.0 - u - v)
-                    + self.vertex_normal(i + 1, j) * u
-                    + self.vertex_normal(i, j + 1) * v
-            } else {
-                self.vertex_normal(i, j + 1) * (1.0 - u)
-                    + self.vertex_normal(i + 1, j + 1) * (u + v - 1.0)
-                    + self.vertex_normal(i + 1, j) * (1.0 - v)
+            let corner = |a: usize, b: usize| {
+                let n = self.vertex_normal(a, b);
+                DVec3::new(n.x * cx, n.y * 65536.0, n.z * cz).normalize_or_zero()
             };
+            let n = corner(i, j) * ((1.0 - u) * (1.0 - v))
+                + corner(i + 1, j) * (u * (1.0 - v))
+                + corner(i, j + 1) * ((1.0 - u) * v)
+                + corner(i + 1, j + 1) * (u * v);
             if n != DVec3::ZERO {
                 return n;
             }

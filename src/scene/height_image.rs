@@ -11,8 +11,11 @@
 //! * `gamma G` or `gamma srgb` after the file name decodes each channel first, then truncates
 //!   it back to its bit depth.
 //!
+//! * GIF: the palette index·256; POT (Fractint's 16-bit GIFs): see `load_gif`.
+//!
 //! The data is linear by default, unlike image maps. PNG files are decoded with the `png`
-//! crate so palette indices survive; other formats through the `image` crate.
+//! crate and GIFs by `scene::gif` so palette indices survive; other formats through the `image`
+//! crate.
 
 use std::io::BufReader;
 use std::path::Path;
@@ -87,15 +90,46 @@ fn check_size(w: u64, h: u64, path: &Path) -> Result<(), String> {
     Ok(())
 }
 
-pub fn load_heights(path: &Path, gamma: Option<HfGamma>) -> Result<HeightImage, String> {
-    let is_png = std::fs::read(path)
-        .map(|b| b.starts_with(b"\x89PNG"))
+/// The heights of an image file; `pot` reads a GIF as Fractint's POT format.
+pub fn load_heights(path: &Path, gamma: Option<HfGamma>, pot: bool) -> Result<HeightImage, String> {
+    let data = std::fs::read(path)
         .map_err(|e| format!("cannot read height field image {}: {e}", path.display()))?;
-    if is_png {
+    if data.starts_with(b"\x89PNG") {
         load_png(path, gamma)
+    } else if data.starts_with(b"GIF8") {
+        load_gif(&data, path, pot)
     } else {
         load_other(path, gamma)
     }
+}
+
+/// GIF: the palette index·256. POT: a GIF twice as wide, the left half holding each height's
+/// high byte and the right half its low byte.
+fn load_gif(data: &[u8], path: &Path, pot: bool) -> Result<HeightImage, String> {
+    let img = super::gif::decode(data, MAX_PIXELS)
+        .map_err(|e| format!("cannot read GIF {}: {e}", path.display()))?;
+    let (w, h) = (img.width, img.height);
+    if !pot {
+        check_size(w as u64, h as u64, path)?;
+        let heights = img.pixels.iter().map(|&i| i as u16 * 256).collect();
+        return Ok(HeightImage {
+            width: w,
+            height: h,
+            heights,
+        });
+    }
+    let half = w / 2;
+    check_size(half as u64, h as u64, path)?;
+    let mut heights = Vec::with_capacity(half * h);
+    for y in 0..h {
+        let row = &img.pixels[y * w..(y + 1) * w];
+        heights.extend((0..half).map(|x| (row[x] as u16) << 8 | row[x + half] as u16));
+    }
+    Ok(HeightImage {
+        width: half,
+        height: h,
+        heights,
+    })
 }
 
 fn load_png(path: &Path, gamma: Option<HfGamma>) -> Result<HeightImage, String> {

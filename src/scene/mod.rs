@@ -2,6 +2,7 @@
 
 pub mod build;
 pub mod desc;
+pub mod gif;
 pub mod height_image;
 pub mod image;
 pub mod light;

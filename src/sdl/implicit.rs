@@ -403,7 +403,7 @@ impl Parser {
 }
 
 /// Image types POV-Ray reads for height fields that lancer cannot decode.
-const HF_UNREADABLE: &[&str] = &["gif", "iff", "pot", "sys", "tiff"];
+const HF_UNREADABLE: &[&str] = &["iff", "sys", "tiff"];
 /// Image type keywords a height field may start with.
 const HF_TYPES: &[&str] = &[
     "exr", "gif", "hdr", "iff", "jpeg", "pgm", "png", "pot", "ppm", "sys", "tga", "tiff", "bmp",
@@ -512,7 +512,7 @@ impl Parser {
         }
         if let Some(k) = &kind {
             if HF_UNREADABLE.contains(&&**k) {
-                self.unsupported(&format!("height_field {k} files (png, tga, ppm, pgm, bmp, jpeg, hdr and exr are read)"), span);
+                self.unsupported(&format!("height_field {k} files (png, gif, pot, tga, ppm, pgm, bmp, jpeg, hdr and exr are read)"), span);
                 return Ok(None);
             }
         }
@@ -522,7 +522,8 @@ impl Parser {
                 format!("cannot find height field image \"{name}\" (searched the scene directory and the library path)"),
             ));
         };
-        let img = load_heights(&path, gamma).map_err(|e| self.error_at(name_span, e))?;
+        let pot = kind.as_deref() == Some("pot");
+        let img = load_heights(&path, gamma, pot).map_err(|e| self.error_at(name_span, e))?;
         // Image rows run from the top (z = 1) down.
         let (w, h) = (img.width, img.height);
         let mut grid = vec![0u16; w * h];
