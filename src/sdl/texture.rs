@@ -554,9 +554,9 @@ impl Parser {
 fn split_pigment(kind: PigmentKind) -> (Option<Pattern>, Form) {
     match kind {
         PigmentKind::Solid(c) => (None, Form::Solid(c)),
-        PigmentKind::Mapped { pattern, map } => (Some(pattern), Form::Colors(Some(map))),
-        PigmentKind::List { pattern, items } => (Some(pattern), Form::Items(items)),
-        PigmentKind::PigmentMap { pattern, map } => (Some(pattern), Form::Pigments(map)),
+        PigmentKind::Mapped { pattern, map } => (Some(*pattern), Form::Colors(Some(map))),
+        PigmentKind::List { pattern, items } => (Some(*pattern), Form::Items(items)),
+        PigmentKind::PigmentMap { pattern, map } => (Some(*pattern), Form::Pigments(map)),
         PigmentKind::ImageMap(im) => (None, Form::Image(im)),
     }
 }
@@ -568,19 +568,20 @@ fn join_pigment(pat: Option<Pattern>, form: Form) -> PigmentKind {
             Form::Image(im) => PigmentKind::ImageMap(im),
             // A map with no pattern ramps along x, as POV-Ray's default gradient does.
             Form::Colors(map) => PigmentKind::Mapped {
-                pattern: Pattern::new(PatternKind::Gradient(DVec3::X)),
+                pattern: Box::new(Pattern::new(PatternKind::Gradient(DVec3::X))),
                 map: map.unwrap_or_else(|| default_map(&PatternKind::Gradient(DVec3::X))),
             },
             Form::Items(items) => PigmentKind::List {
-                pattern: Pattern::new(PatternKind::Checker),
+                pattern: Box::new(Pattern::new(PatternKind::Checker)),
                 items,
             },
             Form::Pigments(map) => PigmentKind::PigmentMap {
-                pattern: Pattern::new(PatternKind::Gradient(DVec3::X)),
+                pattern: Box::new(Pattern::new(PatternKind::Gradient(DVec3::X))),
                 map,
             },
         };
     };
+    let pattern = Box::new(pattern);
     if pattern.is_block() {
         let items = match form {
             Form::Items(items) => items,
