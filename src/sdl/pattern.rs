@@ -403,6 +403,7 @@ impl Parser {
             let t = self.next_tok()?;
             let Tok::Ident(m) = &t.tok else {
                 if t.tok == Tok::Sym(Sym::RBrace) {
+                    fix_repeated_black_hole(&mut kind);
                     return Ok(Some(kind));
                 }
                 return Err(self.unexpected(&t, "in warp"));
@@ -457,6 +458,26 @@ impl Parser {
             }
         }
         Ok(())
+    }
+}
+
+/// A repeated black hole must fit inside its block: on each repeated axis POV-Ray moves a
+/// centre closer to the block's edge than the radius out to the radius, and widens a block too
+/// narrow for centre + radius (measured: a hole at the origin repeats as one at the radius).
+fn fix_repeated_black_hole(kind: &mut WarpKind) {
+    if let WarpKind::BlackHole {
+        center,
+        radius,
+        repeat,
+        ..
+    } = kind
+    {
+        for k in 0..3 {
+            if repeat[k] != 0.0 {
+                center[k] = center[k].max(*radius);
+                repeat[k] = repeat[k].max(center[k] + *radius);
+            }
+        }
     }
 }
 
