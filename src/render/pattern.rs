@@ -142,7 +142,7 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
                 r + q.z + arms * (q.y.atan2(q.x) / TAU + 0.25)
             }
         }
-        PatternKind::Bozo => noise::noise(q, gen),
+        PatternKind::Bozo | PatternKind::Spotted => noise::noise(q, gen),
         PatternKind::Granite => {
             // A 1/f sum of the noise's distance from its middle over six octaves.
             let mut sum = 0.0;

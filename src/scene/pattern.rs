@@ -94,8 +94,10 @@ pub enum PatternKind {
     /// `image_pattern { ... }`: the image's grey (file values), or with `use_alpha` its
     /// transparency (1 − alpha).
     ImagePattern(Arc<crate::scene::desc::ImageMap>),
-    /// bozo, spotted and (as a pigment) bumps: one octave of noise.
+    /// bozo: one octave of noise.
     Bozo,
+    /// spotted and (as a pigment) bumps: bozo's values with a grey default map.
+    Spotted,
     Granite,
     Agate {
         turb: f64,

@@ -103,7 +103,8 @@ pub fn default_map(kind: &PatternKind) -> Vec<(f64, Rgbft)> {
             (2.0 / 3.0, c(1.0, 0.0, 1.0)),
             (1.0, c(0.0, 1.0, 1.0)),
         ],
-        PatternKind::Mandel(_) | PatternKind::Julia { .. } => vec![
+        // Julia has none: it ramps black to white like most patterns.
+        PatternKind::Mandel(_) => vec![
             (0.0, c(0.0, 0.0, 0.0)),
             (0.001, c(0.0, 0.0, 0.0)),
             (0.001, c(0.0, 1.0, 1.0)),
@@ -171,7 +172,8 @@ impl Parser {
                 mortar: 0.5,
             },
             "hexagon" => PatternKind::Hexagon,
-            "bozo" | "spotted" | "bumps" => PatternKind::Bozo,
+            "bozo" => PatternKind::Bozo,
+            "spotted" | "bumps" => PatternKind::Spotted,
             "granite" => PatternKind::Granite,
             "agate" => PatternKind::Agate { turb: 1.0 },
             "wrinkles" => PatternKind::Wrinkles,
