@@ -55,13 +55,6 @@ impl Pattern {
     }
 }
 
-impl PartialEq for Pattern {
-    /// Patterns compare by kind only (enough for tests and for deduplicating warnings).
-    fn eq(&self, other: &Self) -> bool {
-        std::mem::discriminant(&self.kind) == std::mem::discriminant(&other.kind)
-    }
-}
-
 #[derive(Clone, Debug)]
 pub enum PatternKind {
     Checker,
