@@ -156,13 +156,6 @@ impl Parser {
                     self.skip_block()?;
                 }
                 k if UNSUPPORTED_FLAGS.contains(&k) => self.unsupported(k, t.span),
-                "interior" | "exterior" => {
-                    // Fractal patterns' inside and outside colouring: type, factor.
-                    self.unsupported(k, t.span);
-                    self.parse_float()?;
-                    self.skip_optional_comma()?;
-                    self.parse_float()?;
-                }
                 _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in pigment"))),
             }
         }
