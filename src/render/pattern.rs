@@ -11,7 +11,7 @@
 use std::f64::consts::{PI, TAU};
 
 use crate::math::DVec3;
-use crate::scene::pattern::{Pattern, PatternKind, Wave};
+use crate::scene::pattern::{Fractal, Pattern, PatternKind, Wave};
 
 use super::noise;
 use super::warp;
@@ -142,7 +142,7 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
                 r + q.z + arms * (q.y.atan2(q.x) / TAU + 0.25)
             }
         }
-        PatternKind::Bozo => noise::noise(q, gen),
+        PatternKind::Bozo | PatternKind::Spotted => noise::noise(q, gen),
         PatternKind::Granite => {
             // A 1/f sum of the noise's distance from its middle over six octaves.
             let mut sum = 0.0;
@@ -178,8 +178,7 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
             );
             noise::unit(h)
         }
-        PatternKind::Mandel(n) => fractal((q.x, q.y), (q.x, q.y), *n),
-        PatternKind::Julia { c, iterations } => fractal((q.x, q.y), *c, *iterations),
+        PatternKind::Fractal(f) => fractal(f, (q.x, q.y)),
         PatternKind::Function(f) => {
             if f.unsupported.is_some() {
                 0.0
@@ -192,17 +191,59 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
     }
 }
 
-/// Escape-time value of z ← z² + c starting from `z`: k/N when the k-th step (from 0) leaves
-/// the radius-2 disc, 1 inside (measured with povray's mandel and julia patterns).
-fn fractal(z: (f64, f64), c: (f64, f64), n: u32) -> f64 {
-    let (mut zr, mut zi) = z;
+/// Escape-time fractals. From z = c (mandel) or z = p (julia), z ← zⁿ + c; leaving the
+/// radius-2 disc at step k (from 0) gives the exterior value (type 1: k/N, measured), staying
+/// in for N steps the interior value (type 0: 1). Other types read the orbit as the manual
+/// lists them, scaled by their factor (checked against povray for types 1 to 8).
+fn fractal(f: &Fractal, p: (f64, f64)) -> f64 {
+    let c = f.julia.unwrap_or(p);
+    let (mut zr, mut zi) = p;
+    let n = f.iterations;
+    // The orbit's smallest point counts the starting point too (measured: interior 1).
+    let mut min_abs2 = zr * zr + zi * zi;
     for k in 0..n {
-        (zr, zi) = (zr * zr - zi * zi + c.0, 2.0 * zr * zi + c.1);
-        if zr * zr + zi * zi > 4.0 {
-            return k as f64 / n as f64;
+        (zr, zi) = cpow(zr, zi, f.exponent);
+        zr += c.0;
+        zi += c.1;
+        let a2 = zr * zr + zi * zi;
+        if a2 > 4.0 {
+            let (t, factor) = f.exterior;
+            return match t {
+                1 => k as f64 / n as f64,
+                7 if factor != 0.0 => (k as f64 % factor) / factor,
+                8 if factor != 0.0 => (k as f64 % (factor + 1.0)) / factor,
+                6 => (zr * zr + zi * zi).sqrt() * factor,
+                _ => orbit_value(t, zr, zi, min_abs2) * factor,
+            };
         }
+        min_abs2 = min_abs2.min(a2);
     }
-    1.0
+    let (t, factor) = f.interior;
+    orbit_value(t, zr, zi, min_abs2) * factor
+}
+
+/// Types 0 and 2 to 6 (and interior 1): what of the orbit a fractal's value reports. Type 6,
+/// the manual's "absolute value", is the squared modulus inside and the modulus outside in
+/// POV-Ray 3.7 (measured).
+fn orbit_value(t: u8, zr: f64, zi: f64, min_abs2: f64) -> f64 {
+    match t {
+        1 => min_abs2.sqrt(),
+        2 => zr,
+        3 => zi,
+        4 => zr * zr,
+        5 => zi * zi,
+        6 => zr * zr + zi * zi,
+        _ => 1.0,
+    }
+}
+
+/// zⁿ for a small integer n ≥ 2 by repeated multiplication.
+fn cpow(zr: f64, zi: f64, n: u32) -> (f64, f64) {
+    let (mut r, mut i) = (zr, zi);
+    for _ in 1..n.max(2) {
+        (r, i) = (r * zr - i * zi, r * zi + i * zr);
+    }
+    (r, i)
 }
 
 fn checker(q: DVec3) -> usize {

@@ -48,7 +48,7 @@ pub fn apply(w: &Warp, q: DVec3, generator: u8) -> DVec3 {
                 p
             } else {
                 let closeness = 1.0 - len / radius;
-                let force = closeness.powf(*falloff) * strength;
+                let force = (closeness.powf(*falloff) * strength).min(1.0);
                 // Sucking in shows the pattern from farther out; inverse pushes it away.
                 if *inverse {
                     p - d * force

@@ -471,21 +471,23 @@ impl Pigment {
 }
 
 #[derive(Clone, Debug)]
+/// Patterns are boxed: pigments sit inside every object description, which the parser keeps
+/// on the stack once per level of CSG nesting.
 pub enum PigmentKind {
     Solid(Rgbft),
     /// A continuous pattern looked up in a colour map.
     Mapped {
-        pattern: Pattern,
+        pattern: Box<Pattern>,
         map: ColorMap,
     },
     /// A discrete pattern choosing between whole pigments (checker, hexagon, brick).
     List {
-        pattern: Pattern,
+        pattern: Box<Pattern>,
         items: Vec<Pigment>,
     },
     /// `pigment_map`: a continuous pattern blending whole pigments, sorted by value.
     PigmentMap {
-        pattern: Pattern,
+        pattern: Box<Pattern>,
         map: Vec<(f64, Pigment)>,
     },
     ImageMap(Arc<ImageMap>),

@@ -55,13 +55,6 @@ impl Pattern {
     }
 }
 
-impl PartialEq for Pattern {
-    /// Patterns compare by kind only (enough for tests and for deduplicating warnings).
-    fn eq(&self, other: &Self) -> bool {
-        std::mem::discriminant(&self.kind) == std::mem::discriminant(&other.kind)
-    }
-}
-
 #[derive(Clone, Debug)]
 pub enum PatternKind {
     Checker,
@@ -94,8 +87,10 @@ pub enum PatternKind {
     /// `image_pattern { ... }`: the image's grey (file values), or with `use_alpha` its
     /// transparency (1 − alpha).
     ImagePattern(Arc<crate::scene::desc::ImageMap>),
-    /// bozo, spotted and (as a pigment) bumps: one octave of noise.
+    /// bozo: one octave of noise.
     Bozo,
+    /// spotted and (as a pigment) bumps: bozo's values with a grey default map.
+    Spotted,
     Granite,
     Agate {
         turb: f64,
@@ -111,19 +106,27 @@ pub enum PatternKind {
         solid: bool,
     },
     Cells,
-    /// `mandel N`: iterations of z² + c from z = c, c = x + iy.
-    Mandel(u32),
-    /// `julia <c>, N`: iterations of z² + c from z = x + iy.
-    Julia {
-        c: (f64, f64),
-        iterations: u32,
-    },
+    /// `mandel N` (`julia` None) or `julia <c>, N`: iterations of zⁿ + c from z = c = x + iy
+    /// (mandel) or from z = x + iy (julia).
+    Fractal(Box<Fractal>),
     /// `average`: the map's entries mixed by their weights, not chosen by a value.
     Average,
     /// `function { ... }` of x, y, z.
     Function(Arc<Function>),
     /// A pattern lancer does not evaluate yet (already warned about): the middle of its map.
     Unsupported,
+}
+
+#[derive(Clone, Debug)]
+pub struct Fractal {
+    /// The constant of a julia set; None for the Mandelbrot set.
+    pub julia: Option<(f64, f64)>,
+    pub iterations: u32,
+    /// 2 to 33.
+    pub exponent: u32,
+    /// `interior type, factor` (default 0, 1) and `exterior type, factor` (default 1, 1).
+    pub interior: (u8, f64),
+    pub exterior: (u8, f64),
 }
 
 /// How the pattern's value (after frequency and phase) is shaped before the map lookup.

@@ -4,7 +4,7 @@
 
 use crate::color::Rgbft;
 use crate::math::{DVec3, Transform};
-use crate::scene::pattern::{Pattern, PatternKind, Turbulence, Warp, WarpKind, Wave};
+use crate::scene::pattern::{Fractal, Pattern, PatternKind, Turbulence, Warp, WarpKind, Wave};
 
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
@@ -103,7 +103,9 @@ pub fn default_map(kind: &PatternKind) -> Vec<(f64, Rgbft)> {
             (2.0 / 3.0, c(1.0, 0.0, 1.0)),
             (1.0, c(0.0, 1.0, 1.0)),
         ],
-        PatternKind::Mandel(_) | PatternKind::Julia { .. } => vec![
+        // Only the Mandelbrot set of exponent 2 has one (julia and higher exponents ramp black
+        // to white like most patterns).
+        PatternKind::Fractal(f) if f.julia.is_none() && f.exponent == 2 => vec![
             (0.0, c(0.0, 0.0, 0.0)),
             (0.001, c(0.0, 0.0, 0.0)),
             (0.001, c(0.0, 1.0, 1.0)),
@@ -171,7 +173,8 @@ impl Parser {
                 mortar: 0.5,
             },
             "hexagon" => PatternKind::Hexagon,
-            "bozo" | "spotted" | "bumps" => PatternKind::Bozo,
+            "bozo" => PatternKind::Bozo,
+            "spotted" | "bumps" => PatternKind::Spotted,
             "granite" => PatternKind::Granite,
             "agate" => PatternKind::Agate { turb: 1.0 },
             "wrinkles" => PatternKind::Wrinkles,
@@ -198,15 +201,22 @@ impl Parser {
                 PatternKind::PigmentPattern(Box::new(self.parse_pigment_body_in_braces()?))
             }
             "average" => PatternKind::Average,
-            "mandel" => PatternKind::Mandel(self.parse_float()?.clamp(0.0, 1e6) as u32),
-            "julia" => {
-                let c = self.parse_vector()?;
-                self.skip_optional_comma()?;
-                let n = self.parse_float()?.clamp(0.0, 1e6) as u32;
-                PatternKind::Julia {
-                    c: (c.x, c.y),
-                    iterations: n,
-                }
+            "mandel" | "julia" => {
+                let julia = if k == "julia" {
+                    let c = self.parse_vector()?;
+                    self.skip_optional_comma()?;
+                    Some((c.x, c.y))
+                } else {
+                    None
+                };
+                let iterations = self.parse_float()?.clamp(0.0, 1e6) as u32;
+                PatternKind::Fractal(Box::new(Fractal {
+                    julia,
+                    iterations,
+                    exponent: 2,
+                    interior: (0, 1.0),
+                    exterior: (1, 1.0),
+                }))
             }
             "function" => {
                 let v = self.parse_function_literal(span)?;
@@ -317,10 +327,25 @@ impl Parser {
             }
             "exponent" => {
                 let e = self.parse_float()?;
-                if e != 2.0
-                    && matches!(pat.kind, PatternKind::Mandel(_) | PatternKind::Julia { .. })
-                {
-                    self.unsupported("exponent (other than 2, in mandel or julia)", span);
+                if let PatternKind::Fractal(f) = &mut pat.kind {
+                    f.exponent = (e as i64).clamp(2, 33) as u32;
+                }
+            }
+            "interior" | "exterior" => {
+                // A fractal's colouring: type, factor.
+                let t = self.parse_float()?;
+                self.skip_optional_comma()?;
+                let factor = self.parse_float()?;
+                match &mut pat.kind {
+                    PatternKind::Fractal(f) => {
+                        let v = ((t as i64).clamp(0, 8) as u8, factor);
+                        if k == "interior" {
+                            f.interior = v;
+                        } else {
+                            f.exterior = v;
+                        }
+                    }
+                    _ => self.unsupported(k, span),
                 }
             }
             "form" | "metric" | "offset" | "solid" => {
@@ -403,6 +428,7 @@ impl Parser {
             let t = self.next_tok()?;
             let Tok::Ident(m) = &t.tok else {
                 if t.tok == Tok::Sym(Sym::RBrace) {
+                    fix_repeated_black_hole(&mut kind);
                     return Ok(Some(kind));
                 }
                 return Err(self.unexpected(&t, "in warp"));
@@ -457,6 +483,26 @@ impl Parser {
             }
         }
         Ok(())
+    }
+}
+
+/// A repeated black hole must fit inside its block: on each repeated axis POV-Ray moves a
+/// centre closer to the block's edge than the radius out to the radius, and widens a block too
+/// narrow for centre + radius (measured: a hole at the origin repeats as one at the radius).
+fn fix_repeated_black_hole(kind: &mut WarpKind) {
+    if let WarpKind::BlackHole {
+        center,
+        radius,
+        repeat,
+        ..
+    } = kind
+    {
+        for k in 0..3 {
+            if repeat[k] != 0.0 {
+                center[k] = center[k].max(*radius);
+                repeat[k] = repeat[k].max(center[k] + *radius);
+            }
+        }
     }
 }
 

@@ -155,13 +155,6 @@ impl Parser {
                     self.skip_block()?;
                 }
                 k if UNSUPPORTED_FLAGS.contains(&k) => self.unsupported(k, t.span),
-                "interior" | "exterior" => {
-                    // Fractal patterns' inside and outside colouring: type, factor.
-                    self.unsupported(k, t.span);
-                    self.parse_float()?;
-                    self.skip_optional_comma()?;
-                    self.parse_float()?;
-                }
                 _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in pigment"))),
             }
         }
@@ -516,9 +509,9 @@ impl Parser {
 fn split_pigment(kind: PigmentKind) -> (Option<Pattern>, Form) {
     match kind {
         PigmentKind::Solid(c) => (None, Form::Solid(c)),
-        PigmentKind::Mapped { pattern, map } => (Some(pattern), Form::Colors(Some(map))),
-        PigmentKind::List { pattern, items } => (Some(pattern), Form::Items(items)),
-        PigmentKind::PigmentMap { pattern, map } => (Some(pattern), Form::Pigments(map)),
+        PigmentKind::Mapped { pattern, map } => (Some(*pattern), Form::Colors(Some(map))),
+        PigmentKind::List { pattern, items } => (Some(*pattern), Form::Items(items)),
+        PigmentKind::PigmentMap { pattern, map } => (Some(*pattern), Form::Pigments(map)),
         PigmentKind::ImageMap(im) => (None, Form::Image(im)),
     }
 }
@@ -530,19 +523,20 @@ fn join_pigment(pat: Option<Pattern>, form: Form) -> PigmentKind {
             Form::Image(im) => PigmentKind::ImageMap(im),
             // A map with no pattern ramps along x, as POV-Ray's default gradient does.
             Form::Colors(map) => PigmentKind::Mapped {
-                pattern: Pattern::new(PatternKind::Gradient(DVec3::X)),
+                pattern: Box::new(Pattern::new(PatternKind::Gradient(DVec3::X))),
                 map: map.unwrap_or_else(|| default_map(&PatternKind::Gradient(DVec3::X))),
             },
             Form::Items(items) => PigmentKind::List {
-                pattern: Pattern::new(PatternKind::Checker),
+                pattern: Box::new(Pattern::new(PatternKind::Checker)),
                 items,
             },
             Form::Pigments(map) => PigmentKind::PigmentMap {
-                pattern: Pattern::new(PatternKind::Gradient(DVec3::X)),
+                pattern: Box::new(Pattern::new(PatternKind::Gradient(DVec3::X))),
                 map,
             },
         };
     };
+    let pattern = Box::new(pattern);
     if pattern.is_block() {
         let items = match form {
             Form::Items(items) => items,
