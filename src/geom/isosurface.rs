@@ -30,6 +30,11 @@ const PART_CONTAINER: u32 = 1;
 /// (up to 12 accuracies away at grazing light), and 8 leaves the fewest differing pixels on
 /// the test scenes.
 const SELF_CROSSING: f64 = 8.0;
+/// Most function evaluations one ray may spend. Where the function stays within reach of the
+/// threshold along the ray (a ray lying in the surface of `function { y }`), every piece may
+/// hold a crossing and the search would visit all container/accuracy of them: with a tiny
+/// accuracy, practically forever. Ordinary rays need hundreds; grazing ones a few thousand.
+const MAX_EVALUATIONS: u32 = 100_000;
 /// Deepest subdivision: a container 2^60 accuracies long is never searched exhaustively.
 const MAX_DEPTH: u32 = 60;
 
@@ -246,6 +251,7 @@ impl Isosurface {
             } else {
                 f64::NEG_INFINITY
             },
+            budget: MAX_EVALUATIONS,
         };
         search.run(lo, f_lo, hi, f_hi, 0);
         for s in std::mem::take(&mut search.found) {
@@ -269,6 +275,8 @@ struct Search<'a> {
     limit: usize,
     /// Crossings nearer than this are the surface the ray starts on (see `SELF_CROSSING`).
     skip: f64,
+    /// Function evaluations left for this ray (see `MAX_EVALUATIONS`).
+    budget: u32,
 }
 
 impl Search<'_> {
@@ -302,6 +310,10 @@ impl Search<'_> {
             }
             return self.found.len() < self.limit;
         }
+        if self.budget == 0 {
+            return false;
+        }
+        self.budget -= 1;
         let m = 0.5 * (a + b);
         let fm = self.f(m);
         self.run(a, fa, m, fm, depth + 1) && self.run(m, fm, b, fb, depth + 1)
@@ -522,6 +534,25 @@ mod tests {
         let s = iso(unit_box(), 0.5, false);
         assert!(hits(&s, DVec3::splat(f64::NAN), DVec3::Z).is_empty());
         assert!(hits(&s, DVec3::ZERO, DVec3::ZERO).is_empty());
+        // A ray lying in the surface of `function { y }` with a tiny accuracy: every piece may
+        // hold a crossing; the evaluation budget ends the search.
+        let flat = Isosurface::new(&IsoData {
+            function: Arc::new(Function::from_expr(
+                vec!["x".into(), "y".into(), "z".into()],
+                &Expr::Slot(1),
+                3,
+            )),
+            container: unit_box(),
+            threshold: 0.0,
+            accuracy: 1e-300,
+            max_gradient: 1.1,
+            evaluate: None,
+            open: true,
+            max_trace: None,
+        });
+        let t0 = std::time::Instant::now();
+        hits(&flat, DVec3::new(-5.0, 0.0, 0.0), DVec3::X);
+        assert!(t0.elapsed().as_secs_f64() < 5.0);
     }
 
     #[test]
