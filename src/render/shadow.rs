@@ -59,7 +59,9 @@ impl<'a> Tracer<'a> {
         // `adaptive` splits made regardless. Without `adaptive` povray 3.7 samples as with
         // `adaptive 0` (the manual says every point; the binary's pictures say otherwise).
         let levels = a.adaptive.unwrap_or(0);
-        let mut cache = vec![None; (n1 * n2) as usize];
+        let mut cache = std::mem::take(&mut ctx.area_samples);
+        cache.clear();
+        cache.resize((n1 * n2) as usize, None);
         let mut get = |i: u32, j: u32, ctx: &mut TraceCtx<'a>| {
             let k = (j * n1 + i) as usize;
             if let Some(v) = cache[k] {
@@ -109,7 +111,9 @@ impl<'a> Tracer<'a> {
             }
             sum / (ni * nj) as f64
         }
-        quad(&mut get, ctx, (0, n1 - 1, 0, n2 - 1), levels)
+        let seen = quad(&mut get, ctx, (0, n1 - 1, 0, n2 - 1), levels);
+        ctx.area_samples = cache;
+        seen
     }
 
     /// Light reaching `p` from a light `dist` away in direction `l`: zero behind an opaque

@@ -186,14 +186,16 @@ impl<'a> Tracer<'a> {
         };
         let p = ray.at(h.t);
         let local = h.obj.transform.map_or(p, |t| t.inv_point(p));
-        let mut weights = Vec::new();
+        // The buffer is taken out while the parts are shaded: their rays may meet blobs too.
+        let mut weights = std::mem::take(&mut ctx.blob_weights);
         blob.densities(local, &mut weights);
         let total: f64 = weights.iter().map(|(_, d)| d.abs()).sum();
         if total.is_nan() || total <= 0.0 {
+            ctx.blob_weights = weights;
             return self.shade(ray, h, path, ctx);
         }
         let mut out = Seen::default();
-        for (i, d) in weights {
+        for &(i, d) in &weights {
             let w = d.abs() / total;
             if path.weight * w < self.scene.adc_bailout {
                 continue;
@@ -208,6 +210,7 @@ impl<'a> Tracer<'a> {
             out.rgb += s.rgb * w;
             out.clear += s.clear * w;
         }
+        ctx.blob_weights = weights;
         out
     }
 

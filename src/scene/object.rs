@@ -49,6 +49,10 @@ pub struct Scratch<'a> {
     pub rays: u64,
     /// The lights reaching the point being shaded, shared by its texture layers.
     pub lit: Vec<crate::render::trace::LitBy>,
+    /// Blob components reaching a shaded point, with their field (per-component textures).
+    pub blob_weights: Vec<(usize, f64)>,
+    /// Shadow samples of an area light's array already taken for the point being shaded.
+    pub area_samples: Vec<Option<DVec3>>,
 }
 
 /// Whether a crossing at `p` of CSG member `i` is on the result's surface: every other member
