@@ -2,7 +2,8 @@
 //! lights and for area lights (an array of points, sampled whole or adaptively).
 
 use crate::math::{DVec3, Ray};
-use crate::scene::light::{AreaLight, Light};
+use crate::scene::desc::AreaLightDesc;
+use crate::scene::light::Light;
 
 use super::texture_map;
 use super::trace::{TraceCtx, Tracer};
@@ -34,7 +35,7 @@ impl<'a> Tracer<'a> {
         }
     }
 
-    fn area_seen(&self, p: DVec3, light: &Light, a: &AreaLight, ctx: &mut TraceCtx<'a>) -> DVec3 {
+    fn area_seen(&self, p: DVec3, light: &Light, a: &AreaLightDesc, ctx: &mut TraceCtx<'a>) -> DVec3 {
         let from = (p - light.position).normalize_or_zero();
         let seed = point_seed(p);
         let sample = |i: u32, j: u32, ctx: &mut TraceCtx<'a>| {

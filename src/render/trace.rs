@@ -8,7 +8,7 @@
 
 use crate::color::Rgbft;
 use crate::math::{DVec3, Ray};
-use crate::scene::build::{Light, Scene};
+use crate::scene::build::Scene;
 use crate::scene::desc::Interior;
 use crate::scene::object::{Scratch, SurfaceHit};
 
@@ -136,18 +136,6 @@ impl<'a> Tracer<'a> {
             Some(ray) => self.trace_seen(&ray, Path::CAMERA, ctx),
             None => Seen::default(),
         }
-    }
-
-    /// Colour seen along a reflected ray. `depth` starts at 1 for primary rays; `weight` is
-    /// this ray's share of the pixel, for adaptive depth control.
-    pub fn trace(&self, ray: &Ray, depth: u32, weight: f64, ctx: &mut TraceCtx<'a>) -> DVec3 {
-        let path = Path {
-            depth,
-            weight,
-            straight: false,
-            medium: None,
-        };
-        self.trace_seen(ray, path, ctx).rgb
     }
 
     /// `path.straight`: the ray continues the camera ray through transparent surfaces only, so the
@@ -381,7 +369,7 @@ impl<'a> Tracer<'a> {
             if cos_n <= 0.0 {
                 continue;
             }
-            let mut lc = light.color * (fade(light, inc.dist) * inc.beam);
+            let mut lc = light.color * (light.fade(inc.dist) * inc.beam);
             if !light.shadowless && q.shadows {
                 if let Some(dist) = inc.shadow_dist {
                     lc *= self.light_seen(p, light, l, dist, ctx);
@@ -454,13 +442,4 @@ pub struct LitBy {
     pub l: DVec3,
     pub cos_n: f64,
     pub shadowless: bool,
-}
-
-fn fade(light: &Light, dist: f64) -> f64 {
-    match light.fade_distance {
-        Some(fd) if fd > 0.0 && light.fade_power > 0.0 => {
-            2.0 / (1.0 + (dist / fd).powf(light.fade_power))
-        }
-        _ => 1.0,
-    }
 }

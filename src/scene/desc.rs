@@ -195,9 +195,9 @@ pub struct AreaLightDesc {
     pub orient: bool,
 }
 
-impl AreaLightDesc {
-    /// A 1×1 array: the modifiers of an area light given before its `area_light` line.
-    pub fn point() -> AreaLightDesc {
+/// A 1×1 array: holds the modifiers of an area light given before its `area_light` line.
+impl Default for AreaLightDesc {
+    fn default() -> AreaLightDesc {
         AreaLightDesc {
             axis1: DVec3::ZERO,
             axis2: DVec3::ZERO,

@@ -19,7 +19,9 @@ pub struct Light {
     pub cone: Cone,
     /// Unit direction the light travels, for parallel and cylinder lights.
     pub parallel: Option<DVec3>,
-    pub area: Option<AreaLight>,
+    /// An array of point lights for soft shadows (axes in world space); lighting itself
+    /// comes from the centre.
+    pub area: Option<AreaLightDesc>,
 }
 
 /// The shape of a light's beam.
@@ -38,19 +40,6 @@ pub enum Cone {
         falloff: f64,
         tightness: f64,
     },
-}
-
-/// An array of point lights for soft shadows; lighting itself comes from the centre.
-#[derive(Clone, Debug)]
-pub struct AreaLight {
-    pub axis1: DVec3,
-    pub axis2: DVec3,
-    pub size1: u32,
-    pub size2: u32,
-    pub adaptive: Option<u32>,
-    pub jitter: bool,
-    pub circular: bool,
-    pub orient: bool,
 }
 
 /// How a light reaches a point.
@@ -104,7 +93,22 @@ impl Light {
             fade_power: d.fade_power,
             cone,
             parallel,
-            area: d.area.as_ref().map(|a| AreaLight::new(a, t)),
+            area: d.area.as_ref().map(|a| AreaLightDesc {
+                axis1: t.vector(a.axis1),
+                axis2: t.vector(a.axis2),
+                ..a.clone()
+            }),
+        }
+    }
+
+    /// `fade_distance`/`fade_power`: 2/(1 + (d/fade_distance)^fade_power), full strength at
+    /// the fade distance.
+    pub fn fade(&self, dist: f64) -> f64 {
+        match self.fade_distance {
+            Some(fd) if fd > 0.0 && self.fade_power > 0.0 => {
+                2.0 / (1.0 + (dist / fd).powf(self.fade_power))
+            }
+            _ => 1.0,
         }
     }
 
@@ -195,20 +199,7 @@ fn smoothstep(t: f64) -> f64 {
     t * t * (3.0 - 2.0 * t)
 }
 
-impl AreaLight {
-    fn new(a: &AreaLightDesc, t: &Transform) -> AreaLight {
-        AreaLight {
-            axis1: t.vector(a.axis1),
-            axis2: t.vector(a.axis2),
-            size1: a.size1.max(1),
-            size2: a.size2.max(1),
-            adaptive: a.adaptive,
-            jitter: a.jitter,
-            circular: a.circular,
-            orient: a.orient,
-        }
-    }
-
+impl AreaLightDesc {
     /// The array point (i, j) relative to the light's centre, for a light seen from `from`
     /// (unit vector from the light towards the shaded point, used by `orient`). `jitter` is a
     /// pair in [-0.5, 0.5) moving the point within its cell.
@@ -309,7 +300,7 @@ mod tests {
 
     #[test]
     fn area_points_span_the_axes() {
-        let a = AreaLight {
+        let a = AreaLightDesc {
             axis1: DVec3::X * 2.0,
             axis2: DVec3::Z * 2.0,
             size1: 3,
