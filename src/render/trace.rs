@@ -399,7 +399,7 @@ impl<'a> Tracer<'a> {
         mirror: DVec3,
         ctx: &TraceCtx<'a>,
     ) -> DVec3 {
-        let opacity = c.opacity().max(0.0);
+        let opacity = c.opacity();
         let specular_exp = 1.0 / fin.roughness.max(1e-6);
         let mut col = (fin.ambient * self.scene.ambient_light + fin.emission) * c.rgb * opacity;
         // Highlights take the surface colour in proportion to `metallic`.
