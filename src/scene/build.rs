@@ -57,7 +57,13 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
     let gamma = match (desc.global.assumed_gamma, desc.version) {
         (Some(g), _) => GammaMode::Corrected(if g > 0.0 { g } else { 1.0 }),
         (None, Some(v)) if v < 3.7 => GammaMode::None,
-        (None, _) => {
+        // No `#version` anywhere (an included file's counts) and no `+MV`: povray 3.7 takes the
+        // scene for a pre-3.7 one and leaves gamma alone (measured: tests/probes/no_version).
+        (None, None) => {
+            warnings.push("the scene has no #version directive and sets no assumed_gamma: gamma correction is off, as POV-Ray 3.7 does for pre-3.7 scenes (start the scene with #version 3.7; and set global_settings { assumed_gamma 1.0 })".to_string());
+            GammaMode::None
+        }
+        (None, Some(_)) => {
             warnings.push("the scene sets no assumed_gamma; taking 1.0 as POV-Ray 3.7 does (add global_settings { assumed_gamma 1.0 })".to_string());
             GammaMode::Corrected(1.0)
         }
