@@ -655,7 +655,7 @@ impl Parser {
                             light.area = Some(area);
                         }
                         "adaptive" | "jitter" | "circular" | "orient" => {
-                            let area = light.area.get_or_insert_with(AreaLightDesc::default);
+                            let area = light.area.get_or_insert_default();
                             match &*k {
                                 "adaptive" => {
                                     area.adaptive = Some(self.parse_float()?.max(0.0) as u32)
@@ -714,7 +714,7 @@ impl Parser {
             axis2,
             size1: size1.max(1.0) as u32,
             size2: size2.max(1.0) as u32,
-            ..before.unwrap_or_else(AreaLightDesc::default)
+            ..before.unwrap_or_default()
         })
     }
 
