@@ -54,7 +54,7 @@ pub fn warped(pat: &Pattern, p: DVec3) -> DVec3 {
     }
     if let Some(t) = &pat.turbulence {
         // Marble adds its turbulence to the value instead (see `raw`).
-        if !matches!(pat.kind, PatternKind::Marble) {
+        if !matches!(pat.kind, PatternKind::Marble) && t.amount != DVec3::ZERO {
             q += t.amount
                 * noise::turbulence_vec(q, t.octaves, t.omega, t.lambda, pat.noise_generator);
         }
@@ -143,24 +143,15 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
             }
         }
         PatternKind::Bozo | PatternKind::Spotted => noise::noise(q, gen),
-        PatternKind::Granite => {
-            // A 1/f sum of the noise's distance from its middle over six octaves.
-            let mut sum = 0.0;
-            let mut f = 1.0;
-            for _ in 0..6 {
-                sum += (0.5 - noise::noise(q * (4.0 * f), gen)).abs() / f;
-                f *= 2.0;
-            }
-            // Scaled to POV-Ray's spread (mean 0.40, deviation 0.16 on a plane).
-            (2.1 * sum).min(1.0)
-        }
+        PatternKind::Granite => noise::granite(q, gen),
         PatternKind::Agate { turb } => {
-            let t = noise::turbulence(q, 7, 0.5, 2.0, gen);
-            let v = 0.5 + 0.5 * (TAU * (q.z * 0.5 + turb * 1.6 * t)).sin();
-            v.clamp(0.0, 1.0)
+            // Measured: (1/2 + sin(2π(1.1 z + 1.3 agate_turb T))/2)^0.77, T the scalar
+            // turbulence with the pattern's octaves, omega and lambda.
+            let t = pat.turbulence.unwrap_or_default();
+            let t = noise::turbulence(q, t.octaves, t.omega, t.lambda, gen);
+            (0.5 + 0.5 * (TAU * (1.1 * q.z + 1.3 * turb * t)).sin()).powf(0.77)
         }
-        // Scaled to POV-Ray's spread (mean 0.51, deviation 0.13 on a plane).
-        PatternKind::Wrinkles => (0.2 + 0.8 * noise::turbulence(q, 10, 0.5, 2.0, gen)).min(1.0),
+        PatternKind::Wrinkles => noise::wrinkles(q, gen),
         PatternKind::Dents => noise::noise(q, gen).powi(3),
         PatternKind::Ripples | PatternKind::Waves => waves(pat, q),
         PatternKind::Crackle {
