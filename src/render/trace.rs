@@ -360,7 +360,8 @@ impl<'a> Tracer<'a> {
         let q = self.quality;
         let mut lit = std::mem::take(&mut ctx.lit);
         lit.clear();
-        for light in &self.scene.lights {
+        let seed = point_seed(p);
+        for (i, light) in self.scene.lights.iter().enumerate() {
             let Some(inc) = light.incidence(p) else {
                 continue;
             };
@@ -383,6 +384,7 @@ impl<'a> Tracer<'a> {
                 l,
                 cos_n,
                 shadowless: light.shadowless,
+                grain: grain(seed, i as u32),
             });
         }
         ctx.lit = lit;
@@ -412,7 +414,10 @@ impl<'a> Tracer<'a> {
                 } else {
                     lb.cos_n.powf(fin.brilliance)
                 };
-                col += lc * c.rgb * (fin.diffuse * d * opacity);
+                // crand darkens each light's diffuse term by its own random share (measured
+                // with povray: independent per light, uniform, ambient untouched).
+                let grainy = 1.0 - fin.crand * lb.grain;
+                col += lc * c.rgb * (fin.diffuse * d * opacity * grainy);
             }
             // POV-Ray 3.7 gives shadowless lights no highlights (tests/probes/shadowless_*).
             if lb.shadowless {
@@ -442,4 +447,24 @@ pub struct LitBy {
     pub l: DVec3,
     pub cos_n: f64,
     pub shadowless: bool,
+    /// Uniform in [0, 1), fixed by the point and the light: `crand`'s random share.
+    pub grain: f64,
+}
+
+/// A seed from a point's exact coordinates, so random-looking choices made there are the
+/// same on every run and for any thread count.
+pub(super) fn point_seed(p: DVec3) -> u32 {
+    let h = p.x.to_bits() ^ p.y.to_bits().rotate_left(21) ^ p.z.to_bits().rotate_left(42);
+    (h ^ (h >> 32)) as u32
+}
+
+/// A well-mixed value in [0, 1) from a point seed and a light's index.
+fn grain(seed: u32, light: u32) -> f64 {
+    let mut h = seed ^ light.wrapping_mul(0x9e37_79b9);
+    h ^= h >> 16;
+    h = h.wrapping_mul(0x7feb_352d);
+    h ^= h >> 15;
+    h = h.wrapping_mul(0x846c_a68b);
+    h ^= h >> 16;
+    (h >> 8) as f64 / (1u32 << 24) as f64
 }

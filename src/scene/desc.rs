@@ -537,6 +537,8 @@ pub struct Finish {
     pub metallic: f64,
     pub reflection: Reflection,
     pub conserve_energy: bool,
+    /// `crand`: each light's diffuse term is scaled by 1 - crand·u, u uniform in [0, 1).
+    pub crand: f64,
 }
 
 impl Default for Finish {
@@ -553,6 +555,7 @@ impl Default for Finish {
             metallic: 0.0,
             reflection: Reflection::default(),
             conserve_energy: false,
+            crand: 0.0,
         }
     }
 }

@@ -660,7 +660,10 @@ impl Parser {
                                 "adaptive" => {
                                     area.adaptive = Some(self.parse_float()?.max(0.0) as u32)
                                 }
-                                "jitter" => area.jitter = true,
+                                "jitter" => {
+                                    area.jitter = true;
+                                    self.warn(t.span, "'jitter' is random in POV-Ray (its pixels change with the thread count): soft shadow edges have the same grain as povray's but not the same pixels, and are the same for any thread count");
+                                }
                                 "circular" => area.circular = self.optional_bool()?,
                                 _ => area.orient = self.optional_bool()?,
                             }

@@ -416,8 +416,8 @@ impl Parser {
                 }
                 "conserve_energy" => f.conserve_energy = self.optional_bool()?,
                 "crand" => {
-                    self.unsupported(k, t.span);
-                    self.parse_float()?;
+                    f.crand = self.parse_float()?;
+                    self.warn(t.span, "'crand' is random in POV-Ray (its pixels change with the thread count): lancer's graininess has the same distribution (measured) but not the same pixels, and is the same for any thread count");
                 }
                 "irid" | "subsurface" => {
                     self.unsupported(k, t.span);
