@@ -297,6 +297,10 @@ PATTERNS = [
     "bozo warp { turbulence 0.5 octaves 4 } scale 0.7",
     "bozo warp { turbulence <1,0.2,0.3> lambda 3 omega 0.3 }",
     "wrinkles warp { turbulence 0.5 } warp { turbulence 0.2 octaves 2 }",
+    "wood turbulence 0.05", "wood turbulence <0.05,0.1,0.3> octaves 3 omega 0.7 lambda 2.7",
+    "wood turbulence 0.04 noise_generator 1 ramp_wave frequency 3",
+    "agate turbulence 0.3", "spotted turbulence 0.3", "dents turbulence 0.3 lambda 2.5",
+    "marble turbulence 0.3 warp { turbulence 0.2 }",
 ]
 # marble: x + t·turbulence; the ramp wave wraps at 1.00001, so its points keep x + t·T in
 # [0, 1) away from the wrap

@@ -3,7 +3,7 @@
 //!
 //! Order, as POV-Ray 3.7 does it: warps from the last written to the first, then classic
 //! turbulence (always innermost), then the pattern's function, then frequency and phase
-//! (`fmod(v·f + phase, 1.00001)`, wrapped to positive; the period just over 1 keeps a value of
+//! (`fmod(v·f + phase, 1.00001)`, plus 1 when negative; the period just over 1 keeps a value of
 //! exactly 1, such as `spherical` at its centre, at the top of the map), then the wave type.
 //! The formulas of the deterministic patterns were measured against the `povray` binary with
 //! 16-bit renders of each pattern on a plane (see tests/probes/pattern_*.pov).
@@ -53,8 +53,8 @@ pub fn warped(pat: &Pattern, p: DVec3) -> DVec3 {
         q = warp::apply(w, q, pat.noise_generator);
     }
     if let Some(t) = &pat.turbulence {
-        // Marble adds its turbulence to the value instead (see `raw`).
-        if !matches!(pat.kind, PatternKind::Marble) && t.amount != DVec3::ZERO {
+        // Marble and wood use their turbulence in their own formulas instead (see `raw`).
+        if !matches!(pat.kind, PatternKind::Marble | PatternKind::Wood) && t.amount != DVec3::ZERO {
             q += t.amount
                 * noise::turbulence_vec(q, t.octaves, t.omega, t.lambda, pat.noise_generator);
         }
@@ -69,7 +69,8 @@ fn shape(pat: &Pattern, v: f64) -> f64 {
     }
     let mut v = (v * pat.frequency + pat.phase) % WRAP;
     if v < 0.0 {
-        v += WRAP;
+        // Measured: gradient x at x = -0.3 gives 0.7, so negatives wrap by 1, not WRAP.
+        v += 1.0;
     }
     if !v.is_finite() {
         v = 0.0;
@@ -133,7 +134,17 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
             });
             q.x + t
         }
-        PatternKind::Wood => (q.x * q.x + q.y * q.y).sqrt(),
+        PatternKind::Wood => match &pat.turbulence {
+            // Measured: with turbulence a and V the vector turbulence at the point, the rings'
+            // x and y are x + sin(2π a.x (x + V.x)) and y + sin(2π a.y (y + V.y)).
+            Some(t) if t.amount != DVec3::ZERO => {
+                let v = noise::turbulence_vec(q, t.octaves, t.omega, t.lambda, gen);
+                let x = q.x + (TAU * t.amount.x * (q.x + v.x)).sin();
+                let y = q.y + (TAU * t.amount.y * (q.y + v.y)).sin();
+                (x * x + y * y).sqrt()
+            }
+            _ => (q.x * q.x + q.y * q.y).sqrt(),
+        },
         PatternKind::Spiral1(arms) => {
             let r = (q.x * q.x + q.y * q.y).sqrt();
             if r == 0.0 {

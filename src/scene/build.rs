@@ -182,7 +182,7 @@ impl Ctx {
             PigmentKind::PigmentMap { map, .. } => {
                 map.iter_mut().fold(false, |t, (_, i)| self.pigment(i) | t)
             }
-            PigmentKind::ImageMap(im) => {
+            PigmentKind::ImageMap(im, _) => {
                 let (converted, transparent) = self.image(im);
                 *im = converted;
                 transparent

@@ -490,7 +490,8 @@ pub enum PigmentKind {
         pattern: Box<Pattern>,
         map: Vec<(f64, Pigment)>,
     },
-    ImageMap(Arc<ImageMap>),
+    /// An image, with the pattern that carries its turbulence and warps when it has any.
+    ImageMap(Arc<ImageMap>, Option<Box<Pattern>>),
 }
 
 /// Colour map entries sorted by value, as POV-Ray's `color_map { [v colour] ... }`.

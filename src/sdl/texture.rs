@@ -512,7 +512,7 @@ fn split_pigment(kind: PigmentKind) -> (Option<Pattern>, Form) {
         PigmentKind::Mapped { pattern, map } => (Some(*pattern), Form::Colors(Some(map))),
         PigmentKind::List { pattern, items } => (Some(*pattern), Form::Items(items)),
         PigmentKind::PigmentMap { pattern, map } => (Some(*pattern), Form::Pigments(map)),
-        PigmentKind::ImageMap(im) => (None, Form::Image(im)),
+        PigmentKind::ImageMap(im, pat) => (pat.map(|p| *p), Form::Image(im)),
     }
 }
 
@@ -520,7 +520,7 @@ fn join_pigment(pat: Option<Pattern>, form: Form) -> PigmentKind {
     let Some(pattern) = pat else {
         return match form {
             Form::Solid(c) => PigmentKind::Solid(c),
-            Form::Image(im) => PigmentKind::ImageMap(im),
+            Form::Image(im) => PigmentKind::ImageMap(im, None),
             // A map with no pattern ramps along x, as POV-Ray's default gradient does.
             Form::Colors(map) => PigmentKind::Mapped {
                 pattern: Box::new(Pattern::new(PatternKind::Gradient(DVec3::X))),
@@ -548,7 +548,11 @@ fn join_pigment(pat: Option<Pattern>, form: Form) -> PigmentKind {
         return PigmentKind::List { pattern, items };
     }
     match form {
-        Form::Image(im) => PigmentKind::ImageMap(im),
+        Form::Image(im) => {
+            let warped = pattern.turbulence.is_some_and(|t| t.amount != DVec3::ZERO)
+                || !pattern.warps.is_empty();
+            PigmentKind::ImageMap(im, warped.then_some(pattern))
+        }
         // Only modifiers were given to a plain colour: it stays plain.
         Form::Solid(c) if matches!(pattern.kind, PatternKind::Unsupported) => PigmentKind::Solid(c),
         Form::Pigments(map) => PigmentKind::PigmentMap { pattern, map },
