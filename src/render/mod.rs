@@ -7,6 +7,7 @@ mod aa;
 pub mod camera;
 mod fog;
 pub mod noise;
+pub mod normal;
 pub mod pattern;
 pub mod pigment;
 mod shadow;

@@ -324,16 +324,23 @@ fn brick(q: DVec3, size: DVec3, mortar: f64) -> usize {
     (!in_mortar) as usize
 }
 
+/// The ten fixed centres in the unit cube that ripples and waves spread from (their normals
+/// too, render::normal).
+pub fn wave_sources() -> [DVec3; 10] {
+    std::array::from_fn(|i| {
+        DVec3::new(
+            noise::unit(noise::hash3(i as i64, 0, 0, 11)),
+            noise::unit(noise::hash3(i as i64, 1, 0, 11)),
+            noise::unit(noise::hash3(i as i64, 2, 0, 11)),
+        )
+    })
+}
+
 /// Ripples and waves: circular waves from ten fixed centres in the unit cube.
 fn waves(pat: &Pattern, q: DVec3) -> f64 {
     const N: u32 = 10;
     let mut sum = 0.0;
-    for i in 0..N {
-        let c = DVec3::new(
-            noise::unit(noise::hash3(i as i64, 0, 0, 11)),
-            noise::unit(noise::hash3(i as i64, 1, 0, 11)),
-            noise::unit(noise::hash3(i as i64, 2, 0, 11)),
-        );
+    for c in wave_sources() {
         let d = (q - c).length();
         sum += match pat.kind {
             // Ripples: sharp-crested rings about a unit apart.

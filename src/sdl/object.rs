@@ -149,7 +149,8 @@ impl Parser {
             }
             "normal" => {
                 let mut tex = self.texture_mut(obj);
-                tex.normal = Some(self.parse_normal_block(span)?);
+                let _ = span;
+                tex.normal = Some(self.parse_normal_block_over(tex.normal.clone())?);
                 obj.texture = Some(tex);
             }
             "interior" => obj.interior = Some(self.parse_interior_block()?),
@@ -714,7 +715,7 @@ impl Parser {
             axis2,
             size1: size1.max(1.0) as u32,
             size2: size2.max(1.0) as u32,
-            ..before.unwrap_or_else(AreaLightDesc::default)
+            ..before.unwrap_or_default()
         })
     }
 
