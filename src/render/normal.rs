@@ -13,7 +13,8 @@
 //!   them). Four values fix a linear function exactly, so the slope is exact for linear
 //!   patterns and smoothed over `accuracy` at edges.
 //! - A slope map makes the height a cubic Hermite spline of the value through its entries'
-//!   heights with their slopes (measured on `gradient x` with constant-height maps).
+//!   heights with their slopes, each slope taken over its segment (measured on `gradient x`
+//!   with constant-height maps and a triangle-wave map).
 
 use std::f64::consts::TAU;
 
@@ -146,7 +147,8 @@ fn slope(pat: &Pattern, map: Option<&[(f64, f64, f64)]>, lp: DVec3, accuracy: f6
 }
 
 /// The height a slope map gives value `v`: a cubic Hermite spline through the entries'
-/// heights with their slopes (per unit of value), flat outside them.
+/// heights with their slopes, flat outside them. The slopes are per segment, not per unit of
+/// value (measured: `[0 <0,1>] [0.5 <1,1>]` rises in a straight line).
 pub fn slope_height(map: &[(f64, f64, f64)], v: f64) -> f64 {
     let (Some(first), Some(last)) = (map.first(), map.last()) else {
         return v;
@@ -168,8 +170,8 @@ pub fn slope_height(map: &[(f64, f64, f64)], v: f64) -> f64 {
             let (t2, t3) = (t * t, t * t * t);
             return h0 * (2.0 * t3 - 3.0 * t2 + 1.0)
                 + h1 * (3.0 * t2 - 2.0 * t3)
-                + s0 * d * (t3 - 2.0 * t2 + t)
-                + s1 * d * (t3 - t2);
+                + s0 * (t3 - 2.0 * t2 + t)
+                + s1 * (t3 - t2);
         }
     }
     last.1
