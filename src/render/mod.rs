@@ -8,6 +8,7 @@ pub mod camera;
 mod fog;
 pub mod noise;
 mod noise_data;
+pub mod normal;
 pub mod pattern;
 pub mod pigment;
 mod shadow;

@@ -203,6 +203,9 @@ impl Ctx {
         let mut transparent = true;
         let mut layer = Some(t);
         while let Some(l) = layer {
+            if let Some(n) = &mut l.normal {
+                normal_generator(n, self.noise_generator);
+            }
             let mut this = self.pigment(&mut l.pigment);
             if let Some(tp) = &mut l.pattern {
                 if tp.pattern.noise_generator == 0 {
@@ -400,5 +403,34 @@ impl Scene {
     /// judged by their other members).
     pub fn inside_other(&self, p: DVec3, leaf: &Object) -> bool {
         self.objects.iter().any(|o| o.inside_without(p, leaf))
+    }
+}
+
+/// Normal patterns that named no noise generator use the scene's.
+fn normal_generator(n: &mut crate::scene::desc::Normal, gen: u8) {
+    use crate::scene::desc::NormalKind;
+    match &mut n.kind {
+        NormalKind::Pattern { pattern, .. } => {
+            if pattern.noise_generator == 0 {
+                pattern.noise_generator = gen;
+            }
+        }
+        NormalKind::List { pattern, items } => {
+            if pattern.noise_generator == 0 {
+                pattern.noise_generator = gen;
+            }
+            for i in items {
+                normal_generator(i, gen);
+            }
+        }
+        NormalKind::Map { pattern, map } => {
+            if pattern.noise_generator == 0 {
+                pattern.noise_generator = gen;
+            }
+            for (_, i) in map {
+                normal_generator(i, gen);
+            }
+        }
+        NormalKind::Flat | NormalKind::BumpMap(_) | NormalKind::Facets { .. } => {}
     }
 }

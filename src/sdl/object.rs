@@ -149,7 +149,8 @@ impl Parser {
             }
             "normal" => {
                 let mut tex = self.texture_mut(obj);
-                tex.normal = Some(self.parse_normal_block(span)?);
+                let _ = span;
+                tex.normal = Some(self.parse_normal_block_over(tex.normal.clone())?);
                 obj.texture = Some(tex);
             }
             "interior" => obj.interior = Some(self.parse_interior_block()?),

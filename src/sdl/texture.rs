@@ -5,9 +5,7 @@ use std::sync::Arc;
 
 use crate::color::Rgbft;
 use crate::math::DVec3;
-use crate::scene::desc::{
-    ColorMap, Finish, ImageMap, Normal, NormalKind, Pattern, Pigment, PigmentKind, Reflection,
-};
+use crate::scene::desc::{ColorMap, Finish, ImageMap, Pattern, Pigment, PigmentKind, Reflection};
 use crate::scene::pattern::PatternKind;
 
 use super::lexer::{Sym, Tok};
@@ -299,6 +297,8 @@ impl Parser {
             height: 0,
             pixels: Vec::new(),
             use_alpha: false,
+            bump_size: None,
+            use_index: false,
         };
         let (mut filter_all, mut transmit_all) = (None, None);
         loop {
@@ -329,7 +329,9 @@ impl Parser {
                         self.parse_float()?;
                     }
                     "use_alpha" => map.use_alpha = true,
-                    "use_color" | "use_colour" | "use_index" => {}
+                    "use_color" | "use_colour" => map.use_index = false,
+                    "use_index" => map.use_index = true,
+                    "bump_size" => map.bump_size = Some(self.parse_float()?),
                     _ => {
                         return Err(self.error_at(t.span, format!("unexpected '{k}' in image_map")))
                     }
@@ -491,17 +493,6 @@ impl Parser {
         }
         f.reflection = r;
         Ok(())
-    }
-
-    /// Normal blocks are read past: lancer does not perturb normals yet.
-    pub(super) fn parse_normal_block(&mut self, span: Span) -> PResult<Normal> {
-        self.unsupported("normal (surface perturbation)", span);
-        self.skip_block()?;
-        Ok(Normal {
-            kind: NormalKind::Unsupported,
-            amount: 0.0,
-            transform: Default::default(),
-        })
     }
 }
 
