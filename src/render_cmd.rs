@@ -63,7 +63,8 @@ pub fn render(job: Job) -> ExitCode {
         } else {
             ProgressBar::hidden()
         };
-        let code = render_frame(&job, f, animated, &mut said, &mut lexed, &row_bar);
+        let last = std::ptr::eq(f, frames.last().unwrap_or(f));
+        let code = render_frame(&job, f, animated, last, &mut said, &mut lexed, &row_bar);
         row_bar.finish_and_clear();
         bars.remove(&row_bar);
         if code != ExitCode::SUCCESS {
@@ -72,6 +73,8 @@ pub fn render(job: Job) -> ExitCode {
         frame_bar.inc(1);
     }
     frame_bar.finish_and_clear();
+    // The lexed files are freed by the exit that follows.
+    lancer::stats::dispose(lexed, true);
     if animated && !job.quiet {
         eprintln!(
             "lancer: {} frames in {:.2}s",
@@ -86,13 +89,14 @@ fn render_frame(
     job: &Job,
     f: &Frame,
     animated: bool,
+    last: bool,
     said: &mut HashSet<String>,
     lexed: &mut Option<lancer::sdl::parser::Lexed>,
     bar: &ProgressBar,
 ) -> ExitCode {
     let start = Instant::now();
     let opts = job.parse_options(f);
-    let parsed = lancer::api::parse_file_with(&job.scene, opts, lexed.take());
+    let mut parsed = lancer::api::parse_file_with(&job.scene, opts, lexed.take());
     let sources = &parsed.parser.sources;
     for w in &parsed.parser.warnings {
         if said.insert(w.one_line(sources)) {
@@ -104,12 +108,23 @@ fn render_frame(
         return ExitCode::from(1);
     }
     let parse_time = start.elapsed();
+    let files = parsed.parser.take_lexed();
+    let build_start = Instant::now();
+    if last {
+        // No later frame needs the tokens: a big mesh2 file's are hundreds of megabytes,
+        // freed before the build adds its own.
+        drop(files);
+    } else {
+        *lexed = Some(files);
+    }
     let built = lancer::scene::build::build(
         &parsed.parser.scene,
         job.settings.width,
         job.settings.height,
     );
-    *lexed = Some(parsed.parser.into_lexed());
+    // The description is no longer needed; freeing it is part of the build's time.
+    drop(parsed);
+    let build_time = build_start.elapsed();
     for w in &built.warnings {
         if said.insert(w.clone()) {
             eprintln!("warning: {w}");
@@ -121,21 +136,35 @@ fn render_frame(
     );
     let trace_start = Instant::now();
     let film = lancer::render::render(&built.scene, &job.settings, &|n| bar.inc(n));
+    let render_time = trace_start.elapsed();
+    let phases = |write: Option<f64>| {
+        let write = write.map_or(String::new(), |w| format!(", write {w:.3}s"));
+        let peak = lancer::stats::peak_rss_bytes()
+            .map_or(String::new(), |b| format!(", peak {} MB", b / (1 << 20)));
+        format!(
+            "parse {:.3}s, build {:.3}s, render {:.3}s{write}{peak}",
+            parse_time.as_secs_f64(),
+            build_time.as_secs_f64(),
+            render_time.as_secs_f64(),
+        )
+    };
     if !job.write_output {
         if !job.quiet {
             eprintln!(
-                "lancer: rendered frame {} without writing it (Output_To_File=off / -F) — parse {:.3}s, render {:.3}s",
+                "lancer: rendered frame {} without writing it (Output_To_File=off / -F) — {}",
                 f.number,
-                parse_time.as_secs_f64(),
-                trace_start.elapsed().as_secs_f64()
+                phases(None)
             );
         }
+        lancer::stats::dispose(built.scene, last);
         return ExitCode::SUCCESS;
     }
+    let write_start = Instant::now();
     if let Err(e) = lancer::output::write(&film, &f.output, &job.output_spec) {
         eprintln!("lancer: {e}");
         return ExitCode::from(1);
     }
+    let write_time = write_start.elapsed();
     if !job.quiet {
         let frame = if animated {
             format!("frame {} (clock {}): ", f.number, f.clock)
@@ -143,15 +172,15 @@ fn render_frame(
             String::new()
         };
         eprintln!(
-            "lancer: {frame}wrote {} ({}x{}) — parse {:.3}s, render {:.3}s, {} rays ({} camera)",
+            "lancer: {frame}wrote {} ({}x{}) — {}, {} rays ({} camera)",
             f.output.display(),
             job.settings.width,
             job.settings.height,
-            parse_time.as_secs_f64(),
-            trace_start.elapsed().as_secs_f64(),
+            phases(Some(write_time.as_secs_f64())),
             film.rays,
             film.camera_rays
         );
     }
+    lancer::stats::dispose(built.scene, last);
     ExitCode::SUCCESS
 }

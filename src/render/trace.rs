@@ -173,7 +173,7 @@ impl<'a> Tracer<'a> {
             return self.shade(ray, h, path, ctx);
         };
         let p = ray.at(h.t);
-        let local = h.obj.transform.map_or(p, |t| t.inv_point(p));
+        let local = h.obj.transform.as_ref().map_or(p, |t| t.inv_point(p));
         // The buffer is taken out while the parts are shaded: their rays may meet blobs too.
         let mut weights = std::mem::take(&mut ctx.blob_weights);
         blob.densities(local, &mut weights);

@@ -17,7 +17,8 @@ pub enum ObjKind {
 pub struct Object {
     pub kind: ObjKind,
     /// Object to world; `None` when identity, to skip two matrix products per ray.
-    pub transform: Option<Transform>,
+    /// Boxed: most objects of a big scene have none, and inline it would be 256 bytes each.
+    pub transform: Option<Box<Transform>>,
     pub texture: Arc<Texture>,
     /// Per-triangle textures of a mesh, indexed by `MeshData::triangles[i].texture`.
     pub mesh: Option<(Arc<MeshData>, Vec<Arc<Texture>>)>,
