@@ -9,6 +9,14 @@ pub fn peak_rss_bytes() -> Option<u64> {
     Some(kb * 1024)
 }
 
+/// Memory the system can give without swapping (Linux `MemAvailable`), None where unknown.
+pub fn available_memory_bytes() -> Option<u64> {
+    let info = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let line = info.lines().find(|l| l.starts_with("MemAvailable:"))?;
+    let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kb * 1024)
+}
+
 /// Drops `value`, unless `exiting`: then it is leaked, because freeing a scene of a million
 /// objects one allocation at a time takes seconds that the operating system saves by taking
 /// the whole address space back at exit.

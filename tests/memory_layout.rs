@@ -11,7 +11,7 @@ use lancer::scene::object::Object;
 #[test]
 fn per_object_types_stay_small() {
     // Inline transforms (256 bytes each), textures and light sources made these 1392, 224,
-    // 824, 352 and 464 bytes.
+    // 824, 352 and 464 bytes (inline mesh and blob data another 48 on the last).
     assert!(
         size_of::<ObjectDesc>() <= 192,
         "{}",
@@ -20,5 +20,5 @@ fn per_object_types_stay_small() {
     assert!(size_of::<ShapeDesc>() <= 80, "{}", size_of::<ShapeDesc>());
     assert!(size_of::<Texture>() <= 320, "{}", size_of::<Texture>());
     assert!(size_of::<Pigment>() <= 104, "{}", size_of::<Pigment>());
-    assert!(size_of::<Object>() <= 224, "{}", size_of::<Object>());
+    assert!(size_of::<Object>() <= 176, "{}", size_of::<Object>());
 }

@@ -169,7 +169,7 @@ impl<'a> Tracer<'a> {
         path: Path<'a>,
         ctx: &mut TraceCtx<'a>,
     ) -> Seen {
-        let Some((blob, _)) = &h.obj.blob else {
+        let Some((blob, _)) = h.obj.blob.as_deref() else {
             return self.shade(ray, h, path, ctx);
         };
         let p = ray.at(h.t);

@@ -350,7 +350,7 @@ impl Ctx {
                             transparent |= tr;
                             texes.push(tex);
                         }
-                        blob = Some((shape.clone(), texes));
+                        blob = Some(Box::new((shape.clone(), texes)));
                         shape
                     }
                     _ => make_shape(shape),
@@ -369,7 +369,7 @@ impl Ctx {
                             transparent |= tr;
                             texes.push(tex);
                         }
-                        Some((data.clone(), texes))
+                        Some(Box::new((data.clone(), texes)))
                     }
                     _ => None,
                 };
