@@ -21,3 +21,4 @@ pub mod render;
 pub mod scene;
 pub mod sdl;
 pub mod ssim;
+pub mod stats;

@@ -123,6 +123,40 @@ impl Transform {
     }
 }
 
+/// A transform kept out of line: 8 bytes in the common case of none at all, where the inline
+/// `Transform` (two 4×4 matrices) is 256. Scene descriptions hold one per object and per
+/// pigment, a million of them in a big `#while` loop. Reads see the same `Transform` values
+/// as before (`Transform::IDENTITY` when none was given), so pictures do not change.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Xform(Option<Box<Transform>>);
+
+impl Xform {
+    pub const IDENTITY: Xform = Xform(None);
+
+    pub fn get(&self) -> &Transform {
+        self.0.as_deref().unwrap_or(&Transform::IDENTITY)
+    }
+
+    /// Follows this transform by `t` (what `Transform::then` computes, identity included, so
+    /// the result is bit for bit the same).
+    pub fn apply(&mut self, t: &Transform) {
+        *self = Xform::from(self.get().then(t));
+    }
+}
+
+impl From<Transform> for Xform {
+    fn from(t: Transform) -> Xform {
+        Xform(Some(Box::new(t)))
+    }
+}
+
+impl std::ops::Deref for Xform {
+    type Target = Transform;
+    fn deref(&self) -> &Transform {
+        self.get()
+    }
+}
+
 fn nz(x: f64) -> f64 {
     if x == 0.0 {
         1.0

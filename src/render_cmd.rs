@@ -29,6 +29,13 @@ pub fn render(job: Job) -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    let plan = match plan(&job) {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("lancer: {e}");
+            return ExitCode::from(1);
+        }
+    };
     let animated = job.animation.is_animation();
     let show = !job.quiet && std::io::IsTerminal::is_terminal(&std::io::stderr());
     let bars = MultiProgress::new();
@@ -63,7 +70,10 @@ pub fn render(job: Job) -> ExitCode {
         } else {
             ProgressBar::hidden()
         };
-        let code = render_frame(&job, f, animated, &mut said, &mut lexed, &row_bar);
+        let last = std::ptr::eq(f, frames.last().unwrap_or(f));
+        let code = render_frame(
+            &job, f, animated, last, plan, &mut said, &mut lexed, &row_bar,
+        );
         row_bar.finish_and_clear();
         bars.remove(&row_bar);
         if code != ExitCode::SUCCESS {
@@ -72,6 +82,8 @@ pub fn render(job: Job) -> ExitCode {
         frame_bar.inc(1);
     }
     frame_bar.finish_and_clear();
+    // The lexed files are freed by the exit that follows.
+    lancer::stats::dispose(lexed, true);
     if animated && !job.quiet {
         eprintln!(
             "lancer: {} frames in {:.2}s",
@@ -82,17 +94,69 @@ pub fn render(job: Job) -> ExitCode {
     ExitCode::SUCCESS
 }
 
+/// How the picture is held: whole, or rendered and written band by band.
+#[derive(Clone, Copy)]
+enum Plan {
+    Whole,
+    /// Rows a band.
+    Banded(usize),
+}
+
+/// Above this a picture is rendered band by band when its file type allows; below it the
+/// whole-picture path keeps today's files byte for byte (a streamed PNG's compressed data is
+/// split into other chunks). 4K pictures (3840×2160) stay below.
+const BAND_ABOVE: u64 = 2 << 30;
+
+/// Decides, before any work, how the picture is held; a picture that can neither be banded
+/// nor fit in the memory available is refused with what it needs and how to avoid it.
+fn plan(job: &Job) -> Result<Plan, String> {
+    use lancer::render::band;
+    let s = &job.settings;
+    let need = band::whole_picture_bytes(s);
+    if need <= BAND_ABOVE {
+        return Ok(Plan::Whole);
+    }
+    let why_not = if !band::can_band(s) {
+        Some("anti-aliasing method 2 (+AM2) needs the whole picture".to_string())
+    } else if job.write_output {
+        lancer::output::why_not_streamable(&job.output_spec)
+    } else {
+        None
+    };
+    let Some(why) = why_not else {
+        return Ok(Plan::Banded(band::band_rows(s)));
+    };
+    let available = lancer::stats::available_memory_bytes();
+    if available.is_none_or(|a| need < a) {
+        return Ok(Plan::Whole);
+    }
+    let gb = |b: u64| b as f64 / (1u64 << 30) as f64;
+    Err(format!(
+        "a {}x{} picture needs about {:.1} GB of memory to render whole ({why}), and {:.1} GB \
+         are available; lancer renders PNG and PPM pictures band by band in bounded memory: \
+         write PNG (+FN) or PPM (+FP), without dithering, with anti-aliasing method 1 (+AM1) \
+         or none (-A)",
+        s.width,
+        s.height,
+        gb(need),
+        gb(available.unwrap_or(0)),
+    ))
+}
+
+#[allow(clippy::too_many_arguments)]
 fn render_frame(
     job: &Job,
     f: &Frame,
     animated: bool,
+    last: bool,
+    plan: Plan,
     said: &mut HashSet<String>,
     lexed: &mut Option<lancer::sdl::parser::Lexed>,
     bar: &ProgressBar,
 ) -> ExitCode {
     let start = Instant::now();
     let opts = job.parse_options(f);
-    let parsed = lancer::api::parse_file_with(&job.scene, opts, lexed.take());
+    let mut parsed = lancer::api::parse_file_with(&job.scene, opts, lexed.take());
     let sources = &parsed.parser.sources;
     for w in &parsed.parser.warnings {
         if said.insert(w.one_line(sources)) {
@@ -104,12 +168,23 @@ fn render_frame(
         return ExitCode::from(1);
     }
     let parse_time = start.elapsed();
+    let files = parsed.parser.take_lexed();
+    let build_start = Instant::now();
+    if last {
+        // No later frame needs the tokens: a big mesh2 file's are hundreds of megabytes,
+        // freed before the build adds its own.
+        drop(files);
+    } else {
+        *lexed = Some(files);
+    }
     let built = lancer::scene::build::build(
         &parsed.parser.scene,
         job.settings.width,
         job.settings.height,
     );
-    *lexed = Some(parsed.parser.into_lexed());
+    // The description is no longer needed; freeing it is part of the build's time.
+    drop(parsed);
+    let build_time = build_start.elapsed();
     for w in &built.warnings {
         if said.insert(w.clone()) {
             eprintln!("warning: {w}");
@@ -119,39 +194,84 @@ fn render_frame(
         ProgressStyle::with_template("{spinner} rendering [{bar:40}] {pos}/{len} rows, {eta} left")
             .unwrap_or_else(|_| ProgressStyle::default_bar()),
     );
+    let (w, h) = (job.settings.width, job.settings.height);
+    let progress = |n| bar.inc(n);
     let trace_start = Instant::now();
-    let film = lancer::render::render(&built.scene, &job.settings, &|n| bar.inc(n));
-    if !job.write_output {
-        if !job.quiet {
+    let (rays, camera_rays, timing) = match plan {
+        Plan::Whole => {
+            let film = lancer::render::render(&built.scene, &job.settings, &progress);
+            let render_time = trace_start.elapsed().as_secs_f64();
+            let write_start = Instant::now();
+            if job.write_output {
+                if let Err(e) = lancer::output::write(&film, &f.output, &job.output_spec) {
+                    eprintln!("lancer: {e}");
+                    return ExitCode::from(1);
+                }
+            }
+            let timing = if job.write_output {
+                let write = write_start.elapsed().as_secs_f64();
+                format!("render {render_time:.3}s, write {write:.3}s")
+            } else {
+                format!("render {render_time:.3}s")
+            };
+            (film.rays, film.camera_rays, timing)
+        }
+        Plan::Banded(rows) => {
+            use lancer::render::band::render_bands;
+            let scene = &built.scene;
+            let s = &job.settings;
+            let counts = if job.write_output {
+                lancer::output::write_banded(&f.output, &job.output_spec, w, h, |sink| {
+                    render_bands(scene, s, rows, &progress, sink)
+                })
+            } else {
+                render_bands(scene, s, rows, &progress, &mut |_| Ok(()))
+            };
+            let (rays, camera_rays) = match counts {
+                Ok(c) => c,
+                Err(e) => {
+                    eprintln!("lancer: {e}");
+                    return ExitCode::from(1);
+                }
+            };
+            let t = trace_start.elapsed().as_secs_f64();
+            let what = if job.write_output {
+                "render and write"
+            } else {
+                "render"
+            };
+            (
+                rays,
+                camera_rays,
+                format!("{what} {t:.3}s in bands of {rows} rows"),
+            )
+        }
+    };
+    if !job.quiet {
+        let peak = lancer::stats::peak_rss_bytes()
+            .map_or(String::new(), |b| format!(", peak {} MB", b / (1 << 20)));
+        let phases = format!(
+            "parse {:.3}s, build {:.3}s, {timing}{peak}",
+            parse_time.as_secs_f64(),
+            build_time.as_secs_f64(),
+        );
+        if job.write_output {
+            let frame = if animated {
+                format!("frame {} (clock {}): ", f.number, f.clock)
+            } else {
+                String::new()
+            };
             eprintln!(
-                "lancer: rendered frame {} without writing it (Output_To_File=off / -F) — parse {:.3}s, render {:.3}s",
+                "lancer: {frame}wrote {} ({w}x{h}) — {phases}, {rays} rays ({camera_rays} camera)",
+                f.output.display(),
+            );
+        } else {
+            eprintln!(
+                "lancer: rendered frame {} without writing it (Output_To_File=off / -F) — {phases}",
                 f.number,
-                parse_time.as_secs_f64(),
-                trace_start.elapsed().as_secs_f64()
             );
         }
-        return ExitCode::SUCCESS;
     }
-    if let Err(e) = lancer::output::write(&film, &f.output, &job.output_spec) {
-        eprintln!("lancer: {e}");
-        return ExitCode::from(1);
-    }
-    if !job.quiet {
-        let frame = if animated {
-            format!("frame {} (clock {}): ", f.number, f.clock)
-        } else {
-            String::new()
-        };
-        eprintln!(
-            "lancer: {frame}wrote {} ({}x{}) — parse {:.3}s, render {:.3}s, {} rays ({} camera)",
-            f.output.display(),
-            job.settings.width,
-            job.settings.height,
-            parse_time.as_secs_f64(),
-            trace_start.elapsed().as_secs_f64(),
-            film.rays,
-            film.camera_rays
-        );
-    }
+    lancer::stats::dispose(built.scene, last);
     ExitCode::SUCCESS
 }

@@ -94,3 +94,25 @@ fn renders_a_tiny_scene_to_png() {
         "the sphere is red in the middle"
     );
 }
+
+/// A picture too big for memory in a format written whole is refused before any work, with
+/// the memory it needs and the options that avoid it: never an allocation abort (exit 134).
+/// PNG and PPM of that size are rendered band by band instead (src/render/band.rs tests).
+#[test]
+fn a_picture_too_big_for_memory_is_refused_up_front() {
+    let p = scene_file("huge.pov", b"sphere { 0, 1 pigment { rgb 1 } }\n");
+    let out = p.with_extension("jpg");
+    let (code, err) = lancer(&[
+        p.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+        "+W100000",
+        "+H100000",
+        "+FJ",
+        "-A",
+    ]);
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("100000x100000") && err.contains("GB"), "{err}");
+    assert!(err.contains("+FN") && err.contains("+FP"), "{err}");
+    assert!(!out.exists());
+}

@@ -129,8 +129,8 @@ fn colours_and_promotion() {
 #[test]
 fn texture_moves_with_object_only_when_given_before_transform() {
     let s = parse("sphere { 0, 1 pigment { checker } translate x } sphere { 0, 1 translate x pigment { checker } }");
-    let t0 = s.objects[0].texture.as_ref().unwrap().pigment.transform;
-    let t1 = s.objects[1].texture.as_ref().unwrap().pigment.transform;
+    let t0 = *s.objects[0].texture.as_ref().unwrap().pigment.transform;
+    let t1 = *s.objects[1].texture.as_ref().unwrap().pigment.transform;
     assert!(!t0.is_identity());
     assert!(t1.is_identity());
 }

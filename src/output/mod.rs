@@ -12,12 +12,14 @@ mod dither;
 mod pixels;
 mod png;
 mod simple;
+mod stream;
 
 use std::path::{Path, PathBuf};
 
 use crate::render::Film;
 
 pub use dither::DitherMethod;
+pub use stream::{why_not_streamable, write_banded};
 
 /// POV-Ray's output file types, by their `+F` letter.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

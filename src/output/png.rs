@@ -23,7 +23,21 @@ pub(crate) fn widen(q: u16, bits: u32) -> u16 {
 
 pub(crate) fn write(plane: &Plane, gamma: PngGamma, out: impl Write) -> Result<(), String> {
     let err = |e: png::EncodingError| e.to_string();
-    let mut enc = png::Encoder::new(out, plane.width, plane.height);
+    let mut w = header(plane, plane.height, gamma, out)?;
+    w.write_image_data(&sample_bytes(plane)).map_err(err)?;
+    w.finish().map_err(err)
+}
+
+/// The signature and the chunks before the image data, for a picture `height` rows high of
+/// `plane`'s width, channels and depth.
+pub(crate) fn header<W: Write>(
+    plane: &Plane,
+    height: u32,
+    gamma: PngGamma,
+    out: W,
+) -> Result<png::Writer<W>, String> {
+    let err = |e: png::EncodingError| e.to_string();
+    let mut enc = png::Encoder::new(out, plane.width, height);
     enc.set_color(if plane.channels == 4 {
         png::ColorType::Rgba
     } else {
@@ -44,7 +58,12 @@ pub(crate) fn write(plane: &Plane, gamma: PngGamma, out: impl Write) -> Result<(
     }
     let sbit = vec![plane.bits as u8; plane.channels];
     w.write_chunk(ChunkType(*b"sBIT"), &sbit).map_err(err)?;
-    let bytes: Vec<u8> = if wide {
+    Ok(w)
+}
+
+/// The samples as the PNG stores them: widened to 8 or 16 bits, big-endian.
+pub(crate) fn sample_bytes(plane: &Plane) -> Vec<u8> {
+    if plane.bits > 8 {
         plane
             .data
             .iter()
@@ -56,9 +75,7 @@ pub(crate) fn write(plane: &Plane, gamma: PngGamma, out: impl Write) -> Result<(
             .iter()
             .map(|&q| widen(q, plane.bits) as u8)
             .collect()
-    };
-    w.write_image_data(&bytes).map_err(err)?;
-    w.finish().map_err(err)
+    }
 }
 
 #[cfg(test)]

@@ -14,15 +14,25 @@ fn io(e: std::io::Error) -> String {
 }
 
 pub(crate) fn write_ppm(plane: &Plane, mut out: impl Write) -> Result<(), String> {
+    out.write_all(&ppm_header(plane, plane.height))
+        .map_err(io)?;
+    out.write_all(&ppm_samples(plane)).map_err(io)?;
+    out.flush().map_err(io)
+}
+
+/// A PPM header for a picture `height` rows high of `plane`'s width and depth.
+pub(crate) fn ppm_header(plane: &Plane, height: u32) -> Vec<u8> {
     let max = (1u32 << plane.bits) - 1;
-    write!(out, "P6\n{} {}\n{max}\n", plane.width, plane.height).map_err(io)?;
-    let bytes: Vec<u8> = if max > 255 {
+    format!("P6\n{} {}\n{max}\n", plane.width, height).into_bytes()
+}
+
+/// The samples as a PPM stores them: one byte each, or two big-endian above 8 bits.
+pub(crate) fn ppm_samples(plane: &Plane) -> Vec<u8> {
+    if plane.bits > 8 {
         plane.data.iter().flat_map(|q| q.to_be_bytes()).collect()
     } else {
         plane.data.iter().map(|&q| q as u8).collect()
-    };
-    out.write_all(&bytes).map_err(io)?;
-    out.flush().map_err(io)
+    }
 }
 
 /// One pixel in file order (blue, green, red, then alpha when there is one).

@@ -87,15 +87,31 @@ pub fn method1(
     s: &RenderSettings,
     threshold: f64,
 ) -> (u64, u64) {
-    let (w, h) = (s.width as usize, s.height as usize);
+    let mark = method1_marks(tracer, samples, 0, s, threshold);
+    method1_refine(tracer, samples, &mark, 0, s)
+}
+
+/// Which pixels method 1 supersamples, for first-pass `samples` holding whole picture rows
+/// from row `first_y` on. The first row is compared with nothing above it: a band rendered
+/// alone passes the row above it along, and uses only the marks of the rows below that.
+pub fn method1_marks(
+    tracer: &Tracer,
+    samples: &[Seen],
+    first_y: usize,
+    s: &RenderSettings,
+    threshold: f64,
+) -> Vec<bool> {
+    let w = s.width as usize;
+    let h = samples.len() / w.max(1);
     let measure = Measure::new(tracer, s);
     let enc: Vec<Sample> = samples.iter().map(|p| measure.sample(*p)).collect();
     let differs = |a: usize, b: usize| measure.distance(&enc[a], &enc[b]) > threshold;
     // Outside a partial render's window nothing was traced, so nothing is compared there.
     let mut mark = vec![false; w * h];
-    for y in 0..h {
+    for ly in 0..h {
+        let y = first_y + ly;
         for x in 0..w {
-            let i = y * w + x;
+            let i = ly * w + x;
             if !s.inside(x, y) {
                 continue;
             }
@@ -103,12 +119,25 @@ pub fn method1(
                 mark[i] = true;
                 mark[i - 1] = true;
             }
-            if y > 0 && s.inside(x, y - 1) && differs(i, i - w) {
+            if ly > 0 && s.inside(x, y - 1) && differs(i, i - w) {
                 mark[i] = true;
                 mark[i - w] = true;
             }
         }
     }
+    mark
+}
+
+/// Supersamples the marked pixels of `samples` (whole rows from row `first_y` on) in place;
+/// returns all rays and camera rays traced.
+pub fn method1_refine(
+    tracer: &Tracer,
+    samples: &mut [Seen],
+    mark: &[bool],
+    first_y: usize,
+    s: &RenderSettings,
+) -> (u64, u64) {
+    let w = s.width as usize;
     let n = s.aa_depth.max(1);
     let cam = &tracer.scene.camera;
     let rays = AtomicU64::new(0);
@@ -116,10 +145,11 @@ pub fn method1(
     samples
         .par_chunks_mut(w)
         .enumerate()
-        .for_each_init(TraceCtx::default, |ctx, (y, row)| {
+        .for_each_init(TraceCtx::default, |ctx, (ly, row)| {
+            let y = first_y + ly;
             let mut traced = 0;
             for (x, px) in row.iter_mut().enumerate() {
-                if !mark[y * w + x] {
+                if !mark[ly * w + x] {
                     continue;
                 }
                 traced += (n * n) as u64;

@@ -93,7 +93,7 @@ impl Camera {
             normal: d
                 .normal
                 .clone()
-                .filter(|n| super::normal::perturbs(&Some(n.clone()))),
+                .filter(|n| super::normal::perturbs(Some(n))),
         }
     }
 

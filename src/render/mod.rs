@@ -4,6 +4,7 @@
 //! from a hash of the pixel and sample, so the picture is the same for any thread count.
 
 mod aa;
+pub mod band;
 pub mod camera;
 mod fog;
 pub mod noise;
@@ -149,30 +150,52 @@ pub fn render(scene: &Scene, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)
             pass
         }
     };
-    let samples = pass.samples;
+    let (rays, camera) = (pass.rays, pass.camera_rays);
+    film_of(&pass.samples, s, s.height, scene.gamma, (rays, camera))
+}
+
+/// The film of finished samples: `height` whole rows of `s.width`; `rays` is (all, camera).
+fn film_of(
+    samples: &[Seen],
+    s: &RenderSettings,
+    height: u32,
+    gamma: GammaMode,
+    rays: (u64, u64),
+) -> Film {
     Film {
         width: s.width,
-        height: s.height,
+        height,
         pixels: samples.iter().map(|p| p.rgb).collect(),
         alpha: s
             .alpha
             .then(|| samples.iter().map(|p| 1.0 - p.clear).collect()),
-        gamma: scene.gamma,
-        rays: pass.rays,
-        camera_rays: pass.camera_rays,
+        gamma,
+        rays: rays.0,
+        camera_rays: rays.1,
     }
 }
 
 /// One sample at each pixel's centre.
 fn first_pass(tracer: &Tracer, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)) -> aa::Pass {
-    let (w, h) = (s.width as usize, s.height as usize);
-    let mut samples = vec![Seen::default(); w * h];
+    first_pass_rows(tracer, s, 0..s.height as usize, progress)
+}
+
+/// The first pass over picture rows `rows` only.
+fn first_pass_rows(
+    tracer: &Tracer,
+    s: &RenderSettings,
+    rows: std::ops::Range<usize>,
+    progress: &(dyn Fn(u64) + Sync),
+) -> aa::Pass {
+    let w = s.width as usize;
+    let mut samples = vec![Seen::default(); w * rows.len()];
     let rays = AtomicU64::new(0);
     let camera_rays = AtomicU64::new(0);
     samples
         .par_chunks_mut(w)
         .enumerate()
-        .for_each_init(TraceCtx::default, |ctx, (y, row)| {
+        .for_each_init(TraceCtx::default, |ctx, (ly, row)| {
+            let y = rows.start + ly;
             let mut traced = 0;
             for (x, px) in row.iter_mut().enumerate() {
                 if !s.inside(x, y) {

@@ -38,7 +38,7 @@ const TETRA: [DVec3; 4] = [
 /// Whether any part of a texture (layers, patterned entries) perturbs the normal.
 pub fn texture_perturbs(t: &Texture) -> bool {
     t.layers().any(|l| {
-        perturbs(&l.normal)
+        perturbs(l.normal.as_deref())
             || l.pattern.as_ref().is_some_and(|tp| match &tp.entries {
                 TextureEntries::List(items) => items.iter().any(texture_perturbs),
                 TextureEntries::Map(map) => map.iter().any(|(_, t)| texture_perturbs(t)),
@@ -47,9 +47,8 @@ pub fn texture_perturbs(t: &Texture) -> bool {
 }
 
 /// Whether a normal changes anything.
-pub fn perturbs(n: &Option<Normal>) -> bool {
-    n.as_ref()
-        .is_some_and(|n| !matches!(n.kind, NormalKind::Flat))
+pub fn perturbs(n: Option<&Normal>) -> bool {
+    n.is_some_and(|n| !matches!(n.kind, NormalKind::Flat))
 }
 
 /// The perturbed unit normal at `p` for the unit surface normal `n`, both in the space `nd`'s

@@ -169,11 +169,11 @@ impl<'a> Tracer<'a> {
         path: Path<'a>,
         ctx: &mut TraceCtx<'a>,
     ) -> Seen {
-        let Some((blob, _)) = &h.obj.blob else {
+        let Some((blob, _)) = h.obj.blob.as_deref() else {
             return self.shade(ray, h, path, ctx);
         };
         let p = ray.at(h.t);
-        let local = h.obj.transform.map_or(p, |t| t.inv_point(p));
+        let local = h.obj.transform.as_ref().map_or(p, |t| t.inv_point(p));
         // The buffer is taken out while the parts are shaded: their rays may meet blobs too.
         let mut weights = std::mem::take(&mut ctx.blob_weights);
         blob.densities(local, &mut weights);
@@ -284,7 +284,7 @@ impl<'a> Tracer<'a> {
             texture_map::blend(tex, p, q.quick_colors, 1.0, &mut |c, part, space, w| {
                 let fin = &part.finish;
                 let (pn, pmirror, pcos) = match &part.normal {
-                    Some(nd) if normal::perturbs(&part.normal) => {
+                    Some(nd) if normal::perturbs(part.normal.as_deref()) => {
                         let pn = normal::perturb_in(nd, space, p, nf);
                         refract_n.get_or_insert(pn);
                         (pn, reflect(dir, pn), (-dir.dot(pn)).clamp(0.0, 1.0))

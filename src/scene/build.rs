@@ -72,13 +72,15 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
         meshes: HashMap::new(),
         texts: HashMap::new(),
         images: HashMap::new(),
+        shared_textures: HashMap::new(),
         lights: Vec::new(),
         gamma,
         noise_generator: desc.global.noise_generator,
     };
-    let mut objects = Vec::new();
+    let default_texture = Arc::new(desc.default_texture.clone());
+    let mut objects = Vec::with_capacity(desc.objects.len());
     for o in &desc.objects {
-        if let Some(obj) = ctx.object(o, None, None, &desc.default_texture) {
+        if let Some(obj) = ctx.object(o, None, None, &default_texture) {
             objects.push(obj);
         }
     }
@@ -131,6 +133,9 @@ struct Ctx {
     /// Each image map converted to the working gamma once, with whether any pixel lets light
     /// through, however many objects use it. Keyed by the description's image.
     images: HashMap<*const ImageMap, (Arc<ImageMap>, bool)>,
+    /// Textures the description shares between objects (a CSG's inherited one, the default),
+    /// readied once. Keyed by address: the description keeps them alive while building.
+    shared_textures: HashMap<*const Texture, (Arc<Texture>, bool)>,
     lights: Vec<Light>,
     gamma: GammaMode,
     noise_generator: u8,
@@ -198,6 +203,66 @@ impl Ctx {
         (Arc::new(t), transparent)
     }
 
+    /// An object's texture ready to render, and whether light can pass through it. The
+    /// description's own `Arc` is kept when readying changes nothing (the common case), so a
+    /// million objects do not mean a million texture copies.
+    fn object_texture(&mut self, t: &Arc<Texture>) -> (Arc<Texture>, bool) {
+        let shared = Arc::strong_count(t) > 1;
+        if shared {
+            if let Some(hit) = self.shared_textures.get(&Arc::as_ptr(t)) {
+                return hit.clone();
+            }
+        }
+        let unchanged = !self.texture_needs_readying(t);
+        let (ready, transparent) = if unchanged {
+            let transparent = self.prepare_texture(&mut (**t).clone());
+            (t.clone(), transparent)
+        } else {
+            self.texture(t)
+        };
+        if shared {
+            self.shared_textures
+                .insert(Arc::as_ptr(t), (ready.clone(), transparent));
+        }
+        (ready, transparent)
+    }
+
+    /// Whether `prepare_texture` would change `t`: a pattern that takes the scene's noise
+    /// generator, or an image map to convert to a working gamma other than 1.
+    fn texture_needs_readying(&self, t: &Texture) -> bool {
+        t.layers().any(|l| {
+            self.pigment_needs_readying(&l.pigment)
+                || l.pattern.as_ref().is_some_and(|tp| {
+                    tp.pattern.noise_generator == 0
+                        || match &tp.entries {
+                            TextureEntries::List(items) => {
+                                items.iter().any(|e| self.texture_needs_readying(e))
+                            }
+                            TextureEntries::Map(map) => {
+                                map.iter().any(|(_, e)| self.texture_needs_readying(e))
+                            }
+                        }
+                })
+        })
+    }
+
+    fn pigment_needs_readying(&self, p: &Pigment) -> bool {
+        match &p.kind {
+            PigmentKind::Solid(_) => false,
+            PigmentKind::Mapped { pattern, .. } => pattern.noise_generator == 0,
+            PigmentKind::List { pattern, items } => {
+                pattern.noise_generator == 0 || items.iter().any(|i| self.pigment_needs_readying(i))
+            }
+            PigmentKind::PigmentMap { pattern, map } => {
+                pattern.noise_generator == 0
+                    || map.iter().any(|(_, i)| self.pigment_needs_readying(i))
+            }
+            PigmentKind::ImageMap(..) => {
+                matches!(self.gamma, GammaMode::Corrected(g) if g != 1.0)
+            }
+        }
+    }
+
     /// Readies a texture's pigments (patterned ones' entries too); whether light may pass.
     fn prepare_texture(&mut self, t: &mut Texture) -> bool {
         let mut transparent = true;
@@ -230,13 +295,13 @@ impl Ctx {
     fn object(
         &mut self,
         o: &ObjectDesc,
-        parent_tex: Option<&Texture>,
+        parent_tex: Option<&Arc<Texture>>,
         parent_int: Option<&Interior>,
-        default: &Texture,
+        default: &Arc<Texture>,
     ) -> Option<Object> {
         let tex_desc = o.texture.as_ref().or(parent_tex);
         let int = o.interior.as_ref().or(parent_int);
-        let (texture, mut transparent) = self.texture(tex_desc.unwrap_or(default));
+        let (texture, mut transparent) = self.object_texture(tex_desc.unwrap_or(default));
         let ior = int.map_or(1.0, |i| i.ior);
         let mut blob = None;
         let (kind, bounds, mesh) = match &o.shape {
@@ -294,7 +359,7 @@ impl Ctx {
                             transparent |= tr;
                             texes.push(tex);
                         }
-                        blob = Some((shape.clone(), texes));
+                        blob = Some(Box::new((shape.clone(), texes)));
                         shape
                     }
                     _ => make_shape(shape),
@@ -313,7 +378,7 @@ impl Ctx {
                             transparent |= tr;
                             texes.push(tex);
                         }
-                        Some((data.clone(), texes))
+                        Some(Box::new((data.clone(), texes)))
                     }
                     _ => None,
                 };
@@ -330,7 +395,7 @@ impl Ctx {
         let bounds = if o.inverse { Aabb::INFINITE } else { bounds };
         Some(Object {
             kind,
-            transform: (!o.transform.is_identity()).then_some(o.transform),
+            transform: (!o.transform.is_identity()).then(|| Box::new(*o.transform)),
             texture,
             mesh,
             blob,

@@ -10,7 +10,7 @@ use std::path::PathBuf;
 use std::sync::Arc;
 
 use crate::color::Rgbft;
-use crate::math::{DVec3, Transform};
+use crate::math::{DVec3, Transform, Xform};
 pub use crate::scene::pattern::Pattern;
 
 #[derive(Clone, Debug)]
@@ -218,8 +218,9 @@ impl Default for AreaLightDesc {
 pub struct ObjectDesc {
     pub shape: ShapeDesc,
     /// Object space to world space.
-    pub transform: Transform,
-    pub texture: Option<Texture>,
+    pub transform: Xform,
+    /// Shared with the runtime object (and between CSG members that inherit it), not copied.
+    pub texture: Option<Arc<Texture>>,
     pub interior: Option<Interior>,
     pub no_shadow: bool,
     pub hollow: Option<bool>,
@@ -232,7 +233,7 @@ impl ObjectDesc {
     pub fn new(shape: ShapeDesc) -> ObjectDesc {
         ObjectDesc {
             shape,
-            transform: Transform::IDENTITY,
+            transform: Xform::IDENTITY,
             texture: None,
             interior: None,
             no_shadow: false,
@@ -245,7 +246,7 @@ impl ObjectDesc {
     /// Applies a transform to the object, its attached texture and, for CSG, every child.
     pub fn apply_transform(&mut self, t: &Transform) {
         if let Some(tex) = &mut self.texture {
-            tex.apply_transform(t);
+            Arc::make_mut(tex).apply_transform(t);
         }
         for c in &mut self.clipped_by {
             c.apply_transform(t);
@@ -260,9 +261,9 @@ impl ObjectDesc {
                 for tex in textures.iter_mut().flatten() {
                     tex.apply_transform(t);
                 }
-                self.transform = self.transform.then(t);
+                self.transform.apply(t);
             }
-            _ => self.transform = self.transform.then(t),
+            _ => self.transform.apply(t),
         }
     }
 }
@@ -317,10 +318,7 @@ pub enum ShapeDesc {
     Triangle {
         p: [DVec3; 3],
     },
-    SmoothTriangle {
-        p: [DVec3; 3],
-        n: [DVec3; 3],
-    },
+    SmoothTriangle(Box<SmoothTriangleDesc>),
     Mesh(Arc<MeshData>),
     /// `quadric`, `cubic`, `quartic`, `poly`, `polynomial`: zero set of a polynomial.
     Algebraic {
@@ -356,7 +354,15 @@ pub enum ShapeDesc {
         children: Vec<ObjectDesc>,
     },
     /// A light source is an object in POV-Ray: it may sit inside CSG and move with it.
-    Light(LightDesc),
+    /// Boxed, as the rarer large variants are, to keep every object description small.
+    Light(Box<LightDesc>),
+}
+
+/// A smooth triangle's corners and their normals.
+#[derive(Clone, Debug)]
+pub struct SmoothTriangleDesc {
+    pub p: [DVec3; 3],
+    pub n: [DVec3; 3],
 }
 
 /// Triangle soup shared by every copy of a `#declare`d mesh.
@@ -381,7 +387,7 @@ pub struct MeshTriangle {
 #[derive(Clone, Debug)]
 pub struct Texture {
     pub pigment: Pigment,
-    pub normal: Option<Normal>,
+    pub normal: Option<Box<Normal>>,
     pub finish: Finish,
     /// A layered texture's next layer down (`texture {A} texture {B}` puts B over A).
     pub under: Option<Box<Texture>>,
@@ -454,7 +460,7 @@ impl Texture {
 pub struct Pigment {
     pub kind: PigmentKind,
     /// Pattern space to world space.
-    pub transform: Transform,
+    pub transform: Xform,
     /// `quick_color`: what `+Q5` and below show instead of the pigment.
     pub quick: Option<Rgbft>,
 }
@@ -463,12 +469,12 @@ impl Pigment {
     pub fn solid(c: Rgbft) -> Pigment {
         Pigment {
             kind: PigmentKind::Solid(c),
-            transform: Transform::IDENTITY,
+            transform: Xform::IDENTITY,
             quick: None,
         }
     }
     pub fn apply_transform(&mut self, t: &Transform) {
-        self.transform = self.transform.then(t);
+        self.transform.apply(t);
         // Pigments nested in a list pattern are already in the outer pattern's space.
     }
 }

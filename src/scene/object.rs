@@ -14,16 +14,21 @@ pub enum ObjKind {
     Csg { op: CsgOp, children: Vec<Object> },
 }
 
+/// A shape's data with the textures of its parts (mesh triangles, blob components).
+pub type PartTextures<T> = Box<(Arc<T>, Vec<Arc<Texture>>)>;
+
 pub struct Object {
     pub kind: ObjKind,
     /// Object to world; `None` when identity, to skip two matrix products per ray.
-    pub transform: Option<Transform>,
+    /// Boxed: most objects of a big scene have none, and inline it would be 256 bytes each.
+    pub transform: Option<Box<Transform>>,
     pub texture: Arc<Texture>,
     /// Per-triangle textures of a mesh, indexed by `MeshData::triangles[i].texture`.
-    pub mesh: Option<(Arc<MeshData>, Vec<Arc<Texture>>)>,
+    /// Boxed, as `blob`: few objects have one, and every object would pay 32 bytes inline.
+    pub mesh: Option<PartTextures<MeshData>>,
     /// A blob whose components have textures, and each component's texture (see
     /// `geom::blob::PART_BLENDED`).
-    pub blob: Option<(Arc<crate::geom::blob::Blob>, Vec<Arc<Texture>>)>,
+    pub blob: Option<PartTextures<crate::geom::blob::Blob>>,
     pub ior: f64,
     pub no_shadow: bool,
     pub inverse: bool,
@@ -296,11 +301,11 @@ impl Object {
         if let Some(t) = self
             .blob
             .as_ref()
-            .and_then(|(_, t)| t.get(h.hit.part as usize))
+            .and_then(|b| b.1.get(h.hit.part as usize))
         {
             return t;
         }
-        if let Some((data, texes)) = &self.mesh {
+        if let Some((data, texes)) = self.mesh.as_deref() {
             if let Some(ti) = data
                 .triangles
                 .get(h.hit.part as usize)

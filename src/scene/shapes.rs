@@ -39,7 +39,7 @@ pub fn make_shape(d: &ShapeDesc) -> Arc<dyn Shape> {
             sturm,
         } => Arc::new(Torus::new(*major, *minor, *sturm)),
         ShapeDesc::Triangle { p } => Arc::new(Triangle::new(*p)),
-        ShapeDesc::SmoothTriangle { p, n } => Arc::new(Triangle::smooth(*p, *n)),
+        ShapeDesc::SmoothTriangle(t) => Arc::new(Triangle::smooth(t.p, t.n)),
         ShapeDesc::Mesh(data) => Arc::new(Mesh::new(data.clone())),
         ShapeDesc::Algebraic {
             order,

@@ -428,7 +428,7 @@ impl Parser {
 
     /// `dimensions(A)` and `dimension_size(A, n)`.
     pub(super) fn array_function(&mut self, name: &str, span: Span) -> PResult<Value> {
-        self.expect_sym(Sym::LParen, &format!("after {name}"))?;
+        self.expect_sym_with(Sym::LParen, || format!("after {name}"))?;
         let aspan = self.next_span()?;
         let v = self.parse_expr()?;
         let Value::Array(a) = &v else {
@@ -455,7 +455,7 @@ impl Parser {
             a.dims[d as usize - 1] as f64
         };
         let _ = span;
-        self.expect_sym(Sym::RParen, &format!("to close {name}"))?;
+        self.expect_sym_with(Sym::RParen, || format!("to close {name}"))?;
         Ok(Value::Float(r))
     }
 }

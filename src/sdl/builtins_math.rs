@@ -137,7 +137,9 @@ impl Parser {
 
     /// Arguments of a built-in call, after its name: `( expr, expr, ... )`.
     pub(super) fn call_args(&mut self, name: &str) -> PResult<Vec<(Value, Span)>> {
-        self.expect_sym(Sym::LParen, &format!("after the function name {name}"))?;
+        // The error context is formatted only on an error: this runs for every `mod(I, 100)`
+        // of a million-iteration loop.
+        self.expect_sym_with(Sym::LParen, || format!("after the function name {name}"))?;
         let mut args = Vec::new();
         if self.eat_sym(Sym::RParen)? {
             return Ok(args);
@@ -148,7 +150,7 @@ impl Parser {
             if self.eat_sym(Sym::RParen)? {
                 return Ok(args);
             }
-            self.expect_sym(Sym::Comma, &format!("between the arguments of {name}"))?;
+            self.expect_sym_with(Sym::Comma, || format!("between the arguments of {name}"))?;
         }
     }
 

@@ -55,9 +55,9 @@ impl Parser {
                 self.enter_if(c != 0.0, span)
             }
             "ifdef" | "ifndef" => {
-                self.expect_sym(Sym::LParen, &format!("after #{d}"))?;
+                self.expect_sym_with(Sym::LParen, || format!("after #{d}"))?;
                 let (name, elem) = self.raw_ident_or_element(&format!("in #{d}"))?;
-                self.expect_sym(Sym::RParen, &format!("to close #{d}"))?;
+                self.expect_sym_with(Sym::RParen, || format!("to close #{d}"))?;
                 let defined = self.is_defined(&name, &elem);
                 self.enter_if(defined == (d == "ifdef"), span)
             }
@@ -251,7 +251,7 @@ impl Parser {
         if self.raw_peek_sym()? == Some(Sym::LBracket) {
             return self.declare_element(name, _span);
         }
-        self.expect_sym(Sym::Eq, &format!("after '{name}' in the declaration"))?;
+        self.expect_sym_with(Sym::Eq, || format!("after '{name}' in the declaration"))?;
         // Warnings from identifiers used before this declaration belong where they were used.
         self.flush_released();
         let depth = self.scopes.len();
@@ -429,7 +429,7 @@ impl Parser {
     }
 
     pub(super) fn invoke_macro(&mut self, m: &Rc<MacroDef>, span: Span) -> PResult<()> {
-        self.expect_sym(Sym::LParen, &format!("after the macro name {}", m.name))?;
+        self.expect_sym_with(Sym::LParen, || format!("after the macro name {}", m.name))?;
         let mut args = Vec::new();
         if !self.eat_sym(Sym::RParen)? {
             loop {
@@ -504,7 +504,7 @@ impl Parser {
                 }
                 Tok::Ident(k) if &**k == "normal" => {
                     let n = self.parse_normal_block(t.span)?;
-                    self.scene.default_texture.normal = Some(n);
+                    self.scene.default_texture.normal = Some(Box::new(n));
                 }
                 _ => return Err(self.unexpected(&t, "in #default")),
             }

@@ -221,7 +221,7 @@ impl Parser {
 
     /// The open file a handle argument names.
     fn handle(&mut self, what: &str) -> PResult<Rc<str>> {
-        self.expect_sym(Sym::LParen, &format!("after #{what}"))?;
+        self.expect_sym_with(Sym::LParen, || format!("after #{what}"))?;
         let t = self.raw_peek()?.ok_or_else(|| self.eof_error())?;
         let id = self.raw_ident(&format!("as the file handle in #{what}"))?;
         if !self.files.contains_key(&id) {

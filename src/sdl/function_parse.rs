@@ -292,7 +292,7 @@ impl Parser {
 
     /// Comma-separated function-language arguments up to `)`, after the `(`.
     fn fn_args(&mut self, s: &mut FnScope, name: &str) -> PResult<Vec<Expr>> {
-        self.expect_sym(Sym::LParen, &format!("after {name}"))?;
+        self.expect_sym_with(Sym::LParen, || format!("after {name}"))?;
         let mut v = Vec::new();
         if self.eat_sym(Sym::RParen)? {
             return Ok(v);
@@ -302,7 +302,7 @@ impl Parser {
             if self.eat_sym(Sym::RParen)? {
                 return Ok(v);
             }
-            self.expect_sym(Sym::Comma, &format!("between the arguments of {name}"))?;
+            self.expect_sym_with(Sym::Comma, || format!("between the arguments of {name}"))?;
         }
     }
 
@@ -457,9 +457,9 @@ impl Parser {
 
     /// `sum(i, from, to, expr)` and `prod(...)`.
     fn fn_loop(&mut self, s: &mut FnScope, k: &str, span: Span) -> PResult<Expr> {
-        self.expect_sym(Sym::LParen, &format!("after {k}"))?;
+        self.expect_sym_with(Sym::LParen, || format!("after {k}"))?;
         let var = self.raw_ident(&format!("as the {k} variable"))?;
-        self.expect_sym(Sym::Comma, &format!("after the {k} variable"))?;
+        self.expect_sym_with(Sym::Comma, || format!("after the {k} variable"))?;
         let slot = s.params.len() + s.locals.len();
         if slot >= MAX_PARAMS + 56 {
             return Err(self.error_at(span, format!("{k} is nested too deeply")));
@@ -468,11 +468,11 @@ impl Parser {
         s.max_slot = s.max_slot.max(slot + 1);
         let r = (|| {
             let from = self.fn_or(s)?;
-            self.expect_sym(Sym::Comma, &format!("after the {k} start value"))?;
+            self.expect_sym_with(Sym::Comma, || format!("after the {k} start value"))?;
             let to = self.fn_or(s)?;
-            self.expect_sym(Sym::Comma, &format!("after the {k} end value"))?;
+            self.expect_sym_with(Sym::Comma, || format!("after the {k} end value"))?;
             let body = self.fn_or(s)?;
-            self.expect_sym(Sym::RParen, &format!("to close {k}"))?;
+            self.expect_sym_with(Sym::RParen, || format!("to close {k}"))?;
             Ok(Expr::Loop {
                 product: k == "prod",
                 var: slot,

@@ -191,9 +191,9 @@ impl Parser {
                 kind,
                 radius,
                 strength,
-                transform: holder.transform,
+                transform: *holder.transform,
             },
-            holder.texture,
+            holder.texture.map(Arc::unwrap_or_clone),
         ))
     }
 }

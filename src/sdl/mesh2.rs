@@ -114,7 +114,9 @@ impl Parser {
             v.push(self.parse_vector()?);
         }
         self.skip_optional_comma()?;
-        self.expect_sym(Sym::RBrace, &format!("to close {what} (after {n} entries)"))?;
+        self.expect_sym_with(Sym::RBrace, || {
+            format!("to close {what} (after {n} entries)")
+        })?;
         Ok(v)
     }
 
@@ -149,7 +151,9 @@ impl Parser {
             out.push(([idx(v.x), idx(v.y), idx(v.z)], tex));
         }
         self.skip_optional_comma()?;
-        self.expect_sym(Sym::RBrace, &format!("to close {what} (after {n} entries)"))?;
+        self.expect_sym_with(Sym::RBrace, || {
+            format!("to close {what} (after {n} entries)")
+        })?;
         Ok(out)
     }
 }

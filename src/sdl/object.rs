@@ -6,7 +6,7 @@ use std::sync::Arc;
 use crate::math::{DVec3, Transform};
 use crate::scene::desc::{
     AreaLightDesc, CsgOp, Interior, LightDesc, LightKind, MeshData, MeshTriangle, ObjectDesc,
-    ShapeDesc, Texture,
+    ShapeDesc, SmoothTriangleDesc, Texture,
 };
 
 use super::lexer::{Sym, Tok};
@@ -83,7 +83,7 @@ impl Parser {
     }
 
     pub(super) fn open_brace(&mut self, what: &str) -> PResult<Span> {
-        self.expect_sym(Sym::LBrace, &format!("after '{what}'"))
+        self.expect_sym_with(Sym::LBrace, || format!("after '{what}'"))
     }
 
     /// Parses modifiers up to and including the closing brace.
@@ -115,6 +115,7 @@ impl Parser {
     fn texture_mut(&mut self, obj: &mut ObjectDesc) -> Texture {
         obj.texture
             .take()
+            .map(Arc::unwrap_or_clone)
             .unwrap_or_else(|| self.scene.default_texture.clone())
     }
 
@@ -132,26 +133,26 @@ impl Parser {
         match k {
             "texture" => {
                 let t = self.parse_texture_block()?;
-                obj.texture = Some(match obj.texture.take() {
-                    Some(below) => t.over(below),
+                obj.texture = Some(Arc::new(match obj.texture.take() {
+                    Some(below) => t.over(Arc::unwrap_or_clone(below)),
                     None => t,
-                });
+                }));
             }
             "pigment" => {
                 let mut tex = self.texture_mut(obj);
                 tex.pigment = self.parse_pigment_block(Some(tex.pigment.clone()))?;
-                obj.texture = Some(tex);
+                obj.texture = Some(Arc::new(tex));
             }
             "finish" => {
                 let mut tex = self.texture_mut(obj);
                 tex.finish = self.parse_finish_block(Some(tex.finish.clone()))?;
-                obj.texture = Some(tex);
+                obj.texture = Some(Arc::new(tex));
             }
             "normal" => {
                 let mut tex = self.texture_mut(obj);
-                let _ = span;
-                tex.normal = Some(self.parse_normal_block_over(tex.normal.clone())?);
-                obj.texture = Some(tex);
+                let base = tex.normal.take().map(|n| *n);
+                tex.normal = Some(Box::new(self.parse_normal_block_over(base)?));
+                obj.texture = Some(Arc::new(tex));
             }
             "interior" => obj.interior = Some(self.parse_interior_block()?),
             "material" => self.material(obj)?,
@@ -231,8 +232,8 @@ impl Parser {
 
     fn material(&mut self, obj: &mut ObjectDesc) -> PResult<()> {
         let (texture, interior) = self.parse_material_block()?;
-        if texture.is_some() {
-            obj.texture = texture;
+        if let Some(t) = texture {
+            obj.texture = Some(Arc::new(t));
         }
         if interior.is_some() {
             obj.interior = interior;
@@ -472,7 +473,13 @@ impl Parser {
     fn smooth_triangle(&mut self, _s: Span) -> PResult<ObjectDesc> {
         let open = self.open_brace("smooth_triangle")?;
         let (p, n) = self.three_points(true)?;
-        self.finish_object(ObjectDesc::new(ShapeDesc::SmoothTriangle { p, n }), open)
+        self.finish_object(
+            ObjectDesc::new(ShapeDesc::SmoothTriangle(Box::new(SmoothTriangleDesc {
+                p,
+                n,
+            }))),
+            open,
+        )
     }
 
     fn mesh(&mut self, _s: Span) -> PResult<ObjectDesc> {
@@ -617,7 +624,7 @@ impl Parser {
             Some(ObjectDesc {
                 shape: ShapeDesc::Light(l),
                 ..
-            }) => l.clone(),
+            }) => (**l).clone(),
             _ => {
                 let position = self.parse_vector()?;
                 self.skip_optional_comma()?;
@@ -695,10 +702,10 @@ impl Parser {
         }
         let mut obj = match base {
             Some(mut b) => {
-                b.shape = ShapeDesc::Light(light);
+                b.shape = ShapeDesc::Light(Box::new(light));
                 b
             }
-            None => ObjectDesc::new(ShapeDesc::Light(light)),
+            None => ObjectDesc::new(ShapeDesc::Light(Box::new(light))),
         };
         obj.apply_transform(&obj_tf);
         Ok(obj)

@@ -104,7 +104,7 @@ pub(super) enum FrameKind {
 }
 
 pub(super) struct Frame {
-    pub tokens: Rc<[Token]>,
+    pub tokens: Rc<Vec<Token>>,
     pub pos: usize,
     pub end: usize,
     pub kind: FrameKind,
@@ -181,7 +181,7 @@ pub struct Parser {
 /// A file's tokens, kept for as long as the file on disk is unchanged.
 struct CachedFile {
     id: u32,
-    tokens: Rc<[Token]>,
+    tokens: Rc<Vec<Token>>,
     stamp: Option<FileStamp>,
 }
 
@@ -314,9 +314,14 @@ impl Parser {
         }
     }
 
-    fn lex_file(&mut self, id: u32) -> PResult<Rc<[Token]>> {
+    fn lex_file(&mut self, id: u32) -> PResult<Rc<Vec<Token>>> {
         match lex(self.sources.text(id), id) {
-            Ok(t) => Ok(t.into()),
+            // Into an `Rc` as it is: making an `Rc<[Token]>` would copy the tokens, and for a
+            // big mesh2 file they are most of the parse's memory (40 bytes a token).
+            Ok(mut t) => {
+                t.shrink_to_fit();
+                Ok(Rc::new(t))
+            }
             Err(e) => Err(self.error_at(
                 Span {
                     file: id,
@@ -329,7 +334,7 @@ impl Parser {
     }
 
     /// Reads and lexes a file once per run; later includes reuse the tokens.
-    fn load(&mut self, path: &Path, site: Option<Span>) -> PResult<(u32, Rc<[Token]>)> {
+    fn load(&mut self, path: &Path, site: Option<Span>) -> PResult<(u32, Rc<Vec<Token>>)> {
         let key = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
         let stamp = FileStamp::of(path);
         if let Some(c) = self.file_cache.get(&key) {
@@ -363,6 +368,18 @@ impl Parser {
 
     /// The files read so far, lexed, for the next parse of the same run (the next frame of an
     /// animation): include files are then read and lexed once per run, not once per frame.
+    /// Takes the files read and their tokens out of a finished parse (see `into_lexed`),
+    /// leaving the scene description: the tokens of a big file can then be freed before the
+    /// scene is built, or kept for the next frame.
+    pub fn take_lexed(&mut self) -> Lexed {
+        // The scene file's frame stays on the stack at the end of a parse; it holds the tokens.
+        self.frames.clear();
+        Lexed {
+            sources: std::mem::take(&mut self.sources),
+            files: std::mem::take(&mut self.file_cache),
+        }
+    }
+
     pub fn into_lexed(self) -> Lexed {
         Lexed {
             sources: self.sources,
@@ -452,7 +469,7 @@ impl Parser {
 
     pub(super) fn push_frame(
         &mut self,
-        tokens: Rc<[Token]>,
+        tokens: Rc<Vec<Token>>,
         kind: FrameKind,
         call_site: Option<(Span, Rc<str>)>,
         scope: bool,
@@ -468,7 +485,7 @@ impl Parser {
 
     pub(super) fn push_frame_range(
         &mut self,
-        tokens: Rc<[Token]>,
+        tokens: Rc<Vec<Token>>,
         pos: usize,
         end: usize,
         kind: FrameKind,
@@ -763,13 +780,22 @@ impl Parser {
     }
 
     pub(super) fn expect_sym(&mut self, s: Sym, context: &str) -> PResult<Span> {
+        self.expect_sym_with(s, || context.to_string())
+    }
+
+    /// `expect_sym` with the context made only when it is needed.
+    pub(super) fn expect_sym_with(
+        &mut self,
+        s: Sym,
+        context: impl FnOnce() -> String,
+    ) -> PResult<Span> {
         let t = self.next_tok()?;
         if t.tok == Tok::Sym(s) {
             return Ok(t.span);
         }
         Err(self.error_at(
             t.span,
-            format!("expected '{}' {context}, found {}", s.text(), t.tok),
+            format!("expected '{}' {}, found {}", s.text(), context(), t.tok),
         ))
     }
 

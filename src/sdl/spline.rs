@@ -291,7 +291,7 @@ impl Parser {
 
     /// `S(t)` or `S(t, spline_type)` with the spline identifier consumed.
     pub(super) fn call_spline(&mut self, s: Rc<SplineDef>, name: &str) -> PResult<Value> {
-        self.expect_sym(Sym::LParen, &format!("after the spline {name}"))?;
+        self.expect_sym_with(Sym::LParen, || format!("after the spline {name}"))?;
         let t = self.with_rel(false, |p| p.parse_float())?;
         let mut kind = s.kind;
         if self.eat_sym(Sym::Comma)? {

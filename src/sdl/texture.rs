@@ -118,7 +118,7 @@ impl Parser {
                 pat = Some(np);
                 continue;
             }
-            let space = p.transform;
+            let space = *p.transform;
             let pm = pat.get_or_insert_with(|| {
                 let mut u = Pattern::new(PatternKind::Unsupported);
                 u.noise_generator = 0;

@@ -103,7 +103,7 @@ impl Value {
 pub struct MacroDef {
     pub name: String,
     pub params: Vec<(String, bool)>,
-    pub tokens: Rc<[Token]>,
+    pub tokens: Rc<Vec<Token>>,
     pub body_start: usize,
     pub body_end: usize,
 }

@@ -1,0 +1,195 @@
+//! Rendering a picture band by band, so that memory is bounded by a band of rows whatever the
+//! picture's size: a 100000×100000 picture held whole would need over a terabyte.
+//!
+//! Every pixel is computed exactly as `render` computes it (same rays, same jitter, same
+//! anti-aliasing decisions), so the pixels are the same; only their delivery differs. Method 1
+//! anti-aliasing compares each pixel's first-pass sample with its four neighbours, so each band
+//! is given the first-pass row above it and traces the row below it one band early (and hands
+//! it on), so that no row is traced twice and the ray counts agree too. Method 2 shares corner
+//! samples between rows and is not banded: callers keep it in memory or refuse.
+
+use super::trace::{Quality, Seen, Tracer};
+use super::{aa, film_of, first_pass_rows, Film, RenderSettings};
+use crate::scene::build::Scene;
+
+/// Bytes a pixel costs while a picture is rendered and written whole: the first pass's
+/// samples, anti-aliasing's converted copies and marks, the film, and the quantised planes
+/// and file bytes of the writer (measured sizes of those buffers, rounded up).
+pub const BYTES_PER_PIXEL_WHOLE: u64 = 176;
+
+/// Bytes a pixel of a band costs: the same buffers, for the band's rows only.
+const BYTES_PER_PIXEL_BAND: u64 = 200;
+
+/// What a band of rows may take.
+const BAND_BUDGET: u64 = 256 << 20;
+
+/// The memory a picture rendered and written whole takes, about.
+pub fn whole_picture_bytes(s: &RenderSettings) -> u64 {
+    s.width as u64 * s.height as u64 * BYTES_PER_PIXEL_WHOLE
+}
+
+/// Whether `render_bands` can render with these settings (method 2 cannot).
+pub fn can_band(s: &RenderSettings) -> bool {
+    s.antialias.is_none() || s.sampling_method != 2
+}
+
+/// Rows a band holds within `BAND_BUDGET`, at least one.
+pub fn band_rows(s: &RenderSettings) -> usize {
+    let row = (s.width as u64 * BYTES_PER_PIXEL_BAND).max(1);
+    ((BAND_BUDGET / row).max(1) as usize).min(s.height.max(1) as usize)
+}
+
+/// Renders the picture `rows` rows at a time, handing each finished band (a film of those rows,
+/// top band first) to `sink`; returns (all rays, camera rays). `progress` is called once per
+/// traced row. Panics on method 2 anti-aliasing (see `can_band`).
+pub fn render_bands(
+    scene: &Scene,
+    s: &RenderSettings,
+    rows: usize,
+    progress: &(dyn Fn(u64) + Sync),
+    sink: &mut dyn FnMut(&Film) -> Result<(), String>,
+) -> Result<(u64, u64), String> {
+    assert!(
+        can_band(s),
+        "method 2 anti-aliasing is not rendered in bands"
+    );
+    let tracer = Tracer::new(scene, s.alpha, Quality::level(s.quality));
+    let (w, h) = (s.width as usize, s.height as usize);
+    let rows = rows.max(1);
+    let (mut rays, mut camera_rays) = (0, 0);
+    // First-pass samples of the row above the band and of the band's first row, when an
+    // earlier band traced them.
+    let mut above: Vec<Seen> = Vec::new();
+    let mut ahead: Vec<Seen> = Vec::new();
+    let mut y0 = 0;
+    while y0 < h {
+        let y1 = (y0 + rows).min(h);
+        let Some(threshold) = s.antialias else {
+            let pass = first_pass_rows(&tracer, s, y0..y1, progress);
+            let film = film_of(&pass.samples, s, (y1 - y0) as u32, scene.gamma, (0, 0));
+            rays += pass.rays;
+            camera_rays += pass.camera_rays;
+            sink(&film)?;
+            y0 = y1;
+            continue;
+        };
+        // Rows first_y..end: the row above (if any), this band, the row below (if any).
+        let end = (y1 + 1).min(h);
+        let traced_from = y0 + usize::from(!ahead.is_empty());
+        let pass = first_pass_rows(&tracer, s, traced_from..end, progress);
+        rays += pass.rays;
+        camera_rays += pass.camera_rays;
+        let first_y = y0 - usize::from(!above.is_empty());
+        let mut local = std::mem::take(&mut above);
+        local.append(&mut ahead);
+        local.extend_from_slice(&pass.samples);
+        drop(pass);
+        let mark = aa::method1_marks(&tracer, &local, first_y, s, threshold);
+        let at = |y: usize| (y - first_y) * w;
+        above = local[at(y1 - 1)..at(y1)].to_vec();
+        ahead = local[at(y1)..].to_vec();
+        let mut band = local[at(y0)..at(y1)].to_vec();
+        drop(local);
+        let (r, c) = aa::method1_refine(&tracer, &mut band, &mark[at(y0)..at(y1)], y0, s);
+        rays += r;
+        camera_rays += c;
+        let film = film_of(&band, s, (y1 - y0) as u32, scene.gamma, (0, 0));
+        sink(&film)?;
+        y0 = y1;
+    }
+    Ok((rays, camera_rays))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::render;
+
+    fn scene() -> Scene {
+        let dir = std::env::temp_dir().join(format!("lancer-band-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("band.pov");
+        std::fs::write(
+            &path,
+            "#version 3.7; global_settings { assumed_gamma 1.0 }
+             camera { location <0, 1, -4> look_at <0, 0.5, 0> }
+             light_source { <-5, 8, -6> rgb 1 }
+             sphere { <0, 0.6, 0>, 0.6 pigment { rgbt <0.9, 0.3, 0.2, 0.3> } finish { phong 0.7 } }
+             plane { y, 0 pigment { checker rgb 1 rgb 0.1 scale 0.3 } }",
+        )
+        .unwrap();
+        let parsed = crate::api::parse_file(&path, Default::default());
+        assert!(parsed.error.is_none());
+        let _ = std::fs::remove_dir_all(&dir);
+        crate::scene::build::build(&parsed.parser.scene, 37, 29).scene
+    }
+
+    fn banded(scene: &Scene, s: &RenderSettings, rows: usize) -> (Vec<f64>, (u64, u64)) {
+        let mut out = Vec::new();
+        let counts = render_bands(scene, s, rows, &|_| {}, &mut |f| {
+            for (i, p) in f.pixels.iter().enumerate() {
+                out.extend([p.x, p.y, p.z]);
+                out.push(f.alpha.as_ref().map_or(1.0, |a| a[i]));
+            }
+            Ok(())
+        })
+        .unwrap();
+        (out, counts)
+    }
+
+    /// Bands of any height give the picture and the ray counts of a whole render, bit for bit,
+    /// with and without anti-aliasing, alpha and a partial-render window.
+    #[test]
+    fn bands_render_the_whole_picture_exactly() {
+        let scene = scene();
+        let windowed = super::super::Window {
+            x0: 3,
+            x1: 30,
+            y0: 5,
+            y1: 20,
+        };
+        for (aa, alpha, window) in [
+            (None, false, None),
+            (Some(0.1), false, None),
+            (Some(0.1), true, Some(windowed)),
+        ] {
+            let s = RenderSettings {
+                width: 37,
+                height: 29,
+                antialias: aa,
+                alpha,
+                window,
+                ..RenderSettings::default()
+            };
+            let whole = render(&scene, &s, &|_| {});
+            let mut expect = Vec::new();
+            for (i, p) in whole.pixels.iter().enumerate() {
+                expect.extend([p.x, p.y, p.z]);
+                expect.push(whole.alpha.as_ref().map_or(1.0, |a| a[i]));
+            }
+            for rows in [1, 2, 5, 29, 100] {
+                let (got, counts) = banded(&scene, &s, rows);
+                assert!(
+                    got == expect,
+                    "{rows} rows a band, aa {aa:?}, alpha {alpha}"
+                );
+                assert_eq!(counts, (whole.rays, whole.camera_rays), "{rows} rows");
+            }
+        }
+    }
+
+    #[test]
+    fn bands_fit_the_budget() {
+        let s = RenderSettings {
+            width: 100_000,
+            height: 100_000,
+            ..RenderSettings::default()
+        };
+        let rows = band_rows(&s) as u64;
+        assert!(rows >= 1 && rows * 100_000 * BYTES_PER_PIXEL_BAND <= BAND_BUDGET);
+        assert_eq!(
+            whole_picture_bytes(&s),
+            10_000_000_000 * BYTES_PER_PIXEL_WHOLE
+        );
+    }
+}
