@@ -5,6 +5,7 @@
 
 mod aa;
 pub mod camera;
+mod cells_data;
 mod fog;
 pub mod noise;
 mod noise_data;

@@ -11,6 +11,9 @@
 
 use crate::math::DVec3;
 
+use super::cells_data::{
+    CELL_HASH_OFFSET, CELL_HASH_X, CELL_HASH_Y, CELL_HASH_Z, CELL_POINT, CELL_VALUE,
+};
 use super::noise_data::{ENTRY, GEN2_A, GEN2_B, HASH_OFFSET, HASH_X, HASH_Y, HASH_Z};
 /// Ken Perlin's permutation from the reference implementation of improved noise.
 const PERM: [u8; 256] = [
@@ -138,6 +141,27 @@ fn lattice3<const N: usize>(p: DVec3, ks: [usize; N]) -> [f64; N] {
         }
     }
     out
+}
+
+/// The entry of unit cube (x, y, z) in the cells tables: the same kind of three-stage 12-bit
+/// hash as the noise's, with its own tables (measured with the `cells` pattern).
+#[inline]
+fn cell_entry(x: i64, y: i64, z: i64) -> usize {
+    let m = |c: i64| (c.wrapping_add(CELL_HASH_OFFSET) & 4095) as usize;
+    CELL_HASH_Z[CELL_HASH_Y[CELL_HASH_X[m(x)] as usize ^ m(y)] as usize ^ m(z)] as usize
+}
+
+/// Crackle's random point in unit cube (x, y, z), as POV-Ray places it.
+#[inline]
+pub fn cell_point(x: i64, y: i64, z: i64) -> DVec3 {
+    let p = CELL_POINT[cell_entry(x, y, z)];
+    DVec3::new(x as f64 + p[0], y as f64 + p[1], z as f64 + p[2])
+}
+
+/// The `cells` pattern's value of unit cube (x, y, z).
+#[inline]
+pub fn cell_value(x: i64, y: i64, z: i64) -> f64 {
+    CELL_VALUE[cell_entry(x, y, z)]
 }
 
 /// A well-mixed 32-bit hash of a lattice point and a salt (for lancer's own noise, crackle
