@@ -5,7 +5,9 @@
 //! Generators 1 and 2 are one lattice noise: each integer lattice point picks, through a
 //! three-stage 12-bit hash, a position i in a table of 267 numbers; its value is ENTRY[i]/2
 //! and its gradient ENTRY[i+1..i+4]; the eight corners are blended with the cubic s-curve.
-//! Generator 1 clips that to [0, 1]; generator 2 maps it affinely into [0, 1].
+//! Generator 1 clips that to [0, 1]; generator 2 maps it affinely into [0, 1]. Crackle's
+//! points and cells' values come from a second hash of the same kind (`cells_data`).
+//! Generator 3 is still Perlin's improved noise, not yet POV-Ray's (see docs/noise.md).
 //! Everything here is a pure function of the point: no tables built at run time, no
 //! allocation.
 
