@@ -377,6 +377,7 @@ PROBE_GROUPS = [
     ("", "vturbulence(2,0.5,6,<{x},{y},{z}>).z", 60, 10.0),
     ("", "vturbulence(2.7,0.6,4,<{x},{y},{z}>).x", 60, 10.0),
     ("", "vturbulence(1.5,0.9,8,<{x},{y},{z}>).y", 60, 10.0),
+    ("", "vturbulence(1.3,0.9,20,<{x},{y},{z}>).z", 30, 10.0),
 ]
 PATTERNS = [
     "bozo", "bozo noise_generator 1", "spotted", "bumps", "dents", "dents noise_generator 1",
@@ -392,6 +393,7 @@ PATTERNS = [
     "wood turbulence 0.04 noise_generator 1 ramp_wave frequency 3",
     "agate turbulence 0.3", "spotted turbulence 0.3", "dents turbulence 0.3 lambda 2.5",
     "marble turbulence 0.3 warp { turbulence 0.2 }",
+    "gradient x turbulence 0.4 noise_generator 3", "bozo turbulence 0.5 octaves 14 lambda 1.3",
     "cells", "crackle", "crackle solid", "crackle metric 1", "crackle metric 3",
     "crackle form <-1,1,0> offset 0.3", "crackle form <0.2,0.5,-0.4>",
     "crackle form <1,0,0> metric 3 offset 0.3", "crackle form <0.2,0.5,-1.4>",

@@ -197,7 +197,9 @@ pub fn noise(p: DVec3, generator: u8) -> f64 {
 }
 
 /// POV-Ray's vector noise ("DNoise", what `vturbulence` and turbulence sum): three lattice
-/// noises on entries 0, 4 and 8 places apart, each in about [-0.5, 0.5].
+/// noises on entries 0, 4 and 8 places apart, each in about [-0.5, 0.5]. The same for every
+/// noise_generator (measured: `gradient x turbulence 0.1 noise_generator 3` moves the point
+/// exactly as generator 2 does).
 pub fn dnoise(p: DVec3, _generator: u8) -> DVec3 {
     let [x, y, z] = lattice3(p, [0, 4, 8]);
     DVec3::new(x, y, z)
@@ -210,7 +212,8 @@ pub fn turbulence_vec(p: DVec3, octaves: u32, omega: f64, lambda: f64, generator
     let (omega, lambda) = (omega as f32 as f64, lambda as f32 as f64);
     let mut sum = DVec3::ZERO;
     let (mut scale, mut weight) = (1.0, 1.0);
-    for _ in 0..octaves.max(1) {
+    // POV-Ray stops at 10 octaves (measured: vturbulence with 12 or 20 equals 10).
+    for _ in 0..octaves.clamp(1, 10) {
         sum += weight * dnoise(p * scale, generator);
         scale *= lambda;
         weight *= omega;
@@ -244,7 +247,7 @@ pub fn turbulence(p: DVec3, octaves: u32, omega: f64, lambda: f64, generator: u8
     let (omega, lambda) = (omega as f32 as f64, lambda as f32 as f64);
     let mut sum = clipped_noise(p, generator);
     let (mut scale, mut weight) = (1.0, 1.0);
-    for _ in 1..octaves.max(1) {
+    for _ in 1..octaves.clamp(1, 10) {
         scale *= lambda;
         weight *= omega;
         sum += weight * sum_noise(p * scale, generator);

@@ -114,7 +114,16 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
             let c = super::pigment::eval(p, q);
             0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z
         }
-        PatternKind::Gradient(a) => q.dot(*a) % 1.0,
+        // Measured: gradient x gives 0.3 at x = 1.3, 1 at 1, 0 at 2, but 0.80009 at -9.2 (only
+        // values above 1 are reduced before the 1.00001 wrap).
+        PatternKind::Gradient(a) => {
+            let v = q.dot(*a);
+            if v > 1.0 {
+                v % 1.0
+            } else {
+                v
+            }
+        }
         PatternKind::Onion => q.length() % 1.0,
         PatternKind::Radial => {
             let a = (-q.z).atan2(q.x) / TAU;
