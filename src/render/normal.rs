@@ -279,3 +279,47 @@ fn bump_map(im: &ImageMap, lp: DVec3, ln: DVec3, amount: f64) -> DVec3 {
     let dy = h - grey(x, y + 1);
     ln - DVec3::new(dx, dy, 0.0) * amount
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn gradient_x(amount: f64) -> Normal {
+        let mut n = Normal::new(NormalKind::Pattern {
+            pattern: Box::new(Pattern::new(PatternKind::Gradient(DVec3::X))),
+            special: Special::Slope,
+            slope_map: None,
+        });
+        n.amount = amount;
+        n
+    }
+
+    /// Measured with scripts/measure_normals.py: `gradient x 1` on a plane facing -z tilts the
+    /// normal by 2/15 towards -x, whatever the point and the pattern's uniform scale.
+    #[test]
+    fn gradient_tilts_by_two_fifteenths() {
+        let n = perturb(&gradient_x(1.0), DVec3::new(0.3, 0.2, 0.0), -DVec3::Z);
+        assert!((n.x / n.z - 2.0 / 15.0).abs() < 1e-9, "{n}");
+        let mut scaled = gradient_x(1.0);
+        scaled.apply_transform(&Transform::scale(DVec3::splat(2.0)));
+        let m = perturb(&scaled, DVec3::new(0.3, 0.2, 0.0), -DVec3::Z);
+        assert!((m - n).length() < 1e-9);
+        scaled.no_bump_scale = true;
+        let h = perturb(&scaled, DVec3::new(0.3, 0.2, 0.0), -DVec3::Z);
+        assert!((h.x / h.z - 1.0 / 15.0).abs() < 1e-9, "{h}");
+    }
+
+    #[test]
+    fn slope_map_is_a_hermite_spline_per_segment() {
+        let tri = [
+            (0.0, 0.0, 1.0),
+            (0.5, 1.0, 1.0),
+            (0.5, 1.0, -1.0),
+            (1.0, 0.0, -1.0),
+        ];
+        assert!((slope_height(&tri, 0.25) - 0.5).abs() < 1e-12);
+        assert!((slope_height(&tri, 0.75) - 0.5).abs() < 1e-12);
+        let s = [(0.0, 0.0, 0.0), (1.0, 1.0, 0.0)];
+        assert!((slope_height(&s, 0.4) - (3.0 * 0.16 - 2.0 * 0.064)).abs() < 1e-12);
+    }
+}

@@ -85,6 +85,7 @@ impl Parser {
                     continue;
                 }
                 "facets" => {
+                    self.unsupported("facets (normal pattern; the normal is left flat)", t.span);
                     let (mut coords, mut size) = (0.0, 0.1);
                     loop {
                         if self.eat_keyword("coords")? {
