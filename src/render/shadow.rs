@@ -35,7 +35,13 @@ impl<'a> Tracer<'a> {
         }
     }
 
-    fn area_seen(&self, p: DVec3, light: &Light, a: &AreaLightDesc, ctx: &mut TraceCtx<'a>) -> DVec3 {
+    fn area_seen(
+        &self,
+        p: DVec3,
+        light: &Light,
+        a: &AreaLightDesc,
+        ctx: &mut TraceCtx<'a>,
+    ) -> DVec3 {
         let from = (p - light.position).normalize_or_zero();
         let seed = point_seed(p);
         let sample = |i: u32, j: u32, ctx: &mut TraceCtx<'a>| {
@@ -128,7 +134,7 @@ impl<'a> Tracer<'a> {
                 return false;
             }
             if !obj.transparent {
-                if obj.first_hit(&ray, dist, ctx).is_some() {
+                if obj.any_hit(&ray, dist, ctx) {
                     att = DVec3::ZERO;
                     return true;
                 }

@@ -76,6 +76,9 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
             objects.push(obj);
         }
     }
+    for o in &mut objects {
+        crate::scene::children::attach(o, false);
+    }
     let mut bounded = Vec::new();
     let mut unbounded = Vec::new();
     for (i, o) in objects.iter().enumerate() {
@@ -254,6 +257,7 @@ impl Ctx {
                 (
                     ObjKind::Csg {
                         op: *op,
+                        index: None,
                         children: kids,
                     },
                     bounds,

@@ -714,7 +714,7 @@ impl Parser {
             axis2,
             size1: size1.max(1.0) as u32,
             size2: size2.max(1.0) as u32,
-            ..before.unwrap_or_else(AreaLightDesc::default)
+            ..before.unwrap_or_default()
         })
     }
 
