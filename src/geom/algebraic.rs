@@ -71,9 +71,20 @@ impl Algebraic {
 
     /// The polynomial along `origin + t·dir` (ascending coefficients in t).
     fn along(&self, origin: DVec3, dir: DVec3) -> [f64; MAX_ORDER + 1] {
+        // The table of powers is zeroed on every ray: 31 KB at the largest order, most of the
+        // time of a quadric's intersection. Low orders use a small one (same arithmetic).
+        if self.order < 8 {
+            self.along_in::<8>(origin, dir)
+        } else {
+            self.along_in::<{ MAX_ORDER + 1 }>(origin, dir)
+        }
+    }
+
+    /// `along` with room for orders below `N`.
+    fn along_in<const N: usize>(&self, origin: DVec3, dir: DVec3) -> [f64; MAX_ORDER + 1] {
         let n = self.order;
         // Powers of (o + t d) per axis as polynomials in t.
-        let mut pw = [[[0.0f64; MAX_ORDER + 1]; MAX_ORDER + 1]; 3];
+        let mut pw = [[[0.0f64; N]; N]; 3];
         for (axis, (o, d)) in [(origin.x, dir.x), (origin.y, dir.y), (origin.z, dir.z)]
             .into_iter()
             .enumerate()

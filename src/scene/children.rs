@@ -156,6 +156,16 @@ impl ChildIndex {
         o
     }
 
+    /// The member that leaf `i` is or belongs to.
+    #[inline]
+    pub fn member_of(&self, i: usize) -> usize {
+        if self.starts.is_empty() {
+            i
+        } else {
+            self.steps[self.starts[i] as usize] as usize
+        }
+    }
+
     /// Leaves whose box the ray may cross within (0, tmax], as `f(leaf, &mut tmax)`, which
     /// may lower `tmax` (inclusive: a leaf whose box starts exactly at `tmax` is still
     /// offered, so ties can be settled by leaf order).

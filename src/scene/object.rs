@@ -350,6 +350,48 @@ impl Object {
         }
     }
 
+    /// `inside_without(p, chain[0])` for the object `chain.last()` (this one), where `chain`
+    /// is the leaf and its nodes upwards: no search for the leaf.
+    pub fn inside_without_chain(&self, p: DVec3, chain: &[usize]) -> bool {
+        let Some((_, below)) = chain.split_last() else {
+            return false;
+        };
+        if below.is_empty() || (!self.inverse && !self.bounds.contains(p)) {
+            return false;
+        }
+        let next = below[below.len() - 1];
+        match &self.kind {
+            ObjKind::Csg {
+                op: CsgOp::Union | CsgOp::Merge,
+                children,
+                index: Some(ix),
+            } => {
+                // The member holding the leaf, and through the index the other members'
+                // leaves (a member union's inside is its leaves').
+                let m = (next - children.as_ptr() as usize) / std::mem::size_of::<Object>();
+                (ix.any_at(p, |j| {
+                    ix.member_of(j) != m && ix.leaf(children, j).inside(p)
+                }) || children[m].inside_without_chain(p, below))
+                    != self.inverse
+            }
+            ObjKind::Csg {
+                op: CsgOp::Union | CsgOp::Merge,
+                children,
+                ..
+            } => {
+                children.iter().any(|c| {
+                    if c as *const Object as usize == next {
+                        c.inside_without_chain(p, below)
+                    } else {
+                        // Members not holding the leaf: inside_without is inside.
+                        c.inside(p)
+                    }
+                }) != self.inverse
+            }
+            _ => false,
+        }
+    }
+
     fn contains(&self, leaf: &Object) -> bool {
         std::ptr::eq(self, leaf)
             || match &self.kind {
