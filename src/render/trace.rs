@@ -360,7 +360,7 @@ impl<'a> Tracer<'a> {
         let q = self.quality;
         let mut lit = std::mem::take(&mut ctx.lit);
         lit.clear();
-        for light in &self.scene.lights {
+        for (slot, light) in self.scene.lights.iter().enumerate() {
             let Some(inc) = light.incidence(p) else {
                 continue;
             };
@@ -372,7 +372,7 @@ impl<'a> Tracer<'a> {
             let mut lc = light.color * (light.fade(inc.dist) * inc.beam);
             if !light.shadowless && q.shadows {
                 if let Some(dist) = inc.shadow_dist {
-                    lc *= self.light_seen(p, light, l, dist, ctx);
+                    lc *= self.light_seen(p, (slot, light), l, dist, ctx);
                     if lc == DVec3::ZERO {
                         continue;
                     }

@@ -279,6 +279,7 @@ impl Ctx {
                     ObjKind::Csg {
                         op: *op,
                         index: None,
+                        cull: None,
                         children: kids,
                     },
                     bounds,

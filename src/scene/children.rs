@@ -65,10 +65,12 @@ pub fn attach(o: &mut Object, opened: bool) {
         op,
         children,
         index,
+        cull,
     } = &mut o.kind
     else {
         return;
     };
+    *cull = crate::scene::cull::cull_box(*op, children, &o.bounds).map(Box::new);
     let mine = if opened {
         None
     } else {
@@ -276,10 +278,14 @@ mod tests {
 
     fn strip(o: &mut Object) {
         if let ObjKind::Csg {
-            children, index, ..
+            children,
+            index,
+            cull,
+            ..
         } = &mut o.kind
         {
             *index = None;
+            *cull = None;
             children.iter_mut().for_each(strip);
         }
     }

@@ -2,6 +2,7 @@
 
 pub mod build;
 pub mod children;
+pub mod cull;
 pub mod desc;
 pub mod gif;
 pub mod height_image;

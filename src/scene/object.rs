@@ -17,6 +17,9 @@ pub enum ObjKind {
         children: Vec<Object>,
         /// A BVH over the members, for nodes with many of them.
         index: Option<Box<ChildIndex>>,
+        /// A box tighter than `bounds` holding the node's solid (before `inverse`), for
+        /// intersections whose members are unbounded planes (`scene::cull`).
+        cull: Option<Box<Aabb>>,
     },
 }
 
@@ -62,6 +65,9 @@ pub struct Scratch<'a> {
     /// CSG members a ray may meet, gathered from a node's index (a stack: nested nodes append
     /// after their parent's and truncate back).
     pub members: Vec<u32>,
+    /// Per light, the opaque object that last blocked a shadow ray to it (POV-Ray's shadow
+    /// cache): asked first, since neighbouring points are mostly shadowed by the same object.
+    pub blockers: Vec<Option<&'a Object>>,
 }
 
 /// Whether a crossing at `p` of CSG member `i` is on the result's surface: every other member
@@ -152,11 +158,13 @@ impl Object {
                 op: CsgOp::Union,
                 children,
                 index: Some(ix),
+                ..
             } => union_first_hit(children, ix, ray, tmax, s),
             ObjKind::Csg {
                 op: CsgOp::Union,
                 children,
                 index: None,
+                ..
             } => {
                 let inv_dir = ray.dir.recip();
                 let mut best: Option<SurfaceHit<'a>> = None;
@@ -223,9 +231,17 @@ impl Object {
                 op,
                 children,
                 index,
+                cull,
             } => {
                 let mine = s.surface.len();
                 let inv_dir = ray.dir.recip();
+                // Every crossing lies in the tight box.
+                if cull
+                    .as_ref()
+                    .is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none())
+                {
+                    return;
+                }
                 let index = index.as_deref();
                 // Member `i` is `c`; in a union's index `c` may be a leaf of an opened member
                 // union (its number then does not matter: a union keeps every crossing).
@@ -286,10 +302,12 @@ impl Object {
                 };
                 s.inside(lp)
             }
+            ObjKind::Csg { cull: Some(c), .. } if !c.contains(p) => false,
             ObjKind::Csg {
                 op,
                 children,
                 index: Some(ix),
+                ..
             } => match op {
                 CsgOp::Union | CsgOp::Merge => ix.any_at(p, |j| ix.leaf(children, j).inside(p)),
                 CsgOp::Intersection => children.iter().all(|c| c.inside(p)),
@@ -319,6 +337,7 @@ impl Object {
                 op: CsgOp::Union,
                 children,
                 index: Some(ix),
+                ..
             },
             true,
         ) = (&self.kind, self.clip.is_empty())
@@ -365,6 +384,7 @@ impl Object {
                 op: CsgOp::Union | CsgOp::Merge,
                 children,
                 index: Some(ix),
+                ..
             } => {
                 // The member holding the leaf, and through the index the other members'
                 // leaves (a member union's inside is its leaves').
