@@ -13,22 +13,24 @@
 #    ray lancer traces (camera, reflected, refracted and shadow rays, its statistics line)
 #    over its render phase.
 #
-# usage: scripts/speed_table.sh [-b other_lancer] [-r reps] [-s only_scene ...]
+# usage: scripts/speed_table.sh [-n lancer] [-b other_lancer] [-r reps] [-s only_scene ...]
+#   -n: the lancer binary measured (default target/release/lancer)
 set -uo pipefail
 cd "$(dirname "$0")/.."
 lancer=$PWD/target/release/lancer
 other=
 reps=2
 only=()
-while getopts "b:r:s:" opt; do
+while getopts "n:b:r:s:" opt; do
   case $opt in
+    n) lancer=$OPTARG ;;
     b) other=$OPTARG ;;
     r) reps=$OPTARG ;;
     s) only+=("$OPTARG") ;;
     *) echo "usage: $0 [-b other_lancer] [-r reps] [-s scene]..." >&2; exit 2 ;;
   esac
 done
-[ -x "$lancer" ] || { echo "no release build: cargo build --release" >&2; exit 2; }
+[ -x "$lancer" ] || { echo "no lancer binary $lancer: cargo build --release" >&2; exit 2; }
 command -v povray >/dev/null || { echo "povray not found" >&2; exit 2; }
 tsv=docs/conformance.tsv
 [ -f /tmp/conf0.tsv ] && tsv=/tmp/conf0.tsv

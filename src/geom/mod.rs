@@ -59,6 +59,12 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
     fn half_space(&self) -> Option<(DVec3, f64)> {
         None
     }
+    /// Bounds of the solid on the axes where it has them (infinite on the others), for
+    /// unbounded shapes that are bounded across some axes (a quadric cylinder): clipping by
+    /// them gives finite boxes. Only used to skip work, never as `bounds`.
+    fn slab_bounds(&self) -> Aabb {
+        self.bounds()
+    }
 }
 
 pub mod algebraic;

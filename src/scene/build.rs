@@ -37,6 +37,9 @@ pub struct Scene {
     /// BVH primitive index → object index.
     bounded: Vec<usize>,
     unbounded: Vec<usize>,
+    /// For each of `unbounded`, a box holding all its crossings and its inside, when one is
+    /// known (`scene::cull::object_cull`): rays and points outside skip the object.
+    unbounded_cull: Vec<Option<Aabb>>,
     /// (address of a CSG member, address of its node), sorted: the way up from a leaf for
     /// `inside_other`, which would otherwise search every object tree for the leaf.
     parents: Vec<(usize, usize)>,
@@ -92,6 +95,10 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
         }
     }
     let boxes: Vec<Aabb> = bounded.iter().map(|&i| objects[i].bounds).collect();
+    let unbounded_cull = unbounded
+        .iter()
+        .map(|&i| crate::scene::cull::object_cull(&objects[i]))
+        .collect();
     let bvh = Bvh::build(&boxes);
     let mut sky = desc.sky_sphere.clone().unwrap_or_default();
     for p in &mut sky {
@@ -102,6 +109,7 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
         lights: ctx.lights,
         objects,
         bvh,
+        unbounded_cull,
         bounded,
         unbounded,
         parents: Vec::new(),
@@ -383,7 +391,11 @@ impl Scene {
     ) -> Option<SurfaceHit<'a>> {
         let mut best: Option<SurfaceHit<'a>> = None;
         let mut tmax = tmax;
-        for &i in &self.unbounded {
+        let inv_dir = ray.dir.recip();
+        for (&i, cull) in self.unbounded.iter().zip(&self.unbounded_cull) {
+            if cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none()) {
+                continue;
+            }
             if let Some(h) = self.objects[i].first_hit(ray, tmax, scratch) {
                 tmax = h.t;
                 best = Some(h);
@@ -407,8 +419,11 @@ impl Scene {
         tmax: f64,
         mut f: impl FnMut(&'a Object) -> bool,
     ) {
-        for &i in &self.unbounded {
-            if f(&self.objects[i]) {
+        let inv_dir = ray.dir.recip();
+        for (&i, cull) in self.unbounded.iter().zip(&self.unbounded_cull) {
+            // An object the ray misses adds nothing, opaque or not.
+            let missed = cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none());
+            if !missed && f(&self.objects[i]) {
                 return;
             }
         }
@@ -434,7 +449,12 @@ impl Scene {
         // Outside the tree holding `leaf`, inside_without is inside; it is false outside a
         // bounded object's box, so the BVH's point query finds every object that can say yes.
         let other = |o: &Object| !is_root(o) && o.inside(p);
-        if self.unbounded.iter().any(|&i| other(&self.objects[i])) {
+        if self
+            .unbounded
+            .iter()
+            .zip(&self.unbounded_cull)
+            .any(|(&i, cull)| cull.is_none_or(|c| c.contains(p)) && other(&self.objects[i]))
+        {
             return true;
         }
         let mut found = false;

@@ -35,6 +35,18 @@ fn indexed(b: &Aabb) -> bool {
     b.is_finite() && !b.is_empty()
 }
 
+/// The box a leaf is indexed by: its bounds, or for an unbounded one (a clipped quartic) the
+/// finite box its planes and clipping give, if any. The index's boxes only pick the leaves to
+/// ask, so a tighter one changes no answer.
+fn leaf_box(o: &Object) -> Aabb {
+    if indexed(&o.bounds) {
+        return o.bounds;
+    }
+    crate::scene::cull::object_cull(o)
+        .filter(indexed)
+        .unwrap_or(o.bounds)
+}
+
 /// A union whose members can stand in for it in every query of an enclosing union.
 fn opens(o: &Object) -> bool {
     matches!(
@@ -104,7 +116,7 @@ impl ChildIndex {
                     } else {
                         starts.push(steps.len() as u32);
                         steps.extend_from_slice(path);
-                        boxes.push(c.bounds);
+                        boxes.push(leaf_box(c));
                     }
                     path.pop();
                 }
@@ -119,7 +131,7 @@ impl ChildIndex {
             starts.push(steps.len() as u32);
             deep = steps.len() != boxes.len();
         } else {
-            boxes.extend(children.iter().map(|c| c.bounds));
+            boxes.extend(children.iter().map(leaf_box));
         }
         if boxes.len() < MIN_MEMBERS {
             return None;

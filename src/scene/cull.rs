@@ -17,6 +17,26 @@ const FAR: f64 = 1e9;
 /// More half-spaces than this and the vertex search (cubic in their number) is not tried.
 const MAX_PLANES: usize = 48;
 
+/// A box holding every crossing of a top-level object whose `bounds` are not finite, from its
+/// own planes and slabs and its clipping objects' (a crossing must lie inside all of them);
+/// `None` when nothing finite comes of it. Not for inverted objects (their solid is outside).
+pub fn object_cull(o: &Object) -> Option<Aabb> {
+    if o.inverse {
+        return None;
+    }
+    let mut planes = Vec::new();
+    half_spaces(o, &mut planes);
+    for c in &o.clip {
+        half_spaces(c, &mut planes);
+    }
+    let mut b = polyhedron_box(&planes)?;
+    if let ObjKind::Csg { cull: Some(c), .. } = &o.kind {
+        b = b.intersection(c);
+    }
+    let b = b.intersection(&o.bounds);
+    (b.is_finite() || b.min.is_finite() || b.max.is_finite()).then_some(b)
+}
+
 /// The tight box of a CSG node, when it is finite on some side and tighter than `bounds`.
 pub fn cull_box(op: CsgOp, children: &[Object], bounds: &Aabb) -> Option<Aabb> {
     let b = match op {
@@ -58,12 +78,25 @@ fn half_spaces(o: &Object, out: &mut Vec<(DVec3, f64)>) {
     }
     match &o.kind {
         ObjKind::Shape(s) => {
-            if let Some((n, d)) = s.half_space() {
+            // In the shape's space: its own half-space, or the finite sides of its slabs
+            // (these only for a solid that is not inverted).
+            let mut local = Vec::new();
+            if let Some(h) = s.half_space() {
+                local.push(if o.inverse { (-h.0, -h.1) } else { h });
+            } else if !o.inverse {
+                let b = s.slab_bounds();
+                for (axis, n) in [DVec3::X, DVec3::Y, DVec3::Z].into_iter().enumerate() {
+                    if b.max[axis].is_finite() && b.min[axis].is_finite() {
+                        local.push((n, b.max[axis]));
+                        local.push((-n, -b.min[axis]));
+                    }
+                }
+            }
+            for (n, d) in local {
                 let (n, d) = match &o.transform {
                     Some(t) => (t.normal(n), d - n.dot(t.inv_point(DVec3::ZERO))),
                     None => (n, d),
                 };
-                let (n, d) = if o.inverse { (-n, -d) } else { (n, d) };
                 if n.is_finite() && d.is_finite() && n != DVec3::ZERO {
                     out.push((n, d));
                 }
