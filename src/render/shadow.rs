@@ -141,17 +141,20 @@ impl<'a> Tracer<'a> {
         if ctx.blockers.len() <= slot {
             ctx.blockers.resize(slot + 1, None);
         }
+        let mut tried = None;
         if let Some(b) = ctx.blockers[slot] {
-            if b.bounds.hit(ray.origin, ray.dir.recip(), dist).is_some()
-                && b.any_hit(&ray, dist, ctx)
-            {
-                return DVec3::ZERO;
+            if b.bounds.hit(ray.origin, ray.dir.recip(), dist).is_some() {
+                if b.any_hit(&ray, dist, ctx) {
+                    return DVec3::ZERO;
+                }
+                tried = Some(b);
             }
         }
         let mut att = DVec3::ONE;
         let mut blocker = None;
         self.scene.for_each_candidate(&ray, dist, |obj| {
-            if obj.no_shadow {
+            // The cached blocker, opaque, was just found not to block.
+            if obj.no_shadow || tried.is_some_and(|t| std::ptr::eq(t, obj)) {
                 return false;
             }
             if !obj.transparent {
