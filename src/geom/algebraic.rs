@@ -71,9 +71,13 @@ impl Algebraic {
 
     /// The polynomial along `origin + t·dir` (ascending coefficients in t).
     fn along(&self, origin: DVec3, dir: DVec3) -> [f64; MAX_ORDER + 1] {
-        // The table of powers is zeroed on every ray: 31 KB at the largest order, most of the
+        // The table of powers is zeroed on every ray: 7 KB at the largest order, most of the
         // time of a quadric's intersection. Low orders use a small one (same arithmetic).
-        if self.order < 8 {
+        if self.order <= 2 {
+            self.along_in::<3>(origin, dir)
+        } else if self.order <= 4 {
+            self.along_in::<5>(origin, dir)
+        } else if self.order < 8 {
             self.along_in::<8>(origin, dir)
         } else {
             self.along_in::<{ MAX_ORDER + 1 }>(origin, dir)
