@@ -71,9 +71,24 @@ impl Algebraic {
 
     /// The polynomial along `origin + t·dir` (ascending coefficients in t).
     fn along(&self, origin: DVec3, dir: DVec3) -> [f64; MAX_ORDER + 1] {
+        // The table of powers is zeroed on every ray: 7 KB at the largest order, most of the
+        // time of a quadric's intersection. Low orders use a small one (same arithmetic).
+        if self.order <= 2 {
+            self.along_in::<3>(origin, dir)
+        } else if self.order <= 4 {
+            self.along_in::<5>(origin, dir)
+        } else if self.order < 8 {
+            self.along_in::<8>(origin, dir)
+        } else {
+            self.along_in::<{ MAX_ORDER + 1 }>(origin, dir)
+        }
+    }
+
+    /// `along` with room for orders below `N`.
+    fn along_in<const N: usize>(&self, origin: DVec3, dir: DVec3) -> [f64; MAX_ORDER + 1] {
         let n = self.order;
         // Powers of (o + t d) per axis as polynomials in t.
-        let mut pw = [[[0.0f64; MAX_ORDER + 1]; MAX_ORDER + 1]; 3];
+        let mut pw = [[[0.0f64; N]; N]; 3];
         for (axis, (o, d)) in [(origin.x, dir.x), (origin.y, dir.y), (origin.z, dir.z)]
             .into_iter()
             .enumerate()
@@ -148,6 +163,52 @@ impl Shape for Algebraic {
         self.value(p) < 0.0
     }
 
+    /// A quadric without cross terms, a·x² + b·y² + c·z² + linear + constant with the squared
+    /// terms' coefficients >= 0 and no linear term on the axes without one (spheres,
+    /// ellipsoids, the axis cylinders of shapes.inc): its solid (negative side) lies within
+    /// centre ± sqrt(K / a) on each axis with a square term.
+    fn slab_bounds(&self) -> Aabb {
+        if self.order != 2 {
+            return Aabb::INFINITE;
+        }
+        let (mut sq, mut lin, mut k) = ([0.0f64; 3], [0.0f64; 3], 0.0);
+        for ([i, j, l], c) in &self.terms {
+            match (*i, *j, *l) {
+                (2, 0, 0) => sq[0] = *c,
+                (0, 2, 0) => sq[1] = *c,
+                (0, 0, 2) => sq[2] = *c,
+                (1, 0, 0) => lin[0] = *c,
+                (0, 1, 0) => lin[1] = *c,
+                (0, 0, 1) => lin[2] = *c,
+                (0, 0, 0) => k = *c,
+                _ => return Aabb::INFINITE,
+            }
+        }
+        if sq.iter().any(|&a| a < 0.0) || (0..3).any(|a| sq[a] == 0.0 && lin[a] != 0.0) {
+            return Aabb::INFINITE;
+        }
+        // sum a(x + l/2a)² <= K
+        let big_k = (0..3)
+            .filter(|&a| sq[a] > 0.0)
+            .map(|a| lin[a] * lin[a] / (4.0 * sq[a]))
+            .sum::<f64>()
+            - k;
+        if big_k.is_nan() || big_k < 0.0 || big_k.is_infinite() {
+            return Aabb::INFINITE;
+        }
+        let (mut lo, mut hi) = (DVec3::NEG_INFINITY, DVec3::INFINITY);
+        for a in 0..3 {
+            if sq[a] > 0.0 {
+                let c = -lin[a] / (2.0 * sq[a]);
+                let r = (big_k / sq[a]).sqrt();
+                let pad = 1e-6 * (r + c.abs()) + 1e-9;
+                lo[a] = c - r - pad;
+                hi[a] = c + r + pad;
+            }
+        }
+        Aabb::new(lo, hi)
+    }
+
     fn normal(&self, p: DVec3, _hit: &Hit) -> DVec3 {
         let mut g = DVec3::ZERO;
         for ([i, j, k], c) in &self.terms {
@@ -170,6 +231,33 @@ impl Shape for Algebraic {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn quadric_slab_bounds() {
+        // (x-1)² + 4y² <= 4, any z: x in [-1, 3], y in [-1, 1].
+        let q = Algebraic::new(
+            2,
+            &[
+                ([2, 0, 0], 1.0),
+                ([0, 2, 0], 4.0),
+                ([1, 0, 0], -2.0),
+                ([0, 0, 0], -3.0),
+            ],
+            false,
+        );
+        let b = q.slab_bounds();
+        assert!((b.min.x + 1.0).abs() < 1e-5 && (b.max.x - 3.0).abs() < 1e-5);
+        assert!((b.max.y - 1.0).abs() < 1e-5 && b.min.y < -1.0);
+        assert!(b.min.z == f64::NEG_INFINITY && b.max.z == f64::INFINITY);
+        for p in [DVec3::new(3.0, 0.0, 7.0), DVec3::new(1.0, 1.0, -9.0)] {
+            assert!(b.contains(p));
+        }
+        // A hyperboloid (negative square term) and a cross term give nothing.
+        let h = Algebraic::new(2, &[([2, 0, 0], 1.0), ([0, 2, 0], -1.0)], false);
+        assert!(!h.slab_bounds().is_finite() && h.slab_bounds().min.x.is_infinite());
+        let c = Algebraic::new(2, &[([2, 0, 0], 1.0), ([1, 1, 0], 1.0)], false);
+        assert_eq!(c.slab_bounds().max.x, f64::INFINITY);
+    }
 
     #[test]
     fn quartic_term_order_matches_the_manuals_torus() {

@@ -296,6 +296,42 @@ impl Bvh {
         }
     }
 
+    /// Visits primitives whose box contains `p`, in no particular order; `f` returns `true` to
+    /// stop. For point-in-solid queries over many objects.
+    pub fn visit_point(&self, p: DVec3, mut f: impl FnMut(usize) -> bool) {
+        if self.nodes.is_empty() {
+            return;
+        }
+        let mut stack = [0u32; STACK];
+        let mut sp = 0;
+        let mut node = 0usize;
+        loop {
+            let n = &self.nodes[node];
+            if n.bounds.contains(p) {
+                if n.count > 0 {
+                    let first = n.index as usize;
+                    for &i in &self.prims[first..first + n.count as usize] {
+                        if f(i as usize) {
+                            return;
+                        }
+                    }
+                } else {
+                    if sp < STACK {
+                        stack[sp] = n.index;
+                        sp += 1;
+                    }
+                    node += 1;
+                    continue;
+                }
+            }
+            if sp == 0 {
+                return;
+            }
+            sp -= 1;
+            node = stack[sp] as usize;
+        }
+    }
+
     /// Depth of the tree (1 for a single leaf); for tests and statistics.
     pub fn depth(&self) -> usize {
         fn rec(nodes: &[Node], i: usize) -> usize {

@@ -54,6 +54,17 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
     fn inside(&self, p: DVec3) -> bool;
     /// Outward normal at a point the shape reported, not necessarily unit length.
     fn normal(&self, p: DVec3, hit: &Hit) -> DVec3;
+    /// A half-space `n·p <= d` holding the solid, for shapes that are one (planes): CSG
+    /// intersections of them get finite boxes from it.
+    fn half_space(&self) -> Option<(DVec3, f64)> {
+        None
+    }
+    /// Bounds of the solid on the axes where it has them (infinite on the others), for
+    /// unbounded shapes that are bounded across some axes (a quadric cylinder): clipping by
+    /// them gives finite boxes. Only used to skip work, never as `bounds`.
+    fn slab_bounds(&self) -> Aabb {
+        self.bounds()
+    }
 }
 
 pub mod algebraic;

@@ -67,6 +67,10 @@ impl Shape for Plane {
     fn normal(&self, _p: DVec3, _hit: &Hit) -> DVec3 {
         self.normal
     }
+
+    fn half_space(&self) -> Option<(DVec3, f64)> {
+        (self.normal != DVec3::ZERO).then_some((self.normal, self.distance))
+    }
 }
 
 #[cfg(test)]

@@ -18,7 +18,7 @@ impl<'a> Tracer<'a> {
     pub(super) fn light_seen(
         &self,
         p: DVec3,
-        light: &Light,
+        (slot, light): (usize, &Light),
         l: DVec3,
         dist: f64,
         ctx: &mut TraceCtx<'a>,
@@ -29,16 +29,16 @@ impl<'a> Tracer<'a> {
                     && a.size1 * a.size2 > 1
                     && light.parallel.is_none() =>
             {
-                self.area_seen(p, light, a, ctx)
+                self.area_seen(p, (slot, light), a, ctx)
             }
-            _ => self.shadow(p, l, dist, ctx),
+            _ => self.shadow(p, l, dist, slot, ctx),
         }
     }
 
     fn area_seen(
         &self,
         p: DVec3,
-        light: &Light,
+        (slot, light): (usize, &Light),
         a: &AreaLightDesc,
         ctx: &mut TraceCtx<'a>,
     ) -> DVec3 {
@@ -59,7 +59,7 @@ impl<'a> Tracer<'a> {
             if d <= 0.0 {
                 return DVec3::ONE;
             }
-            self.shadow(p, to / d, d, ctx)
+            self.shadow(p, to / d, d, slot, ctx)
         };
         let (n1, n2) = (a.size1, a.size2);
         // The corners of the array, split into quarters where they disagree, the first
@@ -124,18 +124,43 @@ impl<'a> Tracer<'a> {
     }
 
     /// Light reaching `p` from a light `dist` away in direction `l`: zero behind an opaque
-    /// object, filtered by each crossing of a transparent one.
-    pub(super) fn shadow(&self, p: DVec3, l: DVec3, dist: f64, ctx: &mut TraceCtx<'a>) -> DVec3 {
+    /// object, filtered by each crossing of a transparent one. `slot` is the light's number,
+    /// for the cache of the last blocker.
+    pub(super) fn shadow(
+        &self,
+        p: DVec3,
+        l: DVec3,
+        dist: f64,
+        slot: usize,
+        ctx: &mut TraceCtx<'a>,
+    ) -> DVec3 {
         ctx.rays += 1;
         let ray = Ray::new(p, l);
+        // Any opaque blocker makes the answer exactly zero, whatever else the ray crosses, so
+        // the last one is tried first. Its box test is the one the BVH would have made.
+        if ctx.blockers.len() <= slot {
+            ctx.blockers.resize(slot + 1, None);
+        }
+        let mut tried = None;
+        if let Some(b) = ctx.blockers[slot] {
+            if b.bounds.hit(ray.origin, ray.dir.recip(), dist).is_some() {
+                if b.any_hit(&ray, dist, ctx) {
+                    return DVec3::ZERO;
+                }
+                tried = Some(b);
+            }
+        }
         let mut att = DVec3::ONE;
+        let mut blocker = None;
         self.scene.for_each_candidate(&ray, dist, |obj| {
-            if obj.no_shadow {
+            // The cached blocker, opaque, was just found not to block.
+            if obj.no_shadow || tried.is_some_and(|t| std::ptr::eq(t, obj)) {
                 return false;
             }
             if !obj.transparent {
-                if obj.first_hit(&ray, dist, ctx).is_some() {
+                if obj.any_hit(&ray, dist, ctx) {
                     att = DVec3::ZERO;
+                    blocker = Some(obj);
                     return true;
                 }
                 return false;
@@ -170,6 +195,9 @@ impl<'a> Tracer<'a> {
             ctx.surface.truncate(start);
             att == DVec3::ZERO
         });
+        if blocker.is_some() {
+            ctx.blockers[slot] = blocker;
+        }
         att
     }
 }

@@ -431,7 +431,7 @@ impl<'a> Tracer<'a> {
         let mut lit = std::mem::take(&mut ctx.lit);
         lit.clear();
         let seed = point_seed(p);
-        for (i, light) in self.scene.lights.iter().enumerate() {
+        for (slot, light) in self.scene.lights.iter().enumerate() {
             let Some(inc) = light.incidence(p) else {
                 continue;
             };
@@ -444,7 +444,7 @@ impl<'a> Tracer<'a> {
             let mut lc = light.color * (light.fade(inc.dist) * inc.beam);
             if !light.shadowless && q.shadows {
                 if let Some(dist) = inc.shadow_dist {
-                    lc *= self.light_seen(p, light, l, dist, ctx);
+                    lc *= self.light_seen(p, (slot, light), l, dist, ctx);
                     if lc == DVec3::ZERO {
                         continue;
                     }
@@ -456,7 +456,7 @@ impl<'a> Tracer<'a> {
                 cos_n,
                 shadowless: light.shadowless,
                 back,
-                grain: grain(seed, i as u32),
+                grain: grain(seed, slot as u32),
             });
         }
         ctx.lit = lit;

@@ -37,6 +37,12 @@ pub struct Scene {
     /// BVH primitive index → object index.
     bounded: Vec<usize>,
     unbounded: Vec<usize>,
+    /// For each of `unbounded`, a box holding all its crossings and its inside, when one is
+    /// known (`scene::cull::object_cull`): rays and points outside skip the object.
+    unbounded_cull: Vec<Option<Aabb>>,
+    /// (address of a CSG member, address of its node), sorted: the way up from a leaf for
+    /// `inside_other`, which would otherwise search every object tree for the leaf.
+    parents: Vec<(usize, usize)>,
     pub background: Rgbft,
     pub sky: Vec<Pigment>,
     pub max_trace_level: u32,
@@ -84,6 +90,9 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
             objects.push(obj);
         }
     }
+    for o in &mut objects {
+        crate::scene::children::attach(o, false);
+    }
     let mut bounded = Vec::new();
     let mut unbounded = Vec::new();
     for (i, o) in objects.iter().enumerate() {
@@ -94,18 +103,24 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
         }
     }
     let boxes: Vec<Aabb> = bounded.iter().map(|&i| objects[i].bounds).collect();
+    let unbounded_cull = unbounded
+        .iter()
+        .map(|&i| crate::scene::cull::object_cull(&objects[i]))
+        .collect();
     let bvh = Bvh::build(&boxes);
     let mut sky = desc.sky_sphere.clone().unwrap_or_default();
     for p in &mut sky {
         ctx.pigment(p);
     }
-    let scene = Scene {
+    let mut scene = Scene {
         camera: Camera::new(&desc.camera, width, height),
         lights: ctx.lights,
         objects,
         bvh,
+        unbounded_cull,
         bounded,
         unbounded,
+        parents: Vec::new(),
         background: desc.background,
         sky,
         max_trace_level: desc.global.max_trace_level,
@@ -122,7 +137,24 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
             })
             .collect(),
     };
+    // Addresses are final: the objects' buffers do not move again.
+    scene.parents = parent_table(&scene.objects);
     BuildOutput { scene, warnings }
+}
+
+fn parent_table(objects: &[Object]) -> Vec<(usize, usize)> {
+    fn walk(o: &Object, out: &mut Vec<(usize, usize)>) {
+        if let ObjKind::Csg { children, .. } = &o.kind {
+            for c in children {
+                out.push((c as *const Object as usize, o as *const Object as usize));
+                walk(c, out);
+            }
+        }
+    }
+    let mut out = Vec::new();
+    objects.iter().for_each(|o| walk(o, &mut out));
+    out.sort_unstable();
+    out
 }
 
 struct Ctx {
@@ -328,6 +360,8 @@ impl Ctx {
                 (
                     ObjKind::Csg {
                         op: *op,
+                        index: None,
+                        cull: None,
                         children: kids,
                     },
                     bounds,
@@ -434,7 +468,11 @@ impl Scene {
     ) -> Option<SurfaceHit<'a>> {
         let mut best: Option<SurfaceHit<'a>> = None;
         let mut tmax = tmax;
-        for &i in &self.unbounded {
+        let inv_dir = ray.dir.recip();
+        for (&i, cull) in self.unbounded.iter().zip(&self.unbounded_cull) {
+            if cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none()) {
+                continue;
+            }
             if let Some(h) = self.objects[i].first_hit(ray, tmax, scratch) {
                 tmax = h.t;
                 best = Some(h);
@@ -458,8 +496,11 @@ impl Scene {
         tmax: f64,
         mut f: impl FnMut(&'a Object) -> bool,
     ) {
-        for &i in &self.unbounded {
-            if f(&self.objects[i]) {
+        let inv_dir = ray.dir.recip();
+        for (&i, cull) in self.unbounded.iter().zip(&self.unbounded_cull) {
+            // An object the ray misses adds nothing, opaque or not.
+            let missed = cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none());
+            if !missed && f(&self.objects[i]) {
                 return;
             }
         }
@@ -468,9 +509,43 @@ impl Scene {
     }
 
     /// Whether `p` is inside any object other than `leaf` (CSG nodes holding `leaf` are
-    /// judged by their other members).
+    /// judged by their other members): `Object::inside_without` over every object, with the
+    /// tree holding `leaf` found through the parent table and the others through the BVH.
     pub fn inside_other(&self, p: DVec3, leaf: &Object) -> bool {
-        self.objects.iter().any(|o| o.inside_without(p, leaf))
+        // `leaf` and its nodes up to the top-level object holding it.
+        let mut chain = vec![leaf as *const Object as usize];
+        loop {
+            let at = *chain.last().unwrap_or(&0);
+            match self.parents.binary_search_by(|e| e.0.cmp(&at)) {
+                Ok(k) => chain.push(self.parents[k].1),
+                Err(_) => break,
+            }
+        }
+        let root = *chain.last().unwrap_or(&0);
+        let is_root = |o: &Object| o as *const Object as usize == root;
+        // Outside the tree holding `leaf`, inside_without is inside; it is false outside a
+        // bounded object's box, so the BVH's point query finds every object that can say yes.
+        let other = |o: &Object| !is_root(o) && o.inside(p);
+        if self
+            .unbounded
+            .iter()
+            .zip(&self.unbounded_cull)
+            .any(|(&i, cull)| cull.is_none_or(|c| c.contains(p)) && other(&self.objects[i]))
+        {
+            return true;
+        }
+        let mut found = false;
+        self.bvh.visit_point(p, |k| {
+            found = other(&self.objects[self.bounded[k]]);
+            found
+        });
+        if found {
+            return true;
+        }
+        match self.objects.iter().find(|o| is_root(o)) {
+            Some(o) => o.inside_without_chain(p, &chain),
+            None => false,
+        }
     }
 }
 

@@ -1,6 +1,8 @@
 //! Scenes: the declarative description the parser produces, and the runtime form built from it.
 
 pub mod build;
+pub mod children;
+pub mod cull;
 pub mod desc;
 pub mod gif;
 pub mod height_image;

@@ -7,11 +7,20 @@ use std::sync::Arc;
 
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, Transform};
+use crate::scene::children::ChildIndex;
 use crate::scene::desc::{CsgOp, MeshData, Texture};
 
 pub enum ObjKind {
     Shape(Arc<dyn Shape>),
-    Csg { op: CsgOp, children: Vec<Object> },
+    Csg {
+        op: CsgOp,
+        children: Vec<Object>,
+        /// A BVH over the members, for nodes with many of them.
+        index: Option<Box<ChildIndex>>,
+        /// A box tighter than `bounds` holding the node's solid (before `inverse`), for
+        /// intersections whose members are unbounded planes (`scene::cull`).
+        cull: Option<Box<Aabb>>,
+    },
 }
 
 /// A shape's data with the textures of its parts (mesh triangles, blob components).
@@ -64,14 +73,34 @@ pub struct Scratch<'a> {
     pub blob_weights: Vec<(usize, f64)>,
     /// Shadow samples of an area light's array already taken for the point being shaded.
     pub area_samples: Vec<Option<DVec3>>,
+    /// CSG members a ray may meet, gathered from a node's index (a stack: nested nodes append
+    /// after their parent's and truncate back).
+    pub members: Vec<u32>,
+    /// Per light, the opaque object that last blocked a shadow ray to it (POV-Ray's shadow
+    /// cache): asked first, since neighbouring points are mostly shadowed by the same object.
+    pub blockers: Vec<Option<&'a Object>>,
 }
 
 /// Whether a crossing at `p` of CSG member `i` is on the result's surface: every other member
 /// must contain `p` (intersection), not contain it (union-like merge), or, for a difference,
 /// the first member must and the subtracted ones must not.
-fn csg_keeps(op: CsgOp, i: usize, children: &[Object], p: DVec3) -> bool {
-    if op == CsgOp::Union {
-        return true;
+fn csg_keeps(
+    op: CsgOp,
+    i: usize,
+    children: &[Object],
+    index: Option<&ChildIndex>,
+    p: DVec3,
+) -> bool {
+    // With an index only the members whose boxes hold `p` are asked: outside its box a member
+    // without `inverse` is not inside (members with `inverse` have infinite boxes).
+    match (op, index) {
+        (CsgOp::Union, _) => return true,
+        (CsgOp::Merge, Some(ix)) => return !ix.any_at(p, |j| j != i && children[j].inside(p)),
+        (CsgOp::Difference, Some(ix)) => {
+            return (i == 0 || children[0].inside(p))
+                && !ix.any_at(p, |j| j != i && j != 0 && children[j].inside(p));
+        }
+        _ => {}
     }
     children
         .iter()
@@ -139,6 +168,14 @@ impl Object {
             ObjKind::Csg {
                 op: CsgOp::Union,
                 children,
+                index: Some(ix),
+                ..
+            } => union_first_hit(children, ix, ray, tmax, s),
+            ObjKind::Csg {
+                op: CsgOp::Union,
+                children,
+                index: None,
+                ..
             } => {
                 let inv_dir = ray.dir.recip();
                 let mut best: Option<SurfaceHit<'a>> = None;
@@ -201,14 +238,29 @@ impl Object {
                         flip: self.inverse,
                     }));
             }
-            ObjKind::Csg { op, children } => {
+            ObjKind::Csg {
+                op,
+                children,
+                index,
+                cull,
+            } => {
                 let mine = s.surface.len();
                 let inv_dir = ray.dir.recip();
-                for (i, c) in children.iter().enumerate() {
+                // Every crossing lies in the tight box.
+                if cull
+                    .as_ref()
+                    .is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none())
+                {
+                    return;
+                }
+                let index = index.as_deref();
+                // Member `i` is `c`; in a union's index `c` may be a leaf of an opened member
+                // union (its number then does not matter: a union keeps every crossing).
+                let member = |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
                     // A child whose box the ray misses adds no crossings (transparent shadows
                     // through a union of many parts would otherwise test every part).
                     if c.bounds.hit(ray.origin, inv_dir, tmax).is_none() {
-                        continue;
+                        return;
                     }
                     // Each child's crossings are appended, then filtered in place.
                     let start = s.surface.len();
@@ -216,7 +268,7 @@ impl Object {
                     let mut k = start;
                     for j in start..s.surface.len() {
                         let mut h = s.surface[j];
-                        if csg_keeps(*op, i, children, ray.at(h.t)) {
+                        if csg_keeps(*op, i, children, index, ray.at(h.t)) {
                             // Surfaces of subtracted operands face into the result.
                             h.flip ^= *op == CsgOp::Difference && i > 0;
                             s.surface[k] = h;
@@ -224,6 +276,22 @@ impl Object {
                         }
                     }
                     s.surface.truncate(k);
+                };
+                match index {
+                    None => children
+                        .iter()
+                        .enumerate()
+                        .for_each(|(i, c)| member(c, i, s)),
+                    // In member order, as the scan: callers see crossings in this order.
+                    Some(ix) => {
+                        let from = s.members.len();
+                        ix.candidates(ray, tmax, &mut s.members);
+                        for k in from..s.members.len() {
+                            let i = s.members[k] as usize;
+                            member(ix.leaf(children, i), i, s);
+                        }
+                        s.members.truncate(from);
+                    }
                 }
                 if self.inverse {
                     s.surface[mine..].iter_mut().for_each(|h| h.flip = !h.flip);
@@ -245,7 +313,20 @@ impl Object {
                 };
                 s.inside(lp)
             }
-            ObjKind::Csg { op, children } => match op {
+            ObjKind::Csg { cull: Some(c), .. } if !c.contains(p) => false,
+            ObjKind::Csg {
+                op,
+                children,
+                index: Some(ix),
+                ..
+            } => match op {
+                CsgOp::Union | CsgOp::Merge => ix.any_at(p, |j| ix.leaf(children, j).inside(p)),
+                CsgOp::Intersection => children.iter().all(|c| c.inside(p)),
+                CsgOp::Difference => {
+                    children[0].inside(p) && !ix.any_at(p, |j| j > 0 && children[j].inside(p))
+                }
+            },
+            ObjKind::Csg { op, children, .. } => match op {
                 CsgOp::Union | CsgOp::Merge => children.iter().any(|c| c.inside(p)),
                 CsgOp::Intersection => !children.is_empty() && children.iter().all(|c| c.inside(p)),
                 CsgOp::Difference => {
@@ -259,6 +340,28 @@ impl Object {
         r != self.inverse
     }
 
+    /// Whether the ray crosses this object within (EPSILON, tmax): `first_hit(..).is_some()`,
+    /// but a union stops at the first member it finds crossed (shadow rays).
+    pub fn any_hit<'a>(&'a self, ray: &Ray, tmax: f64, s: &mut Scratch<'a>) -> bool {
+        if let (
+            ObjKind::Csg {
+                op: CsgOp::Union,
+                children,
+                index: Some(ix),
+                ..
+            },
+            true,
+        ) = (&self.kind, self.clip.is_empty())
+        {
+            let inv_dir = ray.dir.recip();
+            return ix.any(ray, tmax, |i| {
+                let c = ix.leaf(children, i);
+                c.bounds.hit(ray.origin, inv_dir, tmax).is_some() && c.any_hit(ray, tmax, s)
+            });
+        }
+        self.first_hit(ray, tmax, s).is_some()
+    }
+
     /// Like `inside`, but as if `leaf` were not part of this object.
     pub fn inside_without(&self, p: DVec3, leaf: &Object) -> bool {
         if std::ptr::eq(self, leaf) || (!self.inverse && !self.bounds.contains(p)) {
@@ -268,11 +371,55 @@ impl Object {
             ObjKind::Csg {
                 op: CsgOp::Union | CsgOp::Merge,
                 children,
+                ..
             } if self.contains(leaf) => {
                 children.iter().any(|c| c.inside_without(p, leaf)) != self.inverse
             }
             _ if self.contains(leaf) => false,
             _ => self.inside(p),
+        }
+    }
+
+    /// `inside_without(p, chain[0])` for the object `chain.last()` (this one), where `chain`
+    /// is the leaf and its nodes upwards: no search for the leaf.
+    pub fn inside_without_chain(&self, p: DVec3, chain: &[usize]) -> bool {
+        let Some((_, below)) = chain.split_last() else {
+            return false;
+        };
+        if below.is_empty() || (!self.inverse && !self.bounds.contains(p)) {
+            return false;
+        }
+        let next = below[below.len() - 1];
+        match &self.kind {
+            ObjKind::Csg {
+                op: CsgOp::Union | CsgOp::Merge,
+                children,
+                index: Some(ix),
+                ..
+            } => {
+                // The member holding the leaf, and through the index the other members'
+                // leaves (a member union's inside is its leaves').
+                let m = (next - children.as_ptr() as usize) / std::mem::size_of::<Object>();
+                (ix.any_at(p, |j| {
+                    ix.member_of(j) != m && ix.leaf(children, j).inside(p)
+                }) || children[m].inside_without_chain(p, below))
+                    != self.inverse
+            }
+            ObjKind::Csg {
+                op: CsgOp::Union | CsgOp::Merge,
+                children,
+                ..
+            } => {
+                children.iter().any(|c| {
+                    if c as *const Object as usize == next {
+                        c.inside_without_chain(p, below)
+                    } else {
+                        // Members not holding the leaf: inside_without is inside.
+                        c.inside(p)
+                    }
+                }) != self.inverse
+            }
+            _ => false,
         }
     }
 
@@ -324,4 +471,35 @@ impl Object {
         }
         &self.texture
     }
+}
+
+/// A union's nearest crossing through its index, exactly as the scan over its members in order
+/// finds it: the nearest, and of crossings at the same distance the earliest member's (the scan
+/// keeps a crossing only when strictly nearer than the best so far).
+fn union_first_hit<'a>(
+    children: &'a [Object],
+    ix: &ChildIndex,
+    ray: &Ray,
+    tmax: f64,
+    s: &mut Scratch<'a>,
+) -> Option<SurfaceHit<'a>> {
+    let inv_dir = ray.dir.recip();
+    let mut best: Option<(usize, SurfaceHit<'a>)> = None;
+    ix.traverse(ray, tmax, |i, t| {
+        // An earlier member than the best so far also wins at the same distance.
+        let limit = match &best {
+            Some((bi, h)) if i < *bi => h.t.next_up(),
+            Some((_, h)) => h.t,
+            None => tmax,
+        };
+        let c = ix.leaf(children, i);
+        if c.bounds.hit(ray.origin, inv_dir, limit).is_none() {
+            return;
+        }
+        if let Some(h) = c.first_hit(ray, limit, s) {
+            *t = h.t;
+            best = Some((i, h));
+        }
+    });
+    best.map(|(_, h)| h)
 }

@@ -1,0 +1,364 @@
+//! An acceleration index over the members of one CSG node (union, merge, intersection,
+//! difference), so a ray or a point meets only the members near it instead of all of them.
+//!
+//! POV-Ray splits unions into its global bounding hierarchy (`split_union`). lancer keeps the
+//! CSG tree and gives each large node its own BVH instead: the scene's top-level hierarchy stays
+//! the one built over top-level objects, and every query below returns exactly what a scan of
+//! the members in order returns (same nearest hit, ties to the earlier member, crossings listed
+//! in member order), so pictures do not change by a single bit whatever the index visits first.
+
+use crate::geom::bvh::Bvh;
+use crate::math::{Aabb, DVec3, Ray};
+use crate::scene::desc::CsgOp;
+use crate::scene::object::{ObjKind, Object};
+
+/// Below this many members a plain scan with a box test per member is as fast.
+pub const MIN_MEMBERS: usize = 8;
+
+/// The members a node's index covers. A union's members that are themselves unions (without
+/// `clipped_by` or `inverse`) are opened, recursively, as POV-Ray's `split_union` does: their
+/// members are the union's leaves, in depth-first order. That order is the scan's, so nearest
+/// hits, ties and crossing lists come out as from the nested scans. Other nodes index their
+/// direct members.
+pub struct ChildIndex {
+    /// Over the leaves with finite, non-empty boxes; primitive i is leaf i.
+    bvh: Bvh,
+    /// Leaves with infinite, empty or NaN boxes, which every query looks at (as the scan did).
+    others: Vec<u32>,
+    /// Leaf i is reached from the node's members by the member numbers
+    /// `steps[starts[i]..starts[i + 1]]`; both are empty when every leaf is a direct member.
+    steps: Vec<u32>,
+    starts: Vec<u32>,
+}
+
+fn indexed(b: &Aabb) -> bool {
+    b.is_finite() && !b.is_empty()
+}
+
+/// The box a leaf is indexed by: its bounds, or for an unbounded one (a clipped quartic) the
+/// finite box its planes and clipping give, if any. The index's boxes only pick the leaves to
+/// ask, so a tighter one changes no answer.
+fn leaf_box(o: &Object) -> Aabb {
+    if indexed(&o.bounds) {
+        return o.bounds;
+    }
+    crate::scene::cull::object_cull(o)
+        .filter(indexed)
+        .unwrap_or(o.bounds)
+}
+
+/// A union whose members can stand in for it in every query of an enclosing union.
+fn opens(o: &Object) -> bool {
+    matches!(
+        o.kind,
+        ObjKind::Csg {
+            op: CsgOp::Union,
+            ..
+        }
+    ) && o.clip.is_empty()
+        && !o.inverse
+}
+
+fn members(o: &Object) -> &[Object] {
+    match &o.kind {
+        ObjKind::Csg { children, .. } => children,
+        ObjKind::Shape(_) => &[],
+    }
+}
+
+/// Gives every CSG node of the tree with enough leaves its index, except unions opened by an
+/// enclosing union's index: queries reach their members through that one (`inside_without`,
+/// which walks the tree, finds them without an index and scans).
+pub fn attach(o: &mut Object, opened: bool) {
+    for c in &mut o.clip {
+        attach(c, false);
+    }
+    let ObjKind::Csg {
+        op,
+        children,
+        index,
+        cull,
+    } = &mut o.kind
+    else {
+        return;
+    };
+    *cull = crate::scene::cull::cull_box(*op, children, &o.bounds).map(Box::new);
+    let mine = if opened {
+        None
+    } else {
+        ChildIndex::build(*op, children)
+    };
+    let opening = *op == CsgOp::Union && (opened || mine.is_some());
+    for c in children.iter_mut() {
+        let open = opening && opens(c);
+        attach(c, open);
+    }
+    *index = mine;
+}
+
+impl ChildIndex {
+    fn build(op: CsgOp, children: &[Object]) -> Option<Box<ChildIndex>> {
+        let mut boxes = Vec::new();
+        let (mut steps, mut starts) = (Vec::new(), Vec::new());
+        let mut deep = false;
+        if op == CsgOp::Union {
+            fn walk(
+                objs: &[Object],
+                path: &mut Vec<u32>,
+                boxes: &mut Vec<Aabb>,
+                steps: &mut Vec<u32>,
+                starts: &mut Vec<u32>,
+            ) {
+                for (k, c) in objs.iter().enumerate() {
+                    path.push(k as u32);
+                    if opens(c) {
+                        walk(members(c), path, boxes, steps, starts);
+                    } else {
+                        starts.push(steps.len() as u32);
+                        steps.extend_from_slice(path);
+                        boxes.push(leaf_box(c));
+                    }
+                    path.pop();
+                }
+            }
+            walk(
+                children,
+                &mut Vec::new(),
+                &mut boxes,
+                &mut steps,
+                &mut starts,
+            );
+            starts.push(steps.len() as u32);
+            deep = steps.len() != boxes.len();
+        } else {
+            boxes.extend(children.iter().map(leaf_box));
+        }
+        if boxes.len() < MIN_MEMBERS {
+            return None;
+        }
+        if !deep {
+            steps = Vec::new();
+            starts = Vec::new();
+        }
+        let others = (0..boxes.len() as u32)
+            .filter(|&i| !indexed(&boxes[i as usize]))
+            .collect();
+        for b in &mut boxes {
+            if !indexed(b) {
+                *b = Aabb::EMPTY;
+            }
+        }
+        Some(Box::new(ChildIndex {
+            bvh: Bvh::build(&boxes),
+            others,
+            steps,
+            starts,
+        }))
+    }
+
+    /// Leaf `i` of the node whose members are `children`.
+    #[inline]
+    pub fn leaf<'a>(&self, children: &'a [Object], i: usize) -> &'a Object {
+        if self.starts.is_empty() {
+            return &children[i];
+        }
+        let path = &self.steps[self.starts[i] as usize..self.starts[i + 1] as usize];
+        let mut o = &children[path[0] as usize];
+        for &k in &path[1..] {
+            o = &members(o)[k as usize];
+        }
+        o
+    }
+
+    /// The member that leaf `i` is or belongs to.
+    #[inline]
+    pub fn member_of(&self, i: usize) -> usize {
+        if self.starts.is_empty() {
+            i
+        } else {
+            self.steps[self.starts[i] as usize] as usize
+        }
+    }
+
+    /// Leaves whose box the ray may cross within (0, tmax], as `f(leaf, &mut tmax)`, which
+    /// may lower `tmax` (inclusive: a leaf whose box starts exactly at `tmax` is still
+    /// offered, so ties can be settled by leaf order).
+    pub fn traverse(&self, ray: &Ray, tmax: f64, mut f: impl FnMut(usize, &mut f64)) {
+        let mut t = tmax;
+        for &i in &self.others {
+            f(i as usize, &mut t);
+        }
+        self.bvh.traverse(ray, t, |i, t| {
+            f(i, t);
+            false
+        });
+    }
+
+    /// Like `traverse` but stopping when `f` returns true.
+    pub fn any(&self, ray: &Ray, tmax: f64, mut f: impl FnMut(usize) -> bool) -> bool {
+        if self.others.iter().any(|&i| f(i as usize)) {
+            return true;
+        }
+        let mut found = false;
+        self.bvh.traverse(ray, tmax, |i, _| {
+            found = f(i);
+            found
+        });
+        found
+    }
+
+    /// Appends to `out` the leaves whose box the ray may cross within (0, tmax), in leaf
+    /// order (a superset: the caller applies its own box test).
+    pub fn candidates(&self, ray: &Ray, tmax: f64, out: &mut Vec<u32>) {
+        let start = out.len();
+        out.extend_from_slice(&self.others);
+        self.bvh.traverse(ray, tmax, |i, _| {
+            out.push(i as u32);
+            false
+        });
+        out[start..].sort_unstable();
+    }
+
+    /// Whether `f` holds for some leaf whose box may contain `p`.
+    pub fn any_at(&self, p: DVec3, mut f: impl FnMut(usize) -> bool) -> bool {
+        if self.others.iter().any(|&i| f(i as usize)) {
+            return true;
+        }
+        let mut found = false;
+        self.bvh.visit_point(p, |i| {
+            found = f(i);
+            found
+        });
+        found
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::geom::test_rng::Lcg;
+    use crate::math::Ray;
+    use crate::scene::build::build;
+    use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
+    use crate::sdl::{ParseOptions, Parser};
+
+    /// CSG nodes of many members, with exactly coincident surfaces (ties), unbounded and
+    /// inverted members, nested nodes and clipping.
+    const SCENE: &str = r#"
+        #declare R = seed(3);
+        #macro Parts()
+          #local I = 0;
+          #while (I < 30)
+            #local C = <rand(R), rand(R), rand(R)> * 6 - 3;
+            #if (mod(I, 3) = 0)
+              box { C - 1, C + 1 }
+              box { C - 1, C + 1 pigment { rgb 1 } }
+            #else
+              sphere { C, 0.3 + rand(R) }
+            #end
+            #local I = I + 1;
+          #end
+          plane { y, -2.5 }
+          sphere { 0, 2.5 inverse }
+          union { sphere { <1, 1, 1>, 1 } sphere { <1, 1, 1>, 1 } }
+          union { box { -1, 1 } union { box { -1, 1 } sphere { 0, 1.2 } } inverse }
+          union { box { -1, 1 } union { box { -1, 1 } sphere { 0, 1.2 } } clipped_by { plane { x, 0.5 } } }
+        #end
+        union { Parts() union { Parts() } union { union { Parts() } } }
+        union { Parts() }
+        merge { Parts() }
+        difference { box { -3, 3 } Parts() }
+        intersection {
+          #local I = 0;
+          #while (I < 12)
+            sphere { <rand(R), rand(R), rand(R)> - 0.5, 2 + rand(R) }
+            #local I = I + 1;
+          #end
+          box { -2, 2 }
+          plane { x, 1 }
+        }
+        union { Parts() clipped_by { sphere { 0, 3 } } }
+    "#;
+
+    fn scene() -> crate::scene::build::Scene {
+        // Nested unions, opened into their parent's index.
+        let mut p = Parser::new(ParseOptions::default());
+        p.parse_str("t.pov", SCENE)
+            .map_err(|e| e.message.clone())
+            .unwrap();
+        build(&p.scene, 64, 48).scene
+    }
+
+    fn strip(o: &mut Object) {
+        if let ObjKind::Csg {
+            children,
+            index,
+            cull,
+            ..
+        } = &mut o.kind
+        {
+            *index = None;
+            *cull = None;
+            children.iter_mut().for_each(strip);
+        }
+    }
+
+    fn ordinal(root: &Object, leaf: &Object) -> Option<usize> {
+        fn walk(o: &Object, leaf: &Object, n: &mut usize) -> bool {
+            if std::ptr::eq(o, leaf) {
+                return true;
+            }
+            *n += 1;
+            let kids = match &o.kind {
+                ObjKind::Csg { children, .. } => &children[..],
+                ObjKind::Shape(_) => &[],
+            };
+            kids.iter().chain(&o.clip).any(|c| walk(c, leaf, n))
+        }
+        let mut n = 0;
+        walk(root, leaf, &mut n).then_some(n)
+    }
+
+    fn key(h: &SurfaceHit) -> (u64, usize, bool) {
+        (h.t.to_bits(), h.obj as *const Object as usize, h.flip)
+    }
+
+    /// Every query answers as the member scan does, bit for bit and in the same order.
+    #[test]
+    fn index_answers_as_the_scan() {
+        let indexed = scene();
+        let mut scanned = scene();
+        scanned.objects.iter_mut().for_each(strip);
+        assert!(indexed
+            .objects
+            .iter()
+            .all(|o| matches!(&o.kind, ObjKind::Csg { index: Some(_), .. })));
+        let mut rng = Lcg(11);
+        let (mut sa, mut sb) = (Scratch::default(), Scratch::default());
+        for (a, b) in indexed.objects.iter().zip(&scanned.objects) {
+            let mut hits = 0;
+            for _ in 0..3000 {
+                let ray = Ray::new(rng.vec(14.0), rng.vec(2.0));
+                let tmax = if rng.next() < 0.3 { 5.0 } else { f64::INFINITY };
+                let ha = a.first_hit(&ray, tmax, &mut sa);
+                let hb = b.first_hit(&ray, tmax, &mut sb);
+                // The two scenes hold the same leaves: compare them by their place in the tree.
+                let off = |h: Option<SurfaceHit>, root: &Object| {
+                    h.map(|h| (key(&h).0, ordinal(root, h.obj), h.flip))
+                };
+                assert_eq!(off(ha, a), off(hb, b));
+                hits += ha.is_some() as usize;
+                assert_eq!(a.any_hit(&ray, tmax, &mut sa), hb.is_some());
+                a.all_hits(&ray, tmax, &mut sa);
+                b.all_hits(&ray, tmax, &mut sb);
+                let la: Vec<_> = sa.surface.iter().map(|h| (h.t.to_bits(), h.flip)).collect();
+                let lb: Vec<_> = sb.surface.iter().map(|h| (h.t.to_bits(), h.flip)).collect();
+                assert_eq!(la, lb);
+                sa.surface.clear();
+                sb.surface.clear();
+                let p = rng.vec(8.0);
+                assert_eq!(a.inside(p), b.inside(p));
+            }
+            assert!(hits > 10, "{hits}");
+        }
+    }
+}

@@ -1,0 +1,210 @@
+//! Tight boxes for CSG intersections (and differences of them) that a box per member cannot
+//! give: a polyhedron cut from rotated planes (shapes2.inc's dodecahedron, say) has members
+//! that are all unbounded, so its `bounds` stay infinite and every ray would test every face.
+//!
+//! The box is the bounding box of the polyhedron cut by the members' planes and the finite
+//! members' boxes (its vertices, from every three planes), padded. It is only a test a ray or a
+//! point must pass before the usual work: it never changes an answer (a crossing of an
+//! intersection lies on one member and inside all the others, so inside every half-space), and
+//! it leaves `bounds`, and so the scene's BVH, as they were.
+
+use crate::math::{Aabb, DVec3};
+use crate::scene::desc::CsgOp;
+use crate::scene::object::{ObjKind, Object};
+
+/// Far beyond any scene: a polyhedron reaching this far is open on that side.
+const FAR: f64 = 1e9;
+/// More half-spaces than this and the vertex search (cubic in their number) is not tried.
+const MAX_PLANES: usize = 48;
+
+/// A box holding every crossing of a top-level object whose `bounds` are not finite, from its
+/// own planes and slabs and its clipping objects' (a crossing must lie inside all of them);
+/// `None` when nothing finite comes of it. Not for inverted objects (their solid is outside).
+pub fn object_cull(o: &Object) -> Option<Aabb> {
+    if o.inverse {
+        return None;
+    }
+    let mut planes = Vec::new();
+    half_spaces(o, &mut planes);
+    for c in &o.clip {
+        half_spaces(c, &mut planes);
+    }
+    let mut b = polyhedron_box(&planes)?;
+    if let ObjKind::Csg { cull: Some(c), .. } = &o.kind {
+        b = b.intersection(c);
+    }
+    let b = b.intersection(&o.bounds);
+    (b.is_finite() || b.min.is_finite() || b.max.is_finite()).then_some(b)
+}
+
+/// The tight box of a CSG node, when it is finite on some side and tighter than `bounds`.
+pub fn cull_box(op: CsgOp, children: &[Object], bounds: &Aabb) -> Option<Aabb> {
+    let b = match op {
+        CsgOp::Intersection => {
+            let mut planes = Vec::new();
+            for c in children {
+                half_spaces(c, &mut planes);
+            }
+            polyhedron_box(&planes)?
+        }
+        // A difference lies inside its first member.
+        CsgOp::Difference => member_box(&children[0])?,
+        CsgOp::Union | CsgOp::Merge => return None,
+    };
+    let b = b.intersection(bounds);
+    (b.min.cmpgt(bounds.min).any() || b.max.cmplt(bounds.max).any()).then_some(b)
+}
+
+/// A box holding an object's solid (before `inverse`), from its own bounds or planes.
+fn member_box(o: &Object) -> Option<Aabb> {
+    if o.inverse {
+        return None;
+    }
+    let mut planes = Vec::new();
+    half_spaces(o, &mut planes);
+    polyhedron_box(&planes)
+}
+
+/// Half-spaces n·p <= d holding the object's solid: a plane's own, its box's faces, those of
+/// a nested intersection's members.
+fn half_spaces(o: &Object, out: &mut Vec<(DVec3, f64)>) {
+    if o.bounds.is_finite() && !o.bounds.is_empty() {
+        let (lo, hi) = (o.bounds.min, o.bounds.max);
+        for (axis, n) in [DVec3::X, DVec3::Y, DVec3::Z].into_iter().enumerate() {
+            out.push((n, hi[axis]));
+            out.push((-n, -lo[axis]));
+        }
+        return;
+    }
+    match &o.kind {
+        ObjKind::Shape(s) => {
+            // In the shape's space: its own half-space, or the finite sides of its slabs
+            // (these only for a solid that is not inverted).
+            let mut local = Vec::new();
+            if let Some(h) = s.half_space() {
+                local.push(if o.inverse { (-h.0, -h.1) } else { h });
+            } else if !o.inverse {
+                let b = s.slab_bounds();
+                for (axis, n) in [DVec3::X, DVec3::Y, DVec3::Z].into_iter().enumerate() {
+                    if b.max[axis].is_finite() && b.min[axis].is_finite() {
+                        local.push((n, b.max[axis]));
+                        local.push((-n, -b.min[axis]));
+                    }
+                }
+            }
+            for (n, d) in local {
+                let (n, d) = match &o.transform {
+                    Some(t) => (t.normal(n), d - n.dot(t.inv_point(DVec3::ZERO))),
+                    None => (n, d),
+                };
+                if n.is_finite() && d.is_finite() && n != DVec3::ZERO {
+                    out.push((n, d));
+                }
+            }
+        }
+        ObjKind::Csg {
+            op: CsgOp::Intersection,
+            children,
+            ..
+        } if !o.inverse => children.iter().for_each(|c| half_spaces(c, out)),
+        _ => {}
+    }
+}
+
+/// The bounding box of {p : n·p <= d for every half-space}, padded; `None` when it cannot be
+/// found (too many planes, nothing finite, no vertex).
+fn polyhedron_box(planes: &[(DVec3, f64)]) -> Option<Aabb> {
+    if planes.is_empty() || planes.len() > MAX_PLANES {
+        return None;
+    }
+    // Normalised, so one tolerance fits every plane; a far cube closes open polyhedra.
+    let mut hs: Vec<(DVec3, f64)> = planes
+        .iter()
+        .map(|&(n, d)| {
+            let l = n.length();
+            (n / l, d / l)
+        })
+        .collect();
+    for n in [DVec3::X, DVec3::Y, DVec3::Z] {
+        hs.push((n, FAR));
+        hs.push((-n, FAR));
+    }
+    let scale = hs[..planes.len()]
+        .iter()
+        .map(|h| h.1.abs())
+        .fold(1.0, f64::max);
+    let tol = 1e-9 * scale;
+    let mut b = Aabb::EMPTY;
+    let m = hs.len();
+    for i in 0..m {
+        for j in i + 1..m {
+            let nij = hs[i].0.cross(hs[j].0);
+            for k in j + 1..m {
+                let det = nij.dot(hs[k].0);
+                if det.abs() < 1e-12 {
+                    continue;
+                }
+                // Cramer's rule for the point on all three planes.
+                let v = (hs[j].0.cross(hs[k].0) * hs[i].1
+                    + hs[k].0.cross(hs[i].0) * hs[j].1
+                    + nij * hs[k].1)
+                    / det;
+                if v.is_finite() && hs.iter().all(|&(n, d)| n.dot(v) <= d + tol) {
+                    b = b.grow(v);
+                }
+            }
+        }
+    }
+    if b.is_empty() {
+        return None;
+    }
+    let pad = DVec3::splat(1e-6 * scale) + (b.max - b.min) * 1e-6;
+    let (mut lo, mut hi) = (b.min - pad, b.max + pad);
+    // A side reaching the far cube is open.
+    for a in 0..3 {
+        if lo[a] < -0.5 * FAR {
+            lo[a] = f64::NEG_INFINITY;
+        }
+        if hi[a] > 0.5 * FAR {
+            hi[a] = f64::INFINITY;
+        }
+    }
+    Some(Aabb::new(lo, hi))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cube_and_open_slab() {
+        let mut planes = Vec::new();
+        for n in [DVec3::X, DVec3::Y, DVec3::Z] {
+            planes.push((n, 1.0));
+            planes.push((-n, 1.0));
+        }
+        let b = polyhedron_box(&planes).unwrap();
+        assert!((b.max - DVec3::ONE).abs().max_element() < 1e-5);
+        assert!(b.contains(DVec3::ONE) && b.contains(-DVec3::ONE));
+        // Only x is closed.
+        let b = polyhedron_box(&planes[..2]).unwrap();
+        assert!(b.max.x < 1.1 && b.min.x > -1.1);
+        assert!(b.max.y == f64::INFINITY && b.min.z == f64::NEG_INFINITY);
+        // Empty: x <= -1 and x >= 1.
+        assert!(polyhedron_box(&[(DVec3::X, -1.0), (-DVec3::X, -1.0)]).is_none());
+    }
+
+    #[test]
+    fn tetrahedron_from_rotated_planes() {
+        // x, y, z >= 0 and x + y + z <= 1.
+        let planes = [
+            (-DVec3::X, 0.0),
+            (-DVec3::Y, 0.0),
+            (-DVec3::Z, 0.0),
+            (DVec3::ONE, 1.0),
+        ];
+        let b = polyhedron_box(&planes).unwrap();
+        assert!((b.max - DVec3::ONE).abs().max_element() < 1e-5);
+        assert!(b.min.abs().max_element() < 1e-5);
+    }
+}
