@@ -376,3 +376,16 @@ fn call_arguments_read_comparisons_only_inside_their_own_parentheses() {
     let s = parse("#declare A = max((1 > 0), 2); sphere { 0, A }");
     assert_eq!(radii(&s), vec![2.0]);
 }
+
+#[test]
+fn macro_value_ending_inside_an_if_takes_an_operator() {
+    // arrays.inc's Rand_Array_Item yields its element inside `#if ... #else ... #end`;
+    // advanced/isocacti.pov multiplies it: `pigment { Rand_Array_Item(A, S)*RRand(...) }`.
+    let s = parse(
+        "#declare Arr = array[2] { 0.5, 2 }
+         #macro Item(A) #if (1) A[1] #else A[0] #end #end
+         #macro Half() #if (0) 4 #else 0.5 #end #end
+         sphere { 0, Item(Arr)*Half() + 1 }",
+    );
+    assert_eq!(radii(&s), vec![2.0]);
+}

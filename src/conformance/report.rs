@@ -11,6 +11,17 @@ use super::{Class, SceneResult};
 pub fn missing_keywords(stderr: &str) -> Vec<String> {
     let mut out: Vec<String> = Vec::new();
     for line in stderr.lines() {
+        // Features random in POV-Ray itself, which no renderer can match pixel for pixel.
+        if let Some(at) = line.find(" is random in POV-Ray") {
+            let head = line[..at].trim_end().trim_end_matches('\'');
+            if let Some(q) = head.rfind('\'') {
+                let kw = format!("{} (random in POV-Ray)", &head[q + 1..]);
+                if !out.contains(&kw) {
+                    out.push(kw);
+                }
+            }
+            continue;
+        }
         let Some(at) = line.find(" is not supported") else {
             continue;
         };
@@ -337,10 +348,17 @@ mod tests {
                    warning: 'normal (surface perturbation)' is not supported by lancer yet\n\
                    error: #switch is not supported by lancer yet\n\
                    error: the function vturbulence is not supported by lancer yet\n\
-                   warning: 'media' is not supported by lancer yet and is ignored\n";
+                   warning: 'media' is not supported by lancer yet and is ignored\n\
+                   warning: 'crand' is random in POV-Ray: lancer's graininess differs\n";
         assert_eq!(
             missing_keywords(err),
-            vec!["media", "normal", "#switch", "vturbulence"]
+            vec![
+                "media",
+                "normal",
+                "#switch",
+                "vturbulence",
+                "crand (random in POV-Ray)"
+            ]
         );
     }
 

@@ -5,7 +5,7 @@
 use std::f64::consts::PI;
 
 use crate::math::{DVec3, Ray};
-use crate::scene::desc::{CameraDesc, Projection};
+use crate::scene::desc::{CameraDesc, Normal, Projection};
 
 #[derive(Clone, Debug)]
 pub struct Camera {
@@ -21,6 +21,8 @@ pub struct Camera {
     v_angle: f64,
     width: f64,
     height: f64,
+    /// `normal { ... }` in the camera: bends every ray.
+    normal: Option<Normal>,
 }
 
 impl Camera {
@@ -88,12 +90,31 @@ impl Camera {
             up: t.vector(up),
             width: width as f64,
             height: height as f64,
+            normal: d
+                .normal
+                .clone()
+                .filter(|n| super::normal::perturbs(Some(n))),
         }
     }
 
     /// Ray through image position (px, py) in pixels from the top-left corner; pixel centres
     /// are at +0.5. None where the projection shows nothing (outside a fisheye's circle).
     pub fn ray(&self, px: f64, py: f64) -> Option<Ray> {
+        let ray = self.straight_ray(px, py)?;
+        let Some(n) = &self.normal else {
+            return Some(ray);
+        };
+        // The pattern is evaluated at the ray's direction as built from direction, right and up
+        // (not normalised; measured: an onion normal rings around the image centre), and
+        // perturbs the unit direction.
+        let d = ray.dir.normalize_or(DVec3::Z);
+        Some(Ray::new(
+            ray.origin,
+            super::normal::perturb(n, ray.dir - self.direction, d),
+        ))
+    }
+
+    fn straight_ray(&self, px: f64, py: f64) -> Option<Ray> {
         let dx = px / self.width - 0.5;
         let dy = 0.5 - py / self.height;
         if self.orthographic {

@@ -8,6 +8,8 @@ pub mod band;
 pub mod camera;
 mod fog;
 pub mod noise;
+mod noise_data;
+pub mod normal;
 pub mod pattern;
 pub mod pigment;
 mod shadow;

@@ -3,7 +3,7 @@
 //!
 //! Order, as POV-Ray 3.7 does it: warps from the last written to the first, then classic
 //! turbulence (always innermost), then the pattern's function, then frequency and phase
-//! (`fmod(v·f + phase, 1.00001)`, wrapped to positive; the period just over 1 keeps a value of
+//! (`fmod(v·f + phase, 1.00001)`, plus 1 when negative; the period just over 1 keeps a value of
 //! exactly 1, such as `spherical` at its centre, at the top of the map), then the wave type.
 //! The formulas of the deterministic patterns were measured against the `povray` binary with
 //! 16-bit renders of each pattern on a plane (see tests/probes/pattern_*.pov).
@@ -53,8 +53,8 @@ pub fn warped(pat: &Pattern, p: DVec3) -> DVec3 {
         q = warp::apply(w, q, pat.noise_generator);
     }
     if let Some(t) = &pat.turbulence {
-        // Marble adds its turbulence to the value instead (see `raw`).
-        if !matches!(pat.kind, PatternKind::Marble) {
+        // Marble and wood use their turbulence in their own formulas instead (see `raw`).
+        if !matches!(pat.kind, PatternKind::Marble | PatternKind::Wood) && t.amount != DVec3::ZERO {
             q += t.amount
                 * noise::turbulence_vec(q, t.octaves, t.omega, t.lambda, pat.noise_generator);
         }
@@ -69,7 +69,8 @@ fn shape(pat: &Pattern, v: f64) -> f64 {
     }
     let mut v = (v * pat.frequency + pat.phase) % WRAP;
     if v < 0.0 {
-        v += WRAP;
+        // Measured: gradient x at x = -0.3 gives 0.7, so negatives wrap by 1, not WRAP.
+        v += 1.0;
     }
     if !v.is_finite() {
         v = 0.0;
@@ -133,7 +134,17 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
             });
             q.x + t
         }
-        PatternKind::Wood => (q.x * q.x + q.y * q.y).sqrt(),
+        PatternKind::Wood => match &pat.turbulence {
+            // Measured: with turbulence a and V the vector turbulence at the point, the rings'
+            // x and y are x + sin(2π a.x (x + V.x)) and y + sin(2π a.y (y + V.y)).
+            Some(t) if t.amount != DVec3::ZERO => {
+                let v = noise::turbulence_vec(q, t.octaves, t.omega, t.lambda, gen);
+                let x = q.x + (TAU * t.amount.x * (q.x + v.x)).sin();
+                let y = q.y + (TAU * t.amount.y * (q.y + v.y)).sin();
+                (x * x + y * y).sqrt()
+            }
+            _ => (q.x * q.x + q.y * q.y).sqrt(),
+        },
         PatternKind::Spiral1(arms) => {
             let r = (q.x * q.x + q.y * q.y).sqrt();
             if r == 0.0 {
@@ -143,24 +154,15 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
             }
         }
         PatternKind::Bozo | PatternKind::Spotted => noise::noise(q, gen),
-        PatternKind::Granite => {
-            // A 1/f sum of the noise's distance from its middle over six octaves.
-            let mut sum = 0.0;
-            let mut f = 1.0;
-            for _ in 0..6 {
-                sum += (0.5 - noise::noise(q * (4.0 * f), gen)).abs() / f;
-                f *= 2.0;
-            }
-            // Scaled to POV-Ray's spread (mean 0.40, deviation 0.16 on a plane).
-            (2.1 * sum).min(1.0)
-        }
+        PatternKind::Granite => noise::granite(q, gen),
         PatternKind::Agate { turb } => {
-            let t = noise::turbulence(q, 7, 0.5, 2.0, gen);
-            let v = 0.5 + 0.5 * (TAU * (q.z * 0.5 + turb * 1.6 * t)).sin();
-            v.clamp(0.0, 1.0)
+            // Measured: (1/2 + sin(2π(1.1 z + 1.3 agate_turb T))/2)^0.77, T the scalar
+            // turbulence with the pattern's octaves, omega and lambda.
+            let t = pat.turbulence.unwrap_or_default();
+            let t = noise::turbulence(q, t.octaves, t.omega, t.lambda, gen);
+            (0.5 + 0.5 * (TAU * (1.1 * q.z + 1.3 * turb * t)).sin()).powf(0.77)
         }
-        // Scaled to POV-Ray's spread (mean 0.51, deviation 0.13 on a plane).
-        PatternKind::Wrinkles => (0.2 + 0.8 * noise::turbulence(q, 10, 0.5, 2.0, gen)).min(1.0),
+        PatternKind::Wrinkles => noise::wrinkles(q, gen),
         PatternKind::Dents => noise::noise(q, gen).powi(3),
         PatternKind::Ripples | PatternKind::Waves => waves(pat, q),
         PatternKind::Crackle {
@@ -324,26 +326,36 @@ fn brick(q: DVec3, size: DVec3, mortar: f64) -> usize {
     (!in_mortar) as usize
 }
 
-/// Ripples and waves: circular waves from ten fixed centres in the unit cube.
+/// POV-Ray's ten wave sources (points on the unit sphere) that ripples and waves spread from,
+/// with each source's frequency in waves. Measured by scripts/measure_waves.py: with
+/// `number_of_waves N` the pigment adds source N, whose own field (N·v_N − (N−1)·v_(N−1)) fits
+/// sin(2π·d) for ripples and (0.4/f)·sin(2π·f·d) for waves with rms error below 1e-4.
+pub const WAVE_SOURCES: [(DVec3, f64); 10] = [
+    (DVec3::new(-0.60437, 0.49205, -0.62658), 0.91912),
+    (DVec3::new(-0.55258, -0.24607, -0.79631), 0.96004),
+    (DVec3::new(-0.44454, 0.62333, 0.64330), 0.43317),
+    (DVec3::new(0.49659, 0.66894, 0.55309), 0.70930),
+    (DVec3::new(-0.06437, -0.80595, -0.58848), 0.68919),
+    (DVec3::new(0.24619, -0.91456, -0.32090), 0.99144),
+    (DVec3::new(-0.66610, -0.59187, -0.45387), 0.78297),
+    (DVec3::new(-0.52050, -0.38602, -0.76162), 0.40067),
+    (DVec3::new(0.13794, -0.70465, -0.69602), 0.22967),
+    (DVec3::new(0.56490, 0.72204, -0.39943), 0.16851),
+];
+
+/// Ripples and waves: the mean of circular waves from the ten sources. Frequency and phase
+/// act inside the waves and then once more on the value like any pattern's (measured: both
+/// match povray's 16-bit values only so).
 fn waves(pat: &Pattern, q: DVec3) -> f64 {
-    const N: u32 = 10;
     let mut sum = 0.0;
-    for i in 0..N {
-        let c = DVec3::new(
-            noise::unit(noise::hash3(i as i64, 0, 0, 11)),
-            noise::unit(noise::hash3(i as i64, 1, 0, 11)),
-            noise::unit(noise::hash3(i as i64, 2, 0, 11)),
-        );
+    for (c, f) in WAVE_SOURCES {
         let d = (q - c).length();
         sum += match pat.kind {
-            // Ripples: sharp-crested rings about a unit apart.
-            PatternKind::Ripples => (TAU * d).sin(),
-            // Waves: broader, rounder swells.
-            _ => (TAU * d).cos(),
+            PatternKind::Ripples => (TAU * (d * pat.frequency + pat.phase)).sin(),
+            _ => 0.4 / f * (TAU * (f * d * pat.frequency + pat.phase)).sin(),
         };
     }
-    // POV-Ray's values of both stay within about 0.13..0.87 (standard deviation 0.12).
-    0.5 + 0.5 * sum / N as f64
+    0.5 + 0.5 * sum / WAVE_SOURCES.len() as f64
 }
 
 /// Crackle: `form` weighs the distances to the nearest three of one random point per unit

@@ -38,7 +38,9 @@ pub fn eval(p: &Pigment, world: DVec3) -> Rgbft {
             }
             pigment_map(map, pattern::value(pat, lp), lp)
         }
-        PigmentKind::ImageMap(im) => image(im, lp),
+        // Turbulence and warps move the point the image is looked up at (measured: warp1.pov).
+        PigmentKind::ImageMap(im, Some(pat)) => image(im, pattern::warped(pat, lp)),
+        PigmentKind::ImageMap(im, None) => image(im, lp),
     }
 }
 

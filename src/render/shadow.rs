@@ -6,7 +6,7 @@ use crate::scene::desc::AreaLightDesc;
 use crate::scene::light::Light;
 
 use super::texture_map;
-use super::trace::{TraceCtx, Tracer};
+use super::trace::{point_seed, TraceCtx, Tracer};
 
 /// Corner samples within this (summed over channels) count as the same light, so an adaptive
 /// area light stops splitting.
@@ -35,7 +35,13 @@ impl<'a> Tracer<'a> {
         }
     }
 
-    fn area_seen(&self, p: DVec3, light: &Light, a: &AreaLightDesc, ctx: &mut TraceCtx<'a>) -> DVec3 {
+    fn area_seen(
+        &self,
+        p: DVec3,
+        light: &Light,
+        a: &AreaLightDesc,
+        ctx: &mut TraceCtx<'a>,
+    ) -> DVec3 {
         let from = (p - light.position).normalize_or_zero();
         let seed = point_seed(p);
         let sample = |i: u32, j: u32, ctx: &mut TraceCtx<'a>| {
@@ -166,10 +172,4 @@ impl<'a> Tracer<'a> {
         });
         att
     }
-}
-
-/// A per-point seed for area-light jitter, so the picture is the same on any thread.
-fn point_seed(p: DVec3) -> u32 {
-    let h = p.x.to_bits() ^ p.y.to_bits().rotate_left(21) ^ p.z.to_bits().rotate_left(42);
-    (h ^ (h >> 32)) as u32
 }

@@ -6,48 +6,67 @@
 //! shading code does the same with the parts `blend` hands it.
 
 use crate::color::Rgbft;
-use crate::math::DVec3;
-use crate::scene::desc::{Finish, Texture, TextureEntries};
+use crate::math::{DVec3, Transform};
+use crate::scene::desc::{Texture, TextureEntries};
 use crate::scene::pattern::PatternKind;
 
 use super::{pattern, pigment};
 
-/// Calls `f(colour, finish, weight)` for each plain texture that `tex` (one layer) is made of
-/// at world point `p`: itself when it is plain, one listed texture for a block pattern, the one
-/// or two `texture_map` entries around the pattern's value (nested maps recursively). The
-/// weights add up to `weight`; `quick` uses quick colours.
+/// Calls `f(colour, texture, space, weight)` for each plain texture that `tex` (one layer) is
+/// made of at world point `p`: itself when it is plain, one listed texture for a block
+/// pattern, the one or two `texture_map` entries around the pattern's value (nested maps
+/// recursively). `space` takes the plain texture's parent space to the world (its normal is
+/// relative to it). The weights add up to `weight`; `quick` uses quick colours.
 pub fn blend(
     tex: &Texture,
     p: DVec3,
     quick: bool,
     weight: f64,
-    f: &mut dyn FnMut(Rgbft, &Finish, f64),
+    f: &mut dyn FnMut(Rgbft, &Texture, &Transform, f64),
+) {
+    blend_in(tex, p, &Transform::IDENTITY, quick, weight, f)
+}
+
+fn blend_in(
+    tex: &Texture,
+    p: DVec3,
+    space: &Transform,
+    quick: bool,
+    weight: f64,
+    f: &mut dyn FnMut(Rgbft, &Texture, &Transform, f64),
 ) {
     let Some(tp) = &tex.pattern else {
         let c = match tex.pigment.quick {
             Some(q) if quick => q,
             _ => pigment::eval(&tex.pigment, p),
         };
-        f(c, &tex.finish, weight);
+        f(c, tex, space, weight);
         return;
     };
-    let lp = if tp.transform.is_identity() {
-        p
+    let (lp, inner);
+    let space = if tp.transform.is_identity() {
+        lp = p;
+        space
     } else {
-        tp.transform.inv_point(p)
+        lp = tp.transform.inv_point(p);
+        inner = tp.transform.then(space);
+        &inner
+    };
+    let blend = |t: &Texture, w: f64, f: &mut dyn FnMut(Rgbft, &Texture, &Transform, f64)| {
+        blend_in(t, lp, space, quick, w, f)
     };
     match &tp.entries {
         TextureEntries::List(items) => {
             let i = pattern::index(&tp.pattern, lp).min(items.len().saturating_sub(1));
             if let Some(t) = items.get(i) {
-                blend(t, lp, quick, weight, f);
+                blend(t, weight, f);
             }
         }
         TextureEntries::Map(map) if matches!(tp.pattern.kind, PatternKind::Average) => {
             let total: f64 = map.iter().map(|e| e.0).sum();
             if total != 0.0 {
                 for (w, t) in map {
-                    blend(t, lp, quick, weight * w / total, f);
+                    blend(t, weight * w / total, f);
                 }
             }
         }
@@ -57,26 +76,26 @@ pub fn blend(
                 return;
             };
             if v <= first.0 {
-                return blend(&first.1, lp, quick, weight, f);
+                return blend(&first.1, weight, f);
             }
             for w in map.windows(2) {
                 let ((va, ta), (vb, tb)) = (&w[0], &w[1]);
                 if v <= *vb {
                     let span = vb - va;
                     if span <= 0.0 {
-                        return blend(tb, lp, quick, weight, f);
+                        return blend(tb, weight, f);
                     }
                     let t = (v - va) / span;
                     if t < 1.0 {
-                        blend(ta, lp, quick, weight * (1.0 - t), f);
+                        blend(ta, weight * (1.0 - t), f);
                     }
                     if t > 0.0 {
-                        blend(tb, lp, quick, weight * t, f);
+                        blend(tb, weight * t, f);
                     }
                     return;
                 }
             }
-            blend(&last.1, lp, quick, weight, f)
+            blend(&last.1, weight, f)
         }
     }
 }
@@ -87,7 +106,7 @@ pub fn color_at(tex: &Texture, p: DVec3, quick: bool) -> Rgbft {
         return pigment::eval(&tex.pigment, p);
     }
     let mut sum = [0.0; 5];
-    blend(tex, p, quick, 1.0, &mut |c, _, w| {
+    blend(tex, p, quick, 1.0, &mut |c, _, _, w| {
         for (s, v) in sum.iter_mut().zip(c.to_array()) {
             *s += v * w;
         }

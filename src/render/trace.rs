@@ -12,7 +12,7 @@ use crate::scene::build::Scene;
 use crate::scene::desc::Interior;
 use crate::scene::object::{Scratch, SurfaceHit};
 
-use super::{pigment, texture_map};
+use super::{normal, pigment, texture_map};
 
 /// Per-thread scratch buffers so tracing allocates nothing per ray.
 pub type TraceCtx<'a> = Scratch<'a>;
@@ -251,7 +251,10 @@ impl<'a> Tracer<'a> {
         }
         // Per hit, not per light or layer.
         let mirror = reflect(dir, nf);
-        self.gather_lights(p, nf, ctx);
+        // A perturbed normal may face lights the surface itself turns away from; POV-Ray
+        // lights them (measured: a light just behind a plane whose normal leans towards it).
+        let bumpy = normal::texture_perturbs(top);
+        self.gather_lights(p, nf, bumpy, ctx);
         let cos_i = (-dir.dot(nf)).clamp(0.0, 1.0);
         let (n1, n2) = if entering {
             (1.0, obj.ior)
@@ -270,12 +273,25 @@ impl<'a> Tracer<'a> {
         let mut refl_tinted = DVec3::ZERO;
         let mut last = Rgbft::BLACK;
         let mut conserve = false;
+        // Reflections off perturbed normals go their own ways: (direction, tint·amount).
+        let mut bent: Vec<(DVec3, DVec3)> = Vec::new();
+        // The first perturbed normal met decides refraction.
+        let mut refract_n: Option<DVec3> = None;
         for tex in top.layers() {
             // A patterned texture is shaded as the plain textures it is made of here, each
             // weighted (texture_map blends); a plain one is itself with weight 1.
             let mut layer_c = [0.0; 5];
-            texture_map::blend(tex, p, q.quick_colors, 1.0, &mut |c, fin, w| {
-                col += through * w * self.layer_light(&c, fin, dir, nf, mirror, ctx);
+            texture_map::blend(tex, p, q.quick_colors, 1.0, &mut |c, part, space, w| {
+                let fin = &part.finish;
+                let (pn, pmirror, pcos) = match &part.normal {
+                    Some(nd) if normal::perturbs(part.normal.as_deref()) => {
+                        let pn = normal::perturb_in(nd, space, p, nf);
+                        refract_n.get_or_insert(pn);
+                        (pn, reflect(dir, pn), (-dir.dot(pn)).clamp(0.0, 1.0))
+                    }
+                    _ => (nf, mirror, cos_i),
+                };
+                col += through * w * self.layer_light(&c, fin, dir, pn, pmirror, ctx);
                 let refl = &fin.reflection;
                 if !refl.is_zero() && q.reflection {
                     // Where a ray leaves an object at a point still inside another object (a
@@ -287,15 +303,21 @@ impl<'a> Tracer<'a> {
                         // The blend factor does not matter; skip the powf on this per-hit path.
                         0.0
                     } else if !refl.fresnel {
-                        (1.0 - cos_i).powf(refl.falloff)
+                        (1.0 - pcos).powf(refl.falloff)
                     } else if entering || !s.inside_other(p, obj) {
-                        fresnel(cos_i, n1, n2)
+                        fresnel(pcos, n1, n2)
                     } else {
                         0.0
                     };
                     let amount = (refl.min + (refl.max - refl.min) * f) * w;
-                    refl_amount += amount;
-                    refl_tinted += amount * (DVec3::ONE + (c.rgb - DVec3::ONE) * refl.metallic);
+                    let tinted = amount * (DVec3::ONE + (c.rgb - DVec3::ONE) * refl.metallic);
+                    if pmirror == mirror {
+                        refl_amount += amount;
+                        refl_tinted += tinted;
+                    } else {
+                        refl_amount += amount;
+                        bent.push((pmirror, tinted));
+                    }
                 }
                 for (l, v) in layer_c.iter_mut().zip(c.to_array()) {
                     *l += v * w;
@@ -310,10 +332,21 @@ impl<'a> Tracer<'a> {
             let w = path.weight * refl_amount.max_element();
             if w > s.adc_bailout {
                 // A reflection stays on the side the ray came from, in its medium.
-                let rc = self
-                    .trace_seen(&Ray::new(p, mirror), path.next(w, false, path.medium), ctx)
-                    .rgb;
-                col += rc * refl_tinted;
+                if refl_tinted != DVec3::ZERO || bent.is_empty() {
+                    let rc = self
+                        .trace_seen(&Ray::new(p, mirror), path.next(w, false, path.medium), ctx)
+                        .rgb;
+                    col += rc * refl_tinted;
+                }
+                for (d, tinted) in bent {
+                    let wb = path.weight * tinted.max_element();
+                    if wb > s.adc_bailout {
+                        let rc = self
+                            .trace_seen(&Ray::new(p, d), path.next(wb, false, path.medium), ctx)
+                            .rgb;
+                        col += rc * tinted;
+                    }
+                }
             }
         }
 
@@ -325,6 +358,10 @@ impl<'a> Tracer<'a> {
             }
             let w = path.weight * tcol.max_element();
             if w > s.adc_bailout {
+                let (nf, cos_i) = match refract_n {
+                    Some(pn) => (pn, (-dir.dot(pn)).clamp(0.0, 1.0)),
+                    None => (nf, cos_i),
+                };
                 let tdir = if n1 == n2 {
                     Some(dir)
                 } else {
@@ -355,18 +392,20 @@ impl<'a> Tracer<'a> {
 }
 
 impl<'a> Tracer<'a> {
-    /// The lights reaching `p` (after shadows) into `ctx.lit`, once per hit for all layers.
-    fn gather_lights(&self, p: DVec3, nf: DVec3, ctx: &mut TraceCtx<'a>) {
+    /// The lights reaching `p` (after shadows) into `ctx.lit`, once per hit for all layers;
+    /// `all` keeps those behind the surface too.
+    fn gather_lights(&self, p: DVec3, nf: DVec3, all: bool, ctx: &mut TraceCtx<'a>) {
         let q = self.quality;
         let mut lit = std::mem::take(&mut ctx.lit);
         lit.clear();
-        for light in &self.scene.lights {
+        let seed = point_seed(p);
+        for (i, light) in self.scene.lights.iter().enumerate() {
             let Some(inc) = light.incidence(p) else {
                 continue;
             };
             let l = inc.l;
             let cos_n = nf.dot(l);
-            if cos_n <= 0.0 {
+            if cos_n <= 0.0 && !all {
                 continue;
             }
             let mut lc = light.color * (light.fade(inc.dist) * inc.beam);
@@ -383,6 +422,7 @@ impl<'a> Tracer<'a> {
                 l,
                 cos_n,
                 shadowless: light.shadowless,
+                grain: grain(seed, i as u32),
             });
         }
         ctx.lit = lit;
@@ -399,7 +439,7 @@ impl<'a> Tracer<'a> {
         mirror: DVec3,
         ctx: &TraceCtx<'a>,
     ) -> DVec3 {
-        let opacity = c.opacity().max(0.0);
+        let opacity = c.opacity();
         let specular_exp = 1.0 / fin.roughness.max(1e-6);
         let mut col = (fin.ambient * self.scene.ambient_light + fin.emission) * c.rgb * opacity;
         // Highlights take the surface colour in proportion to `metallic`.
@@ -407,12 +447,19 @@ impl<'a> Tracer<'a> {
         for lb in &ctx.lit {
             let (lc, l) = (lb.color, lb.l);
             if fin.diffuse > 0.0 {
-                let d = if fin.brilliance == 1.0 {
-                    lb.cos_n
-                } else {
-                    lb.cos_n.powf(fin.brilliance)
-                };
-                col += lc * c.rgb * (fin.diffuse * d * opacity);
+                // The same as lb.cos_n unless the normal was perturbed.
+                let cos_n = nf.dot(l);
+                if cos_n > 0.0 {
+                    let d = if fin.brilliance == 1.0 {
+                        cos_n
+                    } else {
+                        cos_n.powf(fin.brilliance)
+                    };
+                    // crand darkens each light's diffuse term by its own random share
+                    // (measured with povray: independent per light, uniform, ambient untouched).
+                    let grainy = 1.0 - fin.crand * lb.grain;
+                    col += lc * c.rgb * (fin.diffuse * d * opacity * grainy);
+                }
             }
             // POV-Ray 3.7 gives shadowless lights no highlights (tests/probes/shadowless_*).
             if lb.shadowless {
@@ -442,4 +489,24 @@ pub struct LitBy {
     pub l: DVec3,
     pub cos_n: f64,
     pub shadowless: bool,
+    /// Uniform in [0, 1), fixed by the point and the light: `crand`'s random share.
+    pub grain: f64,
+}
+
+/// A seed from a point's exact coordinates, so random-looking choices made there are the
+/// same on every run and for any thread count.
+pub(super) fn point_seed(p: DVec3) -> u32 {
+    let h = p.x.to_bits() ^ p.y.to_bits().rotate_left(21) ^ p.z.to_bits().rotate_left(42);
+    (h ^ (h >> 32)) as u32
+}
+
+/// A well-mixed value in [0, 1) from a point seed and a light's index.
+fn grain(seed: u32, light: u32) -> f64 {
+    let mut h = seed ^ light.wrapping_mul(0x9e37_79b9);
+    h ^= h >> 16;
+    h = h.wrapping_mul(0x7feb_352d);
+    h ^= h >> 15;
+    h = h.wrapping_mul(0x846c_a68b);
+    h ^= h >> 16;
+    (h >> 8) as f64 / (1u32 << 24) as f64
 }

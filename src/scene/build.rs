@@ -57,7 +57,13 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
     let gamma = match (desc.global.assumed_gamma, desc.version) {
         (Some(g), _) => GammaMode::Corrected(if g > 0.0 { g } else { 1.0 }),
         (None, Some(v)) if v < 3.7 => GammaMode::None,
-        (None, _) => {
+        // No `#version` anywhere (an included file's counts) and no `+MV`: povray 3.7 takes the
+        // scene for a pre-3.7 one and leaves gamma alone (measured: tests/probes/no_version).
+        (None, None) => {
+            warnings.push("the scene has no #version directive and sets no assumed_gamma: gamma correction is off, as POV-Ray 3.7 does for pre-3.7 scenes (start the scene with #version 3.7; and set global_settings { assumed_gamma 1.0 })".to_string());
+            GammaMode::None
+        }
+        (None, Some(_)) => {
             warnings.push("the scene sets no assumed_gamma; taking 1.0 as POV-Ray 3.7 does (add global_settings { assumed_gamma 1.0 })".to_string());
             GammaMode::Corrected(1.0)
         }
@@ -181,7 +187,7 @@ impl Ctx {
             PigmentKind::PigmentMap { map, .. } => {
                 map.iter_mut().fold(false, |t, (_, i)| self.pigment(i) | t)
             }
-            PigmentKind::ImageMap(im) => {
+            PigmentKind::ImageMap(im, _) => {
                 let (converted, transparent) = self.image(im);
                 *im = converted;
                 transparent
@@ -251,7 +257,7 @@ impl Ctx {
                 pattern.noise_generator == 0
                     || map.iter().any(|(_, i)| self.pigment_needs_readying(i))
             }
-            PigmentKind::ImageMap(_) => {
+            PigmentKind::ImageMap(..) => {
                 matches!(self.gamma, GammaMode::Corrected(g) if g != 1.0)
             }
         }
@@ -262,6 +268,9 @@ impl Ctx {
         let mut transparent = true;
         let mut layer = Some(t);
         while let Some(l) = layer {
+            if let Some(n) = &mut l.normal {
+                normal_generator(n, self.noise_generator);
+            }
             let mut this = self.pigment(&mut l.pigment);
             if let Some(tp) = &mut l.pattern {
                 if tp.pattern.noise_generator == 0 {
@@ -459,5 +468,34 @@ impl Scene {
     /// judged by their other members).
     pub fn inside_other(&self, p: DVec3, leaf: &Object) -> bool {
         self.objects.iter().any(|o| o.inside_without(p, leaf))
+    }
+}
+
+/// Normal patterns that named no noise generator use the scene's.
+fn normal_generator(n: &mut crate::scene::desc::Normal, gen: u8) {
+    use crate::scene::desc::NormalKind;
+    match &mut n.kind {
+        NormalKind::Pattern { pattern, .. } => {
+            if pattern.noise_generator == 0 {
+                pattern.noise_generator = gen;
+            }
+        }
+        NormalKind::List { pattern, items } => {
+            if pattern.noise_generator == 0 {
+                pattern.noise_generator = gen;
+            }
+            for i in items {
+                normal_generator(i, gen);
+            }
+        }
+        NormalKind::Map { pattern, map } => {
+            if pattern.noise_generator == 0 {
+                pattern.noise_generator = gen;
+            }
+            for (_, i) in map {
+                normal_generator(i, gen);
+            }
+        }
+        NormalKind::Flat | NormalKind::BumpMap(_) | NormalKind::Facets { .. } => {}
     }
 }

@@ -99,6 +99,8 @@ pub struct CameraDesc {
     pub sized: bool,
     /// `angle` written (with or without a value).
     pub angle_given: bool,
+    /// `normal { ... }`: perturbs every camera ray's direction.
+    pub normal: Option<Normal>,
 }
 
 impl Default for CameraDesc {
@@ -117,6 +119,7 @@ impl Default for CameraDesc {
             v_angle: None,
             sized: false,
             angle_given: false,
+            normal: None,
         }
     }
 }
@@ -430,7 +433,7 @@ impl Texture {
             tp.transform = tp.transform.then(t);
         }
         if let Some(n) = &mut self.normal {
-            n.transform = n.transform.then(t);
+            n.apply_transform(t);
         }
         if let Some(u) = &mut self.under {
             u.apply_transform(t);
@@ -496,7 +499,8 @@ pub enum PigmentKind {
         pattern: Box<Pattern>,
         map: Vec<(f64, Pigment)>,
     },
-    ImageMap(Arc<ImageMap>),
+    /// An image, with the pattern that carries its turbulence and warps when it has any.
+    ImageMap(Arc<ImageMap>, Option<Box<Pattern>>),
 }
 
 /// Colour map entries sorted by value, as POV-Ray's `color_map { [v colour] ... }`.
@@ -515,19 +519,84 @@ pub struct ImageMap {
     pub pixels: Vec<Rgbft>,
     /// `use_alpha` (image patterns take their value from the alpha channel).
     pub use_alpha: bool,
+    /// A bump map's `bump_size`, if it gave one.
+    pub bump_size: Option<f64>,
+    /// `use_index`: a bump map's height is the palette index, not the grey.
+    pub use_index: bool,
 }
 
+/// `normal { ... }`: how a texture perturbs the surface normal (evaluation in render::normal).
 #[derive(Clone, Debug)]
 pub struct Normal {
     pub kind: NormalKind,
+    /// The pattern's strength (`bumps 0.5`, `bump_size`), POV-Ray's default 0.5.
     pub amount: f64,
+    /// Pattern space to the parent's space (world for a texture's own normal).
     pub transform: Transform,
+    /// Distance of the sample points of a sampled pattern's slope (`accuracy`, default 0.02).
+    pub accuracy: f64,
+    /// `no_bump_scale`: the bump depth follows the pattern's scaling.
+    pub no_bump_scale: bool,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+impl Normal {
+    pub fn new(kind: NormalKind) -> Normal {
+        Normal {
+            kind,
+            amount: 0.5,
+            transform: Transform::IDENTITY,
+            accuracy: 0.02,
+            no_bump_scale: false,
+        }
+    }
+
+    pub fn apply_transform(&mut self, t: &Transform) {
+        self.transform = self.transform.then(t);
+    }
+}
+
+/// A slope map entry: pattern value, then the height and slope there.
+pub type SlopeMap = Vec<(f64, f64, f64)>;
+
+/// The normal patterns of POV-Ray: the classic bump patterns with formulas of their own, any
+/// other pattern by the slope of its value, lists and maps of whole normals, and image bumps.
+#[derive(Clone, Debug)]
 pub enum NormalKind {
-    /// A normal block lancer parsed but does not perturb with yet (already warned about).
-    Unsupported,
+    /// No pattern given: the surface normal stays as it is.
+    Flat,
+    /// bumps, dents, ripples, waves, wrinkles (their own formulas) or any pattern whose
+    /// value's slope (through the slope map, if any) tilts the normal.
+    Pattern {
+        pattern: Box<Pattern>,
+        special: Special,
+        slope_map: Option<SlopeMap>,
+    },
+    /// A block pattern choosing whole normals (`checker normal {..} normal {..}`).
+    List {
+        pattern: Box<Pattern>,
+        items: Vec<Normal>,
+    },
+    /// `normal_map` (and `average`): the normals around the pattern's value, blended.
+    Map {
+        pattern: Box<Pattern>,
+        map: Vec<(f64, Normal)>,
+    },
+    /// `bump_map { ... }`: an image's grey (or palette index) as a height.
+    BumpMap(Arc<ImageMap>),
+    /// `facets`: flat facets from the cells of a crackle-like lattice (or of `coords`).
+    Facets { coords: f64, size: f64 },
+}
+
+/// Which formula a pattern normal uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Special {
+    /// The pattern's value, sampled around the point.
+    Slope,
+    Bumps,
+    Dents,
+    Ripples,
+    Waves,
+    Wrinkles,
 }
 
 #[derive(Clone, Debug)]
@@ -543,6 +612,8 @@ pub struct Finish {
     pub metallic: f64,
     pub reflection: Reflection,
     pub conserve_energy: bool,
+    /// `crand`: each light's diffuse term is scaled by 1 - crand·u, u uniform in [0, 1).
+    pub crand: f64,
 }
 
 impl Default for Finish {
@@ -559,6 +630,7 @@ impl Default for Finish {
             metallic: 0.0,
             reflection: Reflection::default(),
             conserve_energy: false,
+            crand: 0.0,
         }
     }
 }

@@ -331,8 +331,8 @@ impl Parser {
                 Ok(Value::vec3(m * p))
             }
             "vturbulence" => {
-                // vturbulence(lambda, omega, octaves, point): lancer's turbulence, same kind as
-                // POV-Ray's but not its values (see render::noise).
+                // vturbulence(lambda, omega, octaves, point): POV-Ray's own vector turbulence
+                // (measured, see render::noise and docs/noise.md).
                 let (lambda, omega, octaves) = (fl(self, 0)?, fl(self, 1)?, fl(self, 2)?);
                 let p = ve(self, 3)?;
                 let octaves = (octaves as i64).clamp(1, 10) as u32;

@@ -258,7 +258,7 @@ impl Parser {
                     }
                 }
                 "normal" => {
-                    self.parse_normal_block(t.span)?;
+                    cam.normal = Some(self.parse_normal_block(t.span)?);
                 }
                 "bokeh" => {
                     self.unsupported(k, t.span);

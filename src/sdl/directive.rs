@@ -339,7 +339,15 @@ impl Parser {
                 self.advance();
                 Ok(Value::TextureMap(Box::new(self.parse_texture_map()?)))
             }
-            "normal_map" | "slope_map" | "density_map" | "density" | "media" | "rainbow" => {
+            "normal_map" => {
+                self.advance();
+                Ok(Value::NormalMap(Box::new(self.parse_normal_map()?)))
+            }
+            "slope_map" => {
+                self.advance();
+                Ok(Value::SlopeMap(Box::new(self.parse_slope_map()?)))
+            }
+            "density_map" | "density" | "media" | "rainbow" => {
                 self.advance();
                 self.unsupported(k, t.span);
                 self.skip_block()?;
@@ -366,6 +374,8 @@ impl Parser {
                     | Value::ColorMap(_)
                     | Value::PigmentMap(_)
                     | Value::TextureMap(_)
+                    | Value::NormalMap(_)
+                    | Value::SlopeMap(_)
                     | Value::Material(_)
                     | Value::SkySphere(_)
                     | Value::Fog(_)

@@ -17,6 +17,7 @@ pub mod interior;
 pub mod lexer;
 pub mod limits;
 pub mod mesh2;
+pub mod normal;
 pub mod object;
 pub mod parser;
 pub mod pattern;

@@ -152,7 +152,8 @@ impl Parser {
             }
             "normal" => {
                 let mut tex = self.texture_mut(obj);
-                tex.normal = Some(Box::new(self.parse_normal_block(span)?));
+                let base = tex.normal.take().map(|n| *n);
+                tex.normal = Some(Box::new(self.parse_normal_block_over(base)?));
                 obj.texture = Some(Arc::new(tex));
             }
             "interior" => obj.interior = Some(self.parse_interior_block()?),
@@ -664,12 +665,15 @@ impl Parser {
                             light.area = Some(area);
                         }
                         "adaptive" | "jitter" | "circular" | "orient" => {
-                            let area = light.area.get_or_insert_with(AreaLightDesc::default);
+                            let area = light.area.get_or_insert_default();
                             match &*k {
                                 "adaptive" => {
                                     area.adaptive = Some(self.parse_float()?.max(0.0) as u32)
                                 }
-                                "jitter" => area.jitter = true,
+                                "jitter" => {
+                                    area.jitter = true;
+                                    self.warn(t.span, "'jitter' is random in POV-Ray (its pixels change with the thread count): soft shadow edges have the same grain as povray's but not the same pixels, and are the same for any thread count");
+                                }
                                 "circular" => area.circular = self.optional_bool()?,
                                 _ => area.orient = self.optional_bool()?,
                             }

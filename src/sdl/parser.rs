@@ -723,15 +723,43 @@ impl Parser {
                 Tok::Sym(s) => (t.span, Some(s)),
                 _ => (t.span, None),
             };
+            let directive = matches!(t.tok, Tok::Directive(_));
             self.last_span = span;
-            return Ok(sym);
+            if !directive {
+                return Ok(sym);
+            }
         }
-        Ok(match self.raw_peek()? {
-            Some(Token {
-                tok: Tok::Sym(s), ..
-            }) => Some(s),
-            _ => None,
-        })
+        loop {
+            return Ok(match self.raw_peek()? {
+                Some(Token {
+                    tok: Tok::Sym(s), ..
+                }) => Some(s),
+                // In a macro body, the `#end` or `#else` of a conditional (which only closes it
+                // or skips the untaken branch, never rewinds) is run in place as povray does, so
+                // a macro whose value ends inside `#if ... #end` (arrays.inc's
+                // Rand_Array_Item) can be followed by an operator. Elsewhere a directive ends
+                // the expression first: `#declare A = 1 #end` before a loop rewinds, an
+                // `#include "f" #end` before the file is entered.
+                Some(Token {
+                    tok: Tok::Directive(d),
+                    span,
+                }) if matches!(&*d, "end" | "else" | "elseif") && self.in_macro_if() => {
+                    self.advance();
+                    self.directive(&d, span)?;
+                    continue;
+                }
+                _ => None,
+            });
+        }
+    }
+
+    /// Whether the innermost frame is a macro body inside one of its own `#if` branches.
+    fn in_macro_if(&self) -> bool {
+        let depth = self.frames.len() - 1;
+        self.frames
+            .last()
+            .is_some_and(|f| f.kind == FrameKind::Macro)
+            && matches!(self.conds.last(), Some(Cond::If { frame }) if *frame == depth)
     }
 
     pub(super) fn peek_ident(&mut self) -> PResult<Option<Rc<str>>> {

@@ -5,9 +5,7 @@ use std::sync::Arc;
 
 use crate::color::Rgbft;
 use crate::math::DVec3;
-use crate::scene::desc::{
-    ColorMap, Finish, ImageMap, Normal, NormalKind, Pattern, Pigment, PigmentKind, Reflection,
-};
+use crate::scene::desc::{ColorMap, Finish, ImageMap, Pattern, Pigment, PigmentKind, Reflection};
 use crate::scene::pattern::PatternKind;
 
 use super::lexer::{Sym, Tok};
@@ -299,6 +297,8 @@ impl Parser {
             height: 0,
             pixels: Vec::new(),
             use_alpha: false,
+            bump_size: None,
+            use_index: false,
         };
         let (mut filter_all, mut transmit_all) = (None, None);
         loop {
@@ -329,7 +329,9 @@ impl Parser {
                         self.parse_float()?;
                     }
                     "use_alpha" => map.use_alpha = true,
-                    "use_color" | "use_colour" | "use_index" => {}
+                    "use_color" | "use_colour" => map.use_index = false,
+                    "use_index" => map.use_index = true,
+                    "bump_size" => map.bump_size = Some(self.parse_float()?),
                     _ => {
                         return Err(self.error_at(t.span, format!("unexpected '{k}' in image_map")))
                     }
@@ -416,8 +418,8 @@ impl Parser {
                 }
                 "conserve_energy" => f.conserve_energy = self.optional_bool()?,
                 "crand" => {
-                    self.unsupported(k, t.span);
-                    self.parse_float()?;
+                    f.crand = self.parse_float()?;
+                    self.warn(t.span, "'crand' is random in POV-Ray (its pixels change with the thread count): lancer's graininess has the same distribution (measured) but not the same pixels, and is the same for any thread count");
                 }
                 "irid" | "subsurface" => {
                     self.unsupported(k, t.span);
@@ -492,17 +494,6 @@ impl Parser {
         f.reflection = r;
         Ok(())
     }
-
-    /// Normal blocks are read past: lancer does not perturb normals yet.
-    pub(super) fn parse_normal_block(&mut self, span: Span) -> PResult<Normal> {
-        self.unsupported("normal (surface perturbation)", span);
-        self.skip_block()?;
-        Ok(Normal {
-            kind: NormalKind::Unsupported,
-            amount: 0.0,
-            transform: Default::default(),
-        })
-    }
 }
 
 /// A pigment's pattern and the rest, so a body can modify a declared pigment.
@@ -512,7 +503,7 @@ fn split_pigment(kind: PigmentKind) -> (Option<Pattern>, Form) {
         PigmentKind::Mapped { pattern, map } => (Some(*pattern), Form::Colors(Some(map))),
         PigmentKind::List { pattern, items } => (Some(*pattern), Form::Items(items)),
         PigmentKind::PigmentMap { pattern, map } => (Some(*pattern), Form::Pigments(map)),
-        PigmentKind::ImageMap(im) => (None, Form::Image(im)),
+        PigmentKind::ImageMap(im, pat) => (pat.map(|p| *p), Form::Image(im)),
     }
 }
 
@@ -520,7 +511,7 @@ fn join_pigment(pat: Option<Pattern>, form: Form) -> PigmentKind {
     let Some(pattern) = pat else {
         return match form {
             Form::Solid(c) => PigmentKind::Solid(c),
-            Form::Image(im) => PigmentKind::ImageMap(im),
+            Form::Image(im) => PigmentKind::ImageMap(im, None),
             // A map with no pattern ramps along x, as POV-Ray's default gradient does.
             Form::Colors(map) => PigmentKind::Mapped {
                 pattern: Box::new(Pattern::new(PatternKind::Gradient(DVec3::X))),
@@ -548,7 +539,11 @@ fn join_pigment(pat: Option<Pattern>, form: Form) -> PigmentKind {
         return PigmentKind::List { pattern, items };
     }
     match form {
-        Form::Image(im) => PigmentKind::ImageMap(im),
+        Form::Image(im) => {
+            let warped = pattern.turbulence.is_some_and(|t| t.amount != DVec3::ZERO)
+                || !pattern.warps.is_empty();
+            PigmentKind::ImageMap(im, warped.then_some(pattern))
+        }
         // Only modifiers were given to a plain colour: it stays plain.
         Form::Solid(c) if matches!(pattern.kind, PatternKind::Unsupported) => PigmentKind::Solid(c),
         Form::Pigments(map) => PigmentKind::PigmentMap { pattern, map },

@@ -73,7 +73,10 @@ impl Parser {
             match &**k {
                 "pigment" => tex.pigment = self.parse_pigment_block(Some(tex.pigment.clone()))?,
                 "finish" => tex.finish = self.parse_finish_block(Some(tex.finish.clone()))?,
-                "normal" => tex.normal = Some(Box::new(self.parse_normal_block(t.span)?)),
+                "normal" => {
+                    let base = tex.normal.take().map(|n| *n);
+                    tex.normal = Some(Box::new(self.parse_normal_block_over(base)?));
+                }
                 "uv_mapping" => self.unsupported(k, t.span),
                 "texture_map" => {
                     let weights_optional = tex

@@ -33,6 +33,8 @@ pub enum Value {
     ColorMap(Box<ColorMap>),
     PigmentMap(Box<Vec<(f64, Pigment)>>),
     TextureMap(Box<Vec<(f64, Texture)>>),
+    NormalMap(Box<Vec<(f64, Normal)>>),
+    SlopeMap(Box<crate::scene::desc::SlopeMap>),
     /// `material { texture interior }`.
     Material(Box<(Option<Texture>, Option<Interior>)>),
     /// The pigment layers of a `sky_sphere`.
@@ -69,6 +71,8 @@ impl Value {
             Value::ColorMap(_) => "color_map",
             Value::PigmentMap(_) => "pigment_map",
             Value::TextureMap(_) => "texture_map",
+            Value::NormalMap(_) => "normal_map",
+            Value::SlopeMap(_) => "slope_map",
             Value::Material(_) => "material",
             Value::SkySphere(_) => "sky_sphere",
             Value::Fog(_) => "fog",

@@ -1,0 +1,281 @@
+//! Perturbed surface normals (`normal { ... }`), as POV-Ray 3.7 computes them. Measured with the
+//! `povray` binary by scripts/measure_normals.py (a white plane under coloured parallel lights
+//! gives the perturbed normal per pixel) and checked by tests/probes/normal_*.pov:
+//!
+//! - The surface normal goes into the pattern's space as a normal (Mᵀ·n) and is made unit length
+//!   there unless `no_bump_scale` is given; it is perturbed there and brought back (M⁻ᵀ), then
+//!   normalised. So a uniform `scale` keeps the bump slopes and a stretch tilts them; with
+//!   `no_bump_scale` a pattern twice as large has slopes half as steep.
+//! - Any pattern other than the classic bump patterns perturbs by the slope of its value (after
+//!   the slope map, if any): n − (2/15)·amount·∇h, where ∇h comes from the value at four
+//!   points at distance `accuracy` (0.02) around the point, the corners of a regular
+//!   tetrahedron with one corner along +y (found by scanning a step function's edge across
+//!   them). Four values fix a linear function exactly, so the slope is exact for linear
+//!   patterns and smoothed over `accuracy` at edges.
+//! - A slope map makes the height a cubic Hermite spline of the value through its entries'
+//!   heights with their slopes, each slope taken over its segment (measured on `gradient x`
+//!   with constant-height maps and a triangle-wave map).
+
+use std::f64::consts::TAU;
+
+use crate::math::{DVec3, Transform};
+use crate::scene::desc::{ImageMap, Normal, NormalKind, Special, Texture, TextureEntries};
+use crate::scene::pattern::{Pattern, PatternKind};
+
+use super::{noise, pattern};
+
+/// Tilt per unit of value slope and of amount (measured: `gradient x 1` tilts by 2/15).
+const SLOPE_SCALE: f64 = 2.0 / 15.0;
+
+/// The corners of the sampling tetrahedron: one along +y, three below it at y = −1/3.
+const TETRA: [DVec3; 4] = [
+    DVec3::new(0.0, 1.0, 0.0),
+    DVec3::new(0.942_809_041_582_063_4, -1.0 / 3.0, 0.0),
+    DVec3::new(-0.471_404_520_791_031_7, -1.0 / 3.0, 0.816_496_580_927_726),
+    DVec3::new(-0.471_404_520_791_031_7, -1.0 / 3.0, -0.816_496_580_927_726),
+];
+
+/// Whether any part of a texture (layers, patterned entries) perturbs the normal.
+pub fn texture_perturbs(t: &Texture) -> bool {
+    t.layers().any(|l| {
+        perturbs(l.normal.as_deref())
+            || l.pattern.as_ref().is_some_and(|tp| match &tp.entries {
+                TextureEntries::List(items) => items.iter().any(texture_perturbs),
+                TextureEntries::Map(map) => map.iter().any(|(_, t)| texture_perturbs(t)),
+            })
+    })
+}
+
+/// Whether a normal changes anything.
+pub fn perturbs(n: Option<&Normal>) -> bool {
+    n.is_some_and(|n| !matches!(n.kind, NormalKind::Flat))
+}
+
+/// The perturbed unit normal at `p` for the unit surface normal `n`, both in the space `nd`'s
+/// transform maps to (`space` takes that space on to the world; `p` and `n` are world).
+pub fn perturb_in(nd: &Normal, space: &Transform, p: DVec3, n: DVec3) -> DVec3 {
+    if space.is_identity() {
+        perturb(nd, p, n)
+    } else {
+        let t = nd.transform.then(space);
+        perturb_with(nd, &t, p, n)
+    }
+}
+
+/// The perturbed unit normal at `p` for the unit surface normal `n` (both in the normal's
+/// parent space).
+pub fn perturb(nd: &Normal, p: DVec3, n: DVec3) -> DVec3 {
+    perturb_with(nd, &nd.transform, p, n)
+}
+
+fn perturb_with(nd: &Normal, t: &Transform, p: DVec3, n: DVec3) -> DVec3 {
+    if matches!(nd.kind, NormalKind::Flat) {
+        return n;
+    }
+    let identity = t.is_identity();
+    let (lp, mut ln) = if identity {
+        (p, n)
+    } else {
+        (t.inv_point(p), t.m.transpose().transform_vector3(n))
+    };
+    if !nd.no_bump_scale {
+        ln = ln.normalize_or_zero();
+    }
+    let out = local(nd, lp, ln);
+    let out = if identity { out } else { t.normal(out) };
+    let out = out.normalize_or_zero();
+    if out == DVec3::ZERO {
+        n
+    } else {
+        out
+    }
+}
+
+/// The perturbed (not normalised) normal in the pattern's own space.
+fn local(nd: &Normal, lp: DVec3, ln: DVec3) -> DVec3 {
+    let amount = nd.amount;
+    match &nd.kind {
+        NormalKind::Flat => ln,
+        NormalKind::Pattern {
+            pattern: pat,
+            special,
+            slope_map,
+        } => match special {
+            Special::Slope => {
+                let g = slope(pat, slope_map.as_deref(), lp, nd.accuracy);
+                ln - g * (SLOPE_SCALE * amount)
+            }
+            Special::Bumps => {
+                ln + noise::dnoise(pattern::warped(pat, lp), pat.noise_generator) * amount
+            }
+            Special::Dents => dents(pat, lp, ln, amount),
+            Special::Wrinkles => wrinkles(pat, lp, ln, amount),
+            Special::Ripples | Special::Waves => waves(pat, *special, lp, ln, amount),
+        },
+        NormalKind::List {
+            pattern: pat,
+            items,
+        } => {
+            let i = pattern::index(pat, lp).min(items.len().saturating_sub(1));
+            match items.get(i) {
+                Some(item) => perturb(item, lp, ln.normalize_or_zero()),
+                None => ln,
+            }
+        }
+        NormalKind::Map { pattern: pat, map } => normal_map(pat, map, lp, ln),
+        NormalKind::BumpMap(im) => bump_map(im, lp, ln, amount),
+        NormalKind::Facets { .. } => ln,
+    }
+}
+
+/// The value's height (through the slope map) and its slope at `lp` from four samples.
+fn slope(pat: &Pattern, map: Option<&[(f64, f64, f64)]>, lp: DVec3, accuracy: f64) -> DVec3 {
+    let h = |q: DVec3| {
+        let v = pattern::value(pat, q);
+        match map {
+            Some(m) => slope_height(m, v),
+            None => v,
+        }
+    };
+    // For a regular tetrahedron Σ uuᵀ = (4/3)·I, so this is the linear fit's gradient.
+    let mut g = DVec3::ZERO;
+    for u in TETRA {
+        g += u * h(lp + u * accuracy);
+    }
+    g * (0.75 / accuracy)
+}
+
+/// The height a slope map gives value `v`: a cubic Hermite spline through the entries'
+/// heights with their slopes, flat outside them. The slopes are per segment, not per unit of
+/// value (measured: `[0 <0,1>] [0.5 <1,1>]` rises in a straight line).
+pub fn slope_height(map: &[(f64, f64, f64)], v: f64) -> f64 {
+    let (Some(first), Some(last)) = (map.first(), map.last()) else {
+        return v;
+    };
+    if v <= first.0 {
+        return first.1;
+    }
+    if v >= last.0 {
+        return last.1;
+    }
+    for w in map.windows(2) {
+        let ((v0, h0, s0), (v1, h1, s1)) = (w[0], w[1]);
+        if v <= v1 {
+            let d = v1 - v0;
+            if d <= 0.0 {
+                return h1;
+            }
+            let t = (v - v0) / d;
+            let (t2, t3) = (t * t, t * t * t);
+            return h0 * (2.0 * t3 - 3.0 * t2 + 1.0)
+                + h1 * (3.0 * t2 - 2.0 * t3)
+                + s0 * (t3 - 2.0 * t2 + t)
+                + s1 * (t3 - t2);
+        }
+    }
+    last.1
+}
+
+/// Dents: bumps whose depth is the cube of the noise, so most of the surface stays smooth.
+fn dents(pat: &Pattern, lp: DVec3, ln: DVec3, amount: f64) -> DVec3 {
+    let q = pattern::warped(pat, lp);
+    let gen = pat.noise_generator;
+    let v = noise::noise(q, gen);
+    ln + noise::dnoise(q, gen) * (amount * v * v * v)
+}
+
+/// Wrinkles: ten octaves of vector noise, each twice as fine and half as strong.
+fn wrinkles(pat: &Pattern, lp: DVec3, ln: DVec3, amount: f64) -> DVec3 {
+    let q = pattern::warped(pat, lp);
+    let gen = pat.noise_generator;
+    let mut sum = DVec3::ZERO;
+    let mut scale = 1.0;
+    for _ in 0..10 {
+        sum += noise::dnoise(q * scale, gen).abs() / scale;
+        scale *= 2.0;
+    }
+    ln + sum * amount
+}
+
+/// Ripples and waves: each wave source tilts the normal along the direction from it by the
+/// wave's value there, the sources' tilts averaged. Measured with `number_of_waves 1`:
+/// n + amount·(p − c)/|p − c|·sin(2π·|p − c|) for ripples, the same with sin(2π·f·|p − c|)/f
+/// and the source's own frequency f for waves; with all ten sources, frequency and phase,
+/// lancer's normals equal povray's to the 16-bit step (scripts/measure_waves.py).
+fn waves(pat: &Pattern, special: Special, lp: DVec3, ln: DVec3, amount: f64) -> DVec3 {
+    let q = pattern::warped(pat, lp);
+    let n = pattern::WAVE_SOURCES.len() as f64;
+    let mut sum = DVec3::ZERO;
+    for (c, f) in pattern::WAVE_SOURCES {
+        let d = q - c;
+        let len = d.length();
+        if len == 0.0 {
+            continue;
+        }
+        let s = match special {
+            Special::Ripples => (TAU * (len * pat.frequency + pat.phase)).sin(),
+            _ => (TAU * (len * pat.frequency * f + pat.phase)).sin() / f,
+        };
+        sum += d * (s / len);
+    }
+    ln + sum * (amount / n)
+}
+
+/// `normal_map`: the normals around the pattern's value, blended by their weights; `average`
+/// blends all of them.
+fn normal_map(pat: &Pattern, map: &[(f64, Normal)], lp: DVec3, ln: DVec3) -> DVec3 {
+    let n = ln.normalize_or_zero();
+    if matches!(pat.kind, PatternKind::Average) {
+        let q = pattern::warped(pat, lp);
+        let total: f64 = map.iter().map(|e| e.0).sum();
+        if total == 0.0 {
+            return ln;
+        }
+        return map
+            .iter()
+            .fold(DVec3::ZERO, |s, (w, m)| s + perturb(m, q, n) * (w / total));
+    }
+    let v = pattern::value(pat, lp);
+    let (Some(first), Some(last)) = (map.first(), map.last()) else {
+        return ln;
+    };
+    if v <= first.0 {
+        return perturb(&first.1, lp, n);
+    }
+    for w in map.windows(2) {
+        let ((va, na), (vb, nb)) = (&w[0], &w[1]);
+        if v <= *vb {
+            let span = vb - va;
+            if span <= 0.0 {
+                return perturb(nb, lp, n);
+            }
+            let t = (v - va) / span;
+            return perturb(na, lp, n) * (1.0 - t) + perturb(nb, lp, n) * t;
+        }
+    }
+    perturb(&last.1, lp, n)
+}
+
+/// `bump_map`: the image's grey as a height over the x-y plane, its slope from the
+/// neighbouring pixels.
+fn bump_map(im: &ImageMap, lp: DVec3, ln: DVec3, amount: f64) -> DVec3 {
+    if im.width == 0 || im.height == 0 {
+        return ln;
+    }
+    let grey = |x: i64, y: i64| {
+        let xi = x.rem_euclid(im.width as i64) as usize;
+        let yi = y.rem_euclid(im.height as i64) as usize;
+        let c = im.pixels[yi * im.width as usize + xi];
+        0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z
+    };
+    let (u, v) = (lp.x - lp.x.floor(), lp.y - lp.y.floor());
+    if im.once && !((0.0..1.0).contains(&lp.x) && (0.0..1.0).contains(&lp.y)) {
+        return ln;
+    }
+    let x = (u * im.width as f64) as i64;
+    let y = ((1.0 - v) * im.height as f64) as i64;
+    let h = grey(x, y);
+    let dx = grey(x + 1, y) - h;
+    let dy = h - grey(x, y + 1);
+    ln - DVec3::new(dx, dy, 0.0) * amount
+}
