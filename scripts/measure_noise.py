@@ -6,8 +6,10 @@ what the binary prints. It writes SDL that evaluates `f_noise_generator(x, y, z,
 `vturbulence(...)` at chosen points into a file with `#write(..., str(v, 0, 20))` (full double
 precision), and reads the numbers back. See docs/noise.md for what was found and how.
 
-  scripts/measure_noise.py            # re-measure, write src/render/noise_data.rs and the
-                                      # held-out probe values tests/data/noise_probes.txt
+  scripts/measure_noise.py            # re-measure everything: src/render/noise_data.rs,
+                                      # src/render/cells_data.rs, tests/data/noise_probes.txt
+  scripts/measure_noise.py --cells    # only the cells/crackle tables
+  scripts/measure_noise.py --probes   # only the held-out probe values
 
 Needs `povray` (3.7) and numpy. Takes a few minutes on one core.
 """
@@ -273,6 +275,95 @@ def write_rust(path, o, lam_pos, p_tab, q_tab, r, a2, b2):
 
 
 # ---------------------------------------------------------------------------------------------
+# cells and crackle: one random point and one value per unit cube, chosen by a 12-bit hash of
+# the same three-stage kind (offset 0)
+
+
+def cells_value(pts):
+    pre = "#declare PF = function { pattern { cells } }\n"
+    return evalpov([f"PF({x + 0.5!r},{y + 0.5!r},{z + 0.5!r})" for x, y, z in pts], pre)
+
+
+class CellLabels:
+    """`cells` at a cube's centre is its value; equal values, equal hash (and crackle point)."""
+
+    def __init__(self):
+        self.idx = {}
+        self.vals = []
+
+    def of(self, pts):
+        out = []
+        for v in cells_value(pts):
+            k = round(v, 13)
+            if k not in self.idx:
+                self.idx[k] = len(self.vals)
+                self.vals.append(v)
+            out.append(self.idx[k])
+        return out
+
+
+def crackle_d1(pts):
+    pre = "#declare PF = function { pattern { crackle form <1,0,0> metric 2 } }\n"
+    return evalpov([f"PF({fmt(x)},{fmt(y)},{fmt(z)})" for x, y, z in pts], pre)
+
+
+def nearest_points(starts, h=0.01):
+    """The crackle point nearest to each start: d1² = |p - c|² at seven spots is linear in c."""
+    offs = np.array([(0, 0, 0), (h, 0, 0), (0, h, 0), (0, 0, h), (-h, 0, 0), (0, -h, 0),
+                     (0, 0, -h)])
+    spots = [tuple(np.array(p) + o) for p in starts for o in offs]
+    d = np.array(crackle_d1(spots)).reshape(len(starts), 7)
+    out = []
+    for p, dd in zip(starts, d):
+        ps = np.array(p) + offs
+        a = 2 * (ps[1:] - ps[0])
+        b = (ps[1:] ** 2).sum(1) - ps[0] @ ps[0] - (dd[1:] ** 2 - dd[0] ** 2)
+        c, *_ = np.linalg.lstsq(a, b, rcond=None)
+        out.append((c, np.abs(np.linalg.norm(ps - c, axis=1) - dd).max()))
+    return out
+
+
+def measure_cells(rng):
+    lab = CellLabels()
+    pts = [tuple(rng.randint(-5000, 5000) for _ in range(3)) for _ in range(3000)]
+    labels = lab.of(pts)
+
+    class Ident:
+        idx = {i: i for i in range(4096)}
+
+        def of(self, p):
+            return lab.of(p)
+
+    o, lam, p_tab, q_tab, label = recover_hash(Ident(), pts, labels)
+    assert len(lab.vals) == 4096, len(lab.vals)
+    first = {}
+    for x in range(64):
+        for y in range(64):
+            for z in range(64):
+                first.setdefault(label(x, y, z), (x, y, z))
+    assert len(first) == 4096
+    point = [None] * 4096
+    todo = list(range(4096))
+    spots = [(a, b, c) for a in (0.5, 0.2, 0.8) for b in (0.5, 0.2, 0.8) for c in (0.5, 0.2, 0.8)]
+    for s in spots:
+        if not todo:
+            break
+        starts = [tuple(np.array(first[l]) + s) for l in todo]
+        found = nearest_points(starts)
+        left = []
+        for l, (c, r) in zip(todo, found):
+            cell = np.array(first[l])
+            if r < 1e-9 and np.all(np.floor(c) == cell):
+                point[l] = [float(x) for x in c - cell]
+            else:
+                left.append(l)
+        todo = left
+        print(f"crackle points: {4096 - len(todo)} found", file=sys.stderr)
+    assert not todo
+    return o, lam, p_tab, q_tab, lab.vals, point
+
+
+# ---------------------------------------------------------------------------------------------
 # held-out probes: values povray prints at points none of the fitting above used
 
 
@@ -286,6 +377,7 @@ PROBE_GROUPS = [
     ("", "vturbulence(2,0.5,6,<{x},{y},{z}>).z", 60, 10.0),
     ("", "vturbulence(2.7,0.6,4,<{x},{y},{z}>).x", 60, 10.0),
     ("", "vturbulence(1.5,0.9,8,<{x},{y},{z}>).y", 60, 10.0),
+    ("", "vturbulence(1.3,0.9,20,<{x},{y},{z}>).z", 30, 10.0),
 ]
 PATTERNS = [
     "bozo", "bozo noise_generator 1", "spotted", "bumps", "dents", "dents noise_generator 1",
@@ -301,6 +393,12 @@ PATTERNS = [
     "wood turbulence 0.04 noise_generator 1 ramp_wave frequency 3",
     "agate turbulence 0.3", "spotted turbulence 0.3", "dents turbulence 0.3 lambda 2.5",
     "marble turbulence 0.3 warp { turbulence 0.2 }",
+    "gradient x turbulence 0.4 noise_generator 3", "bozo turbulence 0.5 octaves 14 lambda 1.3",
+    "cells", "crackle", "crackle solid", "crackle metric 1", "crackle metric 3",
+    "crackle form <-1,1,0> offset 0.3", "crackle form <0.2,0.5,-0.4>",
+    "crackle form <1,0,0> metric 3 offset 0.3", "crackle form <0.2,0.5,-1.4>",
+    "crackle solid noise_generator 1", "crackle metric 1 form <1,0,0> offset 0.2",
+    "crackle turbulence 0.8 octaves 5 lambda 2.25 omega 0.707 phase 0.97 scale 1.3",
 ]
 # marble: x + t·turbulence; the ramp wave wraps at 1.00001, so its points keep x + t·T in
 # [0, 1) away from the wrap
@@ -337,7 +435,41 @@ def write_probes(path, rng):
         f.write("\n".join(lines) + "\n")
 
 
+def write_cells_rust(path, o, lam, p_tab, q_tab, vals, points):
+    def table(name, ty, xs, per=16):
+        lines = [f"pub static {name}: [{ty}; {len(xs)}] = ["]
+        for i in range(0, len(xs), per):
+            lines.append("    " + ", ".join(str(x) for x in xs[i:i + per]) + ",")
+        lines.append("];")
+        return "\n".join(lines)
+
+    with open(path, "w") as f:
+        f.write("//! The random point (crackle) and value (cells) of each unit cube, as POV-Ray 3.7\n")
+        f.write("//! picks them, measured from the `povray` binary by scripts/measure_noise.py\n")
+        f.write("//! (generated: do not edit; see docs/noise.md).\n\n")
+        f.write("/// Added to a cube's integer coordinates before they are masked to 12 bits.\n")
+        f.write(f"pub const CELL_HASH_OFFSET: i64 = {o};\n\n")
+        f.write("/// First hash stage: x to a 12-bit value.\n")
+        f.write(table("CELL_HASH_X", "u16", q_tab) + "\n\n")
+        f.write("/// Second stage, indexed by CELL_HASH_X[x] ^ y.\n")
+        f.write(table("CELL_HASH_Y", "u16", p_tab) + "\n\n")
+        f.write("/// Last stage, indexed by CELL_HASH_Y[..] ^ z: the cube's entry.\n")
+        f.write(table("CELL_HASH_Z", "u16", lam) + "\n\n")
+        f.write("/// The `cells` pattern's value of an entry.\n")
+        f.write(table("CELL_VALUE", "f64", [repr(float(v)) for v in vals], 4) + "\n\n")
+        f.write("/// The crackle point of an entry, relative to the cube's low corner.\n")
+        f.write(f"pub static CELL_POINT: [[f64; 3]; {len(points)}] = [\n")
+        for p in points:
+            f.write("    [" + ", ".join(repr(float(c)) for c in p) + "],\n")
+        f.write("];\n")
+    subprocess.run(["rustfmt", "--edition", "2021", path], check=False)
+
+
 def main():
+    if sys.argv[1:] == ["--cells"]:
+        write_cells_rust(os.path.join(ROOT, "src/render/cells_data.rs"),
+                         *measure_cells(random.Random(5)))
+        return
     if sys.argv[1:] == ["--probes"]:
         write_probes(os.path.join(ROOT, "tests/data/noise_probes.txt"), random.Random(2024))
         return
@@ -364,6 +496,8 @@ def main():
     assert err < 1e-12
     write_rust(os.path.join(ROOT, "src/render/noise_data.rs"), o, lam_pos, p_tab, q_tab, r,
                a2, b2)
+    write_cells_rust(os.path.join(ROOT, "src/render/cells_data.rs"),
+                     *measure_cells(random.Random(5)))
     write_probes(os.path.join(ROOT, "tests/data/noise_probes.txt"), random.Random(2024))
     json.dump({"offset": o, "a2": a2, "b2": b2, "R": r},
               open(os.path.join(ROOT, "scripts/noise_measured.json"), "w"), indent=0)

@@ -6,6 +6,7 @@
 mod aa;
 pub mod band;
 pub mod camera;
+mod cells_data;
 mod fog;
 pub mod noise;
 mod noise_data;

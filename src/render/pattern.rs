@@ -114,7 +114,16 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
             let c = super::pigment::eval(p, q);
             0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z
         }
-        PatternKind::Gradient(a) => q.dot(*a) % 1.0,
+        // Measured: gradient x gives 0.3 at x = 1.3, 1 at 1, 0 at 2, but 0.80009 at -9.2 (only
+        // values above 1 are reduced before the 1.00001 wrap).
+        PatternKind::Gradient(a) => {
+            let v = q.dot(*a);
+            if v > 1.0 {
+                v % 1.0
+            } else {
+                v
+            }
+        }
         PatternKind::Onion => q.length() % 1.0,
         PatternKind::Radial => {
             let a = (-q.z).atan2(q.x) / TAU;
@@ -170,15 +179,9 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
             metric,
             offset,
             solid,
-        } => crackle(q, *form, *metric, *offset, *solid),
+        } => crackle(q, *form, *metric, *offset, *solid, gen),
         PatternKind::Cells => {
-            let h = noise::hash3(
-                q.x.floor() as i64,
-                q.y.floor() as i64,
-                q.z.floor() as i64,
-                7,
-            );
-            noise::unit(h)
+            noise::cell_value(q.x.floor() as i64, q.y.floor() as i64, q.z.floor() as i64)
         }
         PatternKind::Fractal(f) => fractal(f, (q.x, q.y)),
         PatternKind::Function(f) => {
@@ -359,44 +362,58 @@ fn waves(pat: &Pattern, q: DVec3) -> f64 {
 }
 
 /// Crackle: `form` weighs the distances to the nearest three of one random point per unit
-/// cube; `solid` gives each cell one value instead.
-fn crackle(q: DVec3, form: DVec3, metric: f64, offset: f64, solid: bool) -> f64 {
+/// cube (POV-Ray's points, measured: see docs/noise.md), the result clipped to [0, 1];
+/// `offset` enters each distance as (Σ|d|^metric + offset^metric)^(1/metric). `solid` gives
+/// each cell the noise value at its point. All measured with `function { pattern { crackle
+/// ... } }`.
+fn crackle(q: DVec3, form: DVec3, metric: f64, offset: f64, solid: bool, gen: u8) -> f64 {
     let base = q.floor();
+    // Sums of |d|^metric: the same order as the distances, rooted only for the nearest three.
     let mut d = [f64::INFINITY; 3];
-    let mut nearest_cell = (0i64, 0i64, 0i64);
+    let mut nearest = DVec3::ZERO;
     for dz in -1..=1 {
         for dy in -1..=1 {
             for dx in -1..=1 {
                 let (cx, cy, cz) = (base.x as i64 + dx, base.y as i64 + dy, base.z as i64 + dz);
-                let pt = DVec3::new(
-                    cx as f64 + noise::unit(noise::hash3(cx, cy, cz, 21)),
-                    cy as f64 + noise::unit(noise::hash3(cx, cy, cz, 22)),
-                    cz as f64 + noise::unit(noise::hash3(cx, cy, cz, 23)),
-                );
+                let pt = noise::cell_point(cx, cy, cz);
                 let v = (pt - q).abs();
-                let dist = if metric == 2.0 {
-                    v.length()
+                let sum = if metric == 2.0 {
+                    v.length_squared()
                 } else if metric == 1.0 {
                     v.x + v.y + v.z
                 } else {
-                    (v.x.powf(metric) + v.y.powf(metric) + v.z.powf(metric)).powf(1.0 / metric)
+                    v.x.powf(metric) + v.y.powf(metric) + v.z.powf(metric)
                 };
-                if dist < d[0] {
-                    d = [dist, d[0], d[1]];
-                    nearest_cell = (cx, cy, cz);
-                } else if dist < d[1] {
-                    d = [d[0], dist, d[1]];
-                } else if dist < d[2] {
-                    d[2] = dist;
+                if sum < d[0] {
+                    d = [sum, d[0], d[1]];
+                    nearest = pt;
+                } else if sum < d[1] {
+                    d = [d[0], sum, d[1]];
+                } else if sum < d[2] {
+                    d[2] = sum;
                 }
             }
         }
     }
     if solid {
-        let (x, y, z) = nearest_cell;
-        return noise::unit(noise::hash3(x, y, z, 24));
+        return noise::noise(nearest, gen);
     }
-    form.x * d[0] + form.y * d[1] + form.z * d[2] + offset
+    let off = if offset == 0.0 {
+        0.0
+    } else {
+        offset.abs().powf(metric)
+    };
+    let root = |s: f64| {
+        if metric == 2.0 {
+            (s + off).sqrt()
+        } else if metric == 1.0 {
+            s + off
+        } else {
+            (s + off).powf(1.0 / metric)
+        }
+    };
+    let v = form.x * root(d[0]) + form.y * root(d[1]) + form.z * root(d[2]);
+    v.clamp(0.0, 1.0)
 }
 
 #[cfg(test)]

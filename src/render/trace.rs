@@ -145,7 +145,7 @@ impl<'a> Tracer<'a> {
         if path.depth > self.scene.max_trace_level {
             return Seen::default();
         }
-        let (seen, t) = match self.scene.first_hit(ray, f64::INFINITY, ctx) {
+        let (seen, t) = match self.first_visible(ray, path.straight, ctx) {
             Some(h) => (self.shade_blended(ray, &h, path, ctx), h.t),
             None => (self.background(ray.dir, path.straight), f64::INFINITY),
         };
@@ -154,6 +154,37 @@ impl<'a> Tracer<'a> {
         } else {
             super::fog::apply(&self.scene.fogs, ray, t, seen)
         }
+    }
+
+    /// The first crossing the ray can see: camera rays and their transmitted continuations
+    /// (`straight`) pass through `no_image` objects, reflected rays through `no_reflection`
+    /// ones (measured with povray: a no_image sphere is missing through glass too, and shows
+    /// in a mirror). `t` stays measured along `ray`.
+    fn first_visible(
+        &self,
+        ray: &Ray,
+        straight: bool,
+        ctx: &mut TraceCtx<'a>,
+    ) -> Option<SurfaceHit<'a>> {
+        let mut h = self.scene.first_hit(ray, f64::INFINITY, ctx)?;
+        let mut offset = 0.0;
+        // Bounded so that a ray grazing along a hidden surface cannot loop for ever.
+        for _ in 0..256 {
+            let hidden = if straight {
+                h.obj.no_image
+            } else {
+                h.obj.no_reflection
+            };
+            if !hidden {
+                h.t += offset;
+                return Some(h);
+            }
+            offset += h.t;
+            h = self
+                .scene
+                .first_hit(&Ray::new(ray.at(offset), ray.dir), f64::INFINITY, ctx)?;
+        }
+        None
     }
 
     /// `shade`, except on a blob whose components have textures: POV-Ray shades the point with
@@ -254,7 +285,7 @@ impl<'a> Tracer<'a> {
         // A perturbed normal may face lights the surface itself turns away from; POV-Ray
         // lights them (measured: a light just behind a plane whose normal leans towards it).
         let bumpy = normal::texture_perturbs(top);
-        self.gather_lights(p, nf, bumpy, ctx);
+        self.gather_lights(p, nf, bumpy, obj.double_illuminate, ctx);
         let cos_i = (-dir.dot(nf)).clamp(0.0, 1.0);
         let (n1, n2) = if entering {
             (1.0, obj.ior)
@@ -393,8 +424,9 @@ impl<'a> Tracer<'a> {
 
 impl<'a> Tracer<'a> {
     /// The lights reaching `p` (after shadows) into `ctx.lit`, once per hit for all layers;
-    /// `all` keeps those behind the surface too.
-    fn gather_lights(&self, p: DVec3, nf: DVec3, all: bool, ctx: &mut TraceCtx<'a>) {
+    /// `all` keeps those behind the surface too, `double` lights the surface from behind
+    /// (`double_illuminate`).
+    fn gather_lights(&self, p: DVec3, nf: DVec3, all: bool, double: bool, ctx: &mut TraceCtx<'a>) {
         let q = self.quality;
         let mut lit = std::mem::take(&mut ctx.lit);
         lit.clear();
@@ -405,7 +437,8 @@ impl<'a> Tracer<'a> {
             };
             let l = inc.l;
             let cos_n = nf.dot(l);
-            if cos_n <= 0.0 && !all {
+            let back = cos_n <= 0.0 && double;
+            if cos_n <= 0.0 && !all && !back {
                 continue;
             }
             let mut lc = light.color * (light.fade(inc.dist) * inc.beam);
@@ -422,6 +455,7 @@ impl<'a> Tracer<'a> {
                 l,
                 cos_n,
                 shadowless: light.shadowless,
+                back,
                 grain: grain(seed, i as u32),
             });
         }
@@ -447,8 +481,9 @@ impl<'a> Tracer<'a> {
         for lb in &ctx.lit {
             let (lc, l) = (lb.color, lb.l);
             if fin.diffuse > 0.0 {
-                // The same as lb.cos_n unless the normal was perturbed.
-                let cos_n = nf.dot(l);
+                // The same as lb.cos_n unless the normal was perturbed; a light behind a
+                // double-illuminated surface lights it as if from the front.
+                let cos_n = if lb.back { -nf.dot(l) } else { nf.dot(l) };
                 if cos_n > 0.0 {
                     let d = if fin.brilliance == 1.0 {
                         cos_n
@@ -461,8 +496,9 @@ impl<'a> Tracer<'a> {
                     col += lc * c.rgb * (fin.diffuse * d * opacity * grainy);
                 }
             }
-            // POV-Ray 3.7 gives shadowless lights no highlights (tests/probes/shadowless_*).
-            if lb.shadowless {
+            // POV-Ray 3.7 gives shadowless lights no highlights (tests/probes/shadowless_*),
+            // nor lights behind a double-illuminated surface (tests/probes/double_illuminate).
+            if lb.shadowless || lb.back {
                 continue;
             }
             if fin.phong > 0.0 {
@@ -489,6 +525,8 @@ pub struct LitBy {
     pub l: DVec3,
     pub cos_n: f64,
     pub shadowless: bool,
+    /// Behind the surface, lighting it through `double_illuminate`.
+    pub back: bool,
     /// Uniform in [0, 1), fixed by the point and the light: `crand`'s random share.
     pub grain: f64,
 }

@@ -223,6 +223,12 @@ pub struct ObjectDesc {
     pub texture: Option<Arc<Texture>>,
     pub interior: Option<Interior>,
     pub no_shadow: bool,
+    /// `no_image`: unseen by camera rays and their transmitted continuations.
+    pub no_image: bool,
+    /// `no_reflection`: unseen by reflected rays.
+    pub no_reflection: bool,
+    /// `double_illuminate`: lit by lights behind its surface too (diffuse only).
+    pub double_illuminate: bool,
     pub hollow: Option<bool>,
     pub inverse: bool,
     /// `clipped_by { ... }`: only the surface inside all of these is kept.
@@ -237,6 +243,9 @@ impl ObjectDesc {
             texture: None,
             interior: None,
             no_shadow: false,
+            no_image: false,
+            no_reflection: false,
+            double_illuminate: false,
             hollow: None,
             inverse: false,
             clipped_by: Vec::new(),

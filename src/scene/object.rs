@@ -31,6 +31,12 @@ pub struct Object {
     pub blob: Option<PartTextures<crate::geom::blob::Blob>>,
     pub ior: f64,
     pub no_shadow: bool,
+    /// Unseen by camera rays and their transmitted continuations (`no_image`).
+    pub no_image: bool,
+    /// Unseen by reflected rays (`no_reflection`).
+    pub no_reflection: bool,
+    /// Lit from behind its surface too (`double_illuminate`).
+    pub double_illuminate: bool,
     pub inverse: bool,
     /// World-space bounds (`Aabb::INFINITE` for unbounded objects).
     pub bounds: Aabb,

@@ -178,7 +178,16 @@ impl Parser {
             }
             // Bounding only speeds POV-Ray up; lancer builds its own bounds.
             "bounded_by" => self.skip_block()?,
-            "split_union" | "double_illuminate" | "no_image" | "no_reflection" | "no_radiosity" => {
+            "no_image" | "no_reflection" | "double_illuminate" => {
+                let on = self.optional_bool()?;
+                // On a CSG object it holds for every member, which are what rays meet.
+                set_deep(obj, &|o: &mut ObjectDesc| match k {
+                    "no_image" => o.no_image = on,
+                    "no_reflection" => o.no_reflection = on,
+                    _ => o.double_illuminate = on,
+                });
+            }
+            "split_union" | "no_radiosity" => {
                 self.optional_bool()?;
                 if k != "split_union" {
                     self.unsupported(k, span);
@@ -768,5 +777,15 @@ impl Parser {
             op: CsgOp::Union,
             children: Vec::new(),
         }))
+    }
+}
+
+/// Applies `f` to an object and, for CSG, to every member at any depth.
+fn set_deep(obj: &mut ObjectDesc, f: &dyn Fn(&mut ObjectDesc)) {
+    f(obj);
+    if let ShapeDesc::Csg { children, .. } = &mut obj.shape {
+        for c in children {
+            set_deep(c, f);
+        }
     }
 }
