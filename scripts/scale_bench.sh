@@ -112,7 +112,8 @@ TOPT=()
 [ "$THREADS" = default ] || TOPT=(+WT"$THREADS")
 W=${SIZE%x*}; H=${SIZE#*x}
 echo "# scale_bench  $(date -u '+%F %T') UTC  cores $(nproc)  threads $THREADS  size ${W}x${H}"
-echo "# lancer: $LANCER ($(cd "$ROOT" && git rev-parse --short HEAD 2>/dev/null || echo '?'))"
+echo "# lancer: $LANCER  povray: $("$POVRAY" --version 2>&1 | grep -m1 '^POV-Ray' || echo '?')"
+echo "# (the machine's load average: $(cut -d' ' -f1-3 /proc/loadavg); compare the two programs of one run)"
 printf '%-12s %-7s %8s %9s %5s  %s\n' case prog wall_s peak_MB exit phases
 
 IFS=, read -r -a LIST <<<"$CASES"

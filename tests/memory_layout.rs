@@ -22,3 +22,35 @@ fn per_object_types_stay_small() {
     assert!(size_of::<Pigment>() <= 104, "{}", size_of::<Pigment>());
     assert!(size_of::<Object>() <= 176, "{}", size_of::<Object>());
 }
+
+/// `texture { T }` shares the declared texture between objects; anything that changes it
+/// afterwards (a transform of the object, a pigment) works on the object's own copy.
+#[test]
+fn declared_textures_are_shared_until_changed() {
+    let dir = std::env::temp_dir().join(format!("lancer-layout-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("shared.pov");
+    std::fs::write(
+        &path,
+        "#declare T = texture { pigment { rgb 1 } }
+         sphere { 0, 1 texture { T } }
+         sphere { x, 1 texture { T } }
+         sphere { y, 1 texture { T } translate x }
+         sphere { z, 1 texture { T } pigment { rgb 0.5 } }",
+    )
+    .unwrap();
+    let parsed = lancer::api::parse_file(&path, Default::default());
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(parsed.error.is_none());
+    let tex: Vec<_> = parsed
+        .parser
+        .scene
+        .objects
+        .iter()
+        .map(|o| o.texture.clone().unwrap())
+        .collect();
+    assert!(std::sync::Arc::ptr_eq(&tex[0], &tex[1]));
+    assert!(!std::sync::Arc::ptr_eq(&tex[0], &tex[2]));
+    assert!(!tex[2].pigment.transform.is_identity() && tex[0].pigment.transform.is_identity());
+    assert!(!std::sync::Arc::ptr_eq(&tex[0], &tex[3]));
+}

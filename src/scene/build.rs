@@ -259,11 +259,13 @@ impl Ctx {
         (ready, transparent)
     }
 
-    /// Whether `prepare_texture` would change `t`: a pattern that takes the scene's noise
-    /// generator, or an image map to convert to a working gamma other than 1.
+    /// Whether `prepare_texture` would change `t`: a pattern (of a pigment, a normal or the
+    /// texture) that takes the scene's noise generator, or an image map to convert to a
+    /// working gamma other than 1. Must answer true for everything `prepare_texture` changes.
     fn texture_needs_readying(&self, t: &Texture) -> bool {
         t.layers().any(|l| {
             self.pigment_needs_readying(&l.pigment)
+                || l.normal.as_deref().is_some_and(normal_needs_generator)
                 || l.pattern.as_ref().is_some_and(|tp| {
                     tp.pattern.noise_generator == 0
                         || match &tp.entries {
@@ -295,7 +297,8 @@ impl Ctx {
         }
     }
 
-    /// Readies a texture's pigments (patterned ones' entries too); whether light may pass.
+    /// Readies a texture's pigments and normals (patterned ones' entries too); whether light
+    /// may pass. `texture_needs_readying` must know every change made here.
     fn prepare_texture(&mut self, t: &mut Texture) -> bool {
         let mut transparent = true;
         let mut layer = Some(t);
@@ -550,6 +553,21 @@ impl Scene {
 }
 
 /// Normal patterns that named no noise generator use the scene's.
+/// Whether `normal_generator` would change `n`.
+fn normal_needs_generator(n: &crate::scene::desc::Normal) -> bool {
+    use crate::scene::desc::NormalKind;
+    match &n.kind {
+        NormalKind::Pattern { pattern, .. } => pattern.noise_generator == 0,
+        NormalKind::List { pattern, items } => {
+            pattern.noise_generator == 0 || items.iter().any(normal_needs_generator)
+        }
+        NormalKind::Map { pattern, map } => {
+            pattern.noise_generator == 0 || map.iter().any(|(_, i)| normal_needs_generator(i))
+        }
+        NormalKind::Flat | NormalKind::BumpMap(_) | NormalKind::Facets { .. } => false,
+    }
+}
+
 fn normal_generator(n: &mut crate::scene::desc::Normal, gen: u8) {
     use crate::scene::desc::NormalKind;
     match &mut n.kind {

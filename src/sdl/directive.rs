@@ -301,7 +301,7 @@ impl Parser {
                     self.advance();
                     tex = self.parse_texture_block()?.over(tex);
                 }
-                Ok(Value::Texture(Box::new(tex)))
+                Ok(Value::Texture(std::sync::Arc::new(tex)))
             }
             "interior" => {
                 self.advance();

@@ -132,11 +132,13 @@ impl Parser {
         }
         match k {
             "texture" => {
-                let t = self.parse_texture_block()?;
-                obj.texture = Some(Arc::new(match obj.texture.take() {
-                    Some(below) => t.over(Arc::unwrap_or_clone(below)),
+                let t = self.parse_texture_block_shared()?;
+                obj.texture = Some(match obj.texture.take() {
+                    Some(below) => {
+                        Arc::new(Arc::unwrap_or_clone(t).over(Arc::unwrap_or_clone(below)))
+                    }
                     None => t,
-                }));
+                });
             }
             "pigment" => {
                 let mut tex = self.texture_mut(obj);

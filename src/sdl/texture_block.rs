@@ -1,6 +1,8 @@
 //! `texture { ... }` blocks: plain textures (pigment, finish, normal), and patterned ones —
 //! a block pattern with listed textures, `texture_map`, or the old `tiles`.
 
+use std::sync::Arc;
+
 use crate::scene::desc::{Texture, TextureEntries, TexturePattern};
 use crate::scene::pattern::{Pattern, PatternKind};
 
@@ -15,6 +17,27 @@ impl Parser {
         self.parse_texture_body(Sym::RBrace)
     }
 
+    /// `parse_texture_block` for an object: `texture { T }` with nothing more gives the
+    /// declared texture itself, shared, so a loop placing a million objects with it holds
+    /// one texture, not a million copies.
+    pub(super) fn parse_texture_block_shared(&mut self) -> PResult<Arc<Texture>> {
+        self.open_brace("texture")?;
+        if let Some(k) = self.peek_ident()? {
+            if let Some(Value::Texture(id)) = self.lookup(&k) {
+                let id = id.clone();
+                self.advance();
+                if self.eat_sym(Sym::RBrace)? {
+                    return Ok(id);
+                }
+                return self
+                    .parse_texture_rest(Arc::unwrap_or_clone(id), Sym::RBrace)
+                    .map(Arc::new);
+            }
+        }
+        let tex = self.scene.default_texture.clone();
+        self.parse_texture_rest(tex, Sym::RBrace).map(Arc::new)
+    }
+
     /// The inside of a texture up to and including `close` (`}`, or `]` in a texture map).
     fn parse_texture_body(&mut self, close: Sym) -> PResult<Texture> {
         let mut tex = self.scene.default_texture.clone();
@@ -24,6 +47,11 @@ impl Parser {
                 self.advance();
             }
         }
+        self.parse_texture_rest(tex, close)
+    }
+
+    /// A texture's items after its optional identifier, up to and including `close`.
+    fn parse_texture_rest(&mut self, mut tex: Texture, close: Sym) -> PResult<Texture> {
         loop {
             let t = self.next_tok()?;
             let Tok::Ident(k) = &t.tok else {

@@ -22,7 +22,8 @@ pub enum Value {
     Pigment(Box<Pigment>),
     Finish(Box<Finish>),
     Normal(Box<Normal>),
-    Texture(Box<Texture>),
+    /// Shared: `texture { T }` hands every object the same one (copied only when changed).
+    Texture(std::sync::Arc<Texture>),
     Interior(Box<Interior>),
     Camera(Box<CameraDesc>),
     Transform(Box<Transform>),
