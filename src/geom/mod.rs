@@ -57,6 +57,7 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
 }
 
 pub mod algebraic;
+pub mod bicubic;
 pub mod blob;
 pub mod boxes;
 pub mod bvh;
