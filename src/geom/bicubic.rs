@@ -144,8 +144,8 @@ mod tests {
     fn collapsed_edge_still_has_a_normal() {
         // A dome: the whole first row is one point.
         let mut p = flat();
-        for c in 0..4 {
-            p[c] = DVec3::new(1.5, 0.0, 1.0);
+        for q in p.iter_mut().take(4) {
+            *q = DVec3::new(1.5, 0.0, 1.0);
         }
         let n = normal_at(&p, 0.3, 0.0);
         assert!(n.length() > 0.0 && n.is_finite());

@@ -67,6 +67,7 @@ pub mod disc;
 pub mod font;
 pub mod height_field;
 pub mod isosurface;
+pub mod julia;
 pub mod lathe;
 pub mod mesh;
 pub mod plane;

@@ -4,12 +4,14 @@
 use std::sync::Arc;
 
 use crate::geom::bicubic::{tessellate, MAX_STEPS};
+use crate::geom::julia::{Algebra, Julia, JuliaFn};
 use crate::math::DVec3;
 use crate::scene::desc::{ObjectDesc, ShapeDesc};
 
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
 use super::source::Span;
+use super::value::Value;
 
 impl Parser {
     /// Reads an object's modifiers up to its '}', handing keywords `item` does not take
@@ -111,5 +113,113 @@ impl Parser {
             self.parse_vector()?;
         }
         Ok(())
+    }
+
+    /// A 4-vector where the grammar wants one (a float fills all four).
+    fn parse_vector4(&mut self) -> PResult<[f64; 4]> {
+        let span = self.next_span()?;
+        match self.parse_expr()? {
+            Value::Float(f) => Ok([f; 4]),
+            Value::Vector(c, n) => {
+                let c = super::expr::pad((c, n));
+                Ok([c[0], c[1], c[2], c[3]])
+            }
+            other => Err(self.error_at(
+                span,
+                format!("expected a 4-D vector, found a {}", other.type_name()),
+            )),
+        }
+    }
+
+    /// `julia_fractal { <P> [quaternion | hypercomplex] [sqr | cube | exp | ... | pwr(X, Y)]
+    /// [max_iteration N] [precision P] [slice <N>, D] modifiers }`.
+    pub(super) fn julia_fractal(&mut self, _s: Span) -> PResult<ObjectDesc> {
+        let open = self.open_brace("julia_fractal")?;
+        let param = self.parse_vector4()?;
+        let mut algebra = Algebra::Quaternion;
+        let mut func = (JuliaFn::Sqr, Span::default());
+        let mut max_iteration = 20u32;
+        let mut precision = 20.0;
+        let mut slice = ([0.0, 0.0, 0.0, 1.0], 0.0);
+        // A stand-in shape while the modifiers are read (a CSG one would not keep transforms).
+        let mut obj = ObjectDesc::new(ShapeDesc::Sphere {
+            center: DVec3::ZERO,
+            radius: 0.0,
+        });
+        self.special_items(&mut obj, open, "julia_fractal", |p, k, span| {
+            let f = match k {
+                "quaternion" => {
+                    algebra = Algebra::Quaternion;
+                    return Ok(true);
+                }
+                "hypercomplex" => {
+                    algebra = Algebra::Hypercomplex;
+                    return Ok(true);
+                }
+                "max_iteration" => {
+                    max_iteration = p.parse_float()?.clamp(0.0, 1e6) as u32;
+                    return Ok(true);
+                }
+                "precision" => {
+                    precision = p.parse_float()?;
+                    return Ok(true);
+                }
+                "slice" => {
+                    let n = p.parse_vector4()?;
+                    p.skip_optional_comma()?;
+                    let d = p.parse_float()?;
+                    if n[3] == 0.0 || n.iter().all(|&x| x == 0.0) {
+                        p.warn(span, "a julia_fractal slice normal must have a non-zero 4th component; <0,0,0,1>, 0 is used");
+                    }
+                    slice = (n, d);
+                    return Ok(true);
+                }
+                "sqr" => JuliaFn::Sqr,
+                "cube" => JuliaFn::Cube,
+                "exp" => JuliaFn::Exp,
+                "reciprocal" => JuliaFn::Reciprocal,
+                "sin" => JuliaFn::Sin,
+                "asin" => JuliaFn::Asin,
+                "sinh" => JuliaFn::Sinh,
+                "asinh" => JuliaFn::Asinh,
+                "cos" => JuliaFn::Cos,
+                "acos" => JuliaFn::Acos,
+                "cosh" => JuliaFn::Cosh,
+                "acosh" => JuliaFn::Acosh,
+                "tan" => JuliaFn::Tan,
+                "atan" => JuliaFn::Atan,
+                "tanh" => JuliaFn::Tanh,
+                "atanh" => JuliaFn::Atanh,
+                "ln" => JuliaFn::Ln,
+                "pwr" => {
+                    p.expect_sym(Sym::LParen, "after 'pwr'")?;
+                    let x = p.parse_float()?;
+                    p.skip_optional_comma()?;
+                    let y = p.parse_float()?;
+                    p.expect_sym(Sym::RParen, "to close pwr(")?;
+                    JuliaFn::Pwr(x, y)
+                }
+                _ => return Ok(false),
+            };
+            func = (f, span);
+            Ok(true)
+        })?;
+        if algebra == Algebra::Quaternion && !matches!(func.0, JuliaFn::Sqr | JuliaFn::Cube) {
+            // POV-Ray refuses this; lancer draws the quaternion square instead of stopping.
+            self.warn(
+                func.1,
+                "only sqr and cube work with quaternion julia_fractals (add hypercomplex); sqr is used",
+            );
+            func.0 = JuliaFn::Sqr;
+        }
+        obj.shape = ShapeDesc::Prebuilt(Arc::new(Julia::new(
+            param,
+            algebra,
+            func.0,
+            max_iteration,
+            precision,
+            slice,
+        )));
+        Ok(obj)
     }
 }
