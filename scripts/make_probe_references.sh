@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Renders every shading probe in tests/probes/ with Debian's povray into tests/probes/ref/.
+# Renders every shading probe in tests/probes/ (or tests/$1/, e.g. probes_approx) with Debian's povray into tests/probes/ref/.
 # The probes are tiny scenes that each isolate one POV-Ray shading rule; tests/probes.rs
 # compares lancer's renders with these pixel for pixel. A probe whose first line is
 # `// options: ...` is rendered with those options too (quality levels, alpha).
 set -euo pipefail
-cd "$(dirname "$0")/../tests/probes"
+cd "$(dirname "$0")/../tests/${1:-probes}"
 command -v povray >/dev/null || { echo "povray not found: apt-get install povray" >&2; exit 1; }
 mkdir -p ref
 for f in *.pov; do

@@ -244,7 +244,7 @@ fn unsupported_in_a_declaration_warns_only_when_used() {
             .collect::<Vec<_>>()
     };
     // Declared and never used, as shapes.inc's declarations are in most scenes: no warning.
-    let decl = "#declare Q = julia_fractal { <0.5, 0.5, 0, 0> }\n";
+    let decl = "#declare Q = lemon { <0.5, 0.5, 0, 0> }\n";
     assert!(warnings(decl).is_empty(), "{:?}", warnings(decl));
     // Testing for the name is not using it.
     let tested = format!("{decl}#ifdef (Q) #end\n");
@@ -253,7 +253,7 @@ fn unsupported_in_a_declaration_warns_only_when_used() {
     let used = format!("{decl}object {{ Q }}\n");
     let w = warnings(&used);
     assert!(
-        w.len() == 1 && w[0].starts_with("d.pov:1:14") && w[0].contains("julia_fractal"),
+        w.len() == 1 && w[0].starts_with("d.pov:1:14") && w[0].contains("lemon"),
         "{w:?}"
     );
     let through = format!(
@@ -284,7 +284,7 @@ fn blocks_lancer_skips_still_run_their_directives() {
     // shapes.inc's mesh2 macros put the closing braces in #if branches.
     let s = parse(
         "#declare W = 0;
-         julia_fractal { <1,0,0,0> #if (W) sphere { 0, 1, 1 } } #else sphere { 0, 2, 1 } } #end
+         lemon { <1,0,0,0> #if (W) sphere { 0, 1, 1 } } #else sphere { 0, 2, 1 } } #end
          #declare After = 3;
          sphere { 0, After }",
     );

@@ -68,6 +68,7 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
 }
 
 pub mod algebraic;
+pub mod bicubic;
 pub mod blob;
 pub mod boxes;
 pub mod bvh;
@@ -77,6 +78,7 @@ pub mod disc;
 pub mod font;
 pub mod height_field;
 pub mod isosurface;
+pub mod julia;
 pub mod lathe;
 pub mod mesh;
 pub mod plane;

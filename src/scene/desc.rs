@@ -358,6 +358,9 @@ pub enum ShapeDesc {
         data: Arc<crate::geom::blob::BlobData>,
         textures: Vec<Option<Texture>>,
     },
+    /// Shapes the parser builds whole (`julia_fractal`, `ovus`, ...): nothing is left to
+    /// decide when the scene is built.
+    Prebuilt(Arc<dyn crate::geom::Shape>),
     Csg {
         op: CsgOp,
         children: Vec<ObjectDesc>,

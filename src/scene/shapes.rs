@@ -60,6 +60,7 @@ pub fn make_shape(d: &ShapeDesc) -> Arc<dyn Shape> {
             Arc::new(crate::geom::height_field::HeightField::new(data.clone()))
         }
         ShapeDesc::Isosurface(data) => Arc::new(crate::geom::isosurface::Isosurface::new(data)),
+        ShapeDesc::Prebuilt(s) => s.clone(),
         ShapeDesc::Csg { .. } | ShapeDesc::Light(_) => {
             unreachable!("CSG and lights are built by scene::build")
         }

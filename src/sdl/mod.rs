@@ -22,6 +22,7 @@ pub mod object;
 pub mod parser;
 pub mod pattern;
 pub mod source;
+pub mod special_objects;
 pub mod spline;
 pub mod strings;
 pub mod sweep;

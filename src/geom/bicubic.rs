@@ -1,0 +1,153 @@
+//! POV-Ray `bicubic_patch`: a Bezier patch of 16 control points, rendered as POV-Ray renders
+//! it, as a grid of smooth triangles.
+//!
+//! The manual says the patch is cut into `2^u_steps × 2^v_steps` pieces, each "pretended to be
+//! a rectangle" (two triangles) with "normal interpolation". Here the grid is built once, when
+//! the scene is built: its vertices lie on the true surface and carry the true surface normal,
+//! and the triangles go behind the mesh's BVH, so a ray costs what a mesh ray costs whatever
+//! the `type`. `flatness` lets POV-Ray stop subdividing early where a piece is flat; lancer
+//! always subdivides fully, which is at least as close to the surface (see
+//! docs/implicit-objects.md). A patch has no inside: in CSG it is never "inside" anything and
+//! nothing is inside it, as a mesh without `inside_vector`.
+
+use crate::math::DVec3;
+use crate::scene::desc::{MeshData, MeshTriangle};
+
+/// Most subdivision levels per direction: 2^8 = 256 pieces already put several pieces in one
+/// pixel for any patch that fits in a picture; more would only cost memory.
+pub const MAX_STEPS: u32 = 8;
+
+/// Bernstein weights of the cubic and of its derivative at `t`.
+fn bernstein(t: f64) -> ([f64; 4], [f64; 4]) {
+    let s = 1.0 - t;
+    (
+        [s * s * s, 3.0 * t * s * s, 3.0 * t * t * s, t * t * t],
+        [
+            -3.0 * s * s,
+            3.0 * s * s - 6.0 * t * s,
+            6.0 * t * s - 3.0 * t * t,
+            3.0 * t * t,
+        ],
+    )
+}
+
+/// The point and partial derivatives at (u, v); `p[row * 4 + col]`, u runs along a row.
+fn eval(p: &[DVec3; 16], u: f64, v: f64) -> (DVec3, DVec3, DVec3) {
+    let (bu, du) = bernstein(u);
+    let (bv, dv) = bernstein(v);
+    let (mut s, mut su, mut sv) = (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO);
+    for r in 0..4 {
+        for c in 0..4 {
+            let q = p[r * 4 + c];
+            s += q * (bu[c] * bv[r]);
+            su += q * (du[c] * bv[r]);
+            sv += q * (bu[c] * dv[r]);
+        }
+    }
+    (s, su, sv)
+}
+
+/// The surface normal at (u, v). Where a patch edge collapses to a point (the teapot's lid
+/// and bottom) one partial derivative vanishes; the normal is then taken a little way into
+/// the patch, where it is defined and tends to the limit.
+fn normal_at(p: &[DVec3; 16], u: f64, v: f64) -> DVec3 {
+    let (_, su, sv) = eval(p, u, v);
+    let n = su.cross(sv);
+    let scale = su.length_squared().max(sv.length_squared());
+    if n.length_squared() > 1e-20 * scale * scale && n.is_finite() {
+        return n;
+    }
+    for d in [1e-6, 1e-4, 1e-2] {
+        let (uu, vv) = (u + (0.5 - u) * d, v + (0.5 - v) * d);
+        let (_, su, sv) = eval(p, uu, vv);
+        let n = su.cross(sv);
+        if n.length_squared() > 0.0 && n.is_finite() {
+            return n;
+        }
+    }
+    DVec3::ZERO
+}
+
+/// The patch as smooth triangles, `2^u_steps` pieces along u and `2^v_steps` along v (both
+/// at most `MAX_STEPS`).
+pub fn tessellate(p: &[DVec3; 16], u_steps: u32, v_steps: u32) -> MeshData {
+    let nu = 1usize << u_steps.min(MAX_STEPS);
+    let nv = 1usize << v_steps.min(MAX_STEPS);
+    let mut vertices = Vec::with_capacity((nu + 1) * (nv + 1));
+    let mut normals = Vec::with_capacity((nu + 1) * (nv + 1));
+    for j in 0..=nv {
+        let v = j as f64 / nv as f64;
+        for i in 0..=nu {
+            let u = i as f64 / nu as f64;
+            vertices.push(eval(p, u, v).0);
+            normals.push(normal_at(p, u, v));
+        }
+    }
+    let idx = |i: usize, j: usize| (j * (nu + 1) + i) as u32;
+    let mut triangles = Vec::with_capacity(nu * nv * 2);
+    for j in 0..nv {
+        for i in 0..nu {
+            let (a, b, c, d) = (idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
+            for v in [[a, b, c], [a, c, d]] {
+                triangles.push(MeshTriangle {
+                    v,
+                    n: Some(v),
+                    texture: None,
+                });
+            }
+        }
+    }
+    MeshData {
+        vertices,
+        normals,
+        triangles,
+        textures: Vec::new(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::mesh::Mesh;
+    use crate::geom::Shape;
+    use crate::math::Ray;
+    use std::sync::Arc;
+
+    fn flat() -> [DVec3; 16] {
+        std::array::from_fn(|k| DVec3::new((k % 4) as f64, (k / 4) as f64, 0.0))
+    }
+
+    #[test]
+    fn corners_are_on_the_patch_and_flat_patch_is_flat() {
+        let p = flat();
+        let m = tessellate(&p, 2, 3);
+        assert_eq!(m.triangles.len(), 4 * 8 * 2);
+        assert_eq!(m.vertices[0], p[0]);
+        assert_eq!(*m.vertices.last().unwrap(), p[15]);
+        for n in &m.normals {
+            assert!(n.normalize().abs_diff_eq(DVec3::Z, 1e-12));
+        }
+    }
+
+    #[test]
+    fn a_ray_hits_the_patch_and_nothing_is_inside() {
+        let mesh = Mesh::new(Arc::new(tessellate(&flat(), 3, 3)));
+        let ray = Ray::new(DVec3::new(1.2, 1.7, -5.0), DVec3::Z);
+        let mut hits = Vec::new();
+        mesh.intersect_all(&ray, &mut hits);
+        assert_eq!(hits.len(), 1);
+        assert!((hits[0].t - 5.0).abs() < 1e-9);
+        assert!(!mesh.inside(DVec3::new(1.0, 1.0, 0.0)));
+    }
+
+    #[test]
+    fn collapsed_edge_still_has_a_normal() {
+        // A dome: the whole first row is one point.
+        let mut p = flat();
+        for q in p.iter_mut().take(4) {
+            *q = DVec3::new(1.5, 0.0, 1.0);
+        }
+        let n = normal_at(&p, 0.3, 0.0);
+        assert!(n.length() > 0.0 && n.is_finite());
+    }
+}
