@@ -142,6 +142,9 @@ impl Parser {
                 "noise_generator" => {
                     let v = self.parse_float()?;
                     self.scene.global.noise_generator = (v as i64).clamp(1, 3) as u8;
+                    if self.scene.global.noise_generator == 3 {
+                        self.warn_noise_generator_3(t.span);
+                    }
                 }
                 "max_intersections" | "number_of_waves" | "mm_per_unit" | "subsurface" => {
                     if self.peek_sym()? == Some(Sym::LBrace) {
