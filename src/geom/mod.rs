@@ -81,6 +81,7 @@ pub mod isosurface;
 pub mod julia;
 pub mod lathe;
 pub mod mesh;
+pub mod ovus;
 pub mod plane;
 pub mod poly;
 pub mod polygon;

@@ -44,7 +44,7 @@ impl Torus {
     }
 
     /// Crossings as t values (ray units), increasing, with t > EPSILON.
-    fn crossings(&self, ray: &Ray, out: &mut [f64; 4]) -> usize {
+    pub fn crossings(&self, ray: &Ray, out: &mut [f64; 4]) -> usize {
         if self.empty {
             return 0;
         }

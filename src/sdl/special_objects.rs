@@ -1,10 +1,11 @@
-//! Reading POV-Ray's `bicubic_patch`, `julia_fractal`, `parametric` and `ovus` (the geometry
-//! is in `geom::bicubic`, `geom::julia`, `geom::parametric` and `geom::ovus`).
+//! Reading POV-Ray's `bicubic_patch`, `julia_fractal` and `ovus` (the geometry is in
+//! `geom::bicubic`, `geom::julia` and `geom::ovus`).
 
 use std::sync::Arc;
 
 use crate::geom::bicubic::{tessellate, MAX_STEPS};
 use crate::geom::julia::{Algebra, Julia, JuliaFn};
+use crate::geom::ovus::Ovus;
 use crate::math::DVec3;
 use crate::scene::desc::{ObjectDesc, ShapeDesc};
 
@@ -221,5 +222,23 @@ impl Parser {
             slice,
         )));
         Ok(obj)
+    }
+
+    /// `ovus { Bottom_radius, Top_radius modifiers }`.
+    pub(super) fn ovus(&mut self, _s: Span) -> PResult<ObjectDesc> {
+        let open = self.open_brace("ovus")?;
+        let span = self.next_span()?;
+        let bottom = self.parse_float()?;
+        self.skip_optional_comma()?;
+        let top = self.parse_float()?;
+        if top.abs() >= 2.0 * bottom.abs() {
+            // povray's own warning, word for word but for its spelling.
+            self.warn(
+                span,
+                "ovus second radius should be less than twice first radius; substituting a sphere, as it would be identical and simpler",
+            );
+        }
+        let shape = ShapeDesc::Prebuilt(Arc::new(Ovus::new(bottom, top)));
+        self.finish_object(ObjectDesc::new(shape), open)
     }
 }
