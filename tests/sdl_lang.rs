@@ -236,6 +236,27 @@ fn macro_parameters_bind_lone_identifiers_by_reference() {
     assert_eq!(radii(&s), vec![5.0, 5.0, 6.0, 10.0, 1.0, 3.0, 8.0]);
 }
 
+/// macro2.pov's `Turn_Me`: the `#declare` that ends the macro body has no semicolon, so the
+/// body's `#end` closes the value; the parameter must still be assigned by reference.
+/// POV-Ray 3.7 prints "A=2" and "B=2" for the two calls.
+#[test]
+fn declare_ending_a_macro_body_still_assigns_by_reference() {
+    let s = parse(
+        "#macro Bump(P) #declare P = P + 1 #end
+         #declare A = 1; Bump(A) sphere { 0, A }
+         #macro Move(S) #declare S = object { S translate y } #end
+         #declare B = sphere { 0, 1 } Move(B) object { B }",
+    );
+    assert_eq!(radii(&s)[0], 2.0);
+    assert_eq!(s.objects.len(), 2);
+    let moved = s.objects[1]
+        .transform
+        .get()
+        .m
+        .transform_point3(glam::DVec3::ZERO);
+    assert_eq!(moved, glam::DVec3::Y);
+}
+
 // ---- strings ----
 
 /// Each `Check` compares with the text POV-Ray 3.7.0 printed for the same call; a mismatch

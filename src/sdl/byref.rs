@@ -74,38 +74,59 @@ impl Parser {
     /// `#local` binds in the innermost table and `#declare` updates a local that already holds
     /// the name (so loops in macros work) or binds globally.
     pub(super) fn assign_var(&mut self, name: Rc<str>, v: Value, local: bool) -> PResult<()> {
-        let depth = self.scopes.len();
-        self.assign_var_at(name, v, local, depth)
+        let target = self.assign_target(&name, local);
+        self.assign_to(target, name, v)
     }
 
-    /// Like `assign_var`, as seen from the scopes `..depth`: a declaration whose value came out
-    /// of a macro (`#local P = M();`) ends while the macro's scope is still open, and must
-    /// not land in it.
-    pub(super) fn assign_var_at(
-        &mut self,
-        name: Rc<str>,
-        v: Value,
-        local: bool,
-        depth: usize,
-    ) -> PResult<()> {
-        let depth = depth.clamp(1, self.scopes.len());
+    /// Where `#declare`/`#local` of `name` writes, decided when the declaration starts: its
+    /// value may run past the end of a macro body (an object declared without a semicolon as
+    /// the body's last statement: language/macros/macro2.pov), which closes the macro's scope
+    /// and its by-reference parameters with it; and a value that came out of a macro
+    /// (`#local P = M();`) must not land in that macro's scope.
+    pub(super) fn assign_target(&self, name: &str, local: bool) -> AssignTarget {
+        let depth = self.scopes.len().max(1);
         let idx = if local {
             depth - 1
         } else {
             (1..depth)
                 .rev()
-                .find(|&i| self.scopes[i].contains_key(&name))
+                .find(|&i| self.scopes[i].contains_key(name))
                 .unwrap_or(0)
         };
-        if let Some(Value::Ref(r)) = self.scopes[idx].get(&name) {
-            let r = (**r).clone();
-            if r.path.is_empty() {
-                self.scopes[r.scope].insert(r.name, v);
-                return Ok(());
-            }
-            return self.set_element(&r, Some(v));
+        match self.scopes[idx].get(name) {
+            Some(Value::Ref(r)) => AssignTarget::Ref((**r).clone()),
+            _ => AssignTarget::Scope(idx),
         }
-        self.scopes[idx].insert(name, v);
-        Ok(())
     }
+
+    pub(super) fn assign_to(
+        &mut self,
+        target: AssignTarget,
+        name: Rc<str>,
+        v: Value,
+    ) -> PResult<()> {
+        match target {
+            AssignTarget::Ref(r) if r.path.is_empty() => {
+                if let Some(scope) = self.scopes.get_mut(r.scope) {
+                    scope.insert(r.name, v);
+                }
+                Ok(())
+            }
+            AssignTarget::Ref(r) => self.set_element(&r, Some(v)),
+            // A local of a macro whose body ended while the value was read: gone with it.
+            AssignTarget::Scope(idx) if idx >= self.scopes.len() => Ok(()),
+            AssignTarget::Scope(idx) => {
+                self.scopes[idx].insert(name, v);
+                Ok(())
+            }
+        }
+    }
+}
+
+/// Where a declaration writes (see `Parser::assign_target`).
+pub(super) enum AssignTarget {
+    /// Through a by-reference macro parameter to the caller's variable or element.
+    Ref(ElemPath),
+    /// Into the symbol table at this depth.
+    Scope(usize),
 }

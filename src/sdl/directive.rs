@@ -254,7 +254,7 @@ impl Parser {
         self.expect_sym_with(Sym::Eq, || format!("after '{name}' in the declaration"))?;
         // Warnings from identifiers used before this declaration belong where they were used.
         self.flush_released();
-        let depth = self.scopes.len();
+        let target = self.assign_target(&name, local);
         let first_warning = self.warnings.len();
         let v = self.parse_rvalue()?;
         self.flush_released();
@@ -264,7 +264,7 @@ impl Parser {
         if self.raw_peek_sym()? == Some(Sym::Semi) {
             self.advance();
         }
-        self.assign_var_at(name, v, local, depth)
+        self.assign_to(target, name, v)
     }
 
     /// The right-hand side of a declaration or a macro argument: anything an identifier can hold.
