@@ -177,6 +177,8 @@ pub fn slope_height(map: &[(f64, f64, f64)], v: f64) -> f64 {
 }
 
 /// Dents: bumps whose depth is the cube of the noise, so most of the surface stays smooth.
+/// Equals povray's normals to one 16-bit step for noise generators 1 and 2; with generator 3
+/// povray's depth differs (docs/povray-behaviour.md, Normals).
 fn dents(pat: &Pattern, lp: DVec3, ln: DVec3, amount: f64) -> DVec3 {
     let q = pattern::warped(pat, lp);
     let gen = pat.noise_generator;
@@ -184,7 +186,8 @@ fn dents(pat: &Pattern, lp: DVec3, ln: DVec3, amount: f64) -> DVec3 {
     ln + noise::dnoise(q, gen) * (amount * v * v * v)
 }
 
-/// Wrinkles: ten octaves of vector noise, each twice as fine and half as strong.
+/// Wrinkles: ten octaves of vector noise, each twice as fine and half as strong (equal to
+/// povray's normals to one 16-bit step, probe `normal_noise`).
 fn wrinkles(pat: &Pattern, lp: DVec3, ln: DVec3, amount: f64) -> DVec3 {
     let q = pattern::warped(pat, lp);
     let gen = pat.noise_generator;
