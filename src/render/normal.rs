@@ -207,9 +207,10 @@ fn wrinkles(pat: &Pattern, lp: DVec3, ln: DVec3, amount: f64) -> DVec3 {
 /// lancer's normals equal povray's to the 16-bit step (scripts/measure_waves.py).
 fn waves(pat: &Pattern, special: Special, lp: DVec3, ln: DVec3, amount: f64) -> DVec3 {
     let q = pattern::warped(pat, lp);
-    let n = pattern::WAVE_SOURCES.len() as f64;
+    let sources = &pattern::WAVE_SOURCES[..pattern::wave_count(pat)];
+    let n = sources.len() as f64;
     let mut sum = DVec3::ZERO;
-    for (c, f) in pattern::WAVE_SOURCES {
+    for &(c, f) in sources {
         let d = q - c;
         let len = d.length();
         if len == 0.0 {

@@ -173,7 +173,7 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
         }
         PatternKind::Wrinkles => noise::wrinkles(q, gen),
         PatternKind::Dents => noise::noise(q, gen).powi(3),
-        PatternKind::Ripples | PatternKind::Waves => waves(pat, q),
+        PatternKind::Ripples(_) | PatternKind::Waves(_) => waves(pat, q),
         PatternKind::Crackle {
             form,
             metric,
@@ -350,15 +350,26 @@ pub const WAVE_SOURCES: [(DVec3, f64); 10] = [
 /// act inside the waves and then once more on the value like any pattern's (measured: both
 /// match povray's 16-bit values only so).
 fn waves(pat: &Pattern, q: DVec3) -> f64 {
+    let sources = &WAVE_SOURCES[..wave_count(pat)];
     let mut sum = 0.0;
-    for (c, f) in WAVE_SOURCES {
+    for &(c, f) in sources {
         let d = (q - c).length();
         sum += match pat.kind {
-            PatternKind::Ripples => (TAU * (d * pat.frequency + pat.phase)).sin(),
+            PatternKind::Ripples(_) => (TAU * (d * pat.frequency + pat.phase)).sin(),
             _ => 0.4 / f * (TAU * (f * d * pat.frequency + pat.phase)).sin(),
         };
     }
-    0.5 + 0.5 * sum / WAVE_SOURCES.len() as f64
+    0.5 + 0.5 * sum / sources.len() as f64
+}
+
+/// How many wave sources a ripples or waves pattern uses (`number_of_waves`).
+pub fn wave_count(pat: &Pattern) -> usize {
+    match pat.kind {
+        PatternKind::Ripples(n) | PatternKind::Waves(n) => {
+            (n as usize).clamp(1, WAVE_SOURCES.len())
+        }
+        _ => WAVE_SOURCES.len(),
+    }
 }
 
 /// Crackle: `form` weighs the distances to the nearest three of one random point per unit

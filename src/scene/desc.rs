@@ -63,6 +63,8 @@ pub struct GlobalSettings {
     pub ambient_light: DVec3,
     /// `noise_generator` for patterns that do not name their own.
     pub noise_generator: u8,
+    /// `number_of_waves`: how many wave sources ripples and waves read after it (1 to 10).
+    pub number_of_waves: u8,
 }
 
 impl Default for GlobalSettings {
@@ -73,6 +75,7 @@ impl Default for GlobalSettings {
             adc_bailout: 1.0 / 255.0,
             ambient_light: DVec3::ONE,
             noise_generator: 2,
+            number_of_waves: 10,
         }
     }
 }

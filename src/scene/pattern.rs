@@ -97,8 +97,9 @@ pub enum PatternKind {
     },
     Wrinkles,
     Dents,
-    Ripples,
-    Waves,
+    /// Ripples and waves from the first N (`number_of_waves`, at most 10) wave sources.
+    Ripples(u8),
+    Waves(u8),
     Crackle {
         form: DVec3,
         metric: f64,

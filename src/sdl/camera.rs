@@ -146,7 +146,14 @@ impl Parser {
                         self.warn_noise_generator_3(t.span);
                     }
                 }
-                "max_intersections" | "number_of_waves" | "mm_per_unit" | "subsurface" => {
+                "number_of_waves" => {
+                    let v = self.parse_float()?;
+                    if v > 10.0 {
+                        self.unsupported("number_of_waves above 10 (10 are used)", t.span);
+                    }
+                    self.scene.global.number_of_waves = v.clamp(1.0, 10.0) as u8;
+                }
+                "max_intersections" | "mm_per_unit" | "subsurface" => {
                     if self.peek_sym()? == Some(Sym::LBrace) {
                         self.skip_block()?;
                     } else {

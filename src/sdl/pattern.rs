@@ -179,8 +179,8 @@ impl Parser {
             "agate" => PatternKind::Agate { turb: 1.0 },
             "wrinkles" => PatternKind::Wrinkles,
             "dents" => PatternKind::Dents,
-            "ripples" => PatternKind::Ripples,
-            "waves" => PatternKind::Waves,
+            "ripples" => PatternKind::Ripples(self.scene.global.number_of_waves),
+            "waves" => PatternKind::Waves(self.scene.global.number_of_waves),
             "crackle" => PatternKind::Crackle {
                 form: DVec3::new(-1.0, 1.0, 0.0),
                 metric: 2.0,
