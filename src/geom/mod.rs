@@ -54,6 +54,11 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
     fn inside(&self, p: DVec3) -> bool;
     /// Outward normal at a point the shape reported, not necessarily unit length.
     fn normal(&self, p: DVec3, hit: &Hit) -> DVec3;
+    /// The surface's (u, v) texture coordinates at a point it reported, for `uv_mapping`;
+    /// None for shapes POV-Ray 3.7 gives no uv coordinates.
+    fn uv(&self, _p: DVec3, _hit: &Hit) -> Option<[f64; 2]> {
+        None
+    }
 }
 
 pub mod algebraic;
