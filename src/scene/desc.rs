@@ -381,6 +381,8 @@ pub struct MeshData {
     /// Per-vertex normals for smooth triangles; empty when the mesh is flat.
     pub normals: Vec<DVec3>,
     pub triangles: Vec<MeshTriangle>,
+    /// Texture coordinates (`uv_vectors`) for uv_mapping.
+    pub uvs: Vec<[f64; 2]>,
     /// Textures named inside the mesh per triangle (index into this list).
     pub textures: Vec<Texture>,
 }
@@ -391,6 +393,8 @@ pub struct MeshTriangle {
     /// Indices into `MeshData::normals` for a smooth triangle.
     pub n: Option<[u32; 3]>,
     pub texture: Option<u32>,
+    /// Indices into `MeshData::uvs`, when the triangle has texture coordinates.
+    pub uv: Option<[u32; 3]>,
 }
 
 #[derive(Clone, Debug)]
