@@ -118,6 +118,20 @@ impl Shape for Mesh {
             None => geometric,
         }
     }
+
+    /// The triangle's uv_vectors interpolated by the hit's barycentrics.
+    fn uv(&self, _p: DVec3, hit: &Hit) -> Option<[f64; 2]> {
+        let t = self.data.triangles.get(hit.part as usize)?;
+        let get = |k: u32| self.data.uvs.get(k as usize).copied();
+        let idx = t.uv?;
+        let (a, b, c) = (get(idx[0])?, get(idx[1])?, get(idx[2])?);
+        let [u, v] = hit.uv;
+        let w = 1.0 - u - v;
+        Some([
+            a[0] * w + b[0] * u + c[0] * v,
+            a[1] * w + b[1] * u + c[1] * v,
+        ])
+    }
 }
 
 #[cfg(test)]
@@ -187,12 +201,14 @@ mod tests {
             v: t,
             n: smooth.then_some(t),
             texture: Some(i as u32 % 3),
+            uv: None,
         });
         MeshData {
             normals: if smooth { v.clone() } else { vec![] },
             vertices: v,
             triangles: triangles.collect(),
             textures: vec![],
+            uvs: vec![],
         }
     }
 
@@ -286,19 +302,23 @@ mod tests {
                     v: [0, 1, 3],
                     n: None,
                     texture: None,
+                    uv: None,
                 },
                 MeshTriangle {
                     v: [0, 1, 9],
                     n: None,
                     texture: None,
+                    uv: None,
                 },
                 MeshTriangle {
                     v: [0, 1, 2],
                     n: Some([0, 0, 7]),
                     texture: None,
+                    uv: None,
                 },
             ],
             textures: vec![],
+            uvs: vec![],
         };
         let mesh = Mesh::new(Arc::new(bad));
         let h = mesh

@@ -65,6 +65,11 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
     fn slab_bounds(&self) -> Aabb {
         self.bounds()
     }
+    /// The surface's (u, v) texture coordinates at a point it reported, for `uv_mapping`;
+    /// None for shapes POV-Ray 3.7 gives no uv coordinates.
+    fn uv(&self, _p: DVec3, _hit: &Hit) -> Option<[f64; 2]> {
+        None
+    }
 }
 
 pub mod algebraic;

@@ -87,6 +87,16 @@ impl Shape for Sphere {
     fn normal(&self, p: DVec3, _hit: &Hit) -> DVec3 {
         (p - self.center) / self.radius.max(f64::MIN_POSITIVE)
     }
+    /// Longitude and latitude, measured against povray (tests/probes/uv_sphere.pov): u turns
+    /// from +x towards +z (0 at +x, 0.75 at -z), v runs from 0 at the south pole to 1 at the
+    /// north.
+    fn uv(&self, p: DVec3, _hit: &Hit) -> Option<[f64; 2]> {
+        let d = (p - self.center).normalize_or_zero();
+        let u = d.z.atan2(d.x) / std::f64::consts::TAU;
+        let u = if u < 0.0 { u + 1.0 } else { u };
+        let v = d.y.clamp(-1.0, 1.0).asin() / std::f64::consts::PI + 0.5;
+        Some([u, v])
+    }
 }
 
 #[cfg(test)]

@@ -169,8 +169,15 @@ impl<'a> Tracer<'a> {
             obj.all_hits(&ray, dist, ctx);
             'hits: for h in &ctx.surface[start..] {
                 // Through each layer of a layered texture in turn.
-                for layer in h.obj.texture_at(h).layers() {
-                    let c = texture_map::color_at(layer, ray.at(h.t), false);
+                let top = h.obj.texture_at(h);
+                let hp = ray.at(h.t);
+                let uv = if texture_map::uses_uv(top) {
+                    h.obj.uv_point(hp, h)
+                } else {
+                    None
+                };
+                for layer in top.layers() {
+                    let c = texture_map::color_at(layer, hp, uv, false);
                     if c.is_opaque() {
                         att = DVec3::ZERO;
                         break 'hits;

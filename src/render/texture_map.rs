@@ -16,33 +16,45 @@ use super::{pattern, pigment};
 /// made of at world point `p`: itself when it is plain, one listed texture for a block
 /// pattern, the one or two `texture_map` entries around the pattern's value (nested maps
 /// recursively). `space` takes the plain texture's parent space to the world (its normal is
-/// relative to it). The weights add up to `weight`; `quick` uses quick colours.
+/// relative to it). The weights add up to `weight`; `quick` uses quick colours. `uv` is the
+/// surface's (u, v, 0) where it has one, which `uv_mapping` textures and pigments use
+/// instead of `p`.
 pub fn blend(
     tex: &Texture,
     p: DVec3,
+    uv: Option<DVec3>,
     quick: bool,
     weight: f64,
     f: &mut dyn FnMut(Rgbft, &Texture, &Transform, f64),
 ) {
-    blend_in(tex, p, &Transform::IDENTITY, quick, weight, f)
+    blend_in(tex, p, uv, &Transform::IDENTITY, quick, weight, f)
 }
 
 fn blend_in(
     tex: &Texture,
     p: DVec3,
+    uv: Option<DVec3>,
     space: &Transform,
     quick: bool,
     weight: f64,
     f: &mut dyn FnMut(Rgbft, &Texture, &Transform, f64),
 ) {
+    // From a uv-mapped texture down, everything is evaluated at the uv point.
+    let p = match uv {
+        Some(uvp) if tex.uv_mapping => uvp,
+        _ => p,
+    };
     let Some(tp) = &tex.pattern else {
         let c = match tex.pigment.quick {
             Some(q) if quick => q,
-            _ => pigment::eval(&tex.pigment, p),
+            _ => pigment::eval(&tex.pigment, pigment_point(tex, p, uv)),
         };
         f(c, tex, space, weight);
         return;
     };
+    // Below a uv-mapped texture the uv point has become the point and goes through the
+    // pattern's transform like any other.
+    let uv_inner = if tex.uv_mapping { uv.map(|_| p) } else { uv };
     let (lp, inner);
     let space = if tp.transform.is_identity() {
         lp = p;
@@ -53,7 +65,7 @@ fn blend_in(
         &inner
     };
     let blend = |t: &Texture, w: f64, f: &mut dyn FnMut(Rgbft, &Texture, &Transform, f64)| {
-        blend_in(t, lp, space, quick, w, f)
+        blend_in(t, lp, uv_inner, space, quick, w, f)
     };
     match &tp.entries {
         TextureEntries::List(items) => {
@@ -100,13 +112,34 @@ fn blend_in(
     }
 }
 
+/// Where a plain texture's pigment is evaluated: its uv point if it is uv-mapped.
+fn pigment_point(tex: &Texture, p: DVec3, uv: Option<DVec3>) -> DVec3 {
+    match uv {
+        Some(uvp) if tex.pigment.uv_mapping => uvp,
+        _ => p,
+    }
+}
+
+/// Whether any part of a texture (all its layers) is uv-mapped, so the shading code knows to
+/// ask the shape for its uv coordinates.
+pub fn uses_uv(tex: &Texture) -> bool {
+    tex.layers().any(|t| {
+        t.uv_mapping
+            || t.pigment.uv_mapping
+            || t.pattern.as_ref().is_some_and(|tp| match &tp.entries {
+                TextureEntries::List(items) => items.iter().any(uses_uv),
+                TextureEntries::Map(map) => map.iter().any(|(_, t)| uses_uv(t)),
+            })
+    })
+}
+
 /// The colour alone (unlit pictures, light passing through in shadow rays).
-pub fn color_at(tex: &Texture, p: DVec3, quick: bool) -> Rgbft {
+pub fn color_at(tex: &Texture, p: DVec3, uv: Option<DVec3>, quick: bool) -> Rgbft {
     if tex.pattern.is_none() && !quick {
-        return pigment::eval(&tex.pigment, p);
+        return pigment::eval(&tex.pigment, pigment_point(tex, p, uv));
     }
     let mut sum = [0.0; 5];
-    blend(tex, p, quick, 1.0, &mut |c, _, _, w| {
+    blend(tex, p, uv, quick, 1.0, &mut |c, _, _, w| {
         for (s, v) in sum.iter_mut().zip(c.to_array()) {
             *s += v * w;
         }

@@ -274,9 +274,14 @@ impl<'a> Tracer<'a> {
         let entering = n.dot(dir) < 0.0;
         let nf = if entering { n } else { -n };
         let top = obj.texture_at(h);
+        let uv = if texture_map::uses_uv(top) {
+            obj.uv_point(p, h)
+        } else {
+            None
+        };
         if !q.lighting {
             return Seen {
-                rgb: texture_map::color_at(top, p, q.quick_colors).rgb,
+                rgb: texture_map::color_at(top, p, uv, q.quick_colors).rgb,
                 clear: 0.0,
             };
         }
@@ -312,7 +317,7 @@ impl<'a> Tracer<'a> {
             // A patterned texture is shaded as the plain textures it is made of here, each
             // weighted (texture_map blends); a plain one is itself with weight 1.
             let mut layer_c = [0.0; 5];
-            texture_map::blend(tex, p, q.quick_colors, 1.0, &mut |c, part, space, w| {
+            texture_map::blend(tex, p, uv, q.quick_colors, 1.0, &mut |c, part, space, w| {
                 let fin = &part.finish;
                 let (pn, pmirror, pcos) = match &part.normal {
                     Some(nd) if normal::perturbs(part.normal.as_deref()) => {

@@ -258,7 +258,7 @@ impl ObjectDesc {
     /// Applies a transform to the object, its attached texture and, for CSG, every child.
     pub fn apply_transform(&mut self, t: &Transform) {
         if let Some(tex) = &mut self.texture {
-            Arc::make_mut(tex).apply_transform(t);
+            Arc::make_mut(tex).apply_object_transform(t);
         }
         for c in &mut self.clipped_by {
             c.apply_transform(t);
@@ -271,7 +271,7 @@ impl ObjectDesc {
             }
             ShapeDesc::Blob { textures, .. } => {
                 for tex in textures.iter_mut().flatten() {
-                    tex.apply_transform(t);
+                    tex.apply_object_transform(t);
                 }
                 self.transform.apply(t);
             }
@@ -387,6 +387,8 @@ pub struct MeshData {
     /// Per-vertex normals for smooth triangles; empty when the mesh is flat.
     pub normals: Vec<DVec3>,
     pub triangles: Vec<MeshTriangle>,
+    /// Texture coordinates (`uv_vectors`) for uv_mapping.
+    pub uvs: Vec<[f64; 2]>,
     /// Textures named inside the mesh per triangle (index into this list).
     pub textures: Vec<Texture>,
 }
@@ -397,6 +399,8 @@ pub struct MeshTriangle {
     /// Indices into `MeshData::normals` for a smooth triangle.
     pub n: Option<[u32; 3]>,
     pub texture: Option<u32>,
+    /// Indices into `MeshData::uvs`, when the triangle has texture coordinates.
+    pub uv: Option<[u32; 3]>,
 }
 
 #[derive(Clone, Debug)]
@@ -409,6 +413,8 @@ pub struct Texture {
     /// A patterned texture (`texture { checker texture {..} texture {..} }`, `texture_map`):
     /// when set, it decides the pigment and finish and this layer's own are unused.
     pub pattern: Option<Box<TexturePattern>>,
+    /// `uv_mapping` on the texture: all of it is evaluated at the surface's (u, v, 0).
+    pub uv_mapping: bool,
 }
 
 /// The pattern of a patterned texture and the textures it chooses or blends between, which
@@ -437,6 +443,7 @@ impl Default for Texture {
             finish: Finish::default(),
             under: None,
             pattern: None,
+            uv_mapping: false,
         }
     }
 }
@@ -452,6 +459,26 @@ impl Texture {
         }
         if let Some(u) = &mut self.under {
             u.apply_transform(t);
+        }
+    }
+
+    /// The object's own transform, which moves its texture with it except where the texture
+    /// is uv-mapped: uv coordinates travel with the surface already, and povray leaves a
+    /// uv-mapped pattern unmoved by the object's transforms (measured: tests/probes/uv_*).
+    pub fn apply_object_transform(&mut self, t: &Transform) {
+        if !self.uv_mapping {
+            if !self.pigment.uv_mapping {
+                self.pigment.apply_transform(t);
+            }
+            if let Some(tp) = &mut self.pattern {
+                tp.transform = tp.transform.then(t);
+            }
+            if let Some(n) = &mut self.normal {
+                n.apply_transform(t);
+            }
+        }
+        if let Some(u) = &mut self.under {
+            u.apply_object_transform(t);
         }
     }
 
@@ -478,6 +505,8 @@ pub struct Pigment {
     pub transform: Xform,
     /// `quick_color`: what `+Q5` and below show instead of the pigment.
     pub quick: Option<Rgbft>,
+    /// `uv_mapping`: the pattern is evaluated at the surface's (u, v, 0), not at the point.
+    pub uv_mapping: bool,
 }
 
 impl Pigment {
@@ -486,6 +515,7 @@ impl Pigment {
             kind: PigmentKind::Solid(c),
             transform: Xform::IDENTITY,
             quick: None,
+            uv_mapping: false,
         }
     }
     pub fn apply_transform(&mut self, t: &Transform) {

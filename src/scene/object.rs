@@ -448,6 +448,16 @@ impl Object {
         }
     }
 
+    /// The shape's (u, v, 0) at a hit for `uv_mapping`, or None where the shape has no uv
+    /// coordinates.
+    pub fn uv_point(&self, p: DVec3, h: &SurfaceHit) -> Option<DVec3> {
+        let ObjKind::Shape(s) = &self.kind else {
+            return None;
+        };
+        let local = self.transform.as_ref().map_or(p, |t| t.inv_point(p));
+        s.uv(local, &h.hit).map(|[u, v]| DVec3::new(u, v, 0.0))
+    }
+
     /// The texture at a hit: a mesh triangle's own texture, a blob component's, else the
     /// object's.
     pub fn texture_at(&self, h: &SurfaceHit) -> &Texture {

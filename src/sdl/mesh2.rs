@@ -16,6 +16,7 @@ impl Parser {
         let mut data = MeshData::default();
         let mut faces: Vec<([u32; 3], Option<u32>)> = Vec::new();
         let mut normal_idx: Option<Vec<[u32; 3]>> = None;
+        let mut uv_idx: Option<Vec<[u32; 3]>> = None;
         let mut face_span = open;
         while let Some(k) = self.peek_ident()? {
             let span = self.next_span()?;
@@ -29,14 +30,17 @@ impl Parser {
                     data.normals = self.vector_list("normal_vectors")?;
                 }
                 "uv_vectors" => {
-                    // Texture coordinates serve uv_mapping, which lancer does not do yet.
                     self.advance();
-                    self.unsupported("uv_vectors", span);
-                    self.vector_list("uv_vectors")?;
+                    data.uvs = self
+                        .vector_list("uv_vectors")?
+                        .into_iter()
+                        .map(|v| [v.x, v.y])
+                        .collect();
                 }
                 "uv_indices" => {
                     self.advance();
-                    self.index_list("uv_indices", false)?;
+                    let list = self.index_list("uv_indices", false)?;
+                    uv_idx = Some(list.into_iter().map(|(v, _)| v).collect());
                 }
                 "texture_list" => {
                     self.advance();
@@ -95,10 +99,19 @@ impl Parser {
                 None => None,
             }
             .filter(|n| n.iter().all(|&k| k < nn));
+            // Texture coordinates likewise follow uv_indices, else the vertex indices.
+            let nu = data.uvs.len() as u32;
+            let uv = match &uv_idx {
+                Some(list) => list.get(i).copied(),
+                None if nu > 0 => Some(*v),
+                None => None,
+            }
+            .filter(|u| u.iter().all(|&k| k < nu));
             data.triangles.push(MeshTriangle {
                 v: *v,
                 n,
                 texture: *tex,
+                uv,
             });
         }
         self.finish_object(ObjectDesc::new(ShapeDesc::Mesh(Arc::new(data))), open)

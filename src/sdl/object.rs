@@ -533,6 +533,7 @@ impl Parser {
                 [nb, nb + 1, nb + 2]
             });
             let mut texture = None;
+            let mut uv = None;
             loop {
                 let t = self.next_tok()?;
                 match &t.tok {
@@ -542,14 +543,15 @@ impl Parser {
                         texture = Some(data.textures.len() as u32 - 1);
                     }
                     Tok::Ident(k) if &**k == "uv_vectors" => {
-                        // Texture coordinates for uv_mapping, which lancer does not do yet.
-                        self.unsupported(k, t.span);
+                        let ub = data.uvs.len() as u32;
                         for i in 0..3 {
                             if i > 0 {
                                 self.skip_optional_comma()?;
                             }
-                            self.parse_expr()?;
+                            let v = self.parse_vector()?;
+                            data.uvs.push([v.x, v.y]);
                         }
+                        uv = Some([ub, ub + 1, ub + 2]);
                     }
                     _ => {
                         return Err(self
@@ -561,6 +563,7 @@ impl Parser {
                 v: [base, base + 1, base + 2],
                 n: normals,
                 texture,
+                uv,
             });
         }
         self.finish_object(ObjectDesc::new(ShapeDesc::Mesh(Arc::new(data))), open)

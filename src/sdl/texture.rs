@@ -20,9 +20,6 @@ const COLOR_KEYWORDS: &[&str] = &[
     "green", "blue",
 ];
 
-/// Pattern modifiers that stand alone.
-const UNSUPPORTED_FLAGS: &[&str] = &["uv_mapping"];
-
 /// What a pigment body has said so far besides its pattern.
 enum Form {
     Solid(Rgbft),
@@ -152,7 +149,7 @@ impl Parser {
                     self.unsupported(k, t.span);
                     self.skip_block()?;
                 }
-                k if UNSUPPORTED_FLAGS.contains(&k) => self.unsupported(k, t.span),
+                "uv_mapping" => p.uv_mapping = true,
                 _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in pigment"))),
             }
         }

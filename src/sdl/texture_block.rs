@@ -77,7 +77,7 @@ impl Parser {
                     let base = tex.normal.take().map(|n| *n);
                     tex.normal = Some(Box::new(self.parse_normal_block_over(base)?));
                 }
-                "uv_mapping" => self.unsupported(k, t.span),
+                "uv_mapping" => tex.uv_mapping = true,
                 "texture_map" => {
                     let weights_optional = tex
                         .pattern
