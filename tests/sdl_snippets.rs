@@ -389,3 +389,26 @@ fn macro_value_ending_inside_an_if_takes_an_operator() {
     );
     assert_eq!(radii(&s), vec![2.0]);
 }
+
+#[test]
+fn uv_mapping_on_a_shape_without_uv_coordinates_warns() {
+    let warned = |src: &str| {
+        let mut p = Parser::new(ParseOptions::default());
+        p.parse_str("t.pov", src).unwrap();
+        p.warnings
+            .iter()
+            .map(|w| w.one_line(&p.sources))
+            .filter(|m| m.contains("uv_mapping"))
+            .collect::<Vec<_>>()
+    };
+    assert!(warned("sphere { 0, 1 pigment { uv_mapping checker } }").is_empty());
+    let w = warned("box { -1, 1 texture { uv_mapping pigment { checker } } }");
+    assert!(w[0].contains("'uv_mapping on box'"), "{w:?}");
+    // A union's members without their own texture take the union's.
+    let w = warned("union { sphere { 0, 1 } torus { 1, 0.2 } pigment { uv_mapping checker } }");
+    assert!(w[0].contains("'uv_mapping on torus'"), "{w:?}");
+    assert!(
+        warned("union { torus { 1, 0.2 pigment { rgb 1 } } pigment { uv_mapping checker } }")
+            .is_empty()
+    );
+}

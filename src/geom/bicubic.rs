@@ -75,12 +75,14 @@ pub fn tessellate(p: &[DVec3; 16], u_steps: u32, v_steps: u32) -> MeshData {
     let nv = 1usize << v_steps.min(MAX_STEPS);
     let mut vertices = Vec::with_capacity((nu + 1) * (nv + 1));
     let mut normals = Vec::with_capacity((nu + 1) * (nv + 1));
+    let mut uvs = Vec::with_capacity((nu + 1) * (nv + 1));
     for j in 0..=nv {
         let v = j as f64 / nv as f64;
         for i in 0..=nu {
             let u = i as f64 / nu as f64;
             vertices.push(eval(p, u, v).0);
             normals.push(normal_at(p, u, v));
+            uvs.push([u, v]);
         }
     }
     let idx = |i: usize, j: usize| (j * (nu + 1) + i) as u32;
@@ -93,6 +95,7 @@ pub fn tessellate(p: &[DVec3; 16], u_steps: u32, v_steps: u32) -> MeshData {
                     v,
                     n: Some(v),
                     texture: None,
+                    uv: Some(v),
                 });
             }
         }
@@ -101,6 +104,7 @@ pub fn tessellate(p: &[DVec3; 16], u_steps: u32, v_steps: u32) -> MeshData {
         vertices,
         normals,
         triangles,
+        uvs,
         textures: Vec::new(),
     }
 }

@@ -123,14 +123,7 @@ fn pigment_point(tex: &Texture, p: DVec3, uv: Option<DVec3>) -> DVec3 {
 /// Whether any part of a texture (all its layers) is uv-mapped, so the shading code knows to
 /// ask the shape for its uv coordinates.
 pub fn uses_uv(tex: &Texture) -> bool {
-    tex.layers().any(|t| {
-        t.uv_mapping
-            || t.pigment.uv_mapping
-            || t.pattern.as_ref().is_some_and(|tp| match &tp.entries {
-                TextureEntries::List(items) => items.iter().any(uses_uv),
-                TextureEntries::Map(map) => map.iter().any(|(_, t)| uses_uv(t)),
-            })
-    })
+    tex.uses_uv()
 }
 
 /// The colour alone (unlit pictures, light passing through in shadow rays).

@@ -92,6 +92,7 @@ impl Parser {
             match &t.tok {
                 Tok::Sym(Sym::RBrace) => {
                     self.advance();
+                    self.warn_uv_without_coordinates(&obj, open);
                     return Ok(obj);
                 }
                 Tok::Ident(k) => {
@@ -106,6 +107,17 @@ impl Parser {
                 }
                 _ => return Err(self.unexpected(&t, "in the object; expected a modifier or '}'")),
             }
+        }
+    }
+
+    /// A uv-mapped texture on a shape lancer has no uv coordinates for is drawn at the 3D
+    /// point instead: said, never silent.
+    fn warn_uv_without_coordinates(&mut self, obj: &ObjectDesc, open: Span) {
+        if !obj.texture.as_ref().is_some_and(|t| t.uses_uv()) {
+            return;
+        }
+        if let Some(shape) = obj.shape.first_without_uv() {
+            self.warn(open, format!("'uv_mapping on {shape}' is not supported by lancer yet: the pattern is evaluated at the 3D point, so the picture will differ from POV-Ray's"));
         }
     }
 

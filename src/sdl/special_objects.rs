@@ -104,8 +104,8 @@ impl Parser {
         Ok(obj)
     }
 
-    /// The four corners' `uv_vectors` of a patch. Texture coordinates serve uv_mapping, which
-    /// lancer does not do yet (that keyword warns where it is used).
+    /// The four corners' `uv_vectors` of a patch, read and not applied: the tessellation
+    /// carries the patch's own (u, v), POV-Ray's default corners.
     fn patch_uv_vectors(&mut self) -> PResult<()> {
         for i in 0..4 {
             if i > 0 {
