@@ -18,8 +18,11 @@ fn per_object_types_stay_small() {
         size_of::<ObjectDesc>()
     );
     assert!(size_of::<ShapeDesc>() <= 80, "{}", size_of::<ShapeDesc>());
-    assert!(size_of::<Texture>() <= 320, "{}", size_of::<Texture>());
-    assert!(size_of::<Pigment>() <= 104, "{}", size_of::<Pigment>());
+    // Texture 320 -> 336 and Pigment 104 -> 112 knowingly: `crand` in the finish and the
+    // `uv_mapping` flags of texture and pigment. Objects given a declared texture share it
+    // (test below), so few objects hold a copy of their own.
+    assert!(size_of::<Texture>() <= 336, "{}", size_of::<Texture>());
+    assert!(size_of::<Pigment>() <= 112, "{}", size_of::<Pigment>());
     assert!(size_of::<Object>() <= 176, "{}", size_of::<Object>());
 }
 
