@@ -6,5 +6,5 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --quiet
-target/release/lancer conformance --report docs/conformance \
+target/release/lancer conformance --report docs/conformance --known docs/known-differences.tsv \
   --write-subset tests/conformance/subset.txt "$@"

@@ -88,6 +88,10 @@ pub struct ConformanceArgs {
     /// Cache of POV-Ray's renders (default: ~/.cache/lancer/conformance).
     #[arg(long)]
     pub cache: Option<PathBuf>,
+    /// Known differences (`scene<TAB>reason` per line): the report names the reason beside
+    /// each such scene below SSIM 0.95 and lists the ones left unexplained.
+    #[arg(long, value_name = "FILE")]
+    pub known: Option<PathBuf>,
     /// Scenes rendered at once.
     #[arg(long, default_value_t = 2)]
     pub jobs: usize,

@@ -155,9 +155,18 @@ fn run_conformance(a: ConformanceArgs) -> Result<ExitCode, String> {
             a.povray_timeout,
             a.lancer_timeout
         );
-        let md = report::markdown(&results, &header);
+        let known = a
+            .known
+            .as_deref()
+            .map(report::read_known)
+            .transpose()?
+            .unwrap_or_default();
+        let md = report::markdown(&results, &header, &known);
         lancer::output::write_text_atomic(&prefix.with_extension("md"), &md)?;
-        lancer::output::write_text_atomic(&prefix.with_extension("tsv"), &report::tsv(&results))?;
+        lancer::output::write_text_atomic(
+            &prefix.with_extension("tsv"),
+            &report::tsv(&results, &known),
+        )?;
     }
     if let Some(path) = &a.write_subset {
         write_subset(path, &results, a.subset_seconds)?;

@@ -238,12 +238,57 @@ fn ranked_errors(results: &[SceneResult]) -> Vec<(String, usize)> {
     v
 }
 
+/// Scenes whose difference from POV-Ray has a measured reason that is not a missing keyword
+/// (docs/known-differences.tsv: `scene<TAB>reason`, `#` comments), by scene name.
+pub type Known = BTreeMap<String, String>;
+
+pub fn read_known(path: &std::path::Path) -> Result<Known, String> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    parse_known(&text).map_err(|(line, why)| format!("{}:{line}: {why}", path.display()))
+}
+
+fn parse_known(text: &str) -> Result<Known, (usize, String)> {
+    let mut known = Known::new();
+    for (i, line) in text.lines().enumerate() {
+        let line = line.trim_end();
+        if line.is_empty() || line.starts_with('#') || (i == 0 && line.starts_with("scene\t")) {
+            continue;
+        }
+        let Some((scene, reason)) = line.split_once('\t') else {
+            return Err((i + 1, "expected `scene<TAB>reason`".into()));
+        };
+        if reason.trim().is_empty() {
+            return Err((i + 1, format!("{scene} has no reason")));
+        }
+        known.insert(scene.trim().to_string(), reason.trim().to_string());
+    }
+    Ok(known)
+}
+
+/// Below SSIM 0.95 (or no SSIM at all) while POV-Ray rendered it.
+fn differs(r: &SceneResult) -> bool {
+    !matches!(r.class, Class::Good | Class::PovFailed(_))
+}
+
+/// Scenes below 0.95 that name no reason: no missing keyword, no error, no known difference.
+pub fn unexplained<'a>(results: &'a [SceneResult], known: &Known) -> Vec<&'a SceneResult> {
+    results
+        .iter()
+        .filter(|r| {
+            matches!(r.class, Class::Close | Class::Low)
+                && r.missing.is_empty()
+                && !known.contains_key(&r.name)
+        })
+        .collect()
+}
+
 fn cell(s: &str) -> String {
     s.replace('|', "\\|").replace('\n', " ")
 }
 
 /// The Markdown report: summary, ranked missing keywords, common errors, then every scene.
-pub fn markdown(results: &[SceneResult], header: &str) -> String {
+pub fn markdown(results: &[SceneResult], header: &str, known: &Known) -> String {
     let s = summarize(results);
     let mut md = String::new();
     let _ = writeln!(md, "# Conformance with POV-Ray 3.7\n");
@@ -280,6 +325,26 @@ pub fn markdown(results: &[SceneResult], header: &str) -> String {
     }
     let _ = writeln!(
         md,
+        "\n## Known differences\n\nScenes below SSIM 0.95 whose difference has a measured reason other than a missing keyword (docs/known-differences.tsv).\n\n| scene | SSIM | reason |\n|---|---|---|"
+    );
+    for r in results.iter().filter(|r| differs(r)) {
+        if let Some(why) = known.get(&r.name) {
+            let ssim = r.ssim.map_or(String::new(), |v| format!("{v:.3}"));
+            let _ = writeln!(md, "| {} | {ssim} | {} |", cell(&r.name), cell(why));
+        }
+    }
+    let silent = unexplained(results, known);
+    let _ = writeln!(
+        md,
+        "\n## Unexplained differences\n\nScenes below SSIM 0.95 with no missing keyword, no error and no known reason: lancer draws another picture and says nothing. {}\n",
+        if silent.is_empty() { "None." } else { "Each is a bug to find." }
+    );
+    for r in &silent {
+        let ssim = r.ssim.map_or(String::new(), |v| format!("{v:.3}"));
+        let _ = writeln!(md, "- {} ({ssim})", cell(&r.name));
+    }
+    let _ = writeln!(
+        md,
         "\n## Every scene\n\nTimes are whole-process wall times in seconds; POV-Ray's own phase times are in brackets.\n\n| scene | result | SSIM | lancer s | POV-Ray s | notes |\n|---|---|---|---|---|---|"
     );
     for r in results {
@@ -292,14 +357,17 @@ pub fn markdown(results: &[SceneResult], header: &str) -> String {
             r.lancer_seconds,
             r.pov.seconds,
             r.pov.work_seconds,
-            cell(&notes(r))
+            cell(&notes(r, known))
         );
     }
     md
 }
 
-fn notes(r: &SceneResult) -> String {
+fn notes(r: &SceneResult, known: &Known) -> String {
     let mut parts = Vec::new();
+    if let Some(why) = known.get(&r.name).filter(|_| differs(r)) {
+        parts.push(format!("known: {why}"));
+    }
     match &r.class {
         Class::Error(m) | Class::Panic(m) | Class::PovFailed(m) => parts.push(m.clone()),
         _ => {}
@@ -313,18 +381,23 @@ fn notes(r: &SceneResult) -> String {
 }
 
 /// One row per scene: name, class, ssim, lancer seconds, POV-Ray wall and work seconds,
-/// missing keywords (comma-separated), message.
-pub fn tsv(results: &[SceneResult]) -> String {
-    let mut out =
-        String::from("scene\tresult\tssim\tlancer_s\tpovray_s\tpovray_work_s\tmissing\tmessage\n");
+/// missing keywords (comma-separated), message, known difference (below 0.95 only).
+pub fn tsv(results: &[SceneResult], known: &Known) -> String {
+    let mut out = String::from(
+        "scene\tresult\tssim\tlancer_s\tpovray_s\tpovray_work_s\tmissing\tmessage\tknown\n",
+    );
     for r in results {
         let msg = match &r.class {
             Class::Error(m) | Class::Panic(m) | Class::PovFailed(m) => m.as_str(),
             _ => "",
         };
+        let why = known
+            .get(&r.name)
+            .filter(|_| differs(r))
+            .map_or("", |w| w.as_str());
         let _ = writeln!(
             out,
-            "{}\t{}\t{}\t{:.3}\t{:.3}\t{:.3}\t{}\t{}",
+            "{}\t{}\t{}\t{:.3}\t{:.3}\t{:.3}\t{}\t{}\t{}",
             r.name,
             r.class.label(),
             r.ssim.map_or(String::new(), |v| format!("{v:.4}")),
@@ -332,7 +405,8 @@ pub fn tsv(results: &[SceneResult]) -> String {
             r.pov.seconds,
             r.pov.work_seconds,
             r.missing.join(","),
-            msg.replace(['\t', '\n'], " ")
+            msg.replace(['\t', '\n'], " "),
+            why
         );
     }
     out
@@ -389,5 +463,44 @@ mod tests {
             panic_message(err, Some(101)),
             "index out of bounds (at src/geom/bvh.rs:10:5)"
         );
+    }
+
+    #[test]
+    fn known_differences_name_a_reason_and_the_rest_are_listed() {
+        let known = parse_known("scene\treason\n# measured\na.pov\tcoincident surfaces\n").unwrap();
+        assert_eq!(known["a.pov"], "coincident surfaces");
+        assert_eq!(parse_known("x.pov\n").unwrap_err().0, 1);
+        assert!(parse_known("x.pov\t \n").is_err());
+        let row = |name: &str, class: Class, missing: &[&str]| SceneResult {
+            name: name.into(),
+            class,
+            ssim: Some(0.5),
+            lancer_seconds: 0.0,
+            pov: super::super::cache::PovResult {
+                status: super::super::cache::PovStatus::Ok,
+                seconds: 0.0,
+                work_seconds: 0.0,
+                message: String::new(),
+            },
+            missing: missing.iter().map(|s| s.to_string()).collect(),
+        };
+        let results = [
+            row("a.pov", Class::Low, &[]),
+            row("b.pov", Class::Close, &[]),
+            row("c.pov", Class::Low, &["media"]),
+            row("d.pov", Class::Good, &[]),
+        ];
+        let silent: Vec<&str> = unexplained(&results, &known)
+            .iter()
+            .map(|r| r.name.as_str())
+            .collect();
+        assert_eq!(silent, ["b.pov"]);
+        let md = markdown(&results, "", &known);
+        assert!(
+            md.contains("| a.pov | 0.500 | coincident surfaces |"),
+            "{md}"
+        );
+        assert!(md.contains("- b.pov (0.500)"), "{md}");
+        assert!(tsv(&results, &known).contains("\tcoincident surfaces\n"));
     }
 }
