@@ -412,3 +412,25 @@ fn uv_mapping_on_a_shape_without_uv_coordinates_warns() {
             .is_empty()
     );
 }
+
+#[test]
+fn mesh_camera_reads_its_meshes_and_checks_them() {
+    let s = parse(
+        "#declare M = mesh { triangle { 0, x, y } }
+         camera { mesh_camera { 2, 0 mesh { M } mesh { M translate z } smooth } location 0.1*z }",
+    );
+    let m = s.camera.mesh.as_ref().expect("a mesh camera");
+    assert_eq!(
+        (m.rays_per_pixel, m.distribution, m.meshes.len()),
+        (2, 0, 2)
+    );
+    assert!(m.smooth);
+    let e = parse_err(
+        "#declare M = mesh { triangle { 0, x, y } } camera { mesh_camera { 2 0 mesh { M } } }",
+    );
+    assert!(e.contains("needs a mesh per ray"), "{e}");
+    let e = parse_err("camera { mesh_camera { 1 4 mesh { triangle { 0, x, y } } } }");
+    assert!(e.contains("distribution type must be 0, 1, 2 or 3"), "{e}");
+    let e = parse_err("camera { mesh_camera { 1 0 sphere { 0, 1 } } }");
+    assert!(e.contains("expected a mesh"), "{e}");
+}

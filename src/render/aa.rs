@@ -139,7 +139,6 @@ pub fn method1_refine(
 ) -> (u64, u64) {
     let w = s.width as usize;
     let n = s.aa_depth.max(1);
-    let cam = &tracer.scene.camera;
     let rays = AtomicU64::new(0);
     let camera_rays = AtomicU64::new(0);
     samples
@@ -161,7 +160,7 @@ pub fn method1_refine(
                         let jy = jitter_hash(x as u32, y as u32, 2 * k + 1) * s.jitter;
                         let sx = x as f64 + (i as f64 + 0.5 + jx) / n as f64;
                         let sy = y as f64 + (j as f64 + 0.5 + jy) / n as f64;
-                        let t = tracer.trace_camera(cam.ray(sx, sy), ctx);
+                        let t = tracer.trace_camera_at(sx, sy, ctx);
                         sum.rgb += t.rgb;
                         sum.clear += t.clear;
                     }
@@ -207,7 +206,6 @@ pub fn method2(
 ) -> Pass {
     let (w, h) = (s.width as usize, s.height as usize);
     let measure = Measure::new(tracer, s);
-    let cam = &tracer.scene.camera;
     let rays = AtomicU64::new(0);
     let camera_rays = AtomicU64::new(0);
     // A corner is needed when a pixel it bounds is traced.
@@ -229,7 +227,7 @@ pub fn method2(
             let mut traced = 0;
             for (i, c) in row.iter_mut().enumerate() {
                 if corner_needed(i, j) {
-                    *c = tracer.trace_camera(cam.ray(i as f64, j as f64), ctx);
+                    *c = tracer.trace_camera_at(i as f64, j as f64, ctx);
                     traced += 1;
                 }
             }
@@ -377,9 +375,7 @@ impl Pixel<'_, '_> {
         };
         let sx = self.x as f64 + gi as f64 / n + jx;
         let sy = self.y as f64 + gj as f64 / n + jy;
-        let seen = self
-            .tracer
-            .trace_camera(self.tracer.scene.camera.ray(sx, sy), self.ctx);
+        let seen = self.tracer.trace_camera_at(sx, sy, self.ctx);
         self.traced += 1;
         let s = self.measure.sample(seen);
         self.cache.stamps[k] = self.cache.stamp;

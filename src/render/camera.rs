@@ -4,8 +4,11 @@
 
 use std::f64::consts::PI;
 
+use std::sync::Arc;
+
 use crate::math::{DVec3, Ray};
 use crate::scene::desc::{CameraDesc, Normal, Projection};
+use crate::scene::mesh_camera::MeshCamera;
 
 #[derive(Clone, Debug)]
 pub struct Camera {
@@ -23,6 +26,8 @@ pub struct Camera {
     height: f64,
     /// `normal { ... }` in the camera: bends every ray.
     normal: Option<Normal>,
+    /// A mesh camera replaces the projection: `ray` is not used then.
+    mesh: Option<Arc<MeshCamera>>,
 }
 
 impl Camera {
@@ -94,7 +99,21 @@ impl Camera {
                 .normal
                 .clone()
                 .filter(|n| super::normal::perturbs(Some(n))),
+            mesh: d.mesh.as_ref().map(|m| {
+                Arc::new(MeshCamera::new(
+                    m,
+                    d.location.z,
+                    d.direction.z < -1e-10,
+                    width,
+                    height,
+                ))
+            }),
         }
+    }
+
+    /// The mesh camera, when the scene has one: its pixels take several rays or none.
+    pub fn mesh(&self) -> Option<&MeshCamera> {
+        self.mesh.as_deref()
     }
 
     /// Ray through image position (px, py) in pixels from the top-left corner; pixel centres

@@ -202,8 +202,7 @@ fn first_pass_rows(
                 if !s.inside(x, y) {
                     continue;
                 }
-                let ray = tracer.scene.camera.ray(x as f64 + 0.5, y as f64 + 0.5);
-                *px = tracer.trace_camera(ray, ctx);
+                *px = tracer.trace_camera_at(x as f64 + 0.5, y as f64 + 0.5, ctx);
                 traced += 1;
             }
             camera_rays.fetch_add(traced, Ordering::Relaxed);

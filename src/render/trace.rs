@@ -138,6 +138,28 @@ impl<'a> Tracer<'a> {
         }
     }
 
+    /// What the camera sees at image position (px, py): one ray through the projection, or a
+    /// mesh camera's rays averaged (none: black).
+    pub fn trace_camera_at(&self, px: f64, py: f64, ctx: &mut TraceCtx<'a>) -> Seen {
+        let cam = &self.scene.camera;
+        let Some(mesh) = cam.mesh() else {
+            return self.trace_camera(cam.ray(px, py), ctx);
+        };
+        let mut sum = Seen::default();
+        let mut n = 0u32;
+        mesh.for_each_ray(px, py, |ray| {
+            let s = self.trace_seen(&ray, Path::CAMERA, ctx);
+            sum.rgb += s.rgb;
+            sum.clear += s.clear;
+            n += 1;
+        });
+        if n > 1 {
+            sum.rgb /= n as f64;
+            sum.clear /= n as f64;
+        }
+        sum
+    }
+
     /// `path.straight`: the ray continues the camera ray through transparent surfaces only, so the
     /// background it reaches counts towards the pixel's transparency.
     fn trace_seen(&self, ray: &Ray, path: Path<'a>, ctx: &mut TraceCtx<'a>) -> Seen {

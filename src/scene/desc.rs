@@ -104,6 +104,8 @@ pub struct CameraDesc {
     pub angle_given: bool,
     /// `normal { ... }`: perturbs every camera ray's direction.
     pub normal: Option<Normal>,
+    /// `mesh_camera { }`: rays from mesh faces instead of a projection.
+    pub mesh: Option<Arc<crate::scene::mesh_camera::MeshCameraDesc>>,
 }
 
 impl Default for CameraDesc {
@@ -123,6 +125,7 @@ impl Default for CameraDesc {
             sized: false,
             angle_given: false,
             normal: None,
+            mesh: None,
         }
     }
 }

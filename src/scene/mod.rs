@@ -8,6 +8,7 @@ pub mod gif;
 pub mod height_image;
 pub mod image;
 pub mod light;
+pub mod mesh_camera;
 pub mod object;
 pub mod pattern;
 pub mod shapes;

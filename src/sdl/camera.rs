@@ -2,7 +2,10 @@
 //! reads a whole scene.
 
 use crate::color::Rgbft;
-use crate::scene::desc::{CameraDesc, Pigment, Projection};
+use std::sync::Arc;
+
+use crate::scene::desc::{CameraDesc, Pigment, Projection, ShapeDesc};
+use crate::scene::mesh_camera::MeshCameraDesc;
 
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
@@ -224,10 +227,7 @@ impl Parser {
                         _ => Projection::Perspective,
                     };
                 }
-                "mesh_camera" => {
-                    self.unsupported("mesh_camera (rendered as perspective)", t.span);
-                    self.skip_block()?;
-                }
+                "mesh_camera" => cam.mesh = Some(Arc::new(self.parse_mesh_camera(t.span)?)),
                 "location" => cam.location = self.parse_vector()?,
                 "look_at" => cam.look_at = Some(self.parse_vector()?),
                 "right" => {
@@ -277,6 +277,85 @@ impl Parser {
                 _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in camera"))),
             }
         }
+    }
+
+    /// `mesh_camera { rays distribution [max_distance] mesh {..}... }` after the keyword.
+    fn parse_mesh_camera(&mut self, at: super::source::Span) -> PResult<MeshCameraDesc> {
+        self.expect_sym(Sym::LBrace, "after 'mesh_camera'")?;
+        let rays = self.parse_float()?;
+        self.skip_optional_comma()?;
+        let dist_span = self.peek()?.map_or(at, |t| t.span);
+        let distribution = self.parse_float()?;
+        self.skip_optional_comma()?;
+        if rays.is_nan() || rays < 1.0 {
+            return Err(self.error_at(
+                at,
+                format!("mesh_camera needs at least 1 ray per pixel, not {rays}"),
+            ));
+        }
+        if !(0.0..=3.0).contains(&distribution) || distribution.fract() != 0.0 {
+            return Err(self.error_at(
+                dist_span,
+                format!(
+                    "the mesh_camera distribution type must be 0, 1, 2 or 3, not {distribution}"
+                ),
+            ));
+        }
+        if self.starts_float()? {
+            let span = self.peek()?.map_or(at, |t| t.span);
+            let max = self.parse_float()?;
+            self.skip_optional_comma()?;
+            if max > 1e-10 {
+                self.unsupported("mesh_camera max distance (rays go on for ever)", span);
+            }
+        }
+        let mut meshes = Vec::new();
+        let mut smooth = false;
+        loop {
+            let Some(t) = self.peek()? else {
+                return Err(self.error_at(at, "this mesh_camera is never closed"));
+            };
+            match &t.tok {
+                Tok::Sym(Sym::RBrace) => {
+                    self.advance();
+                    break;
+                }
+                Tok::Ident(k) if &**k == "smooth" => {
+                    self.advance();
+                    smooth = true;
+                }
+                Tok::Ident(k) if matches!(&**k, "mesh" | "mesh2") => {
+                    let Some(obj) = self.parse_object()? else {
+                        return Err(self.error_at(t.span, "expected a mesh"));
+                    };
+                    let ShapeDesc::Mesh(data) = &obj.shape else {
+                        return Err(
+                            self.error_at(t.span, "a mesh_camera takes mesh or mesh2 objects")
+                        );
+                    };
+                    meshes.push((data.clone(), *obj.transform.get()));
+                }
+                _ => {
+                    return Err(self
+                        .unexpected(&t, "in mesh_camera; expected a mesh, mesh2, smooth or '}'"))
+                }
+            }
+        }
+        if meshes.is_empty() {
+            return Err(self.error_at(at, "a mesh_camera needs at least one mesh"));
+        }
+        if distribution == 0.0 && (meshes.len() as f64) < rays {
+            return Err(self.error_at(at, format!("mesh_camera distribution 0 needs a mesh per ray: {rays} rays per pixel but {} meshes", meshes.len())));
+        }
+        if distribution >= 2.0 && rays > 1.0 {
+            self.warn(at, format!("mesh_camera distribution {distribution} shoots one ray per pixel; POV-Ray 3.7 allows no more"));
+        }
+        Ok(MeshCameraDesc {
+            rays_per_pixel: rays as u32,
+            distribution: distribution as u32,
+            meshes,
+            smooth,
+        })
     }
 
     fn starts_number(&mut self) -> PResult<bool> {
