@@ -156,16 +156,16 @@ fn camera_items() {
 #[test]
 fn unsupported_keyword_warns_with_place() {
     let mut p = Parser::new(ParseOptions::default());
-    p.parse_str("w.pov", "sphere { 0, 1 pigment { quilted color_map { [0 rgb 0] [1 rgb 1] } } }\nrainbow { angle 42 width 5 }").unwrap();
+    p.parse_str("w.pov", "fog { distance 3 rgb 1 turbulence 0.5 }\nmedia { scattering { 1, 0.1 } }").unwrap();
     let msgs: Vec<String> = p.warnings.iter().map(|w| w.one_line(&p.sources)).collect();
     assert!(
         msgs.iter()
-            .any(|m| m.starts_with("w.pov:1:") && m.contains("quilted")),
+            .any(|m| m.starts_with("w.pov:1:") && m.contains("turbulence")),
         "{msgs:?}"
     );
     assert!(
         msgs.iter()
-            .any(|m| m.starts_with("w.pov:2:1") && m.contains("rainbow")),
+            .any(|m| m.starts_with("w.pov:2:1") && m.contains("media")),
         "{msgs:?}"
     );
 }

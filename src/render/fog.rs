@@ -7,14 +7,16 @@
 //! is seen through them and add their colours, each unattenuated by the others (measured:
 //! two constant fogs over one wall).
 
+use crate::color::Rgbft;
 use crate::math::{DVec3, Ray};
-use crate::scene::desc::FogDesc;
+use crate::scene::desc::{FogDesc, RainbowDesc};
 
 use super::trace::Seen;
 
-/// How far a ray that hits nothing runs through fog (POV-Ray, too, stops counting at a
-/// large finite distance).
-const FAR: f64 = 1e7;
+/// How far a ray that hits nothing runs through fog: povray's background is 2e10 away
+/// (measured: a white fog of distance 1e10 over a black background gives 1 − e⁻² = 0.8647,
+/// and 1.0 for every distance up to 1e9).
+const FAR: f64 = 2e10;
 
 /// `seen` along `ray` up to distance `t` (in units of the ray's direction; infinite for the
 /// background), after every fog layer.
@@ -24,20 +26,77 @@ pub fn apply(fogs: &[FogDesc], ray: &Ray, t: f64, mut seen: Seen) -> Seen {
     let dir = ray.dir / len;
     let mut added = DVec3::ZERO;
     for f in fogs {
+        let color = match &f.rainbow {
+            Some(rb) => match rainbow_color(rb, dir) {
+                Some(c) => c,
+                None => continue,
+            },
+            None => f.color,
+        };
         let optical = if f.ground {
             ground_depth(f, ray.origin, dir, d)
         } else {
             d
         };
-        let a = (-optical / f.distance).exp().max(f.color.transmit);
-        let fc = f.color.rgb;
-        let filter = DVec3::splat(1.0 - f.color.filter) + fc * f.color.filter;
+        let a = (-optical / f.distance).exp().max(color.transmit);
+        let fc = color.rgb;
+        let mut filter = DVec3::splat(1.0 - color.filter) + fc * color.filter;
+        if f.rainbow.is_some() {
+            // A rainbow filters only by its own share (measured: an rgbf <1,0,0,0.8> rainbow
+            // over a white wall leaves green a·(a + (1 − a)·0.2), where a fog leaves a·0.2).
+            filter = DVec3::splat(a) + filter * (1.0 - a);
+        }
         seen.rgb *= filter * a;
         added += fc * (1.0 - a);
         seen.clear *= a;
     }
     seen.rgb += added;
     seen
+}
+
+/// A rainbow's colour for a ray going `dir` (unit); None where the ray misses the rainbow.
+fn rainbow_color(rb: &RainbowDesc, dir: DVec3) -> Option<Rgbft> {
+    let d = rb.direction.normalize_or(DVec3::Z);
+    let angle = dir.dot(d).clamp(-1.0, 1.0).acos().to_degrees();
+    let mut index = (angle - (rb.angle - rb.width * 0.5)) / rb.width.max(1e-12);
+    if rb.jitter != 0.0 {
+        index += rb.jitter * (jitter_noise(dir) - 0.5);
+    }
+    if !(0.0..=1.0).contains(&index) {
+        return None;
+    }
+    let mut weight = 1.0;
+    if rb.arc_angle < 360.0 {
+        // The angle about the direction from `up` (made perpendicular to it).
+        let up = (rb.up - d * rb.up.dot(d)).normalize_or_zero();
+        let side = d.cross(up);
+        let p = dir - d * dir.dot(d);
+        let phi = p.dot(side).atan2(p.dot(up)).to_degrees().abs();
+        let (arc, fall) = (rb.arc_angle * 0.5, rb.falloff_angle * 0.5);
+        if phi > arc {
+            return None;
+        }
+        if phi > fall {
+            // A smoothstep over the soft end (measured: a white rainbow with arc_angle 180
+            // and falloff_angle 0 shows 3t² − 2t³ of it, t = (arc − φ)/(arc − falloff)).
+            let t = (arc - phi) / (arc - fall).max(1e-12);
+            weight = t * t * (3.0 - 2.0 * t);
+        }
+    }
+    // The soft ends raise the colour's transmit towards 1 (measured on a wall and on the
+    // background: transmit' = 1 − w·(1 − transmit), w the smoothstep below).
+    let mut c = super::pigment::lookup(&rb.color_map, index);
+    c.transmit = 1.0 - weight * (1.0 - c.transmit);
+    Some(c)
+}
+
+/// A number in [0, 1) from a direction, standing in for POV-Ray's random rainbow jitter.
+fn jitter_noise(dir: DVec3) -> f64 {
+    let q = |v: f64| ((v * 1e6).round() as i64) as u64;
+    let mut h = q(dir.x) ^ q(dir.y).rotate_left(21) ^ q(dir.z).rotate_left(42);
+    h = (h ^ (h >> 33)).wrapping_mul(0xff51_afd7_ed55_8ccd);
+    h = (h ^ (h >> 33)).wrapping_mul(0xc4ce_b9fe_1a85_ec53);
+    ((h ^ (h >> 33)) >> 11) as f64 / (1u64 << 53) as f64
 }
 
 /// The fog a ray meets: its length times the mean density between the heights it spans.

@@ -123,6 +123,21 @@ impl<'a> Tracer<'a> {
         seen
     }
 
+    /// How far a shadow ray of light `slot` is tested: to its `projected_through` object's
+    /// nearest crossing, None when it misses that object; `dist` for other lights.
+    pub(super) fn projected_dist(
+        &self,
+        ray: &Ray,
+        dist: f64,
+        slot: usize,
+        ctx: &mut TraceCtx<'a>,
+    ) -> Option<f64> {
+        match &self.scene.lights[slot].projected {
+            Some(obj) => obj.0.first_hit(ray, dist, ctx).map(|h| h.t),
+            None => Some(dist),
+        }
+    }
+
     /// Light reaching `p` from a light `dist` away in direction `l`: zero behind an opaque
     /// object, filtered by each crossing of a transparent one. `slot` is the light's number,
     /// for the cache of the last blocker.
@@ -136,6 +151,12 @@ impl<'a> Tracer<'a> {
     ) -> DVec3 {
         ctx.rays += 1;
         let ray = Ray::new(p, l);
+        // `projected_through`: no light unless the path crosses the object, and only what
+        // lies between the point and that crossing casts a shadow (manual 3.4.4.1.8).
+        let dist = match self.projected_dist(&ray, dist, slot, ctx) {
+            Some(d) => d,
+            None => return DVec3::ZERO,
+        };
         // Any opaque blocker makes the answer exactly zero, whatever else the ray crosses, so
         // the last one is tried first. Its box test is the one the BVH would have made.
         if ctx.blockers.len() <= slot {

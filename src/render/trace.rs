@@ -469,6 +469,15 @@ impl<'a> Tracer<'a> {
                 continue;
             }
             let mut lc = light.color * (light.fade(inc.dist) * inc.beam);
+            if light.projected.is_some() && (light.shadowless || !q.shadows) {
+                let dist = inc.shadow_dist.unwrap_or(f64::INFINITY);
+                if self
+                    .projected_dist(&Ray::new(p, l), dist, slot, ctx)
+                    .is_none()
+                {
+                    continue;
+                }
+            }
             if !light.shadowless && q.shadows {
                 if let Some(dist) = inc.shadow_dist {
                     lc *= self.light_seen(p, (slot, light), l, dist, ctx);

@@ -341,7 +341,16 @@ impl Ctx {
         let mut blob = None;
         let (kind, bounds, mesh) = match &o.shape {
             ShapeDesc::Light(l) => {
-                self.lights.push(Light::new(l, &o.transform));
+                let mut light = Light::new(l, &o.transform);
+                if let Some(through) = &l.projected_through {
+                    // Its textures and interiors are stripped: only its surface matters.
+                    let mut shape = (**through).clone();
+                    shape.apply_transform(&o.transform);
+                    light.projected = self
+                        .object(&shape, None, None, default)
+                        .map(|obj| crate::scene::light::Projected(Arc::new(obj)));
+                }
+                self.lights.push(light);
                 // `looks_like` is drawn at the light's location and casts no shadow.
                 let shape = l.looks_like.as_ref()?;
                 let mut shape = (**shape).clone();

@@ -11,6 +11,7 @@ use std::sync::Arc;
 
 use crate::color::Rgbft;
 use crate::math::{DVec3, Transform, Xform};
+pub use crate::scene::atmosphere::{FogDesc, RainbowDesc};
 pub use crate::scene::pattern::Pattern;
 
 #[derive(Clone, Debug)]
@@ -27,31 +28,6 @@ pub struct SceneDesc {
     pub version: Option<f64>,
     /// Fog layers, applied in the order given.
     pub fogs: Vec<FogDesc>,
-}
-
-/// `fog { ... }`: constant (type 1) or ground fog (type 2).
-#[derive(Clone, Debug)]
-pub struct FogDesc {
-    pub ground: bool,
-    pub distance: f64,
-    pub color: Rgbft,
-    pub offset: f64,
-    pub alt: f64,
-    /// The up direction of ground fog, transformed with the fog.
-    pub up: DVec3,
-}
-
-impl Default for FogDesc {
-    fn default() -> Self {
-        FogDesc {
-            ground: false,
-            distance: 0.0,
-            color: Rgbft::BLACK,
-            offset: 0.0,
-            alt: 0.0,
-            up: DVec3::Y,
-        }
-    }
 }
 
 #[derive(Clone, Debug)]
@@ -162,6 +138,8 @@ pub struct LightDesc {
     pub area: Option<AreaLightDesc>,
     /// `looks_like`: an object drawn at the light (placed at its location), casting no shadow.
     pub looks_like: Option<Box<ObjectDesc>>,
+    /// `projected_through`: only light whose path crosses this object arrives.
+    pub projected_through: Option<Box<ObjectDesc>>,
 }
 
 impl LightDesc {
@@ -180,6 +158,7 @@ impl LightDesc {
             parallel: false,
             area: None,
             looks_like: None,
+            projected_through: None,
         }
     }
 }

@@ -22,6 +22,19 @@ pub struct Light {
     /// An array of point lights for soft shadows (axes in world space); lighting itself
     /// comes from the centre.
     pub area: Option<AreaLightDesc>,
+    /// `projected_through`: light arrives only along paths that cross this object (not part
+    /// of the scene), and only objects between the point and it cast shadows.
+    pub projected: Option<Projected>,
+}
+
+/// A `projected_through` object, shared by copies of the light.
+#[derive(Clone)]
+pub struct Projected(pub std::sync::Arc<crate::scene::object::Object>);
+
+impl std::fmt::Debug for Projected {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Projected(..)")
+    }
 }
 
 /// The shape of a light's beam.
@@ -98,6 +111,7 @@ impl Light {
                 axis2: t.vector(a.axis2),
                 ..a.clone()
             }),
+            projected: None,
         }
     }
 

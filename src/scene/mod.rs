@@ -1,5 +1,6 @@
 //! Scenes: the declarative description the parser produces, and the runtime form built from it.
 
+pub mod atmosphere;
 pub mod build;
 pub mod children;
 pub mod cull;

@@ -1,6 +1,7 @@
-//! Atmospheric scene items: `fog { ... }` (constant and ground fog), read into a `FogDesc`.
+//! Atmospheric scene items: `fog { ... }` (constant and ground fog) and `rainbow { ... }`,
+//! each read into a `FogDesc`.
 
-use crate::scene::desc::FogDesc;
+use crate::scene::desc::{FogDesc, RainbowDesc};
 
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
@@ -58,5 +59,74 @@ impl Parser {
                 _ => fog.color = self.parse_color()?,
             }
         }
+    }
+}
+
+impl Parser {
+    /// `rainbow { ... }` after the keyword: a fog whose colour comes from its map by the ray's
+    /// angle to `direction`.
+    pub(super) fn parse_rainbow_block(&mut self) -> PResult<FogDesc> {
+        let open = self.expect_sym(Sym::LBrace, "after 'rainbow'")?;
+        let mut rb = RainbowDesc::default();
+        // Without `distance` the rainbow is never seen on objects (manual 3.4.3.5).
+        let mut distance = 1e30;
+        let mut falloff = None;
+        if let Some(k) = self.peek_ident()? {
+            if let Some(Value::Fog(f)) = self.lookup(&k) {
+                if let Some(r) = &f.rainbow {
+                    rb = (**r).clone();
+                    distance = f.distance;
+                    falloff = Some(rb.falloff_angle);
+                    self.advance();
+                }
+            }
+        }
+        loop {
+            let t = self
+                .peek()?
+                .ok_or_else(|| self.error_at(open, "this '{' is never closed"))?;
+            let Tok::Ident(k) = &t.tok else {
+                if t.tok == Tok::Sym(Sym::RBrace) {
+                    self.advance();
+                    break;
+                }
+                return Err(self.unexpected(&t, "in rainbow"));
+            };
+            let k = k.clone();
+            self.advance();
+            match &*k {
+                "direction" => rb.direction = self.parse_vector()?,
+                "angle" => rb.angle = self.parse_float()?,
+                "width" => rb.width = self.parse_float()?,
+                "distance" => distance = self.parse_float()?,
+                "up" => rb.up = self.parse_vector()?,
+                "arc_angle" => rb.arc_angle = self.parse_float()?.clamp(0.0, 360.0),
+                "falloff_angle" => falloff = Some(self.parse_float()?.clamp(0.0, 360.0)),
+                "jitter" => {
+                    rb.jitter = self.parse_float()?;
+                    if rb.jitter != 0.0 {
+                        self.warn(t.span, "'jitter' (in rainbow) is random in POV-Ray: lancer adds noise of the same size to the rainbow's index, the same for any thread count, but not povray's pixels");
+                    }
+                }
+                "color_map" | "colour_map" => rb.color_map = self.parse_color_map()?,
+                other => match self.transform_item(other)? {
+                    Some(tr) => {
+                        rb.direction = tr.vector(rb.direction);
+                        rb.up = tr.vector(rb.up);
+                    }
+                    None => {
+                        return Err(
+                            self.error_at(t.span, format!("unexpected '{other}' in rainbow"))
+                        )
+                    }
+                },
+            }
+        }
+        rb.falloff_angle = falloff.unwrap_or(rb.arc_angle).min(rb.arc_angle);
+        Ok(FogDesc {
+            distance,
+            rainbow: Some(Box::new(rb)),
+            ..FogDesc::default()
+        })
     }
 }

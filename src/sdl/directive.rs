@@ -331,6 +331,10 @@ impl Parser {
                 self.advance();
                 Ok(Value::Fog(Box::new(self.parse_fog_block()?)))
             }
+            "rainbow" => {
+                self.advance();
+                Ok(Value::Fog(Box::new(self.parse_rainbow_block()?)))
+            }
             "pigment_map" => {
                 self.advance();
                 Ok(Value::PigmentMap(Box::new(self.parse_pigment_map()?)))
@@ -347,7 +351,7 @@ impl Parser {
                 self.advance();
                 Ok(Value::SlopeMap(Box::new(self.parse_slope_map()?)))
             }
-            "density_map" | "density" | "media" | "rainbow" => {
+            "density_map" | "density" | "media" => {
                 self.advance();
                 self.unsupported(k, t.span);
                 self.skip_block()?;

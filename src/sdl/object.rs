@@ -703,8 +703,12 @@ impl Parser {
                             let o = self.object_ref(t.span)?;
                             light.looks_like = Some(Box::new(o));
                         }
-                        "projected_through" | "photons" | "media_interaction"
-                        | "media_attenuation" | "area_illumination" => {
+                        "projected_through" => {
+                            let o = self.object_ref(t.span)?;
+                            light.projected_through = Some(Box::new(o));
+                        }
+                        "photons" | "media_interaction" | "media_attenuation"
+                        | "area_illumination" => {
                             self.unsupported(&k, t.span);
                             self.skip_light_item(&k)?;
                         }
