@@ -156,7 +156,11 @@ fn camera_items() {
 #[test]
 fn unsupported_keyword_warns_with_place() {
     let mut p = Parser::new(ParseOptions::default());
-    p.parse_str("w.pov", "fog { distance 3 rgb 1 turbulence 0.5 }\nmedia { scattering { 1, 0.1 } }").unwrap();
+    p.parse_str(
+        "w.pov",
+        "fog { distance 3 rgb 1 turbulence 0.5 }\nmedia { scattering { 1, 0.1 } }",
+    )
+    .unwrap();
     let msgs: Vec<String> = p.warnings.iter().map(|w| w.one_line(&p.sources)).collect();
     assert!(
         msgs.iter()

@@ -10,7 +10,7 @@ use crate::color::Rgbft;
 use crate::math::{DVec3, Ray};
 use crate::scene::build::Scene;
 use crate::scene::desc::Interior;
-use crate::scene::object::{Scratch, SurfaceHit};
+use crate::scene::object::{Object, Scratch, SurfaceHit};
 
 use super::{normal, pigment, texture_map};
 
@@ -312,7 +312,7 @@ impl<'a> Tracer<'a> {
         // A perturbed normal may face lights the surface itself turns away from; POV-Ray
         // lights them (measured: a light just behind a plane whose normal leans towards it).
         let bumpy = normal::texture_perturbs(top);
-        self.gather_lights(p, nf, bumpy, obj.double_illuminate, ctx);
+        self.gather_lights(p, nf, bumpy, obj, ctx);
         let cos_i = (-dir.dot(nf)).clamp(0.0, 1.0);
         let (n1, n2) = if entering {
             (1.0, obj.ior)
@@ -453,12 +453,18 @@ impl<'a> Tracer<'a> {
     /// The lights reaching `p` (after shadows) into `ctx.lit`, once per hit for all layers;
     /// `all` keeps those behind the surface too, `double` lights the surface from behind
     /// (`double_illuminate`).
-    fn gather_lights(&self, p: DVec3, nf: DVec3, all: bool, double: bool, ctx: &mut TraceCtx<'a>) {
+    fn gather_lights(&self, p: DVec3, nf: DVec3, all: bool, obj: &Object, ctx: &mut TraceCtx<'a>) {
+        let double = obj.double_illuminate;
+        let groups = self.scene.light_sets.len() > 1;
+        let set = &self.scene.light_sets[obj.light_set as usize];
         let q = self.quality;
         let mut lit = std::mem::take(&mut ctx.lit);
         lit.clear();
         let seed = point_seed(p);
         for (slot, light) in self.scene.lights.iter().enumerate() {
+            if groups && !set.sees(light.group) {
+                continue;
+            }
             let Some(inc) = light.incidence(p) else {
                 continue;
             };

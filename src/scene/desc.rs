@@ -216,6 +216,9 @@ pub struct ObjectDesc {
     pub double_illuminate: bool,
     pub hollow: Option<bool>,
     pub inverse: bool,
+    /// A `light_group` (read as a union) and its `global_lights` setting: its lights light
+    /// only its objects, which the scene's other lights light only with `global_lights on`.
+    pub light_group: Option<bool>,
     /// `clipped_by { ... }`: only the surface inside all of these is kept.
     pub clipped_by: Vec<ObjectDesc>,
 }
@@ -233,6 +236,7 @@ impl ObjectDesc {
             double_illuminate: false,
             hollow: None,
             inverse: false,
+            light_group: None,
             clipped_by: Vec::new(),
         }
     }

@@ -25,6 +25,8 @@ pub struct Light {
     /// `projected_through`: light arrives only along paths that cross this object (not part
     /// of the scene), and only objects between the point and it cast shadows.
     pub projected: Option<Projected>,
+    /// The `light_group` it belongs to (0: none, it lights everything outside groups).
+    pub group: u16,
 }
 
 /// A `projected_through` object, shared by copies of the light.
@@ -112,6 +114,7 @@ impl Light {
                 ..a.clone()
             }),
             projected: None,
+            group: 0,
         }
     }
 

@@ -9,6 +9,7 @@ pub mod gif;
 pub mod height_image;
 pub mod image;
 pub mod light;
+pub mod light_group;
 pub mod mesh_camera;
 pub mod object;
 pub mod pattern;

@@ -46,6 +46,9 @@ pub struct Object {
     pub no_reflection: bool,
     /// Lit from behind its surface too (`double_illuminate`).
     pub double_illuminate: bool,
+    /// Which lights light it: an index into `Scene::light_sets` (0: the lights outside any
+    /// `light_group`).
+    pub light_set: u16,
     pub inverse: bool,
     /// World-space bounds (`Aabb::INFINITE` for unbounded objects).
     pub bounds: Aabb,

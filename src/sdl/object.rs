@@ -168,9 +168,12 @@ impl Parser {
             "interior" => obj.interior = Some(self.parse_interior_block()?),
             "material" => self.material(obj)?,
             "no_shadow" => obj.no_shadow = true,
-            // Only meaningful in a light_group, whose lights lancer does not keep apart yet.
+            // Only meaningful in a light_group (elsewhere povray reads it and does nothing).
             "global_lights" => {
-                self.optional_bool()?;
+                let on = self.optional_bool()?;
+                if obj.light_group.is_some() {
+                    obj.light_group = Some(on);
+                }
             }
             "inverse" => obj.inverse = !obj.inverse,
             "hollow" => obj.hollow = Some(self.optional_bool()?),
@@ -590,23 +593,25 @@ impl Parser {
         self.finish_object(ObjectDesc::new(ShapeDesc::Csg { op, children }), open)
     }
 
-    /// `light_group { objects lights [global_lights] }`: lancer lights the objects with every
-    /// light in the scene, as a union would be, and says so.
-    fn light_group(&mut self, s: Span) -> PResult<ObjectDesc> {
-        self.unsupported("light_group (read as a union)", s);
+    /// `light_group { objects lights [global_lights] }`: a union whose lights light only its
+    /// own objects (`global_lights` defaults to off).
+    fn light_group(&mut self, _s: Span) -> PResult<ObjectDesc> {
         let open = self.open_brace("light_group")?;
         let mut children = Vec::new();
+        let mut global = false;
         loop {
             if let Some(o) = self.parse_object()? {
                 children.push(o);
             } else if self.eat_keyword("global_lights")? {
-                self.optional_bool()?;
+                global = self.optional_bool()?;
             } else {
                 break;
             }
         }
         let op = CsgOp::Union;
-        self.finish_object(ObjectDesc::new(ShapeDesc::Csg { op, children }), open)
+        let mut group = ObjectDesc::new(ShapeDesc::Csg { op, children });
+        group.light_group = Some(global);
+        self.finish_object(group, open)
     }
 
     fn object_ref(&mut self, _s: Span) -> PResult<ObjectDesc> {
