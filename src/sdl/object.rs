@@ -712,8 +712,13 @@ impl Parser {
                             let o = self.object_ref(t.span)?;
                             light.projected_through = Some(Box::new(o));
                         }
-                        "photons" | "media_interaction" | "media_attenuation"
-                        | "area_illumination" => {
+                        // Off is povray's default: nothing to say.
+                        "area_illumination" => {
+                            if self.optional_bool()? {
+                                self.unsupported(&k, t.span);
+                            }
+                        }
+                        "photons" | "media_interaction" | "media_attenuation" => {
                             self.unsupported(&k, t.span);
                             self.skip_light_item(&k)?;
                         }
@@ -773,7 +778,8 @@ impl Parser {
                 }
             }
             "looks_like" | "projected_through" | "photons" => self.skip_block()?,
-            "media_interaction" | "media_attenuation" | "circular" | "orient" => {
+            "media_interaction" | "media_attenuation" | "circular" | "orient"
+            | "area_illumination" => {
                 self.optional_bool()?;
             }
             "jitter" | "spotlight" | "cylinder" | "parallel" => {}
