@@ -335,7 +335,7 @@ impl Parser {
     /// function language does not have yet) is skipped and its error message returned as the
     /// reason, so the scene still renders without the isosurface; that is possible only when
     /// the error left the token stream in the same file or macro body, which is then rewound.
-    fn function_body(&mut self, fspan: Span) -> PResult<Result<Arc<Function>, String>> {
+    pub(super) fn function_body(&mut self, fspan: Span) -> PResult<Result<Arc<Function>, String>> {
         let frames = self.frames.len();
         let at = self.frames.last().map(|f| (f.pos, f.tokens.as_ptr()));
         let conds = self.conds.len();
@@ -363,7 +363,7 @@ impl Parser {
 
     /// Reads past the rest of an object whose '{' is open, up to its '}' (directives inside
     /// still run).
-    fn skip_to_close(&mut self) -> PResult<()> {
+    pub(super) fn skip_to_close(&mut self) -> PResult<()> {
         let mut depth = 1;
         while depth > 0 {
             match self.next_tok()?.tok {
@@ -376,7 +376,7 @@ impl Parser {
     }
 
     /// `{ box { A, B } }` or `{ sphere { C, R } }` after `contained_by`.
-    fn iso_container(&mut self) -> PResult<Container> {
+    pub(super) fn iso_container(&mut self) -> PResult<Container> {
         let open = self.open_brace("contained_by")?;
         let span = self.next_span()?;
         let Some(o) = self.parse_object()? else {

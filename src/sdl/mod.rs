@@ -19,6 +19,7 @@ pub mod limits;
 pub mod mesh2;
 pub mod normal;
 pub mod object;
+pub mod parametric;
 pub mod parser;
 pub mod pattern;
 pub mod source;

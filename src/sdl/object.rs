@@ -17,7 +17,7 @@ use super::value::Value;
 type ObjectFn = fn(&mut Parser, Span) -> PResult<ObjectDesc>;
 
 /// Objects POV-Ray 3.7 has that lancer reads past (with a warning) but does not render yet.
-const UNSUPPORTED_OBJECTS: &[&str] = &["lemon", "parametric"];
+const UNSUPPORTED_OBJECTS: &[&str] = &["lemon"];
 
 impl Parser {
     pub(super) fn object_parser(k: &str) -> Option<ObjectFn> {
@@ -51,6 +51,7 @@ impl Parser {
             "bicubic_patch" => Parser::bicubic_patch,
             "julia_fractal" => Parser::julia_fractal,
             "ovus" => Parser::ovus,
+            "parametric" => Parser::parametric,
             "union" => |p, s| p.csg(CsgOp::Union, s),
             "light_group" => Parser::light_group,
             "merge" => |p, s| p.csg(CsgOp::Merge, s),
