@@ -69,6 +69,9 @@ pub struct Path<'a> {
     straight: bool,
     /// The fading interior the ray travels in, if any.
     medium: Option<&'a Interior>,
+    /// Whether the ray runs inside a solid (not `hollow`) object, where there is no fog:
+    /// known for reflected rays (their incident ray's), found by looking otherwise.
+    in_solid: Option<bool>,
 }
 
 impl<'a> Path<'a> {
@@ -77,6 +80,7 @@ impl<'a> Path<'a> {
         weight: 1.0,
         straight: true,
         medium: None,
+        in_solid: None,
     };
 
     fn next(self, weight: f64, straight: bool, medium: Option<&'a Interior>) -> Path<'a> {
@@ -85,6 +89,7 @@ impl<'a> Path<'a> {
             weight,
             straight,
             medium,
+            in_solid: self.in_solid,
         }
     }
 }
@@ -167,11 +172,28 @@ impl<'a> Tracer<'a> {
         if path.depth > self.scene.max_trace_level {
             return Seen::default();
         }
-        let (seen, t) = match self.first_visible(ray, path.straight, ctx) {
-            Some(h) => (self.shade_blended(ray, &h, path, ctx), h.t),
-            None => (self.background(ray.dir, path.straight), f64::INFINITY),
+        let hit = self.first_visible(ray, path.straight, ctx);
+        let t = hit.as_ref().map_or(f64::INFINITY, |h| h.t);
+        // No atmosphere inside solid (not `hollow`) objects, povray's rule (measured: a
+        // camera inside plane { z, 10 } sees the plane unfogged). A ray that crossed no
+        // surface to get here is looked up at a point of its segment (which crosses none);
+        // a reflected ray stays where its incident ray was, whichever way it turns
+        // (measured: rays reflected from a rippled floor into the floor's half-space are
+        // fogged, advanced/mist.pov).
+        let solid = !self.scene.fogs.is_empty()
+            && path.in_solid.unwrap_or_else(|| {
+                let mid = if t.is_finite() { t * 0.5 } else { 1.0 };
+                self.scene.inside_solid(ray.at(mid))
+            });
+        let path = Path {
+            in_solid: Some(solid),
+            ..path
         };
-        if self.scene.fogs.is_empty() {
+        let seen = match hit {
+            Some(h) => self.shade_blended(ray, &h, path, ctx),
+            None => self.background(ray.dir, path.straight),
+        };
+        if self.scene.fogs.is_empty() || solid {
             seen
         } else {
             super::fog::apply(&self.scene.fogs, ray, t, seen)
@@ -432,8 +454,13 @@ impl<'a> Tracer<'a> {
                 // Into the object's interior, or back out (into air: nested interiors are
                 // not tracked).
                 let inside = if entering { obj.fade.as_deref() } else { None };
-                let tc =
-                    self.trace_seen(&Ray::new(p, tdir), path.next(w, path.straight, inside), ctx);
+                // The transmitted ray crosses the surface: whether it is in a solid is looked
+                // up afresh.
+                let onward = Path {
+                    in_solid: None,
+                    ..path.next(w, path.straight, inside)
+                };
+                let tc = self.trace_seen(&Ray::new(p, tdir), onward, ctx);
                 // Light coming in through the far side of a fading interior is dimmed by the
                 // stretch the ray spent inside; the far surface's own light is not (measured:
                 // ambient on both faces of a fading slab).

@@ -502,6 +502,7 @@ impl Ctx {
             no_reflection: o.no_reflection,
             double_illuminate: o.double_illuminate,
             light_set: self.current_set,
+            hollow: o.hollow.unwrap_or(false),
             inverse: o.inverse,
             bounds,
             transparent,
@@ -570,6 +571,26 @@ impl Scene {
         }
         self.bvh
             .traverse(ray, tmax, |prim, _| f(&self.objects[self.bounded[prim]]));
+    }
+
+    /// Whether `p` is inside an object that is not `hollow`, where POV-Ray computes no
+    /// atmosphere.
+    pub fn inside_solid(&self, p: DVec3) -> bool {
+        let solid = |o: &Object| !o.hollow && o.inside(p);
+        if self
+            .unbounded
+            .iter()
+            .zip(&self.unbounded_cull)
+            .any(|(&i, cull)| cull.is_none_or(|c| c.contains(p)) && solid(&self.objects[i]))
+        {
+            return true;
+        }
+        let mut found = false;
+        self.bvh.visit_point(p, |k| {
+            found = solid(&self.objects[self.bounded[k]]);
+            found
+        });
+        found
     }
 
     /// Whether `p` is inside any object other than `leaf` (CSG nodes holding `leaf` are

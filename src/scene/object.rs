@@ -46,6 +46,8 @@ pub struct Object {
     pub no_reflection: bool,
     /// Lit from behind its surface too (`double_illuminate`).
     pub double_illuminate: bool,
+    /// `hollow`: fog and other atmosphere reach inside it (they stop inside solid objects).
+    pub hollow: bool,
     /// Which lights light it: an index into `Scene::light_sets` (0: the lights outside any
     /// `light_group`).
     pub light_set: u16,
