@@ -11,7 +11,9 @@ use crate::scene::children::ChildIndex;
 use crate::scene::desc::{CsgOp, MeshData, Texture};
 
 pub enum ObjKind {
-    Shape(Arc<dyn Shape>),
+    /// A shape, and for a clipped leaf whose crossings outside a box are all clipped away
+    /// (`scene::cull::object_cull`), that box: the shape is asked only for crossings in it.
+    Shape(Arc<dyn Shape>, Option<Box<Aabb>>),
     Csg {
         op: CsgOp,
         children: Vec<Object>,
@@ -154,7 +156,7 @@ impl Object {
             return best;
         }
         match &self.kind {
-            ObjKind::Shape(shape) => {
+            ObjKind::Shape(shape, _) => {
                 let r = self.local_ray(ray);
                 shape
                     .intersect_first(&r, tmax, &mut s.hits)
@@ -226,10 +228,25 @@ impl Object {
 
     fn all_hits_unclipped<'a>(&'a self, ray: &Ray, tmax: f64, s: &mut Scratch<'a>) {
         match &self.kind {
-            ObjKind::Shape(shape) => {
+            ObjKind::Shape(shape, window) => {
                 let r = self.local_ray(ray);
                 s.hits.clear();
-                shape.intersect_all(&r, &mut s.hits);
+                match window {
+                    // Crossings outside the box are clipped away: the shape may leave them
+                    // out. The range is over the whole line, padded against rounding.
+                    Some(b) => {
+                        let inv = ray.dir.recip();
+                        let (t0, t1) = ((b.min - ray.origin) * inv, (b.max - ray.origin) * inv);
+                        let lo = t0.min(t1).max_element();
+                        let hi = t0.max(t1).min_element();
+                        let pad = 1e-7 * (lo.abs().max(hi.abs()) + 1.0);
+                        // NaN (a ray in a face's plane) asks for everything.
+                        if lo <= hi || lo.is_nan() || hi.is_nan() {
+                            shape.intersect_all_within(&r, lo - pad, hi + pad, &mut s.hits);
+                        }
+                    }
+                    None => shape.intersect_all(&r, &mut s.hits),
+                }
                 s.surface
                     .extend(s.hits.iter().filter(|h| h.t < tmax).map(|&hit| SurfaceHit {
                         t: hit.t,
@@ -306,7 +323,7 @@ impl Object {
             return self.inverse;
         }
         let r = match &self.kind {
-            ObjKind::Shape(s) => {
+            ObjKind::Shape(s, _) => {
                 let lp = match &self.transform {
                     Some(t) => t.inv_point(p),
                     None => p,
@@ -427,13 +444,13 @@ impl Object {
         std::ptr::eq(self, leaf)
             || match &self.kind {
                 ObjKind::Csg { children, .. } => children.iter().any(|c| c.contains(leaf)),
-                ObjKind::Shape(_) => false,
+                ObjKind::Shape(..) => false,
             }
     }
 
     /// Unit world-space normal at a hit on this leaf, outward (before face-forwarding).
     pub fn normal(&self, p: DVec3, h: &SurfaceHit) -> DVec3 {
-        let ObjKind::Shape(s) = &self.kind else {
+        let ObjKind::Shape(s, _) = &self.kind else {
             return DVec3::Z;
         };
         let n = match &self.transform {
@@ -451,7 +468,7 @@ impl Object {
     /// The shape's (u, v, 0) at a hit for `uv_mapping`, or None where the shape has no uv
     /// coordinates.
     pub fn uv_point(&self, p: DVec3, h: &SurfaceHit) -> Option<DVec3> {
-        let ObjKind::Shape(s) = &self.kind else {
+        let ObjKind::Shape(s, _) = &self.kind else {
             return None;
         };
         let local = self.transform.as_ref().map_or(p, |t| t.inv_point(p));
