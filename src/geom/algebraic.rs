@@ -61,12 +61,23 @@ impl Algebraic {
     }
 
     pub fn value(&self, p: DVec3) -> f64 {
+        // Tables as small as the order allows: they live in registers or on the stack.
+        match self.order {
+            0..=2 => self.value_n::<3>(p),
+            3..=4 => self.value_n::<5>(p),
+            _ => self.value_n::<{ MAX_ORDER + 1 }>(p),
+        }
+    }
+
+    /// `value` for orders below `N`.
+    #[inline(always)]
+    fn value_n<const N: usize>(&self, p: DVec3) -> f64 {
         // Powers from tables filled as `powi` computes them (see `powi_table`): the same
         // values without a library call per factor.
         let (x, y, z) = (
-            powi_table(p.x, self.order),
-            powi_table(p.y, self.order),
-            powi_table(p.z, self.order),
+            powi_table::<N>(p.x, self.order),
+            powi_table::<N>(p.y, self.order),
+            powi_table::<N>(p.z, self.order),
         );
         self.terms
             .iter()
@@ -335,9 +346,18 @@ impl Shape for Algebraic {
 /// `x.powi(e)` for e in 0..=n, each computed as `powi` does (the compiler's `__powidf2`:
 /// square-and-multiply from the lowest bit, starting from 1), so each is bit for bit the value
 /// `powi` gives.
-#[inline]
-fn powi_table(x: f64, n: usize) -> [f64; MAX_ORDER + 1] {
-    let mut t = [1.0; MAX_ORDER + 1];
+#[inline(always)]
+fn powi_table<const N: usize>(x: f64, n: usize) -> [f64; N] {
+    let mut t = [1.0; N];
+    // What the loop below gives for the low powers, written out: x^1 = 1·x, x^2 = 1·(x·x),
+    // x^3 = (1·x)·(x·x), x^4 = 1·((x·x)·(x·x)) (and 1·v is v).
+    if N <= 5 {
+        let x2 = x * x;
+        for (e, v) in [x, x2, x * x2, x2 * x2].into_iter().enumerate().take(N - 1) {
+            t[e + 1] = v;
+        }
+        return t;
+    }
     for (e, v) in t.iter_mut().enumerate().take(n + 1).skip(1) {
         let (mut a, mut b, mut r) = (x, e, 1.0f64);
         loop {
@@ -434,8 +454,16 @@ mod tests {
                 assert_eq!(a.value(p).to_bits(), direct.to_bits());
             }
         }
-        for x in [0.3, -1.7, 1e-200, -0.0, 3.5e100] {
-            let t = powi_table(x, MAX_ORDER);
+        for x in [0.3, -1.7, 1e-200, -0.0, 3.5e100, 1.0000001, f64::NAN] {
+            let t = powi_table::<{ MAX_ORDER + 1 }>(x, MAX_ORDER);
+            for (e, v) in t.iter().enumerate() {
+                assert_eq!(v.to_bits(), x.powi(e as i32).to_bits(), "{x}^{e}");
+            }
+            let t = powi_table::<5>(x, 4);
+            for (e, v) in t.iter().enumerate() {
+                assert_eq!(v.to_bits(), x.powi(e as i32).to_bits(), "{x}^{e}");
+            }
+            let t = powi_table::<3>(x, 2);
             for (e, v) in t.iter().enumerate() {
                 assert_eq!(v.to_bits(), x.powi(e as i32).to_bits(), "{x}^{e}");
             }
