@@ -80,7 +80,7 @@ impl Superellipsoid {
     fn field(&self, p: DVec3) -> Field {
         let (x, y, z) = (p.x.abs(), p.y.abs(), p.z.abs());
         let m = x.max(y);
-        if !(m > 0.0) {
+        if m <= 0.0 || m.is_nan() {
             return Field::Value(self.value(p));
         }
         let (mc, zc) = (m.powf(self.c), z.powf(self.c));
