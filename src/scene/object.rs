@@ -92,6 +92,7 @@ fn csg_keeps(
     children: &[Object],
     index: Option<&ChildIndex>,
     p: DVec3,
+    rejecter: &std::cell::Cell<usize>,
 ) -> bool {
     // With an index only the members whose boxes hold `p` are asked: outside its box a member
     // without `inverse` is not inside (members with `inverse` have infinite boxes).
@@ -104,18 +105,28 @@ fn csg_keeps(
         }
         _ => {}
     }
-    children
-        .iter()
-        .enumerate()
-        .filter(|(j, _)| *j != i)
-        .all(|(j, o)| {
-            let want_inside = match op {
-                CsgOp::Intersection => true,
-                CsgOp::Difference => j == 0,
-                CsgOp::Union | CsgOp::Merge => false,
-            };
-            o.inside(p) == want_inside
-        })
+    let wants = |j: usize, o: &Object| {
+        let want_inside = match op {
+            CsgOp::Intersection => true,
+            CsgOp::Difference => j == 0,
+            CsgOp::Union | CsgOp::Merge => false,
+        };
+        o.inside(p) == want_inside
+    };
+    // The member that turned the last crossing of this node away is asked first: crossings
+    // outside a polyhedron are mostly turned away by the same face. `inside` has no side
+    // effects, so the order of the questions cannot change the answer.
+    let r = rejecter.get();
+    if r != i && r < children.len() && !wants(r, &children[r]) {
+        return false;
+    }
+    for (j, o) in children.iter().enumerate() {
+        if j != i && j != r && !wants(j, o) {
+            rejecter.set(j);
+            return false;
+        }
+    }
+    true
 }
 
 /// A crossing of a ray with a leaf object.
@@ -271,6 +282,7 @@ impl Object {
                     return;
                 }
                 let index = index.as_deref();
+                let rejecter = std::cell::Cell::new(usize::MAX);
                 // Member `i` is `c`; in a union's index `c` may be a leaf of an opened member
                 // union (its number then does not matter: a union keeps every crossing).
                 let member = |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
@@ -285,7 +297,7 @@ impl Object {
                     let mut k = start;
                     for j in start..s.surface.len() {
                         let mut h = s.surface[j];
-                        if csg_keeps(*op, i, children, index, ray.at(h.t)) {
+                        if csg_keeps(*op, i, children, index, ray.at(h.t), &rejecter) {
                             // Surfaces of subtracted operands face into the result.
                             h.flip ^= *op == CsgOp::Difference && i > 0;
                             s.surface[k] = h;
