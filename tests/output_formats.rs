@@ -285,7 +285,7 @@ fn dithering_changes_only_what_it_should() {
         let mut s = spec(FileType::Png).with_bits(5);
         s.dither = true;
         s.dither_method = DitherMethod::parse(m).unwrap();
-        let d = samples(&open(&ours(&film, &format!("{m}.png"), &s)));
+        let d = samples(&open(&ours(&film, &format!("dither-{m}.png"), &s)));
         // Every sample moves by at most one 5-bit step in Bayer dithering and stays close in
         // error diffusion; some move.
         let steps: Vec<i32> = d

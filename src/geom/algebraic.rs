@@ -5,7 +5,7 @@
 //! crossings (found by `poly`'s isolation and polishing). The shapes are unbounded, as in
 //! POV-Ray; `clipped_by` gives them bounds.
 
-use crate::geom::poly::{roots_in, sturm_roots_in, MAX_DEGREE};
+use crate::geom::poly::{roots_in, roots_in_window, sturm_roots_in, MAX_DEGREE};
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
 
@@ -61,33 +61,81 @@ impl Algebraic {
     }
 
     pub fn value(&self, p: DVec3) -> f64 {
-        self.terms
-            .iter()
-            .map(|([i, j, k], c)| {
-                c * p.x.powi(*i as i32) * p.y.powi(*j as i32) * p.z.powi(*k as i32)
-            })
-            .sum()
-    }
-
-    /// The polynomial along `origin + t·dir` (ascending coefficients in t).
-    fn along(&self, origin: DVec3, dir: DVec3) -> [f64; MAX_ORDER + 1] {
-        // The table of powers is zeroed on every ray: 7 KB at the largest order, most of the
-        // time of a quadric's intersection. Low orders use a small one (same arithmetic).
-        if self.order <= 2 {
-            self.along_in::<3>(origin, dir)
-        } else if self.order <= 4 {
-            self.along_in::<5>(origin, dir)
-        } else if self.order < 8 {
-            self.along_in::<8>(origin, dir)
-        } else {
-            self.along_in::<{ MAX_ORDER + 1 }>(origin, dir)
+        // Tables as small as the order allows: they live in registers or on the stack.
+        match self.order {
+            0..=2 => self.value_n::<3>(p),
+            3..=4 => self.value_n::<5>(p),
+            _ => self.value_n::<{ MAX_ORDER + 1 }>(p),
         }
     }
 
-    /// `along` with room for orders below `N`.
-    fn along_in<const N: usize>(&self, origin: DVec3, dir: DVec3) -> [f64; MAX_ORDER + 1] {
+    /// `value` for orders below `N`.
+    #[inline(always)]
+    fn value_n<const N: usize>(&self, p: DVec3) -> f64 {
+        // Powers from tables filled as `powi` computes them (see `powi_table`): the same
+        // values without a library call per factor.
+        let (x, y, z) = (
+            powi_table::<N>(p.x, self.order),
+            powi_table::<N>(p.y, self.order),
+            powi_table::<N>(p.z, self.order),
+        );
+        self.terms
+            .iter()
+            .map(|([i, j, k], c)| c * x[*i as usize] * y[*j as usize] * z[*k as usize])
+            .sum()
+    }
+
+    /// Crossings with the ray (its `t`), those outside `window` possibly left out.
+    fn crossings(&self, ray: &Ray, window: Option<(f64, f64)>, out: &mut Vec<Hit>) {
+        let len = ray.dir.length();
+        if !(len > 0.0 && len.is_finite()) || self.terms.is_empty() {
+            return;
+        }
+        let u = ray.dir / len;
+        let mut c = [0.0; MAX_ORDER + 1];
+        self.along(ray.origin, u, &mut c);
+        let c = &c[..=self.order];
+        // Cauchy's bound on the roots keeps the search interval finite.
+        let lead = c.iter().rposition(|v| *v != 0.0).unwrap_or(0);
+        let hi = if lead == 0 {
+            return;
+        } else {
+            let m = c[..lead]
+                .iter()
+                .map(|v| (v / c[lead]).abs())
+                .fold(0.0, f64::max);
+            (1.0 + m).min(FAR)
+        };
+        let roots = match (self.sturm, window) {
+            (true, _) => sturm_roots_in(c, EPSILON * len, hi),
+            (false, None) => roots_in(c, EPSILON * len, hi),
+            // In units of the unit direction.
+            (false, Some((wlo, whi))) => {
+                roots_in_window(c, EPSILON * len, hi, wlo * len, whi * len)
+            }
+        };
+        out.extend(roots.iter().map(|t| Hit::new(t / len)));
+    }
+
+    /// The polynomial along `origin + t·dir` (ascending coefficients in t).
+    fn along(&self, origin: DVec3, dir: DVec3, out: &mut [f64; MAX_ORDER + 1]) {
+        // The table of powers is zeroed on every ray: 7 KB at the largest order, most of the
+        // time of a quadric's intersection. Low orders use a small one (same arithmetic), and
+        // quadrics and quartics a term-by-term expansion whose sums stay in registers.
+        if self.order <= 2 {
+            out[..3].copy_from_slice(&self.along_unrolled::<3>(origin, dir));
+        } else if self.order <= 4 {
+            out[..5].copy_from_slice(&self.along_unrolled::<5>(origin, dir));
+        } else if self.order < 8 {
+            *out = self.along_in::<8>(origin, dir);
+        } else {
+            *out = self.along_in::<{ MAX_ORDER + 1 }>(origin, dir);
+        }
+    }
+
+    /// Powers of (o + t d) per axis as polynomials in t, up to the shape's order.
+    fn powers<const N: usize>(&self, origin: DVec3, dir: DVec3) -> [[[f64; N]; N]; 3] {
         let n = self.order;
-        // Powers of (o + t d) per axis as polynomials in t.
         let mut pw = [[[0.0f64; N]; N]; 3];
         for (axis, (o, d)) in [(origin.x, dir.x), (origin.y, dir.y), (origin.z, dir.z)]
             .into_iter()
@@ -104,6 +152,43 @@ impl Algebraic {
                 }
             }
         }
+        pw
+    }
+
+    /// `along_in` for orders below `N` (3 or 5), each term expanded by code made for its
+    /// powers: the same products and sums in the same order, so the same bits, without the
+    /// loads and stores of index-dependent loops.
+    fn along_unrolled<const N: usize>(&self, origin: DVec3, dir: DVec3) -> [f64; N] {
+        let pw = powers_unrolled::<N>(origin, dir);
+        let mut acc = [0.0f64; N];
+        macro_rules! dispatch {
+            ($p:expr, $c:expr; $(($i:literal, $j:literal, $k:literal)),*) => {
+                match $p {
+                    $([$i, $j, $k] => add_term::<N, $i, $j, $k>($c, &pw, &mut acc),)*
+                    _ => unreachable!("a term above the order"),
+                }
+            };
+        }
+        for (p, c) in &self.terms {
+            if N == 3 {
+                dispatch!(*p, *c;
+                    (2, 0, 0), (1, 1, 0), (1, 0, 1), (1, 0, 0), (0, 2, 0), (0, 1, 1), (0, 1, 0),
+                    (0, 0, 2), (0, 0, 1), (0, 0, 0))
+            } else {
+                dispatch!(*p, *c;
+                    (4, 0, 0), (3, 1, 0), (3, 0, 1), (3, 0, 0), (2, 2, 0), (2, 1, 1), (2, 1, 0),
+                    (2, 0, 2), (2, 0, 1), (2, 0, 0), (1, 3, 0), (1, 2, 1), (1, 2, 0), (1, 1, 2),
+                    (1, 1, 1), (1, 1, 0), (1, 0, 3), (1, 0, 2), (1, 0, 1), (1, 0, 0), (0, 4, 0),
+                    (0, 3, 1), (0, 3, 0), (0, 2, 2), (0, 2, 1), (0, 2, 0), (0, 1, 3), (0, 1, 2),
+                    (0, 1, 1), (0, 1, 0), (0, 0, 4), (0, 0, 3), (0, 0, 2), (0, 0, 1), (0, 0, 0))
+            }
+        }
+        acc
+    }
+
+    /// `along` with room for orders below `N`.
+    fn along_in<const N: usize>(&self, origin: DVec3, dir: DVec3) -> [f64; MAX_ORDER + 1] {
+        let pw = self.powers::<N>(origin, dir);
         let mut out = [0.0; MAX_ORDER + 1];
         let mut xy = [0.0; MAX_ORDER + 1];
         for ([i, j, k], c) in &self.terms {
@@ -127,36 +212,66 @@ impl Algebraic {
     }
 }
 
+/// `Algebraic::powers` for every power below `N`, whatever the order (the rows above the
+/// order are not used): loops of constant length, which the compiler unrolls into registers.
+#[inline(always)]
+fn powers_unrolled<const N: usize>(origin: DVec3, dir: DVec3) -> [[[f64; N]; N]; 3] {
+    let mut pw = [[[0.0f64; N]; N]; 3];
+    for (axis, (o, d)) in [(origin.x, dir.x), (origin.y, dir.y), (origin.z, dir.z)]
+        .into_iter()
+        .enumerate()
+    {
+        pw[axis][0][0] = 1.0;
+        for e in 1..N {
+            for k in 0..e {
+                pw[axis][e][k] += pw[axis][e - 1][k] * o;
+                pw[axis][e][k + 1] += pw[axis][e - 1][k] * d;
+            }
+        }
+    }
+    pw
+}
+
+/// One term `c·x^I·y^J·z^K` of [`Algebraic::along_in`] added to `out`, with the loops of
+/// that function unrolled for these powers (the same operations in the same order).
+#[inline(always)]
+fn add_term<const N: usize, const I: usize, const J: usize, const K: usize>(
+    c: f64,
+    pw: &[[[f64; N]; N]; 3],
+    out: &mut [f64; N],
+) {
+    let mut xy = [0.0f64; N];
+    for a in 0..=I {
+        for b in 0..=J {
+            xy[a + b] += pw[0][I][a] * pw[1][J][b];
+        }
+    }
+    for a in 0..=I + J {
+        if xy[a] == 0.0 {
+            continue;
+        }
+        for b in 0..=K {
+            out[a + b] += c * xy[a] * pw[2][K][b];
+        }
+    }
+}
+
 impl Shape for Algebraic {
     fn bounds(&self) -> Aabb {
         Aabb::INFINITE
     }
 
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
-        let len = ray.dir.length();
-        if !(len > 0.0 && len.is_finite()) || self.terms.is_empty() {
-            return;
-        }
-        let u = ray.dir / len;
-        let c = self.along(ray.origin, u);
-        let c = &c[..=self.order];
-        // Cauchy's bound on the roots keeps the search interval finite.
-        let lead = c.iter().rposition(|v| *v != 0.0).unwrap_or(0);
-        let hi = if lead == 0 {
-            return;
-        } else {
-            let m = c[..lead]
-                .iter()
-                .map(|v| (v / c[lead]).abs())
-                .fold(0.0, f64::max);
-            (1.0 + m).min(FAR)
-        };
-        let roots = if self.sturm {
-            sturm_roots_in(c, EPSILON * len, hi)
-        } else {
-            roots_in(c, EPSILON * len, hi)
-        };
-        out.extend(roots.iter().map(|t| Hit::new(t / len)));
+        self.crossings(ray, None, out)
+    }
+
+    fn intersect_all_within(&self, ray: &Ray, lo: f64, hi: f64, out: &mut Vec<Hit>) {
+        self.crossings(ray, Some((lo, hi)), out)
+    }
+
+    fn windowed(&self) -> bool {
+        // Sturm's search counts roots over the whole interval.
+        !self.sturm && self.order >= 3
     }
 
     fn inside(&self, p: DVec3) -> bool {
@@ -228,6 +343,38 @@ impl Shape for Algebraic {
     }
 }
 
+/// `x.powi(e)` for e in 0..=n, each computed as `powi` does (the compiler's `__powidf2`:
+/// square-and-multiply from the lowest bit, starting from 1), so each is bit for bit the value
+/// `powi` gives.
+#[inline(always)]
+fn powi_table<const N: usize>(x: f64, n: usize) -> [f64; N] {
+    let mut t = [1.0; N];
+    // What the loop below gives for the low powers, written out: x^1 = 1·x, x^2 = 1·(x·x),
+    // x^3 = (1·x)·(x·x), x^4 = 1·((x·x)·(x·x)) (and 1·v is v).
+    if N <= 5 {
+        let x2 = x * x;
+        for (e, v) in [x, x2, x * x2, x2 * x2].into_iter().enumerate().take(N - 1) {
+            t[e + 1] = v;
+        }
+        return t;
+    }
+    for (e, v) in t.iter_mut().enumerate().take(n + 1).skip(1) {
+        let (mut a, mut b, mut r) = (x, e, 1.0f64);
+        loop {
+            if b & 1 != 0 {
+                r *= a;
+            }
+            b >>= 1;
+            if b == 0 {
+                break;
+            }
+            a *= a;
+        }
+        *v = r;
+    }
+    t
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -271,6 +418,56 @@ mod tests {
         assert_eq!(order[34], [0, 0, 0]);
         assert_eq!(pov_term_order(2).len(), 10);
         assert_eq!(pov_term_order(3).len(), 20);
+    }
+
+    /// The unrolled expansions and the power tables give the bits of the loops they replace.
+    #[test]
+    fn unrolled_expansion_matches_the_loops() {
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut rnd = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64 * 8.0 - 4.0
+        };
+        for order in [2usize, 3, 4] {
+            for _ in 0..200 {
+                let terms: Vec<([u8; 3], f64)> = pov_term_order(order)
+                    .into_iter()
+                    .map(|p| (p, rnd()))
+                    .collect();
+                let a = Algebraic::new(order, &terms, false);
+                let o = DVec3::new(rnd(), rnd(), -0.0);
+                let d = DVec3::new(rnd(), 0.0, rnd());
+                let mut x = [0.0; MAX_ORDER + 1];
+                a.along(o, d, &mut x);
+                let y = a.along_in::<{ MAX_ORDER + 1 }>(o, d);
+                assert_eq!(x.map(f64::to_bits), y.map(f64::to_bits));
+                let p = DVec3::new(rnd(), rnd(), rnd());
+                let direct: f64 = a
+                    .terms
+                    .iter()
+                    .map(|([i, j, k], c)| {
+                        c * p.x.powi(*i as i32) * p.y.powi(*j as i32) * p.z.powi(*k as i32)
+                    })
+                    .sum();
+                assert_eq!(a.value(p).to_bits(), direct.to_bits());
+            }
+        }
+        for x in [0.3, -1.7, 1e-200, -0.0, 3.5e100, 1.0000001, f64::NAN] {
+            let t = powi_table::<{ MAX_ORDER + 1 }>(x, MAX_ORDER);
+            for (e, v) in t.iter().enumerate() {
+                assert_eq!(v.to_bits(), x.powi(e as i32).to_bits(), "{x}^{e}");
+            }
+            let t = powi_table::<5>(x, 4);
+            for (e, v) in t.iter().enumerate() {
+                assert_eq!(v.to_bits(), x.powi(e as i32).to_bits(), "{x}^{e}");
+            }
+            let t = powi_table::<3>(x, 2);
+            for (e, v) in t.iter().enumerate() {
+                assert_eq!(v.to_bits(), x.powi(e as i32).to_bits(), "{x}^{e}");
+            }
+        }
     }
 
     #[test]

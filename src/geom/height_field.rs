@@ -135,24 +135,66 @@ impl HeightField {
         ((self.data.width - 1) as f64, (self.data.depth - 1) as f64)
     }
 
+    /// The x and z part of the slab test of block (bi, bj) of a level whose blocks are
+    /// `span` cells wide: the entry distance (from 0) and the exit one (without `tmax`), or
+    /// None when the ray runs along x or z outside the block.
+    fn slab_xz(&self, r: &GridRay, span: f64, bi: usize, bj: usize) -> Option<(f64, f64)> {
+        let (cx, cz) = self.cells();
+        let mut t0 = 0.0f64;
+        let mut t1 = f64::INFINITY;
+        for (lo, hi, o, d, inv) in [
+            (
+                bi as f64 * span,
+                ((bi + 1) as f64 * span).min(cx),
+                r.o.x,
+                r.d.x,
+                r.inv.x,
+            ),
+            (
+                bj as f64 * span,
+                ((bj + 1) as f64 * span).min(cz),
+                r.o.z,
+                r.d.z,
+                r.inv.z,
+            ),
+        ] {
+            if d == 0.0 {
+                if o < lo || o > hi {
+                    return None;
+                }
+                continue;
+            }
+            let (u, v) = ((lo - o) * inv, (hi - o) * inv);
+            t0 = t0.max(u.min(v));
+            t1 = t1.min(u.max(v));
+        }
+        Some((t0, t1))
+    }
+
     /// Visits the blocks the ray crosses, nearest first; `tmax` shrinks as hits are found
-    /// when only the first is wanted.
-    fn visit(&self, r: &mut GridRay, level: usize, bi: usize, bj: usize) {
+    /// when only the first is wanted. `xz` is the block's `slab_xz`, found by the caller.
+    ///
+    /// The slab test is split in its x-and-z part and its y part, which are combined with
+    /// `min` and `max` (exact, in any order): the same answers as `slab` over the block's box.
+    fn visit(&self, r: &mut GridRay, level: usize, bi: usize, bj: usize, xz: (f64, f64)) {
         let l = &self.levels[level];
         let k = bj * l.nx + bi;
         let ymax = l.max[k] as f64 * SCALE;
         if ymax < self.data.water_level {
             return;
         }
-        let span = (1usize << level) as f64;
-        let (cx, cz) = self.cells();
-        let lo = DVec3::new(bi as f64 * span, l.min[k] as f64 * SCALE, bj as f64 * span);
-        let hi = DVec3::new(
-            ((bi + 1) as f64 * span).min(cx),
-            ymax,
-            ((bj + 1) as f64 * span).min(cz),
-        );
-        if slab(r, lo, hi).is_none() {
+        let (ylo, yhi) = (l.min[k] as f64 * SCALE, ymax);
+        let (mut t0, mut t1) = (xz.0, r.tmax.min(xz.1));
+        if r.d.y == 0.0 {
+            if r.o.y < ylo || r.o.y > yhi {
+                return;
+            }
+        } else {
+            let (u, v) = ((ylo - r.o.y) * r.inv.y, (yhi - r.o.y) * r.inv.y);
+            t0 = t0.max(u.min(v));
+            t1 = t1.min(u.max(v));
+        }
+        if !slack_ok(t0, t1) {
             return;
         }
         if level == 0 {
@@ -160,33 +202,64 @@ impl HeightField {
             return;
         }
         let below = &self.levels[level - 1];
-        let mut kids = [(0.0, 0usize, 0usize); 4];
+        let mut kids = [((0.0, 0.0), 0usize, 0usize); 4];
         let mut n = 0;
+        let s = (1usize << (level - 1)) as f64;
+        // The children's boxes without their heights (`slab_xz` of each): the children share
+        // their faces, so each face's distance is found once. A child that exists lies below
+        // `cx` and `cz`, so its unclamped near face equals the clamped far face of the one
+        // before.
+        let (cx, cz) = self.cells();
+        let axis = |b: usize, o: f64, d: f64, inv: f64, c: f64| {
+            let f = [
+                (b * 2) as f64 * s,
+                ((b * 2 + 1) as f64 * s).min(c),
+                ((b * 2 + 2) as f64 * s).min(c),
+            ];
+            // Per child: entry and exit along the axis, or None when the ray runs along
+            // the axis outside the child.
+            let one = |k: usize| {
+                if d == 0.0 {
+                    (o >= f[k] && o <= f[k + 1]).then_some((f64::NEG_INFINITY, f64::INFINITY))
+                } else {
+                    let (u, v) = ((f[k] - o) * inv, (f[k + 1] - o) * inv);
+                    Some((u.min(v), u.max(v)))
+                }
+            };
+            [one(0), one(1)]
+        };
+        let xs = axis(bi, r.o.x, r.d.x, r.inv.x, cx);
+        let zs = axis(bj, r.o.z, r.d.z, r.inv.z, cz);
         for (di, dj) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
             let (ci, cj) = (bi * 2 + di, bj * 2 + dj);
             if ci < below.nx && cj < below.nz {
-                let s = (1usize << (level - 1)) as f64;
-                let clo = DVec3::new(ci as f64 * s, f64::NEG_INFINITY, cj as f64 * s);
-                let chi = DVec3::new(
-                    ((ci + 1) as f64 * s).min(cx),
-                    f64::INFINITY,
-                    ((cj + 1) as f64 * s).min(cz),
-                );
-                if let Some((t, _)) = slab(r, clo, chi) {
-                    kids[n] = (t, ci, cj);
-                    n += 1;
+                if let (Some(x), Some(z)) = (xs[di], zs[dj]) {
+                    // As `slab_xz`: an axis the ray runs along adds nothing (max with -inf
+                    // and min with +inf change no value).
+                    let xz = (0.0f64.max(x.0).max(z.0), f64::INFINITY.min(x.1).min(z.1));
+                    if slack_ok(xz.0, r.tmax.min(xz.1)) {
+                        kids[n] = (xz, ci, cj);
+                        n += 1;
+                    }
                 }
             }
         }
         let kids = &mut kids[..n];
         if r.first {
-            kids.sort_by(|a, b| a.0.total_cmp(&b.0));
+            // Insertion sort: stable, as `sort_by`, without its call for four elements.
+            for i in 1..kids.len() {
+                let mut j = i;
+                while j > 0 && kids[j - 1].0 .0.total_cmp(&kids[j].0 .0).is_gt() {
+                    kids.swap(j - 1, j);
+                    j -= 1;
+                }
+            }
         }
-        for &(t, ci, cj) in kids.iter() {
-            if r.first && t > r.tmax {
+        for &(xz, ci, cj) in kids.iter() {
+            if r.first && xz.0 > r.tmax {
                 break;
             }
-            self.visit(r, level - 1, ci, cj);
+            self.visit(r, level - 1, ci, cj, xz);
         }
     }
 
@@ -268,7 +341,10 @@ impl HeightField {
             out,
         };
         let top = self.levels.len() - 1;
-        self.visit(&mut r, top, 0, 0);
+        let Some(xz) = self.slab_xz(&r, (1usize << top) as f64, 0, 0) else {
+            return;
+        };
+        self.visit(&mut r, top, 0, 0, xz);
     }
 
     /// The normal at vertex (i, j) as povray keeps it: in grid units (one per grid step, heights
@@ -306,23 +382,11 @@ impl HeightField {
     }
 }
 
-/// Slab test in grid space; the entry distance when the ray meets the box before its `tmax`.
-fn slab(r: &GridRay, lo: DVec3, hi: DVec3) -> Option<(f64, f64)> {
-    let mut t0 = 0.0f64;
-    let mut t1 = r.tmax;
-    for a in 0..3 {
-        if r.d[a] == 0.0 {
-            if r.o[a] < lo[a] || r.o[a] > hi[a] {
-                return None;
-            }
-            continue;
-        }
-        let (u, v) = ((lo[a] - r.o[a]) * r.inv[a], (hi[a] - r.o[a]) * r.inv[a]);
-        t0 = t0.max(u.min(v));
-        t1 = t1.min(u.max(v));
-    }
-    // A little slack so crossings on block faces are not lost to rounding.
-    (t0 <= t1 + 1e-9 * t1.abs().max(1.0)).then_some((t0, t1))
+/// Whether a slab test's entry `t0` and exit `t1` overlap, with a little slack so crossings
+/// on block faces are not lost to rounding.
+#[inline]
+fn slack_ok(t0: f64, t1: f64) -> bool {
+    t0 <= t1 + 1e-9 * t1.abs().max(1.0)
 }
 
 impl Shape for HeightField {

@@ -50,6 +50,16 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
             .min_by(|a, b| a.t.total_cmp(&b.t))
             .copied()
     }
+    /// `intersect_all`, but crossings with `t` outside `[lo, hi]` may be left out (a clipped
+    /// object's crossings outside its clipping box): those inside come out exactly as
+    /// `intersect_all` gives them.
+    fn intersect_all_within(&self, ray: &Ray, _lo: f64, _hi: f64, out: &mut Vec<Hit>) {
+        self.intersect_all(ray, out)
+    }
+    /// Whether `intersect_all_within` saves work (the scene then finds the boxes for it).
+    fn windowed(&self) -> bool {
+        false
+    }
     /// Whether `p` lies inside the shape (POV-Ray's "inside" test, used by CSG and interiors).
     fn inside(&self, p: DVec3) -> bool;
     /// Outward normal at a point the shape reported, not necessarily unit length.

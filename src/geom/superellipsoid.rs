@@ -28,6 +28,25 @@ pub struct Superellipsoid {
     b: f64,
     /// 2/n, the exponent of |z|.
     c: f64,
+    /// 2^(e/n): the largest `(1 + r^a)^b` can be (r <= 1), for `sign`.
+    top: f64,
+}
+
+/// A point's field value, or only its sign when that is certain without the whole value.
+#[derive(Clone, Copy)]
+enum Field {
+    Value(f64),
+    /// Whether the value is negative.
+    Sign(bool),
+}
+
+impl Field {
+    fn negative(self) -> bool {
+        match self {
+            Field::Value(v) => v < 0.0,
+            Field::Sign(neg) => neg,
+        }
+    }
 }
 
 impl Superellipsoid {
@@ -37,6 +56,7 @@ impl Superellipsoid {
             a: 2.0 / e,
             b: e / n,
             c: 2.0 / n,
+            top: 2f64.powf(e / n),
         }
     }
 
@@ -51,6 +71,29 @@ impl Superellipsoid {
             0.0
         };
         xy + z.powf(self.c) - 1.0
+    }
+
+    /// `value`, or its sign alone when the two powers of `m` and `|z|` settle it: the field
+    /// is `m^c·(1 + r^a)^b + |z|^c − 1` with `1 <= (1 + r^a)^b <= 2^b`, so far enough from
+    /// the surface the two other powers are not needed. When they are, the value is finished
+    /// from the same powers, so it is `value`'s to the bit.
+    fn field(&self, p: DVec3) -> Field {
+        let (x, y, z) = (p.x.abs(), p.y.abs(), p.z.abs());
+        let m = x.max(y);
+        if m <= 0.0 || m.is_nan() {
+            return Field::Value(self.value(p));
+        }
+        let (mc, zc) = (m.powf(self.c), z.powf(self.c));
+        // Margins far above the rounding of these few operations.
+        if mc + zc > 1.0 + 1e-9 {
+            return Field::Sign(false);
+        }
+        if mc * self.top + zc < 1.0 - 1e-9 {
+            return Field::Sign(true);
+        }
+        let r = x.min(y) / m;
+        let xy = mc * (1.0 + r.powf(self.a)).powf(self.b);
+        Field::Value(xy + zc - 1.0)
     }
 
     /// Crossings as distances along the unit direction `u` from `o`, within `[lo, hi]`.
@@ -88,7 +131,13 @@ impl Superellipsoid {
         cuts.sort_by(f64::total_cmp);
 
         let f = |s: f64| self.value(o + u * s);
-        let (mut s0, mut f0) = (lo, f(lo));
+        // Samples need only their sign; the two ends of a change of sign get their values
+        // (as `value` gives them) for the refinement.
+        let exact = |s: f64, v: Field| match v {
+            Field::Value(v) => v,
+            Field::Sign(_) => f(s),
+        };
+        let (mut s0, mut f0) = (lo, self.field(o + u * lo));
         for w in cuts.windows(2) {
             let (a, b) = (w[0], w[1]);
             if b <= a {
@@ -100,9 +149,11 @@ impl Superellipsoid {
                 } else {
                     a + (b - a) * k as f64 / SAMPLES as f64
                 };
-                let f1 = f(s1);
-                if (f0 < 0.0) != (f1 < 0.0) {
-                    out.push(refine(&f, s0, f0, s1, f1));
+                let mut f1 = self.field(o + u * s1);
+                if f0.negative() != f1.negative() {
+                    let (v0, v1) = (exact(s0, f0), exact(s1, f1));
+                    out.push(refine(&f, s0, v0, s1, v1));
+                    f1 = Field::Value(v1);
                 }
                 (s0, f0) = (s1, f1);
             }

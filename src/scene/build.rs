@@ -479,7 +479,7 @@ impl Ctx {
                     }
                     _ => None,
                 };
-                (ObjKind::Shape(s), bounds, mesh)
+                (ObjKind::Shape(s, None), bounds, mesh)
             }
         };
         let clip: Vec<Object> = o

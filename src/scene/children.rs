@@ -62,7 +62,7 @@ fn opens(o: &Object) -> bool {
 fn members(o: &Object) -> &[Object] {
     match &o.kind {
         ObjKind::Csg { children, .. } => children,
-        ObjKind::Shape(_) => &[],
+        ObjKind::Shape(..) => &[],
     }
 }
 
@@ -72,6 +72,17 @@ fn members(o: &Object) -> &[Object] {
 pub fn attach(o: &mut Object, opened: bool) {
     for c in &mut o.clip {
         attach(c, false);
+    }
+    if let ObjKind::Shape(shape, _) = &o.kind {
+        // A clipped shape whose crossings outside a box are all clipped away (a clipped
+        // quartic) is asked only for crossings in that box.
+        let window = (!o.clip.is_empty() && shape.windowed())
+            .then(|| crate::scene::cull::object_cull(o))
+            .flatten();
+        if let ObjKind::Shape(_, w) = &mut o.kind {
+            *w = window.map(Box::new);
+        }
+        return;
     }
     let ObjKind::Csg {
         op,
@@ -310,7 +321,7 @@ mod tests {
             *n += 1;
             let kids = match &o.kind {
                 ObjKind::Csg { children, .. } => &children[..],
-                ObjKind::Shape(_) => &[],
+                ObjKind::Shape(..) => &[],
             };
             kids.iter().chain(&o.clip).any(|c| walk(c, leaf, n))
         }

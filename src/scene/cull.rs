@@ -77,7 +77,7 @@ fn half_spaces(o: &Object, out: &mut Vec<(DVec3, f64)>) {
         return;
     }
     match &o.kind {
-        ObjKind::Shape(s) => {
+        ObjKind::Shape(s, _) => {
             // In the shape's space: its own half-space, or the finite sides of its slabs
             // (these only for a solid that is not inverted).
             let mut local = Vec::new();

@@ -11,7 +11,9 @@ use crate::scene::children::ChildIndex;
 use crate::scene::desc::{CsgOp, MeshData, Texture};
 
 pub enum ObjKind {
-    Shape(Arc<dyn Shape>),
+    /// A shape, and for a clipped leaf whose crossings outside a box are all clipped away
+    /// (`scene::cull::object_cull`), that box: the shape is asked only for crossings in it.
+    Shape(Arc<dyn Shape>, Option<Box<Aabb>>),
     Csg {
         op: CsgOp,
         children: Vec<Object>,
@@ -95,6 +97,7 @@ fn csg_keeps(
     children: &[Object],
     index: Option<&ChildIndex>,
     p: DVec3,
+    rejecter: &std::cell::Cell<usize>,
 ) -> bool {
     // With an index only the members whose boxes hold `p` are asked: outside its box a member
     // without `inverse` is not inside (members with `inverse` have infinite boxes).
@@ -107,18 +110,28 @@ fn csg_keeps(
         }
         _ => {}
     }
-    children
-        .iter()
-        .enumerate()
-        .filter(|(j, _)| *j != i)
-        .all(|(j, o)| {
-            let want_inside = match op {
-                CsgOp::Intersection => true,
-                CsgOp::Difference => j == 0,
-                CsgOp::Union | CsgOp::Merge => false,
-            };
-            o.inside(p) == want_inside
-        })
+    let wants = |j: usize, o: &Object| {
+        let want_inside = match op {
+            CsgOp::Intersection => true,
+            CsgOp::Difference => j == 0,
+            CsgOp::Union | CsgOp::Merge => false,
+        };
+        o.inside(p) == want_inside
+    };
+    // The member that turned the last crossing of this node away is asked first: crossings
+    // outside a polyhedron are mostly turned away by the same face. `inside` has no side
+    // effects, so the order of the questions cannot change the answer.
+    let r = rejecter.get();
+    if r != i && r < children.len() && !wants(r, &children[r]) {
+        return false;
+    }
+    for (j, o) in children.iter().enumerate() {
+        if j != i && j != r && !wants(j, o) {
+            rejecter.set(j);
+            return false;
+        }
+    }
+    true
 }
 
 /// A crossing of a ray with a leaf object.
@@ -159,7 +172,7 @@ impl Object {
             return best;
         }
         match &self.kind {
-            ObjKind::Shape(shape) => {
+            ObjKind::Shape(shape, _) => {
                 let r = self.local_ray(ray);
                 shape
                     .intersect_first(&r, tmax, &mut s.hits)
@@ -231,10 +244,25 @@ impl Object {
 
     fn all_hits_unclipped<'a>(&'a self, ray: &Ray, tmax: f64, s: &mut Scratch<'a>) {
         match &self.kind {
-            ObjKind::Shape(shape) => {
+            ObjKind::Shape(shape, window) => {
                 let r = self.local_ray(ray);
                 s.hits.clear();
-                shape.intersect_all(&r, &mut s.hits);
+                match window {
+                    // Crossings outside the box are clipped away: the shape may leave them
+                    // out. The range is over the whole line, padded against rounding.
+                    Some(b) => {
+                        let inv = ray.dir.recip();
+                        let (t0, t1) = ((b.min - ray.origin) * inv, (b.max - ray.origin) * inv);
+                        let lo = t0.min(t1).max_element();
+                        let hi = t0.max(t1).min_element();
+                        let pad = 1e-7 * (lo.abs().max(hi.abs()) + 1.0);
+                        // NaN (a ray in a face's plane) asks for everything.
+                        if lo <= hi || lo.is_nan() || hi.is_nan() {
+                            shape.intersect_all_within(&r, lo - pad, hi + pad, &mut s.hits);
+                        }
+                    }
+                    None => shape.intersect_all(&r, &mut s.hits),
+                }
                 s.surface
                     .extend(s.hits.iter().filter(|h| h.t < tmax).map(|&hit| SurfaceHit {
                         t: hit.t,
@@ -259,6 +287,7 @@ impl Object {
                     return;
                 }
                 let index = index.as_deref();
+                let rejecter = std::cell::Cell::new(usize::MAX);
                 // Member `i` is `c`; in a union's index `c` may be a leaf of an opened member
                 // union (its number then does not matter: a union keeps every crossing).
                 let member = |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
@@ -273,7 +302,7 @@ impl Object {
                     let mut k = start;
                     for j in start..s.surface.len() {
                         let mut h = s.surface[j];
-                        if csg_keeps(*op, i, children, index, ray.at(h.t)) {
+                        if csg_keeps(*op, i, children, index, ray.at(h.t), &rejecter) {
                             // Surfaces of subtracted operands face into the result.
                             h.flip ^= *op == CsgOp::Difference && i > 0;
                             s.surface[k] = h;
@@ -311,7 +340,7 @@ impl Object {
             return self.inverse;
         }
         let r = match &self.kind {
-            ObjKind::Shape(s) => {
+            ObjKind::Shape(s, _) => {
                 let lp = match &self.transform {
                     Some(t) => t.inv_point(p),
                     None => p,
@@ -432,13 +461,13 @@ impl Object {
         std::ptr::eq(self, leaf)
             || match &self.kind {
                 ObjKind::Csg { children, .. } => children.iter().any(|c| c.contains(leaf)),
-                ObjKind::Shape(_) => false,
+                ObjKind::Shape(..) => false,
             }
     }
 
     /// Unit world-space normal at a hit on this leaf, outward (before face-forwarding).
     pub fn normal(&self, p: DVec3, h: &SurfaceHit) -> DVec3 {
-        let ObjKind::Shape(s) = &self.kind else {
+        let ObjKind::Shape(s, _) = &self.kind else {
             return DVec3::Z;
         };
         let n = match &self.transform {
@@ -456,7 +485,7 @@ impl Object {
     /// The shape's (u, v, 0) at a hit for `uv_mapping`, or None where the shape has no uv
     /// coordinates.
     pub fn uv_point(&self, p: DVec3, h: &SurfaceHit) -> Option<DVec3> {
-        let ObjKind::Shape(s) = &self.kind else {
+        let ObjKind::Shape(s, _) = &self.kind else {
             return None;
         };
         let local = self.transform.as_ref().map_or(p, |t| t.inv_point(p));
