@@ -53,7 +53,9 @@ pub fn render_bands(
         can_band(s),
         "method 2 anti-aliasing is not rendered in bands"
     );
-    let tracer = Tracer::new(scene, s.alpha, Quality::level(s.quality));
+    let base = Tracer::new(scene, s.alpha, Quality::level(s.quality));
+    let cache = super::radiosity::pretrace(scene, s, &base);
+    let tracer = super::with_radiosity(&base, cache.as_ref());
     let (w, h) = (s.width as usize, s.height as usize);
     let rows = rows.max(1);
     let (mut rays, mut camera_rays) = (0, 0);

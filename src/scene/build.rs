@@ -51,6 +51,8 @@ pub struct Scene {
     pub gamma: GammaMode,
     /// Fog layers with a distance (POV-Ray treats distance 0 as no fog), up made unit.
     pub fogs: Vec<FogDesc>,
+    /// `global_settings { radiosity {} }`: indirect light from an irradiance cache.
+    pub radiosity: Option<crate::scene::desc::RadiositySettings>,
 }
 
 pub struct BuildOutput {
@@ -126,6 +128,7 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
         max_trace_level: desc.global.max_trace_level,
         adc_bailout: desc.global.adc_bailout,
         ambient_light: desc.global.ambient_light,
+        radiosity: desc.global.radiosity.clone(),
         gamma,
         fogs: desc
             .fogs
@@ -440,6 +443,7 @@ impl Ctx {
             no_shadow: o.no_shadow,
             no_image: o.no_image,
             no_reflection: o.no_reflection,
+            no_radiosity: o.no_radiosity,
             double_illuminate: o.double_illuminate,
             inverse: o.inverse,
             bounds,

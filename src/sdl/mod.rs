@@ -21,6 +21,7 @@ pub mod normal;
 pub mod object;
 pub mod parser;
 pub mod pattern;
+pub mod radiosity;
 pub mod source;
 pub mod special_objects;
 pub mod spline;
