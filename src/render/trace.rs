@@ -548,9 +548,11 @@ impl<'a> Tracer<'a> {
     ) -> DVec3 {
         let opacity = c.opacity();
         let specular_exp = 1.0 / fin.roughness.max(1e-6);
-        let own = match indirect {
-            None => fin.ambient * self.scene.ambient_light,
-            Some(e) => e * fin.diffuse,
+        let ambient = fin.ambient * self.scene.ambient_light;
+        let own = match (indirect, &self.rad) {
+            (Some(e), Some(r)) if r.set.keep_ambient => ambient + e * fin.diffuse,
+            (Some(e), _) => e * fin.diffuse,
+            (None, _) => ambient,
         };
         let mut col = (own + fin.emission) * c.rgb * opacity;
         // Highlights take the surface colour in proportion to `metallic`.

@@ -12,8 +12,8 @@ use crate::geom::Shape;
 use crate::math::{Aabb, DVec3, Ray, Transform};
 use crate::render::camera::Camera;
 use crate::scene::desc::{
-    FogDesc, ImageMap, Interior, MeshData, ObjectDesc, Pigment, PigmentKind, SceneDesc, ShapeDesc,
-    Texture, TextureEntries,
+    FogDesc, ImageMap, Interior, MeshData, ObjectDesc, Pigment, PigmentKind, RadiositySettings,
+    SceneDesc, ShapeDesc, Texture, TextureEntries,
 };
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
 use crate::scene::shapes::make_shape;
@@ -128,7 +128,10 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
         max_trace_level: desc.global.max_trace_level,
         adc_bailout: desc.global.adc_bailout,
         ambient_light: desc.global.ambient_light,
-        radiosity: desc.global.radiosity.clone(),
+        radiosity: desc.global.radiosity.clone().map(|r| RadiositySettings {
+            keep_ambient: desc.version.is_some_and(|v| v < 3.7),
+            ..r
+        }),
         gamma,
         fogs: desc
             .fogs

@@ -90,6 +90,9 @@ pub struct RadiositySettings {
     pub pretrace_start: f64,
     pub pretrace_end: f64,
     pub recursion_limit: u32,
+    /// Scenes for POV-Ray before 3.7 keep their `ambient` beside radiosity's light (set by
+    /// the scene builder from `#version`; measured, docs/povray-behaviour.md).
+    pub keep_ambient: bool,
 }
 
 impl Default for RadiositySettings {
@@ -111,6 +114,7 @@ impl Default for RadiositySettings {
             pretrace_start: 0.08,
             pretrace_end: 0.04,
             recursion_limit: 2,
+            keep_ambient: false,
         }
     }
 }
