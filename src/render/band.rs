@@ -58,7 +58,7 @@ pub fn render_bands(
     let tracer = super::with_radiosity(&base, cache.as_ref());
     let (w, h) = (s.width as usize, s.height as usize);
     let rows = rows.max(1);
-    let (mut rays, mut camera_rays) = (0, 0);
+    let (mut rays, mut camera_rays) = (cache.as_ref().map_or(0, |c| c.rays), 0);
     // First-pass samples of the row above the band and of the band's first row, when an
     // earlier band traced them.
     let mut above: Vec<Seen> = Vec::new();

@@ -154,7 +154,8 @@ pub fn render(scene: &Scene, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)
             pass
         }
     };
-    let (rays, camera) = (pass.rays, pass.camera_rays);
+    let pretrace_rays = cache.as_ref().map_or(0, |c| c.rays);
+    let (rays, camera) = (pass.rays + pretrace_rays, pass.camera_rays);
     film_of(&pass.samples, s, s.height, scene.gamma, (rays, camera))
 }
 
