@@ -193,20 +193,21 @@ impl<'a> Tracer<'a> {
         if level > rad.set.recursion_limit {
             return DVec3::ZERO;
         }
+        let bound = rad.bound;
         let mut b = Blend::default();
         let c = rad.cache;
         if !c.samples.is_empty() {
             if let Some(ids) = c.grid.get(&c.key(p)) {
                 for &i in ids {
-                    b.add(&c.samples[i as usize], p, n, level, rad.bound);
+                    b.add(&c.samples[i as usize], p, n, level, bound);
                 }
             }
             for &i in &c.wide {
-                b.add(&c.samples[i as usize], p, n, level, rad.bound);
+                b.add(&c.samples[i as usize], p, n, level, bound);
             }
         }
         for s in &ctx.rad_local {
-            b.add(s, p, n, level, rad.bound);
+            b.add(s, p, n, level, bound);
         }
         // Deeper levels take one valid sample: asking nearest_count of them there multiplies
         // the samples gathered per ray tree beyond what povray's statistics show.
@@ -390,8 +391,12 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
         }
         cache.rebuild(set.error_bound);
         if std::env::var_os("LANCER_RAD_STATS").is_some() {
+            let mut levels = [0usize; 4];
+            for smp in &cache.samples {
+                levels[(smp.level as usize - 1).min(3)] += 1;
+            }
             eprintln!(
-                "radiosity pretrace block {block:.2}px: {} samples, {} rays",
+                "radiosity pretrace block {block:.2}px: {} samples (by level {levels:?}), {} rays",
                 cache.len(),
                 rays.load(Ordering::Relaxed)
             );
