@@ -629,6 +629,13 @@ fn apply_pov_option(
                 ))
             }
         };
+    } else if upper == "RVP" || upper == "HR" {
+        // Radiosity's vain pretrace only shapes povray's preview, and lancer's radiosity is
+        // reproducible for any thread count without asking (docs/radiosity.md).
+    } else if upper.starts_with("RF") {
+        warnings.push(format!(
+            "option {opt} (radiosity cache files) is not supported by lancer yet and is ignored"
+        ));
     } else if upper == "UA" {
         s.alpha = on;
     } else if let Some(rest) = upper.strip_prefix('Q') {

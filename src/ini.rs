@@ -245,7 +245,10 @@ fn switch_for(key: &str, value: &str) -> Result<Option<String>, String> {
         | "render_pattern"
         | "render_block_size"
         | "render_block_step"
-        | "warning_level" => Ok(None),
+        | "warning_level"
+        // Preview-only, and lancer's radiosity is always reproducible (docs/radiosity.md).
+        | "radiosity_vain_pretrace"
+        | "high_reproducibility" => Ok(None),
         "pre_scene_command"
         | "pre_frame_command"
         | "post_scene_command"

@@ -53,10 +53,12 @@ pub fn render_bands(
         can_band(s),
         "method 2 anti-aliasing is not rendered in bands"
     );
-    let tracer = Tracer::new(scene, s.alpha, Quality::level(s.quality));
+    let base = Tracer::new(scene, s.alpha, Quality::level(s.quality));
+    let cache = super::radiosity::pretrace(scene, s, &base);
+    let tracer = super::with_radiosity(&base, cache.as_ref());
     let (w, h) = (s.width as usize, s.height as usize);
     let rows = rows.max(1);
-    let (mut rays, mut camera_rays) = (0, 0);
+    let (mut rays, mut camera_rays) = (cache.as_ref().map_or(0, |c| c.rays), 0);
     // First-pass samples of the row above the band and of the band's first row, when an
     // earlier band traced them.
     let mut above: Vec<Seen> = Vec::new();

@@ -13,6 +13,7 @@ mod noise_data;
 pub mod normal;
 pub mod pattern;
 pub mod pigment;
+pub mod radiosity;
 mod shadow;
 pub mod texture_map;
 pub mod trace;
@@ -137,7 +138,9 @@ pub(crate) fn jitter_hash(x: u32, y: u32, i: u32) -> f64 {
 
 /// Renders the scene; `progress` is called once per finished row (from any thread).
 pub fn render(scene: &Scene, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)) -> Film {
-    let tracer = Tracer::new(scene, s.alpha, Quality::level(s.quality));
+    let base = Tracer::new(scene, s.alpha, Quality::level(s.quality));
+    let cache = radiosity::pretrace(scene, s, &base);
+    let tracer = with_radiosity(&base, cache.as_ref());
     let pass = match s.antialias {
         // Method 2 never looks at a pixel's centre, so the first pass would be wasted.
         Some(threshold) if s.sampling_method == 2 => aa::method2(&tracer, s, threshold, progress),
@@ -151,8 +154,20 @@ pub fn render(scene: &Scene, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)
             pass
         }
     };
-    let (rays, camera) = (pass.rays, pass.camera_rays);
+    let pretrace_rays = cache.as_ref().map_or(0, |c| c.rays);
+    let (rays, camera) = (pass.rays + pretrace_rays, pass.camera_rays);
     film_of(&pass.samples, s, s.height, scene.gamma, (rays, camera))
+}
+
+/// The final trace's tracer: `base`, reading the radiosity cache when there is one.
+pub(crate) fn with_radiosity<'a>(
+    base: &Tracer<'a>,
+    cache: Option<&'a radiosity::Cache>,
+) -> Tracer<'a> {
+    match (base.scene.radiosity.as_ref(), cache) {
+        (Some(set), Some(cache)) => radiosity::final_tracer(base, set, cache),
+        _ => base.clone(),
+    }
 }
 
 /// The film of finished samples: `height` whole rows of `s.width`; `rays` is (all, camera).

@@ -17,8 +17,11 @@ use super::{normal, pigment, texture_map};
 /// Per-thread scratch buffers so tracing allocates nothing per ray.
 pub type TraceCtx<'a> = Scratch<'a>;
 
+#[derive(Clone)]
 pub struct Tracer<'a> {
     pub scene: &'a Scene,
+    /// Radiosity's cache and settings for this pass; None without radiosity.
+    pub rad: Option<super::radiosity::RadTrace<'a>>,
     /// `+UA`: the output keeps the background's share of each pixel in an alpha channel.
     pub alpha: bool,
     pub quality: Quality,
@@ -72,6 +75,8 @@ pub struct Path<'a> {
     /// Whether the ray runs inside a solid (not `hollow`) object, where there is no fog:
     /// known for reflected rays (their incident ray's), found by looking otherwise.
     in_solid: Option<bool>,
+    /// 0 on the camera's tree of rays; n below a radiosity sample of level n.
+    pub(super) rad_level: u32,
 }
 
 impl<'a> Path<'a> {
@@ -81,6 +86,7 @@ impl<'a> Path<'a> {
         straight: true,
         medium: None,
         in_solid: None,
+        rad_level: 0,
     };
 
     fn next(self, weight: f64, straight: bool, medium: Option<&'a Interior>) -> Path<'a> {
@@ -90,6 +96,19 @@ impl<'a> Path<'a> {
             straight,
             medium,
             in_solid: self.in_solid,
+            rad_level: self.rad_level,
+        }
+    }
+
+    /// A gathering ray of a radiosity sample of level `level`.
+    pub(super) fn gathering(self, level: u32) -> Path<'a> {
+        Path {
+            depth: self.depth + 1,
+            weight: 1.0,
+            straight: false,
+            medium: None,
+            in_solid: None,
+            rad_level: level,
         }
     }
 }
@@ -129,6 +148,7 @@ impl<'a> Tracer<'a> {
     pub fn new(scene: &'a Scene, alpha: bool, quality: Quality) -> Tracer<'a> {
         Tracer {
             scene,
+            rad: None,
             alpha,
             quality,
         }
@@ -137,6 +157,14 @@ impl<'a> Tracer<'a> {
     /// A camera ray: colour in the scene's working space, and the background's share. No ray
     /// (outside a fisheye's circle) is black.
     pub fn trace_camera(&self, ray: Option<Ray>, ctx: &mut TraceCtx<'a>) -> Seen {
+        // Radiosity samples the final trace had to gather serve this camera sample only, so
+        // that no pixel depends on which pixels the thread traced before.
+        ctx.rad_local.clear();
+        self.trace_pretrace(ray, ctx)
+    }
+
+    /// A camera ray keeping the radiosity samples gathered before it in `ctx.rad_local`.
+    pub(super) fn trace_pretrace(&self, ray: Option<Ray>, ctx: &mut TraceCtx<'a>) -> Seen {
         match ray {
             Some(ray) => self.trace_seen(&ray, Path::CAMERA, ctx),
             None => Seen::default(),
@@ -172,7 +200,7 @@ impl<'a> Tracer<'a> {
         if path.depth > self.scene.max_trace_level {
             return Seen::default();
         }
-        let hit = self.first_visible(ray, path.straight, ctx);
+        let hit = self.first_visible(ray, path.straight, false, ctx);
         let t = hit.as_ref().map_or(f64::INFINITY, |h| h.t);
         // No atmosphere inside solid (not `hollow`) objects, povray's rule (measured: a
         // camera inside plane { z, 10 } sees the plane unfogged). A ray that crossed no
@@ -200,21 +228,49 @@ impl<'a> Tracer<'a> {
         }
     }
 
+    /// A radiosity gathering ray: what it brings back, and how far it went (infinite to the
+    /// background). It passes through `no_radiosity` objects.
+    pub(super) fn trace_gather(
+        &self,
+        ray: &Ray,
+        path: Path<'a>,
+        ctx: &mut TraceCtx<'a>,
+    ) -> (DVec3, f64) {
+        ctx.rays += 1;
+        if path.depth > self.scene.max_trace_level {
+            return (DVec3::ZERO, f64::INFINITY);
+        }
+        let (seen, t) = match self.first_visible(ray, false, true, ctx) {
+            Some(h) => (self.shade_blended(ray, &h, path, ctx), h.t),
+            None => (self.background(ray.dir, false), f64::INFINITY),
+        };
+        let seen = if self.scene.fogs.is_empty() {
+            seen
+        } else {
+            super::fog::apply(&self.scene.fogs, ray, t, seen)
+        };
+        (seen.rgb, t * ray.dir.length())
+    }
+
     /// The first crossing the ray can see: camera rays and their transmitted continuations
     /// (`straight`) pass through `no_image` objects, reflected rays through `no_reflection`
     /// ones (measured with povray: a no_image sphere is missing through glass too, and shows
-    /// in a mirror). `t` stays measured along `ray`.
+    /// in a mirror), radiosity's gathering rays (`gather`) through `no_radiosity` ones. `t`
+    /// stays measured along `ray`.
     fn first_visible(
         &self,
         ray: &Ray,
         straight: bool,
+        gather: bool,
         ctx: &mut TraceCtx<'a>,
     ) -> Option<SurfaceHit<'a>> {
         let mut h = self.scene.first_hit(ray, f64::INFINITY, ctx)?;
         let mut offset = 0.0;
         // Bounded so that a ray grazing along a hidden surface cannot loop for ever.
         for _ in 0..256 {
-            let hidden = if straight {
+            let hidden = if gather {
+                h.obj.no_radiosity
+            } else if straight {
                 h.obj.no_image
             } else {
                 h.obj.no_reflection
@@ -357,6 +413,10 @@ impl<'a> Tracer<'a> {
         let mut bent: Vec<(DVec3, DVec3)> = Vec::new();
         // The first perturbed normal met decides refraction.
         let mut refract_n: Option<DVec3> = None;
+        // Radiosity's light at this point, gathered at most once (per normal with
+        // `normal on`), and only if some layer is diffuse.
+        let rad_normal = self.rad.is_some_and(|r| r.set.normal);
+        let mut irr: Option<DVec3> = None;
         for tex in top.layers() {
             // A patterned texture is shaded as the plain textures it is made of here, each
             // weighted (texture_map blends); a plain one is itself with weight 1.
@@ -371,7 +431,13 @@ impl<'a> Tracer<'a> {
                     }
                     _ => (nf, mirror, cos_i),
                 };
-                col += through * w * self.layer_light(&c, fin, dir, pn, pmirror, ctx);
+                let indirect = match self.rad {
+                    None => None,
+                    Some(_) if fin.diffuse <= 0.0 => Some(DVec3::ZERO),
+                    Some(_) if rad_normal => Some(self.irradiance(p, pn, path, ctx)),
+                    Some(_) => Some(*irr.get_or_insert_with(|| self.irradiance(p, nf, path, ctx))),
+                };
+                col += through * w * self.layer_light(&c, fin, dir, pn, pmirror, indirect, ctx);
                 let refl = &fin.reflection;
                 if !refl.is_zero() && q.reflection {
                     // Where a ray leaves an object at a point still inside another object (a
@@ -532,7 +598,9 @@ impl<'a> Tracer<'a> {
     }
 
     /// One texture layer's own light: ambient and diffuse weighted by its opacity,
-    /// highlights not.
+    /// highlights not. With radiosity, `indirect` (the irradiance there) replaces ambient:
+    /// POV-Ray 3.7 ignores `ambient` then (measured: docs/povray-behaviour.md).
+    #[allow(clippy::too_many_arguments)]
     fn layer_light(
         &self,
         c: &Rgbft,
@@ -540,11 +608,18 @@ impl<'a> Tracer<'a> {
         dir: DVec3,
         nf: DVec3,
         mirror: DVec3,
+        indirect: Option<DVec3>,
         ctx: &TraceCtx<'a>,
     ) -> DVec3 {
         let opacity = c.opacity();
         let specular_exp = 1.0 / fin.roughness.max(1e-6);
-        let mut col = (fin.ambient * self.scene.ambient_light + fin.emission) * c.rgb * opacity;
+        let ambient = fin.ambient * self.scene.ambient_light;
+        let own = match (indirect, &self.rad) {
+            (Some(e), Some(r)) if r.set.keep_ambient => ambient + e * fin.diffuse,
+            (Some(e), _) => e * fin.diffuse,
+            (None, _) => ambient,
+        };
+        let mut col = (own + fin.emission) * c.rgb * opacity;
         // Highlights take the surface colour in proportion to `metallic`.
         let highlight_tint = DVec3::ONE + (c.rgb - DVec3::ONE) * fin.metallic;
         for lb in &ctx.lit {

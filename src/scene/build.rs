@@ -12,8 +12,8 @@ use crate::geom::Shape;
 use crate::math::{Aabb, DVec3, Ray, Transform};
 use crate::render::camera::Camera;
 use crate::scene::desc::{
-    FogDesc, ImageMap, Interior, MeshData, ObjectDesc, Pigment, PigmentKind, SceneDesc, ShapeDesc,
-    Texture, TextureEntries,
+    FogDesc, ImageMap, Interior, MeshData, ObjectDesc, Pigment, PigmentKind, RadiositySettings,
+    SceneDesc, ShapeDesc, Texture, TextureEntries,
 };
 use crate::scene::light_group::LightSet;
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
@@ -55,6 +55,8 @@ pub struct Scene {
     pub gamma: GammaMode,
     /// Fog layers with a distance (POV-Ray treats distance 0 as no fog), up made unit.
     pub fogs: Vec<FogDesc>,
+    /// `global_settings { radiosity {} }`: indirect light from an irradiance cache.
+    pub radiosity: Option<crate::scene::desc::RadiositySettings>,
 }
 
 pub struct BuildOutput {
@@ -135,6 +137,10 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
         max_trace_level: desc.global.max_trace_level,
         adc_bailout: desc.global.adc_bailout,
         ambient_light: desc.global.ambient_light,
+        radiosity: desc.global.radiosity.clone().map(|r| RadiositySettings {
+            keep_ambient: desc.version.is_some_and(|v| v < 3.7),
+            ..r
+        }),
         gamma,
         fogs: desc
             .fogs
@@ -500,6 +506,7 @@ impl Ctx {
             no_shadow: o.no_shadow,
             no_image: o.no_image,
             no_reflection: o.no_reflection,
+            no_radiosity: o.no_radiosity,
             double_illuminate: o.double_illuminate,
             light_set: self.current_set,
             hollow: o.hollow.unwrap_or(false),

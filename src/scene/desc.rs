@@ -41,6 +41,58 @@ pub struct GlobalSettings {
     pub noise_generator: u8,
     /// `number_of_waves`: how many wave sources ripples and waves read after it (1 to 10).
     pub number_of_waves: u8,
+    /// `radiosity { ... }`: present turns radiosity on.
+    pub radiosity: Option<RadiositySettings>,
+}
+
+/// `global_settings { radiosity { ... } }` with POV-Ray 3.7's defaults (manual 3.4.1).
+#[derive(Clone, Debug, PartialEq)]
+pub struct RadiositySettings {
+    pub adc_bailout: f64,
+    pub always_sample: bool,
+    pub brightness: f64,
+    pub count: u32,
+    /// `count`'s second value: the pool of directions the rays are drawn from.
+    pub count_pool: u32,
+    pub error_bound: f64,
+    pub gray_threshold: f64,
+    pub low_error_factor: f64,
+    /// Non-positive: no limit.
+    pub max_sample: f64,
+    pub maximum_reuse: f64,
+    pub minimum_reuse: f64,
+    pub nearest_count: u32,
+    pub normal: bool,
+    pub pretrace_start: f64,
+    pub pretrace_end: f64,
+    pub recursion_limit: u32,
+    /// Scenes for POV-Ray before 3.7 keep their `ambient` beside radiosity's light (set by
+    /// the scene builder from `#version`; measured, docs/povray-behaviour.md).
+    pub keep_ambient: bool,
+}
+
+impl Default for RadiositySettings {
+    fn default() -> Self {
+        RadiositySettings {
+            adc_bailout: 0.01,
+            always_sample: false,
+            brightness: 1.0,
+            count: 35,
+            count_pool: 35,
+            error_bound: 1.8,
+            gray_threshold: 0.0,
+            low_error_factor: 0.5,
+            max_sample: -1.0,
+            maximum_reuse: 0.2,
+            minimum_reuse: 0.015,
+            nearest_count: 5,
+            normal: false,
+            pretrace_start: 0.08,
+            pretrace_end: 0.04,
+            recursion_limit: 2,
+            keep_ambient: false,
+        }
+    }
 }
 
 impl Default for GlobalSettings {
@@ -52,6 +104,7 @@ impl Default for GlobalSettings {
             ambient_light: DVec3::ONE,
             noise_generator: 2,
             number_of_waves: 10,
+            radiosity: None,
         }
     }
 }
@@ -212,6 +265,8 @@ pub struct ObjectDesc {
     pub no_image: bool,
     /// `no_reflection`: unseen by reflected rays.
     pub no_reflection: bool,
+    /// `no_radiosity`: unseen by radiosity's gathering rays.
+    pub no_radiosity: bool,
     /// `double_illuminate`: lit by lights behind its surface too (diffuse only).
     pub double_illuminate: bool,
     pub hollow: Option<bool>,
@@ -233,6 +288,7 @@ impl ObjectDesc {
             no_shadow: false,
             no_image: false,
             no_reflection: false,
+            no_radiosity: false,
             double_illuminate: false,
             hollow: None,
             inverse: false,

@@ -46,6 +46,8 @@ pub struct Object {
     pub no_image: bool,
     /// Unseen by reflected rays (`no_reflection`).
     pub no_reflection: bool,
+    /// Unseen by radiosity's gathering rays (`no_radiosity`).
+    pub no_radiosity: bool,
     /// Lit from behind its surface too (`double_illuminate`).
     pub double_illuminate: bool,
     /// `hollow`: fog and other atmosphere reach inside it (they stop inside solid objects).
@@ -86,6 +88,9 @@ pub struct Scratch<'a> {
     /// Per light, the opaque object that last blocked a shadow ray to it (POV-Ray's shadow
     /// cache): asked first, since neighbouring points are mostly shadowed by the same object.
     pub blockers: Vec<Option<&'a Object>>,
+    /// Radiosity samples gathered while tracing the current camera sample, not yet in the
+    /// shared cache (which is frozen during a pass, for determinism).
+    pub rad_local: Vec<crate::render::radiosity::Sample>,
 }
 
 /// Whether a crossing at `p` of CSG member `i` is on the result's surface: every other member

@@ -171,7 +171,8 @@ impl Parser {
                 "irid_wavelength" => {
                     self.parse_color()?;
                 }
-                "radiosity" | "photons" => {
+                "radiosity" => self.parse_global_radiosity()?,
+                "photons" => {
                     self.unsupported(k, t.span);
                     self.skip_block()?;
                 }

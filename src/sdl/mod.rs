@@ -22,6 +22,7 @@ pub mod object;
 pub mod parametric;
 pub mod parser;
 pub mod pattern;
+pub mod radiosity;
 pub mod source;
 pub mod special_objects;
 pub mod spline;

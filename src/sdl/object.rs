@@ -191,22 +191,21 @@ impl Parser {
             }
             // Bounding only speeds POV-Ray up; lancer builds its own bounds.
             "bounded_by" => self.skip_block()?,
-            "no_image" | "no_reflection" | "double_illuminate" => {
+            "no_image" | "no_reflection" | "double_illuminate" | "no_radiosity" => {
                 let on = self.optional_bool()?;
                 // On a CSG object it holds for every member, which are what rays meet.
                 set_deep(obj, &|o: &mut ObjectDesc| match k {
                     "no_image" => o.no_image = on,
                     "no_reflection" => o.no_reflection = on,
+                    "no_radiosity" => o.no_radiosity = on,
                     _ => o.double_illuminate = on,
                 });
             }
-            "split_union" | "no_radiosity" => {
+            "split_union" => {
                 self.optional_bool()?;
-                if k != "split_union" {
-                    self.unsupported(k, span);
-                }
             }
-            "photons" | "radiosity" => self.skip_block()?,
+            "photons" => self.skip_block()?,
+            "radiosity" => self.parse_object_radiosity(span)?,
             "clipped_by" => {
                 let open = self.open_brace("clipped_by")?;
                 let mut clips = Vec::new();

@@ -1,0 +1,449 @@
+//! POV-Ray 3.7's radiosity: diffuse inter-reflection from an irradiance cache (Ward's method),
+//! filled by a pretrace over the picture at decreasing block sizes (`pretrace_start` down to
+//! `pretrace_end`) and only read by the final trace.
+//!
+//! Determinism for any thread count and any split of the picture (docs/radiosity.md): the
+//! cache is frozen during a pass; each pretrace sample position is traced against the frozen
+//! cache plus the samples that same position has gathered so far (`Scratch::rad_local`), and
+//! after the pass the new samples are appended in picture order. Gathering directions come
+//! from a fixed Halton pool turned by a hash of the sample's position, never from a shared
+//! random stream. The pretrace always covers the whole picture, whatever window is rendered,
+//! and the final trace never adds to the cache: a point it finds no sample for gets one
+//! computed for that camera sample only.
+
+use std::collections::HashMap;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use rayon::prelude::*;
+
+use crate::math::{DVec3, Ray};
+use crate::scene::build::Scene;
+use crate::scene::desc::RadiositySettings;
+use crate::scene::object::Scratch;
+
+use super::trace::{point_seed, Path, Tracer};
+use super::RenderSettings;
+
+/// One cached irradiance value.
+#[derive(Clone, Copy, Debug)]
+pub struct Sample {
+    pub p: DVec3,
+    pub n: DVec3,
+    /// What the sample gathered, after `gray_threshold`, `max_sample` and `brightness`.
+    pub irr: DVec3,
+    /// Reuse radius: harmonic mean distance to what the rays met, clamped by
+    /// `minimum_reuse` and `maximum_reuse` times the distance from the camera.
+    pub r: f64,
+    /// 1 for samples seen from camera rays, deeper for those of their gathering rays.
+    pub level: u32,
+}
+
+/// The samples gathered so far, with a grid over their reach for lookups.
+#[derive(Default)]
+pub struct Cache {
+    samples: Vec<Sample>,
+    cell: f64,
+    grid: HashMap<(i64, i64, i64), Vec<u32>>,
+    /// Samples reaching over too many cells to file them cell by cell.
+    wide: Vec<u32>,
+    /// Unit-disc points of the gathering directions (`direction_pool`).
+    pool: Vec<(f64, f64)>,
+    /// Rays the pretrace traced, for the statistics line.
+    pub rays: u64,
+}
+
+/// Cells one sample may cover before it goes to `wide`.
+const MAX_CELLS: i64 = 64;
+
+impl Cache {
+    fn rebuild(&mut self, reach: f64) {
+        self.grid.clear();
+        self.wide.clear();
+        if self.samples.is_empty() {
+            return;
+        }
+        let mut radii: Vec<f64> = self.samples.iter().map(|s| s.r * reach).collect();
+        radii.sort_by(f64::total_cmp);
+        self.cell = radii[radii.len() / 2].max(1e-9) * 2.0;
+        for (i, s) in self.samples.iter().enumerate() {
+            let rr = s.r * reach;
+            let lo = self.key(s.p - DVec3::splat(rr));
+            let hi = self.key(s.p + DVec3::splat(rr));
+            let cells = (hi.0 - lo.0 + 1) * (hi.1 - lo.1 + 1) * (hi.2 - lo.2 + 1);
+            if !(1..=MAX_CELLS).contains(&cells) {
+                self.wide.push(i as u32);
+                continue;
+            }
+            for x in lo.0..=hi.0 {
+                for y in lo.1..=hi.1 {
+                    for z in lo.2..=hi.2 {
+                        self.grid.entry((x, y, z)).or_default().push(i as u32);
+                    }
+                }
+            }
+        }
+    }
+
+    fn key(&self, p: DVec3) -> (i64, i64, i64) {
+        let k = |v: f64| (v / self.cell).floor().clamp(-1e15, 1e15) as i64;
+        (k(p.x), k(p.y), k(p.z))
+    }
+
+    pub fn len(&self) -> usize {
+        self.samples.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.samples.is_empty()
+    }
+}
+
+/// Ward's interpolation of the samples valid at (p, n): weighted sum and count.
+#[derive(Default)]
+struct Blend {
+    sum: DVec3,
+    weight: f64,
+    count: u32,
+}
+
+impl Blend {
+    fn add(&mut self, s: &Sample, p: DVec3, n: DVec3, level: u32, bound: f64) {
+        if s.level > level {
+            return;
+        }
+        let cos = n.dot(s.n);
+        if cos < 0.5 {
+            return;
+        }
+        let d = p - s.p;
+        let dist = d.length();
+        // Samples in front of the point see a different neighbourhood (Ward's test).
+        if d.dot(n + s.n) * 0.5 < -0.05 * s.r {
+            return;
+        }
+        let err = dist / s.r + 2.0 * (1.0 - cos).max(0.0).sqrt();
+        if err >= bound {
+            return;
+        }
+        let w = 1.0 / err.max(1e-4) - 1.0 / bound;
+        self.sum += s.irr * w;
+        self.weight += w;
+        self.count += 1;
+    }
+}
+
+/// What the tracer needs to look up and gather irradiance during one pass.
+#[derive(Clone, Copy)]
+pub struct RadTrace<'a> {
+    pub set: &'a RadiositySettings,
+    pub cache: &'a Cache,
+    /// The error bound in force: lowered by `low_error_factor` during the pretrace.
+    pub bound: f64,
+    pub pretrace: bool,
+    /// Unit-disc points of the direction pool (cosine-weighted hemisphere once lifted).
+    pub pool: &'a [(f64, f64)],
+    pub eye: DVec3,
+}
+
+fn radical_inverse(mut i: u32, base: u32) -> f64 {
+    let (mut f, mut r) = (1.0, 0.0);
+    while i > 0 {
+        f /= base as f64;
+        r += f * (i % base) as f64;
+        i /= base;
+    }
+    r
+}
+
+/// `n` Halton points mapped to the unit disc with equal area: lifted to the hemisphere they
+/// are cosine-weighted, so the plain mean of what the rays see is the irradiance.
+pub fn direction_pool(n: u32) -> Vec<(f64, f64)> {
+    (1..=n)
+        .map(|i| {
+            let u = radical_inverse(i, 2);
+            let phi = std::f64::consts::TAU * radical_inverse(i, 3);
+            let r = u.sqrt();
+            (r * phi.cos(), r * phi.sin())
+        })
+        .collect()
+}
+
+fn mix(mut h: u64) -> u64 {
+    h ^= h >> 33;
+    h = h.wrapping_mul(0xff51_afd7_ed55_8ccd);
+    h ^= h >> 33;
+    h = h.wrapping_mul(0xc4ce_b9fe_1a85_ec53);
+    h ^ (h >> 33)
+}
+
+impl<'a> Tracer<'a> {
+    /// The irradiance at `p` (facing `n`) for a ray at `path`: from the cache where samples are
+    /// valid there, otherwise gathered afresh. Zero past `recursion_limit`.
+    pub(super) fn irradiance(
+        &self,
+        p: DVec3,
+        n: DVec3,
+        path: Path<'a>,
+        ctx: &mut Scratch<'a>,
+    ) -> DVec3 {
+        let Some(rad) = self.rad.as_ref() else {
+            return DVec3::ZERO;
+        };
+        let level = path.rad_level + 1;
+        if level > rad.set.recursion_limit {
+            return DVec3::ZERO;
+        }
+        let bound = rad.bound;
+        let mut b = Blend::default();
+        let c = rad.cache;
+        if !c.samples.is_empty() {
+            if let Some(ids) = c.grid.get(&c.key(p)) {
+                for &i in ids {
+                    b.add(&c.samples[i as usize], p, n, level, bound);
+                }
+            }
+            for &i in &c.wide {
+                b.add(&c.samples[i as usize], p, n, level, bound);
+            }
+        }
+        for s in &ctx.rad_local {
+            b.add(s, p, n, level, bound);
+        }
+        // Deeper levels take one valid sample: asking nearest_count of them there multiplies
+        // the samples gathered per ray tree beyond what povray's statistics show.
+        let enough = if level == 1 && (rad.pretrace || rad.set.always_sample) {
+            b.count >= rad.set.nearest_count
+        } else {
+            b.count > 0
+        };
+        if enough && b.weight > 0.0 {
+            return b.sum / b.weight;
+        }
+        let s = self.gather(rad, p, n, level, path, ctx);
+        ctx.rad_local.push(s);
+        s.irr
+    }
+
+    fn gather(
+        &self,
+        rad: &RadTrace<'a>,
+        p: DVec3,
+        n: DVec3,
+        level: u32,
+        path: Path<'a>,
+        ctx: &mut Scratch<'a>,
+    ) -> Sample {
+        let set = rad.set;
+        // Every sample uses the same directions in its normal's frame, as POV-Ray does: errors
+        // then vary smoothly from sample to sample instead of as noise. A pool larger than
+        // `count` is drawn from at an offset hashed from the position (POV-Ray's round robin
+        // would depend on the order samples are taken in).
+        let h = mix(point_seed(p) as u64 ^ ((level as u64) << 40));
+        let start = if rad.pool.len() > set.count as usize {
+            (mix(h) % rad.pool.len() as u64) as usize
+        } else {
+            0
+        };
+        let (t1, t2) = frame(n);
+        let ray_path = path.gathering(level);
+        let mut sum = DVec3::ZERO;
+        let mut inv_dist = 0.0;
+        // Deeper samples shoot half as many rays per level (measured: povray's statistics
+        // for cornell.pov, 200 rays at depth 0 and about 100 below).
+        let count = (set.count >> (level - 1).min(31)).max(1) as usize;
+        for i in 0..count {
+            let (x, y) = rad.pool[(start + i) % rad.pool.len()];
+            let z = (1.0 - x * x - y * y).max(0.0).sqrt();
+            let dir = t1 * x + t2 * y + n * z;
+            let (mut c, t) = self.trace_gather(&Ray::new(p, dir), ray_path, ctx);
+            if set.max_sample > 0.0 {
+                let m = c.max_element();
+                if m > set.max_sample {
+                    c *= set.max_sample / m;
+                }
+            }
+            sum += c;
+            if t.is_finite() && t > 0.0 {
+                inv_dist += 1.0 / t;
+            }
+        }
+        let mut irr = sum / count as f64;
+        if set.gray_threshold > 0.0 {
+            let grey = (irr.x + irr.y + irr.z) / 3.0;
+            irr = irr * (1.0 - set.gray_threshold) + DVec3::splat(grey * set.gray_threshold);
+        }
+        irr *= set.brightness;
+        let eye = (p - rad.eye).length();
+        let harmonic = if inv_dist > 0.0 {
+            count as f64 / inv_dist
+        } else {
+            f64::INFINITY
+        };
+        let r = harmonic
+            .min(set.maximum_reuse * eye)
+            .max(set.minimum_reuse * eye)
+            .max(1e-9);
+        Sample {
+            p,
+            n,
+            irr,
+            r,
+            level,
+        }
+    }
+}
+
+/// Two unit vectors perpendicular to `n` and to each other, fixed by `n` alone.
+fn frame(n: DVec3) -> (DVec3, DVec3) {
+    let a = if n.x.abs() < 0.9 { DVec3::X } else { DVec3::Y };
+    let t1 = n.cross(a).normalize();
+    (t1, n.cross(t1))
+}
+
+/// The block sizes of the pretrace passes, in pixels: `pretrace_start` of the picture's
+/// larger side, halved until `pretrace_end` (and never below a pixel).
+pub fn pretrace_blocks(set: &RadiositySettings, width: u32, height: u32) -> Vec<f64> {
+    halving(set.pretrace_start, set.pretrace_end, width, height)
+}
+
+/// After the pretrace, passes that take the samples the final trace would otherwise take
+/// (POV-Ray takes them while tracing, in an order that depends on the threads): from the
+/// pretrace's last block size halved down to a pixel, with the final error bound.
+fn completion_blocks(set: &RadiositySettings, width: u32, height: u32) -> Vec<f64> {
+    let side = width.max(height) as f64;
+    let mut out = halving(set.pretrace_end, 0.0, width, height);
+    out.remove(0);
+    if out.is_empty() && set.pretrace_end * side > 1.0 {
+        out.push(1.0);
+    }
+    out
+}
+
+fn halving(start: f64, end: f64, width: u32, height: u32) -> Vec<f64> {
+    let side = width.max(height) as f64;
+    let mut b = (start * side).max(1.0);
+    let end = (end.min(start) * side).max(1.0);
+    let mut out = vec![b];
+    while b > end * 1.0001 && out.len() < 16 {
+        b = (b * 0.5).max(end);
+        out.push(b);
+    }
+    out
+}
+
+/// Fills the cache for the whole picture (not only a partial render's window, so that every
+/// part of a split render sees the same cache). None without radiosity, or below `+Q9`
+/// (measured: povray +Q8 renders a radiosity scene as without it).
+pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cache> {
+    let set = scene.radiosity.as_ref().filter(|_| s.quality >= 9)?;
+    let mut cache = Cache {
+        pool: direction_pool(set.count_pool.max(set.count)),
+        ..Cache::default()
+    };
+    let (w, h) = (s.width as f64, s.height as f64);
+    // Seeding passes at coarser blocks come first: within a pass no position sees another's
+    // new samples, so the first dense pass would otherwise gather every deeper level afresh
+    // at each of its positions.
+    let side = s.width.max(s.height) as f64;
+    let mut blocks = halving(0.5, set.pretrace_start, s.width, s.height);
+    blocks.pop();
+    blocks.retain(|&b| b > set.pretrace_start * side * 1.5);
+    blocks.extend(pretrace_blocks(set, s.width, s.height));
+    let finishing = completion_blocks(set, s.width, s.height);
+    let pretrace_passes = blocks.len();
+    let rays = AtomicU64::new(0);
+    for (pass, block) in blocks.into_iter().chain(finishing).enumerate() {
+        let pretrace = pass < pretrace_passes;
+        let nx = (w / block).ceil() as usize;
+        let ny = (h / block).ceil() as usize;
+        let new: Vec<Vec<Sample>> = {
+            let tracer = Tracer {
+                rad: Some(RadTrace {
+                    set,
+                    cache: &cache,
+                    bound: if pretrace {
+                        set.error_bound * set.low_error_factor
+                    } else {
+                        set.error_bound
+                    },
+                    pretrace,
+                    pool: &cache.pool,
+                    eye: scene.camera.location,
+                }),
+                ..base.clone()
+            };
+            (0..nx * ny)
+                .into_par_iter()
+                .map_init(Scratch::default, |ctx, i| {
+                    let (ix, iy) = (i % nx, i / nx);
+                    let x = ((ix as f64 + 0.5) * block).min(w - 0.5);
+                    let y = ((iy as f64 + 0.5) * block).min(h - 0.5);
+                    ctx.rad_local.clear();
+                    let ray = scene.camera.ray(x, y);
+                    tracer.trace_pretrace(ray, ctx);
+                    rays.fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
+                    std::mem::take(&mut ctx.rad_local)
+                })
+                .collect()
+        };
+        for v in new {
+            cache.samples.extend(v);
+        }
+        cache.rebuild(set.error_bound);
+        if std::env::var_os("LANCER_RAD_STATS").is_some() {
+            let mut levels = [0usize; 4];
+            for smp in &cache.samples {
+                levels[(smp.level as usize - 1).min(3)] += 1;
+            }
+            eprintln!(
+                "radiosity pretrace block {block:.2}px: {} samples (by level {levels:?}), {} rays",
+                cache.len(),
+                rays.load(Ordering::Relaxed)
+            );
+        }
+    }
+    cache.rays = rays.into_inner();
+    Some(cache)
+}
+
+/// The tracer of the final trace: reads `cache`, adds nothing to it.
+pub fn final_tracer<'a>(
+    base: &Tracer<'a>,
+    set: &'a RadiositySettings,
+    cache: &'a Cache,
+) -> Tracer<'a> {
+    Tracer {
+        rad: Some(RadTrace {
+            set,
+            cache,
+            bound: set.error_bound,
+            pretrace: false,
+            pool: &cache.pool,
+            eye: base.scene.camera.location,
+        }),
+        ..base.clone()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pool_is_cosine_weighted() {
+        let pool = direction_pool(4000);
+        // E[cos θ] over a cosine-weighted hemisphere is 2/3.
+        let mean: f64 = pool
+            .iter()
+            .map(|(x, y)| (1.0 - x * x - y * y).max(0.0).sqrt())
+            .sum::<f64>()
+            / pool.len() as f64;
+        assert!((mean - 2.0 / 3.0).abs() < 1e-3, "{mean}");
+    }
+
+    #[test]
+    fn pretrace_blocks_halve_to_the_end() {
+        let set = RadiositySettings::default();
+        assert_eq!(pretrace_blocks(&set, 160, 120), vec![12.8, 6.4]);
+    }
+}

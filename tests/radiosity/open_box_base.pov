@@ -1,0 +1,3 @@
+// Radiosity probe: open box, base.
+
+#include "open_box.inc"

@@ -1,0 +1,3 @@
+// Radiosity probe: open box, bright.
+#declare Rad_Brightness = 2;
+#include "open_box.inc"
