@@ -200,16 +200,7 @@ impl Ctx {
     fn pigment(&mut self, p: &mut Pigment) -> bool {
         // Patterns that named no noise generator use the scene's.
         let gen = self.noise_generator;
-        match &mut p.kind {
-            PigmentKind::Mapped { pattern, .. }
-            | PigmentKind::List { pattern, .. }
-            | PigmentKind::PigmentMap { pattern, .. }
-                if pattern.noise_generator == 0 =>
-            {
-                pattern.noise_generator = gen
-            }
-            _ => {}
-        }
+        p.take_generator(gen);
         match &mut p.kind {
             PigmentKind::Solid(c) => !c.is_opaque(),
             PigmentKind::Mapped { map, .. } => map.iter().any(|(_, c)| !c.is_opaque()),
@@ -267,7 +258,7 @@ impl Ctx {
             self.pigment_needs_readying(&l.pigment)
                 || l.normal.as_deref().is_some_and(normal_needs_generator)
                 || l.pattern.as_ref().is_some_and(|tp| {
-                    tp.pattern.noise_generator == 0
+                    tp.pattern.needs_generator()
                         || match &tp.entries {
                             TextureEntries::List(items) => {
                                 items.iter().any(|e| self.texture_needs_readying(e))
@@ -281,15 +272,14 @@ impl Ctx {
     }
 
     fn pigment_needs_readying(&self, p: &Pigment) -> bool {
+        if p.needs_generator() {
+            return true;
+        }
         match &p.kind {
-            PigmentKind::Solid(_) => false,
-            PigmentKind::Mapped { pattern, .. } => pattern.noise_generator == 0,
-            PigmentKind::List { pattern, items } => {
-                pattern.noise_generator == 0 || items.iter().any(|i| self.pigment_needs_readying(i))
-            }
-            PigmentKind::PigmentMap { pattern, map } => {
-                pattern.noise_generator == 0
-                    || map.iter().any(|(_, i)| self.pigment_needs_readying(i))
+            PigmentKind::Solid(_) | PigmentKind::Mapped { .. } => false,
+            PigmentKind::List { items, .. } => items.iter().any(|i| self.pigment_needs_readying(i)),
+            PigmentKind::PigmentMap { map, .. } => {
+                map.iter().any(|(_, i)| self.pigment_needs_readying(i))
             }
             PigmentKind::ImageMap(..) => {
                 matches!(self.gamma, GammaMode::Corrected(g) if g != 1.0)
@@ -308,9 +298,7 @@ impl Ctx {
             }
             let mut this = self.pigment(&mut l.pigment);
             if let Some(tp) = &mut l.pattern {
-                if tp.pattern.noise_generator == 0 {
-                    tp.pattern.noise_generator = self.noise_generator;
-                }
+                tp.pattern.take_generator(self.noise_generator);
                 // Light may pass where any of the textures lets it.
                 this = match &mut tp.entries {
                     TextureEntries::List(items) => items
@@ -557,12 +545,12 @@ impl Scene {
 fn normal_needs_generator(n: &crate::scene::desc::Normal) -> bool {
     use crate::scene::desc::NormalKind;
     match &n.kind {
-        NormalKind::Pattern { pattern, .. } => pattern.noise_generator == 0,
+        NormalKind::Pattern { pattern, .. } => pattern.needs_generator(),
         NormalKind::List { pattern, items } => {
-            pattern.noise_generator == 0 || items.iter().any(normal_needs_generator)
+            pattern.needs_generator() || items.iter().any(normal_needs_generator)
         }
         NormalKind::Map { pattern, map } => {
-            pattern.noise_generator == 0 || map.iter().any(|(_, i)| normal_needs_generator(i))
+            pattern.needs_generator() || map.iter().any(|(_, i)| normal_needs_generator(i))
         }
         NormalKind::Flat | NormalKind::BumpMap(_) | NormalKind::Facets { .. } => false,
     }
@@ -572,22 +560,16 @@ fn normal_generator(n: &mut crate::scene::desc::Normal, gen: u8) {
     use crate::scene::desc::NormalKind;
     match &mut n.kind {
         NormalKind::Pattern { pattern, .. } => {
-            if pattern.noise_generator == 0 {
-                pattern.noise_generator = gen;
-            }
+            pattern.take_generator(gen);
         }
         NormalKind::List { pattern, items } => {
-            if pattern.noise_generator == 0 {
-                pattern.noise_generator = gen;
-            }
+            pattern.take_generator(gen);
             for i in items {
                 normal_generator(i, gen);
             }
         }
         NormalKind::Map { pattern, map } => {
-            if pattern.noise_generator == 0 {
-                pattern.noise_generator = gen;
-            }
+            pattern.take_generator(gen);
             for (_, i) in map {
                 normal_generator(i, gen);
             }

@@ -23,6 +23,25 @@ pub struct Pattern {
 }
 
 impl Pattern {
+    /// Whether this pattern, or a pigment inside it (`pigment_pattern`), named no noise
+    /// generator (0) and so waits for the scene's.
+    pub fn needs_generator(&self) -> bool {
+        self.noise_generator == 0
+            || matches!(&self.kind, PatternKind::PigmentPattern(p) if p.needs_generator())
+    }
+
+    /// Gives the scene's noise generator to this pattern and the pigments inside it that named
+    /// none. Measured: `pigment_pattern { agate }` under `noise_generator 1` is generator 1's
+    /// agate, as are `function { pattern { agate } }` and `function { pigment { agate } }`.
+    pub fn take_generator(&mut self, gen: u8) {
+        if self.noise_generator == 0 {
+            self.noise_generator = gen;
+        }
+        if let PatternKind::PigmentPattern(p) = &mut self.kind {
+            p.take_generator(gen);
+        }
+    }
+
     pub fn new(kind: PatternKind) -> Pattern {
         // Wood, marble and the spirals are triangle waves unless told otherwise.
         let wave = match kind {
