@@ -3,7 +3,7 @@
 
 use std::sync::Arc;
 
-use crate::func::Function;
+use crate::func::{FnKind, Function};
 use crate::geom::blob::{BlobData, Component, ComponentKind};
 use crate::geom::height_field::HeightData;
 use crate::geom::isosurface::{Container, IsoData};
@@ -560,6 +560,13 @@ impl Parser {
             self.warn(fspan, format!("this height_field is not rendered: {why}; the picture will differ from POV-Ray's"));
             return Ok(None);
         }
+        // Measured (trace() onto `function 8, 8 { pigment { rgb C } }`): a pigment function's
+        // height is its grey, 0.297 r + 0.589 g + 0.114 b; filter and transmit do not count.
+        let f = if matches!(f.kind, FnKind::Pigment(_)) {
+            Arc::new(Function::component(f, 5))
+        } else {
+            f
+        };
         let mut grid = vec![0u16; w * h];
         for r in 0..h {
             let y = r as f64 / (h - 1) as f64;
