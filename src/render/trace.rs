@@ -352,7 +352,20 @@ impl<'a> Tracer<'a> {
                         refl_tinted += tinted;
                     } else {
                         refl_amount += amount;
-                        bent.push((pmirror, tinted));
+                        // Measured (a sky coloured by direction seen in a plane with a
+                        // steep normal pattern, tests/probes/reflect_below_surface.pov): where
+                        // the perturbed normal faces away from the ray the reflection is the
+                        // true surface's; a perturbed reflection that would go into the
+                        // surface is mirrored back out across it.
+                        let below = pmirror.dot(nf);
+                        let d = if dir.dot(pn) >= 0.0 {
+                            mirror
+                        } else if below < 0.0 {
+                            pmirror - nf * (2.0 * below)
+                        } else {
+                            pmirror
+                        };
+                        bent.push((d, tinted));
                     }
                 }
                 for (l, v) in layer_c.iter_mut().zip(c.to_array()) {
