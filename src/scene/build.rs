@@ -327,6 +327,10 @@ impl Ctx {
         let (texture, mut transparent) = self.object_texture(tex_desc.unwrap_or(default));
         let ior = int.map_or(1.0, |i| i.ior);
         let mut blob = None;
+        // Measured: a union of `no_shadow` objects casts no shadow though the union does not
+        // say so (incdemo/woods: rows of no_shadow boxes, each row a union); shadow rays test
+        // a CSG as a whole, so the flag goes up to it when every member has it.
+        let mut no_shadow = o.no_shadow;
         let (kind, bounds, mesh) = match &o.shape {
             ShapeDesc::Light(l) => {
                 self.lights.push(Light::new(l, &o.transform));
@@ -345,6 +349,8 @@ impl Ctx {
                 if kids.is_empty() {
                     return None;
                 }
+                no_shadow |= matches!(op, crate::scene::desc::CsgOp::Union)
+                    && kids.iter().all(|k| k.no_shadow);
                 // Shadow rays must look at the surfaces of a CSG whose members can let light through.
                 transparent = kids.iter().any(|k| k.transparent);
                 let bounds = csg_bounds(*op, &kids);
@@ -425,7 +431,7 @@ impl Ctx {
             mesh,
             blob,
             ior,
-            no_shadow: o.no_shadow,
+            no_shadow,
             no_image: o.no_image,
             no_reflection: o.no_reflection,
             double_illuminate: o.double_illuminate,
