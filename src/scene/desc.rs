@@ -557,40 +557,6 @@ pub struct Pigment {
 }
 
 impl Pigment {
-    /// Whether any pattern in this pigment waits for the scene's noise generator.
-    pub fn needs_generator(&self) -> bool {
-        match &self.kind {
-            PigmentKind::Solid(_) | PigmentKind::ImageMap(_, None) => false,
-            PigmentKind::ImageMap(_, Some(pattern)) | PigmentKind::Mapped { pattern, .. } => {
-                pattern.needs_generator()
-            }
-            PigmentKind::List { pattern, items } => {
-                pattern.needs_generator() || items.iter().any(Pigment::needs_generator)
-            }
-            PigmentKind::PigmentMap { pattern, map } => {
-                pattern.needs_generator() || map.iter().any(|(_, p)| p.needs_generator())
-            }
-        }
-    }
-
-    /// Gives the scene's noise generator to every pattern in this pigment that named none.
-    pub fn take_generator(&mut self, gen: u8) {
-        match &mut self.kind {
-            PigmentKind::Solid(_) | PigmentKind::ImageMap(_, None) => {}
-            PigmentKind::ImageMap(_, Some(pattern)) | PigmentKind::Mapped { pattern, .. } => {
-                pattern.take_generator(gen)
-            }
-            PigmentKind::List { pattern, items } => {
-                pattern.take_generator(gen);
-                items.iter_mut().for_each(|p| p.take_generator(gen));
-            }
-            PigmentKind::PigmentMap { pattern, map } => {
-                pattern.take_generator(gen);
-                map.iter_mut().for_each(|(_, p)| p.take_generator(gen));
-            }
-        }
-    }
-
     pub fn solid(c: Rgbft) -> Pigment {
         Pigment {
             kind: PigmentKind::Solid(c),
