@@ -483,7 +483,7 @@ impl Parser {
                         if r.metallic != 0.0 {
                             // Measured: a green metallic reflection 0.8 under conserve_energy
                             // matches only to SSIM 0.99 (tests/probes_approx/conserve_metallic).
-                            self.warn(t.span, "'metallic' (in reflection) is not supported by lancer yet: the reflection is tinted by the pigment, but POV-Ray's turn towards the light's colour at glancing angles is not drawn");
+                            self.warn(t.span, "'metallic' is not supported by lancer yet: a metallic reflection is tinted by the pigment, but POV-Ray's turn towards the light's colour at glancing angles is not drawn");
                         }
                     }
                     _ => {
