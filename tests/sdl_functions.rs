@@ -303,6 +303,27 @@ fn object_queries_match_povray() {
     assert!(m.contains("object identifier"), "{m}");
 }
 
+/// A pigment function's height field stands at the pigment's grey; POV-Ray's heights (from
+/// trace() onto the field) as POV-Ray 3.7 printed them with `#debug` for the same snippet.
+#[test]
+fn height_field_pigment_function_is_grey() {
+    let p = parser(
+        "#macro H(C) #local O = height_field { function 8, 8 { pigment { rgbft C } } }
+         #local N = <0,0,0>; trace(O, <0.5, 5, 0.5>, -y, N).y #end
+         #declare R = H(<1,0,0,0,0>); #declare G = H(<0,1,0,0,0>); #declare B = H(<0,0,1,0,0>);
+         #declare T = H(<0.5,0.5,0.5,0,0.5>);",
+    );
+    // 16-bit heights: 1e-6 is well inside one step (1.5e-5).
+    for (n, v) in [
+        ("R", 0.29698181),
+        ("G", 0.58898926),
+        ("B", 0.11398315),
+        ("T", 0.49998474),
+    ] {
+        assert!((float(&p, n) - v).abs() < 1e-6, "{n} {}", float(&p, n));
+    }
+}
+
 #[test]
 fn user_functions_match_povray() {
     let p = parser(

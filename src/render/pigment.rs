@@ -68,6 +68,10 @@ fn pigment_map(map: &[(f64, Pigment)], v: f64, lp: DVec3) -> Rgbft {
     if v <= first.0 {
         return eval(&first.1, lp);
     }
+    // As in `lookup`: at or past the last entry's value, the last entry.
+    if let Some(last) = map.last().filter(|l| v >= l.0) {
+        return eval(&last.1, lp);
+    }
     for w in map.windows(2) {
         let (a, b) = (&w[0], &w[1]);
         if v <= b.0 {
@@ -89,6 +93,12 @@ pub fn lookup(map: &ColorMap, v: f64) -> Rgbft {
     };
     if v <= first.0 {
         return first.1;
+    }
+    // Measured (`function { pigment { } }` at exact entry values): where entries share a
+    // value the earlier one gives the colour there, except at or past the last entry's value,
+    // where the last entry does (mandel's inside, value 1, under `[1 rgb x+y][1 rgb 0]`).
+    if let Some(last) = map.last().filter(|l| v >= l.0) {
+        return last.1;
     }
     for w in map.windows(2) {
         let (a, b) = (w[0], w[1]);

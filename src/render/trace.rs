@@ -407,6 +407,8 @@ impl<'a> Tracer<'a> {
         let mut through = DVec3::ONE;
         let mut refl_amount = DVec3::ZERO;
         let mut refl_tinted = DVec3::ZERO;
+        // Every reflection's tinted share, bent or not: what conserve_energy takes away.
+        let mut refl_all_tinted = DVec3::ZERO;
         let mut last = Rgbft::BLACK;
         let mut conserve = false;
         // Reflections off perturbed normals go their own ways: (direction, tint·amount).
@@ -457,12 +459,26 @@ impl<'a> Tracer<'a> {
                     };
                     let amount = (refl.min + (refl.max - refl.min) * f) * w;
                     let tinted = amount * (DVec3::ONE + (c.rgb - DVec3::ONE) * refl.metallic);
+                    refl_all_tinted += tinted;
                     if pmirror == mirror {
                         refl_amount += amount;
                         refl_tinted += tinted;
                     } else {
                         refl_amount += amount;
-                        bent.push((pmirror, tinted));
+                        // Measured (a sky coloured by direction seen in a plane with a
+                        // steep normal pattern, tests/probes/reflect_below_surface.pov): where
+                        // the perturbed normal faces away from the ray the reflection is the
+                        // true surface's; a perturbed reflection that would go into the
+                        // surface is mirrored back out across it.
+                        let below = pmirror.dot(nf);
+                        let d = if dir.dot(pn) >= 0.0 {
+                            mirror
+                        } else if below < 0.0 {
+                            pmirror - nf * (2.0 * below)
+                        } else {
+                            pmirror
+                        };
+                        bent.push((d, tinted));
                     }
                 }
                 for (l, v) in layer_c.iter_mut().zip(c.to_array()) {
@@ -500,7 +516,9 @@ impl<'a> Tracer<'a> {
         if (last.filter > 0.0 || last.transmit > 0.0) && through != DVec3::ZERO && q.transmission {
             let mut tcol = through;
             if conserve {
-                tcol *= DVec3::ONE - refl_amount;
+                // Measured: a metallic reflection tinted green takes only green from what
+                // passes (tests/probes/conserve_metallic.pov); untinted it is the amount.
+                tcol *= DVec3::ONE - refl_all_tinted;
             }
             let w = path.weight * tcol.max_element();
             if w > s.adc_bailout {

@@ -221,16 +221,7 @@ impl Ctx {
     fn pigment(&mut self, p: &mut Pigment) -> bool {
         // Patterns that named no noise generator use the scene's.
         let gen = self.noise_generator;
-        match &mut p.kind {
-            PigmentKind::Mapped { pattern, .. }
-            | PigmentKind::List { pattern, .. }
-            | PigmentKind::PigmentMap { pattern, .. }
-                if pattern.noise_generator == 0 =>
-            {
-                pattern.noise_generator = gen
-            }
-            _ => {}
-        }
+        p.take_generator(gen);
         match &mut p.kind {
             PigmentKind::Solid(c) => !c.is_opaque(),
             PigmentKind::Mapped { map, .. } => map.iter().any(|(_, c)| !c.is_opaque()),
@@ -288,7 +279,7 @@ impl Ctx {
             self.pigment_needs_readying(&l.pigment)
                 || l.normal.as_deref().is_some_and(normal_needs_generator)
                 || l.pattern.as_ref().is_some_and(|tp| {
-                    tp.pattern.noise_generator == 0
+                    tp.pattern.needs_generator()
                         || match &tp.entries {
                             TextureEntries::List(items) => {
                                 items.iter().any(|e| self.texture_needs_readying(e))
@@ -302,15 +293,14 @@ impl Ctx {
     }
 
     fn pigment_needs_readying(&self, p: &Pigment) -> bool {
+        if p.needs_generator() {
+            return true;
+        }
         match &p.kind {
-            PigmentKind::Solid(_) => false,
-            PigmentKind::Mapped { pattern, .. } => pattern.noise_generator == 0,
-            PigmentKind::List { pattern, items } => {
-                pattern.noise_generator == 0 || items.iter().any(|i| self.pigment_needs_readying(i))
-            }
-            PigmentKind::PigmentMap { pattern, map } => {
-                pattern.noise_generator == 0
-                    || map.iter().any(|(_, i)| self.pigment_needs_readying(i))
+            PigmentKind::Solid(_) | PigmentKind::Mapped { .. } => false,
+            PigmentKind::List { items, .. } => items.iter().any(|i| self.pigment_needs_readying(i)),
+            PigmentKind::PigmentMap { map, .. } => {
+                map.iter().any(|(_, i)| self.pigment_needs_readying(i))
             }
             PigmentKind::ImageMap(..) => {
                 matches!(self.gamma, GammaMode::Corrected(g) if g != 1.0)
@@ -329,9 +319,7 @@ impl Ctx {
             }
             let mut this = self.pigment(&mut l.pigment);
             if let Some(tp) = &mut l.pattern {
-                if tp.pattern.noise_generator == 0 {
-                    tp.pattern.noise_generator = self.noise_generator;
-                }
+                tp.pattern.take_generator(self.noise_generator);
                 // Light may pass where any of the textures lets it.
                 this = match &mut tp.entries {
                     TextureEntries::List(items) => items
@@ -395,6 +383,10 @@ impl Ctx {
         let (texture, mut transparent) = self.object_texture(tex_desc.unwrap_or(default));
         let ior = int.map_or(1.0, |i| i.ior);
         let mut blob = None;
+        // Measured: a union of `no_shadow` objects casts no shadow though the union does not
+        // say so (incdemo/woods: rows of no_shadow boxes, each row a union); shadow rays test
+        // a CSG as a whole, so the flag goes up to it when every member has it.
+        let mut no_shadow = o.no_shadow;
         let (kind, bounds, mesh) = match &o.shape {
             ShapeDesc::Light(l) => {
                 let mut light = Light::new(l, &o.transform);
@@ -423,6 +415,8 @@ impl Ctx {
                 if kids.is_empty() {
                     return None;
                 }
+                no_shadow |= matches!(op, crate::scene::desc::CsgOp::Union)
+                    && kids.iter().all(|k| k.no_shadow);
                 // Shadow rays must look at the surfaces of a CSG whose members can let light through.
                 transparent = kids.iter().any(|k| k.transparent);
                 let bounds = csg_bounds(*op, &kids);
@@ -503,7 +497,7 @@ impl Ctx {
             mesh,
             blob,
             ior,
-            no_shadow: o.no_shadow,
+            no_shadow,
             no_image: o.no_image,
             no_reflection: o.no_reflection,
             no_radiosity: o.no_radiosity,
@@ -646,12 +640,12 @@ impl Scene {
 fn normal_needs_generator(n: &crate::scene::desc::Normal) -> bool {
     use crate::scene::desc::NormalKind;
     match &n.kind {
-        NormalKind::Pattern { pattern, .. } => pattern.noise_generator == 0,
+        NormalKind::Pattern { pattern, .. } => pattern.needs_generator(),
         NormalKind::List { pattern, items } => {
-            pattern.noise_generator == 0 || items.iter().any(normal_needs_generator)
+            pattern.needs_generator() || items.iter().any(normal_needs_generator)
         }
         NormalKind::Map { pattern, map } => {
-            pattern.noise_generator == 0 || map.iter().any(|(_, i)| normal_needs_generator(i))
+            pattern.needs_generator() || map.iter().any(|(_, i)| normal_needs_generator(i))
         }
         NormalKind::Flat | NormalKind::BumpMap(_) | NormalKind::Facets { .. } => false,
     }
@@ -661,22 +655,16 @@ fn normal_generator(n: &mut crate::scene::desc::Normal, gen: u8) {
     use crate::scene::desc::NormalKind;
     match &mut n.kind {
         NormalKind::Pattern { pattern, .. } => {
-            if pattern.noise_generator == 0 {
-                pattern.noise_generator = gen;
-            }
+            pattern.take_generator(gen);
         }
         NormalKind::List { pattern, items } => {
-            if pattern.noise_generator == 0 {
-                pattern.noise_generator = gen;
-            }
+            pattern.take_generator(gen);
             for i in items {
                 normal_generator(i, gen);
             }
         }
         NormalKind::Map { pattern, map } => {
-            if pattern.noise_generator == 0 {
-                pattern.noise_generator = gen;
-            }
+            pattern.take_generator(gen);
             for (_, i) in map {
                 normal_generator(i, gen);
             }

@@ -6,6 +6,7 @@ use std::sync::Arc;
 
 use crate::func::Function;
 use crate::math::{DVec3, Transform};
+use crate::scene::desc::{Pigment, PigmentKind};
 
 #[derive(Clone, Debug)]
 pub struct Pattern {
@@ -23,6 +24,25 @@ pub struct Pattern {
 }
 
 impl Pattern {
+    /// Whether this pattern, or a pigment inside it (`pigment_pattern`), named no noise
+    /// generator (0) and so waits for the scene's.
+    pub fn needs_generator(&self) -> bool {
+        self.noise_generator == 0
+            || matches!(&self.kind, PatternKind::PigmentPattern(p) if p.needs_generator())
+    }
+
+    /// Gives the scene's noise generator to this pattern and the pigments inside it that named
+    /// none. Measured: `pigment_pattern { agate }` under `noise_generator 1` is generator 1's
+    /// agate, as are `function { pattern { agate } }` and `function { pigment { agate } }`.
+    pub fn take_generator(&mut self, gen: u8) {
+        if self.noise_generator == 0 {
+            self.noise_generator = gen;
+        }
+        if let PatternKind::PigmentPattern(p) = &mut self.kind {
+            p.take_generator(gen);
+        }
+    }
+
     pub fn new(kind: PatternKind) -> Pattern {
         // Wood, marble and the spirals are triangle waves unless told otherwise.
         let wave = match kind {
@@ -185,4 +205,42 @@ pub enum WarpKind {
         repeat: DVec3,
         turbulence: DVec3,
     },
+}
+
+/// The scene's noise generator handed down to a pigment's patterns (here beside
+/// [`Pattern::take_generator`], which it recurses into).
+impl Pigment {
+    /// Whether any pattern in this pigment waits for the scene's noise generator.
+    pub fn needs_generator(&self) -> bool {
+        match &self.kind {
+            PigmentKind::Solid(_) | PigmentKind::ImageMap(_, None) => false,
+            PigmentKind::ImageMap(_, Some(pattern)) | PigmentKind::Mapped { pattern, .. } => {
+                pattern.needs_generator()
+            }
+            PigmentKind::List { pattern, items } => {
+                pattern.needs_generator() || items.iter().any(Pigment::needs_generator)
+            }
+            PigmentKind::PigmentMap { pattern, map } => {
+                pattern.needs_generator() || map.iter().any(|(_, p)| p.needs_generator())
+            }
+        }
+    }
+
+    /// Gives the scene's noise generator to every pattern in this pigment that named none.
+    pub fn take_generator(&mut self, gen: u8) {
+        match &mut self.kind {
+            PigmentKind::Solid(_) | PigmentKind::ImageMap(_, None) => {}
+            PigmentKind::ImageMap(_, Some(pattern)) | PigmentKind::Mapped { pattern, .. } => {
+                pattern.take_generator(gen)
+            }
+            PigmentKind::List { pattern, items } => {
+                pattern.take_generator(gen);
+                items.iter_mut().for_each(|p| p.take_generator(gen));
+            }
+            PigmentKind::PigmentMap { pattern, map } => {
+                pattern.take_generator(gen);
+                map.iter_mut().for_each(|(_, p)| p.take_generator(gen));
+            }
+        }
+    }
 }

@@ -132,13 +132,19 @@ impl Parser {
             }
             Some("pigment") => {
                 self.advance();
-                Function::pigment(self.parse_pigment_block(None)?)
+                // The scene's generator as it stands here: POV-Ray's is the one in force when
+                // the function runs, which differs only if global_settings comes later.
+                let mut p = self.parse_pigment_block(None)?;
+                p.take_generator(self.scene.global.noise_generator);
+                Function::pigment(p)
             }
             Some("pattern") => {
                 // A pattern body reads like a pigment's; only its pattern is used.
                 self.advance();
                 self.open_brace("pattern")?;
-                Function::pattern(self.parse_pigment_body_in_braces()?)
+                let mut p = self.parse_pigment_body_in_braces()?;
+                p.take_generator(self.scene.global.noise_generator);
+                Function::pattern(p)
             }
             Some(_) => {
                 self.advance();

@@ -186,12 +186,22 @@ impl Parser {
         Ok(())
     }
 
+    /// What a normal inside a map or a block pattern's list starts from: a flat normal with
+    /// the `#default` normal's `bump_size` (measured: under `#default { normal { bump_size
+    /// 1.5 } }` the entries of a normal_map perturb as with `1.5`, textures/normals/normmap).
+    fn default_normal_base(&self) -> Option<Normal> {
+        let d = self.scene.default_texture.normal.as_deref()?;
+        let mut n = Normal::new(NormalKind::Flat);
+        n.amount = d.amount;
+        Some(n)
+    }
+
     /// The normals listed after a block pattern: `normal { ... }` blocks or identifiers.
     fn parse_normal_items(&mut self) -> PResult<Vec<Normal>> {
         let mut items = Vec::new();
         loop {
             if self.eat_keyword("normal")? {
-                items.push(self.parse_normal_block_over(None)?);
+                items.push(self.parse_normal_block_over(self.default_normal_base())?);
             } else if let Some(k) = self.peek_ident()? {
                 match self.lookup(&k) {
                     Some(Value::Normal(n)) => {
@@ -227,7 +237,7 @@ impl Parser {
                         self.parse_float()?
                     };
                     self.skip_optional_comma()?;
-                    let n = self.parse_normal_body(None, Sym::RBracket)?;
+                    let n = self.parse_normal_body(self.default_normal_base(), Sym::RBracket)?;
                     map.push((v, n));
                 }
                 Tok::Ident(k) => match self.lookup(k) {

@@ -169,6 +169,8 @@ pub struct Parser {
     pub(super) last_element: Option<super::array::LastElement>,
     pub(super) files: super::fileio::Files,
     pub(super) deprecated: super::deprecated::Deprecations,
+    /// How many times `trace()` ran, to warn once a scene leans on it heavily.
+    pub(super) trace_calls: u32,
     /// `#while`/`#for` iterations so far, against `ParseOptions::max_loop_iterations`.
     pub(super) loop_iterations: u64,
     /// Current depth of `nested` calls.
@@ -234,6 +236,7 @@ impl Parser {
             last_element: None,
             files: Default::default(),
             deprecated: Default::default(),
+            trace_calls: 0,
             loop_iterations: 0,
             nesting: 0,
             utf8_strings: false,

@@ -286,7 +286,17 @@ impl Parser {
         space: &Transform,
     ) -> PResult<bool> {
         match k {
-            "frequency" => pat.frequency = self.parse_float()?,
+            "frequency" => {
+                pat.frequency = self.parse_float()?;
+                // lancer's wave sources are POV-Ray's measured to about 1e-6; a high frequency
+                // (water normals use 100000 at scale 100000) turns that into other waves.
+                // Measured: `ripples scale 100 frequency 100` already differs by 0.1-0.9.
+                if matches!(pat.kind, PatternKind::Ripples(_) | PatternKind::Waves(_))
+                    && pat.frequency.abs() >= 50.0
+                {
+                    self.warn(span, "'frequency' is not supported by lancer yet: ripples and waves at a frequency this high magnify the 1e-6 error of lancer's measured wave sources, so the waves will differ from POV-Ray's");
+                }
+            }
             "phase" => pat.phase = self.parse_float()?,
             "ramp_wave" => pat.wave = Wave::Ramp,
             "triangle_wave" => pat.wave = Wave::Triangle,
