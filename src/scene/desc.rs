@@ -415,41 +415,6 @@ pub enum ShapeDesc {
     Light(Box<LightDesc>),
 }
 
-impl ShapeDesc {
-    /// The first shape under this one (CSG members without a texture of their own included)
-    /// for which lancer has no uv coordinates, named as the scene language names it.
-    pub fn first_without_uv(&self) -> Option<&'static str> {
-        Some(match self {
-            ShapeDesc::Sphere { .. } | ShapeDesc::Mesh(_) | ShapeDesc::Light(_) => return None,
-            ShapeDesc::Csg { children, .. } => {
-                return children
-                    .iter()
-                    .filter(|c| c.texture.is_none())
-                    .find_map(|c| c.shape.first_without_uv())
-            }
-            ShapeDesc::Plane { .. } => "plane",
-            ShapeDesc::Box { .. } => "box",
-            ShapeDesc::Cylinder { .. } => "cylinder",
-            ShapeDesc::Cone { .. } => "cone",
-            ShapeDesc::Disc { .. } => "disc",
-            ShapeDesc::Torus { .. } => "torus",
-            ShapeDesc::Triangle { .. } | ShapeDesc::SmoothTriangle(_) => "triangle",
-            ShapeDesc::Algebraic { .. } => "polynomial",
-            ShapeDesc::Text(_) => "text",
-            ShapeDesc::Prism(_) => "prism",
-            ShapeDesc::Lathe(_) => "lathe",
-            ShapeDesc::Sor(_) => "sor",
-            ShapeDesc::Polygon(_) => "polygon",
-            ShapeDesc::SphereSweep(_) => "sphere_sweep",
-            ShapeDesc::Superellipsoid { .. } => "superellipsoid",
-            ShapeDesc::HeightField(_) => "height_field",
-            ShapeDesc::Isosurface(_) => "isosurface",
-            ShapeDesc::Blob { .. } => "blob",
-            ShapeDesc::Prebuilt(_) => "this object",
-        })
-    }
-}
-
 /// A smooth triangle's corners and their normals.
 #[derive(Clone, Debug)]
 pub struct SmoothTriangleDesc {

@@ -15,6 +15,7 @@ pub mod function_parse;
 pub mod implicit;
 pub mod interior;
 pub mod lexer;
+pub mod light;
 pub mod limits;
 pub mod mesh2;
 pub mod normal;
