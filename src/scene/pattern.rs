@@ -26,7 +26,10 @@ impl Pattern {
     pub fn new(kind: PatternKind) -> Pattern {
         // Wood, marble and the spirals are triangle waves unless told otherwise.
         let wave = match kind {
-            PatternKind::Marble | PatternKind::Wood | PatternKind::Spiral1(_) => Wave::Triangle,
+            PatternKind::Marble
+            | PatternKind::Wood
+            | PatternKind::Spiral1(_)
+            | PatternKind::Spiral2(_) => Wave::Triangle,
             _ => Wave::Ramp,
         };
         Pattern {
@@ -71,6 +74,8 @@ pub enum PatternKind {
     Wood,
     /// `spiral1 arms`.
     Spiral1(f64),
+    /// `spiral2 arms`: spiral1's value through a triangle wave plus the radius's.
+    Spiral2(f64),
     Brick {
         size: DVec3,
         mortar: f64,

@@ -21,7 +21,6 @@ pub(super) const UNSUPPORTED_PATTERNS: &[&str] = &[
     "pavement",
     "quilted",
     "slope",
-    "spiral2",
     "tiling",
     "proportion",
 ];
@@ -40,6 +39,7 @@ const PATTERNS: &[&str] = &[
     "marble",
     "wood",
     "spiral1",
+    "spiral2",
     "brick",
     "hexagon",
     "bozo",
@@ -167,7 +167,9 @@ impl Parser {
             "leopard" => PatternKind::Leopard,
             "marble" => PatternKind::Marble,
             "wood" => PatternKind::Wood,
-            "spiral1" => PatternKind::Spiral1(self.parse_float()?),
+            // Measured: the number of arms is truncated to an integer (2.5 draws 2, -1.5 -1).
+            "spiral1" => PatternKind::Spiral1(self.parse_float()?.trunc()),
+            "spiral2" => PatternKind::Spiral2(self.parse_float()?.trunc()),
             "brick" => PatternKind::Brick {
                 size: DVec3::new(8.0, 3.0, 4.5),
                 mortar: 0.5,
@@ -262,7 +264,7 @@ impl Parser {
                 }
                 self.parse_float()?;
             }
-            "tiling" | "spiral2" => {
+            "tiling" => {
                 self.parse_expr()?;
             }
             _ => {}
