@@ -44,6 +44,17 @@ pub fn eval(p: &Pigment, world: DVec3) -> Rgbft {
     }
 }
 
+/// Whether the pigment's own pattern reads the surface normal (slope, aoi), so the caller
+/// hands it the perturbed one.
+pub fn uses_surface(p: &Pigment) -> bool {
+    match &p.kind {
+        PigmentKind::Mapped { pattern: pat, .. }
+        | PigmentKind::List { pattern: pat, .. }
+        | PigmentKind::PigmentMap { pattern: pat, .. } => pattern::uses_surface(pat),
+        _ => false,
+    }
+}
+
 /// `average`: every entry's pigment weighted by its value.
 fn average(map: &[(f64, Pigment)], lp: DVec3) -> Rgbft {
     let total: f64 = map.iter().map(|e| e.0).sum();

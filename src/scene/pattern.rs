@@ -92,6 +92,11 @@ pub enum PatternKind {
     /// `image_pattern { ... }`: the image's grey (file values), or with `use_alpha` its
     /// transparency (1 − alpha).
     ImagePattern(Arc<crate::scene::desc::ImageMap>),
+    /// `slope { ... }`: the angle between the surface normal and a direction (or the way to a
+    /// point), optionally mixed with a gradient (`altitude`).
+    Slope(Box<Slope>),
+    /// `aoi`: the angle between the surface normal and the ray.
+    Aoi,
     /// bozo: one octave of noise.
     Bozo,
     /// spotted and (as a pigment) bumps: bozo's values with a grey default map.
@@ -121,6 +126,21 @@ pub enum PatternKind {
     Function(Arc<Function>),
     /// A pattern lancer does not evaluate yet (already warned about): the middle of its map.
     Unsupported,
+}
+
+/// A slope pattern's parameters (measured: docs/povray-behaviour.md, Patterns). `dir` and
+/// `point_at` are in world space: pattern transforms do not move them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Slope {
+    /// The direction as written (its length weighs the slope against the altitude), or the
+    /// reference point with `point_at`.
+    pub dir: DVec3,
+    pub point_at: bool,
+    /// The slope values that give 0 and 1 (default 0, 1).
+    pub lo: f64,
+    pub hi: f64,
+    /// `altitude <a>, lo, hi`: a gradient along a (pattern space) from lo to hi.
+    pub altitude: Option<(DVec3, f64, f64)>,
 }
 
 #[derive(Clone, Debug)]

@@ -4,7 +4,9 @@
 
 use crate::color::Rgbft;
 use crate::math::{DVec3, Transform};
-use crate::scene::pattern::{Fractal, Pattern, PatternKind, Turbulence, Warp, WarpKind, Wave};
+use crate::scene::pattern::{
+    Fractal, Pattern, PatternKind, Slope, Turbulence, Warp, WarpKind, Wave,
+};
 
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
@@ -13,14 +15,12 @@ use super::value::Value;
 
 /// Pattern keywords POV-Ray 3.7 has that lancer does not evaluate yet.
 pub(super) const UNSUPPORTED_PATTERNS: &[&str] = &[
-    "aoi",
     "density_file",
     "facets",
     "magnet",
     "object",
     "pavement",
     "quilted",
-    "slope",
     "tiling",
     "proportion",
 ];
@@ -62,6 +62,8 @@ const PATTERNS: &[&str] = &[
     "cubic",
     "pigment_pattern",
     "image_pattern",
+    "slope",
+    "aoi",
 ];
 
 /// Whether `k` names a pattern of POV-Ray 3.7, evaluated by lancer or not.
@@ -203,6 +205,8 @@ impl Parser {
                 PatternKind::PigmentPattern(Box::new(self.parse_pigment_body_in_braces()?))
             }
             "average" => PatternKind::Average,
+            "aoi" => PatternKind::Aoi,
+            "slope" => PatternKind::Slope(Box::new(self.parse_slope()?)),
             "mandel" | "julia" => {
                 let julia = if k == "julia" {
                     let c = self.parse_vector()?;
@@ -244,6 +248,47 @@ impl Parser {
             }
             _ => return Ok(None),
         }))
+    }
+
+    /// `slope { <dir> [, lo, hi] [altitude <a> [, lo, hi]] }` or `slope { point_at <p> [, lo,
+    /// hi] }` after the keyword.
+    fn parse_slope(&mut self) -> PResult<Slope> {
+        if !self.eat_sym(Sym::LBrace)? {
+            // The old form without braces, `slope -z` (advanced/balcony/terrain.inc).
+            return Ok(Slope {
+                dir: self.parse_vector()?,
+                point_at: false,
+                lo: 0.0,
+                hi: 1.0,
+                altitude: None,
+            });
+        }
+        let point_at = self.eat_keyword("point_at")?;
+        let dir = self.parse_vector()?;
+        let mut sl = Slope {
+            dir,
+            point_at,
+            lo: 0.0,
+            hi: 1.0,
+            altitude: None,
+        };
+        if self.eat_sym(Sym::Comma)? {
+            sl.lo = self.parse_float()?;
+            self.skip_optional_comma()?;
+            sl.hi = self.parse_float()?;
+        }
+        if !point_at && self.eat_keyword("altitude")? {
+            let a = self.parse_vector()?;
+            let (mut lo, mut hi) = (0.0, 1.0);
+            if self.eat_sym(Sym::Comma)? {
+                lo = self.parse_float()?;
+                self.skip_optional_comma()?;
+                hi = self.parse_float()?;
+            }
+            sl.altitude = Some((a, lo, hi));
+        }
+        self.expect_sym(Sym::RBrace, "slope")?;
+        Ok(sl)
     }
 
     fn skip_pattern_args(&mut self, k: &str) -> PResult<()> {
