@@ -23,7 +23,8 @@ fn per_object_types_stay_small() {
     // (test below), so few objects hold a copy of their own.
     assert!(size_of::<Texture>() <= 336, "{}", size_of::<Texture>());
     assert!(size_of::<Pigment>() <= 112, "{}", size_of::<Pigment>());
-    assert!(size_of::<Object>() <= 176, "{}", size_of::<Object>());
+    // Object 176 -> 184 knowingly: the `interior_texture` pointer (8 MB per million objects).
+    assert!(size_of::<Object>() <= 184, "{}", size_of::<Object>());
 }
 
 /// `texture { T }` shares the declared texture between objects; anything that changes it

@@ -278,7 +278,7 @@ impl<'a> Tracer<'a> {
             normal: nf,
             ray: dir,
         }));
-        let top = obj.texture_at(h);
+        let top = obj.texture_facing(h, !entering);
         let uv = if texture_map::uses_uv(top) {
             obj.uv_point(p, h)
         } else {

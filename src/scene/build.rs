@@ -334,10 +334,32 @@ impl Ctx {
         parent_int: Option<&Interior>,
         default: &Arc<Texture>,
     ) -> Option<Object> {
+        self.object_in(o, parent_tex, None, parent_int, default)
+    }
+
+    /// `object` with the interior texture a CSG parent passes down (to members without a
+    /// texture of their own).
+    fn object_in(
+        &mut self,
+        o: &ObjectDesc,
+        parent_tex: Option<&Arc<Texture>>,
+        parent_itex: Option<&Arc<Texture>>,
+        parent_int: Option<&Interior>,
+        default: &Arc<Texture>,
+    ) -> Option<Object> {
         let tex_desc = o.texture.as_ref().or(parent_tex);
+        let itex_desc = o
+            .interior_texture
+            .as_ref()
+            .or(parent_itex.filter(|_| o.texture.is_none()));
         let int = o.interior.as_ref().or(parent_int);
         let (texture, mut transparent) = self.object_texture(tex_desc.unwrap_or(default));
         let ior = int.map_or(1.0, |i| i.ior);
+        let interior_texture = itex_desc.map(|t| {
+            let (t, tr) = self.object_texture(t);
+            transparent |= tr;
+            t
+        });
         let mut blob = None;
         let (kind, bounds, mesh) = match &o.shape {
             ShapeDesc::Light(l) => {
@@ -347,12 +369,12 @@ impl Ctx {
                 let mut shape = (**shape).clone();
                 shape.apply_transform(&Transform::translate(l.position).then(&o.transform));
                 shape.no_shadow = true;
-                return self.object(&shape, parent_tex, parent_int, default);
+                return self.object_in(&shape, parent_tex, parent_itex, parent_int, default);
             }
             ShapeDesc::Csg { op, children } => {
                 let kids: Vec<Object> = children
                     .iter()
-                    .filter_map(|c| self.object(c, tex_desc, int, default))
+                    .filter_map(|c| self.object_in(c, tex_desc, itex_desc, int, default))
                     .collect();
                 if kids.is_empty() {
                     return None;
@@ -434,6 +456,7 @@ impl Ctx {
             kind,
             transform: (!o.transform.is_identity()).then(|| Box::new(*o.transform)),
             texture,
+            interior_texture,
             mesh,
             blob,
             ior,
