@@ -137,6 +137,18 @@ pub fn image(im: &ImageMap, lp: DVec3) -> Rgbft {
             }
             (u, lp.y)
         }
+        5 => {
+            // Torus of major radius 1 in the x-z plane: u as cylindrical; v the angle around
+            // the tube, 0.5 on the outer equator, growing upwards, the seam on the inner rim
+            // (measured: scripts/measure_map_type.sh, probe image_map_torus).
+            let mut u = lp.z.atan2(lp.x) / (2.0 * PI);
+            if u < 0.0 {
+                u += 1.0;
+            }
+            let r = (lp.x * lp.x + lp.z * lp.z).sqrt() - 1.0;
+            let v = 0.5 + lp.y.atan2(r) / (2.0 * PI);
+            (u, v)
+        }
         _ => (lp.x, lp.y),
     };
     // `once` leaves the rest of the plane (or cylinder) clear; it means nothing on a sphere.
