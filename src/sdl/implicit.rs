@@ -566,7 +566,11 @@ impl Parser {
             let j = h - 1 - r;
             for i in 0..w {
                 let x = i as f64 / (w - 1) as f64;
-                let v = f.eval(&[x, y, 0.0]);
+                // A pigment function gives its grey (landscape.pov, wallstucco.pov).
+                let v = match f.call(&[x, y, 0.0]) {
+                    crate::func::FnValue::Float(v) => v,
+                    crate::func::FnValue::Vector(c) => 0.297 * c.x + 0.589 * c.y + 0.114 * c.z,
+                };
                 // NaN becomes 0 in the cast.
                 grid[j * w + i] = ((v * 65535.0).trunc() as i64).rem_euclid(65536) as u16;
             }
