@@ -9,6 +9,7 @@ pavement and magnet in docs/povray-behaviour.md were measured.
   scripts/measure_pattern.py 'quilted control0 0 control1 1' --line -0.5,0.1,0.2 0.5,0.1,0.2 11
 
 With --line A B N the points are N evenly spaced ones from A to B. Prints "x y z value".
+RENDERER=target/release/lancer evaluates the same with lancer.
 """
 
 import os
@@ -30,7 +31,7 @@ def values(pattern, points):
             for x, y, z in points:
                 f.write(f'#write(F, str(P({x!r},{y!r},{z!r}),0,12), "\\n")\n')
             f.write("#fclose F\n")
-        r = subprocess.run(["povray", "-D", "-V", "+FN8", "-A", "+W8", "+H8", f"+L{INC}",
+        r = subprocess.run([os.environ.get("RENDERER", "povray"), "-D", "-V", "+FN8", "-A", "+W8", "+H8", f"+L{INC}",
                             f"+I{src}", "+O/dev/null"], capture_output=True, text=True)
         try:
             vals = [float(v) for v in open(out).read().split()]

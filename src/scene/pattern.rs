@@ -194,6 +194,14 @@ pub struct Warp {
 
 #[derive(Clone, Debug)]
 pub enum WarpKind {
+    /// `planar n, d`: the point's (x, y) read on another plane, p′ = x·e1 + y·e2 + d·e3
+    /// (measured for the six axis normals; see `sdl::pattern::planar_frame`).
+    Planar {
+        e1: DVec3,
+        e2: DVec3,
+        e3: DVec3,
+        d: f64,
+    },
     Turbulence(Turbulence),
     Repeat {
         /// The repeat vector (one non-zero component).

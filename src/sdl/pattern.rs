@@ -81,6 +81,27 @@ const UNSUPPORTED_MODIFIERS: &[&str] = &[
     "strength",
 ];
 
+/// Where `warp { planar n, d }` puts a point's x, y and the distance d: POV-Ray's frame for
+/// the six axis normals, measured with scripts/measure_pattern.py (`function { 0.5+0.1*x }
+/// warp { planar ... }` and the same for y and z). For other normals povray's frame is not
+/// orthonormal (n = <1,1,0> gives e1 = (1,0,−1)/√2, e2 = (0,1,1)/√2, e3 = (1,−1,0)/√2) and its
+/// rule is not recovered yet: None.
+fn planar_frame(n: DVec3) -> Option<(DVec3, DVec3, DVec3)> {
+    let n = n.normalize_or_zero();
+    let (x, y, z) = (DVec3::X, DVec3::Y, DVec3::Z);
+    let axes = [
+        (z, (x, y, z)),
+        (-z, (-x, -y, -z)),
+        (y, (x, z, -y)),
+        (-y, (-x, -z, y)),
+        (x, (-z, y, x)),
+        (-x, (z, -y, -x)),
+    ];
+    axes.iter()
+        .find(|(a, _)| (n - *a).length() < 1e-12)
+        .map(|(_, f)| *f)
+}
+
 /// The colours a pattern uses when no map or list is given (measured with povray).
 pub fn default_map(kind: &PatternKind) -> Vec<(f64, Rgbft)> {
     let c = |r: f64, g: f64, b: f64| Rgbft::rgb(DVec3::new(r, g, b));
@@ -472,6 +493,22 @@ impl Parser {
                     inverse: false,
                     repeat: DVec3::ZERO,
                     turbulence: DVec3::ZERO,
+                }
+            }
+            "planar" => {
+                let (mut n, mut d) = (DVec3::Z, 0.0);
+                if self.peek_sym()? != Some(Sym::RBrace) {
+                    n = self.parse_vector()?;
+                    self.skip_optional_comma()?;
+                    d = self.parse_float()?;
+                }
+                match planar_frame(n) {
+                    Some((e1, e2, e3)) => WarpKind::Planar { e1, e2, e3, d },
+                    None => {
+                        self.unsupported("warp planar (with a normal not along an axis)", span);
+                        self.skip_rest_of_block()?;
+                        return Ok(None);
+                    }
                 }
             }
             other => {
