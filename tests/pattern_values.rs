@@ -44,3 +44,24 @@ fn planar_warp_matches_povray() {
         }
     }
 }
+
+/// The magnet fractals: both formulas, mandel and julia forms, the bail-out bounds and the
+/// interior and exterior types (docs/povray-behaviour.md, Patterns).
+#[test]
+fn magnet_fractals_match_povray() {
+    check(
+        "magnet 1 mandel 50 interior 1,200",
+        &[
+            ([0.6622684726831096, 1.4475111372089415, 0.0], 0.295479712),
+            ([1.5, 0.5, 0.0], 0.12),
+            ([-0.5, -0.5, 0.0], 0.12),
+        ],
+    );
+    check(
+        "magnet 2 julia <1.2,-0.3>, 40 interior 2,0.5",
+        &[
+            ([0.3, 0.2, 0.0], 0.944701732),
+            ([0.1, 0.05, 0.0], 0.944701732),
+        ],
+    );
+}

@@ -305,6 +305,9 @@ fn tri(v: f64) -> f64 {
 /// in for N steps the interior value (type 0: 1). Other types read the orbit as the manual
 /// lists them, scaled by their factor (checked against povray for types 1 to 8).
 fn fractal(f: &Fractal, p: (f64, f64)) -> f64 {
+    if f.magnet != 0 {
+        return magnet(f, p);
+    }
     let c = f.julia.unwrap_or(p);
     let (mut zr, mut zi) = p;
     let n = f.iterations;
@@ -329,6 +332,66 @@ fn fractal(f: &Fractal, p: (f64, f64)) -> f64 {
     }
     let (t, factor) = f.interior;
     orbit_value(t, zr, zi, min_abs2) * factor
+}
+
+/// The magnet fractals (fractint's magnet 1 and 2): z ← ((z² + c − 1)/(2z + c − 2))² or
+/// z ← ((z³ + 3(c−1)z + (c−1)(c−2))/(3z² + 3(c−2)z + (c−1)(c−2) + 1))², from z = 0 with c = p
+/// (mandel) or z = p (julia). Step k (from 0) ends the orbit, as exterior, when |z|² > 10⁴ or
+/// |z − 1|² < 10⁻⁴: both bounds measured with scripts/measure_pattern.py, 800 points matching.
+fn magnet(f: &Fractal, p: (f64, f64)) -> f64 {
+    let (c, mut z) = match f.julia {
+        Some(c) => (c, p),
+        None => (p, (0.0, 0.0)),
+    };
+    let mul = |a: (f64, f64), b: (f64, f64)| (a.0 * b.0 - a.1 * b.1, a.0 * b.1 + a.1 * b.0);
+    let div = |a: (f64, f64), b: (f64, f64)| {
+        let d = b.0 * b.0 + b.1 * b.1;
+        ((a.0 * b.0 + a.1 * b.1) / d, (a.1 * b.0 - a.0 * b.1) / d)
+    };
+    let n = f.iterations;
+    // The smallest point (interior 1) counts the starting point for julia but not the mandel
+    // form's 0 (measured).
+    let mut min_abs2 = if f.julia.is_some() {
+        p.0 * p.0 + p.1 * p.1
+    } else {
+        f64::INFINITY
+    };
+    let (c1, c2) = ((c.0 - 1.0, c.1), (c.0 - 2.0, c.1));
+    for k in 0..n {
+        let q = if f.magnet == 1 {
+            let num = mul(z, z);
+            div(
+                (num.0 + c1.0, num.1 + c1.1),
+                (2.0 * z.0 + c2.0, 2.0 * z.1 + c2.1),
+            )
+        } else {
+            let z2 = mul(z, z);
+            let z3 = mul(z2, z);
+            let cc = mul(c1, c2);
+            let a = mul((3.0 * c1.0, 3.0 * c1.1), z);
+            let b = mul((3.0 * c2.0, 3.0 * c2.1), z);
+            div(
+                (z3.0 + a.0 + cc.0, z3.1 + a.1 + cc.1),
+                (3.0 * z2.0 + b.0 + cc.0 + 1.0, 3.0 * z2.1 + b.1 + cc.1),
+            )
+        };
+        z = mul(q, q);
+        let a2 = z.0 * z.0 + z.1 * z.1;
+        let d1 = (z.0 - 1.0) * (z.0 - 1.0) + z.1 * z.1;
+        if a2 > 1e4 || d1 < 1e-4 {
+            let (t, factor) = f.exterior;
+            return match t {
+                1 => k as f64 / n as f64,
+                7 if factor != 0.0 => (k as f64 % factor) / factor,
+                8 if factor != 0.0 => (k as f64 % (factor + 1.0)) / factor,
+                6 => a2.sqrt() * factor,
+                _ => orbit_value(t, z.0, z.1, min_abs2) * factor,
+            };
+        }
+        min_abs2 = min_abs2.min(a2);
+    }
+    let (t, factor) = f.interior;
+    orbit_value(t, z.0, z.1, min_abs2) * factor
 }
 
 /// Types 0 and 2 to 6 (and interior 1): what of the orbit a fractal's value reports. Type 6,

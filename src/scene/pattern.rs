@@ -150,6 +150,9 @@ pub struct Fractal {
     pub iterations: u32,
     /// 2 to 33.
     pub exponent: u32,
+    /// 0 for zⁿ + c; 1 or 2 for the magnet fractals, which start at z = 0 (mandel) or z = p
+    /// (julia) and stop when z leaves radius 100 or comes within 0.01 of 1 (measured).
+    pub magnet: u8,
     /// `interior type, factor` (default 0, 1) and `exterior type, factor` (default 1, 1).
     pub interior: (u8, f64),
     pub exterior: (u8, f64),

@@ -17,7 +17,6 @@ use super::value::Value;
 pub(super) const UNSUPPORTED_PATTERNS: &[&str] = &[
     "density_file",
     "facets",
-    "magnet",
     "object",
     "pavement",
     "quilted",
@@ -56,6 +55,7 @@ const PATTERNS: &[&str] = &[
     "function",
     "mandel",
     "julia",
+    "magnet",
     "average",
     "square",
     "triangular",
@@ -228,6 +228,27 @@ impl Parser {
             "average" => PatternKind::Average,
             "aoi" => PatternKind::Aoi,
             "slope" => PatternKind::Slope(Box::new(self.parse_slope()?)),
+            "magnet" => {
+                // magnet 1|2 mandel N, or magnet 1|2 julia <c>, N
+                let t = self.parse_float()?;
+                let julia = if self.eat_keyword("julia")? {
+                    let c = self.parse_vector()?;
+                    self.skip_optional_comma()?;
+                    Some((c.x, c.y))
+                } else {
+                    self.eat_keyword("mandel")?;
+                    None
+                };
+                let iterations = self.parse_float()?.clamp(0.0, 1e6) as u32;
+                PatternKind::Fractal(Box::new(Fractal {
+                    julia,
+                    iterations,
+                    exponent: 2,
+                    magnet: if t >= 2.0 { 2 } else { 1 },
+                    interior: (0, 1.0),
+                    exterior: (1, 1.0),
+                }))
+            }
             "mandel" | "julia" => {
                 let julia = if k == "julia" {
                     let c = self.parse_vector()?;
@@ -241,6 +262,7 @@ impl Parser {
                     julia,
                     iterations,
                     exponent: 2,
+                    magnet: 0,
                     interior: (0, 1.0),
                     exterior: (1, 1.0),
                 }))
@@ -318,17 +340,6 @@ impl Parser {
             "density_file" => {
                 self.next_tok()?;
                 self.next_tok()?;
-            }
-            "magnet" => {
-                // magnet 1|2 mandel N, or magnet 1|2 julia <c>, N
-                self.parse_float()?;
-                if self.eat_keyword("julia")? {
-                    self.parse_vector()?;
-                    self.skip_optional_comma()?;
-                } else {
-                    self.eat_keyword("mandel")?;
-                }
-                self.parse_float()?;
             }
             "tiling" => {
                 self.parse_expr()?;
