@@ -23,9 +23,10 @@ fn per_object_types_stay_small() {
     // (test below), so few objects hold a copy of their own.
     assert!(size_of::<Texture>() <= 336, "{}", size_of::<Texture>());
     assert!(size_of::<Pigment>() <= 112, "{}", size_of::<Pigment>());
-    // Object 176 -> 184 knowingly: the `hollow` flag (fog stops inside solid objects) did not
-    // fit beside the other flags; 8 MB for a million spheres.
-    assert!(size_of::<Object>() <= 184, "{}", size_of::<Object>());
+    // Object 176 -> 192 knowingly: the `interior_texture` pointer and the `hollow` flag (fog
+    // stops inside solid objects), which did not fit beside the other flags; 16 MB per million
+    // objects.
+    assert!(size_of::<Object>() <= 192, "{}", size_of::<Object>());
 }
 
 /// `texture { T }` shares the declared texture between objects; anything that changes it

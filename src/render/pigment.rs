@@ -44,6 +44,17 @@ pub fn eval(p: &Pigment, world: DVec3) -> Rgbft {
     }
 }
 
+/// Whether the pigment's own pattern reads the surface normal (slope, aoi), so the caller
+/// hands it the perturbed one.
+pub fn uses_surface(p: &Pigment) -> bool {
+    match &p.kind {
+        PigmentKind::Mapped { pattern: pat, .. }
+        | PigmentKind::List { pattern: pat, .. }
+        | PigmentKind::PigmentMap { pattern: pat, .. } => pattern::uses_surface(pat),
+        _ => false,
+    }
+}
+
 /// `average`: every entry's pigment weighted by its value.
 fn average(map: &[(f64, Pigment)], lp: DVec3) -> Rgbft {
     let total: f64 = map.iter().map(|e| e.0).sum();
@@ -135,6 +146,18 @@ pub fn image(im: &ImageMap, lp: DVec3) -> Rgbft {
                 u += 1.0;
             }
             (u, lp.y)
+        }
+        5 => {
+            // Torus of major radius 1 in the x-z plane: u as cylindrical; v the angle around
+            // the tube, 0.5 on the outer equator, growing upwards, the seam on the inner rim
+            // (measured: scripts/measure_map_type.sh, probe image_map_torus).
+            let mut u = lp.z.atan2(lp.x) / (2.0 * PI);
+            if u < 0.0 {
+                u += 1.0;
+            }
+            let r = (lp.x * lp.x + lp.z * lp.z).sqrt() - 1.0;
+            let v = 0.5 + lp.y.atan2(r) / (2.0 * PI);
+            (u, v)
         }
         _ => (lp.x, lp.y),
     };

@@ -190,8 +190,16 @@ impl<'a> Tracer<'a> {
             obj.all_hits(&ray, dist, ctx);
             'hits: for h in &ctx.surface[start..] {
                 // Through each layer of a layered texture in turn.
-                let top = h.obj.texture_at(h);
+                if h.obj.no_shadow {
+                    // A CSG member's own no_shadow (advanced/infinitybox's walls).
+                    continue;
+                }
                 let hp = ray.at(h.t);
+                // A shadow ray leaving through a wall meets its inside (measured: an open
+                // box's interior_texture shadows its own far wall).
+                let inside =
+                    h.obj.interior_texture.is_some() && h.obj.normal(hp, h).dot(ray.dir) > 0.0;
+                let top = h.obj.texture_facing(h, inside);
                 let uv = if texture_map::uses_uv(top) {
                     h.obj.uv_point(hp, h)
                 } else {

@@ -10,7 +10,7 @@ use crate::math::{DVec3, Transform};
 use crate::scene::desc::{Texture, TextureEntries};
 use crate::scene::pattern::PatternKind;
 
-use super::{pattern, pigment};
+use super::{normal, pattern, pigment};
 
 /// Calls `f(colour, texture, space, weight)` for each plain texture that `tex` (one layer) is
 /// made of at world point `p`: itself when it is plain, one listed texture for a block
@@ -47,7 +47,19 @@ fn blend_in(
     let Some(tp) = &tex.pattern else {
         let c = match tex.pigment.quick {
             Some(q) if quick => q,
-            _ => pigment::eval(&tex.pigment, pigment_point(tex, p, uv)),
+            _ => match (tex.normal.as_deref(), pattern::surface()) {
+                // Measured: a slope or aoi pigment sees its own texture's perturbed normal.
+                (Some(nd), Some(s))
+                    if pigment::uses_surface(&tex.pigment) && normal::perturbs(Some(nd)) =>
+                {
+                    let pn = normal::perturb_in(nd, space, p, s.normal);
+                    pattern::set_surface(Some(pattern::Surface { normal: pn, ..s }));
+                    let c = pigment::eval(&tex.pigment, pigment_point(tex, p, uv));
+                    pattern::set_surface(Some(s));
+                    c
+                }
+                _ => pigment::eval(&tex.pigment, pigment_point(tex, p, uv)),
+            },
         };
         f(c, tex, space, weight);
         return;

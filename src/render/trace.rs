@@ -373,7 +373,12 @@ impl<'a> Tracer<'a> {
         let n = obj.normal(p, h);
         let entering = n.dot(dir) < 0.0;
         let nf = if entering { n } else { -n };
-        let top = obj.texture_at(h);
+        super::pattern::set_surface(Some(super::pattern::Surface {
+            point: p,
+            normal: nf,
+            ray: dir,
+        }));
+        let top = obj.texture_facing(h, !entering);
         let uv = if texture_map::uses_uv(top) {
             obj.uv_point(p, h)
         } else {

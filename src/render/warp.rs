@@ -1,4 +1,4 @@
-//! Warps (`warp { turbulence | repeat | black_hole ... }`): each moves the evaluation point in
+//! Warps (`warp { turbulence | repeat | black_hole | planar ... }`): each moves the evaluation point in
 //! the space the pattern had when the warp was written.
 
 use crate::math::DVec3;
@@ -14,6 +14,7 @@ pub fn apply(w: &Warp, q: DVec3, generator: u8) -> DVec3 {
             p + t.amount * noise::turbulence_vec(p, t.octaves, t.omega, t.lambda, generator)
         }
         WarpKind::Repeat { dir, offset, flip } => repeat(p, *dir, *offset, *flip),
+        WarpKind::Planar { e1, e2, e3, d } => *e1 * p.x + *e2 * p.y + *e3 * *d,
         WarpKind::BlackHole {
             center,
             radius,

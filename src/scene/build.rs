@@ -343,13 +343,26 @@ impl Ctx {
         parent_int: Option<&Interior>,
         default: &Arc<Texture>,
     ) -> Option<Object> {
+        self.object_in(o, parent_tex, None, parent_int, default)
+    }
+
+    /// `object` with the interior texture a CSG parent passes down (to members without a
+    /// texture of their own), in its light group.
+    fn object_in(
+        &mut self,
+        o: &ObjectDesc,
+        parent_tex: Option<&Arc<Texture>>,
+        parent_itex: Option<&Arc<Texture>>,
+        parent_int: Option<&Interior>,
+        default: &Arc<Texture>,
+    ) -> Option<Object> {
         let Some(global) = o.light_group else {
-            return self.object_in_group(o, parent_tex, parent_int, default);
+            return self.object_in_group(o, parent_tex, parent_itex, parent_int, default);
         };
         let saved = (self.current_set, self.current_group);
         if self.groups == u16::MAX || self.light_sets.len() > u16::MAX as usize {
             // More groups than lancer numbers: the rest share the last one's lights.
-            return self.object_in_group(o, parent_tex, parent_int, default);
+            return self.object_in_group(o, parent_tex, parent_itex, parent_int, default);
         }
         self.groups += 1;
         // Measured with povray 3.7.0 (tests/probes/light_group.pov), against the manual's
@@ -365,7 +378,7 @@ impl Ctx {
         self.light_sets.push(LightSet { groups, global });
         self.current_set = (self.light_sets.len() - 1) as u16;
         self.current_group = self.groups;
-        let built = self.object_in_group(o, parent_tex, parent_int, default);
+        let built = self.object_in_group(o, parent_tex, parent_itex, parent_int, default);
         (self.current_set, self.current_group) = saved;
         built
     }
@@ -375,13 +388,23 @@ impl Ctx {
         &mut self,
         o: &ObjectDesc,
         parent_tex: Option<&Arc<Texture>>,
+        parent_itex: Option<&Arc<Texture>>,
         parent_int: Option<&Interior>,
         default: &Arc<Texture>,
     ) -> Option<Object> {
         let tex_desc = o.texture.as_ref().or(parent_tex);
+        let itex_desc = o
+            .interior_texture
+            .as_ref()
+            .or(parent_itex.filter(|_| o.texture.is_none()));
         let int = o.interior.as_ref().or(parent_int);
         let (texture, mut transparent) = self.object_texture(tex_desc.unwrap_or(default));
         let ior = int.map_or(1.0, |i| i.ior);
+        let interior_texture = itex_desc.map(|t| {
+            let (t, tr) = self.object_texture(t);
+            transparent |= tr;
+            t
+        });
         let mut blob = None;
         // Measured: a union of `no_shadow` objects casts no shadow though the union does not
         // say so (incdemo/woods: rows of no_shadow boxes, each row a union); shadow rays test
@@ -405,12 +428,12 @@ impl Ctx {
                 let mut shape = (**shape).clone();
                 shape.apply_transform(&Transform::translate(l.position).then(&o.transform));
                 shape.no_shadow = true;
-                return self.object(&shape, parent_tex, parent_int, default);
+                return self.object_in(&shape, parent_tex, parent_itex, parent_int, default);
             }
             ShapeDesc::Csg { op, children } => {
                 let kids: Vec<Object> = children
                     .iter()
-                    .filter_map(|c| self.object(c, tex_desc, int, default))
+                    .filter_map(|c| self.object_in(c, tex_desc, itex_desc, int, default))
                     .collect();
                 if kids.is_empty() {
                     return None;
@@ -494,6 +517,7 @@ impl Ctx {
             kind,
             transform: (!o.transform.is_identity()).then(|| Box::new(*o.transform)),
             texture,
+            interior_texture,
             mesh,
             blob,
             ior,

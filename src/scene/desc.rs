@@ -259,6 +259,9 @@ pub struct ObjectDesc {
     pub transform: Xform,
     /// Shared with the runtime object (and between CSG members that inherit it), not copied.
     pub texture: Option<Arc<Texture>>,
+    /// `interior_texture`: the texture of the surface seen from inside (where its normal
+    /// points away from the ray).
+    pub interior_texture: Option<Arc<Texture>>,
     pub interior: Option<Interior>,
     pub no_shadow: bool,
     /// `no_image`: unseen by camera rays and their transmitted continuations.
@@ -284,6 +287,7 @@ impl ObjectDesc {
             shape,
             transform: Xform::IDENTITY,
             texture: None,
+            interior_texture: None,
             interior: None,
             no_shadow: false,
             no_image: false,
@@ -300,6 +304,9 @@ impl ObjectDesc {
     /// Applies a transform to the object, its attached texture and, for CSG, every child.
     pub fn apply_transform(&mut self, t: &Transform) {
         if let Some(tex) = &mut self.texture {
+            Arc::make_mut(tex).apply_object_transform(t);
+        }
+        if let Some(tex) = &mut self.interior_texture {
             Arc::make_mut(tex).apply_object_transform(t);
         }
         for c in &mut self.clipped_by {

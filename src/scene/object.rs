@@ -34,6 +34,8 @@ pub struct Object {
     /// Boxed: most objects of a big scene have none, and inline it would be 256 bytes each.
     pub transform: Option<Box<Transform>>,
     pub texture: Arc<Texture>,
+    /// `interior_texture`: shades the surface where the ray meets it from inside.
+    pub interior_texture: Option<Arc<Texture>>,
     /// Per-triangle textures of a mesh, indexed by `MeshData::triangles[i].texture`.
     /// Boxed, as `blob`: few objects have one, and every object would pay 32 bytes inline.
     pub mesh: Option<PartTextures<MeshData>>,
@@ -499,6 +501,15 @@ impl Object {
 
     /// The texture at a hit: a mesh triangle's own texture, a blob component's, else the
     /// object's.
+    /// The texture of the surface at a hit, `inside` when the ray meets it from inside the
+    /// object (its normal points away from the ray): the `interior_texture` there, if any.
+    pub fn texture_facing(&self, h: &SurfaceHit, inside: bool) -> &Texture {
+        match &self.interior_texture {
+            Some(t) if inside => t,
+            _ => self.texture_at(h),
+        }
+    }
+
     pub fn texture_at(&self, h: &SurfaceHit) -> &Texture {
         if let Some(t) = self
             .blob

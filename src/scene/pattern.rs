@@ -46,7 +46,10 @@ impl Pattern {
     pub fn new(kind: PatternKind) -> Pattern {
         // Wood, marble and the spirals are triangle waves unless told otherwise.
         let wave = match kind {
-            PatternKind::Marble | PatternKind::Wood | PatternKind::Spiral1(_) => Wave::Triangle,
+            PatternKind::Marble
+            | PatternKind::Wood
+            | PatternKind::Spiral1(_)
+            | PatternKind::Spiral2(_) => Wave::Triangle,
             _ => Wave::Ramp,
         };
         Pattern {
@@ -91,6 +94,8 @@ pub enum PatternKind {
     Wood,
     /// `spiral1 arms`.
     Spiral1(f64),
+    /// `spiral2 arms`: spiral1's value through a triangle wave plus the radius's.
+    Spiral2(f64),
     Brick {
         size: DVec3,
         mortar: f64,
@@ -107,6 +112,11 @@ pub enum PatternKind {
     /// `image_pattern { ... }`: the image's grey (file values), or with `use_alpha` its
     /// transparency (1 − alpha).
     ImagePattern(Arc<crate::scene::desc::ImageMap>),
+    /// `slope { ... }`: the angle between the surface normal and a direction (or the way to a
+    /// point), optionally mixed with a gradient (`altitude`).
+    Slope(Box<Slope>),
+    /// `aoi`: the angle between the surface normal and the ray.
+    Aoi,
     /// bozo: one octave of noise.
     Bozo,
     /// spotted and (as a pigment) bumps: bozo's values with a grey default map.
@@ -138,6 +148,21 @@ pub enum PatternKind {
     Unsupported,
 }
 
+/// A slope pattern's parameters (measured: docs/povray-behaviour.md, Patterns). `dir` and
+/// `point_at` are in world space: pattern transforms do not move them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Slope {
+    /// The direction as written (its length weighs the slope against the altitude), or the
+    /// reference point with `point_at`.
+    pub dir: DVec3,
+    pub point_at: bool,
+    /// The slope values that give 0 and 1 (default 0, 1).
+    pub lo: f64,
+    pub hi: f64,
+    /// `altitude <a>, lo, hi`: a gradient along a (pattern space) from lo to hi.
+    pub altitude: Option<(DVec3, f64, f64)>,
+}
+
 #[derive(Clone, Debug)]
 pub struct Fractal {
     /// The constant of a julia set; None for the Mandelbrot set.
@@ -145,6 +170,9 @@ pub struct Fractal {
     pub iterations: u32,
     /// 2 to 33.
     pub exponent: u32,
+    /// 0 for zⁿ + c; 1 or 2 for the magnet fractals, which start at z = 0 (mandel) or z = p
+    /// (julia) and stop when z leaves radius 100 or comes within 0.01 of 1 (measured).
+    pub magnet: u8,
     /// `interior type, factor` (default 0, 1) and `exterior type, factor` (default 1, 1).
     pub interior: (u8, f64),
     pub exterior: (u8, f64),
@@ -189,6 +217,14 @@ pub struct Warp {
 
 #[derive(Clone, Debug)]
 pub enum WarpKind {
+    /// `planar n, d`: the point's (x, y) read on another plane, p′ = x·e1 + y·e2 + d·e3
+    /// (measured for the six axis normals; see `sdl::pattern::planar_frame`).
+    Planar {
+        e1: DVec3,
+        e2: DVec3,
+        e3: DVec3,
+        d: f64,
+    },
     Turbulence(Turbulence),
     Repeat {
         /// The repeat vector (one non-zero component).

@@ -232,8 +232,7 @@ impl Parser {
                 obj.clipped_by.extend(clips);
             }
             "interior_texture" => {
-                self.unsupported(k, span);
-                self.skip_block()?;
+                obj.interior_texture = Some(self.parse_texture_block_shared()?);
             }
             "uv_mapping" => self.unsupported(k, span),
             _ => return Ok(false),

@@ -4,7 +4,9 @@
 
 use crate::color::Rgbft;
 use crate::math::{DVec3, Transform};
-use crate::scene::pattern::{Fractal, Pattern, PatternKind, Turbulence, Warp, WarpKind, Wave};
+use crate::scene::pattern::{
+    Fractal, Pattern, PatternKind, Slope, Turbulence, Warp, WarpKind, Wave,
+};
 
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
@@ -13,15 +15,11 @@ use super::value::Value;
 
 /// Pattern keywords POV-Ray 3.7 has that lancer does not evaluate yet.
 pub(super) const UNSUPPORTED_PATTERNS: &[&str] = &[
-    "aoi",
     "density_file",
     "facets",
-    "magnet",
     "object",
     "pavement",
     "quilted",
-    "slope",
-    "spiral2",
     "tiling",
     "proportion",
 ];
@@ -40,6 +38,7 @@ const PATTERNS: &[&str] = &[
     "marble",
     "wood",
     "spiral1",
+    "spiral2",
     "brick",
     "hexagon",
     "bozo",
@@ -56,12 +55,15 @@ const PATTERNS: &[&str] = &[
     "function",
     "mandel",
     "julia",
+    "magnet",
     "average",
     "square",
     "triangular",
     "cubic",
     "pigment_pattern",
     "image_pattern",
+    "slope",
+    "aoi",
 ];
 
 /// Whether `k` names a pattern of POV-Ray 3.7, evaluated by lancer or not.
@@ -78,6 +80,27 @@ const UNSUPPORTED_MODIFIERS: &[&str] = &[
     "dist_exp",
     "strength",
 ];
+
+/// Where `warp { planar n, d }` puts a point's x, y and the distance d: POV-Ray's frame for
+/// the six axis normals, measured with scripts/measure_pattern.py (`function { 0.5+0.1*x }
+/// warp { planar ... }` and the same for y and z). For other normals povray's frame is not
+/// orthonormal (n = <1,1,0> gives e1 = (1,0,−1)/√2, e2 = (0,1,1)/√2, e3 = (1,−1,0)/√2) and its
+/// rule is not recovered yet: None.
+fn planar_frame(n: DVec3) -> Option<(DVec3, DVec3, DVec3)> {
+    let n = n.normalize_or_zero();
+    let (x, y, z) = (DVec3::X, DVec3::Y, DVec3::Z);
+    let axes = [
+        (z, (x, y, z)),
+        (-z, (-x, -y, -z)),
+        (y, (x, z, -y)),
+        (-y, (-x, -z, y)),
+        (x, (-z, y, x)),
+        (-x, (z, -y, -x)),
+    ];
+    axes.iter()
+        .find(|(a, _)| (n - *a).length() < 1e-12)
+        .map(|(_, f)| *f)
+}
 
 /// The colours a pattern uses when no map or list is given (measured with povray).
 pub fn default_map(kind: &PatternKind) -> Vec<(f64, Rgbft)> {
@@ -167,7 +190,9 @@ impl Parser {
             "leopard" => PatternKind::Leopard,
             "marble" => PatternKind::Marble,
             "wood" => PatternKind::Wood,
-            "spiral1" => PatternKind::Spiral1(self.parse_float()?),
+            // Measured: the number of arms is truncated to an integer (2.5 draws 2, -1.5 -1).
+            "spiral1" => PatternKind::Spiral1(self.parse_float()?.trunc()),
+            "spiral2" => PatternKind::Spiral2(self.parse_float()?.trunc()),
             "brick" => PatternKind::Brick {
                 size: DVec3::new(8.0, 3.0, 4.5),
                 mortar: 0.5,
@@ -201,6 +226,29 @@ impl Parser {
                 PatternKind::PigmentPattern(Box::new(self.parse_pigment_body_in_braces()?))
             }
             "average" => PatternKind::Average,
+            "aoi" => PatternKind::Aoi,
+            "slope" => PatternKind::Slope(Box::new(self.parse_slope()?)),
+            "magnet" => {
+                // magnet 1|2 mandel N, or magnet 1|2 julia <c>, N
+                let t = self.parse_float()?;
+                let julia = if self.eat_keyword("julia")? {
+                    let c = self.parse_vector()?;
+                    self.skip_optional_comma()?;
+                    Some((c.x, c.y))
+                } else {
+                    self.eat_keyword("mandel")?;
+                    None
+                };
+                let iterations = self.parse_float()?.clamp(0.0, 1e6) as u32;
+                PatternKind::Fractal(Box::new(Fractal {
+                    julia,
+                    iterations,
+                    exponent: 2,
+                    magnet: if t >= 2.0 { 2 } else { 1 },
+                    interior: (0, 1.0),
+                    exterior: (1, 1.0),
+                }))
+            }
             "mandel" | "julia" => {
                 let julia = if k == "julia" {
                     let c = self.parse_vector()?;
@@ -214,6 +262,7 @@ impl Parser {
                     julia,
                     iterations,
                     exponent: 2,
+                    magnet: 0,
                     interior: (0, 1.0),
                     exterior: (1, 1.0),
                 }))
@@ -244,6 +293,47 @@ impl Parser {
         }))
     }
 
+    /// `slope { <dir> [, lo, hi] [altitude <a> [, lo, hi]] }` or `slope { point_at <p> [, lo,
+    /// hi] }` after the keyword.
+    fn parse_slope(&mut self) -> PResult<Slope> {
+        if !self.eat_sym(Sym::LBrace)? {
+            // The old form without braces, `slope -z` (advanced/balcony/terrain.inc).
+            return Ok(Slope {
+                dir: self.parse_vector()?,
+                point_at: false,
+                lo: 0.0,
+                hi: 1.0,
+                altitude: None,
+            });
+        }
+        let point_at = self.eat_keyword("point_at")?;
+        let dir = self.parse_vector()?;
+        let mut sl = Slope {
+            dir,
+            point_at,
+            lo: 0.0,
+            hi: 1.0,
+            altitude: None,
+        };
+        if self.eat_sym(Sym::Comma)? {
+            sl.lo = self.parse_float()?;
+            self.skip_optional_comma()?;
+            sl.hi = self.parse_float()?;
+        }
+        if !point_at && self.eat_keyword("altitude")? {
+            let a = self.parse_vector()?;
+            let (mut lo, mut hi) = (0.0, 1.0);
+            if self.eat_sym(Sym::Comma)? {
+                lo = self.parse_float()?;
+                self.skip_optional_comma()?;
+                hi = self.parse_float()?;
+            }
+            sl.altitude = Some((a, lo, hi));
+        }
+        self.expect_sym(Sym::RBrace, "slope")?;
+        Ok(sl)
+    }
+
     fn skip_pattern_args(&mut self, k: &str) -> PResult<()> {
         match k {
             "object" => self.skip_block()?,
@@ -251,18 +341,7 @@ impl Parser {
                 self.next_tok()?;
                 self.next_tok()?;
             }
-            "magnet" => {
-                // magnet 1|2 mandel N, or magnet 1|2 julia <c>, N
-                self.parse_float()?;
-                if self.eat_keyword("julia")? {
-                    self.parse_vector()?;
-                    self.skip_optional_comma()?;
-                } else {
-                    self.eat_keyword("mandel")?;
-                }
-                self.parse_float()?;
-            }
-            "tiling" | "spiral2" => {
+            "tiling" => {
                 self.parse_expr()?;
             }
             _ => {}
@@ -435,6 +514,22 @@ impl Parser {
                     inverse: false,
                     repeat: DVec3::ZERO,
                     turbulence: DVec3::ZERO,
+                }
+            }
+            "planar" => {
+                let (mut n, mut d) = (DVec3::Z, 0.0);
+                if self.peek_sym()? != Some(Sym::RBrace) {
+                    n = self.parse_vector()?;
+                    self.skip_optional_comma()?;
+                    d = self.parse_float()?;
+                }
+                match planar_frame(n) {
+                    Some((e1, e2, e3)) => WarpKind::Planar { e1, e2, e3, d },
+                    None => {
+                        self.unsupported("warp planar (with a normal not along an axis)", span);
+                        self.skip_rest_of_block()?;
+                        return Ok(None);
+                    }
                 }
             }
             other => {

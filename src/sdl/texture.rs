@@ -336,7 +336,7 @@ impl Parser {
                 _ => return Err(self.unexpected(&t, "in image_map")),
             }
         }
-        if map.map_type > 2 {
+        if map.map_type > 2 && map.map_type != 5 {
             self.unsupported(&format!("map_type {} (in image_map)", map.map_type), span);
         }
         let Some(path) = self.find_file(&name) else {
