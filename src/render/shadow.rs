@@ -12,6 +12,9 @@ use super::trace::{point_seed, TraceCtx, Tracer};
 /// area light stops splitting.
 const AREA_SAME: f64 = 0.1;
 
+/// Crossings this close to the light (along the shadow ray) do not shadow it.
+const SHADOW_TOLERANCE: f64 = 2.9e-5;
+
 impl<'a> Tracer<'a> {
     /// The light from `light` arriving at `p` along `l` (a shadow ray `dist` long), after
     /// shadows: an area light averages its array of points.
@@ -150,6 +153,13 @@ impl<'a> Tracer<'a> {
         ctx: &mut TraceCtx<'a>,
     ) -> DVec3 {
         ctx.rays += 1;
+        // Surfaces at the light itself do not shadow it (radiosity/cornell's lights sit on the
+        // ceiling). Measured: a light up to 2.85e-5 above a disc facing away from the lit
+        // wall is unshadowed, 2.9e-5 is shadowed, the same at every angle and scale tried.
+        let dist = dist - SHADOW_TOLERANCE;
+        if dist <= 0.0 {
+            return DVec3::ONE;
+        }
         let ray = Ray::new(p, l);
         // `projected_through`: no light unless the path crosses the object, and only what
         // lies between the point and that crossing casts a shadow (manual 3.4.4.1.8).
