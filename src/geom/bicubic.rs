@@ -11,7 +11,7 @@
 //! nothing is inside it, as a mesh without `inside_vector`.
 
 use crate::math::DVec3;
-use crate::scene::desc::{MeshData, MeshTriangle};
+use crate::scene::desc::MeshData;
 
 /// Most subdivision levels per direction: 2^8 = 256 pieces already put several pieces in one
 /// pixel for any patch that fits in a picture; more would only cost memory.
@@ -73,40 +73,10 @@ fn normal_at(p: &[DVec3; 16], u: f64, v: f64) -> DVec3 {
 pub fn tessellate(p: &[DVec3; 16], u_steps: u32, v_steps: u32) -> MeshData {
     let nu = 1usize << u_steps.min(MAX_STEPS);
     let nv = 1usize << v_steps.min(MAX_STEPS);
-    let mut vertices = Vec::with_capacity((nu + 1) * (nv + 1));
-    let mut normals = Vec::with_capacity((nu + 1) * (nv + 1));
-    let mut uvs = Vec::with_capacity((nu + 1) * (nv + 1));
-    for j in 0..=nv {
-        let v = j as f64 / nv as f64;
-        for i in 0..=nu {
-            let u = i as f64 / nu as f64;
-            vertices.push(eval(p, u, v).0);
-            normals.push(normal_at(p, u, v));
-            uvs.push([u, v]);
-        }
-    }
-    let idx = |i: usize, j: usize| (j * (nu + 1) + i) as u32;
-    let mut triangles = Vec::with_capacity(nu * nv * 2);
-    for j in 0..nv {
-        for i in 0..nu {
-            let (a, b, c, d) = (idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
-            for v in [[a, b, c], [a, c, d]] {
-                triangles.push(MeshTriangle {
-                    v,
-                    n: Some(v),
-                    texture: None,
-                    uv: Some(v),
-                });
-            }
-        }
-    }
-    MeshData {
-        vertices,
-        normals,
-        triangles,
-        uvs,
-        textures: Vec::new(),
-    }
+    crate::geom::mesh::grid_mesh(nu, nv, |i, j| {
+        let (u, v) = (i as f64 / nu as f64, j as f64 / nv as f64);
+        (eval(p, u, v).0, normal_at(p, u, v), [u, v])
+    })
 }
 
 #[cfg(test)]

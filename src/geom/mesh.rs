@@ -10,7 +10,7 @@ use crate::geom::bvh::Bvh;
 use crate::geom::triangle::{smooth_normal, TriGeom};
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray};
-use crate::scene::desc::MeshData;
+use crate::scene::desc::{MeshData, MeshTriangle};
 
 pub struct Mesh {
     data: Arc<MeshData>,
@@ -131,6 +131,55 @@ impl Shape for Mesh {
             a[0] * w + b[0] * u + c[0] * v,
             a[1] * w + b[1] * u + c[1] * v,
         ])
+    }
+}
+
+/// A surface sampled on a regular grid of `nu` × `nv` cells as smooth triangles (bicubic
+/// patches, parametric surfaces): `sample(i, j)` gives grid point (i, j)'s position, normal
+/// and uv. Triangles with a non-finite corner are left out, and those with a zero corner
+/// normal (a pole) are drawn flat.
+pub fn grid_mesh(
+    nu: usize,
+    nv: usize,
+    mut sample: impl FnMut(usize, usize) -> (DVec3, DVec3, [f64; 2]),
+) -> MeshData {
+    let points = (nu + 1) * (nv + 1);
+    let mut vertices = Vec::with_capacity(points);
+    let mut normals = Vec::with_capacity(points);
+    let mut uvs = Vec::with_capacity(points);
+    for j in 0..=nv {
+        for i in 0..=nu {
+            let (p, n, uv) = sample(i, j);
+            vertices.push(p);
+            normals.push(n);
+            uvs.push(uv);
+        }
+    }
+    let idx = |i: usize, j: usize| (j * (nu + 1) + i) as u32;
+    let mut triangles = Vec::with_capacity(nu * nv * 2);
+    for j in 0..nv {
+        for i in 0..nu {
+            let (a, b, c, d) = (idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
+            for t in [[a, b, c], [a, c, d]] {
+                if !t.iter().all(|&k| vertices[k as usize].is_finite()) {
+                    continue;
+                }
+                let smooth = t.iter().all(|&k| normals[k as usize] != DVec3::ZERO);
+                triangles.push(MeshTriangle {
+                    v: t,
+                    n: smooth.then_some(t),
+                    texture: None,
+                    uv: Some(t),
+                });
+            }
+        }
+    }
+    MeshData {
+        vertices,
+        normals,
+        triangles,
+        uvs,
+        textures: Vec::new(),
     }
 }
 

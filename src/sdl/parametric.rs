@@ -8,9 +8,8 @@ use std::sync::Arc;
 use crate::func::Function;
 use crate::geom::isosurface::Container;
 use crate::math::DVec3;
-use crate::scene::desc::{MeshData, MeshTriangle, ObjectDesc, ShapeDesc};
+use crate::scene::desc::{MeshData, ObjectDesc, ShapeDesc};
 
-use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
 use super::source::Span;
 
@@ -51,50 +50,27 @@ impl Parser {
             center: DVec3::ZERO,
             radius: 0.0,
         });
-        loop {
-            let Some(t) = self.peek()? else {
-                return Err(self.error_at(open, "this '{' is never closed"));
-            };
-            let k = match &t.tok {
-                Tok::Sym(Sym::RBrace) => {
-                    self.advance();
-                    break;
-                }
-                Tok::Ident(k) => k.clone(),
-                _ => {
-                    return Err(self.unexpected(
-                        &t,
-                        "in the parametric; expected a parametric item, a modifier or '}'",
-                    ))
-                }
-            };
-            self.advance();
-            match &*k {
-                "contained_by" => container = self.iso_container()?,
+        self.special_items(&mut obj, open, "parametric", |p, k, _| {
+            match k {
+                "contained_by" => container = p.iso_container()?,
                 // POV-Ray's subdivision settings; the mesh does not need them.
                 "max_gradient" | "accuracy" => {
-                    self.parse_float()?;
+                    p.parse_float()?;
                 }
                 "precompute" => {
-                    self.parse_float()?;
+                    p.parse_float()?;
                     loop {
-                        self.skip_optional_comma()?;
-                        match self.peek_ident()?.as_deref() {
-                            Some("x" | "y" | "z") => self.advance(),
+                        p.skip_optional_comma()?;
+                        match p.peek_ident()?.as_deref() {
+                            Some("x" | "y" | "z") => p.advance(),
                             _ => break,
                         }
                     }
                 }
-                _ => {
-                    if !self.object_modifier(&mut obj, &k, t.span)? {
-                        return Err(self.error_at(
-                            t.span,
-                            format!("'{k}' is not a parametric item or an object modifier"),
-                        ));
-                    }
-                }
+                _ => return Ok(false),
             }
-        }
+            Ok(true)
+        })?;
         let f: [&Function; 3] = [&functions[0], &functions[1], &functions[2]];
         let mesh = tessellate(f, [lo.x, lo.y], [hi.x, hi.y]);
         // The container clips the surface in the parametric's own space: it takes the
@@ -135,50 +111,15 @@ fn point(f: [&Function; 3], u: f64, v: f64) -> DVec3 {
 /// The surface as a smooth mesh on a regular (u, v) grid, normals from the partial
 /// derivatives, (u, v) as texture coordinates.
 fn tessellate(f: [&Function; 3], lo: [f64; 2], hi: [f64; 2]) -> MeshData {
-    let n = CELLS;
-    let (du, dv) = ((hi[0] - lo[0]) / n as f64, (hi[1] - lo[1]) / n as f64);
-    let mut vertices = Vec::with_capacity((n + 1) * (n + 1));
-    let mut normals = Vec::with_capacity((n + 1) * (n + 1));
-    let mut uvs = Vec::with_capacity((n + 1) * (n + 1));
-    for j in 0..=n {
-        let v = lo[1] + dv * j as f64;
-        for i in 0..=n {
-            let u = lo[0] + du * i as f64;
-            let p = point(f, u, v);
-            let (hu, hv) = (du * 1e-3, dv * 1e-3);
-            let pu = point(f, u + hu, v) - point(f, u - hu, v);
-            let pv = point(f, u, v + hv) - point(f, u, v - hv);
-            vertices.push(p);
-            normals.push(pu.cross(pv).normalize_or_zero());
-            uvs.push([u, v]);
-        }
-    }
-    let idx = |i: usize, j: usize| (j * (n + 1) + i) as u32;
-    let finite = |k: u32| vertices[k as usize].is_finite();
-    let mut triangles = Vec::with_capacity(n * n * 2);
-    for j in 0..n {
-        for i in 0..n {
-            let (a, b, c, d) = (idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
-            for t in [[a, b, c], [a, c, d]] {
-                if !t.iter().all(|&k| finite(k)) {
-                    continue;
-                }
-                // Where the derivatives vanish (a pole) the triangle is drawn flat.
-                let smooth = t.iter().all(|&k| normals[k as usize] != DVec3::ZERO);
-                triangles.push(MeshTriangle {
-                    v: t,
-                    n: smooth.then_some(t),
-                    texture: None,
-                    uv: Some(t),
-                });
-            }
-        }
-    }
-    MeshData {
-        vertices,
-        normals,
-        triangles,
-        uvs,
-        textures: Vec::new(),
-    }
+    let (du, dv) = (
+        (hi[0] - lo[0]) / CELLS as f64,
+        (hi[1] - lo[1]) / CELLS as f64,
+    );
+    crate::geom::mesh::grid_mesh(CELLS, CELLS, |i, j| {
+        let (u, v) = (lo[0] + du * i as f64, lo[1] + dv * j as f64);
+        let (hu, hv) = (du * 1e-3, dv * 1e-3);
+        let pu = point(f, u + hu, v) - point(f, u - hu, v);
+        let pv = point(f, u, v + hv) - point(f, u, v - hv);
+        (point(f, u, v), pu.cross(pv).normalize_or_zero(), [u, v])
+    })
 }
