@@ -56,7 +56,8 @@ pub fn apply(fogs: &[FogDesc], ray: &Ray, t: f64, mut seen: Seen) -> Seen {
 
 /// A rainbow's colour for a ray going `dir` (unit); None where the ray misses the rainbow.
 fn rainbow_color(rb: &RainbowDesc, dir: DVec3) -> Option<Rgbft> {
-    let d = rb.direction.normalize_or(DVec3::Z);
+    // Unit, and `up` perpendicular to it, since the scene was built.
+    let d = rb.direction;
     let angle = dir.dot(d).clamp(-1.0, 1.0).acos().to_degrees();
     let mut index = (angle - (rb.angle - rb.width * 0.5)) / rb.width.max(1e-12);
     if rb.jitter != 0.0 {
@@ -67,8 +68,8 @@ fn rainbow_color(rb: &RainbowDesc, dir: DVec3) -> Option<Rgbft> {
     }
     let mut weight = 1.0;
     if rb.arc_angle < 360.0 {
-        // The angle about the direction from `up` (made perpendicular to it).
-        let up = (rb.up - d * rb.up.dot(d)).normalize_or_zero();
+        // The angle about the direction from `up`.
+        let up = rb.up;
         let side = d.cross(up);
         let p = dir - d * dir.dot(d);
         let phi = p.dot(side).atan2(p.dot(up)).to_degrees().abs();

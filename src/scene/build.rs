@@ -146,9 +146,18 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
             .fogs
             .iter()
             .filter(|f| f.distance > 0.0)
-            .map(|f| FogDesc {
-                up: f.up.normalize_or(DVec3::Y),
-                ..f.clone()
+            .map(|f| {
+                let mut f = FogDesc {
+                    up: f.up.normalize_or(DVec3::Y),
+                    ..f.clone()
+                };
+                // A rainbow's direction unit and its up perpendicular to it, once per scene.
+                if let Some(rb) = &mut f.rainbow {
+                    let d = rb.direction.normalize_or(DVec3::Z);
+                    rb.direction = d;
+                    rb.up = (rb.up - d * rb.up.dot(d)).normalize_or_zero();
+                }
+                f
             })
             .collect(),
     };
@@ -374,8 +383,10 @@ impl Ctx {
         } else {
             outer.global
         };
-        let groups = vec![self.groups];
-        self.light_sets.push(LightSet { groups, global });
+        self.light_sets.push(LightSet {
+            group: self.groups,
+            global,
+        });
         self.current_set = (self.light_sets.len() - 1) as u16;
         self.current_group = self.groups;
         let built = self.object_in_group(o, parent_tex, parent_itex, parent_int, default);
@@ -598,24 +609,29 @@ impl Scene {
             .traverse(ray, tmax, |prim, _| f(&self.objects[self.bounded[prim]]));
     }
 
-    /// Whether `p` is inside an object that is not `hollow`, where POV-Ray computes no
-    /// atmosphere.
-    pub fn inside_solid(&self, p: DVec3) -> bool {
-        let solid = |o: &Object| !o.hollow && o.inside(p);
+    /// Whether any top-level object that may hold `p` (the unbounded ones past their cull
+    /// boxes, the bounded ones by the BVH's point query) satisfies `test`.
+    fn any_object_at(&self, p: DVec3, test: impl Fn(&Object) -> bool) -> bool {
         if self
             .unbounded
             .iter()
             .zip(&self.unbounded_cull)
-            .any(|(&i, cull)| cull.is_none_or(|c| c.contains(p)) && solid(&self.objects[i]))
+            .any(|(&i, cull)| cull.is_none_or(|c| c.contains(p)) && test(&self.objects[i]))
         {
             return true;
         }
         let mut found = false;
         self.bvh.visit_point(p, |k| {
-            found = solid(&self.objects[self.bounded[k]]);
+            found = test(&self.objects[self.bounded[k]]);
             found
         });
         found
+    }
+
+    /// Whether `p` is inside an object that is not `hollow`, where POV-Ray computes no
+    /// atmosphere.
+    pub fn inside_solid(&self, p: DVec3) -> bool {
+        self.any_object_at(p, |o| !o.hollow && o.inside(p))
     }
 
     /// Whether `p` is inside any object other than `leaf` (CSG nodes holding `leaf` are
@@ -635,21 +651,7 @@ impl Scene {
         let is_root = |o: &Object| o as *const Object as usize == root;
         // Outside the tree holding `leaf`, inside_without is inside; it is false outside a
         // bounded object's box, so the BVH's point query finds every object that can say yes.
-        let other = |o: &Object| !is_root(o) && o.inside(p);
-        if self
-            .unbounded
-            .iter()
-            .zip(&self.unbounded_cull)
-            .any(|(&i, cull)| cull.is_none_or(|c| c.contains(p)) && other(&self.objects[i]))
-        {
-            return true;
-        }
-        let mut found = false;
-        self.bvh.visit_point(p, |k| {
-            found = other(&self.objects[self.bounded[k]]);
-            found
-        });
-        if found {
+        if self.any_object_at(p, |o| !is_root(o) && o.inside(p)) {
             return true;
         }
         match self.objects.iter().find(|o| is_root(o)) {

@@ -6,8 +6,9 @@
 /// The lights one set of objects sees.
 #[derive(Clone, Debug)]
 pub struct LightSet {
-    /// Groups whose lights count (povray 3.7.0: the object's innermost group only).
-    pub groups: Vec<u16>,
+    /// The group whose lights count (povray 3.7.0: the object's innermost group only); 0 for
+    /// objects outside every group.
+    pub group: u16,
     /// Whether the lights outside every group count.
     pub global: bool,
 }
@@ -16,7 +17,7 @@ impl LightSet {
     /// The set of objects outside every group: lit by the lights outside every group.
     pub fn outside() -> LightSet {
         LightSet {
-            groups: Vec::new(),
+            group: 0,
             global: true,
         }
     }
@@ -26,7 +27,7 @@ impl LightSet {
         if group == 0 {
             self.global
         } else {
-            self.groups.contains(&group)
+            group == self.group
         }
     }
 }
@@ -36,17 +37,17 @@ mod tests {
     use super::*;
 
     #[test]
-    fn nested_groups_see_the_lights_around_them() {
+    fn a_group_sees_its_own_lights_and_the_global_ones_when_asked() {
         let outer = LightSet {
-            groups: vec![1],
+            group: 1,
             global: false,
         };
         let inner = LightSet {
-            groups: vec![1, 2],
+            group: 2,
             global: true,
         };
         assert!(outer.sees(1) && !outer.sees(2) && !outer.sees(0));
-        assert!(inner.sees(1) && inner.sees(2) && inner.sees(0));
+        assert!(!inner.sees(1) && inner.sees(2) && inner.sees(0));
         assert!(LightSet::outside().sees(0) && !LightSet::outside().sees(1));
     }
 }

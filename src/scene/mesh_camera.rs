@@ -71,7 +71,7 @@ impl MeshCamera {
         let smooth = d.smooth;
         let corners =
             |m: &MeshData, t: &Transform, v: [u32; 3]| v.map(|i| t.point(m.vertices[i as usize]));
-        let meshes = d
+        let mut meshes: Vec<Vec<Face>> = d
             .meshes
             .iter()
             .map(|(m, t)| {
@@ -87,6 +87,10 @@ impl MeshCamera {
                     .collect()
             })
             .collect();
+        if d.distribution == 1 {
+            // Distribution 1 sums the meshes: one list, indexed directly per ray.
+            meshes = vec![meshes.concat()];
+        }
         let mut uv_faces = Vec::new();
         if d.distribution == 3 {
             if let Some((m, t)) = d.meshes.first() {
@@ -170,15 +174,11 @@ impl MeshCamera {
                 }
             }
             1 => {
-                let mut faces = self.meshes.iter().flatten();
-                let mut at = 0;
                 for r in 0..self.rays_per_pixel as usize {
-                    let idx = w * h * r + pixel;
-                    match faces.nth(idx - at) {
+                    match self.meshes[0].get(w * h * r + pixel) {
                         Some(face) => f(self.face_ray(face.centroid, face.normal)),
                         None => break,
                     }
-                    at = idx + 1;
                 }
             }
             2 => {
