@@ -210,7 +210,7 @@ impl<'a> Tracer<'a> {
                 let inside =
                     h.obj.interior_texture.is_some() && h.obj.normal(hp, h).dot(ray.dir) > 0.0;
                 let top = h.obj.texture_facing(h, inside);
-                let uv = if texture_map::uses_uv(top) {
+                let uv = if top.uses_uv() {
                     h.obj.uv_point(hp, h)
                 } else {
                     None

@@ -132,12 +132,6 @@ fn pigment_point(tex: &Texture, p: DVec3, uv: Option<DVec3>) -> DVec3 {
     }
 }
 
-/// Whether any part of a texture (all its layers) is uv-mapped, so the shading code knows to
-/// ask the shape for its uv coordinates.
-pub fn uses_uv(tex: &Texture) -> bool {
-    tex.uses_uv()
-}
-
 /// The colour alone (unlit pictures, light passing through in shadow rays).
 pub fn color_at(tex: &Texture, p: DVec3, uv: Option<DVec3>, quick: bool) -> Rgbft {
     if tex.pattern.is_none() && !quick {

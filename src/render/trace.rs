@@ -379,7 +379,7 @@ impl<'a> Tracer<'a> {
             ray: dir,
         }));
         let top = obj.texture_facing(h, !entering);
-        let uv = if texture_map::uses_uv(top) {
+        let uv = if top.uses_uv() {
             obj.uv_point(p, h)
         } else {
             None

@@ -173,8 +173,7 @@ impl Parser {
                 }
             }
             "looks_like" | "projected_through" | "photons" => self.skip_block()?,
-            "media_interaction" | "media_attenuation" | "circular" | "orient"
-            | "area_illumination" => {
+            "media_interaction" | "media_attenuation" | "circular" | "orient" => {
                 self.optional_bool()?;
             }
             "jitter" | "spotlight" | "cylinder" | "parallel" => {}
