@@ -198,24 +198,17 @@ impl Parser {
 
     /// The normals listed after a block pattern: `normal { ... }` blocks or identifiers.
     fn parse_normal_items(&mut self) -> PResult<Vec<Normal>> {
-        let mut items = Vec::new();
-        loop {
-            if self.eat_keyword("normal")? {
-                items.push(self.parse_normal_block_over(self.default_normal_base())?);
-            } else if let Some(k) = self.peek_ident()? {
-                match self.lookup(&k) {
-                    Some(Value::Normal(n)) => {
-                        items.push((**n).clone());
-                        self.advance();
-                    }
-                    _ => break,
-                }
-            } else {
-                break;
-            }
-            self.skip_optional_comma()?;
-        }
-        Ok(items)
+        self.parse_item_list(
+            "normal",
+            |v| match v {
+                Value::Normal(n) => Some((**n).clone()),
+                _ => None,
+            },
+            |p| {
+                let base = p.default_normal_base();
+                p.parse_normal_block_over(base)
+            },
+        )
     }
 
     /// `normal_map { [v NORMAL_BODY] ... }` after the keyword, or a declared one.
@@ -224,33 +217,19 @@ impl Parser {
     }
 
     fn parse_normal_map_entries(&mut self, weights_optional: bool) -> PResult<Vec<(f64, Normal)>> {
-        self.open_brace("normal_map")?;
-        let mut map = Vec::new();
-        loop {
-            let t = self.next_tok()?;
-            match &t.tok {
-                Tok::Sym(Sym::RBrace) => break,
-                Tok::Sym(Sym::LBracket) => {
-                    let v = if weights_optional && !self.starts_float()? {
-                        1.0
-                    } else {
-                        self.parse_float()?
-                    };
-                    self.skip_optional_comma()?;
-                    let n = self.parse_normal_body(self.default_normal_base(), Sym::RBracket)?;
-                    map.push((v, n));
-                }
-                Tok::Ident(k) => match self.lookup(k) {
-                    Some(Value::NormalMap(m)) => map = (**m).clone(),
-                    _ => return Err(self.unexpected(&t, "in normal_map")),
-                },
-                _ => return Err(self.unexpected(&t, "in normal_map; expected '[value normal]'")),
-            }
-        }
-        if !weights_optional {
-            map.sort_by(|a, b| a.0.total_cmp(&b.0));
-        }
-        Ok(map)
+        self.parse_map_entries(
+            "normal_map",
+            weights_optional,
+            !weights_optional,
+            |v| match v {
+                Value::NormalMap(m) => Some((**m).clone()),
+                _ => None,
+            },
+            |p| {
+                let base = p.default_normal_base();
+                p.parse_normal_body(base, Sym::RBracket)
+            },
+        )
     }
 
     /// `slope_map { [v, <height, slope>] ... }` after the keyword, or a declared one.

@@ -186,7 +186,30 @@ impl Parser {
         &mut self,
         weights_optional: bool,
     ) -> PResult<Vec<(f64, Pigment)>> {
-        self.open_brace("pigment_map")?;
+        self.parse_map_entries(
+            "pigment_map",
+            weights_optional,
+            true,
+            |v| match v {
+                Value::PigmentMap(m) => Some((**m).clone()),
+                _ => None,
+            },
+            |p| p.parse_pigment_body(None, Sym::RBracket),
+        )
+    }
+
+    /// `NAME { [v ENTRY] ... }` after the keyword: entries read by `entry` up to their ']',
+    /// a declared map of the same kind taken whole (`declared`), sorted by value when
+    /// `sorted`. `weights_optional`: `average`'s entries may leave out their weight (1).
+    pub(super) fn parse_map_entries<T>(
+        &mut self,
+        name: &str,
+        weights_optional: bool,
+        sorted: bool,
+        declared: impl Fn(&Value) -> Option<Vec<(f64, T)>>,
+        mut entry: impl FnMut(&mut Parser) -> PResult<T>,
+    ) -> PResult<Vec<(f64, T)>> {
+        self.open_brace(name)?;
         let mut map = Vec::new();
         loop {
             let t = self.next_tok()?;
@@ -199,17 +222,22 @@ impl Parser {
                         self.parse_float()?
                     };
                     self.skip_optional_comma()?;
-                    let pig = self.parse_pigment_body(None, Sym::RBracket)?;
-                    map.push((v, pig));
+                    map.push((v, entry(self)?));
                 }
-                Tok::Ident(k) => match self.lookup(k) {
-                    Some(Value::PigmentMap(m)) => map = (**m).clone(),
-                    _ => return Err(self.unexpected(&t, "in pigment_map")),
+                Tok::Ident(k) => match self.lookup(k).and_then(&declared) {
+                    Some(m) => map = m,
+                    None => return Err(self.unexpected(&t, &format!("in {name}"))),
                 },
-                _ => return Err(self.unexpected(&t, "in pigment_map; expected '[value pigment]'")),
+                _ => {
+                    let what = name.trim_end_matches("_map");
+                    let msg = format!("in {name}; expected '[value {what}]'");
+                    return Err(self.unexpected(&t, &msg));
+                }
             }
         }
-        map.sort_by(|a, b| a.0.total_cmp(&b.0));
+        if sorted {
+            map.sort_by(|a, b| a.0.total_cmp(&b.0));
+        }
         Ok(map)
     }
 

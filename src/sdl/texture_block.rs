@@ -155,17 +155,35 @@ impl Parser {
     /// The textures listed after a block pattern in a texture (`texture {..}` or declared
     /// texture identifiers, commas optional).
     fn parse_texture_items(&mut self) -> PResult<Vec<Texture>> {
+        self.parse_item_list(
+            "texture",
+            |v| match v {
+                Value::Texture(t) => Some((**t).clone()),
+                _ => None,
+            },
+            |p| p.parse_texture_block(),
+        )
+    }
+
+    /// The items listed after a block pattern: `KEYWORD {..}` blocks (read by `block`) or
+    /// declared identifiers of the kind (`declared`), commas optional.
+    pub(super) fn parse_item_list<T>(
+        &mut self,
+        keyword: &str,
+        declared: impl Fn(&Value) -> Option<T>,
+        mut block: impl FnMut(&mut Parser) -> PResult<T>,
+    ) -> PResult<Vec<T>> {
         let mut items = Vec::new();
         loop {
-            if self.eat_keyword("texture")? {
-                items.push(self.parse_texture_block()?);
+            if self.eat_keyword(keyword)? {
+                items.push(block(self)?);
             } else if let Some(k) = self.peek_ident()? {
-                match self.lookup(&k) {
-                    Some(Value::Texture(t)) => {
-                        items.push((**t).clone());
+                match self.lookup(&k).and_then(&declared) {
+                    Some(item) => {
+                        items.push(item);
                         self.advance();
                     }
-                    _ => break,
+                    None => break,
                 }
             } else {
                 break;
@@ -211,31 +229,16 @@ impl Parser {
         &mut self,
         weights_optional: bool,
     ) -> PResult<Vec<(f64, Texture)>> {
-        self.open_brace("texture_map")?;
-        let mut map = Vec::new();
-        loop {
-            let t = self.next_tok()?;
-            match &t.tok {
-                Tok::Sym(Sym::RBrace) => break,
-                Tok::Sym(Sym::LBracket) => {
-                    let v = if weights_optional && !self.starts_float()? {
-                        1.0
-                    } else {
-                        self.parse_float()?
-                    };
-                    self.skip_optional_comma()?;
-                    let tex = self.parse_texture_body(Sym::RBracket)?;
-                    map.push((v, tex));
-                }
-                Tok::Ident(k) => match self.lookup(k) {
-                    Some(Value::TextureMap(m)) => map = (**m).clone(),
-                    _ => return Err(self.unexpected(&t, "in texture_map")),
-                },
-                _ => return Err(self.unexpected(&t, "in texture_map; expected '[value texture]'")),
-            }
-        }
-        map.sort_by(|a, b| a.0.total_cmp(&b.0));
-        Ok(map)
+        self.parse_map_entries(
+            "texture_map",
+            weights_optional,
+            true,
+            |v| match v {
+                Value::TextureMap(m) => Some((**m).clone()),
+                _ => None,
+            },
+            |p| p.parse_texture_body(Sym::RBracket),
+        )
     }
 
     /// Reads past the rest of a patterned texture up to (not including) its closing brace.
