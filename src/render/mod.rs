@@ -8,6 +8,7 @@ pub mod band;
 pub mod camera;
 mod cells_data;
 mod fog;
+mod media;
 pub mod noise;
 mod noise_data;
 pub mod normal;

@@ -208,7 +208,8 @@ impl<'a> Tracer<'a> {
         // a reflected ray stays where its incident ray was, whichever way it turns
         // (measured: rays reflected from a rippled floor into the floor's half-space are
         // fogged, advanced/mist.pov).
-        let solid = !self.scene.fogs.is_empty()
+        let atmosphere = !self.scene.fogs.is_empty() || !self.scene.media.is_empty();
+        let solid = atmosphere
             && path.in_solid.unwrap_or_else(|| {
                 let mid = if t.is_finite() { t * 0.5 } else { 1.0 };
                 self.scene.inside_solid(ray.at(mid))
@@ -217,10 +218,13 @@ impl<'a> Tracer<'a> {
             in_solid: Some(solid),
             ..path
         };
-        let seen = match hit {
+        let mut seen = match hit {
             Some(h) => self.shade_blended(ray, &h, path, ctx),
             None => self.background(ray.dir, path.straight),
         };
+        if t.is_finite() && (self.scene.object_media || !self.scene.media.is_empty()) {
+            seen = self.media_segment(ray, t, solid, seen, ctx);
+        }
         if self.scene.fogs.is_empty() || solid {
             seen
         } else {
@@ -542,7 +546,11 @@ impl<'a> Tracer<'a> {
                 let tdir = tdir.unwrap_or(mirror);
                 // Into the object's interior, or back out (into air: nested interiors are
                 // not tracked).
-                let inside = if entering { obj.fade.as_deref() } else { None };
+                let inside = if entering {
+                    obj.interior.as_deref()
+                } else {
+                    None
+                };
                 // The transmitted ray crosses the surface: whether it is in a solid is looked
                 // up afresh.
                 let onward = Path {

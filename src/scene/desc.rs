@@ -28,6 +28,8 @@ pub struct SceneDesc {
     pub version: Option<f64>,
     /// Fog layers, applied in the order given.
     pub fogs: Vec<FogDesc>,
+    /// Atmospheric `media { }`, outside every solid object.
+    pub media: Vec<crate::scene::media::Media>,
 }
 
 #[derive(Clone, Debug)]
@@ -193,6 +195,10 @@ pub struct LightDesc {
     pub looks_like: Option<Box<ObjectDesc>>,
     /// `projected_through`: only light whose path crosses this object arrives.
     pub projected_through: Option<Box<ObjectDesc>>,
+    /// `media_interaction` (on by default): scattering media scatter this light.
+    pub media_interaction: bool,
+    /// `media_attenuation` (off by default): media dim this light on its way.
+    pub media_attenuation: bool,
 }
 
 impl LightDesc {
@@ -212,6 +218,8 @@ impl LightDesc {
             area: None,
             looks_like: None,
             projected_through: None,
+            media_interaction: true,
+            media_attenuation: false,
         }
     }
 }
@@ -308,6 +316,9 @@ impl ObjectDesc {
         }
         if let Some(tex) = &mut self.interior_texture {
             Arc::make_mut(tex).apply_object_transform(t);
+        }
+        if let Some(int) = &mut self.interior {
+            int.apply_transform(t);
         }
         for c in &mut self.clipped_by {
             c.apply_transform(t);
@@ -766,6 +777,10 @@ pub struct Interior {
     pub fade_power: f64,
     /// What fully faded light keeps (black: nothing).
     pub fade_color: DVec3,
+    /// `media { }` blocks, each computed on its own and added. Shared, so the members of a
+    /// CSG that inherit one interior hold the same list (and it is counted once where they
+    /// overlap).
+    pub media: Arc<[crate::scene::media::Media]>,
 }
 
 impl Default for Interior {
@@ -775,6 +790,7 @@ impl Default for Interior {
             fade_distance: 0.0,
             fade_power: 0.0,
             fade_color: DVec3::ZERO,
+            media: Arc::from(Vec::new()),
         }
     }
 }
@@ -794,6 +810,17 @@ impl Interior {
         }
         let a = 1.0 / (1.0 + x.powf(self.fade_power));
         DVec3::splat(a) + (DVec3::ONE - a) * self.fade_color
+    }
+
+    /// The object's transforms move its media's densities with it.
+    pub fn apply_transform(&mut self, t: &Transform) {
+        if !self.media.is_empty() {
+            let mut all = self.media.to_vec();
+            for m in &mut all {
+                m.apply_transform(t);
+            }
+            self.media = all.into();
+        }
     }
 
     pub fn fades(&self) -> bool {

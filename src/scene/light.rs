@@ -27,6 +27,8 @@ pub struct Light {
     pub projected: Option<Projected>,
     /// The `light_group` it belongs to (0: none, it lights everything outside groups).
     pub group: u16,
+    pub media_interaction: bool,
+    pub media_attenuation: bool,
 }
 
 /// A `projected_through` object, shared by copies of the light.
@@ -115,6 +117,8 @@ impl Light {
             }),
             projected: None,
             group: 0,
+            media_interaction: d.media_interaction,
+            media_attenuation: d.media_attenuation,
         }
     }
 

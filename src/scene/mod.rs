@@ -10,6 +10,7 @@ pub mod height_image;
 pub mod image;
 pub mod light;
 pub mod light_group;
+pub mod media;
 pub mod mesh_camera;
 pub mod object;
 pub mod pattern;

@@ -65,8 +65,8 @@ pub struct Object {
     pub transparent: bool,
     /// `clipped_by`: crossings outside any of these are dropped.
     pub clip: Vec<Object>,
-    /// An interior that fades light passing through it (`fade_distance`, `fade_power`).
-    pub fade: Option<Box<crate::scene::desc::Interior>>,
+    /// An interior that fades light passing through it or holds media.
+    pub interior: Option<Box<crate::scene::desc::Interior>>,
 }
 
 /// Per-thread buffers for intersection, so no ray allocates: shape crossings, and surface

@@ -35,8 +35,10 @@ impl Parser {
                     self.parse_float()?;
                 }
                 "media" => {
-                    self.unsupported(k, t.span);
-                    self.skip_block()?;
+                    let m = self.parse_media_block()?;
+                    let mut all = int.media.to_vec();
+                    all.push(m);
+                    int.media = all.into();
                 }
                 _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in interior"))),
             }

@@ -113,7 +113,9 @@ impl Parser {
                                 self.unsupported(&k, t.span);
                             }
                         }
-                        "photons" | "media_interaction" | "media_attenuation" => {
+                        "media_interaction" => light.media_interaction = self.optional_bool()?,
+                        "media_attenuation" => light.media_attenuation = self.optional_bool()?,
+                        "photons" => {
                             self.unsupported(&k, t.span);
                             self.skip_light_item(&k)?;
                         }

@@ -126,7 +126,7 @@ impl Parser {
             }
             match &**k {
                 "color_map" | "colour_map" => form = Form::Colors(Some(self.parse_color_map()?)),
-                "pigment_map" => {
+                "pigment_map" | "density_map" => {
                     if pat
                         .as_ref()
                         .is_some_and(|q| matches!(q.kind, PatternKind::Unsupported))
@@ -153,6 +153,13 @@ impl Parser {
                 _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in pigment"))),
             }
         }
+        if self.in_density && matches!(form, Form::Colors(None)) {
+            // A density's pattern value is its density: grey from 0 to 1.
+            form = Form::Colors(Some(vec![
+                (0.0, Rgbft::BLACK),
+                (1.0, Rgbft::rgb(DVec3::ONE)),
+            ]));
+        }
         p.kind = join_pigment(pat, form);
         Ok(p)
     }
@@ -164,7 +171,11 @@ impl Parser {
             .map(Pigment::solid)
             .collect();
         for item in items.iter_mut() {
-            if self.eat_keyword("pigment")? {
+            if self.eat_keyword(if self.in_density {
+                "density"
+            } else {
+                "pigment"
+            })? {
                 *item = self.parse_pigment_block(None)?;
             } else if self.starts_color()? {
                 *item = Pigment::solid(self.parse_color()?);
