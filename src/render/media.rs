@@ -176,17 +176,21 @@ impl<'a> Tracer<'a> {
             }
             cuts.sort_by(f64::total_cmp);
         }
-        let mut kept = DVec3::ONE;
-        let mut added = DVec3::ZERO;
-        let pieces = cuts.windows(2).filter(|w| w[1] > w[0]);
-        for (a, step, i) in pieces.flat_map(|w| {
-            let step = (w[1] - w[0]) / n as f64;
-            (0..n).map(move |i| (w[0], step, i))
-        }) {
-            let p = ray.origin + dir * (a + step * i as f64);
+        let (aa_level, aa_threshold) = media
+            .iter()
+            .flat_map(|l| l.iter())
+            .fold((0, f64::INFINITY), |(l, t), m| {
+                (l.max(m.aa_level), t.min(m.aa_threshold))
+            });
+        let mut acc = Composite {
+            kept: DVec3::ONE,
+            added: DVec3::ZERO,
+        };
+        let mut sample = |s: f64, ctx: &mut TraceCtx<'a>| {
+            let p = ray.origin + dir * s;
             let mut sigma = DVec3::ZERO;
             let mut glow = DVec3::ZERO;
-            let mut scatter_color = DVec3::ZERO;
+            let mut lit = false;
             for m in media.iter().flat_map(|l| l.iter()) {
                 let rho = density(m, p);
                 if rho == DVec3::ZERO {
@@ -194,19 +198,37 @@ impl<'a> Tracer<'a> {
                 }
                 sigma += m.absorption * rho;
                 glow += m.emission * rho;
-                if let Some(s) = &m.scattering {
-                    sigma += s.color * s.extinction * rho;
-                    if scatters && s.color != DVec3::ZERO {
-                        scatter_color += s.color * rho;
+                if let Some(sc) = &m.scattering {
+                    sigma += sc.color * sc.extinction * rho;
+                    lit |= sc.color != DVec3::ZERO;
+                }
+            }
+            if scatters && lit {
+                glow += self.in_scattered(media, p, dir, ctx);
+            }
+            Sample { sigma, glow }
+        };
+        for w in cuts.windows(2).filter(|w| w[1] > w[0]) {
+            let step = (w[1] - w[0]) / n as f64;
+            let mut left = sample(w[0], ctx);
+            for i in 0..n {
+                let (a, b) = (w[0] + step * i as f64, w[0] + step * (i + 1) as f64);
+                // Adaptive sampling (method 3): a step whose ends differ by more than
+                // aa_threshold is halved, up to aa_level times; constant media are
+                // never split, which keeps their measured sums exact.
+                if aa_level > 0 {
+                    let right = sample(b, ctx);
+                    acc.refine(a, b, left, right, aa_level, aa_threshold, &mut sample, ctx);
+                    left = right;
+                } else {
+                    acc.refine(a, b, left, left, 0, aa_threshold, &mut sample, ctx);
+                    if i + 1 < n {
+                        left = sample(b, ctx);
                     }
                 }
             }
-            if scatters && scatter_color != DVec3::ZERO {
-                glow += self.in_scattered(media, p, dir, ctx);
-            }
-            added += kept * glow * step;
-            kept *= (-sigma * step).exp();
         }
+        let Composite { kept, added } = acc;
         Seen {
             rgb: seen.rgb * kept + added,
             clear: seen.clear * kept.max_element(),
@@ -277,5 +299,49 @@ impl<'a> Tracer<'a> {
             return seen;
         }
         self.through_media(&set, ray, t, seen, ctx)
+    }
+}
+
+/// What one sample of the media gives: extinction and light sent towards the viewer, both
+/// per unit length.
+#[derive(Clone, Copy)]
+struct Sample {
+    sigma: DVec3,
+    glow: DVec3,
+}
+
+/// Front-to-back compositing of the steps along a stretch.
+struct Composite {
+    kept: DVec3,
+    added: DVec3,
+}
+
+impl Composite {
+    /// The step [a, b] with samples `left` and `right` at its ends: halved while they differ
+    /// by more than `threshold` and `levels` remain, each final piece taken at its left end.
+    #[allow(clippy::too_many_arguments)]
+    fn refine<'a, F: FnMut(f64, &mut TraceCtx<'a>) -> Sample>(
+        &mut self,
+        a: f64,
+        b: f64,
+        left: Sample,
+        right: Sample,
+        levels: u32,
+        threshold: f64,
+        sample: &mut F,
+        ctx: &mut TraceCtx<'a>,
+    ) {
+        let differ = (left.glow - right.glow).abs().max_element() > threshold
+            || (left.sigma - right.sigma).abs().max_element() > threshold;
+        if levels > 0 && differ {
+            let m = 0.5 * (a + b);
+            let mid = sample(m, ctx);
+            self.refine(a, m, left, mid, levels - 1, threshold, sample, ctx);
+            self.refine(m, b, mid, right, levels - 1, threshold, sample, ctx);
+            return;
+        }
+        let len = b - a;
+        self.added += self.kept * left.glow * len;
+        self.kept *= (-left.sigma * len).exp();
     }
 }
