@@ -15,7 +15,6 @@ use super::value::Value;
 
 /// Pattern keywords POV-Ray 3.7 has that lancer does not evaluate yet.
 pub(super) const UNSUPPORTED_PATTERNS: &[&str] = &[
-    "density_file",
     "facets",
     "object",
     "pavement",
@@ -26,6 +25,7 @@ pub(super) const UNSUPPORTED_PATTERNS: &[&str] = &[
 
 /// Pattern keywords lancer evaluates (see `pattern_keyword`).
 const PATTERNS: &[&str] = &[
+    "density_file",
     "checker",
     "gradient",
     "onion",
@@ -225,6 +225,25 @@ impl Parser {
                 self.open_brace("pigment_pattern")?;
                 PatternKind::PigmentPattern(Box::new(self.parse_pigment_body_in_braces()?))
             }
+            "density_file" => {
+                let fmt = self.next_tok()?;
+                if !matches!(&fmt.tok, super::lexer::Tok::Ident(k) if &**k == "df3") {
+                    return Err(self.unexpected(&fmt, "after density_file (expected df3)"));
+                }
+                let name_span = self.next_span()?;
+                let name = self.parse_string()?;
+                let interpolate = if self.eat_keyword("interpolate")? {
+                    self.parse_float()?.round().max(0.0) as u32
+                } else {
+                    0
+                };
+                let Some(path) = self.find_file(&name) else {
+                    return Err(self.error_at(name_span, format!("cannot find density file \"{name}\" (searched the scene directory and the library path)")));
+                };
+                let d = crate::scene::df3::Df3::load(&path, interpolate)
+                    .map_err(|e| self.error_at(name_span, e))?;
+                PatternKind::DensityFile(std::sync::Arc::new(d))
+            }
             "average" => PatternKind::Average,
             "aoi" => PatternKind::Aoi,
             "slope" => PatternKind::Slope(Box::new(self.parse_slope()?)),
@@ -337,10 +356,6 @@ impl Parser {
     fn skip_pattern_args(&mut self, k: &str) -> PResult<()> {
         match k {
             "object" => self.skip_block()?,
-            "density_file" => {
-                self.next_tok()?;
-                self.next_tok()?;
-            }
             "tiling" => {
                 self.parse_expr()?;
             }
