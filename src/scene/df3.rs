@@ -26,7 +26,7 @@ impl Df3 {
         let size = [dim(0), dim(1), dim(2)];
         let n = size[0] * size[1] * size[2];
         let body = &data[6..];
-        let bytes = if n == 0 { 0 } else { body.len() / n };
+        let bytes = body.len().checked_div(n).unwrap_or(0);
         let values: Vec<f32> = match bytes {
             0 => Vec::new(),
             1 => body[..n].iter().map(|&b| b as f32 / 255.0).collect(),
