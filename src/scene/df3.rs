@@ -7,7 +7,7 @@ use std::path::Path;
 
 use crate::math::DVec3;
 
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub struct Df3 {
     pub size: [usize; 3],
     pub values: Vec<f32>,

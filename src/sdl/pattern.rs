@@ -75,7 +75,6 @@ pub(super) fn is_pattern_keyword(k: &str) -> bool {
 const UNSUPPORTED_MODIFIERS: &[&str] = &[
     "control0",
     "control1",
-    "interpolate",
     "orientation",
     "dist_exp",
     "strength",
@@ -379,6 +378,23 @@ impl Parser {
         pat: &mut Pattern,
         space: &Transform,
     ) -> PResult<bool> {
+        if k == "interpolate" {
+            // A density file's (read after its file name too, as densfile.pov writes it).
+            let n = self.parse_float()?.round().max(0.0) as u32;
+            match &mut pat.kind {
+                PatternKind::DensityFile(d) => {
+                    if let Some(d) = std::sync::Arc::get_mut(d) {
+                        d.interpolate = n;
+                    } else {
+                        let mut copy = crate::scene::df3::Df3::clone(d);
+                        copy.interpolate = n;
+                        *d = std::sync::Arc::new(copy);
+                    }
+                }
+                _ => self.unsupported("interpolate (outside density_file)", span),
+            }
+            return Ok(true);
+        }
         match k {
             "frequency" => {
                 pat.frequency = self.parse_float()?;
