@@ -71,14 +71,16 @@ fn density(m: &Media, p: DVec3) -> DVec3 {
         .fold(DVec3::ONE, |a, d| a * pigment::eval(d, p).rgb)
 }
 
-/// How many equal steps a stretch is sampled in: the finest any of the media asks for.
+/// The media whose sampling settings the whole stretch follows: the first one (measured:
+/// an interior holding `media { samples 5 }` then `media { }` (samples 10) samples both in
+/// three steps, and in six when the two are swapped).
+fn leader<'m>(media: &[&'m [Media]]) -> Option<&'m Media> {
+    media.iter().flat_map(|l| l.iter()).next()
+}
+
+/// How many equal steps a stretch is sampled in.
 fn steps(media: &[&[Media]]) -> u32 {
-    media
-        .iter()
-        .flat_map(|l| l.iter())
-        .map(|m| m.steps() * m.intervals)
-        .max()
-        .unwrap_or(1)
+    leader(media).map_or(1, |m| m.steps() * m.intervals)
 }
 
 /// Where the ray `origin + s·dir` (dir unit, 0 < s < len) crosses the edge of `light`'s
@@ -176,12 +178,8 @@ impl<'a> Tracer<'a> {
             }
             cuts.sort_by(f64::total_cmp);
         }
-        let (aa_level, aa_threshold) = media
-            .iter()
-            .flat_map(|l| l.iter())
-            .fold((0, f64::INFINITY), |(l, t), m| {
-                (l.max(m.aa_level), t.min(m.aa_threshold))
-            });
+        let (aa_level, aa_threshold) =
+            leader(media).map_or((0, 0.0), |m| (m.aa_level, m.aa_threshold));
         let mut acc = Composite {
             kept: DVec3::ONE,
             added: DVec3::ZERO,
@@ -277,13 +275,12 @@ impl<'a> Tracer<'a> {
 }
 
 impl<'a> Tracer<'a> {
-    /// `seen` after the stretch of `ray` up to `t`: through the media of the objects around
-    /// it and, outside solid objects (`solid`), the atmosphere's.
+    /// `seen` after the stretch of `ray` up to `t` (outside solid objects): through the
+    /// media of the objects around it and the atmosphere's.
     pub(super) fn media_segment(
         &self,
         ray: &Ray,
         t: f64,
-        solid: bool,
         seen: Seen,
         ctx: &mut TraceCtx<'a>,
     ) -> Seen {
@@ -292,7 +289,7 @@ impl<'a> Tracer<'a> {
             // The stretch crosses no surface: one point tells which objects hold it.
             containing(self, ray.at(t * 0.5), &mut set);
         }
-        if !solid && !self.scene.media.is_empty() {
+        if !self.scene.media.is_empty() {
             set.push(&self.scene.media);
         }
         if set.is_empty() {

@@ -202,13 +202,15 @@ impl<'a> Tracer<'a> {
         }
         let hit = self.first_visible(ray, path.straight, false, ctx);
         let t = hit.as_ref().map_or(f64::INFINITY, |h| h.t);
-        // No atmosphere inside solid (not `hollow`) objects, povray's rule (measured: a
-        // camera inside plane { z, 10 } sees the plane unfogged). A ray that crossed no
+        // No atmosphere and no media inside solid (not `hollow`) objects, povray's rule
+        // (measured: a camera inside plane { z, 10 } sees the plane unfogged; a media box,
+        // hollow or not, shows nothing inside a solid plane, tests/probes/media_*). A ray that crossed no
         // surface to get here is looked up at a point of its segment (which crosses none);
         // a reflected ray stays where its incident ray was, whichever way it turns
         // (measured: rays reflected from a rippled floor into the floor's half-space are
         // fogged, advanced/mist.pov).
-        let atmosphere = !self.scene.fogs.is_empty() || !self.scene.media.is_empty();
+        let atmosphere =
+            !self.scene.fogs.is_empty() || !self.scene.media.is_empty() || self.scene.object_media;
         let solid = atmosphere
             && path.in_solid.unwrap_or_else(|| {
                 let mid = if t.is_finite() { t * 0.5 } else { 1.0 };
@@ -222,8 +224,8 @@ impl<'a> Tracer<'a> {
             Some(h) => self.shade_blended(ray, &h, path, ctx),
             None => self.background(ray.dir, path.straight),
         };
-        if t.is_finite() && (self.scene.object_media || !self.scene.media.is_empty()) {
-            seen = self.media_segment(ray, t, solid, seen, ctx);
+        if t.is_finite() && !solid && (self.scene.object_media || !self.scene.media.is_empty()) {
+            seen = self.media_segment(ray, t, seen, ctx);
         }
         if self.scene.fogs.is_empty() || solid {
             seen

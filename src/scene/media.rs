@@ -56,7 +56,7 @@ impl Scattering {
     /// How much of a light's colour is scattered towards the viewer, per unit of
     /// `color`·density·length; `cos` is the cosine between the light's direction of travel
     /// and the direction towards the viewer (1: the light shines straight at the viewer).
-    /// Measured against povray (tests/probes/media_scatter_*.pov): isotropic is 1,
+    /// Measured against povray (scripts/measure_media.sh, tests/probes/media_scattering.pov): isotropic is 1,
     /// Henyey-Greenstein is the textbook (1 − g²)/(1 + g² − 2g·cos)^1.5, the others are the
     /// textbook shapes times the factors below.
     pub fn phase(&self, cos: f64) -> f64 {
