@@ -31,8 +31,8 @@ pub fn containing<'a>(tracer: &Tracer<'a>, p: DVec3, out: &mut MediaSet<'a>) {
             return;
         }
         match o.interior.as_deref() {
-            Some(int) if !int.media.is_empty() => {
-                let m: &'a [Media] = &int.media;
+            Some(int) if int.has_media() => {
+                let m: &'a [Media] = int.media();
                 if !out.iter().any(|x| std::ptr::eq(*x, m)) {
                     out.push(m);
                 }

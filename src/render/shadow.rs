@@ -250,8 +250,8 @@ impl<'a> Tracer<'a> {
                     if let Some(int) = &h.obj.interior {
                         if h.obj.normal(ray.at(h.t), h).dot(l) > 0.0 {
                             att *= int.fade(h.t - last);
-                            if !int.media.is_empty() {
-                                att *= super::media::transmittance(&[&int.media], &ray, last, h.t);
+                            if int.has_media() {
+                                att *= super::media::transmittance(&[int.media()], &ray, last, h.t);
                             }
                         }
                     }

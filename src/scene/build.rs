@@ -182,7 +182,7 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
 }
 
 fn has_media(o: &Object) -> bool {
-    o.interior.as_ref().is_some_and(|i| !i.media.is_empty())
+    o.interior.as_ref().is_some_and(|i| i.has_media())
         || match &o.kind {
             ObjKind::Csg { children, .. } => children.iter().any(has_media),
             _ => false,
@@ -217,7 +217,7 @@ struct Ctx {
     shared_textures: HashMap<*const Texture, (Arc<Texture>, bool)>,
     /// Each interior's media readied once, so CSG members sharing an interior keep sharing
     /// one list (render counts a list once where members overlap).
-    media: HashMap<*const Media, Arc<[Media]>>,
+    media: HashMap<*const Vec<Media>, Arc<Vec<Media>>>,
     lights: Vec<Light>,
     gamma: GammaMode,
     noise_generator: u8,
@@ -255,20 +255,21 @@ impl Ctx {
     /// An interior with its media's densities readied (noise generator, images), shared
     /// between the objects that share the description's list.
     fn interior(&mut self, int: &Interior) -> Interior {
-        if int.media.is_empty() {
+        if !int.has_media() {
             return int.clone();
         }
-        let key = int.media.as_ptr();
+        let desc = &int.media;
+        let key = Arc::as_ptr(desc);
         let media = match self.media.get(&key) {
             Some(m) => m.clone(),
             None => {
-                let mut all = int.media.to_vec();
+                let mut all = (**desc).clone();
                 for m in &mut all {
                     for d in &mut m.density {
                         self.pigment(d);
                     }
                 }
-                let ready: Arc<[Media]> = all.into();
+                let ready = Arc::new(all);
                 self.media.insert(key, ready.clone());
                 ready
             }
@@ -597,7 +598,7 @@ impl Ctx {
             transparent,
             clip,
             interior: int
-                .filter(|i| i.fades() || !i.media.is_empty())
+                .filter(|i| i.fades() || i.has_media())
                 .map(|i| Box::new(self.interior(i))),
         })
     }

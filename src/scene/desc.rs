@@ -780,7 +780,9 @@ pub struct Interior {
     /// `media { }` blocks, each computed on its own and added. Shared, so the members of a
     /// CSG that inherit one interior hold the same list (and it is counted once where they
     /// overlap).
-    pub media: Arc<[crate::scene::media::Media]>,
+    /// One pointer (every object description has room for an interior); interiors without
+    /// media share one empty list.
+    pub media: Arc<Vec<crate::scene::media::Media>>,
 }
 
 impl Default for Interior {
@@ -790,7 +792,7 @@ impl Default for Interior {
             fade_distance: 0.0,
             fade_power: 0.0,
             fade_color: DVec3::ZERO,
-            media: Arc::from(Vec::new()),
+            media: crate::scene::media::no_media(),
         }
     }
 }
@@ -814,13 +816,20 @@ impl Interior {
 
     /// The object's transforms move its media's densities with it.
     pub fn apply_transform(&mut self, t: &Transform) {
-        if !self.media.is_empty() {
-            let mut all = self.media.to_vec();
-            for m in &mut all {
+        if self.has_media() {
+            for m in Arc::make_mut(&mut self.media) {
                 m.apply_transform(t);
             }
-            self.media = all.into();
         }
+    }
+
+    /// The `media { }` blocks, in order.
+    pub fn media(&self) -> &[crate::scene::media::Media] {
+        &self.media
+    }
+
+    pub fn has_media(&self) -> bool {
+        !self.media.is_empty()
     }
 
     pub fn fades(&self) -> bool {

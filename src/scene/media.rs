@@ -5,6 +5,8 @@
 //! scripts/measure_media.sh): the scattering phase functions' scale, the number of samples
 //! `samples` stands for.
 
+use std::sync::{Arc, LazyLock};
+
 use crate::math::{DVec3, Transform};
 use crate::scene::desc::Pigment;
 
@@ -95,4 +97,10 @@ impl Media {
     pub fn steps(&self) -> u32 {
         self.samples.0.max(2) / 2 + 1
     }
+}
+
+/// The empty media list every interior without media shares (no allocation per object).
+pub fn no_media() -> Arc<Vec<Media>> {
+    static EMPTY: LazyLock<Arc<Vec<Media>>> = LazyLock::new(|| Arc::new(Vec::new()));
+    EMPTY.clone()
 }

@@ -36,9 +36,7 @@ impl Parser {
                 }
                 "media" => {
                     let m = self.parse_media_block()?;
-                    let mut all = int.media.to_vec();
-                    all.push(m);
-                    int.media = all.into();
+                    std::sync::Arc::make_mut(&mut int.media).push(m);
                 }
                 _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in interior"))),
             }
