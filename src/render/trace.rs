@@ -176,6 +176,9 @@ impl<'a> Tracer<'a> {
     pub fn trace_camera_at(&self, px: f64, py: f64, ctx: &mut TraceCtx<'a>) -> Seen {
         let cam = &self.scene.camera;
         let Some(mesh) = cam.mesh() else {
+            if let Some(lens) = cam.lens() {
+                return super::focal::trace(self, cam, lens, px, py, ctx);
+            }
             return self.trace_camera(cam.ray(px, py), ctx);
         };
         let mut sum = Seen::default();

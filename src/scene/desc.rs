@@ -135,6 +135,8 @@ pub struct CameraDesc {
     pub normal: Option<Normal>,
     /// `mesh_camera { }`: rays from mesh faces instead of a projection.
     pub mesh: Option<Arc<crate::scene::mesh_camera::MeshCameraDesc>>,
+    /// Focal blur (inactive without both `aperture` and `blur_samples`).
+    pub blur: crate::scene::focal::FocalDesc,
 }
 
 impl Default for CameraDesc {
@@ -155,6 +157,7 @@ impl Default for CameraDesc {
             angle_given: false,
             normal: None,
             mesh: None,
+            blur: Default::default(),
         }
     }
 }

@@ -5,6 +5,7 @@ pub mod build;
 pub mod children;
 pub mod cull;
 pub mod desc;
+pub mod focal;
 pub mod gif;
 pub mod height_image;
 pub mod image;
