@@ -43,6 +43,8 @@ pub struct GlobalSettings {
     pub number_of_waves: u8,
     /// `radiosity { ... }`: present turns radiosity on.
     pub radiosity: Option<RadiositySettings>,
+    /// `photons { ... }`: present turns photons on.
+    pub photons: Option<crate::scene::photon::PhotonSettings>,
 }
 
 /// `global_settings { radiosity { ... } }` with POV-Ray 3.7's defaults (manual 3.4.1).
@@ -105,6 +107,7 @@ impl Default for GlobalSettings {
             noise_generator: 2,
             number_of_waves: 10,
             radiosity: None,
+            photons: None,
         }
     }
 }
@@ -196,6 +199,7 @@ pub struct LightDesc {
     pub looks_like: Option<Box<ObjectDesc>>,
     /// `projected_through`: only light whose path crosses this object arrives.
     pub projected_through: Option<Box<ObjectDesc>>,
+    pub photons: crate::scene::photon::LightPhotons,
 }
 
 impl LightDesc {
@@ -215,6 +219,7 @@ impl LightDesc {
             area: None,
             looks_like: None,
             projected_through: None,
+            photons: Default::default(),
         }
     }
 }
@@ -282,6 +287,7 @@ pub struct ObjectDesc {
     pub light_group: Option<bool>,
     /// `clipped_by { ... }`: only the surface inside all of these is kept.
     pub clipped_by: Vec<ObjectDesc>,
+    pub photons: crate::scene::photon::ObjectPhotons,
 }
 
 impl ObjectDesc {
@@ -301,6 +307,7 @@ impl ObjectDesc {
             inverse: false,
             light_group: None,
             clipped_by: Vec::new(),
+            photons: Default::default(),
         }
     }
 

@@ -27,6 +27,8 @@ pub struct Light {
     pub projected: Option<Projected>,
     /// The `light_group` it belongs to (0: none, it lights everything outside groups).
     pub group: u16,
+    /// Whether it shoots photons that refract and reflect (with global photons on).
+    pub photons: crate::scene::photon::LightPhotons,
 }
 
 /// A `projected_through` object, shared by copies of the light.
@@ -115,6 +117,7 @@ impl Light {
             }),
             projected: None,
             group: 0,
+            photons: d.photons,
         }
     }
 
@@ -158,7 +161,7 @@ impl Light {
         })
     }
 
-    fn beam(&self, p: DVec3) -> f64 {
+    pub fn beam(&self, p: DVec3) -> f64 {
         match self.cone {
             Cone::Point => 1.0,
             Cone::Spot {

@@ -14,4 +14,5 @@ pub mod light_group;
 pub mod mesh_camera;
 pub mod object;
 pub mod pattern;
+pub mod photon;
 pub mod shapes;

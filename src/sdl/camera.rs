@@ -173,8 +173,8 @@ impl Parser {
                 }
                 "radiosity" => self.parse_global_radiosity()?,
                 "photons" => {
-                    self.unsupported(k, t.span);
-                    self.skip_block()?;
+                    let p = self.parse_global_photons()?;
+                    self.scene.global.photons = Some(p);
                 }
                 _ => {
                     return Err(

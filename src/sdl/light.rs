@@ -113,7 +113,8 @@ impl Parser {
                                 self.unsupported(&k, t.span);
                             }
                         }
-                        "photons" | "media_interaction" | "media_attenuation" => {
+                        "photons" => light.photons = self.parse_light_photons()?,
+                        "media_interaction" | "media_attenuation" => {
                             self.unsupported(&k, t.span);
                             self.skip_light_item(&k)?;
                         }
