@@ -66,3 +66,33 @@ fn stochastic_probes_match_povray() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+/// `save_file` then `load_file` gives the picture shooting gives, byte for byte, and loading
+/// shoots nothing (a map saved from another scene's photons is what is used).
+#[test]
+fn saved_photon_map_gives_the_same_picture() {
+    let dir = std::env::temp_dir().join(format!("lancer-photon-map-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let map = dir.join("map.ph");
+    let probe =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/probes_stochastic/caustic_sphere.pov");
+    let text = std::fs::read_to_string(&probe).unwrap();
+    let with = |item: &str| {
+        text.replace(
+            "photons { spacing 0.02 }",
+            &format!("photons {{ spacing 0.02 {item} \"{}\" }}", map.display()),
+        )
+    };
+    let save = dir.join("save.pov");
+    let load = dir.join("load.pov");
+    std::fs::write(&save, with("save_file")).unwrap();
+    std::fs::write(&load, with("load_file")).unwrap();
+    let shot = render(&save, 2);
+    assert!(map.exists());
+    assert_eq!(shot, render(&probe, 2));
+    assert_eq!(shot, render(&load, 2));
+    // A load of a map with no photons in it: no caustic, so the picture changes.
+    std::fs::write(&map, b"LNCRPH01\0\0\0\0\0\0\0\0\0\0\x80\x3f").unwrap();
+    assert_ne!(shot, render(&load, 2));
+    std::fs::remove_dir_all(&dir).ok();
+}

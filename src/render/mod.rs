@@ -13,6 +13,7 @@ pub mod noise;
 mod noise_data;
 pub mod normal;
 pub mod pattern;
+mod photon_file;
 mod photon_tree;
 pub mod photons;
 pub mod pigment;

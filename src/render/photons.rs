@@ -65,42 +65,33 @@ impl PhotonMap {
     /// Shoots the scene's photons; None without `photons { }` in global_settings.
     pub fn shoot(scene: &Scene) -> Option<PhotonMap> {
         let set = scene.photons.as_ref()?;
-        let targets = targets(&scene.objects);
-        let spacing = match (set.spacing, set.count) {
-            (Some(s), _) => s,
-            (None, Some(n)) => spacing_for_count(scene, &targets, n),
-            (None, None) => 0.1,
-        }
-        .max(1e-6);
-        let mut photons = Vec::new();
-        let mut shot = 0u64;
-        let mut ratios = Vec::new();
-        for (li, light) in scene.lights.iter().enumerate() {
-            if !(light.photons.refraction || light.photons.reflection) {
-                continue;
+        let loaded = set.load_file.as_ref().and_then(|f| {
+            match std::fs::read(f).map_err(|e| e.to_string()).and_then(|b| super::photon_file::decode(&b)) {
+                Ok(map) => Some(map),
+                Err(e) => {
+                    eprintln!("lancer: warning: cannot load the photon map {f} ({e}); shooting photons instead");
+                    None
+                }
             }
-            let shooter = Shooter {
-                scene,
-                light,
-                max_level: set.max_trace_level.unwrap_or(scene.max_trace_level),
-                bailout: set.adc_bailout.unwrap_or(scene.adc_bailout),
-            };
-            for (ti, t) in targets.iter().enumerate() {
-                let s = spacing * t.photon_mult as f64;
-                let (p, n, ratio) = shooter.shoot_target(t, s, set, (li as u64) << 32 | ti as u64);
-                photons.extend(p);
-                shot += n;
-                ratios.push((ratio, s));
+        });
+        let (photons, auto_radius, shot) = match loaded {
+            Some((photons, radius)) => (photons, radius as f64, 0),
+            None => shoot_all(scene, set),
+        };
+        if let Some(f) = &set.save_file {
+            if let Err(e) =
+                std::fs::write(f, super::photon_file::encode(&photons, auto_radius as f32))
+            {
+                eprintln!("lancer: warning: cannot save the photon map {f} ({e})");
             }
         }
-        // The radius: about 5 photon spacings where the photons land. A photon's spacing there
-        // is the shooting spacing scaled by how far it went against the target's distance.
-        let surface_spacing = ratios
-            .iter()
-            .map(|(r, s)| r * s)
-            .fold(0.0f64, f64::max)
-            .max(spacing);
-        let radius = set.radius.unwrap_or(surface_spacing * RADIUS_SPACINGS) * set.radius_mult;
+        if std::env::var_os("LANCER_PHOTON_STATS").is_some() {
+            eprintln!(
+                "photons: {shot} shot, {} stored, estimated radius {auto_radius}",
+                photons.len()
+            );
+        }
+        let radius = set.radius.unwrap_or(auto_radius) * set.radius_mult;
         Some(PhotonMap {
             tree: PhotonTree::new(photons),
             radius: radius as f32,
@@ -198,6 +189,47 @@ impl PhotonMap {
         }
         (sum, count, r2)
     }
+}
+
+/// Shoots every light's photons at every target: the photons stored, the gather radius
+/// estimated for them, and how many were shot.
+fn shoot_all(scene: &Scene, set: &PhotonSettings) -> (Vec<Photon>, f64, u64) {
+    let targets = targets(&scene.objects);
+    let spacing = match (set.spacing, set.count) {
+        (Some(s), _) => s,
+        (None, Some(n)) => spacing_for_count(scene, &targets, n),
+        (None, None) => 0.1,
+    }
+    .max(1e-6);
+    let mut photons = Vec::new();
+    let mut shot = 0u64;
+    let mut ratios = Vec::new();
+    for (li, light) in scene.lights.iter().enumerate() {
+        if !(light.photons.refraction || light.photons.reflection) {
+            continue;
+        }
+        let shooter = Shooter {
+            scene,
+            light,
+            max_level: set.max_trace_level.unwrap_or(scene.max_trace_level),
+            bailout: set.adc_bailout.unwrap_or(scene.adc_bailout),
+        };
+        for (ti, t) in targets.iter().enumerate() {
+            let s = spacing * t.photon_mult as f64;
+            let (p, n, ratio) = shooter.shoot_target(t, s, set, (li as u64) << 32 | ti as u64);
+            photons.extend(p);
+            shot += n;
+            ratios.push((ratio, s));
+        }
+    }
+    // The radius: about 5 photon spacings where the photons land. A photon's spacing there
+    // is the shooting spacing scaled by how far it went against the target's distance.
+    let surface_spacing = ratios
+        .iter()
+        .map(|(r, s)| r * s)
+        .fold(0.0f64, f64::max)
+        .max(spacing);
+    (photons, surface_spacing * RADIUS_SPACINGS, shot)
 }
 
 /// Whether shadow rays of lights that shoot refraction photons stop at `obj`: a refracting

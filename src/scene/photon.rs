@@ -22,6 +22,10 @@ pub struct PhotonSettings {
     /// `radius`: the gather radius (None: estimated from the photons) and its multiplier.
     pub radius: Option<f64>,
     pub radius_mult: f64,
+    /// `save_file` / `load_file`: where the photon map is written after shooting, or read
+    /// from instead of shooting.
+    pub save_file: Option<String>,
+    pub load_file: Option<String>,
 }
 
 impl Default for PhotonSettings {
@@ -39,6 +43,8 @@ impl Default for PhotonSettings {
             expand_min: 40,
             radius: None,
             radius_mult: 1.0,
+            save_file: None,
+            load_file: None,
         }
     }
 }

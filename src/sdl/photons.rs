@@ -44,10 +44,8 @@ impl Parser {
                     p.expand_min = self.parse_float()?.max(0.0) as u32;
                 }
                 "radius" => self.parse_photon_radius(&mut p)?,
-                "save_file" | "load_file" => {
-                    self.unsupported(&format!("{k} (photon maps are shot every render)"), t.span);
-                    self.parse_string()?;
-                }
+                "save_file" => p.save_file = Some(self.parse_string()?),
+                "load_file" => p.load_file = Some(self.parse_string()?),
                 _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in photons"))),
             }
         }
