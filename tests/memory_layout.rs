@@ -12,8 +12,10 @@ use lancer::scene::object::Object;
 fn per_object_types_stay_small() {
     // Inline transforms (256 bytes each), textures and light sources made these 1392, 224,
     // 824, 352 and 464 bytes (inline mesh and blob data another 48 on the last).
+    // ObjectDesc 192 -> 200 knowingly: an object's `photons { }` flags and target spacing
+    // (3 bytes, but the struct had no padding left); 8 MB per million object descriptions.
     assert!(
-        size_of::<ObjectDesc>() <= 192,
+        size_of::<ObjectDesc>() <= 200,
         "{}",
         size_of::<ObjectDesc>()
     );

@@ -53,7 +53,11 @@ pub fn render_bands(
         can_band(s),
         "method 2 anti-aliasing is not rendered in bands"
     );
-    let base = Tracer::new(scene, s.alpha, Quality::level(s.quality));
+    let map = super::photons::PhotonMap::shoot(scene);
+    let base = Tracer {
+        photons: map.as_ref(),
+        ..Tracer::new(scene, s.alpha, Quality::level(s.quality))
+    };
     let cache = super::radiosity::pretrace(scene, s, &base);
     let tracer = super::with_radiosity(&base, cache.as_ref());
     let (w, h) = (s.width as usize, s.height as usize);

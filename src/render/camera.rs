@@ -28,6 +28,8 @@ pub struct Camera {
     normal: Option<Normal>,
     /// A mesh camera replaces the projection: `ray` is not used then.
     mesh: Option<Arc<MeshCamera>>,
+    /// Focal blur: None for a pinhole camera.
+    lens: Option<super::focal::Lens>,
 }
 
 impl Camera {
@@ -84,7 +86,15 @@ impl Camera {
             up *= k;
         }
         let t = &d.transform;
+        let lens = super::focal::Lens::new(
+            &d.blur,
+            d.location,
+            t.vector(right),
+            t.vector(up),
+            t.vector(dir),
+        );
         Camera {
+            lens,
             orthographic: d.orthographic,
             projection: d.projection,
             h_angle,
@@ -114,6 +124,11 @@ impl Camera {
     /// The mesh camera, when the scene has one: its pixels take several rays or none.
     pub fn mesh(&self) -> Option<&MeshCamera> {
         self.mesh.as_deref()
+    }
+
+    /// The focal-blur lens, when the camera has one.
+    pub fn lens(&self) -> Option<&super::focal::Lens> {
+        self.lens.as_ref()
     }
 
     /// Ray through image position (px, py) in pixels from the top-left corner; pixel centres

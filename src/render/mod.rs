@@ -7,12 +7,16 @@ mod aa;
 pub mod band;
 pub mod camera;
 mod cells_data;
+pub mod focal;
 mod fog;
 mod media;
 pub mod noise;
 mod noise_data;
 pub mod normal;
 pub mod pattern;
+mod photon_file;
+mod photon_tree;
+pub mod photons;
 pub mod pigment;
 pub mod radiosity;
 mod shadow;
@@ -139,7 +143,11 @@ pub(crate) fn jitter_hash(x: u32, y: u32, i: u32) -> f64 {
 
 /// Renders the scene; `progress` is called once per finished row (from any thread).
 pub fn render(scene: &Scene, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)) -> Film {
-    let base = Tracer::new(scene, s.alpha, Quality::level(s.quality));
+    let map = photons::PhotonMap::shoot(scene);
+    let base = Tracer {
+        photons: map.as_ref(),
+        ..Tracer::new(scene, s.alpha, Quality::level(s.quality))
+    };
     let cache = radiosity::pretrace(scene, s, &base);
     let tracer = with_radiosity(&base, cache.as_ref());
     let pass = match s.antialias {

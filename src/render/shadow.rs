@@ -195,6 +195,8 @@ impl<'a> Tracer<'a> {
         }
         let mut att = DVec3::ONE;
         let mut blocker = None;
+        // With photons, light this light sends through refracting targets arrives as photons.
+        let photons_only = self.photons.is_some() && self.scene.lights[slot].photons.refraction;
         self.scene.for_each_candidate(&ray, dist, |obj| {
             // The cached blocker, opaque, was just found not to block.
             if obj.no_shadow || tried.is_some_and(|t| std::ptr::eq(t, obj)) {
@@ -227,6 +229,10 @@ impl<'a> Tracer<'a> {
                 } else {
                     None
                 };
+                if photons_only && super::photons::refracts_photons(h.obj) {
+                    att = DVec3::ZERO;
+                    break 'hits;
+                }
                 for layer in top.layers() {
                     let c = texture_map::color_at(layer, hp, uv, false);
                     if c.is_opaque() {

@@ -25,6 +25,8 @@ pub struct Tracer<'a> {
     /// `+UA`: the output keeps the background's share of each pixel in an alpha channel.
     pub alpha: bool,
     pub quality: Quality,
+    /// The photon map, when the scene shoots photons.
+    pub photons: Option<&'a super::photons::PhotonMap>,
 }
 
 /// What POV-Ray's `+Q0..11` levels switch on (manual 3.2.8.3, each level checked against
@@ -151,6 +153,7 @@ impl<'a> Tracer<'a> {
             rad: None,
             alpha,
             quality,
+            photons: None,
         }
     }
 
@@ -176,6 +179,9 @@ impl<'a> Tracer<'a> {
     pub fn trace_camera_at(&self, px: f64, py: f64, ctx: &mut TraceCtx<'a>) -> Seen {
         let cam = &self.scene.camera;
         let Some(mesh) = cam.mesh() else {
+            if let Some(lens) = cam.lens() {
+                return super::focal::trace(self, cam, lens, px, py, ctx);
+            }
             return self.trace_camera(cam.ray(px, py), ctx);
         };
         let mut sum = Seen::default();
@@ -627,6 +633,11 @@ impl<'a> Tracer<'a> {
                 grain: grain(seed, slot as u32),
             });
         }
+        if let Some(map) = self.photons {
+            if let Some(c) = map.caustic(p, nf, obj, seed, &mut ctx.photon_found) {
+                lit.push(c);
+            }
+        }
         ctx.lit = lit;
     }
 
@@ -716,7 +727,7 @@ pub(super) fn point_seed(p: DVec3) -> u32 {
 }
 
 /// A well-mixed value in [0, 1) from a point seed and a light's index.
-fn grain(seed: u32, light: u32) -> f64 {
+pub(super) fn grain(seed: u32, light: u32) -> f64 {
     let mut h = seed ^ light.wrapping_mul(0x9e37_79b9);
     h ^= h >> 16;
     h = h.wrapping_mul(0x7feb_352d);

@@ -62,6 +62,8 @@ pub struct Scene {
     pub media: Vec<Media>,
     /// Whether any object's interior holds media.
     pub object_media: bool,
+    /// `global_settings { photons {} }`: caustics from a photon map.
+    pub photons: Option<crate::scene::photon::PhotonSettings>,
 }
 
 pub struct BuildOutput {
@@ -108,6 +110,9 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
     }
     for o in &mut objects {
         crate::scene::children::attach(o, false);
+        if desc.global.photons.is_some() {
+            inherit_photon_flags(o, 0);
+        }
     }
     let mut bounded = Vec::new();
     let mut unbounded = Vec::new();
@@ -154,6 +159,7 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
             keep_ambient: desc.version.is_some_and(|v| v < 3.7),
             ..r
         }),
+        photons: desc.global.photons.clone(),
         gamma,
         media,
         object_media,
@@ -600,7 +606,33 @@ impl Ctx {
             interior: int
                 .filter(|i| i.fades() || i.has_media())
                 .map(|i| Box::new(self.interior(i))),
+            photons: object_photon_flags(o),
+            photon_mult: o.photons.spacing_mult(),
         })
+    }
+}
+
+/// An object's photon flags: `no_shadow` makes it `pass_through` unless that is turned off
+/// (manual 3.4.4.4.4).
+fn object_photon_flags(o: &ObjectDesc) -> u8 {
+    use crate::scene::photon::flags::*;
+    let f = o.photons.flags;
+    if o.no_shadow && f & PASS_THROUGH_OFF == 0 {
+        f | PASS_THROUGH
+    } else {
+        f
+    }
+}
+
+/// Gives a CSG's photon flags to its members (they are what rays and photons meet), keeping
+/// flags the members set themselves.
+pub(crate) fn inherit_photon_flags(o: &mut Object, from: u8) {
+    o.photons |= from;
+    let f = o.photons;
+    if let ObjKind::Csg { children, .. } = &mut o.kind {
+        for c in children {
+            inherit_photon_flags(c, f);
+        }
     }
 }
 

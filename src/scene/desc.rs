@@ -45,6 +45,8 @@ pub struct GlobalSettings {
     pub number_of_waves: u8,
     /// `radiosity { ... }`: present turns radiosity on.
     pub radiosity: Option<RadiositySettings>,
+    /// `photons { ... }`: present turns photons on.
+    pub photons: Option<crate::scene::photon::PhotonSettings>,
 }
 
 /// `global_settings { radiosity { ... } }` with POV-Ray 3.7's defaults (manual 3.4.1).
@@ -107,6 +109,7 @@ impl Default for GlobalSettings {
             noise_generator: 2,
             number_of_waves: 10,
             radiosity: None,
+            photons: None,
         }
     }
 }
@@ -137,6 +140,8 @@ pub struct CameraDesc {
     pub normal: Option<Normal>,
     /// `mesh_camera { }`: rays from mesh faces instead of a projection.
     pub mesh: Option<Arc<crate::scene::mesh_camera::MeshCameraDesc>>,
+    /// Focal blur (inactive without both `aperture` and `blur_samples`).
+    pub blur: crate::scene::focal::FocalDesc,
 }
 
 impl Default for CameraDesc {
@@ -157,6 +162,7 @@ impl Default for CameraDesc {
             angle_given: false,
             normal: None,
             mesh: None,
+            blur: Default::default(),
         }
     }
 }
@@ -199,6 +205,7 @@ pub struct LightDesc {
     pub media_interaction: bool,
     /// `media_attenuation` (off by default): media dim this light on its way.
     pub media_attenuation: bool,
+    pub photons: crate::scene::photon::LightPhotons,
 }
 
 impl LightDesc {
@@ -220,6 +227,7 @@ impl LightDesc {
             projected_through: None,
             media_interaction: true,
             media_attenuation: false,
+            photons: Default::default(),
         }
     }
 }
@@ -287,6 +295,7 @@ pub struct ObjectDesc {
     pub light_group: Option<bool>,
     /// `clipped_by { ... }`: only the surface inside all of these is kept.
     pub clipped_by: Vec<ObjectDesc>,
+    pub photons: crate::scene::photon::ObjectPhotons,
 }
 
 impl ObjectDesc {
@@ -306,6 +315,7 @@ impl ObjectDesc {
             inverse: false,
             light_group: None,
             clipped_by: Vec::new(),
+            photons: Default::default(),
         }
     }
 

@@ -29,6 +29,8 @@ pub struct Light {
     pub group: u16,
     pub media_interaction: bool,
     pub media_attenuation: bool,
+    /// Whether it shoots photons that refract and reflect (with global photons on).
+    pub photons: crate::scene::photon::LightPhotons,
 }
 
 /// A `projected_through` object, shared by copies of the light.
@@ -119,6 +121,7 @@ impl Light {
             group: 0,
             media_interaction: d.media_interaction,
             media_attenuation: d.media_attenuation,
+            photons: d.photons,
         }
     }
 
@@ -162,7 +165,7 @@ impl Light {
         })
     }
 
-    fn beam(&self, p: DVec3) -> f64 {
+    pub fn beam(&self, p: DVec3) -> f64 {
         match self.cone {
             Cone::Point => 1.0,
             Cone::Spot {

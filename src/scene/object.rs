@@ -67,6 +67,11 @@ pub struct Object {
     pub clip: Vec<Object>,
     /// An interior that fades light passing through it or holds media.
     pub interior: Option<Box<crate::scene::desc::Interior>>,
+    /// `photons { }` flags (scene::photon::flags), a CSG's given to its members too; `pass_through`
+    /// is set for `no_shadow` objects unless turned off.
+    pub photons: u8,
+    /// `photons { target Float }`: the spacing multiplier of photons shot at it.
+    pub photon_mult: f32,
 }
 
 /// Per-thread buffers for intersection, so no ray allocates: shape crossings, and surface
@@ -93,6 +98,8 @@ pub struct Scratch<'a> {
     /// Radiosity samples gathered while tracing the current camera sample, not yet in the
     /// shared cache (which is frozen during a pass, for determinism).
     pub rad_local: Vec<crate::render::radiosity::Sample>,
+    /// Photons found around the point being shaded: (squared distance, index).
+    pub photon_found: Vec<(f32, u32)>,
 }
 
 /// Whether a crossing at `p` of CSG member `i` is on the result's surface: every other member

@@ -177,8 +177,8 @@ impl Parser {
                 }
                 "radiosity" => self.parse_global_radiosity()?,
                 "photons" => {
-                    self.unsupported(k, t.span);
-                    self.skip_block()?;
+                    let p = self.parse_global_photons()?;
+                    self.scene.global.photons = Some(p);
                 }
                 _ => {
                     return Err(
@@ -269,11 +269,30 @@ impl Parser {
                         }
                     }
                 }
-                "aperture" | "blur_samples" | "focal_point" | "confidence" | "variance" => {
-                    self.unsupported(&format!("{k} (focal blur)"), t.span);
-                    self.parse_expr()?;
-                    if &**k == "blur_samples" && self.eat_sym(Sym::Comma)? {
-                        self.parse_expr()?;
+                "aperture" => cam.blur.aperture = self.parse_float()?,
+                "blur_samples" => {
+                    let a = self.parse_float()?;
+                    if self.eat_sym(Sym::Comma)? {
+                        let b = self.parse_float()?;
+                        cam.blur.min_samples = Some(a.max(1.0) as u32);
+                        cam.blur.max_samples = b.max(0.0) as u32;
+                    } else {
+                        cam.blur.max_samples = a.max(0.0) as u32;
+                    }
+                }
+                "focal_point" => cam.blur.focal_point = self.parse_vector()?,
+                "confidence" => cam.blur.confidence = self.parse_float()?.clamp(0.0, 0.999_999),
+                "variance" => {
+                    let v = self.parse_float()?;
+                    if v >= 1.0 || v <= 0.0 {
+                        // The manual: "If 1 is used POV-Ray will issue a warning and then use
+                        // the default instead."
+                        self.warn(
+                            t.span,
+                            "focal blur variance must be below 1; the default 1/128 is used",
+                        );
+                    } else {
+                        cam.blur.variance = v;
                     }
                 }
                 "normal" => {

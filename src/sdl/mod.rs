@@ -24,6 +24,7 @@ pub mod object;
 pub mod parametric;
 pub mod parser;
 pub mod pattern;
+mod photons;
 pub mod radiosity;
 pub mod source;
 pub mod special_objects;

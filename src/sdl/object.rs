@@ -203,7 +203,7 @@ impl Parser {
             "split_union" => {
                 self.optional_bool()?;
             }
-            "photons" => self.skip_block()?,
+            "photons" => obj.photons = self.parse_object_photons(obj.photons)?,
             "radiosity" => self.parse_object_radiosity(span)?,
             "clipped_by" => {
                 let open = self.open_brace("clipped_by")?;
