@@ -14,6 +14,9 @@ pub enum Internal {
     Noise3d,
     /// `f_noise_generator(x, y, z, generator)`.
     NoiseGenerator,
+    /// `f_ridged_mf(x, y, z, H, lacunarity, octaves, offset, gain, generator)`: Musgrave's
+    /// ridged multifractal over signed noise.
+    RidgedMf,
     Paraboloid,
     Ph,
     R,
@@ -131,6 +134,7 @@ impl Internal {
             71 => Internal::Torus2,
             76 => Internal::Noise3d,
             78 => Internal::NoiseGenerator,
+            59 => Internal::RidgedMf,
             n => Internal::Unknown(n),
         }
     }
@@ -143,6 +147,7 @@ impl Internal {
             Internal::Torus | Internal::Superellipsoid => 5,
             Internal::Ellipsoid | Internal::Torus2 => 6,
             Internal::RoundedBox => 7,
+            Internal::RidgedMf => 9,
             Internal::Unknown(_) => return None,
         })
     }
@@ -207,9 +212,42 @@ impl Internal {
                 crate::math::DVec3::new(x, y, z),
                 (g(3) as i64).clamp(1, 3) as u8,
             ),
+            Internal::RidgedMf => ridged_mf(
+                crate::math::DVec3::new(x, y, z),
+                [g(3), g(4), g(5), g(6), g(7)],
+                (g(8) as i64).clamp(1, 3) as u8,
+            ),
             Internal::Unknown(_) => f64::NAN,
         }
     }
+}
+
+/// Musgrave's ridged multifractal ("Texturing and Modeling", ch. 16) with POV-Ray's noise
+/// made signed: each octave is (offset − |noise|)², the ones after the first weighted by
+/// the previous octave times `gain` (clamped to [0, 1]) and by lacunarity^(−i·H). Checked
+/// against povray's printed values (tests below). One difference is kept on purpose:
+/// povray computes the lacunarity^(−i·H) weights once, from the first call it makes in a
+/// run, and uses them for every later call whatever their H and lacunarity (measured: a
+/// call with H 0 first makes H do nothing in all later calls); lancer uses each call's own,
+/// which is what povray draws whenever a scene calls f_ridged_mf with one parameter set.
+fn ridged_mf(
+    p: crate::math::DVec3,
+    [h, lacunarity, octaves, offset, gain]: [f64; 5],
+    gen: u8,
+) -> f64 {
+    let signed = |q: crate::math::DVec3| 2.0 * crate::render::noise::noise(q, gen) - 1.0;
+    let mut signal = offset - signed(p).abs();
+    signal *= signal;
+    let mut result = signal;
+    let mut q = p;
+    for i in 1..octaves.max(1.0) as u32 {
+        q *= lacunarity;
+        let weight = (signal * gain).clamp(0.0, 1.0);
+        signal = offset - signed(q).abs();
+        signal = signal * signal * weight;
+        result += signal * lacunarity.powf(-(i as f64) * h);
+    }
+    result
 }
 
 fn atan2_or_zero(a: f64, b: f64) -> f64 {
@@ -249,6 +287,8 @@ mod tests {
             (Internal::Superellipsoid, &[1.0, 1.0], [-2.741657386773941, 0.383558599703102, -0.667333200053307, 0.6]),
             (Internal::Paraboloid, &[2.0], [-10.0, 0.02, -4.06, -0.32]),
             (Internal::Torus2, &[2.0, 1.2, 0.3], [-10.0, -2.644999999999999, -10.0, -2.716999999999999]),
+            // povray's first f_ridged_mf call of its run (see ridged_mf), generator 1 and 2.
+            (Internal::RidgedMf, &[0.07, 2.2, 7.0, 0.6, 0.9, 1.0], [0.048016074648238, 0.002640418425742, 0.238491689069120, 0.342913651060993]),
         ];
         for (f, extra, want) in cases {
             for (p, w) in pts.iter().zip(want) {
