@@ -234,6 +234,7 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
         }
         PatternKind::Fractal(f) => fractal(f, (q.x, q.y)),
         PatternKind::DensityFile(d) => d.eval(q),
+        PatternKind::Object(o) => o.inside(q) as u8 as f64,
         PatternKind::Function(f) => {
             if f.unsupported.is_some() {
                 0.0

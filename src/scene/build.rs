@@ -187,6 +187,28 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
     BuildOutput { scene, warnings }
 }
 
+/// One object built on its own, for an `object` pattern: no lights, no scene-wide state.
+pub fn standalone_object(o: &ObjectDesc) -> Option<Object> {
+    let mut ctx = Ctx {
+        meshes: HashMap::new(),
+        texts: HashMap::new(),
+        images: HashMap::new(),
+        shared_textures: HashMap::new(),
+        media: HashMap::new(),
+        lights: Vec::new(),
+        gamma: GammaMode::Corrected(1.0),
+        noise_generator: 2,
+        light_sets: vec![LightSet::outside()],
+        current_set: 0,
+        current_group: 0,
+        groups: 0,
+    };
+    let default_texture = Arc::new(Texture::default());
+    let mut obj = ctx.object(o, None, None, &default_texture)?;
+    crate::scene::children::attach(&mut obj, false);
+    Some(obj)
+}
+
 fn has_media(o: &Object) -> bool {
     o.interior.as_ref().is_some_and(|i| i.has_media())
         || match &o.kind {

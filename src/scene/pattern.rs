@@ -74,6 +74,7 @@ impl Pattern {
                 | PatternKind::Square
                 | PatternKind::Triangular
                 | PatternKind::Cubic
+                | PatternKind::Object(_)
         )
     }
 }
@@ -144,6 +145,8 @@ pub enum PatternKind {
     Average,
     /// `function { ... }` of x, y, z.
     Function(Arc<Function>),
+    /// `object { OBJECT A, B }`: B inside the object, A outside.
+    Object(Arc<ObjectPattern>),
     /// `density_file df3 "file"`: a voxel grid over the unit cube.
     DensityFile(Arc<crate::scene::df3::Df3>),
     /// A pattern lancer does not evaluate yet (already warned about): the middle of its map.
@@ -280,5 +283,37 @@ impl Pigment {
                 map.iter_mut().for_each(|(_, p)| p.take_generator(gen));
             }
         }
+    }
+}
+
+/// The object of an `object` pattern: its description, built into a renderable object the
+/// first time the pattern is evaluated (by any thread; the result is the same).
+pub struct ObjectPattern {
+    pub desc: crate::scene::desc::ObjectDesc,
+    pub built: std::sync::OnceLock<Option<crate::scene::object::Object>>,
+}
+
+impl std::fmt::Debug for ObjectPattern {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ObjectPattern")
+            .field("desc", &self.desc)
+            .finish()
+    }
+}
+
+impl ObjectPattern {
+    pub fn new(desc: crate::scene::desc::ObjectDesc) -> ObjectPattern {
+        ObjectPattern {
+            desc,
+            built: std::sync::OnceLock::new(),
+        }
+    }
+
+    /// Whether `p` (pattern space) is inside the object.
+    pub fn inside(&self, p: crate::math::DVec3) -> bool {
+        self.built
+            .get_or_init(|| crate::scene::build::standalone_object(&self.desc))
+            .as_ref()
+            .is_some_and(|o| o.inside(p))
     }
 }

@@ -129,6 +129,7 @@ impl Parser {
                 if np.is_block() {
                     self.skip_optional_comma()?;
                     let items = self.parse_normal_items()?;
+                    self.close_object_pattern(&np.kind)?;
                     form = if items.is_empty() {
                         Form::Plain(None)
                     } else {

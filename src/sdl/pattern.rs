@@ -14,14 +14,8 @@ use super::source::Span;
 use super::value::Value;
 
 /// Pattern keywords POV-Ray 3.7 has that lancer does not evaluate yet.
-pub(super) const UNSUPPORTED_PATTERNS: &[&str] = &[
-    "facets",
-    "object",
-    "pavement",
-    "quilted",
-    "tiling",
-    "proportion",
-];
+pub(super) const UNSUPPORTED_PATTERNS: &[&str] =
+    &["facets", "pavement", "quilted", "tiling", "proportion"];
 
 /// Pattern keywords lancer evaluates (see `pattern_keyword`).
 const PATTERNS: &[&str] = &[
@@ -224,6 +218,36 @@ impl Parser {
                 self.open_brace("pigment_pattern")?;
                 PatternKind::PigmentPattern(Box::new(self.parse_pigment_body_in_braces()?))
             }
+            "object" => {
+                // `object { OBJECT A, B }`: the list items follow the object inside the
+                // braces; `close_object_pattern` reads the closing brace after them.
+                self.open_brace("object")?;
+                let desc = match self.parse_object()? {
+                    Some(o) => o,
+                    None => {
+                        let t = self.next_tok()?;
+                        match &t.tok {
+                            super::lexer::Tok::Ident(n) => match self.lookup(n) {
+                                Some(Value::Object(o)) => (**o).clone(),
+                                _ => {
+                                    return Err(self.error_at(
+                                        t.span,
+                                        format!("'{n}' is not an object identifier"),
+                                    ))
+                                }
+                            },
+                            _ => {
+                                return Err(
+                                    self.unexpected(&t, "in an object pattern; expected an object")
+                                )
+                            }
+                        }
+                    }
+                };
+                PatternKind::Object(std::sync::Arc::new(
+                    crate::scene::pattern::ObjectPattern::new(desc),
+                ))
+            }
             "density_file" => {
                 let fmt = self.next_tok()?;
                 if !matches!(&fmt.tok, super::lexer::Tok::Ident(k) if &**k == "df3") {
@@ -311,6 +335,14 @@ impl Parser {
         }))
     }
 
+    /// After an `object` pattern's list items: its closing brace.
+    pub(super) fn close_object_pattern(&mut self, kind: &PatternKind) -> PResult<()> {
+        if matches!(kind, PatternKind::Object(_)) {
+            self.expect_sym(Sym::RBrace, "to close the object pattern")?;
+        }
+        Ok(())
+    }
+
     /// `slope { <dir> [, lo, hi] [altitude <a> [, lo, hi]] }` or `slope { point_at <p> [, lo,
     /// hi] }` after the keyword.
     fn parse_slope(&mut self) -> PResult<Slope> {
@@ -354,7 +386,6 @@ impl Parser {
 
     fn skip_pattern_args(&mut self, k: &str) -> PResult<()> {
         match k {
-            "object" => self.skip_block()?,
             "tiling" => {
                 self.parse_expr()?;
             }

@@ -109,6 +109,7 @@ impl Parser {
                 }
                 if np.is_block() {
                     form = Form::Items(self.parse_pattern_items(&np.kind)?);
+                    self.close_object_pattern(&np.kind)?;
                 } else if !matches!(form, Form::Colors(Some(_)) | Form::Pigments(_)) {
                     form = Form::Colors(None);
                 }

@@ -122,7 +122,9 @@ impl Parser {
                     let mut pattern = Pattern::new(kind);
                     pattern.noise_generator = 0;
                     let entries = if pattern.is_block() {
-                        TextureEntries::List(self.parse_texture_items()?)
+                        let items = self.parse_texture_items()?;
+                        self.close_object_pattern(&pattern.kind)?;
+                        TextureEntries::List(items)
                     } else {
                         TextureEntries::Map(Vec::new())
                     };
