@@ -385,11 +385,8 @@ impl Parser {
     }
 
     fn skip_pattern_args(&mut self, k: &str) -> PResult<()> {
-        match k {
-            "tiling" => {
-                self.parse_expr()?;
-            }
-            _ => {}
+        if k == "tiling" {
+            self.parse_expr()?;
         }
         Ok(())
     }
