@@ -15,6 +15,11 @@ pub fn apply(w: &Warp, q: DVec3, generator: u8) -> DVec3 {
         }
         WarpKind::Repeat { dir, offset, flip } => repeat(p, *dir, *offset, *flip),
         WarpKind::Planar { e1, e2, e3, d } => *e1 * p.x + *e2 * p.y + *e3 * *d,
+        WarpKind::Wrap {
+            spherical,
+            orientation,
+            dist_exp,
+        } => wrap(p, *spherical, *orientation, *dist_exp),
         WarpKind::BlackHole {
             center,
             radius,
@@ -105,6 +110,24 @@ mod tests {
     use super::*;
     use crate::math::Transform;
 
+    /// povray's values of function { x*0.1 } (or y, z) through each warp, printed by
+    /// scripts/measure_pattern.py (a function pattern wraps negative values into [0, 1)).
+    #[test]
+    fn cylindrical_and_spherical_match_povray() {
+        let cases = [
+            (false, 2, 1.0, [0.3, 0.9, -0.5], 0, 0.048747366),
+            (false, 2, 1.0, [-0.4, 1.5, -0.2], 0, 0.025660750),
+            (true, 2, 0.0, [0.3, 0.9, -0.5], 1, 0.081700812),
+            (true, 2, 0.0, [0.5, 0.5, 0.5], 1, 0.069591328),
+            (false, 0, 0.0, [-0.7, -0.2, 0.4], 2, 0.958262467),
+        ];
+        for (sph, orient, exp, p, axis, want) in cases {
+            let q = wrap(DVec3::from_array(p), sph, orient, exp);
+            let v = (q[axis] * 0.1).rem_euclid(1.0);
+            assert!((v - want).abs() < 1e-9, "{p:?}: {v} vs {want}");
+        }
+    }
+
     #[test]
     fn repeat_copies_the_first_slab() {
         let w = Warp {
@@ -117,5 +140,40 @@ mod tests {
         };
         let q = apply(&w, DVec3::new(5.0, 1.0, 0.0), 2);
         assert!((q - DVec3::new(1.0, 1.0, 1.0)).length() < 1e-12);
+    }
+}
+
+/// The cylindrical and spherical warps, measured with scripts/measure_pattern.py (function
+/// patterns of x, y, z read through the warp): u = atan2(z, x)/2π in [0, 1); v = y for a
+/// cylinder, asin(y/r)/π + 1/2 for a sphere; d = the distance from the y axis (cylinder) or
+/// the origin (sphere); u (and a sphere's v) times d^dist_exp. The triple (u, v, d) is
+/// (x, y, z) for orientation z, (u, −d, v) for y, (d, v, −u) for x.
+fn wrap(p: DVec3, spherical: bool, orientation: u8, dist_exp: f64) -> DVec3 {
+    let mut u = p.z.atan2(p.x) / std::f64::consts::TAU;
+    if u < 0.0 {
+        u += 1.0;
+    }
+    let (mut v, d) = if spherical {
+        let r = p.length();
+        let lat = if r > 0.0 {
+            (p.y / r).clamp(-1.0, 1.0).asin() / std::f64::consts::PI + 0.5
+        } else {
+            0.5
+        };
+        (lat, r)
+    } else {
+        (p.y, (p.x * p.x + p.z * p.z).sqrt())
+    };
+    if dist_exp != 0.0 {
+        let s = d.powf(dist_exp);
+        u *= s;
+        if spherical {
+            v *= s;
+        }
+    }
+    match orientation {
+        0 => DVec3::new(d, v, -u),
+        1 => DVec3::new(u, -d, v),
+        _ => DVec3::new(u, v, d),
     }
 }

@@ -231,6 +231,15 @@ pub enum WarpKind {
         d: f64,
     },
     Turbulence(Turbulence),
+    /// `cylindrical` / `spherical` (measured with scripts/measure_pattern.py, see
+    /// render::warp::wrap): the point as (angle around y in turns, height or latitude,
+    /// distance), the angle (and a sphere's latitude) times distance^dist_exp, the triple
+    /// turned so the distance runs along `orientation` (an axis).
+    Wrap {
+        spherical: bool,
+        orientation: u8,
+        dist_exp: f64,
+    },
     Repeat {
         /// The repeat vector (one non-zero component).
         dir: DVec3,

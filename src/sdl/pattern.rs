@@ -575,6 +575,11 @@ impl Parser {
                     turbulence: DVec3::ZERO,
                 }
             }
+            "cylindrical" | "spherical" => WarpKind::Wrap {
+                spherical: &**k == "spherical",
+                orientation: 2,
+                dist_exp: 0.0,
+            },
             "planar" => {
                 let (mut n, mut d) = (DVec3::Z, 0.0);
                 if self.peek_sym()? != Some(Sym::RBrace) {
@@ -610,6 +615,17 @@ impl Parser {
                 (WarpKind::Turbulence(tb), "octaves" | "omega" | "lambda") => {
                     let v = self.parse_float()?;
                     set_turb_param(tb, m, v);
+                }
+                (WarpKind::Wrap { dist_exp, .. }, "dist_exp") => *dist_exp = self.parse_float()?,
+                (WarpKind::Wrap { orientation, .. }, "orientation") => {
+                    let v = self.parse_vector()?;
+                    let axis = [DVec3::X, DVec3::Y, DVec3::Z]
+                        .iter()
+                        .position(|a| v.normalize_or_zero() == *a);
+                    match axis {
+                        Some(i) => *orientation = i as u8,
+                        None => self.unsupported("warp orientation (other than x, y or z)", t.span),
+                    }
                 }
                 (WarpKind::Repeat { offset, .. }, "offset") => *offset = self.parse_vector()?,
                 (WarpKind::Repeat { flip, .. }, "flip") => *flip = self.parse_vector()?,
