@@ -105,6 +105,41 @@ fn repeat(p: DVec3, dir: DVec3, offset: DVec3, flip: DVec3) -> DVec3 {
     q + offset * n
 }
 
+/// The cylindrical and spherical warps, measured with scripts/measure_pattern.py (function
+/// patterns of x, y, z read through the warp): u = atan2(z, x)/2π in [0, 1); v = y for a
+/// cylinder, asin(y/r)/π + 1/2 for a sphere; d = the distance from the y axis (cylinder) or
+/// the origin (sphere); u (and a sphere's v) times d^dist_exp. The triple (u, v, d) is
+/// (x, y, z) for orientation z, (u, −d, v) for y, (d, v, −u) for x.
+fn wrap(p: DVec3, spherical: bool, orientation: u8, dist_exp: f64) -> DVec3 {
+    let mut u = p.z.atan2(p.x) / std::f64::consts::TAU;
+    if u < 0.0 {
+        u += 1.0;
+    }
+    let (mut v, d) = if spherical {
+        let r = p.length();
+        let lat = if r > 0.0 {
+            (p.y / r).clamp(-1.0, 1.0).asin() / std::f64::consts::PI + 0.5
+        } else {
+            0.5
+        };
+        (lat, r)
+    } else {
+        (p.y, (p.x * p.x + p.z * p.z).sqrt())
+    };
+    if dist_exp != 0.0 {
+        let s = d.powf(dist_exp);
+        u *= s;
+        if spherical {
+            v *= s;
+        }
+    }
+    match orientation {
+        0 => DVec3::new(d, v, -u),
+        1 => DVec3::new(u, -d, v),
+        _ => DVec3::new(u, v, d),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -140,40 +175,5 @@ mod tests {
         };
         let q = apply(&w, DVec3::new(5.0, 1.0, 0.0), 2);
         assert!((q - DVec3::new(1.0, 1.0, 1.0)).length() < 1e-12);
-    }
-}
-
-/// The cylindrical and spherical warps, measured with scripts/measure_pattern.py (function
-/// patterns of x, y, z read through the warp): u = atan2(z, x)/2π in [0, 1); v = y for a
-/// cylinder, asin(y/r)/π + 1/2 for a sphere; d = the distance from the y axis (cylinder) or
-/// the origin (sphere); u (and a sphere's v) times d^dist_exp. The triple (u, v, d) is
-/// (x, y, z) for orientation z, (u, −d, v) for y, (d, v, −u) for x.
-fn wrap(p: DVec3, spherical: bool, orientation: u8, dist_exp: f64) -> DVec3 {
-    let mut u = p.z.atan2(p.x) / std::f64::consts::TAU;
-    if u < 0.0 {
-        u += 1.0;
-    }
-    let (mut v, d) = if spherical {
-        let r = p.length();
-        let lat = if r > 0.0 {
-            (p.y / r).clamp(-1.0, 1.0).asin() / std::f64::consts::PI + 0.5
-        } else {
-            0.5
-        };
-        (lat, r)
-    } else {
-        (p.y, (p.x * p.x + p.z * p.z).sqrt())
-    };
-    if dist_exp != 0.0 {
-        let s = d.powf(dist_exp);
-        u *= s;
-        if spherical {
-            v *= s;
-        }
-    }
-    match orientation {
-        0 => DVec3::new(d, v, -u),
-        1 => DVec3::new(u, -d, v),
-        _ => DVec3::new(u, v, d),
     }
 }
