@@ -9,7 +9,7 @@ use std::sync::Arc;
 use crate::geom::bvh::Bvh;
 use crate::geom::triangle::{smooth_normal, TriGeom};
 use crate::geom::{Hit, Shape};
-use crate::math::{Aabb, DVec3, Ray};
+use crate::math::{Aabb, DVec3, Ray, EPSILON};
 use crate::scene::desc::{MeshData, MeshTriangle};
 
 pub struct Mesh {
@@ -102,9 +102,15 @@ impl Shape for Mesh {
         best
     }
 
-    /// Meshes have no inside until `inside_vector` is supported.
-    fn inside(&self, _p: DVec3) -> bool {
-        false
+    /// Without `inside_vector` a mesh has no inside; with it, a point is inside when the ray
+    /// from it along that vector crosses an odd number of triangles.
+    fn inside(&self, p: DVec3) -> bool {
+        let Some(v) = self.data.inside_vector else {
+            return false;
+        };
+        let mut hits = Vec::new();
+        self.intersect_all(&Ray::new(p, v), &mut hits);
+        hits.iter().filter(|h| h.t > EPSILON).count() % 2 == 1
     }
 
     fn normal(&self, _p: DVec3, hit: &Hit) -> DVec3 {
@@ -180,6 +186,7 @@ pub fn grid_mesh(
         triangles,
         uvs,
         textures: Vec::new(),
+        inside_vector: None,
     }
 }
 
@@ -258,6 +265,7 @@ mod tests {
             triangles: triangles.collect(),
             textures: vec![],
             uvs: vec![],
+            inside_vector: None,
         }
     }
 
@@ -368,6 +376,7 @@ mod tests {
             ],
             textures: vec![],
             uvs: vec![],
+            inside_vector: None,
         };
         let mesh = Mesh::new(Arc::new(bad));
         let h = mesh

@@ -461,6 +461,9 @@ pub struct MeshData {
     pub uvs: Vec<[f64; 2]>,
     /// Textures named inside the mesh per triangle (index into this list).
     pub textures: Vec<Texture>,
+    /// `inside_vector`: the mesh is a solid, a point inside when a ray from it along this
+    /// direction crosses an odd number of triangles (manual 3.4.5.2.3).
+    pub inside_vector: Option<DVec3>,
 }
 
 #[derive(Clone, Copy, Debug)]

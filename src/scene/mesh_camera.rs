@@ -264,6 +264,7 @@ mod tests {
             ],
             uvs: vec![[0.0, 0.0], [0.5, 1.0], [0.5, 0.0], [1.0, 0.0]],
             textures: Vec::new(),
+            inside_vector: None,
         })
     }
 

@@ -68,7 +68,7 @@ impl Parser {
                 }
                 "inside_vector" => {
                     self.advance();
-                    self.parse_vector()?;
+                    data.inside_vector = Some(self.parse_vector()?);
                 }
                 _ => break,
             }

@@ -536,8 +536,13 @@ impl Parser {
                 Tok::Ident(k) if &**k == "smooth_triangle" => true,
                 Tok::Ident(k) if &**k == "inside_vector" => {
                     self.advance();
-                    self.parse_vector()?;
-                    self.unsupported("inside_vector", t.span);
+                    data.inside_vector = Some(self.parse_vector()?);
+                    continue;
+                }
+                // A bounding hierarchy is always used.
+                Tok::Ident(k) if &**k == "hierarchy" => {
+                    self.advance();
+                    self.optional_bool()?;
                     continue;
                 }
                 _ => break,

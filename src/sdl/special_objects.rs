@@ -213,16 +213,14 @@ impl Parser {
             );
             func.0 = JuliaFn::Sqr;
         }
-        // docs/implicit-objects.md: the shapes follow POV-Ray's measured rules, but two parts
-        // are not matched (objects/fractal3 0.71, fractal4 0.91).
-        let why = match algebra {
-            Algebra::Quaternion => "a quaternion julia's thin bands come out narrower than POV-Ray's (its surface threshold is not recovered)",
-            Algebra::Hypercomplex => "hypercomplex julia normals are lancer's own (POV-Ray's normal rule is not measured yet), so shading differs",
-        };
-        self.warn(
-            kw,
-            format!("'julia_fractal' is not supported by lancer yet: {why}"),
-        );
+        // docs/implicit-objects.md: quaternions follow POV-Ray's measured march exactly;
+        // the hypercomplex march is not recovered yet.
+        if algebra == Algebra::Hypercomplex {
+            self.warn(
+                kw,
+                "'julia_fractal' hypercomplex is not fully supported by lancer yet: its inside test matches POV-Ray but the ray march does not, so thin parts and edges differ",
+            );
+        }
         obj.shape = ShapeDesc::Prebuilt(Arc::new(Julia::new(
             param,
             algebra,
