@@ -47,6 +47,8 @@ pub struct Cache {
     /// few samples that cannot reach it (one grid for all reaches filed each sample under
     /// tens of cells or none, and every lookup read the wide ones).
     scales: Vec<Scale>,
+    /// How many of `samples` are filed in `scales`.
+    filed: usize,
     /// Unit-disc points of the gathering directions (`direction_pool`).
     pool: Vec<(f64, f64)>,
     /// Rays the pretrace traced, for the statistics line.
@@ -54,6 +56,7 @@ pub struct Cache {
 }
 
 struct Scale {
+    exp: i32,
     cell: f64,
     grid: FxHashMap<(i64, i64, i64), Vec<u32>>,
 }
@@ -66,19 +69,19 @@ impl Scale {
 }
 
 impl Cache {
-    /// Files every sample under its scale's cells, `reach` being the largest error bound a
-    /// lookup will use (a sample reaches `r * reach`).
-    fn rebuild(&mut self, reach: f64) {
-        self.scales.clear();
-        let mut by_exp: Vec<(i32, usize)> = Vec::new();
-        for (i, s) in self.samples.iter().enumerate() {
+    /// Files the samples added since the last call under their scale's cells, `reach` being
+    /// the largest error bound a lookup will use (a sample reaches `r * reach`). Samples are
+    /// only ever appended, so this gives the grids a filing from scratch would.
+    fn file_new(&mut self, reach: f64) {
+        for i in self.filed..self.samples.len() {
+            let s = &self.samples[i];
             let rr = (s.r * reach).max(1e-9);
             let e = rr.log2().floor().clamp(-200.0, 200.0) as i32;
-            let at = match by_exp.iter().find(|(k, _)| *k == e) {
-                Some(&(_, at)) => at,
+            let at = match self.scales.iter().position(|g| g.exp == e) {
+                Some(at) => at,
                 None => {
-                    by_exp.push((e, self.scales.len()));
                     self.scales.push(Scale {
+                        exp: e,
                         cell: 2f64.powi(e),
                         grid: FxHashMap::default(),
                     });
@@ -96,6 +99,7 @@ impl Cache {
                 }
             }
         }
+        self.filed = self.samples.len();
     }
 
     /// Every sample whose reach may cover `p`, each once.
@@ -416,8 +420,16 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
                 positions
                     .into_par_iter()
                     .map_init(Scratch::default, |ctx, (ix, iy)| {
-                        let x = ((ix as f64 + 0.5) * block).min(w - 0.5);
-                        let y = ((iy as f64 + 0.5) * block).min(h - 0.5);
+                        let mut x = ((ix as f64 + 0.5) * block).min(w - 0.5);
+                        let mut y = ((iy as f64 + 0.5) * block).min(h - 0.5);
+                        if !pretrace {
+                            // At a pixel's centre, where the final trace looks it up: a
+                            // sample whose reach is under a pixel then serves that pixel
+                            // (povray's final-trace samples lie at pixel centres, measured
+                            // from its +RFO file) instead of none.
+                            x = x.floor() + 0.5;
+                            y = y.floor() + 0.5;
+                        }
                         ctx.rad_local.clear();
                         let ray = scene.camera.ray(x, y);
                         tracer.trace_pretrace(ray, ctx);
@@ -431,7 +443,7 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
                 cache.samples.extend(v);
             }
             if cache.samples.len() > before {
-                cache.rebuild(set.error_bound);
+                cache.file_new(set.error_bound);
             }
         }
         if std::env::var_os("LANCER_RAD_STATS").is_some() {
