@@ -254,7 +254,7 @@ impl<'a> Tracer<'a> {
             let mut lc = light.color * (light.fade(inc.dist) * inc.beam);
             if !light.shadowless && self.quality.shadows {
                 if let Some(dist) = inc.shadow_dist {
-                    lc *= self.light_seen(p, (slot, light), inc.l, dist, ctx);
+                    lc *= self.light_seen(p, (slot, light), inc.l, dist, false, ctx);
                 }
             }
             if lc == DVec3::ZERO {

@@ -11,7 +11,7 @@
 //! and the final trace never adds to the cache: a point it finds no sample for gets one
 //! computed for that camera sample only.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use rayon::prelude::*;
@@ -38,55 +38,79 @@ pub struct Sample {
     pub level: u32,
 }
 
-/// The samples gathered so far, with a grid over their reach for lookups.
+/// The samples gathered so far, with grids over their reach for lookups.
 #[derive(Default)]
 pub struct Cache {
     samples: Vec<Sample>,
-    cell: f64,
-    grid: HashMap<(i64, i64, i64), Vec<u32>>,
-    /// Samples reaching over too many cells to file them cell by cell.
-    wide: Vec<u32>,
+    /// One grid per scale: samples whose reach is in [2^k, 2^(k+1)) are filed under every
+    /// cell of size 2^k their reach touches, so a lookup reads one cell per scale and meets
+    /// few samples that cannot reach it (one grid for all reaches filed each sample under
+    /// tens of cells or none, and every lookup read the wide ones).
+    scales: Vec<Scale>,
+    /// How many of `samples` are filed in `scales`.
+    filed: usize,
     /// Unit-disc points of the gathering directions (`direction_pool`).
     pool: Vec<(f64, f64)>,
     /// Rays the pretrace traced, for the statistics line.
     pub rays: u64,
 }
 
-/// Cells one sample may cover before it goes to `wide`.
-const MAX_CELLS: i64 = 64;
+struct Scale {
+    exp: i32,
+    cell: f64,
+    grid: FxHashMap<(i64, i64, i64), Vec<u32>>,
+}
+
+impl Scale {
+    fn key(&self, p: DVec3) -> (i64, i64, i64) {
+        let k = |v: f64| (v / self.cell).floor().clamp(-1e15, 1e15) as i64;
+        (k(p.x), k(p.y), k(p.z))
+    }
+}
 
 impl Cache {
-    fn rebuild(&mut self, reach: f64) {
-        self.grid.clear();
-        self.wide.clear();
-        if self.samples.is_empty() {
-            return;
-        }
-        let mut radii: Vec<f64> = self.samples.iter().map(|s| s.r * reach).collect();
-        radii.sort_by(f64::total_cmp);
-        self.cell = radii[radii.len() / 2].max(1e-9) * 2.0;
-        for (i, s) in self.samples.iter().enumerate() {
-            let rr = s.r * reach;
-            let lo = self.key(s.p - DVec3::splat(rr));
-            let hi = self.key(s.p + DVec3::splat(rr));
-            let cells = (hi.0 - lo.0 + 1) * (hi.1 - lo.1 + 1) * (hi.2 - lo.2 + 1);
-            if !(1..=MAX_CELLS).contains(&cells) {
-                self.wide.push(i as u32);
-                continue;
-            }
+    /// Files the samples added since the last call under their scale's cells, `reach` being
+    /// the largest error bound a lookup will use (a sample reaches `r * reach`). Samples are
+    /// only ever appended, so this gives the grids a filing from scratch would.
+    fn file_new(&mut self, reach: f64) {
+        for i in self.filed..self.samples.len() {
+            let s = &self.samples[i];
+            let rr = (s.r * reach).max(1e-9);
+            let e = rr.log2().floor().clamp(-200.0, 200.0) as i32;
+            let at = match self.scales.iter().position(|g| g.exp == e) {
+                Some(at) => at,
+                None => {
+                    self.scales.push(Scale {
+                        exp: e,
+                        cell: 2f64.powi(e),
+                        grid: FxHashMap::default(),
+                    });
+                    self.scales.len() - 1
+                }
+            };
+            let scale = &mut self.scales[at];
+            let lo = scale.key(s.p - DVec3::splat(rr));
+            let hi = scale.key(s.p + DVec3::splat(rr));
             for x in lo.0..=hi.0 {
                 for y in lo.1..=hi.1 {
                     for z in lo.2..=hi.2 {
-                        self.grid.entry((x, y, z)).or_default().push(i as u32);
+                        scale.grid.entry((x, y, z)).or_default().push(i as u32);
                     }
                 }
             }
         }
+        self.filed = self.samples.len();
     }
 
-    fn key(&self, p: DVec3) -> (i64, i64, i64) {
-        let k = |v: f64| (v / self.cell).floor().clamp(-1e15, 1e15) as i64;
-        (k(p.x), k(p.y), k(p.z))
+    /// Every sample whose reach may cover `p`, each once.
+    fn near(&self, p: DVec3, mut f: impl FnMut(&Sample)) {
+        for scale in &self.scales {
+            if let Some(ids) = scale.grid.get(&scale.key(p)) {
+                for &i in ids {
+                    f(&self.samples[i as usize]);
+                }
+            }
+        }
     }
 
     pub fn len(&self) -> usize {
@@ -111,12 +135,17 @@ impl Blend {
         if s.level > level {
             return;
         }
+        let d = p - s.p;
+        let d2 = d.length_squared();
+        let far = s.r * bound;
+        if d2 >= far * far {
+            return;
+        }
         let cos = n.dot(s.n);
         if cos < 0.5 {
             return;
         }
-        let d = p - s.p;
-        let dist = d.length();
+        let dist = d2.sqrt();
         // Samples in front of the point see a different neighbourhood (Ward's test).
         if d.dot(n + s.n) * 0.5 < -0.05 * s.r {
             return;
@@ -125,7 +154,11 @@ impl Blend {
         if err >= bound {
             return;
         }
-        let w = 1.0 / err.max(1e-4) - 1.0 / bound;
+        // Zero at the bound, so no seam where a sample stops counting; the square root keeps
+        // the weight up over most of the reach (1/err - 1/bound peaked at the sample and left
+        // each sample's blotch in the picture: radiosity_37 SSIM 0.896 -> 0.907,
+        // radiosity_36 0.883 -> 0.901 against povray).
+        let w = (1.0 - err / bound).sqrt();
         self.sum += s.irr * w;
         self.weight += w;
         self.count += 1;
@@ -140,6 +173,9 @@ pub struct RadTrace<'a> {
     /// The error bound in force: lowered by `low_error_factor` during the pretrace.
     pub bound: f64,
     pub pretrace: bool,
+    /// A pass of `pretrace` (seeding, pretrace or completion): only the samples its camera
+    /// rays gather are kept, not their colour.
+    pub probe: bool,
     /// Unit-disc points of the direction pool (cosine-weighted hemisphere once lifted).
     pub pool: &'a [(f64, f64)],
     pub eye: DVec3,
@@ -195,17 +231,7 @@ impl<'a> Tracer<'a> {
         }
         let bound = rad.bound;
         let mut b = Blend::default();
-        let c = rad.cache;
-        if !c.samples.is_empty() {
-            if let Some(ids) = c.grid.get(&c.key(p)) {
-                for &i in ids {
-                    b.add(&c.samples[i as usize], p, n, level, bound);
-                }
-            }
-            for &i in &c.wide {
-                b.add(&c.samples[i as usize], p, n, level, bound);
-            }
-        }
+        rad.cache.near(p, |s| b.add(s, p, n, level, bound));
         for s in &ctx.rad_local {
             b.add(s, p, n, level, bound);
         }
@@ -279,9 +305,13 @@ impl<'a> Tracer<'a> {
         } else {
             f64::INFINITY
         };
+        // Deeper samples reach twice as far per level, both bounds (measured: the samples
+        // povray saves with +RFO for the open box, recursion_limit 3, are clamped to
+        // [0.015, 0.2], [0.03, 0.4] and [0.06, 0.8] times their distance from the camera).
+        let scale = f64::from(1u32 << (level - 1).min(20));
         let r = harmonic
-            .min(set.maximum_reuse * eye)
-            .max(set.minimum_reuse * eye)
+            .min(set.maximum_reuse * scale * eye)
+            .max(set.minimum_reuse * scale * eye)
             .max(1e-9);
         Sample {
             p,
@@ -331,6 +361,9 @@ fn halving(start: f64, end: f64, width: u32, height: u32) -> Vec<f64> {
     out
 }
 
+/// The order of a pass's four interleaved phases: (column, row) parity of the block.
+const PHASES: [(usize, usize); 4] = [(0, 0), (1, 1), (1, 0), (0, 1)];
+
 /// Fills the cache for the whole picture (not only a partial render's window, so that every
 /// part of a split render sees the same cache). None without radiosity, or below `+Q9`
 /// (measured: povray +Q8 renders a radiosity scene as without it).
@@ -354,53 +387,109 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
     let rays = AtomicU64::new(0);
     for (pass, block) in blocks.into_iter().chain(finishing).enumerate() {
         let pretrace = pass < pretrace_passes;
+        let t0 = std::time::Instant::now();
         let nx = (w / block).ceil() as usize;
         let ny = (h / block).ceil() as usize;
-        let new: Vec<Vec<Sample>> = {
-            let tracer = Tracer {
-                rad: Some(RadTrace {
-                    set,
-                    cache: &cache,
-                    bound: if pretrace {
-                        set.error_bound * set.low_error_factor
-                    } else {
-                        set.error_bound
-                    },
-                    pretrace,
-                    pool: &cache.pool,
-                    eye: scene.camera.location,
-                }),
-                ..base.clone()
-            };
-            (0..nx * ny)
-                .into_par_iter()
-                .map_init(Scratch::default, |ctx, i| {
-                    let (ix, iy) = (i % nx, i / nx);
-                    let x = ((ix as f64 + 0.5) * block).min(w - 0.5);
-                    let y = ((iy as f64 + 0.5) * block).min(h - 0.5);
-                    ctx.rad_local.clear();
-                    let ray = scene.camera.ray(x, y);
-                    tracer.trace_pretrace(ray, ctx);
-                    rays.fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
-                    std::mem::take(&mut ctx.rad_local)
-                })
-                .collect()
+        let bound = if pretrace {
+            set.error_bound * set.low_error_factor
+        } else {
+            set.error_bound
         };
-        for v in new {
-            cache.samples.extend(v);
+        // Four interleaved phases, each seeing the samples of those before: a position's
+        // neighbours then reuse its new samples as in POV-Ray's one-by-one pretrace, rather
+        // than each gathering its own copy (cornell: 3681 first-level samples instead of
+        // 4579, povray takes 3463).
+        for phase in PHASES {
+            let positions: Vec<(usize, usize)> = (0..nx * ny)
+                .map(|i| (i % nx, i / nx))
+                .filter(|&(ix, iy)| phase == (ix % 2, iy % 2))
+                .collect();
+            let new: Vec<Vec<Sample>> = {
+                let tracer = Tracer {
+                    rad: Some(RadTrace {
+                        set,
+                        cache: &cache,
+                        bound,
+                        pretrace,
+                        probe: true,
+                        pool: &cache.pool,
+                        eye: scene.camera.location,
+                    }),
+                    ..base.clone()
+                };
+                positions
+                    .into_par_iter()
+                    .map_init(Scratch::default, |ctx, (ix, iy)| {
+                        let mut x = ((ix as f64 + 0.5) * block).min(w - 0.5);
+                        let mut y = ((iy as f64 + 0.5) * block).min(h - 0.5);
+                        if !pretrace {
+                            // At a pixel's centre, where the final trace looks it up: a
+                            // sample whose reach is under a pixel then serves that pixel
+                            // (povray's final-trace samples lie at pixel centres, measured
+                            // from its +RFO file) instead of none.
+                            x = x.floor() + 0.5;
+                            y = y.floor() + 0.5;
+                        }
+                        ctx.rad_local.clear();
+                        let ray = scene.camera.ray(x, y);
+                        tracer.trace_pretrace(ray, ctx);
+                        rays.fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
+                        std::mem::take(&mut ctx.rad_local)
+                    })
+                    .collect()
+            };
+            let before = cache.samples.len();
+            for v in new {
+                cache.samples.extend(v);
+            }
+            if cache.samples.len() > before {
+                cache.file_new(set.error_bound);
+            }
         }
-        cache.rebuild(set.error_bound);
         if std::env::var_os("LANCER_RAD_STATS").is_some() {
             let mut levels = [0usize; 4];
             for smp in &cache.samples {
                 levels[(smp.level as usize - 1).min(3)] += 1;
             }
+            let cells: usize = cache
+                .scales
+                .iter()
+                .map(|g| g.grid.values().map(|v| v.len()).sum::<usize>())
+                .sum();
+            let n: usize = cache.scales.iter().map(|g| g.grid.len()).sum();
             eprintln!(
-                "radiosity pretrace block {block:.2}px: {} samples (by level {levels:?}), {} rays",
+                "grid {} scales, {} cells, {} entries",
+                cache.scales.len(),
+                n,
+                cells
+            );
+            eprintln!(
+                "radiosity pretrace block {block:.2}px: {} samples (by level {levels:?}), {} rays, {:.3}s",
                 cache.len(),
-                rays.load(Ordering::Relaxed)
+                rays.load(Ordering::Relaxed),
+                t0.elapsed().as_secs_f64()
             );
         }
+    }
+    if let Ok(path) = std::env::var("LANCER_RAD_DUMP") {
+        let mut out = String::new();
+        for smp in &cache.samples {
+            out += &format!(
+                "L{}\t{}\t{}\t{}\t{:.3} {:.3} {:.3}\t{:.4}\t{:.4}\t{:.4}\t{}\n",
+                smp.level,
+                smp.p.x,
+                smp.p.y,
+                smp.p.z,
+                smp.n.x,
+                smp.n.y,
+                smp.n.z,
+                smp.irr.x,
+                smp.irr.y,
+                smp.irr.z,
+                smp.r
+            );
+        }
+        std::fs::write(path, out).ok();
     }
     cache.rays = rays.into_inner();
     Some(cache)
@@ -418,6 +507,7 @@ pub fn final_tracer<'a>(
             cache,
             bound: set.error_bound,
             pretrace: false,
+            probe: false,
             pool: &cache.pool,
             eye: base.scene.camera.location,
         }),

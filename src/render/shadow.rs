@@ -24,11 +24,16 @@ impl<'a> Tracer<'a> {
         (slot, light): (usize, &Light),
         l: DVec3,
         dist: f64,
+        gathering: bool,
         ctx: &mut TraceCtx<'a>,
     ) -> DVec3 {
         let seen = match &light.area {
+            // Radiosity's gathering rays see an area light as a point at its centre (measured:
+            // povray's shadow ray tests for a radiosity pass barely grow when a point light
+            // becomes a 4x4 area light, tests/radiosity/README or docs/radiosity.md).
             Some(a)
-                if self.quality.area_lights
+                if !gathering
+                    && self.quality.area_lights
                     && a.size1 * a.size2 > 1
                     && light.parallel.is_none() =>
             {

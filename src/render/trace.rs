@@ -407,7 +407,13 @@ impl<'a> Tracer<'a> {
         // A perturbed normal may face lights the surface itself turns away from; POV-Ray
         // lights them (measured: a light just behind a plane whose normal leans towards it).
         let bumpy = normal::texture_perturbs(top);
-        self.gather_lights(p, nf, bumpy, obj, ctx);
+        if self.rad.is_some_and(|r| r.probe) && path.rad_level == 0 {
+            // A radiosity pretrace pass keeps the samples its camera rays gather, not their
+            // colour: the lights of what they meet do not matter.
+            ctx.lit.clear();
+        } else {
+            self.gather_lights(p, nf, bumpy, obj, path.rad_level > 0, ctx);
+        }
         let cos_i = (-dir.dot(nf)).clamp(0.0, 1.0);
         let (n1, n2) = if entering {
             (1.0, obj.ior)
@@ -584,8 +590,16 @@ impl<'a> Tracer<'a> {
 impl<'a> Tracer<'a> {
     /// The lights reaching `p` (after shadows) into `ctx.lit`, once per hit for all layers;
     /// `all` keeps those behind the surface too, `double` lights the surface from behind
-    /// (`double_illuminate`).
-    fn gather_lights(&self, p: DVec3, nf: DVec3, all: bool, obj: &Object, ctx: &mut TraceCtx<'a>) {
+    /// (`double_illuminate`). `gathering`: `p` was met by a radiosity gathering ray.
+    fn gather_lights(
+        &self,
+        p: DVec3,
+        nf: DVec3,
+        all: bool,
+        obj: &Object,
+        gathering: bool,
+        ctx: &mut TraceCtx<'a>,
+    ) {
         let double = obj.double_illuminate;
         let groups = self.scene.light_sets.len() > 1;
         let set = &self.scene.light_sets[obj.light_set as usize];
@@ -618,7 +632,7 @@ impl<'a> Tracer<'a> {
             }
             if !light.shadowless && q.shadows {
                 if let Some(dist) = inc.shadow_dist {
-                    lc *= self.light_seen(p, (slot, light), l, dist, ctx);
+                    lc *= self.light_seen(p, (slot, light), l, dist, gathering, ctx);
                     if lc == DVec3::ZERO {
                         continue;
                     }
