@@ -15,7 +15,8 @@ pub fn compare(a: CompareArgs) -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    print!("{}", c.report());
+    // A closed pipe (`lancer compare a b | head -1`) is not an error worth a panic.
+    let _ = std::io::Write::write_all(&mut std::io::stdout(), c.report().as_bytes());
     if let Some(path) = &a.diff {
         if let Err(e) = c.write_heat_map(&base, path) {
             eprintln!("lancer compare: cannot write the heat map: {e}");

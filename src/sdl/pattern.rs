@@ -20,6 +20,7 @@ pub(super) const UNSUPPORTED_PATTERNS: &[&str] =
 /// Pattern keywords lancer evaluates (see `pattern_keyword`).
 const PATTERNS: &[&str] = &[
     "density_file",
+    "object",
     "checker",
     "gradient",
     "onion",
