@@ -549,7 +549,9 @@ impl Ctx {
             bounds,
             transparent,
             clip,
-            fade: int.filter(|i| i.fades()).map(|i| Box::new(i.clone())),
+            fade: int
+                .filter(|i| i.fades() || i.dispersion != 1.0)
+                .map(|i| Box::new(i.clone())),
             photons: object_photon_flags(o),
             photon_mult: o.photons.spacing_mult(),
         })

@@ -776,6 +776,9 @@ pub struct Interior {
     pub fade_power: f64,
     /// What fully faded light keeps (black: nothing).
     pub fade_color: DVec3,
+    /// `dispersion`: the ratio of the iors at the violet and red ends (1: none).
+    pub dispersion: f64,
+    pub dispersion_samples: u32,
 }
 
 impl Default for Interior {
@@ -785,6 +788,8 @@ impl Default for Interior {
             fade_distance: 0.0,
             fade_power: 0.0,
             fade_color: DVec3::ZERO,
+            dispersion: 1.0,
+            dispersion_samples: 7,
         }
     }
 }

@@ -30,9 +30,9 @@ impl Parser {
                 "fade_distance" => int.fade_distance = self.parse_float()?,
                 "fade_power" => int.fade_power = self.parse_float()?,
                 "fade_color" | "fade_colour" => int.fade_color = self.parse_color()?.rgb,
-                "dispersion" | "dispersion_samples" => {
-                    self.unsupported(k, t.span);
-                    self.parse_float()?;
+                "dispersion" => int.dispersion = self.parse_float()?,
+                "dispersion_samples" => {
+                    int.dispersion_samples = self.parse_float()?.max(2.0) as u32;
                 }
                 "media" => {
                     self.unsupported(k, t.span);
