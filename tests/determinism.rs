@@ -7,7 +7,11 @@ use lancer::output::{write, FileType, OutputSpec};
 use lancer::render::{RenderSettings, Window};
 
 fn render_with_threads(n: usize, settings: &RenderSettings) -> Vec<u8> {
-    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/glass.pov");
+    render_scene_with_threads("scenes/glass.pov", n, settings)
+}
+
+fn render_scene_with_threads(rel: &str, n: usize, settings: &RenderSettings) -> Vec<u8> {
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join(rel);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(n)
         .build()
@@ -30,6 +34,25 @@ fn same_bytes_for_any_thread_count() {
     let one = render_with_threads(1, &s);
     assert_eq!(one, render_with_threads(2, &s));
     assert_eq!(one, render_with_threads(5, &s));
+}
+
+#[test]
+fn media_same_bytes_for_any_thread_count() {
+    // Adaptive media sampling and scattering with shadow rays from every sample.
+    let s = RenderSettings {
+        width: 64,
+        height: 48,
+        antialias: Some(0.1),
+        ..RenderSettings::default()
+    };
+    for rel in [
+        "tests/probes_approx/media_density.pov",
+        "tests/probes/media_spotlight_beam.pov",
+    ] {
+        let one = render_scene_with_threads(rel, 1, &s);
+        assert_eq!(one, render_scene_with_threads(rel, 2, &s), "{rel}");
+        assert_eq!(one, render_scene_with_threads(rel, 5, &s), "{rel}");
+    }
 }
 
 #[test]

@@ -158,7 +158,7 @@ fn unsupported_keyword_warns_with_place() {
     let mut p = Parser::new(ParseOptions::default());
     p.parse_str(
         "w.pov",
-        "fog { distance 3 rgb 1 turbulence 0.5 }\nmedia { scattering { 1, 0.1 } }",
+        "fog { distance 3 rgb 1 turbulence 0.5 }\nsphere { 0, 1 pigment { tiling 3 } }",
     )
     .unwrap();
     let msgs: Vec<String> = p.warnings.iter().map(|w| w.one_line(&p.sources)).collect();
@@ -169,7 +169,7 @@ fn unsupported_keyword_warns_with_place() {
     );
     assert!(
         msgs.iter()
-            .any(|m| m.starts_with("w.pov:2:1") && m.contains("media")),
+            .any(|m| m.starts_with("w.pov:2:") && m.contains("tiling")),
         "{msgs:?}"
     );
 }
@@ -437,4 +437,25 @@ fn mesh_camera_reads_its_meshes_and_checks_them() {
     assert!(e.contains("distribution type must be 0, 1, 2 or 3"), "{e}");
     let e = parse_err("camera { mesh_camera { 1 0 sphere { 0, 1 } } }");
     assert!(e.contains("expected a mesh"), "{e}");
+}
+
+#[test]
+fn media_blocks_parse() {
+    let s = parse(
+        "#declare M = media { emission 0.5 samples 5, 9 scattering { 5, rgb <1, 0.5, 0> eccentricity 0.3 extinction 0.5 } }\n\
+         #declare D = density { spherical density_map { [0 rgb 0] [1 spherical] } }\n\
+         media { M absorption 0.2 density { D } density { checker density { rgb 1 } density { rgb 0 } } }\n\
+         sphere { 0, 1 hollow interior { media { M } media { emission 1 } } }",
+    );
+    assert_eq!(s.media.len(), 1);
+    let m = &s.media[0];
+    assert_eq!(m.samples, (5, 9));
+    assert_eq!(m.absorption, glam::DVec3::splat(0.2));
+    assert_eq!(m.density.len(), 2);
+    let sc = m.scattering.unwrap();
+    assert_eq!((sc.kind, sc.eccentricity, sc.extinction), (5, 0.3, 0.5));
+    let int = s.objects[0].interior.as_ref().unwrap();
+    assert_eq!(int.media().len(), 2);
+    // povray refuses eccentricity outside Henyey-Greenstein scattering.
+    assert!(parse_err("media { scattering { 1, 0.1 eccentricity 0.5 } }").contains("eccentricity"));
 }

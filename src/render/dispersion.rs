@@ -29,9 +29,11 @@ const SPECTRUM: [[f64; 3]; 11] = [
 
 /// The object's (dispersion, samples) when light entering it splits.
 pub fn of(obj: &Object) -> Option<(f64, u32)> {
-    let int = obj.fade.as_deref()?;
-    (int.dispersion != 1.0 && int.dispersion > 0.0)
-        .then_some((int.dispersion, int.dispersion_samples.max(2)))
+    let int = obj.interior.as_deref()?;
+    (int.dispersion != 1.0 && int.dispersion > 0.0).then_some((
+        int.dispersion as f64,
+        (int.dispersion_samples as u32).max(2),
+    ))
 }
 
 /// The ior of `obj` for a ray carrying spectrum position `wave` (None: undispersed light).

@@ -54,6 +54,22 @@ pub fn apply(fogs: &[FogDesc], ray: &Ray, t: f64, mut seen: Seen) -> Seen {
     seen
 }
 
+/// What light travelling `d` along `ray` (unit direction) keeps through the fogs (not
+/// rainbows): their `a` of `apply`, multiplied.
+pub fn kept(fogs: &[FogDesc], ray: &Ray, d: f64) -> f64 {
+    fogs.iter()
+        .filter(|f| f.rainbow.is_none())
+        .map(|f| {
+            let optical = if f.ground {
+                ground_depth(f, ray.origin, ray.dir, d)
+            } else {
+                d
+            };
+            (-optical / f.distance).exp().max(f.color.transmit)
+        })
+        .product()
+}
+
 /// A rainbow's colour for a ray going `dir` (unit); None where the ray misses the rainbow.
 fn rainbow_color(rb: &RainbowDesc, dir: DVec3) -> Option<Rgbft> {
     // Unit, and `up` perpendicular to it, since the scene was built.

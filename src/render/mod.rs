@@ -10,6 +10,7 @@ mod cells_data;
 mod dispersion;
 pub mod focal;
 mod fog;
+mod media;
 pub mod noise;
 mod noise_data;
 pub mod normal;

@@ -233,6 +233,7 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
             noise::cell_value(q.x.floor() as i64, q.y.floor() as i64, q.z.floor() as i64)
         }
         PatternKind::Fractal(f) => fractal(f, (q.x, q.y)),
+        PatternKind::DensityFile(d) => d.eval(q),
         PatternKind::Function(f) => {
             if f.unsupported.is_some() {
                 0.0

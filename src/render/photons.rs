@@ -537,7 +537,7 @@ impl Shooter<'_> {
         }
         // Light travelling inside a fading interior is dimmed when it leaves.
         if !entering {
-            if let Some(int) = &obj.fade {
+            if let Some(int) = &obj.interior {
                 through *= int.fade(h.t * ray.dir.length());
             }
         }

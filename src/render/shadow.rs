@@ -26,7 +26,7 @@ impl<'a> Tracer<'a> {
         dist: f64,
         ctx: &mut TraceCtx<'a>,
     ) -> DVec3 {
-        match &light.area {
+        let seen = match &light.area {
             Some(a)
                 if self.quality.area_lights
                     && a.size1 * a.size2 > 1
@@ -35,7 +35,19 @@ impl<'a> Tracer<'a> {
                 self.area_seen(p, (slot, light), a, ctx)
             }
             _ => self.shadow(p, l, dist, slot, ctx),
+        };
+        if !light.media_attenuation || seen == DVec3::ZERO {
+            return seen;
         }
+        // `media_attenuation on`: the atmosphere's media and fog dim the light on its way
+        // (measured: interior/media/hollow1's light, 40000 units bright 800 units away
+        // through fog of distance 80, lights the scene as a light of about 2 would).
+        let ray = Ray::new(p, l);
+        let mut seen = seen * super::fog::kept(&self.scene.fogs, &ray, dist);
+        if !self.scene.media.is_empty() {
+            seen *= super::media::transmittance(&[&self.scene.media], &ray, 0.0, dist);
+        }
+        seen
     }
 
     fn area_seen(
@@ -230,15 +242,23 @@ impl<'a> Tracer<'a> {
                     att *= c.transmitted();
                 }
             }
-            // Fading interiors dim the light over each stretch the ray spends inside them:
-            // from the last crossing (or the shaded point) to a crossing that leaves.
-            if att != DVec3::ZERO && ctx.surface[start..].iter().any(|h| h.obj.fade.is_some()) {
+            // Fading interiors and media dim the light over each stretch the ray spends
+            // inside them: from the last crossing (or the shaded point) to a crossing that
+            // leaves (povray: absorbing media in a transparent container always shadow).
+            if att != DVec3::ZERO
+                && ctx.surface[start..]
+                    .iter()
+                    .any(|h| h.obj.interior.is_some())
+            {
                 ctx.surface[start..].sort_by(|a, b| a.t.total_cmp(&b.t));
                 let mut last = 0.0;
                 for h in &ctx.surface[start..] {
-                    if let Some(int) = &h.obj.fade {
+                    if let Some(int) = &h.obj.interior {
                         if h.obj.normal(ray.at(h.t), h).dot(l) > 0.0 {
                             att *= int.fade(h.t - last);
+                            if int.has_media() {
+                                att *= super::media::transmittance(&[int.media()], &ray, last, h.t);
+                            }
                         }
                     }
                     last = h.t;

@@ -213,13 +213,16 @@ impl<'a> Tracer<'a> {
         }
         let hit = self.first_visible(ray, path.straight, false, ctx);
         let t = hit.as_ref().map_or(f64::INFINITY, |h| h.t);
-        // No atmosphere inside solid (not `hollow`) objects, povray's rule (measured: a
-        // camera inside plane { z, 10 } sees the plane unfogged). A ray that crossed no
+        // No atmosphere and no media inside solid (not `hollow`) objects, povray's rule
+        // (measured: a camera inside plane { z, 10 } sees the plane unfogged; a media box,
+        // hollow or not, shows nothing inside a solid plane, tests/probes/media_*). A ray that crossed no
         // surface to get here is looked up at a point of its segment (which crosses none);
         // a reflected ray stays where its incident ray was, whichever way it turns
         // (measured: rays reflected from a rippled floor into the floor's half-space are
         // fogged, advanced/mist.pov).
-        let solid = !self.scene.fogs.is_empty()
+        let atmosphere =
+            !self.scene.fogs.is_empty() || !self.scene.media.is_empty() || self.scene.object_media;
+        let solid = atmosphere
             && path.in_solid.unwrap_or_else(|| {
                 let mid = if t.is_finite() { t * 0.5 } else { 1.0 };
                 self.scene.inside_solid(ray.at(mid))
@@ -228,10 +231,13 @@ impl<'a> Tracer<'a> {
             in_solid: Some(solid),
             ..path
         };
-        let seen = match hit {
+        let mut seen = match hit {
             Some(h) => self.shade_blended(ray, &h, path, ctx),
             None => self.background(ray.dir, path.straight),
         };
+        if t.is_finite() && !solid && (self.scene.object_media || !self.scene.media.is_empty()) {
+            seen = self.media_segment(ray, t, seen, ctx);
+        }
         if self.scene.fogs.is_empty() || solid {
             seen
         } else {
@@ -554,7 +560,11 @@ impl<'a> Tracer<'a> {
                 };
                 // Into the object's interior, or back out (into air: nested interiors are
                 // not tracked).
-                let inside = if entering { obj.fade.as_deref() } else { None };
+                let inside = if entering {
+                    obj.interior.as_deref()
+                } else {
+                    None
+                };
                 // The transmitted ray crosses the surface: whether it is in a solid is looked
                 // up afresh.
                 let onward = Path {

@@ -16,6 +16,7 @@ use crate::scene::desc::{
     SceneDesc, ShapeDesc, Texture, TextureEntries,
 };
 use crate::scene::light_group::LightSet;
+use crate::scene::media::Media;
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
 use crate::scene::shapes::make_shape;
 
@@ -57,6 +58,10 @@ pub struct Scene {
     pub fogs: Vec<FogDesc>,
     /// `global_settings { radiosity {} }`: indirect light from an irradiance cache.
     pub radiosity: Option<crate::scene::desc::RadiositySettings>,
+    /// Atmospheric media, densities readied.
+    pub media: Vec<Media>,
+    /// Whether any object's interior holds media.
+    pub object_media: bool,
     /// `global_settings { photons {} }`: caustics from a photon map.
     pub photons: Option<crate::scene::photon::PhotonSettings>,
 }
@@ -87,6 +92,7 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
         texts: HashMap::new(),
         images: HashMap::new(),
         shared_textures: HashMap::new(),
+        media: HashMap::new(),
         lights: Vec::new(),
         gamma,
         noise_generator: desc.global.noise_generator,
@@ -127,6 +133,13 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
     for p in &mut sky {
         ctx.pigment(p);
     }
+    let mut media = desc.media.clone();
+    for m in &mut media {
+        for d in &mut m.density {
+            ctx.pigment(d);
+        }
+    }
+    let object_media = objects.iter().any(has_media);
     let mut scene = Scene {
         camera: Camera::new(&desc.camera, width, height),
         lights: ctx.lights,
@@ -148,6 +161,8 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
         }),
         photons: desc.global.photons.clone(),
         gamma,
+        media,
+        object_media,
         fogs: desc
             .fogs
             .iter()
@@ -170,6 +185,14 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
     // Addresses are final: the objects' buffers do not move again.
     scene.parents = parent_table(&scene.objects);
     BuildOutput { scene, warnings }
+}
+
+fn has_media(o: &Object) -> bool {
+    o.interior.as_ref().is_some_and(|i| i.has_media())
+        || match &o.kind {
+            ObjKind::Csg { children, .. } => children.iter().any(has_media),
+            _ => false,
+        }
 }
 
 fn parent_table(objects: &[Object]) -> Vec<(usize, usize)> {
@@ -198,6 +221,9 @@ struct Ctx {
     /// Textures the description shares between objects (a CSG's inherited one, the default),
     /// readied once. Keyed by address: the description keeps them alive while building.
     shared_textures: HashMap<*const Texture, (Arc<Texture>, bool)>,
+    /// Each interior's media readied once, so CSG members sharing an interior keep sharing
+    /// one list (render counts a list once where members overlap).
+    media: HashMap<*const Vec<Media>, Arc<Vec<Media>>>,
     lights: Vec<Light>,
     gamma: GammaMode,
     noise_generator: u8,
@@ -230,6 +256,34 @@ impl Ctx {
                 (converted, transparent)
             })
             .clone()
+    }
+
+    /// An interior with its media's densities readied (noise generator, images), shared
+    /// between the objects that share the description's list.
+    fn interior(&mut self, int: &Interior) -> Interior {
+        if !int.has_media() {
+            return int.clone();
+        }
+        let desc = &int.media;
+        let key = Arc::as_ptr(desc);
+        let media = match self.media.get(&key) {
+            Some(m) => m.clone(),
+            None => {
+                let mut all = (**desc).clone();
+                for m in &mut all {
+                    for d in &mut m.density {
+                        self.pigment(d);
+                    }
+                }
+                let ready = Arc::new(all);
+                self.media.insert(key, ready.clone());
+                ready
+            }
+        };
+        Interior {
+            media,
+            ..int.clone()
+        }
     }
 
     /// Converts a pigment's images to working space; returns whether it may let light through.
@@ -549,9 +603,9 @@ impl Ctx {
             bounds,
             transparent,
             clip,
-            fade: int
-                .filter(|i| i.fades() || i.dispersion != 1.0)
-                .map(|i| Box::new(i.clone())),
+            interior: int
+                .filter(|i| i.fades() || i.has_media() || i.dispersion != 1.0)
+                .map(|i| Box::new(self.interior(i))),
             photons: object_photon_flags(o),
             photon_mult: o.photons.spacing_mult(),
         })
@@ -660,6 +714,20 @@ impl Scene {
             found
         });
         found
+    }
+
+    /// Calls `f` with every top-level object whose bounds hold `p` (it decides itself
+    /// whether `p` is inside).
+    pub fn each_object_at<'s>(&'s self, p: DVec3, mut f: impl FnMut(&'s Object)) {
+        for (&i, cull) in self.unbounded.iter().zip(&self.unbounded_cull) {
+            if cull.is_none_or(|c| c.contains(p)) {
+                f(&self.objects[i]);
+            }
+        }
+        self.bvh.visit_point(p, |k| {
+            f(&self.objects[self.bounded[k]]);
+            false
+        });
     }
 
     /// Whether `p` is inside an object that is not `hollow`, where POV-Ray computes no

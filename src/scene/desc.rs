@@ -28,6 +28,8 @@ pub struct SceneDesc {
     pub version: Option<f64>,
     /// Fog layers, applied in the order given.
     pub fogs: Vec<FogDesc>,
+    /// Atmospheric `media { }`, outside every solid object.
+    pub media: Vec<crate::scene::media::Media>,
 }
 
 #[derive(Clone, Debug)]
@@ -199,6 +201,10 @@ pub struct LightDesc {
     pub looks_like: Option<Box<ObjectDesc>>,
     /// `projected_through`: only light whose path crosses this object arrives.
     pub projected_through: Option<Box<ObjectDesc>>,
+    /// `media_interaction` (on by default): scattering media scatter this light.
+    pub media_interaction: bool,
+    /// `media_attenuation` (off by default): media dim this light on its way.
+    pub media_attenuation: bool,
     pub photons: crate::scene::photon::LightPhotons,
 }
 
@@ -219,6 +225,8 @@ impl LightDesc {
             area: None,
             looks_like: None,
             projected_through: None,
+            media_interaction: true,
+            media_attenuation: false,
             photons: Default::default(),
         }
     }
@@ -318,6 +326,9 @@ impl ObjectDesc {
         }
         if let Some(tex) = &mut self.interior_texture {
             Arc::make_mut(tex).apply_object_transform(t);
+        }
+        if let Some(int) = &mut self.interior {
+            int.apply_transform(t);
         }
         for c in &mut self.clipped_by {
             c.apply_transform(t);
@@ -776,9 +787,16 @@ pub struct Interior {
     pub fade_power: f64,
     /// What fully faded light keeps (black: nothing).
     pub fade_color: DVec3,
-    /// `dispersion`: the ratio of the iors at the violet and red ends (1: none).
-    pub dispersion: f64,
-    pub dispersion_samples: u32,
+    /// `dispersion`: the ratio of the iors at the violet and red ends (1: none). f32 and u16:
+    /// every object description holds an interior (tests/memory_layout.rs).
+    pub dispersion: f32,
+    pub dispersion_samples: u16,
+    /// `media { }` blocks, each computed on its own and added. Shared, so the members of a
+    /// CSG that inherit one interior hold the same list (and it is counted once where they
+    /// overlap).
+    /// One pointer (every object description has room for an interior); interiors without
+    /// media share one empty list.
+    pub media: Arc<Vec<crate::scene::media::Media>>,
 }
 
 impl Default for Interior {
@@ -790,6 +808,7 @@ impl Default for Interior {
             fade_color: DVec3::ZERO,
             dispersion: 1.0,
             dispersion_samples: 7,
+            media: crate::scene::media::no_media(),
         }
     }
 }
@@ -809,6 +828,24 @@ impl Interior {
         }
         let a = 1.0 / (1.0 + x.powf(self.fade_power));
         DVec3::splat(a) + (DVec3::ONE - a) * self.fade_color
+    }
+
+    /// The object's transforms move its media's densities with it.
+    pub fn apply_transform(&mut self, t: &Transform) {
+        if self.has_media() {
+            for m in Arc::make_mut(&mut self.media) {
+                m.apply_transform(t);
+            }
+        }
+    }
+
+    /// The `media { }` blocks, in order.
+    pub fn media(&self) -> &[crate::scene::media::Media] {
+        &self.media
+    }
+
+    pub fn has_media(&self) -> bool {
+        !self.media.is_empty()
     }
 
     pub fn fades(&self) -> bool {

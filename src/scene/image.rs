@@ -99,3 +99,35 @@ pub fn load_image_map(path: &Path, map: &mut ImageMap) -> Result<(), String> {
     };
     Ok(())
 }
+
+/// The palette index of every pixel of an indexed PNG or a GIF (row 0 at the top), for
+/// `filter N, v` / `transmit N, v` on an image map; None for images without a palette.
+pub fn palette_indices(path: &Path) -> Option<Vec<u8>> {
+    let data = std::fs::read(path).ok()?;
+    if data.starts_with(b"GIF8") {
+        return super::gif::decode(&data, 1 << 28)
+            .ok()
+            .map(|img| img.pixels);
+    }
+    let mut dec = png::Decoder::new(std::io::Cursor::new(&data));
+    dec.set_transformations(png::Transformations::IDENTITY);
+    let mut reader = dec.read_info().ok()?;
+    let mut buf = vec![0u8; reader.output_buffer_size()?];
+    let info = reader.next_frame(&mut buf).ok()?;
+    if info.color_type != png::ColorType::Indexed {
+        return None;
+    }
+    let bits = info.bit_depth as usize;
+    let per = 8 / bits;
+    let (w, h) = (info.width as usize, info.height as usize);
+    let mut out = Vec::with_capacity(w * h);
+    for y in 0..h {
+        let row = &buf[y * info.line_size..(y + 1) * info.line_size];
+        out.extend((0..w).map(|x| {
+            let byte = row[x / per];
+            let shift = 8 - bits * (x % per + 1);
+            (byte >> shift) & ((1u16 << bits) - 1) as u8
+        }));
+    }
+    Some(out)
+}

@@ -27,6 +27,8 @@ pub struct Light {
     pub projected: Option<Projected>,
     /// The `light_group` it belongs to (0: none, it lights everything outside groups).
     pub group: u16,
+    pub media_interaction: bool,
+    pub media_attenuation: bool,
     /// Whether it shoots photons that refract and reflect (with global photons on).
     pub photons: crate::scene::photon::LightPhotons,
 }
@@ -117,6 +119,8 @@ impl Light {
             }),
             projected: None,
             group: 0,
+            media_interaction: d.media_interaction,
+            media_attenuation: d.media_attenuation,
             photons: d.photons,
         }
     }

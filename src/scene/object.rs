@@ -65,9 +65,9 @@ pub struct Object {
     pub transparent: bool,
     /// `clipped_by`: crossings outside any of these are dropped.
     pub clip: Vec<Object>,
-    /// An interior that fades light passing through it (`fade_distance`, `fade_power`) or
-    /// splits it into colours (`dispersion`).
-    pub fade: Option<Box<crate::scene::desc::Interior>>,
+    /// An interior that fades light passing through it, holds media or splits light into
+    /// colours (`dispersion`).
+    pub interior: Option<Box<crate::scene::desc::Interior>>,
     /// `photons { }` flags (scene::photon::flags), a CSG's given to its members too; `pass_through`
     /// is set for `no_shadow` objects unless turned off.
     pub photons: u8,

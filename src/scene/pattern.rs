@@ -144,6 +144,8 @@ pub enum PatternKind {
     Average,
     /// `function { ... }` of x, y, z.
     Function(Arc<Function>),
+    /// `density_file df3 "file"`: a voxel grid over the unit cube.
+    DensityFile(Arc<crate::scene::df3::Df3>),
     /// A pattern lancer does not evaluate yet (already warned about): the middle of its map.
     Unsupported,
 }

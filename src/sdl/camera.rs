@@ -12,7 +12,7 @@ use super::parser::{PResult, Parser};
 use super::value::Value;
 
 /// Atmospheric and global effects POV-Ray renders that lancer reads past with a warning.
-const UNSUPPORTED_BLOCKS: &[&str] = &["media", "photons", "radiosity"];
+const UNSUPPORTED_BLOCKS: &[&str] = &["photons", "radiosity"];
 
 impl Parser {
     pub(super) fn parse_scene_items(&mut self) -> PResult<()> {
@@ -37,6 +37,10 @@ impl Parser {
                 "fog" => {
                     let fog = self.parse_fog_block()?;
                     self.scene.fogs.push(fog);
+                }
+                "media" => {
+                    let m = self.parse_media_block()?;
+                    self.scene.media.push(m);
                 }
                 "rainbow" => {
                     let rainbow = self.parse_rainbow_block()?;

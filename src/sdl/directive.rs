@@ -351,11 +351,20 @@ impl Parser {
                 self.advance();
                 Ok(Value::SlopeMap(Box::new(self.parse_slope_map()?)))
             }
-            "density_map" | "density" | "media" => {
+            "media" => {
                 self.advance();
-                self.unsupported(k, t.span);
-                self.skip_block()?;
-                Ok(Value::Skipped(k.clone()))
+                Ok(Value::Media(Box::new(self.parse_media_block()?)))
+            }
+            "density" => {
+                self.advance();
+                Ok(Value::Pigment(Box::new(self.parse_density_block()?)))
+            }
+            "density_map" => {
+                self.advance();
+                let outer = std::mem::replace(&mut self.in_density, true);
+                let map = self.parse_pigment_map();
+                self.in_density = outer;
+                Ok(Value::PigmentMap(Box::new(map?)))
             }
             "array" => {
                 self.advance();

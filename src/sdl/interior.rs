@@ -30,13 +30,13 @@ impl Parser {
                 "fade_distance" => int.fade_distance = self.parse_float()?,
                 "fade_power" => int.fade_power = self.parse_float()?,
                 "fade_color" | "fade_colour" => int.fade_color = self.parse_color()?.rgb,
-                "dispersion" => int.dispersion = self.parse_float()?,
+                "dispersion" => int.dispersion = self.parse_float()? as f32,
                 "dispersion_samples" => {
-                    int.dispersion_samples = self.parse_float()?.max(2.0) as u32;
+                    int.dispersion_samples = self.parse_float()?.clamp(2.0, 65535.0) as u16;
                 }
                 "media" => {
-                    self.unsupported(k, t.span);
-                    self.skip_block()?;
+                    let m = self.parse_media_block()?;
+                    std::sync::Arc::make_mut(&mut int.media).push(m);
                 }
                 _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in interior"))),
             }

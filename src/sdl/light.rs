@@ -113,11 +113,9 @@ impl Parser {
                                 self.unsupported(&k, t.span);
                             }
                         }
+                        "media_interaction" => light.media_interaction = self.optional_bool()?,
+                        "media_attenuation" => light.media_attenuation = self.optional_bool()?,
                         "photons" => light.photons = self.parse_light_photons()?,
-                        "media_interaction" | "media_attenuation" => {
-                            self.unsupported(&k, t.span);
-                            self.skip_light_item(&k)?;
-                        }
                         other => {
                             if let Some(tr) = self.transform_item(other)? {
                                 obj_tf = obj_tf.then(&tr);
@@ -160,28 +158,5 @@ impl Parser {
             size2: size2.max(1.0) as u32,
             ..before.unwrap_or_default()
         })
-    }
-
-    /// Reads past the arguments of an unsupported light item so parsing can go on.
-    fn skip_light_item(&mut self, k: &str) -> PResult<()> {
-        match k {
-            "area_light" => {
-                for i in 0..4 {
-                    if i > 0 {
-                        self.skip_optional_comma()?;
-                    }
-                    self.parse_expr()?;
-                }
-            }
-            "looks_like" | "projected_through" | "photons" => self.skip_block()?,
-            "media_interaction" | "media_attenuation" | "circular" | "orient" => {
-                self.optional_bool()?;
-            }
-            "jitter" | "spotlight" | "cylinder" | "parallel" => {}
-            _ => {
-                self.parse_expr()?;
-            }
-        }
-        Ok(())
     }
 }

@@ -17,6 +17,7 @@ pub mod interior;
 pub mod lexer;
 pub mod light;
 pub mod limits;
+pub mod media;
 pub mod mesh2;
 pub mod normal;
 pub mod object;
@@ -51,5 +52,6 @@ pub fn default_scene() -> SceneDesc {
         default_texture: Texture::default(),
         version: None,
         fogs: Vec::new(),
+        media: Vec::new(),
     }
 }

@@ -279,6 +279,9 @@ impl Parser {
                         if let Some(tex) = &mut texture {
                             tex.apply_transform(&tr);
                         }
+                        if let Some(int) = &mut interior {
+                            int.apply_transform(&tr);
+                        }
                     } else {
                         match self.lookup(k) {
                             Some(Value::Material(m)) => (texture, interior) = (**m).clone(),

@@ -178,6 +178,9 @@ pub struct Parser {
     /// `global_settings { charset utf8 }` (or `sys`) seen: text objects read strings as
     /// Unicode; POV-Ray's default, ascii, has only codes 0 to 127.
     pub(super) utf8_strings: bool,
+    /// Inside a media's `density { }`: a pigment body read as a density (white by default,
+    /// a grey ramp as its default map, `density` items and `density_map`).
+    pub(super) in_density: bool,
 }
 
 /// A file's tokens, kept for as long as the file on disk is unchanged.
@@ -240,6 +243,7 @@ impl Parser {
             loop_iterations: 0,
             nesting: 0,
             utf8_strings: false,
+            in_density: false,
         }
     }
 

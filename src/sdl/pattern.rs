@@ -15,7 +15,6 @@ use super::value::Value;
 
 /// Pattern keywords POV-Ray 3.7 has that lancer does not evaluate yet.
 pub(super) const UNSUPPORTED_PATTERNS: &[&str] = &[
-    "density_file",
     "facets",
     "object",
     "pavement",
@@ -26,6 +25,7 @@ pub(super) const UNSUPPORTED_PATTERNS: &[&str] = &[
 
 /// Pattern keywords lancer evaluates (see `pattern_keyword`).
 const PATTERNS: &[&str] = &[
+    "density_file",
     "checker",
     "gradient",
     "onion",
@@ -75,7 +75,6 @@ pub(super) fn is_pattern_keyword(k: &str) -> bool {
 const UNSUPPORTED_MODIFIERS: &[&str] = &[
     "control0",
     "control1",
-    "interpolate",
     "orientation",
     "dist_exp",
     "strength",
@@ -225,6 +224,25 @@ impl Parser {
                 self.open_brace("pigment_pattern")?;
                 PatternKind::PigmentPattern(Box::new(self.parse_pigment_body_in_braces()?))
             }
+            "density_file" => {
+                let fmt = self.next_tok()?;
+                if !matches!(&fmt.tok, super::lexer::Tok::Ident(k) if &**k == "df3") {
+                    return Err(self.unexpected(&fmt, "after density_file (expected df3)"));
+                }
+                let name_span = self.next_span()?;
+                let name = self.parse_string()?;
+                let interpolate = if self.eat_keyword("interpolate")? {
+                    self.parse_float()?.round().max(0.0) as u32
+                } else {
+                    0
+                };
+                let Some(path) = self.find_file(&name) else {
+                    return Err(self.error_at(name_span, format!("cannot find density file \"{name}\" (searched the scene directory and the library path)")));
+                };
+                let d = crate::scene::df3::Df3::load(&path, interpolate)
+                    .map_err(|e| self.error_at(name_span, e))?;
+                PatternKind::DensityFile(std::sync::Arc::new(d))
+            }
             "average" => PatternKind::Average,
             "aoi" => PatternKind::Aoi,
             "slope" => PatternKind::Slope(Box::new(self.parse_slope()?)),
@@ -337,10 +355,6 @@ impl Parser {
     fn skip_pattern_args(&mut self, k: &str) -> PResult<()> {
         match k {
             "object" => self.skip_block()?,
-            "density_file" => {
-                self.next_tok()?;
-                self.next_tok()?;
-            }
             "tiling" => {
                 self.parse_expr()?;
             }
@@ -364,6 +378,23 @@ impl Parser {
         pat: &mut Pattern,
         space: &Transform,
     ) -> PResult<bool> {
+        if k == "interpolate" {
+            // A density file's (read after its file name too, as densfile.pov writes it).
+            let n = self.parse_float()?.round().max(0.0) as u32;
+            match &mut pat.kind {
+                PatternKind::DensityFile(d) => {
+                    if let Some(d) = std::sync::Arc::get_mut(d) {
+                        d.interpolate = n;
+                    } else {
+                        let mut copy = crate::scene::df3::Df3::clone(d);
+                        copy.interpolate = n;
+                        *d = std::sync::Arc::new(copy);
+                    }
+                }
+                _ => self.unsupported("interpolate (outside density_file)", span),
+            }
+            return Ok(true);
+        }
         match k {
             "frequency" => {
                 pat.frequency = self.parse_float()?;

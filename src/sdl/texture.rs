@@ -126,7 +126,7 @@ impl Parser {
             }
             match &**k {
                 "color_map" | "colour_map" => form = Form::Colors(Some(self.parse_color_map()?)),
-                "pigment_map" => {
+                "pigment_map" | "density_map" => {
                     if pat
                         .as_ref()
                         .is_some_and(|q| matches!(q.kind, PatternKind::Unsupported))
@@ -153,6 +153,13 @@ impl Parser {
                 _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in pigment"))),
             }
         }
+        if self.in_density && matches!(form, Form::Colors(None)) {
+            // A density's pattern value is its density: grey from 0 to 1.
+            form = Form::Colors(Some(vec![
+                (0.0, Rgbft::BLACK),
+                (1.0, Rgbft::rgb(DVec3::ONE)),
+            ]));
+        }
         p.kind = join_pigment(pat, form);
         Ok(p)
     }
@@ -164,7 +171,11 @@ impl Parser {
             .map(Pigment::solid)
             .collect();
         for item in items.iter_mut() {
-            if self.eat_keyword("pigment")? {
+            if self.eat_keyword(if self.in_density {
+                "density"
+            } else {
+                "pigment"
+            })? {
                 *item = self.parse_pigment_block(None)?;
             } else if self.starts_color()? {
                 *item = Pigment::solid(self.parse_color()?);
@@ -326,6 +337,8 @@ impl Parser {
             use_index: false,
         };
         let (mut filter_all, mut transmit_all) = (None, None);
+        // `filter N, v` / `transmit N, v`: for the pixels of palette index N.
+        let mut by_index = Vec::new();
         loop {
             let t = self.next_tok()?;
             match &t.tok {
@@ -343,10 +356,10 @@ impl Parser {
                                 transmit_all = v
                             }
                         } else {
-                            self.unsupported(&format!("{k} on a palette index"), t.span);
-                            self.parse_float()?;
+                            let index = self.parse_float()?;
                             self.skip_optional_comma()?;
-                            self.parse_float()?;
+                            let v = self.parse_float()?;
+                            by_index.push((&**k == "filter", index, v, t.span));
                         }
                     }
                     "gamma" => {
@@ -382,6 +395,32 @@ impl Parser {
         }
         crate::scene::image::load_image_map(&path, &mut map)
             .map_err(|e| self.error_at(name_span, e))?;
+        if !by_index.is_empty() {
+            match crate::scene::image::palette_indices(&path) {
+                Some(indices) if indices.len() == map.pixels.len() => {
+                    for (filter, index, v, _) in by_index {
+                        for (px, &i) in map.pixels.iter_mut().zip(&indices) {
+                            if i as f64 == index {
+                                if filter {
+                                    px.filter = v;
+                                } else {
+                                    px.transmit = v;
+                                }
+                            }
+                        }
+                    }
+                }
+                _ => {
+                    let span = by_index[0].3;
+                    self.warn(
+                        span,
+                        format!(
+                            "{name} has no palette: filter/transmit for a palette index do nothing"
+                        ),
+                    );
+                }
+            }
+        }
         if filter_all.is_some() || transmit_all.is_some() {
             for px in &mut map.pixels {
                 px.filter = filter_all.unwrap_or(px.filter);

@@ -40,6 +40,7 @@ pub enum Value {
     /// The pigment layers of a `sky_sphere`.
     SkySphere(Box<Vec<Pigment>>),
     Fog(Box<crate::scene::desc::FogDesc>),
+    Media(Box<crate::scene::media::Media>),
     /// Something lancer reads but does not render yet (`media`, `fog`, `pigment_map`, ...),
     /// named by its keyword so it can still be declared, passed and used.
     Skipped(Rc<str>),
@@ -76,6 +77,7 @@ impl Value {
             Value::Material(_) => "material",
             Value::SkySphere(_) => "sky_sphere",
             Value::Fog(_) => "fog",
+            Value::Media(_) => "media",
             Value::Skipped(_) => "unsupported item",
             Value::Array(_) => "array",
             Value::Spline(_) => "spline",
