@@ -14,8 +14,10 @@ fn per_object_types_stay_small() {
     // 824, 352 and 464 bytes (inline mesh and blob data another 48 on the last).
     // ObjectDesc 192 -> 200 knowingly: an object's `photons { }` flags and target spacing
     // (3 bytes, but the struct had no padding left); 8 MB per million object descriptions.
+    // 200 -> 208 knowingly: the interior's `dispersion` (f32) and `dispersion_samples` (u16),
+    // held inline like the rest of the interior; another 8 MB per million.
     assert!(
-        size_of::<ObjectDesc>() <= 200,
+        size_of::<ObjectDesc>() <= 208,
         "{}",
         size_of::<ObjectDesc>()
     );

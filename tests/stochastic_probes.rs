@@ -11,8 +11,9 @@
 //! | focal_blur_plane | 0.983 | 0.633 (pinhole camera) | 0.96 |
 //! | caustic_sphere | 0.993 | 0.749 (photons off) | 0.97 |
 //! | caustic_metal | 0.960 | 0.774 (photons off) | 0.94 |
+//! | caustic_dispersion | 0.993 | 0.953 (dispersion off) | 0.975 |
 //!
-//! POV-Ray itself gives the same picture on 1 and 2 threads for all three (its focal blur
+//! POV-Ray itself gives the same picture on 1 and 2 threads for all four (its focal blur
 //! and its photons with `jitter 0` are deterministic; the sphere's default jitter too, here).
 //! `caustic_metal`: lancer draws two faint streaks of photons glancing off the mirror's ends
 //! that povray does not (not understood yet).
@@ -28,6 +29,7 @@ const PROBES: &[(&str, f64)] = &[
     ("focal_blur_plane", 0.96),
     ("caustic_sphere", 0.97),
     ("caustic_metal", 0.94),
+    ("caustic_dispersion", 0.975),
 ];
 
 fn render(scene: &Path, threads: usize) -> Vec<u8> {

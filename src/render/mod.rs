@@ -7,6 +7,7 @@ mod aa;
 pub mod band;
 pub mod camera;
 mod cells_data;
+mod dispersion;
 pub mod focal;
 mod fog;
 mod media;

@@ -362,7 +362,8 @@ impl Shooter<'_> {
                         }
                         let power = self.light.color * (beam * omega);
                         let ray = Ray::new(self.light.position, dir);
-                        hit |= self.trace(&ray, power, 1.0, 0.0, 1, false, true, ctx, &mut ring);
+                        hit |=
+                            self.trace(&ray, power, 1.0, 0.0, 1, false, true, None, ctx, &mut ring);
                     }
                     (ring, n as u64, hit)
                 })
@@ -425,6 +426,7 @@ impl Shooter<'_> {
                         1,
                         false,
                         false,
+                        None,
                         ctx,
                         &mut row,
                     );
@@ -454,6 +456,7 @@ impl Shooter<'_> {
         level: u32,
         bounced: bool,
         spread: bool,
+        wave: Option<f32>,
         ctx: &mut Scratch<'a>,
         out: &mut Vec<Photon>,
     ) -> bool {
@@ -472,7 +475,9 @@ impl Shooter<'_> {
             // On its way to a target a photon passes through `pass_through` objects unchanged
             // (measured: a `no_shadow` target, pass_through by default, makes no caustic).
             let on = Ray::new(p, ray.dir);
-            return self.trace(&on, power, weight, len, level, bounced, spread, ctx, out);
+            return self.trace(
+                &on, power, weight, len, level, bounced, spread, wave, ctx, out,
+            );
         }
         // Measured: a refracting sphere stores one photon per photon through it (the floor's),
         // none where photons leave the glass.
@@ -494,11 +499,8 @@ impl Shooter<'_> {
         let entering = n.dot(dir) < 0.0;
         let nf = if entering { n } else { -n };
         let cos_i = (-dir.dot(nf)).clamp(0.0, 1.0);
-        let (n1, n2) = if entering {
-            (1.0, obj.ior)
-        } else {
-            (obj.ior, 1.0)
-        };
+        let ior = super::dispersion::ior(obj, wave);
+        let (n1, n2) = if entering { (1.0, ior) } else { (ior, 1.0) };
         // The surface's colours and finishes, as shading sees them.
         let top = obj.texture_facing(&h, !entering);
         let uv = if top.uses_uv() {
@@ -541,25 +543,47 @@ impl Shooter<'_> {
         }
         let mirror = dir - nf * (2.0 * dir.dot(nf));
         if f & flags::REFRACTION != 0 && self.light.photons.refraction && through != DVec3::ZERO {
-            let eta = n1 / n2;
-            let k = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
-            let tdir = if k >= 0.0 {
-                dir * eta + nf * (eta * cos_i - k.sqrt())
-            } else {
-                mirror
+            let bend = |n2: f64| {
+                let eta = n1 / n2;
+                let k = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
+                if k >= 0.0 {
+                    dir * eta + nf * (eta * cos_i - k.sqrt())
+                } else {
+                    mirror
+                }
             };
             let w = weight * through.max_element();
-            self.trace(
-                &Ray::new(p, tdir),
-                power * through,
-                w,
-                len,
-                level + 1,
-                true,
-                spread,
-                ctx,
-                out,
-            );
+            let split = match wave {
+                None if entering => super::dispersion::of(obj),
+                _ => None,
+            };
+            match split {
+                None => {
+                    let ray = Ray::new(p, bend(n2));
+                    let power = power * through;
+                    self.trace(&ray, power, w, len, level + 1, true, spread, wave, ctx, out);
+                }
+                Some((_, count)) => {
+                    // Photons entering a dispersing object go on as `count` colours.
+                    for (t, c) in super::dispersion::samples(count) {
+                        let ray = Ray::new(p, bend(super::dispersion::ior(obj, Some(t))));
+                        let power = power * through * c;
+                        let w = w * c.max_element();
+                        self.trace(
+                            &ray,
+                            power,
+                            w,
+                            len,
+                            level + 1,
+                            true,
+                            spread,
+                            Some(t),
+                            ctx,
+                            out,
+                        );
+                    }
+                }
+            }
         }
         if f & flags::REFLECTION != 0 && self.light.photons.reflection && refl != DVec3::ZERO {
             let w = weight * refl.max_element();
@@ -571,6 +595,7 @@ impl Shooter<'_> {
                 level + 1,
                 true,
                 spread,
+                wave,
                 ctx,
                 out,
             );

@@ -79,6 +79,8 @@ pub struct Path<'a> {
     in_solid: Option<bool>,
     /// 0 on the camera's tree of rays; n below a radiosity sample of level n.
     pub(super) rad_level: u32,
+    /// The ray's place in the spectrum (0 red to 1 violet) once a dispersing object split it.
+    wave: Option<f32>,
 }
 
 impl<'a> Path<'a> {
@@ -89,6 +91,7 @@ impl<'a> Path<'a> {
         medium: None,
         in_solid: None,
         rad_level: 0,
+        wave: None,
     };
 
     fn next(self, weight: f64, straight: bool, medium: Option<&'a Interior>) -> Path<'a> {
@@ -99,6 +102,7 @@ impl<'a> Path<'a> {
             medium,
             in_solid: self.in_solid,
             rad_level: self.rad_level,
+            wave: self.wave,
         }
     }
 
@@ -111,6 +115,7 @@ impl<'a> Path<'a> {
             medium: None,
             in_solid: None,
             rad_level: level,
+            wave: None,
         }
     }
 }
@@ -415,11 +420,8 @@ impl<'a> Tracer<'a> {
             self.gather_lights(p, nf, bumpy, obj, path.rad_level > 0, ctx);
         }
         let cos_i = (-dir.dot(nf)).clamp(0.0, 1.0);
-        let (n1, n2) = if entering {
-            (1.0, obj.ior)
-        } else {
-            (obj.ior, 1.0)
-        };
+        let ior = super::dispersion::ior(obj, path.wave);
+        let (n1, n2) = if entering { (1.0, ior) } else { (ior, 1.0) };
 
         // Layers from the top down (one for most textures). Measured with povray 3.7
         // (tests/probes/layered_*): each layer lights its own colour weighted by what the
@@ -549,15 +551,19 @@ impl<'a> Tracer<'a> {
                     Some(pn) => (pn, (-dir.dot(pn)).clamp(0.0, 1.0)),
                     None => (nf, cos_i),
                 };
-                let tdir = if n1 == n2 {
-                    Some(dir)
-                } else {
+                // Total internal reflection sends the transmitted share back inside.
+                let bend = |n1: f64, n2: f64| {
+                    if n1 == n2 {
+                        return dir;
+                    }
                     let eta = n1 / n2;
                     let k = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
-                    (k >= 0.0).then(|| dir * eta + nf * (eta * cos_i - k.sqrt()))
+                    if k >= 0.0 {
+                        dir * eta + nf * (eta * cos_i - k.sqrt())
+                    } else {
+                        mirror
+                    }
                 };
-                // Total internal reflection sends the transmitted share back inside.
-                let tdir = tdir.unwrap_or(mirror);
                 // Into the object's interior, or back out (into air: nested interiors are
                 // not tracked).
                 let inside = if entering {
@@ -571,7 +577,28 @@ impl<'a> Tracer<'a> {
                     in_solid: None,
                     ..path.next(w, path.straight, inside)
                 };
-                let tc = self.trace_seen(&Ray::new(p, tdir), onward, ctx);
+                let split = match path.wave {
+                    None if entering => super::dispersion::of(obj),
+                    _ => None,
+                };
+                let tc = match split {
+                    None => self.trace_seen(&Ray::new(p, bend(n1, n2)), onward, ctx),
+                    Some((_, count)) => {
+                        // Light entering a dispersing object goes on as `count` colours.
+                        let mut sum = Seen::default();
+                        for (t, c) in super::dispersion::samples(count) {
+                            let n2 = super::dispersion::ior(obj, Some(t));
+                            let part = Path {
+                                wave: Some(t),
+                                ..onward
+                            };
+                            let s = self.trace_seen(&Ray::new(p, bend(n1, n2)), part, ctx);
+                            sum.rgb += s.rgb * c;
+                            sum.clear += s.clear / count as f64;
+                        }
+                        sum
+                    }
+                };
                 // Light coming in through the far side of a fading interior is dimmed by the
                 // stretch the ray spent inside; the far surface's own light is not (measured:
                 // ambient on both faces of a fading slab).

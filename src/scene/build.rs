@@ -626,7 +626,7 @@ impl Ctx {
             transparent,
             clip,
             interior: int
-                .filter(|i| i.fades() || i.has_media())
+                .filter(|i| i.fades() || i.has_media() || i.dispersion != 1.0)
                 .map(|i| Box::new(self.interior(i))),
             photons: object_photon_flags(o),
             photon_mult: o.photons.spacing_mult(),

@@ -790,6 +790,10 @@ pub struct Interior {
     pub fade_power: f64,
     /// What fully faded light keeps (black: nothing).
     pub fade_color: DVec3,
+    /// `dispersion`: the ratio of the iors at the violet and red ends (1: none). f32 and u16:
+    /// every object description holds an interior (tests/memory_layout.rs).
+    pub dispersion: f32,
+    pub dispersion_samples: u16,
     /// `media { }` blocks, each computed on its own and added. Shared, so the members of a
     /// CSG that inherit one interior hold the same list (and it is counted once where they
     /// overlap).
@@ -805,6 +809,8 @@ impl Default for Interior {
             fade_distance: 0.0,
             fade_power: 0.0,
             fade_color: DVec3::ZERO,
+            dispersion: 1.0,
+            dispersion_samples: 7,
             media: crate::scene::media::no_media(),
         }
     }

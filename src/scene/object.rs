@@ -65,7 +65,8 @@ pub struct Object {
     pub transparent: bool,
     /// `clipped_by`: crossings outside any of these are dropped.
     pub clip: Vec<Object>,
-    /// An interior that fades light passing through it or holds media.
+    /// An interior that fades light passing through it, holds media or splits light into
+    /// colours (`dispersion`).
     pub interior: Option<Box<crate::scene::desc::Interior>>,
     /// `photons { }` flags (scene::photon::flags), a CSG's given to its members too; `pass_through`
     /// is set for `no_shadow` objects unless turned off.

@@ -30,9 +30,9 @@ impl Parser {
                 "fade_distance" => int.fade_distance = self.parse_float()?,
                 "fade_power" => int.fade_power = self.parse_float()?,
                 "fade_color" | "fade_colour" => int.fade_color = self.parse_color()?.rgb,
-                "dispersion" | "dispersion_samples" => {
-                    self.unsupported(k, t.span);
-                    self.parse_float()?;
+                "dispersion" => int.dispersion = self.parse_float()? as f32,
+                "dispersion_samples" => {
+                    int.dispersion_samples = self.parse_float()?.clamp(2.0, 65535.0) as u16;
                 }
                 "media" => {
                     let m = self.parse_media_block()?;
