@@ -421,14 +421,19 @@ fn uv_mapping_on_a_shape_without_uv_coordinates_warns() {
 fn mesh_camera_reads_its_meshes_and_checks_them() {
     let s = parse(
         "#declare M = mesh { triangle { 0, x, y } }
-         camera { mesh_camera { 2, 0 mesh { M } mesh { M translate z } smooth } location 0.1*z }",
+         camera { mesh_camera { 2, 0 mesh { M } mesh { M translate z } } location 0.1*z }",
     );
     let m = s.camera.mesh.as_ref().expect("a mesh camera");
     assert_eq!(
         (m.rays_per_pixel, m.distribution, m.meshes.len()),
         (2, 0, 2)
     );
-    assert!(m.smooth);
+    assert!(!m.smooth);
+    let s = parse("camera { mesh_camera { 1 3 mesh { triangle { 0, x, y } } smooth } }");
+    assert!(s.camera.mesh.as_ref().expect("a mesh camera").smooth);
+    // povray: "Smooth can only be used with distribution method #3".
+    let e = parse_err("camera { mesh_camera { 1 0 mesh { triangle { 0, x, y } } smooth } }");
+    assert!(e.contains("needs mesh_camera distribution 3"), "{e}");
     let e = parse_err(
         "#declare M = mesh { triangle { 0, x, y } } camera { mesh_camera { 2 0 mesh { M } } }",
     );

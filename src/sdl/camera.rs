@@ -349,6 +349,13 @@ impl Parser {
                     break;
                 }
                 Tok::Ident(k) if &**k == "smooth" => {
+                    if distribution != 3.0 {
+                        // povray: "Smooth can only be used with distribution 3".
+                        return Err(self.error_at(
+                            t.span,
+                            format!("'smooth' needs mesh_camera distribution 3 (this one is {distribution}), as in POV-Ray"),
+                        ));
+                    }
                     self.advance();
                     smooth = true;
                 }
