@@ -438,6 +438,8 @@ impl<'a> Tracer<'a> {
         let mut conserve = false;
         // Reflections off perturbed normals go their own ways: (direction, tint·amount).
         let mut bent: Vec<(DVec3, DVec3)> = Vec::new();
+        // `exponent`: what a reflection brings back is raised to this power first.
+        let mut refl_power: Option<f64> = None;
         // The first perturbed normal met decides refraction.
         let mut refract_n: Option<DVec3> = None;
         // Radiosity's light at this point, gathered at most once (per normal with
@@ -467,6 +469,7 @@ impl<'a> Tracer<'a> {
                 col += through * w * self.layer_light(&c, fin, dir, pn, pmirror, indirect, ctx);
                 let refl = &fin.reflection;
                 if !refl.is_zero() && q.reflection {
+                    refl_power = refl.power().or(refl_power);
                     // Where a ray leaves an object at a point still inside another object (a
                     // wall plane whose inside holds the camera, say), POV-Ray takes the leaving
                     // object's ior for both sides of the Fresnel term, which makes it zero;
@@ -523,7 +526,7 @@ impl<'a> Tracer<'a> {
                     let rc = self
                         .trace_seen(&Ray::new(p, mirror), path.next(w, false, path.medium), ctx)
                         .rgb;
-                    col += rc * refl_tinted;
+                    col += powered(rc, refl_power) * refl_tinted;
                 }
                 for (d, tinted) in bent {
                     let wb = path.weight * tinted.max_element();
@@ -531,7 +534,7 @@ impl<'a> Tracer<'a> {
                         let rc = self
                             .trace_seen(&Ray::new(p, d), path.next(wb, false, path.medium), ctx)
                             .rgb;
-                        col += rc * tinted;
+                        col += powered(rc, refl_power) * tinted;
                     }
                 }
             }
@@ -758,6 +761,19 @@ pub struct LitBy {
     pub back: bool,
     /// Uniform in [0, 1), fixed by the point and the light: `crand`'s random share.
     pub grain: f64,
+}
+
+/// A reflected colour raised to a reflection `exponent`'s power (per channel, negative
+/// values left alone).
+fn powered(c: DVec3, power: Option<f64>) -> DVec3 {
+    match power {
+        Some(k) => DVec3::new(
+            c.x.max(0.0).powf(k),
+            c.y.max(0.0).powf(k),
+            c.z.max(0.0).powf(k),
+        ),
+        None => c,
+    }
 }
 
 /// A seed from a point's exact coordinates, so random-looking choices made there are the

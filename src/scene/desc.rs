@@ -774,11 +774,19 @@ pub struct Reflection {
     pub falloff: f64,
     pub fresnel: bool,
     pub metallic: f64,
+    /// `exponent`: the reflected colour is raised to 1/exponent before it is weighted
+    /// (measured: reflection R of a background C shows R·C^(1/E)). 0 (unset) and 1 are linear.
+    pub exponent: f32,
 }
 
 impl Reflection {
     pub fn is_zero(&self) -> bool {
         self.min == DVec3::ZERO && self.max == DVec3::ZERO
+    }
+
+    /// The power the reflected colour is raised to, when not 1.
+    pub fn power(&self) -> Option<f64> {
+        (self.exponent > 0.0 && self.exponent != 1.0).then(|| 1.0 / self.exponent as f64)
     }
 }
 

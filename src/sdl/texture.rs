@@ -477,10 +477,7 @@ impl Parser {
                     };
                 }
                 "reflection" => self.parse_reflection(&mut f)?,
-                "reflection_exponent" => {
-                    self.unsupported(k, t.span);
-                    self.parse_float()?;
-                }
+                "reflection_exponent" => f.reflection.exponent = self.parse_exponent(t.span)?,
                 "conserve_energy" => f.conserve_energy = self.optional_bool()?,
                 "crand" => {
                     f.crand = self.parse_float()?;
@@ -506,6 +503,18 @@ impl Parser {
         })
     }
 
+    /// A reflection exponent, which must be positive.
+    fn parse_exponent(&mut self, span: Span) -> PResult<f32> {
+        let e = self.parse_float()?;
+        if e <= 0.0 {
+            return Err(self.error_at(
+                span,
+                format!("the reflection exponent must be positive, not {e}"),
+            ));
+        }
+        Ok(e as f32)
+    }
+
     /// `reflection 0.3`, `reflection rgb <..>` or `reflection { [min,] max fresnel falloff ... }`.
     fn parse_reflection(&mut self, f: &mut Finish) -> PResult<()> {
         if !self.eat_sym(Sym::LBrace)? {
@@ -516,6 +525,7 @@ impl Parser {
                 falloff: 1.0,
                 fresnel: false,
                 metallic: 0.0,
+                exponent: f.reflection.exponent,
             };
             return Ok(());
         }
@@ -538,10 +548,7 @@ impl Parser {
                 Tok::Ident(k) => match &**k {
                     "fresnel" => r.fresnel = self.optional_bool()?,
                     "falloff" => r.falloff = self.parse_float()?,
-                    "exponent" => {
-                        self.unsupported("exponent (in reflection)", t.span);
-                        self.parse_float()?;
-                    }
+                    "exponent" => r.exponent = self.parse_exponent(t.span)?,
                     "metallic" => {
                         r.metallic = if self.starts_float()? {
                             self.parse_float()?
