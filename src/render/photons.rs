@@ -541,17 +541,9 @@ impl Shooter<'_> {
                 through *= int.fade(h.t * ray.dir.length());
             }
         }
-        let mirror = dir - nf * (2.0 * dir.dot(nf));
+        let mirror = super::trace::reflect(dir, nf);
         if f & flags::REFRACTION != 0 && self.light.photons.refraction && through != DVec3::ZERO {
-            let bend = |n2: f64| {
-                let eta = n1 / n2;
-                let k = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
-                if k >= 0.0 {
-                    dir * eta + nf * (eta * cos_i - k.sqrt())
-                } else {
-                    mirror
-                }
-            };
+            let bend = |n2: f64| super::trace::refract(dir, nf, cos_i, n1, n2).unwrap_or(mirror);
             let w = weight * through.max_element();
             let split = match wave {
                 None if entering => super::dispersion::of(obj),

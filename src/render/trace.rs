@@ -134,7 +134,15 @@ fn grey(c: DVec3) -> f64 {
     0.297 * c.x + 0.589 * c.y + 0.114 * c.z
 }
 
-fn reflect(d: DVec3, n: DVec3) -> DVec3 {
+/// The direction a ray going `dir` takes through a surface with normal `nf` (facing the ray,
+/// `cos_i` = −dir·nf) from ior n1 into n2; None on total internal reflection.
+pub(super) fn refract(dir: DVec3, nf: DVec3, cos_i: f64, n1: f64, n2: f64) -> Option<DVec3> {
+    let eta = n1 / n2;
+    let k = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
+    (k >= 0.0).then(|| dir * eta + nf * (eta * cos_i - k.sqrt()))
+}
+
+pub(super) fn reflect(d: DVec3, n: DVec3) -> DVec3 {
     d - n * (2.0 * d.dot(n))
 }
 
@@ -559,13 +567,7 @@ impl<'a> Tracer<'a> {
                     if n1 == n2 {
                         return dir;
                     }
-                    let eta = n1 / n2;
-                    let k = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
-                    if k >= 0.0 {
-                        dir * eta + nf * (eta * cos_i - k.sqrt())
-                    } else {
-                        mirror
-                    }
+                    refract(dir, nf, cos_i, n1, n2).unwrap_or(mirror)
                 };
                 // Into the object's interior, or back out (into air: nested interiors are
                 // not tracked).
