@@ -87,20 +87,7 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
             GammaMode::Corrected(1.0)
         }
     };
-    let mut ctx = Ctx {
-        meshes: HashMap::new(),
-        texts: HashMap::new(),
-        images: HashMap::new(),
-        shared_textures: HashMap::new(),
-        media: HashMap::new(),
-        lights: Vec::new(),
-        gamma,
-        noise_generator: desc.global.noise_generator,
-        light_sets: vec![LightSet::outside()],
-        current_set: 0,
-        current_group: 0,
-        groups: 0,
-    };
+    let mut ctx = Ctx::new(gamma, desc.global.noise_generator);
     let default_texture = Arc::new(desc.default_texture.clone());
     let mut objects = Vec::with_capacity(desc.objects.len());
     for o in &desc.objects {
@@ -134,11 +121,7 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
         ctx.pigment(p);
     }
     let mut media = desc.media.clone();
-    for m in &mut media {
-        for d in &mut m.density {
-            ctx.pigment(d);
-        }
-    }
+    ctx.ready_media(&mut media);
     let object_media = objects.iter().any(has_media);
     let mut scene = Scene {
         camera: Camera::new(&desc.camera, width, height),
@@ -189,20 +172,8 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
 
 /// One object built on its own, for an `object` pattern: no lights, no scene-wide state.
 pub fn standalone_object(o: &ObjectDesc) -> Option<Object> {
-    let mut ctx = Ctx {
-        meshes: HashMap::new(),
-        texts: HashMap::new(),
-        images: HashMap::new(),
-        shared_textures: HashMap::new(),
-        media: HashMap::new(),
-        lights: Vec::new(),
-        gamma: GammaMode::Corrected(1.0),
-        noise_generator: 2,
-        light_sets: vec![LightSet::outside()],
-        current_set: 0,
-        current_group: 0,
-        groups: 0,
-    };
+    // Only the object's shape matters to the pattern: gamma and noise do not.
+    let mut ctx = Ctx::new(GammaMode::Corrected(1.0), 2);
     let default_texture = Arc::new(Texture::default());
     let mut obj = ctx.object(o, None, None, &default_texture)?;
     crate::scene::children::attach(&mut obj, false);
@@ -258,6 +229,23 @@ struct Ctx {
 }
 
 impl Ctx {
+    fn new(gamma: GammaMode, noise_generator: u8) -> Ctx {
+        Ctx {
+            meshes: HashMap::new(),
+            texts: HashMap::new(),
+            images: HashMap::new(),
+            shared_textures: HashMap::new(),
+            media: HashMap::new(),
+            lights: Vec::new(),
+            gamma,
+            noise_generator,
+            light_sets: vec![LightSet::outside()],
+            current_set: 0,
+            current_group: 0,
+            groups: 0,
+        }
+    }
+
     /// Scene colours are already in working space; image maps were decoded to linear light
     /// on load and need converting only when the working gamma is not 1.
     fn image(&mut self, im: &Arc<ImageMap>) -> (Arc<ImageMap>, bool) {
@@ -292,11 +280,7 @@ impl Ctx {
             Some(m) => m.clone(),
             None => {
                 let mut all = (**desc).clone();
-                for m in &mut all {
-                    for d in &mut m.density {
-                        self.pigment(d);
-                    }
-                }
+                self.ready_media(&mut all);
                 let ready = Arc::new(all);
                 self.media.insert(key, ready.clone());
                 ready
@@ -305,6 +289,13 @@ impl Ctx {
         Interior {
             media,
             ..int.clone()
+        }
+    }
+
+    /// Media densities readied like any pigment (the scene's noise generator, images).
+    fn ready_media(&mut self, media: &mut [Media]) {
+        for d in media.iter_mut().flat_map(|m| m.density.iter_mut()) {
+            self.pigment(d);
         }
     }
 
