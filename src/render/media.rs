@@ -15,7 +15,7 @@
 
 use crate::math::{DVec3, Ray};
 use crate::scene::light::{Cone, Light};
-use crate::scene::media::Media;
+use crate::scene::media::{Media, Scattering};
 use crate::scene::object::{ObjKind, Object};
 
 use super::pigment;
@@ -169,7 +169,9 @@ impl<'a> Tracer<'a> {
         // The stretch is cut where it enters and leaves spotlight and cylinder beams, each
         // piece sampled on its own (manual: lit intervals are sampled apart from unlit ones),
         // so that a narrow beam is not missed between samples.
-        let mut cuts = vec![0.0, t * len];
+        let mut cuts = std::mem::take(&mut ctx.media_cuts);
+        cuts.clear();
+        cuts.extend([0.0, t * len]);
         if scatters {
             for light in &self.scene.lights {
                 if light.media_interaction {
@@ -188,7 +190,9 @@ impl<'a> Tracer<'a> {
             let p = ray.origin + dir * s;
             let mut sigma = DVec3::ZERO;
             let mut glow = DVec3::ZERO;
-            let mut lit = false;
+            // Each density is evaluated once here, also for the lights' scattering below.
+            let mut scatter = std::mem::take(&mut ctx.media_scatter);
+            scatter.clear();
             for m in media.iter().flat_map(|l| l.iter()) {
                 let rho = density(m, p);
                 if rho == DVec3::ZERO {
@@ -198,12 +202,15 @@ impl<'a> Tracer<'a> {
                 glow += m.emission * rho;
                 if let Some(sc) = &m.scattering {
                     sigma += sc.color * sc.extinction * rho;
-                    lit |= sc.color != DVec3::ZERO;
+                    if sc.color != DVec3::ZERO {
+                        scatter.push((rho, *sc));
+                    }
                 }
             }
-            if scatters && lit {
-                glow += self.in_scattered(media, p, dir, ctx);
+            if !scatter.is_empty() {
+                glow += self.in_scattered(&scatter, p, dir, ctx);
             }
+            ctx.media_scatter = scatter;
             Sample { sigma, glow }
         };
         for w in cuts.windows(2).filter(|w| w[1] > w[0]) {
@@ -226,6 +233,7 @@ impl<'a> Tracer<'a> {
                 }
             }
         }
+        ctx.media_cuts = cuts;
         let Composite { kept, added } = acc;
         Seen {
             rgb: seen.rgb * kept + added,
@@ -235,10 +243,10 @@ impl<'a> Tracer<'a> {
 
     /// The light the media's scattering sends from `p` towards the viewer (the ray goes
     /// `dir` from the viewer): every light reaching `p`, shadows included, times each
-    /// media's phase function, scattering colour and density.
+    /// scattering media's phase function, colour and density (`scatter`).
     fn in_scattered(
         &self,
-        media: &[&[Media]],
+        scatter: &[(DVec3, Scattering)],
         p: DVec3,
         dir: DVec3,
         ctx: &mut TraceCtx<'a>,
@@ -262,12 +270,8 @@ impl<'a> Tracer<'a> {
             }
             // The light travels along −l; the viewer lies along −dir.
             let cos = inc.l.dot(dir);
-            for m in media.iter().flat_map(|l| l.iter()) {
-                if let Some(s) = &m.scattering {
-                    if s.color != DVec3::ZERO {
-                        out += lc * s.color * density(m, p) * s.phase(cos);
-                    }
-                }
+            for (rho, s) in scatter {
+                out += lc * s.color * *rho * s.phase(cos);
             }
         }
         out
@@ -284,7 +288,8 @@ impl<'a> Tracer<'a> {
         seen: Seen,
         ctx: &mut TraceCtx<'a>,
     ) -> Seen {
-        let mut set: MediaSet<'a> = Vec::new();
+        let mut set = std::mem::take(&mut ctx.media_lists);
+        set.clear();
         if self.scene.object_media {
             // The stretch crosses no surface: one point tells which objects hold it.
             containing(self, ray.at(t * 0.5), &mut set);
@@ -292,10 +297,13 @@ impl<'a> Tracer<'a> {
         if !self.scene.media.is_empty() {
             set.push(&self.scene.media);
         }
-        if set.is_empty() {
-            return seen;
-        }
-        self.through_media(&set, ray, t, seen, ctx)
+        let out = if set.is_empty() {
+            seen
+        } else {
+            self.through_media(&set, ray, t, seen, ctx)
+        };
+        ctx.media_lists = set;
+        out
     }
 }
 

@@ -101,6 +101,12 @@ pub struct Scratch<'a> {
     pub rad_local: Vec<crate::render::radiosity::Sample>,
     /// Photons found around the point being shaded: (squared distance, index).
     pub photon_found: Vec<(f32, u32)>,
+    /// The media lists along the ray stretch being sampled (render::media).
+    pub media_lists: Vec<&'a [crate::scene::media::Media]>,
+    /// Where that stretch enters and leaves light beams.
+    pub media_cuts: Vec<f64>,
+    /// At one media sample: each scattering media's density, with its scattering.
+    pub media_scatter: Vec<(DVec3, crate::scene::media::Scattering)>,
 }
 
 /// Whether a crossing at `p` of CSG member `i` is on the result's surface: every other member
