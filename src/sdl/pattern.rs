@@ -274,42 +274,13 @@ impl Parser {
             "magnet" => {
                 // magnet 1|2 mandel N, or magnet 1|2 julia <c>, N
                 let t = self.parse_float()?;
-                let julia = if self.eat_keyword("julia")? {
-                    let c = self.parse_vector()?;
-                    self.skip_optional_comma()?;
-                    Some((c.x, c.y))
-                } else {
+                let julia = self.eat_keyword("julia")?;
+                if !julia {
                     self.eat_keyword("mandel")?;
-                    None
-                };
-                let iterations = self.parse_float()?.clamp(0.0, 1e6) as u32;
-                PatternKind::Fractal(Box::new(Fractal {
-                    julia,
-                    iterations,
-                    exponent: 2,
-                    magnet: if t >= 2.0 { 2 } else { 1 },
-                    interior: (0, 1.0),
-                    exterior: (1, 1.0),
-                }))
+                }
+                self.parse_fractal(julia, if t >= 2.0 { 2 } else { 1 })?
             }
-            "mandel" | "julia" => {
-                let julia = if k == "julia" {
-                    let c = self.parse_vector()?;
-                    self.skip_optional_comma()?;
-                    Some((c.x, c.y))
-                } else {
-                    None
-                };
-                let iterations = self.parse_float()?.clamp(0.0, 1e6) as u32;
-                PatternKind::Fractal(Box::new(Fractal {
-                    julia,
-                    iterations,
-                    exponent: 2,
-                    magnet: 0,
-                    interior: (0, 1.0),
-                    exterior: (1, 1.0),
-                }))
-            }
+            "mandel" | "julia" => self.parse_fractal(k == "julia", 0)?,
             "function" => {
                 let v = self.parse_function_literal(span)?;
                 match v {
@@ -334,6 +305,27 @@ impl Parser {
             }
             _ => return Ok(None),
         }))
+    }
+
+    /// A fractal pattern's `[<c>,] N` after its keywords: a julia set's constant, then the
+    /// iterations.
+    fn parse_fractal(&mut self, julia: bool, magnet: u8) -> PResult<PatternKind> {
+        let julia = if julia {
+            let c = self.parse_vector()?;
+            self.skip_optional_comma()?;
+            Some((c.x, c.y))
+        } else {
+            None
+        };
+        let iterations = self.parse_float()?.clamp(0.0, 1e6) as u32;
+        Ok(PatternKind::Fractal(Box::new(Fractal {
+            julia,
+            iterations,
+            exponent: 2,
+            magnet,
+            interior: (0, 1.0),
+            exterior: (1, 1.0),
+        })))
     }
 
     /// After an `object` pattern's list items: its closing brace.
