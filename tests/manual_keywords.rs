@@ -14,7 +14,7 @@ const SNIPPETS: &[(&str, &[&str])] = &[
     ("camera { orthographic location <0,1,-5> look_at 0 }", &[]),
     ("camera { fisheye angle 180 }", &[]),
     ("camera { ultra_wide_angle angle 170 }", &[]),
-    ("camera { omnimax }", &["omnimax"]),
+    ("camera { omnimax }", &[]),
     ("camera { panoramic }", &[]),
     ("camera { cylinder 1 angle 90 }", &[]),
     ("camera { cylinder 2 angle 90 }", &[]),

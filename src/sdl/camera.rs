@@ -217,10 +217,7 @@ impl Parser {
                     cam.projection = match &**k {
                         "fisheye" => Projection::Fisheye,
                         "ultra_wide_angle" => Projection::UltraWideAngle,
-                        "omnimax" => {
-                            self.unsupported("omnimax camera (rendered as a 180° fisheye)", t.span);
-                            Projection::Omnimax
-                        }
+                        "omnimax" => Projection::Omnimax,
                         "panoramic" => Projection::Panoramic,
                         "spherical" => Projection::Spherical,
                         "cylinder" => {
