@@ -22,7 +22,7 @@ const SNIPPETS: &[(&str, &[&str])] = &[
     ("camera { cylinder 4 angle 90 }", &[]),
     ("camera { spherical angle 360, 180 }", &[]),
     ("camera { location <0,0,-5> direction z*2 look_at 0 aperture 0.4 blur_samples 4, 16 focal_point 0 confidence 0.9 variance 1/128 }", &[]),
-    ("camera { location <0,0,-5> aperture 0.4 blur_samples 8 focal_point 0 bokeh { pigment { rgb 1 } } }", &["bokeh"]),
+    ("camera { location <0,0,-5> aperture 0.4 blur_samples 8 focal_point 0 bokeh { pigment { rgb 1 } } }", &[]),
     ("camera { location <0,0,-5> normal { bumps 0.1 } }", &[]),
     ("camera { mesh_camera { 1 3 mesh { smooth_triangle { <0,0,0>, z, <1,0,0>, z, <0,1,0>, z } } smooth } location 0 direction z }", &[]),
     ("light_source { <0,5,-5> rgb 1 }", &[]),

@@ -281,23 +281,29 @@ impl Parser {
                 "confidence" => cam.blur.confidence = self.parse_float()?.clamp(0.0, 0.999_999),
                 "variance" => {
                     let v = self.parse_float()?;
-                    if v >= 1.0 || v <= 0.0 {
+                    if v >= 1.0 {
                         // The manual: "If 1 is used POV-Ray will issue a warning and then use
-                        // the default instead."
+                        // the default instead." Measured: `variance 0` is taken as written
+                        // (every pixel takes the most samples), without a warning.
                         self.warn(
                             t.span,
                             "focal blur variance must be below 1; the default 1/128 is used",
                         );
                     } else {
-                        cam.blur.variance = v;
+                        cam.blur.variance = v.max(0.0);
                     }
                 }
                 "normal" => {
                     cam.normal = Some(self.parse_normal_block(t.span)?);
                 }
                 "bokeh" => {
-                    self.unsupported(k, t.span);
-                    self.skip_block()?;
+                    self.expect_sym(Sym::LBrace, "after 'bokeh'")?;
+                    let pig = self.next_tok()?;
+                    if !matches!(&pig.tok, Tok::Ident(k) if &**k == "pigment") {
+                        return Err(self.error_at(pig.span, "expected 'pigment' in bokeh"));
+                    }
+                    cam.blur.bokeh = Some(Box::new(self.parse_pigment_block(None)?));
+                    self.expect_sym(Sym::RBrace, "to close 'bokeh'")?;
                 }
                 _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in camera"))),
             }
