@@ -29,7 +29,7 @@ const SNIPPETS: &[(&str, &[&str])] = &[
     ("light_source { <0,5,-5> rgb 1 spotlight point_at 0 radius 10 falloff 20 tightness 5 }", &[]),
     ("light_source { <0,5,-5> rgb 1 cylinder point_at 0 radius 1 falloff 2 tightness 1 }", &[]),
     ("light_source { <0,5,-5> rgb 1 parallel point_at 0 }", &[]),
-    ("light_source { <0,5,-5> rgb 1 area_light x, y, 4, 4 adaptive 1 jitter circular orient area_illumination on }", &["area_illumination"]),
+    ("light_source { <0,5,-5> rgb 1 area_light x, y, 4, 4 adaptive 1 jitter circular orient area_illumination on }", &[]),
     ("light_source { <0,5,-5> rgb 1 shadowless }", &[]),
     ("light_source { <0,5,-5> rgb 1 looks_like { sphere { 0, 0.1 } } }", &[]),
     ("light_source { <0,5,-5> rgb 1 projected_through { sphere { 0, 0.1 } } }", &[]),
@@ -80,7 +80,7 @@ const SNIPPETS: &[(&str, &[&str])] = &[
     ("intersection { sphere { 0, 1 } box { 0, 2 } }", &[]),
     ("difference { sphere { 0, 1 } box { 0, 2 } }", &[]),
     ("merge { sphere { 0, 1 } box { 0, 2 } }", &[]),
-    ("object { sphere { 0, 1 } clipped_by { plane { y, 0 } } bounded_by { box { -1, 1 } } hollow inverse no_shadow no_image no_reflection double_illuminate no_radiosity material { texture { pigment { rgb 1 } } interior { ior 1.5 } } interior_texture { pigment { rgb 1 } } photons { target } radiosity { importance 0.5 } }", &["radiosity importance"]),
+    ("object { sphere { 0, 1 } clipped_by { plane { y, 0 } } bounded_by { box { -1, 1 } } hollow inverse no_shadow no_image no_reflection double_illuminate no_radiosity material { texture { pigment { rgb 1 } } interior { ior 1.5 } } interior_texture { pigment { rgb 1 } } photons { target } radiosity { importance 0.5 } }", &[]),
 ];
 
 #[test]

@@ -255,10 +255,15 @@ impl<'a> Tracer<'a> {
 
     /// A radiosity gathering ray: what it brings back, and how far it went (infinite to the
     /// background). It passes through `no_radiosity` objects.
+    ///
+    /// `share`: the ray's place in its sample's sequence (index / count). An object of
+    /// `radiosity { importance I }` is followed only by the first I of the sequence, which
+    /// count 1/I times to make up for the others (manual 3.4.4.3.4.1).
     pub(super) fn trace_gather(
         &self,
         ray: &Ray,
         path: Path<'a>,
+        share: f64,
         ctx: &mut TraceCtx<'a>,
     ) -> (DVec3, f64) {
         ctx.rays += 1;
@@ -266,6 +271,15 @@ impl<'a> Tracer<'a> {
             return (DVec3::ZERO, f64::INFINITY);
         }
         let (seen, t) = match self.first_visible(ray, false, true, ctx) {
+            Some(h) if h.obj.importance < 1.0 => {
+                let imp = f64::from(h.obj.importance);
+                if share >= imp {
+                    return (DVec3::ZERO, h.t * ray.dir.length());
+                }
+                let mut s = self.shade_blended(ray, &h, path, ctx);
+                s.rgb /= imp;
+                (s, h.t)
+            }
             Some(h) => (self.shade_blended(ray, &h, path, ctx), h.t),
             None => (self.background(ray.dir, false), f64::INFINITY),
         };
@@ -647,7 +661,33 @@ impl<'a> Tracer<'a> {
                 continue;
             };
             let l = inc.l;
+            let spread = light.area.as_ref().is_some_and(|a| a.illumination);
+            if spread && !light.shadowless && q.shadows && self.samples_area(light, gathering) {
+                if let Some(dist) = inc.shadow_dist {
+                    // `area_illumination`: every point of the array lights the surface from
+                    // its own direction, with its share of the light, even where the
+                    // array's centre is below the surface's horizon.
+                    let grain = grain(seed, slot as u32);
+                    self.area_each(p, (slot, light), l, dist, ctx, |dir, d, seen| {
+                        let lc = light.color * (light.fade(d) * inc.beam);
+                        let cos_n = nf.dot(dir);
+                        let back = cos_n <= 0.0 && double;
+                        if (cos_n > 0.0 || all || back) && seen != DVec3::ZERO {
+                            lit.push(LitBy {
+                                color: lc * seen,
+                                l: dir,
+                                cos_n,
+                                shadowless: false,
+                                back,
+                                grain,
+                            });
+                        }
+                    });
+                    continue;
+                }
+            }
             let cos_n = nf.dot(l);
+
             let back = cos_n <= 0.0 && double;
             if cos_n <= 0.0 && !all && !back {
                 continue;

@@ -17,7 +17,12 @@ const UNSUPPORTED_BLOCKS: &[&str] = &["photons", "radiosity"];
 impl Parser {
     pub(super) fn parse_scene_items(&mut self) -> PResult<()> {
         loop {
-            if let Some(obj) = self.parse_object()? {
+            if let Some(mut obj) = self.parse_object()? {
+                if let Some(v) = self.scene.default_importance {
+                    super::object::set_deep(&mut obj, &|o: &mut crate::scene::desc::ObjectDesc| {
+                        o.rad_importance.get_or_insert(v);
+                    });
+                }
                 self.scene.objects.push(obj);
                 continue;
             }

@@ -204,7 +204,15 @@ impl Parser {
                 self.optional_bool()?;
             }
             "photons" => obj.photons = self.parse_object_photons(obj.photons)?,
-            "radiosity" => self.parse_object_radiosity(span)?,
+            "radiosity" => {
+                if let Some(v) = self.parse_object_radiosity()? {
+                    // CSG members without their own take their parent's.
+                    set_deep(obj, &|o: &mut ObjectDesc| {
+                        o.rad_importance.get_or_insert(v);
+                    });
+                    obj.rad_importance = Some(v);
+                }
+            }
             "clipped_by" => {
                 let open = self.open_brace("clipped_by")?;
                 let mut clips = Vec::new();
@@ -647,7 +655,7 @@ impl Parser {
 }
 
 /// Applies `f` to an object and, for CSG, to every member at any depth.
-fn set_deep(obj: &mut ObjectDesc, f: &dyn Fn(&mut ObjectDesc)) {
+pub(super) fn set_deep(obj: &mut ObjectDesc, f: &dyn Fn(&mut ObjectDesc)) {
     f(obj);
     if let ShapeDesc::Csg { children, .. } = &mut obj.shape {
         for c in children {
