@@ -85,6 +85,10 @@ impl Parser {
 
     /// Parses modifiers up to and including the closing brace.
     pub(super) fn finish_object(&mut self, mut obj: ObjectDesc, open: Span) -> PResult<ObjectDesc> {
+        // `uv_mapping` among the modifiers maps the textures given after it (measured:
+        // povray draws `sphere { 0, 1 uv_mapping texture { T } }` as `texture { uv_mapping T }`
+        // and refuses it after the texture).
+        let mut uv = false;
         loop {
             let Some(t) = self.peek()? else {
                 return Err(self.error_at(open, "this '{' is never closed"));
@@ -92,8 +96,21 @@ impl Parser {
             match &t.tok {
                 Tok::Sym(Sym::RBrace) => {
                     self.advance();
+                    if uv {
+                        if let Some(tex) = &mut obj.texture {
+                            Arc::make_mut(tex).uv_mapping = true;
+                        }
+                    }
                     self.warn_uv_without_coordinates(&obj, open);
                     return Ok(obj);
+                }
+                Tok::Ident(k) if &**k == "uv_mapping" => {
+                    self.advance();
+                    if obj.texture.is_some() {
+                        return Err(self
+                            .error_at(t.span, "uv_mapping must come before the object's texture"));
+                    }
+                    uv = true;
                 }
                 Tok::Ident(k) => {
                     let k = k.clone();
