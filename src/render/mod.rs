@@ -22,6 +22,7 @@ pub mod pigment;
 pub mod radiosity;
 mod shadow;
 pub mod texture_map;
+mod tiling;
 pub mod trace;
 pub mod warp;
 

@@ -109,6 +109,12 @@ fn local(nd: &Normal, lp: DVec3, ln: DVec3) -> DVec3 {
                 ln + noise::dnoise(pattern::warped(pat, lp), pat.noise_generator) * amount
             }
             Special::Dents => dents(pat, lp, ln, amount),
+            Special::Quilted => match pat.kind {
+                PatternKind::Quilted { c0, c1 } => {
+                    ln + pattern::quilted_vector(pattern::warped(pat, lp), c0, c1) * amount
+                }
+                _ => ln,
+            },
             Special::Wrinkles => wrinkles(pat, lp, ln, amount),
             Special::Ripples | Special::Waves => waves(pat, *special, lp, ln, amount),
         },

@@ -232,6 +232,12 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
         PatternKind::Cells => {
             noise::cell_value(q.x.floor() as i64, q.y.floor() as i64, q.z.floor() as i64)
         }
+        PatternKind::Tiling(n) => super::tiling::value(*n, q),
+        PatternKind::Quilted { c0, c1 } => {
+            // Measured: a third of the cushion vector's component magnitudes.
+            let v = quilted_vector(q, *c0, *c1);
+            (v.x.abs() + v.y.abs() + v.z.abs()) / 3.0
+        }
         PatternKind::Fractal(f) => fractal(f, (q.x, q.y)),
         PatternKind::DensityFile(d) => d.eval(q),
         PatternKind::Object(o) => o.inside(q) as u8 as f64,
@@ -245,6 +251,19 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
         // Maps handle `average` themselves; as a plain value it is the middle.
         PatternKind::Unsupported | PatternKind::Average => 0.5,
     }
+}
+
+/// Quilted's cushion vector at `q`: the offset d from the centre of q's unit cube times
+/// (2/√3)·B(|d|), B the cubic Bézier through 0, `c0`, `c1`, 1. Measured with
+/// scripts/measure_pattern.py and scripts/measure_normals.py (docs/textures.md): the pattern
+/// value is a third of the vector's |x| + |y| + |z| and the normal is n + amount·vector, both
+/// to the printed precision at random points in ±3 for several control pairs.
+pub fn quilted_vector(q: DVec3, c0: f64, c1: f64) -> DVec3 {
+    let d = q - q.floor() - DVec3::splat(0.5);
+    let t = d.length();
+    let s = 1.0 - t;
+    let b = 3.0 * s * s * t * c0 + 3.0 * s * t * t * c1 + t * t * t;
+    d * (b * 2.0 / 3f64.sqrt())
 }
 
 /// 1 where a unit normal's cosine with a direction is 1, 0.5 at right angles, 0 opposite:

@@ -727,6 +727,8 @@ pub enum Special {
     Ripples,
     Waves,
     Wrinkles,
+    /// quilted: the cushion vector (`render::pattern::quilted_vector`) added to the normal.
+    Quilted,
 }
 
 #[derive(Clone, Debug)]
