@@ -11,6 +11,7 @@ mod dispersion;
 pub mod focal;
 mod fog;
 mod media;
+mod metallic;
 pub mod noise;
 mod noise_data;
 pub mod normal;

@@ -494,7 +494,8 @@ impl<'a> Tracer<'a> {
                         0.0
                     };
                     let amount = (refl.min + (refl.max - refl.min) * f) * w;
-                    let tinted = amount * (DVec3::ONE + (c.rgb - DVec3::ONE) * refl.metallic);
+                    // Measured: the tint fades to white at glancing angles (render::metallic).
+                    let tinted = amount * super::metallic::tint(c.rgb, refl.metallic, pcos);
                     refl_all_tinted += tinted;
                     if pmirror == mirror {
                         refl_amount += amount;
@@ -710,8 +711,6 @@ impl<'a> Tracer<'a> {
             (None, _) => ambient,
         };
         let mut col = (own + fin.emission) * c.rgb * opacity;
-        // Highlights take the surface colour in proportion to `metallic`.
-        let highlight_tint = DVec3::ONE + (c.rgb - DVec3::ONE) * fin.metallic;
         for lb in &ctx.lit {
             let (lc, l) = (lb.color, lb.l);
             if fin.diffuse > 0.0 {
@@ -735,6 +734,13 @@ impl<'a> Tracer<'a> {
             if lb.shadowless || lb.back {
                 continue;
             }
+            // Highlights take the surface colour in proportion to `metallic`, less so as the
+            // light grazes the surface (measured: render::metallic).
+            let highlight_tint = if fin.phong > 0.0 || fin.specular > 0.0 {
+                super::metallic::tint(c.rgb, fin.metallic, nf.dot(l))
+            } else {
+                DVec3::ONE
+            };
             if fin.phong > 0.0 {
                 let cos_r = mirror.dot(l);
                 if cos_r > 0.0 {

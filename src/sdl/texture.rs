@@ -555,11 +555,6 @@ impl Parser {
                         } else {
                             1.0
                         };
-                        if r.metallic != 0.0 {
-                            // Measured: a green metallic reflection 0.8 under conserve_energy
-                            // matches only to SSIM 0.99 (tests/probes_approx/conserve_metallic).
-                            self.warn(t.span, "'metallic' is not supported by lancer yet: a metallic reflection is tinted by the pigment, but POV-Ray's turn towards the light's colour at glancing angles is not drawn");
-                        }
                     }
                     _ => {
                         return Err(self.error_at(t.span, format!("unexpected '{k}' in reflection")))
