@@ -75,6 +75,7 @@ impl Pattern {
                 | PatternKind::Triangular
                 | PatternKind::Cubic
                 | PatternKind::Object(_)
+                | PatternKind::MaterialMap(..)
         )
     }
 }
@@ -148,6 +149,9 @@ pub enum PatternKind {
         c0: f64,
         c1: f64,
     },
+    /// `material_map { png "file" ... }`: the palette index of the image's pixel (planar,
+    /// spherical, cylindrical or torus mapping like an image map), which picks a listed texture.
+    MaterialMap(Arc<crate::scene::desc::ImageMap>, Arc<Vec<u8>>),
     /// `tiling N`, one of `TILINGS_MEASURED` (render::tiling).
     Tiling(u32),
     /// `mandel N` (`julia` None) or `julia <c>, N`: iterations of zⁿ + c from z = c = x + iy
