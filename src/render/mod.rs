@@ -10,6 +10,7 @@ mod cells_data;
 mod dispersion;
 pub mod focal;
 mod fog;
+mod irid;
 mod media;
 mod metallic;
 pub mod noise;
