@@ -488,7 +488,7 @@ impl<'a> Tracer<'a> {
                     Some(_) if rad_normal => Some(self.irradiance(p, pn, path, ctx)),
                     Some(_) => Some(*irr.get_or_insert_with(|| self.irradiance(p, nf, path, ctx))),
                 };
-                col += through * w * self.layer_light(&c, fin, dir, pn, pmirror, indirect, ctx);
+                col += through * w * self.layer_light(&c, fin, p, dir, pn, pmirror, indirect, ctx);
                 let refl = &fin.reflection;
                 if !refl.is_zero() && q.reflection {
                     refl_power = refl.power().or(refl_power);
@@ -508,7 +508,8 @@ impl<'a> Tracer<'a> {
                         0.0
                     };
                     let amount = (refl.min + (refl.max - refl.min) * f) * w;
-                    let tinted = amount * (DVec3::ONE + (c.rgb - DVec3::ONE) * refl.metallic);
+                    // Measured: the tint fades to white at glancing angles (render::metallic).
+                    let tinted = amount * super::metallic::tint(c.rgb, refl.metallic, pcos);
                     refl_all_tinted += tinted;
                     if pmirror == mirror {
                         refl_amount += amount;
@@ -735,6 +736,7 @@ impl<'a> Tracer<'a> {
         &self,
         c: &Rgbft,
         fin: &crate::scene::desc::Finish,
+        p: DVec3,
         dir: DVec3,
         nf: DVec3,
         mirror: DVec3,
@@ -750,10 +752,13 @@ impl<'a> Tracer<'a> {
             (None, _) => ambient,
         };
         let mut col = (own + fin.emission) * c.rgb * opacity;
-        // Highlights take the surface colour in proportion to `metallic`.
-        let highlight_tint = DVec3::ONE + (c.rgb - DVec3::ONE) * fin.metallic;
         for lb in &ctx.lit {
             let (lc, l) = (lb.color, lb.l);
+            // Iridescence scales the light's diffuse and highlight terms alike (measured).
+            let irid_f = match &fin.irid {
+                Some(irid) => super::irid::factor(irid, p, nf.dot(l), -dir.dot(nf)),
+                None => DVec3::ONE,
+            };
             if fin.diffuse > 0.0 {
                 // The same as lb.cos_n unless the normal was perturbed; a light behind a
                 // double-illuminated surface lights it as if from the front.
@@ -767,7 +772,7 @@ impl<'a> Tracer<'a> {
                     // crand darkens each light's diffuse term by its own random share
                     // (measured with povray: independent per light, uniform, ambient untouched).
                     let grainy = 1.0 - fin.crand * lb.grain;
-                    col += lc * c.rgb * (fin.diffuse * d * opacity * grainy);
+                    col += lc * irid_f * c.rgb * (fin.diffuse * d * opacity * grainy);
                 }
             }
             // POV-Ray 3.7 gives shadowless lights no highlights (tests/probes/shadowless_*),
@@ -775,17 +780,24 @@ impl<'a> Tracer<'a> {
             if lb.shadowless || lb.back {
                 continue;
             }
+            // Highlights take the surface colour in proportion to `metallic`, less so as the
+            // light grazes the surface (measured: render::metallic).
+            let highlight_tint = if fin.phong > 0.0 || fin.specular > 0.0 {
+                super::metallic::tint(c.rgb, fin.metallic, nf.dot(l))
+            } else {
+                DVec3::ONE
+            };
             if fin.phong > 0.0 {
                 let cos_r = mirror.dot(l);
                 if cos_r > 0.0 {
-                    col += lc * highlight_tint * (fin.phong * cos_r.powf(fin.phong_size));
+                    col += lc * irid_f * highlight_tint * (fin.phong * cos_r.powf(fin.phong_size));
                 }
             }
             if fin.specular > 0.0 {
                 let hv = (l - dir).normalize_or_zero();
                 let cos_h = nf.dot(hv);
                 if cos_h > 0.0 {
-                    col += lc * highlight_tint * (fin.specular * cos_h.powf(specular_exp));
+                    col += lc * irid_f * highlight_tint * (fin.specular * cos_h.powf(specular_exp));
                 }
             }
         }

@@ -737,6 +737,8 @@ pub enum Special {
     Ripples,
     Waves,
     Wrinkles,
+    /// quilted: the cushion vector (`render::pattern::quilted_vector`) added to the normal.
+    Quilted,
 }
 
 #[derive(Clone, Debug)]
@@ -754,6 +756,16 @@ pub struct Finish {
     pub conserve_energy: bool,
     /// `crand`: each light's diffuse term is scaled by 1 - crand·u, u uniform in [0, 1).
     pub crand: f64,
+    /// `irid { amount thickness t turbulence u }` (boxed: rare, and textures stay small).
+    pub irid: Option<Box<Irid>>,
+}
+
+/// Thin-film iridescence (render::irid).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Irid {
+    pub amount: f64,
+    pub thickness: f64,
+    pub turbulence: f64,
 }
 
 impl Default for Finish {
@@ -771,6 +783,7 @@ impl Default for Finish {
             reflection: Reflection::default(),
             conserve_energy: false,
             crand: 0.0,
+            irid: None,
         }
     }
 }

@@ -179,6 +179,11 @@ impl Parser {
                 }
                 "irid_wavelength" => {
                     self.parse_color()?;
+                    // Measured only for the default (docs/textures.md, irid).
+                    self.unsupported(
+                        "irid_wavelength (the default's measured wavelengths are used)",
+                        t.span,
+                    );
                 }
                 "radiosity" => self.parse_global_radiosity()?,
                 "photons" => {
