@@ -4,7 +4,7 @@
 use std::process::ExitCode;
 use std::time::Duration;
 
-use lancer::cli::{make_job, CheckArgs, CompareArgs, ConformanceArgs, RenderArgs};
+use lancer::cli::{make_job_with, CheckArgs, CompareArgs, ConformanceArgs, RenderArgs};
 use lancer::conformance::{self, report, Options};
 
 pub fn compare(a: CompareArgs) -> ExitCode {
@@ -35,7 +35,7 @@ pub fn compare(a: CompareArgs) -> ExitCode {
     }
 }
 
-pub fn check(a: CheckArgs, pov: &[String]) -> ExitCode {
+pub fn check(a: CheckArgs, config: &lancer::config::Config, pov: &[String]) -> ExitCode {
     let mut failed = 0;
     for file in &a.files {
         // The same options as a render of the file would get (+L, +W/+H, Declare=, +K, ...).
@@ -45,7 +45,7 @@ pub fn check(a: CheckArgs, pov: &[String]) -> ExitCode {
             safety: a.safety.clone(),
             ..RenderArgs::default()
         };
-        let job = match make_job(args, pov) {
+        let job = match make_job_with(args, config, pov) {
             Ok(j) => j,
             Err(e) => {
                 eprintln!("lancer check: {e}");

@@ -10,6 +10,7 @@ pub mod api;
 pub mod cli;
 pub mod color;
 pub mod compare;
+pub mod config;
 pub mod conformance;
 pub mod diag;
 pub mod func;
