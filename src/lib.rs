@@ -7,6 +7,7 @@
 
 pub mod anim;
 pub mod api;
+pub mod app;
 pub mod cli;
 pub mod color;
 pub mod compare;

@@ -1,14 +1,14 @@
-//! The `compare`, `check` and `conformance` subcommands of the `lancer` binary (rendering lives
-//! in main.rs). Each returns the process exit code.
+//! The `compare`, `check` and `conformance` subcommands of the `lancer` command (rendering
+//! lives in render_cmd.rs). Each returns the process exit code.
 
 use std::process::ExitCode;
 use std::time::Duration;
 
-use lancer::cli::{make_job_with, CheckArgs, CompareArgs, ConformanceArgs, RenderArgs};
-use lancer::conformance::{self, report, Options};
+use crate::cli::{make_job_with, CheckArgs, CompareArgs, ConformanceArgs, RenderArgs};
+use crate::conformance::{self, report, Options};
 
 pub fn compare(a: CompareArgs) -> ExitCode {
-    let (c, base) = match lancer::compare::compare_files(&a.a, &a.b) {
+    let (c, base) = match crate::compare::compare_files(&a.a, &a.b) {
         Ok(r) => r,
         Err(e) => {
             eprintln!("lancer compare: {}", e.0);
@@ -35,7 +35,7 @@ pub fn compare(a: CompareArgs) -> ExitCode {
     }
 }
 
-pub fn check(a: CheckArgs, config: &lancer::config::Config, pov: &[String]) -> ExitCode {
+pub fn check(a: CheckArgs, config: &crate::config::Config, pov: &[String]) -> ExitCode {
     let mut failed = 0;
     for file in &a.files {
         // The same options as a render of the file would get (+L, +W/+H, Declare=, +K, ...).
@@ -65,7 +65,7 @@ pub fn check(a: CheckArgs, config: &lancer::config::Config, pov: &[String]) -> E
             }
         }
         let opts = job.parse_options(&frame);
-        let parsed = lancer::api::parse_file(file, opts);
+        let parsed = crate::api::parse_file(file, opts);
         let sources = &parsed.parser.sources;
         if !a.quiet {
             for w in &parsed.parser.warnings {
@@ -163,8 +163,8 @@ fn run_conformance(a: ConformanceArgs) -> Result<ExitCode, String> {
             .transpose()?
             .unwrap_or_default();
         let md = report::markdown(&results, &header, &known);
-        lancer::output::write_text_atomic(&prefix.with_extension("md"), &md)?;
-        lancer::output::write_text_atomic(
+        crate::output::write_text_atomic(&prefix.with_extension("md"), &md)?;
+        crate::output::write_text_atomic(
             &prefix.with_extension("tsv"),
             &report::tsv(&results, &known),
         )?;
@@ -221,5 +221,5 @@ min_good {}\n",
         text.push_str(g);
         text.push('\n');
     }
-    lancer::output::write_text_atomic(path, &text)
+    crate::output::write_text_atomic(path, &text)
 }
