@@ -149,6 +149,10 @@ pub struct RenderArgs {
     /// No progress bar or statistics.
     #[arg(short, long)]
     pub quiet: bool,
+    /// Also print the lines POV-Ray prints on stderr (`File '...' line N: Parse Error: ...`,
+    /// the statistics with `Render Time`), as when lancer is invoked as `povray`.
+    #[arg(long)]
+    pub povray_messages: bool,
     #[command(flatten)]
     pub safety: SafetyArgs,
     /// POV-Ray style options (+W640 +H480 -A +A0.3 +R3 -J +Oout.png +Iscene.pov +Ldir +FN16 +FE

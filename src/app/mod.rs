@@ -10,6 +10,7 @@ use clap::Parser as _;
 use crate::cli::{make_job_with, split_args, Cli, Command};
 
 mod commands;
+pub mod povray_msgs;
 mod render_cmd;
 
 /// Runs the `lancer` command with `args` (the program name first) and returns its exit code:
@@ -19,11 +20,17 @@ pub fn run(args: Vec<String>) -> ExitCode {
     let mut ini_warnings = Vec::new();
     let raw = args;
     let hermetic = crate::config::disabled(&raw);
+    let as_povray = raw
+        .first()
+        .is_some_and(|a| povray_msgs::invoked_as_povray(a));
+    povray_msgs::set(as_povray || raw.iter().skip(1).any(|a| a == "--povray-messages"));
+    // POV-Ray exits with 1 when it cannot read its options; lancer has kept 2.
+    let usage = if as_povray { 1 } else { 2 };
     let args = match crate::ini::expand(raw, &mut ini_warnings) {
         Ok(a) => a,
         Err(e) => {
             eprintln!("lancer: {e}");
-            return ExitCode::from(2);
+            return ExitCode::from(usage);
         }
     };
     for w in &ini_warnings {
@@ -33,7 +40,7 @@ pub fn run(args: Vec<String>) -> ExitCode {
     let cli = match Cli::try_parse_from(clap_args) {
         Ok(c) => c,
         Err(e) => {
-            let code = if e.use_stderr() { 2 } else { 0 };
+            let code = if e.use_stderr() { usage } else { 0 };
             let _ = e.print();
             return ExitCode::from(code);
         }
@@ -54,23 +61,48 @@ pub fn run(args: Vec<String>) -> ExitCode {
             Ok(c) => c,
             Err(e) => {
                 eprintln!("lancer: {e}");
-                return ExitCode::from(2);
+                return ExitCode::from(usage);
             }
         },
         _ => crate::config::Config::default(),
     };
     match cli.command {
         Command::Render(args) => match make_job_with(args, &config, &pov) {
-            Ok(job) => render_cmd::render(job),
+            Ok(job) => {
+                on_abort_exit();
+                render_cmd::render(job)
+            }
             Err(e) => {
                 eprintln!("lancer: {e}");
-                ExitCode::from(2)
+                if povray_msgs::on() {
+                    eprintln!("Failed to parse command-line option");
+                }
+                ExitCode::from(usage)
             }
         },
         Command::Compare(args) => commands::compare(args),
         Command::Check(args) => commands::check(args, &config, &pov),
         Command::Conformance(args) => commands::conformance(args),
     }
+}
+
+/// A user abort (SIGINT, SIGTERM) ends a render at once with exit code 2, as povray's: no
+/// picture is written (pictures are renamed into place only when complete).
+fn on_abort_exit() {
+    use signal_hook::consts::{SIGINT, SIGTERM};
+    let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM]) else {
+        return;
+    };
+    std::thread::spawn(move || {
+        if let Some(sig) = signals.forever().next() {
+            povray_msgs::aborted(if sig == SIGINT {
+                "SIGINT: Interrupt"
+            } else {
+                "SIGTERM: Termination"
+            });
+            std::process::exit(2);
+        }
+    });
 }
 
 /// `run`'s exit code as a number, for callers that are not a Rust `main` (the Python module).

@@ -10,6 +10,8 @@ use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
 use crate::anim::Frame;
 use crate::cli::Job;
 
+use super::povray_msgs;
+
 pub fn render(job: Job) -> ExitCode {
     for w in &job.warnings {
         eprintln!("warning: {w}");
@@ -33,6 +35,7 @@ pub fn render(job: Job) -> ExitCode {
         Ok(p) => p,
         Err(e) => {
             eprintln!("lancer: {e}");
+            povray_msgs::render_failed();
             return ExitCode::from(1);
         }
     };
@@ -165,6 +168,12 @@ fn render_frame(
     }
     if let Some(e) = &parsed.error {
         e.emit_stderr(sources);
+        if !job.scene.is_file() {
+            povray_msgs::missing_input(&job.scene.display().to_string());
+        } else {
+            let place = crate::api::ErrorPlace::of(e, sources);
+            povray_msgs::parse_error(place.file.as_deref(), place.line, &e.message);
+        }
         return ExitCode::from(1);
     }
     let parse_time = start.elapsed();
@@ -205,6 +214,7 @@ fn render_frame(
             if job.write_output {
                 if let Err(e) = crate::output::write(&film, &f.output, &job.output_spec) {
                     eprintln!("lancer: {e}");
+                    povray_msgs::render_failed();
                     return ExitCode::from(1);
                 }
             }
@@ -231,6 +241,7 @@ fn render_frame(
                 Ok(c) => c,
                 Err(e) => {
                     eprintln!("lancer: {e}");
+                    povray_msgs::render_failed();
                     return ExitCode::from(1);
                 }
             };
@@ -247,6 +258,19 @@ fn render_frame(
             )
         }
     };
+    povray_msgs::statistics(
+        &povray_msgs::Stats {
+            width: w,
+            height: h,
+            parse_seconds: parse_time.as_secs_f64(),
+            build_seconds: build_time.as_secs_f64(),
+            trace_seconds: trace_start.elapsed().as_secs_f64(),
+            rays,
+            camera_rays,
+            threads: rayon::current_num_threads(),
+        },
+        last,
+    );
     if !job.quiet {
         let peak = crate::stats::peak_rss_bytes()
             .map_or(String::new(), |b| format!(", peak {} MB", b / (1 << 20)));
