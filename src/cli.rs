@@ -49,6 +49,9 @@ pub struct CompareArgs {
     /// Write a heat map of where the pictures differ (PNG).
     #[arg(long, value_name = "PNG")]
     pub diff: Option<PathBuf>,
+    /// Write an HTML page (one file) with both pictures, the heat map and the numbers.
+    #[arg(long, value_name = "HTML")]
+    pub html: Option<PathBuf>,
 }
 
 #[derive(Args, Debug)]
@@ -75,7 +78,7 @@ pub struct ConformanceArgs {
     /// than N reach SSIM 0.95.
     #[arg(long)]
     pub subset: Option<PathBuf>,
-    /// Write the report to PREFIX.md and PREFIX.tsv.
+    /// Write the report to PREFIX.md, PREFIX.tsv and PREFIX.html (pictures in PREFIX_files/).
     #[arg(long, value_name = "PREFIX")]
     pub report: Option<PathBuf>,
     /// Write a subset file for CI: the scenes at SSIM ≥ 0.95 that POV-Ray renders within

@@ -16,6 +16,7 @@ pub mod conformance;
 pub mod diag;
 pub mod func;
 pub mod geom;
+pub mod html_report;
 pub mod ini;
 pub mod math;
 pub mod output;

@@ -23,6 +23,28 @@ pub fn compare(a: CompareArgs) -> ExitCode {
             return ExitCode::from(2);
         }
     }
+    if let Some(path) = &a.html {
+        let page = (|| -> Result<String, String> {
+            let pb = crate::ssim::Picture::load(&a.b)?;
+            Ok(crate::html_report::compare_page(
+                &a.a.display().to_string(),
+                &a.b.display().to_string(),
+                &crate::compare::picture_png(&base)?,
+                &crate::compare::picture_png(&pb)?,
+                &c.heat_map_png(&base)?,
+                &c,
+            ))
+        })();
+        let written = page.and_then(|p| {
+            crate::output::write_atomic(path, |tmp| {
+                std::fs::write(tmp, p.as_bytes()).map_err(|e| e.to_string())
+            })
+        });
+        if let Err(e) = written {
+            eprintln!("lancer compare: cannot write the HTML page: {e}");
+            return ExitCode::from(2);
+        }
+    }
     match a.min_ssim {
         Some(min) if c.ssim < min => {
             eprintln!(
@@ -142,7 +164,11 @@ fn run_conformance(a: ConformanceArgs) -> Result<ExitCode, String> {
         povray: a.povray.clone(),
         lancer,
         verbose: !a.quiet,
+        pictures: a.report.as_ref().map(|p| files_dir(p)),
     };
+    if let Some(d) = &o.pictures {
+        std::fs::create_dir_all(d).map_err(|e| format!("cannot create {}: {e}", d.display()))?;
+    }
     let results = conformance::run(&o)?;
     let summary = report::summarize(&results);
     println!("{}", summary.line());
@@ -168,6 +194,30 @@ fn run_conformance(a: ConformanceArgs) -> Result<ExitCode, String> {
             &prefix.with_extension("tsv"),
             &report::tsv(&results, &known),
         )?;
+        let dir = files_dir(prefix);
+        let rel = dir.file_name().map(|n| n.to_string_lossy().into_owned());
+        let pictures: Vec<_> = results
+            .iter()
+            .map(|r| {
+                let names = conformance::picture_names(&r.name);
+                let at = |n: &String| format!("{}/{n}", rel.clone().unwrap_or_default());
+                dir.join(&names[2])
+                    .exists()
+                    .then(|| crate::html_report::ScenePictures {
+                        povray: at(&names[0]),
+                        lancer: at(&names[1]),
+                        diff: at(&names[2]),
+                    })
+            })
+            .collect();
+        let page = crate::html_report::conformance_page(
+            "lancer conformance",
+            &format!("{} {header}", summary.line()),
+            &results,
+            &pictures,
+            a.width,
+        );
+        crate::output::write_text_atomic(&prefix.with_extension("html"), &page)?;
     }
     if let Some(path) = &a.write_subset {
         write_subset(path, &results, a.subset_seconds)?;
@@ -186,6 +236,13 @@ fn run_conformance(a: ConformanceArgs) -> Result<ExitCode, String> {
         );
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// Where the HTML report's pictures go: `PREFIX_files` beside `PREFIX.html`.
+fn files_dir(prefix: &std::path::Path) -> std::path::PathBuf {
+    let mut name = prefix.file_name().unwrap_or_default().to_os_string();
+    name.push("_files");
+    prefix.with_file_name(name)
 }
 
 /// The CI subset: every good scene POV-Ray renders quickly, so CI can afford to render them
