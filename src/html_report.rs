@@ -42,7 +42,7 @@ th.sorted-desc::after{content:' \\25BC'}td.num{text-align:right;font-variant-num
 img{image-rendering:pixelated;border:1px solid #999;display:block}\
 figure{display:inline-block;margin:0 12px 12px 0}figcaption{font-size:90%;color:#555}\
 .good{background:#e3f6e3}.close{background:#fff6d6}.low{background:#fde2e2}\
-.fail{background:#f0e0f6}.pics{white-space:nowrap}";
+.fail{background:#f0e0f6}.pics{white-space:nowrap}td.detail{min-width:9em;max-width:22em}";
 
 /// Sorts the table `#results` by the clicked column: by `data-v` when the cell has one
 /// (numbers), else by text; clicking again reverses. `page.html#sort=2` (`#sort=-2`) opens it
@@ -60,10 +60,12 @@ document.querySelectorAll('#results th').forEach(function (th, col) {
     function key(r) {
       var c = r.cells[col];
       var v = c.getAttribute('data-v');
-      return v === null ? c.textContent.trim().toLowerCase() : parseFloat(v);
+      return v === null ? c.textContent.trim().toLowerCase() : v === '' ? null : parseFloat(v);
     }
     rows.sort(function (a, b) {
       var x = key(a), y = key(b);
+      // Rows without a value (no SSIM: errors, POV-Ray failures) stay last either way.
+      if (x === null || y === null) return (x === null) - (y === null);
       var r = x < y ? -1 : x > y ? 1 : 0;
       return asc ? r : -r;
     });
@@ -174,7 +176,7 @@ pub fn conformance_page(
         t = escape(title),
     );
     for (i, r) in results.iter().enumerate() {
-        let ssim = r.ssim.map_or(("-1".to_string(), "—".to_string()), |s| {
+        let ssim = r.ssim.map_or((String::new(), "—".to_string()), |s| {
             (format!("{s:.6}"), format!("{s:.4}"))
         });
         let detail = match &r.class {
@@ -203,7 +205,7 @@ pub fn conformance_page(
         let _ = writeln!(
             h,
             "<tr class=\"{css}\"><td class=\"num\" data-v=\"{n}\">{n}</td><td>{name}</td>\
-             <td class=\"num\" data-v=\"{sv}\">{st}</td><td>{detail}</td><td class=\"pics\">\
+             <td class=\"num\" data-v=\"{sv}\">{st}</td><td class=\"detail\">{detail}</td><td class=\"pics\">\
              {pics}</td><td data-v=\"{nm}\">{missing}</td><td class=\"num\" data-v=\"{ls:.3}\">\
              {ls:.2}</td><td class=\"num\" data-v=\"{ps:.3}\">{ps:.2}</td></tr>",
             css = class_css(&r.class),

@@ -212,7 +212,7 @@ fn run_conformance(a: ConformanceArgs) -> Result<ExitCode, String> {
             .collect();
         let page = crate::html_report::conformance_page(
             "lancer conformance",
-            &format!("{} {header}", summary.line()),
+            &format!("{}. {header}", summary.line()),
             &results,
             &pictures,
             a.width,
