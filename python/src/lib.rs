@@ -5,7 +5,7 @@
 //! (povray.ini, povray.conf) are not read: a library call depends only on its arguments.
 
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::atomic::Ordering;
 
 use lancer::anim::Frame;
 use lancer::api::ErrorPlace;
@@ -121,10 +121,14 @@ fn render_frame(
     let built = lancer::scene::build::build(&parsed.parser.scene, w, h);
     drop(parsed);
     warnings.extend(built.warnings.iter().cloned());
-    let done = AtomicU64::new(0);
+    // The count and the call under one lock, so the callback sees the rows in order and its
+    // last call is (total, total) whichever worker finishes last.
+    let done = std::sync::Mutex::new(0u64);
     let total = h as u64;
     let report = |n: u64| {
-        let d = done.fetch_add(n, Ordering::Relaxed) + n;
+        let mut done = done.lock().unwrap_or_else(|e| e.into_inner());
+        *done += n;
+        let d = *done;
         if let Some(cb) = progress {
             Python::with_gil(|py| {
                 if let Err(e) = cb.call1(py, (d.min(total), total)) {
