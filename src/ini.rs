@@ -33,6 +33,13 @@ pub fn expand(args: Vec<String>, warnings: &mut Vec<String>) -> Result<Vec<Strin
     Ok(out)
 }
 
+/// The switches one INI file holds (its unlabelled top), as for a main INI file.
+pub fn expand_file(path: &Path, warnings: &mut Vec<String>) -> Result<Vec<String>, String> {
+    let mut out = Vec::new();
+    read(path, None, 0, &mut out, warnings)?;
+    Ok(out)
+}
+
 /// `name.ini[Section]` → the file and the section, when the argument names an INI file.
 fn ini_reference(arg: &str, dir: &Path) -> Option<(PathBuf, Option<String>)> {
     if arg.starts_with(['+', '-']) {
