@@ -156,7 +156,7 @@ impl Internal {
         match self {
             Internal::Unknown(n) => Some(match NAMES.get(n as usize) {
                 Some(name) => format!(
-                    "'{name}' (internal function {n} of functions.inc) is not supported by lancer yet"
+                    "'{name}' is not supported by lancer yet (internal function {n} of functions.inc)"
                 ),
                 None => format!("POV-Ray 3.7 has no internal function {n}"),
             }),
