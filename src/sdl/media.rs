@@ -45,7 +45,14 @@ impl Parser {
                     };
                     m.samples = (lo, hi.max(lo));
                 }
-                "aa_level" => m.aa_level = self.parse_float()?.round().max(0.0) as u32,
+                "aa_level" => {
+                    let v = self.parse_float()?;
+                    if v < 1.0 {
+                        // As povray: "aa_level in media must be at least one."
+                        return Err(self.error_at(t.span, "aa_level in media must be at least 1"));
+                    }
+                    m.aa_level = v as u32;
+                }
                 "aa_threshold" => m.aa_threshold = self.parse_float()?,
                 "jitter" => m.jitter = self.parse_float()?,
                 "confidence" | "variance" | "ratio" => {
