@@ -203,10 +203,10 @@ fn switch_for(key: &str, value: &str) -> Result<Option<String>, String> {
         "bits_per_color" | "file_gamma" | "dither_method" | "compression" => {
             Ok(Some(format!("+{key}={value}")))
         }
-        // Display, pause, verbosity, statistics and text streams do not change the picture.
-        "display"
-        | "pause_when_done"
-        | "verbose"
+        "display" => flag("D"),
+        "pause_when_done" => flag("P"),
+        // Verbosity, statistics and text streams do not change the picture.
+        "verbose"
         | "test_abort"
         | "test_abort_count"
         | "display_gamma"
@@ -304,7 +304,8 @@ mod tests {
                 "+H60",
                 "+KFI1",
                 "+KFF20",
-                "+KC"
+                "+KC",
+                "-P"
             ]
         );
         assert_eq!(w.len(), 1);

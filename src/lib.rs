@@ -17,6 +17,7 @@ pub mod geom;
 pub mod ini;
 pub mod math;
 pub mod output;
+pub mod preview;
 pub mod render;
 pub mod scene;
 pub mod sdl;

@@ -34,7 +34,13 @@ fn main() -> ExitCode {
     };
     match cli.command {
         Command::Render(args) => match make_job(args, &pov) {
-            Ok(job) => render_cmd::render(job),
+            Ok(job) => {
+                let (display, pause) = (job.display, job.pause);
+                let size = (job.settings.width, job.settings.height);
+                lancer::preview::display::run(display, pause, size, move |feed| {
+                    render_cmd::render(job, feed)
+                })
+            }
             Err(e) => {
                 eprintln!("lancer: {e}");
                 ExitCode::from(2)
@@ -43,5 +49,20 @@ fn main() -> ExitCode {
         Command::Compare(args) => commands::compare(args),
         Command::Check(args) => commands::check(args, &pov),
         Command::Conformance(args) => commands::conformance(args),
+        Command::Preview(args) => match make_job(args.render, &pov) {
+            Ok(job) => {
+                let options = lancer::preview::Options {
+                    screenshot: args.screenshot,
+                    screenshot_exit: args.exit_after_screenshot,
+                    bench: args.bench,
+                    follow_scene_camera: true,
+                };
+                ExitCode::from(lancer::preview::run(job, options))
+            }
+            Err(e) => {
+                eprintln!("lancer: {e}");
+                ExitCode::from(2)
+            }
+        },
     }
 }

@@ -33,6 +33,30 @@ pub struct Camera {
 }
 
 impl Camera {
+    /// This camera moved to `location` with new axes (the preview window's camera): the same
+    /// projection; a focal-blur lens turns with the view.
+    pub fn posed(&self, location: DVec3, direction: DVec3, right: DVec3, up: DVec3) -> Camera {
+        let frame = |d: DVec3, r: DVec3, u: DVec3| {
+            glam::DMat3::from_cols(
+                r.normalize_or(DVec3::X),
+                u.normalize_or(DVec3::Y),
+                d.normalize_or(DVec3::Z),
+            )
+        };
+        // The turn taking the old axes to the new ones (both frames orthonormal up to
+        // lengths, so the inverse of the old is its transpose).
+        let turn =
+            frame(direction, right, up) * frame(self.direction, self.right, self.up).transpose();
+        Camera {
+            location,
+            direction,
+            right,
+            up,
+            lens: self.lens.as_ref().map(|l| l.turned(|v| turn * v)),
+            ..self.clone()
+        }
+    }
+
     pub fn new(d: &CameraDesc, width: u32, height: u32) -> Camera {
         let mut dir = d.direction;
         let mut right = d.right;
