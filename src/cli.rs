@@ -53,6 +53,9 @@ pub struct PreviewArgs {
     /// Orbit the camera for SECONDS, print the frame rate and close (benchmarks).
     #[arg(long, value_name = "SECONDS")]
     pub bench: Option<f64>,
+    /// Render every view at full resolution, without the coarse levels.
+    #[arg(long)]
+    pub full_resolution: bool,
 }
 
 #[derive(Args, Debug)]

@@ -55,6 +55,7 @@ fn main() -> ExitCode {
                     screenshot: args.screenshot,
                     screenshot_exit: args.exit_after_screenshot,
                     bench: args.bench,
+                    full_resolution: args.full_resolution,
                     follow_scene_camera: true,
                 };
                 ExitCode::from(lancer::preview::run(job, options))

@@ -242,11 +242,11 @@ impl App {
         if scroll != 0.0 {
             pose.translate(pose.reach() * f64::from(scroll) * 0.002, 0.0, 0.0);
         }
-        if let Some((start, _)) = self.bench {
-            // A steady orbit stands in for a mouse drag: the same views each run.
-            let dt = ctx.input(|i| i.stable_dt.min(0.1) as f64);
-            let _ = start;
-            pose.orbit(0.5 * dt, 0.0);
+        if let (Some((start, _)), Some(from)) = (&self.bench, self.scene_pose) {
+            // A steady orbit of 0.5 radian a second stands in for a mouse drag: the same
+            // views each run, whatever the frame rate.
+            pose = from;
+            pose.orbit(0.5 * start.elapsed().as_secs_f64(), 0.0);
         }
         if pose == before {
             return false;
@@ -557,10 +557,11 @@ impl eframe::App for App {
             ctx.send_viewport_cmd(egui::ViewportCommand::Close);
         }
         // Keep polling the keys while one is held (the worker's pictures wake the window
-        // otherwise), at most 100 times a second.
+        // otherwise), 60 times a second as a mouse or key repeat would; each repaint costs
+        // CPU the renderer shares (the window itself is drawn in software under Xvfb).
         let held = ctx.input(|i| !i.keys_down.is_empty() || i.pointer.any_down());
         if held || self.bench.is_some() || self.options.bench.is_some() {
-            ctx.request_repaint_after(Duration::from_millis(10));
+            ctx.request_repaint_after(Duration::from_millis(16));
         }
     }
 

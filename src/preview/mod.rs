@@ -25,6 +25,8 @@ pub struct Options {
     pub screenshot_exit: bool,
     /// Orbit the camera for this many seconds, print the frame rate and close.
     pub bench: Option<f64>,
+    /// Start with "full resolution only" on: no coarse levels.
+    pub full_resolution: bool,
     /// A newly opened scene shows its own camera (always, except in tests that keep a pose).
     pub follow_scene_camera: bool,
 }
@@ -68,7 +70,7 @@ pub fn run(job: Job, options: Options) -> u8 {
         max_trace_level: None,
         threads,
         pose: None,
-        full_only: false,
+        full_only: options.full_resolution,
         quit: false,
     };
     let (w, h) = (job.settings.width as f32, job.settings.height as f32);

@@ -145,23 +145,34 @@ impl View<'_> {
         true
     }
 
-    /// The picture so far, each block filled with its traced corner, as 8-bit RGB.
+    /// The picture so far, each block filled with its traced corner, as 8-bit RGB. Only the
+    /// corners are converted (the conversion costs as much as a coarse level otherwise).
     pub fn preview_rgb8(&self, p: &Progress) -> Vec<u8> {
         let s = self.s;
         let (w, h) = (s.width as usize, s.height as usize);
         let b = p.done.unwrap_or(1);
-        let filled: Vec<Seen> = if b == 1 {
-            p.samples.clone()
-        } else {
-            (0..w * h)
-                .map(|i| {
-                    let (x, y) = (i % w, i / w);
-                    p.samples[(y - y % b) * w + x - x % b]
-                })
-                .collect()
-        };
         let gamma = self.tracer.scene.gamma;
-        crate::output::to_rgb8(&film_of(&filled, s, s.height, gamma, (0, 0)))
+        if b == 1 {
+            return crate::output::to_rgb8(&film_of(&p.samples, s, s.height, gamma, (0, 0)));
+        }
+        let (cw, ch) = (w.div_ceil(b), h.div_ceil(b));
+        let corners: Vec<Seen> = (0..cw * ch)
+            .map(|i| p.samples[(i / cw) * b * w + (i % cw) * b])
+            .collect();
+        let small = RenderSettings {
+            width: cw as u32,
+            height: ch as u32,
+            ..s.clone()
+        };
+        let rgb = crate::output::to_rgb8(&film_of(&corners, &small, ch as u32, gamma, (0, 0)));
+        let mut out = vec![0u8; w * h * 3];
+        for (y, row) in out.chunks_mut(w * 3).enumerate() {
+            let src = &rgb[(y / b) * cw * 3..];
+            for (x, px) in row.chunks_mut(3).enumerate() {
+                px.copy_from_slice(&src[(x / b) * 3..(x / b) * 3 + 3]);
+            }
+        }
+        out
     }
 
     /// The finished picture: anti-aliasing as the batch render does it, over the samples of
@@ -248,6 +259,37 @@ mod tests {
             assert_eq!(film.pixels, batch.pixels);
             assert_eq!(film.rays, batch.rays);
         }
+    }
+
+    /// A coarse level's picture is each block's corner pixel, converted as the final one.
+    #[test]
+    fn coarse_picture_fills_blocks_with_their_corner() {
+        let s = RenderSettings {
+            width: 21,
+            height: 11,
+            ..RenderSettings::default()
+        };
+        let sc = scene(
+            "camera { location -3*z look_at 0 } light_source { <2, 3, -4> 1 }
+             sphere { 0, 1 pigment { gradient x color_map { [0 rgb 0] [1 rgb 1] } } }",
+            s.width,
+            s.height,
+        );
+        with_view(&sc, &s, &Switches::of(&s), None, |v| {
+            let mut p = v.start();
+            assert!(v.level(&mut p, 4, &|| false));
+            let coarse = v.preview_rgb8(&p);
+            for b in [2, 1] {
+                assert!(v.level(&mut p, b, &|| false));
+            }
+            let fine = v.preview_rgb8(&p);
+            for y in 0..11 {
+                for x in 0..21 {
+                    let (i, c) = ((y * 21 + x) * 3, ((y - y % 4) * 21 + x - x % 4) * 3);
+                    assert_eq!(coarse[i..i + 3], fine[c..c + 3], "pixel {x},{y}");
+                }
+            }
+        });
     }
 
     #[test]
