@@ -301,6 +301,42 @@ fn keys_move_the_camera_as_they_say() {
     p.quit();
 }
 
+/// Live editing: saving the scene re-renders it; a parse error is printed with its place and
+/// the picture kept; fixing it renders again.
+#[test]
+fn saving_the_scene_renders_it_again() {
+    let _one = WINDOW.lock().unwrap_or_else(|e| e.into_inner());
+    let Some(()) = display("saving_the_scene") else {
+        return;
+    };
+    let dir = workdir("live");
+    let saved = dir.join("saved.png");
+    let o = format!("+O{}", saved.display());
+    let p = Preview::start(&dir, &["+W48", "+H36", "-A", &o]);
+    // An editor's save: a new file renamed over the old one.
+    let save = |text: &str| {
+        std::fs::write(dir.join("scene.tmp"), text).unwrap();
+        std::fs::rename(dir.join("scene.tmp"), dir.join("scene.pov")).unwrap();
+    };
+    save(&SCENE.replace("sphere { 0, 1", "sphere { 0, 1 syntax error"));
+    let err = p.wait_for("lancer preview: error:");
+    assert!(err.contains("scene.pov:4:"), "{err}");
+    let green = SCENE.replace("<0.9, 0.3, 0.2>", "<0.1, 0.8, 0.2>");
+    save(&green);
+    p.wait_for("lancer preview: refined");
+    p.key("ctrl+s");
+    p.wait_for("lancer preview: saved");
+    std::fs::copy(dir.join("scene.pov"), dir.join("green.pov")).unwrap();
+    let st = lancer()
+        .current_dir(&dir)
+        .args(["green.pov", "+W48", "+H36", "-A", "+Ogreen.png", "-q"])
+        .status()
+        .unwrap();
+    assert!(st.success());
+    assert_eq!(pixels(&saved), pixels(&dir.join("green.png")));
+    p.quit();
+}
+
 #[test]
 fn screenshot_of_the_window_is_written() {
     let _one = WINDOW.lock().unwrap_or_else(|e| e.into_inner());

@@ -433,7 +433,7 @@ impl App {
         let warnings = sh.warnings.len();
         let refined = sh.film.is_some();
         drop(sh);
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             ui.monospace(format!("{:>3} fps", self.arrivals.len()));
             ui.separator();
             let what = if refined {
@@ -452,7 +452,7 @@ impl App {
             if let Some(p) = self.pose {
                 ui.separator();
                 let l = p.location;
-                ui.monospace(format!("camera <{:.3}, {:.3}, {:.3}>", l.x, l.y, l.z));
+                ui.monospace(format!("camera <{:.2}, {:.2}, {:.2}>", l.x, l.y, l.z));
             }
             if warnings > 0 {
                 ui.separator();
