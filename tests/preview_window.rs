@@ -298,6 +298,27 @@ fn keys_move_the_camera_as_they_say() {
     for i in 0..3 {
         assert!((l5[i] - l0[i]).abs() < 1e-6 && (d5[i] - d0[i]).abs() < 1e-6);
     }
+    // A mouse drag on the picture (the toolbox is about 350 pixels wide, the picture right
+    // of it) orbits around the look_at point: the camera moves, the distance stays.
+    p.focus();
+    p.xdo(&["mousemove", "--window", &p.window, "380", "25"]);
+    p.xdo(&["mousedown", "1"]);
+    for _ in 0..4 {
+        p.xdo(&["mousemove_relative", "--", "10", "0"]);
+        std::thread::sleep(Duration::from_millis(40));
+    }
+    p.xdo(&["mouseup", "1"]);
+    let (l6, d6) = p.camera();
+    let dist = |l: [f64; 3]| (l[0] * l[0] + l[1] * l[1] + l[2] * l[2]).sqrt();
+    assert!((l6[0] - l0[0]).abs() > 1e-3, "the drag did not orbit");
+    assert!(
+        (dist(l6) - dist(l0)).abs() < 1e-6,
+        "orbit changed the distance"
+    );
+    // Still facing the look_at point (the origin).
+    for i in 0..3 {
+        assert!((d6[i] + l6[i] / dist(l6)).abs() < 1e-6);
+    }
     p.quit();
 }
 

@@ -40,6 +40,10 @@ pub struct App {
     changed: Arc<AtomicBool>,
     playing: bool,
     frames: usize,
+    /// Each frame's number and clock, for the slider's label.
+    frame_clocks: Vec<(i64, f64)>,
+    /// The scene's camera changed on a load: render it instead of the pose the keys made.
+    follow: bool,
     /// The pose the keys and mouse move; None until the scene is loaded.
     pose: Option<Pose>,
     scene_pose: Option<Pose>,
@@ -52,11 +56,12 @@ pub struct App {
 
 impl App {
     pub fn new(job: Arc<Job>, shared: Arc<Shared>, options: Options) -> App {
-        let frames = job
+        let frame_clocks: Vec<(i64, f64)> = job
             .animation
             .frames(&job.output)
-            .map(|f| f.len())
-            .unwrap_or(1);
+            .map(|f| f.iter().map(|f| (f.number, f.clock)).collect())
+            .unwrap_or_default();
+        let frames = frame_clocks.len().max(1);
         let open_path = job.scene.display().to_string();
         App {
             job,
@@ -74,6 +79,8 @@ impl App {
             changed: Arc::new(AtomicBool::new(false)),
             playing: false,
             frames,
+            frame_clocks,
+            follow: false,
             pose: None,
             scene_pose: None,
             copied: None,
@@ -100,7 +107,12 @@ impl App {
                 || sh.scene_pose.is_some_and(|p| Some(p) != self.scene_pose);
             if let Some(p) = sh.scene_pose {
                 if self.pose.is_none() || new_scene && self.options.follow_scene_camera {
+                    // The scene's camera changed (an edit, another frame of an animation, another
+                    // scene): show it, leaving the pose the keys had made.
                     self.pose = Some(p);
+                    if self.scene_pose.is_some() {
+                        self.follow = true;
+                    }
                 }
                 self.scene_pose = Some(p);
             }
@@ -114,6 +126,11 @@ impl App {
                 changed.store(true, Ordering::SeqCst);
                 repaint.request_repaint();
             });
+        }
+        if std::mem::take(&mut self.follow) {
+            drop(sh);
+            self.shared.ask(|w| w.pose = None);
+            return;
         }
         if sh.pictures == self.uploaded || sh.rgb8.is_empty() {
             return;
@@ -326,7 +343,12 @@ impl App {
         if self.frames > 1 {
             ui.separator();
             let mut f = w.frame;
-            ui.add(egui::Slider::new(&mut f, 0..=self.frames - 1).text("Frame"));
+            let (n, clock) = self.frame_clocks.get(f).copied().unwrap_or((0, 0.0));
+            ui.add(
+                egui::Slider::new(&mut f, 0..=self.frames - 1)
+                    .show_value(false)
+                    .text(format!("frame {n}, clock {clock:.3}")),
+            );
             w.frame = f;
             ui.checkbox(&mut self.playing, "Play");
         }
