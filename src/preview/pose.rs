@@ -15,6 +15,8 @@ pub struct Pose {
     pub up: DVec3,
     /// The orbit centre: the scene's look_at point, carried along by translations.
     pub pivot: DVec3,
+    /// Not a plain perspective camera: what it is (see `Camera::unusual_kind`).
+    pub unusual: Option<&'static str>,
 }
 
 /// A turn of `angle` radians around unit `axis` (Rodrigues' formula): around +y a positive
@@ -39,6 +41,7 @@ impl Pose {
             right: camera.right,
             up: camera.up,
             pivot,
+            unusual: camera.unusual_kind(),
         }
     }
 
@@ -116,6 +119,16 @@ impl Pose {
     /// (POV-Ray applies angle, then look_at with sky, whatever order they are written in).
     pub fn camera_block(&self) -> String {
         let v = |v: DVec3| format!("<{}, {}, {}>", fmt(v.x), fmt(v.y), fmt(v.z));
+        if let Some(kind) = self.unusual {
+            // angle and look_at mean other things there: the axes as they are, with a note.
+            return format!(
+                "// the scene's camera is {kind}: add its projection keyword and items; this gives the view's place and axes\ncamera {{\n  location {}\n  right {}\n  up {}\n  direction {}\n}}\n",
+                v(self.location),
+                v(self.right),
+                v(self.up),
+                v(self.direction),
+            );
+        }
         let look = self.location + self.direction.normalize_or(DVec3::Z) * self.reach();
         format!(
             "camera {{\n  perspective\n  location {}\n  right {}\n  up {}\n  sky {}\n  angle {}\n  look_at {}\n}}\n",
@@ -187,6 +200,17 @@ mod tests {
             q.direction.normalize(),
             (q.pivot - q.location).normalize()
         ));
+    }
+
+    #[test]
+    fn unusual_cameras_get_their_axes_and_a_note() {
+        let (c, look) = camera("camera { orthographic location <0, 0, -5> look_at 0 }");
+        let block = Pose::of(&c, look).camera_block();
+        assert!(
+            block.starts_with("// the scene's camera is orthographic"),
+            "{block}"
+        );
+        assert!(block.contains("direction") && !block.contains("angle"));
     }
 
     #[test]

@@ -146,6 +146,26 @@ impl Camera {
     }
 
     /// The mesh camera, when the scene has one: its pixels take several rays or none.
+    /// What kind of camera this is when it is not a plain perspective one (the preview's
+    /// copied camera block cannot say everything about those).
+    pub fn unusual_kind(&self) -> Option<&'static str> {
+        if self.mesh.is_some() {
+            return Some("a mesh camera");
+        }
+        if self.orthographic {
+            return Some("orthographic");
+        }
+        match self.projection {
+            Projection::Perspective => None,
+            Projection::Fisheye => Some("fisheye"),
+            Projection::UltraWideAngle => Some("ultra_wide_angle"),
+            Projection::Omnimax => Some("omnimax"),
+            Projection::Panoramic => Some("panoramic"),
+            Projection::Spherical => Some("spherical"),
+            Projection::Cylinder(_) => Some("cylinder"),
+        }
+    }
+
     pub fn mesh(&self) -> Option<&MeshCamera> {
         self.mesh.as_deref()
     }
