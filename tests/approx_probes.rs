@@ -9,8 +9,6 @@
 //! last-bit differences of grazing rays. `parametric`: lancer draws a fine smooth mesh where
 //! povray subdivides (u, v) space per ray; outlines and uv texture agree (0.98), shading
 //! differs a little near the surface's inner edge.
-//! `conserve_metallic` (0.99; 0.81 before conserve_energy took the tinted reflection): the
-//! rest is the angle-dependent part of a metallic reflection, not matched yet.
 //! `media_density` (0.998): varying densities are sampled adaptively, and povray's rule
 //! for halving a step is not measured exactly.
 

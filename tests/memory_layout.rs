@@ -24,8 +24,9 @@ fn per_object_types_stay_small() {
     assert!(size_of::<ShapeDesc>() <= 80, "{}", size_of::<ShapeDesc>());
     // Texture 320 -> 336 and Pigment 104 -> 112 knowingly: `crand` in the finish and the
     // `uv_mapping` flags of texture and pigment. Objects given a declared texture share it
-    // (test below), so few objects hold a copy of their own.
-    assert!(size_of::<Texture>() <= 336, "{}", size_of::<Texture>());
+    // (test below), so few objects hold a copy of their own. 336 -> 344 knowingly: the finish's
+    // `irid` pointer (boxed, so the 24 bytes of its parameters stay out of every texture).
+    assert!(size_of::<Texture>() <= 344, "{}", size_of::<Texture>());
     assert!(size_of::<Pigment>() <= 112, "{}", size_of::<Pigment>());
     // Object 176 -> 192 knowingly: the `interior_texture` pointer and the `hollow` flag (fog
     // stops inside solid objects), which did not fit beside the other flags; 16 MB per million

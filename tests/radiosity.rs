@@ -12,7 +12,8 @@
 //! when the blend's weight became the smoother sqrt(1 - error/bound), which brought
 //! radiosity_36/37 to SSIM 0.90; POV-Ray's own level moves 4% between count 100 and 400 on
 //! this probe, docs/radiosity.md). Each setting (brightness, gray_threshold,
-//! recursion_limit, normal) must change that level by POV-Ray's ratio within 3%.
+//! recursion_limit, normal) must change that level by POV-Ray's ratio within 3%. The
+//! `importance` probe has its own tolerance, with its reason beside it.
 
 use std::path::Path;
 
@@ -51,7 +52,15 @@ fn open_box_probes_match_povray() {
     };
     let mut levels = Vec::new();
     let mut failures = Vec::new();
-    for name in ["base", "bright", "gray", "recursion1", "normal", "fine"] {
+    for name in [
+        "base",
+        "bright",
+        "gray",
+        "recursion1",
+        "normal",
+        "importance",
+        "fine",
+    ] {
         let name = format!("open_box_{name}");
         let ours = render(&name, &s);
         let ref_path = dir().join("ref").join(format!("{name}.png"));
@@ -62,7 +71,15 @@ fn open_box_probes_match_povray() {
             failures.push(format!("{name}: SSIM {q:.3} < 0.80"));
         }
         let (a, b) = (wall(&ours), wall(&theirs));
-        let tolerance = if name.ends_with("fine") { 0.02 } else { 0.08 };
+        // `importance 0.25`: only a quarter of the rays meeting the walls are followed (each
+        // counting four times), so each sample's estimate is much noisier; measured, lancer's
+        // wall is 1.3%, 5.4% and 10% above POV-Ray's in red, green and blue (blue being the
+        // smallest level, 17.6 of 255), where the base probe's are within 6%.
+        let tolerance = match &*name {
+            "open_box_fine" => 0.02,
+            "open_box_importance" => 0.12,
+            _ => 0.08,
+        };
         for c in 0..3 {
             if (a[c] / b[c] - 1.0).abs() > tolerance {
                 failures.push(format!("{name}: wall {a:?} vs povray {b:?}"));
@@ -72,8 +89,10 @@ fn open_box_probes_match_povray() {
         levels.push((name, a, b));
     }
     let (_, base_ours, base_theirs) = levels[0].clone();
-    // The fine probe changes count, error_bound and recursion_limit at once: no ratio.
-    for (name, a, b) in &levels[1..levels.len() - 1] {
+    // The fine probe changes count, error_bound and recursion_limit at once: no ratio; nor
+    // the importance probe, whose noise (above) is larger than its change of the level
+    // (POV-Ray: +5.5%).
+    for (name, a, b) in &levels[1..levels.len() - 2] {
         let ours = a[0] / base_ours[0];
         let theirs = b[0] / base_theirs[0];
         if (ours / theirs - 1.0).abs() > 0.03 {

@@ -240,14 +240,34 @@ fn ridged_mf(
     signal *= signal;
     let mut result = signal;
     let mut q = p;
-    for i in 1..octaves.max(1.0) as u32 {
-        q *= lacunarity;
-        let weight = (signal * gain).clamp(0.0, 1.0);
-        signal = offset - signed(q).abs();
-        signal = signal * signal * weight;
-        result += signal * lacunarity.powf(-(i as f64) * h);
-    }
+    let n = octaves.max(1.0) as u32;
+    OCTAVE_WEIGHTS.with_borrow_mut(|w| {
+        // Each octave's weight lacunarity^(-i·H), kept per thread for the last (H,
+        // lacunarity) asked: an isosurface asks the same ones at every point, and `powf`
+        // was a sixth of the benchmark scene's render.
+        let key = (h.to_bits(), lacunarity.to_bits());
+        if w.0 != key {
+            *w = (key, Vec::new());
+        }
+        while (w.1.len() as u32) < n {
+            let i = w.1.len();
+            w.1.push(lacunarity.powf(-(i as f64) * h));
+        }
+        for i in 1..n {
+            q *= lacunarity;
+            let weight = (signal * gain).clamp(0.0, 1.0);
+            signal = offset - signed(q).abs();
+            signal = signal * signal * weight;
+            result += signal * w.1[i as usize];
+        }
+    });
     result
+}
+
+thread_local! {
+    /// f_ridged_mf's octave weights for one (H, lacunarity) pair, by their bits.
+    static OCTAVE_WEIGHTS: std::cell::RefCell<((u64, u64), Vec<f64>)> =
+        const { std::cell::RefCell::new(((0, 0), Vec::new())) };
 }
 
 fn atan2_or_zero(a: f64, b: f64) -> f64 {

@@ -33,6 +33,7 @@ pub struct Lens {
     /// tolerance before sampling stops.
     z2: f64,
     variance: f64,
+    bokeh: Option<Bokeh>,
 }
 
 impl Lens {
@@ -69,6 +70,7 @@ impl Lens {
             max: d.max_samples.max(1),
             z2: z * z,
             variance: d.variance,
+            bokeh: d.bokeh.as_deref().map(Bokeh::new),
         })
     }
 
@@ -111,11 +113,15 @@ pub fn trace<'a>(
         let b = (halton(i, 3) + shift[1]).fract();
         let jx = (halton(i, 5) + shift[2]).fract() - 0.5;
         let jy = (halton(i, 7) + shift[3]).fract() - 0.5;
-        // Uniform over the disc.
-        let (r, phi) = (a.sqrt(), b * std::f64::consts::TAU);
-        let ray = cam
-            .ray(px + jx, py + jy)
-            .map(|s| lens.bend(s, r * phi.cos(), r * phi.sin()));
+        let (lx, ly) = match &lens.bokeh {
+            Some(bokeh) => bokeh.point(a, b),
+            None => {
+                // Uniform over the disc.
+                let (r, phi) = (a.sqrt(), b * std::f64::consts::TAU);
+                (r * phi.cos(), r * phi.sin())
+            }
+        };
+        let ray = cam.ray(px + jx, py + jy).map(|s| lens.bend(s, lx, ly));
         let s = tracer.trace_camera(ray, ctx);
         sum += s.rgb;
         let c = s.rgb.clamp(DVec3::ZERO, DVec3::ONE);
@@ -131,6 +137,83 @@ pub fn trace<'a>(
         rgb: sum * k,
         clear: clear * k,
     }
+}
+
+/// A `bokeh` aperture: lens points drawn with density proportional to the pigment's
+/// brightness (grey 0.297 r + 0.589 g + 0.114 b) over the unit square, which spans the round
+/// lens's bounding square (measured with povray: a white bokeh blurs a point into a square as
+/// wide as the round lens's disc; a point behind the plane of sharpness lit through pigment
+/// x < 1/2 only blurs into the left half of its spot, through y > 1/2 the lower half: as
+/// lens points with x < 0 and y < 0 do).
+#[derive(Clone, Debug)]
+struct Bokeh {
+    /// Cumulative weight of the rows (y) up to and including each.
+    rows: Vec<f64>,
+    /// Per row, the cumulative weight of its cells (x) up to and including each.
+    cells: Vec<f64>,
+}
+
+/// Cells per side of the grid the bokeh pigment is sampled on.
+const BOKEH_GRID: usize = 64;
+
+impl Bokeh {
+    fn new(p: &crate::scene::desc::Pigment) -> Bokeh {
+        let n = BOKEH_GRID;
+        let mut cells = vec![0.0; n * n];
+        let mut rows = vec![0.0; n];
+        let mut total = 0.0;
+        for j in 0..n {
+            let mut acc = 0.0;
+            for i in 0..n {
+                let at = DVec3::new(
+                    (i as f64 + 0.5) / n as f64,
+                    (j as f64 + 0.5) / n as f64,
+                    0.0,
+                );
+                let c = super::pigment::eval(p, at).rgb;
+                acc += (0.297 * c.x + 0.589 * c.y + 0.114 * c.z).max(0.0);
+                cells[j * n + i] = acc;
+            }
+            total += acc;
+            rows[j] = total;
+        }
+        if total <= 0.0 {
+            // A black bokeh lets no light through anywhere; POV-Ray's picture is then
+            // undefined, so fall back to a uniform square.
+            for j in 0..n {
+                rows[j] = (j + 1) as f64;
+                for i in 0..n {
+                    cells[j * n + i] = (i + 1) as f64;
+                }
+            }
+        }
+        Bokeh { rows, cells }
+    }
+
+    /// The lens point (from -1 to 1 on each axis) for uniform numbers a, b in [0, 1).
+    fn point(&self, a: f64, b: f64) -> (f64, f64) {
+        let n = BOKEH_GRID;
+        let (j, fy) = invert(&self.rows, a);
+        let (i, fx) = invert(&self.cells[j * n..(j + 1) * n], b);
+        let x = (i as f64 + fx) / n as f64;
+        let y = (j as f64 + fy) / n as f64;
+        (2.0 * x - 1.0, 1.0 - 2.0 * y)
+    }
+}
+
+/// The cell of cumulative weights `cum` that uniform `u` falls in, and where inside it.
+fn invert(cum: &[f64], u: f64) -> (usize, f64) {
+    let total = *cum.last().unwrap_or(&1.0);
+    let target = u * total;
+    let k = cum.partition_point(|&c| c <= target).min(cum.len() - 1);
+    let lo = if k == 0 { 0.0 } else { cum[k - 1] };
+    let w = cum[k] - lo;
+    let f = if w > 0.0 {
+        ((target - lo) / w).clamp(0.0, 1.0)
+    } else {
+        0.5
+    };
+    (k, f)
 }
 
 /// Whether the mean of `n` samples is within the variance tolerance at the confidence asked:

@@ -10,7 +10,9 @@ mod cells_data;
 mod dispersion;
 pub mod focal;
 mod fog;
+mod irid;
 mod media;
+mod metallic;
 pub mod noise;
 mod noise_data;
 pub mod normal;
@@ -23,6 +25,7 @@ pub mod progressive;
 pub mod radiosity;
 mod shadow;
 pub mod texture_map;
+mod tiling;
 pub mod trace;
 pub mod warp;
 

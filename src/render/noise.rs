@@ -102,13 +102,6 @@ pub fn improved(p: DVec3) -> f64 {
     )
 }
 
-/// The position in ENTRY that lattice point (x, y, z) uses.
-#[inline]
-fn entry(x: i64, y: i64, z: i64) -> usize {
-    let m = |c: i64| (c.wrapping_add(HASH_OFFSET) & 4095) as usize;
-    HASH_Z[HASH_Y[HASH_X[m(x)] as usize ^ m(y)] as usize ^ m(z)] as usize
-}
-
 #[inline]
 fn s_curve(t: f64) -> f64 {
     t * t * (3.0 - 2.0 * t)
@@ -129,13 +122,22 @@ fn lattice3<const N: usize>(p: DVec3, ks: [usize; N]) -> [f64; N] {
     let (ix, iy, iz) = (fx as i64, fy as i64, fz as i64);
     let (tx, ty, tz) = (p.x - fx, p.y - fy, p.z - fz);
     let (sx, sy, sz) = (s_curve(tx), s_curve(ty), s_curve(tz));
+    let (wx, wy, wz) = ([1.0 - sx, sx], [1.0 - sy, sy], [1.0 - sz, sz]);
+    // Each corner's position in ENTRY: a three-stage hash of its coordinates, the first
+    // stages shared between corners (14 table reads instead of 24).
+    let m = |c: i64| (c.wrapping_add(HASH_OFFSET) & 4095) as usize;
+    let hx = [HASH_X[m(ix)] as usize, HASH_X[m(ix + 1)] as usize];
+    let (my, mz) = ([m(iy), m(iy + 1)], [m(iz), m(iz + 1)]);
+    let mut hxy = [0usize; 4];
+    for (k, h) in hxy.iter_mut().enumerate() {
+        // The mask changes nothing (both sides are below 4096) but spares a bounds check.
+        *h = HASH_Y[(hx[k & 1] ^ my[k >> 1]) & 4095] as usize;
+    }
     let mut out = [0.0; N];
     for corner in 0..8 {
         let (dx, dy, dz) = (corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
-        let w = (if dx == 1 { sx } else { 1.0 - sx })
-            * (if dy == 1 { sy } else { 1.0 - sy })
-            * (if dz == 1 { sz } else { 1.0 - sz });
-        let i = entry(ix + dx as i64, iy + dy as i64, iz + dz as i64);
+        let w = wx[dx] * wy[dy] * wz[dz];
+        let i = HASH_Z[(hxy[corner & 3] ^ mz[dz]) & 4095] as usize;
         let (ddx, ddy, ddz) = (tx - dx as f64, ty - dy as f64, tz - dz as f64);
         for (o, &k) in out.iter_mut().zip(ks.iter()) {
             let e = &ENTRY[i + k..i + k + 4];

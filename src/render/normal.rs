@@ -109,6 +109,12 @@ fn local(nd: &Normal, lp: DVec3, ln: DVec3) -> DVec3 {
                 ln + noise::dnoise(pattern::warped(pat, lp), pat.noise_generator) * amount
             }
             Special::Dents => dents(pat, lp, ln, amount),
+            Special::Quilted => match pat.kind {
+                PatternKind::Quilted { c0, c1 } => {
+                    ln + pattern::quilted_vector(pattern::warped(pat, lp), c0, c1) * amount
+                }
+                _ => ln,
+            },
             Special::Wrinkles => wrinkles(pat, lp, ln, amount),
             Special::Ripples | Special::Waves => waves(pat, *special, lp, ln, amount),
         },
@@ -116,9 +122,11 @@ fn local(nd: &Normal, lp: DVec3, ln: DVec3) -> DVec3 {
             pattern: pat,
             items,
         } => {
-            let i = pattern::index(pat, lp).min(items.len().saturating_sub(1));
+            // The entries see the warped point (measured: see `pattern::warped`).
+            let q = pattern::warped(pat, lp);
+            let i = pattern::index_warped(pat, q).min(items.len().saturating_sub(1));
             match items.get(i) {
-                Some(item) => perturb(item, lp, ln.normalize_or_zero()),
+                Some(item) => perturb(item, q, ln.normalize_or_zero()),
                 None => ln,
             }
         }
@@ -239,7 +247,10 @@ fn normal_map(pat: &Pattern, map: &[(f64, Normal)], lp: DVec3, ln: DVec3) -> DVe
             .iter()
             .fold(DVec3::ZERO, |s, (w, m)| s + perturb(m, q, n) * (w / total));
     }
-    let v = pattern::value(pat, lp);
+    // The entries see the warped point (measured: see `pattern::warped`).
+    let q = pattern::warped(pat, lp);
+    let v = pattern::value_warped(pat, q);
+    let lp = q;
     let (Some(first), Some(last)) = (map.first(), map.last()) else {
         return ln;
     };

@@ -69,7 +69,17 @@ pub fn value(pat: &Pattern, p: DVec3) -> f64 {
 /// Which listed item a block pattern (checker, hexagon, brick) picks at `p`; for other
 /// patterns, whether the value is in the upper half.
 pub fn index(pat: &Pattern, p: DVec3) -> usize {
-    let q = warped(pat, p);
+    index_warped(pat, warped(pat, p))
+}
+
+/// The pattern's value at a point `warped` has already moved (maps and lists evaluate their
+/// entries there too).
+pub fn value_warped(pat: &Pattern, q: DVec3) -> f64 {
+    shape(pat, raw(pat, q))
+}
+
+/// `index` at a point `warped` has already moved.
+pub fn index_warped(pat: &Pattern, q: DVec3) -> usize {
     match &pat.kind {
         PatternKind::Checker => checker(q),
         PatternKind::Hexagon => hexagon(q),
@@ -77,11 +87,15 @@ pub fn index(pat: &Pattern, p: DVec3) -> usize {
         PatternKind::Square => square(q),
         PatternKind::Triangular => triangular(q),
         PatternKind::Cubic => cubic(q),
+        PatternKind::MaterialMap(im, indices) => material_index(im, indices, q),
         _ => (shape(pat, raw(pat, q)) >= 0.5) as usize,
     }
 }
 
-/// The point after warps and turbulence (what `average` evaluates its entries at).
+/// The point after warps and turbulence: where the entries of a map or list are evaluated
+/// (measured: a `pigment_map`, pigment list, `texture_map`, texture list or `normal_map` of
+/// `gradient z` stripes under `warp { turbulence }` or plain turbulence shows wavy stripes in
+/// povray; marble's and wood's own turbulence, which is not a warp, leaves them straight).
 pub fn warped(pat: &Pattern, p: DVec3) -> DVec3 {
     let mut q = p;
     for w in pat.warps.iter().rev() {
@@ -232,6 +246,13 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
         PatternKind::Cells => {
             noise::cell_value(q.x.floor() as i64, q.y.floor() as i64, q.z.floor() as i64)
         }
+        PatternKind::MaterialMap(im, indices) => material_index(im, indices, q) as f64,
+        PatternKind::Tiling(n) => super::tiling::value(*n, q),
+        PatternKind::Quilted { c0, c1 } => {
+            // Measured: a third of the cushion vector's component magnitudes.
+            let v = quilted_vector(q, *c0, *c1);
+            (v.x.abs() + v.y.abs() + v.z.abs()) / 3.0
+        }
         PatternKind::Fractal(f) => fractal(f, (q.x, q.y)),
         PatternKind::DensityFile(d) => d.eval(q),
         PatternKind::Object(o) => o.inside(q) as u8 as f64,
@@ -245,6 +266,26 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
         // Maps handle `average` themselves; as a plain value it is the middle.
         PatternKind::Unsupported | PatternKind::Average => 0.5,
     }
+}
+
+/// A material map's palette index at `q` (0 off a `once` image).
+fn material_index(im: &crate::scene::desc::ImageMap, indices: &[u8], q: DVec3) -> usize {
+    super::pigment::image_pixel(im, q)
+        .and_then(|i| indices.get(i))
+        .map_or(0, |&i| i as usize)
+}
+
+/// Quilted's cushion vector at `q`: the offset d from the centre of q's unit cube times
+/// (2/√3)·B(|d|), B the cubic Bézier through 0, `c0`, `c1`, 1. Measured with
+/// scripts/measure_pattern.py and scripts/measure_normals.py (docs/textures.md): the pattern
+/// value is a third of the vector's |x| + |y| + |z| and the normal is n + amount·vector, both
+/// to the printed precision at random points in ±3 for several control pairs.
+pub fn quilted_vector(q: DVec3, c0: f64, c1: f64) -> DVec3 {
+    let d = q - q.floor() - DVec3::splat(0.5);
+    let t = d.length();
+    let s = 1.0 - t;
+    let b = 3.0 * s * s * t * c0 + 3.0 * s * t * t * c1 + t * t * t;
+    d * (b * 2.0 / 3f64.sqrt())
 }
 
 /// 1 where a unit normal's cosine with a direction is 1, 0.5 at right angles, 0 opposite:

@@ -525,7 +525,7 @@ impl Shooter<'_> {
                         (1.0 - cos_i).powf(r.falloff)
                     };
                     let amount = (r.min + (r.max - r.min) * k) * w;
-                    refl += through * amount * (DVec3::ONE + (c.rgb - DVec3::ONE) * r.metallic);
+                    refl += through * amount * super::metallic::tint(c.rgb, r.metallic, cos_i);
                 }
                 conserve |= fin.conserve_energy;
                 layer_t += c.transmitted() * w;

@@ -27,16 +27,17 @@ pub fn eval(p: &Pigment, world: DVec3) -> Rgbft {
             pattern: pat,
             items,
         } => {
-            let i = pattern::index(pat, lp).min(items.len().saturating_sub(1));
-            // Listed pigments live in the outer pigment's space, unwarped.
-            items.get(i).map_or(Rgbft::BLACK, |item| eval(item, lp))
+            // The entries see the warped point (measured: see `pattern::warped`).
+            let q = pattern::warped(pat, lp);
+            let i = pattern::index_warped(pat, q).min(items.len().saturating_sub(1));
+            items.get(i).map_or(Rgbft::BLACK, |item| eval(item, q))
         }
         PigmentKind::PigmentMap { pattern: pat, map } => {
+            let q = pattern::warped(pat, lp);
             if matches!(pat.kind, PatternKind::Average) {
-                // Average's warps move the point its entries see (measured: blkhole.pov).
-                return average(map, pattern::warped(pat, lp));
+                return average(map, q);
             }
-            pigment_map(map, pattern::value(pat, lp), lp)
+            pigment_map(map, pattern::value_warped(pat, q), q)
         }
         // Turbulence and warps move the point the image is looked up at (measured: warp1.pov).
         PigmentKind::ImageMap(im, Some(pat)) => image(im, pattern::warped(pat, lp)),
@@ -127,39 +128,8 @@ pub fn lookup(map: &ColorMap, v: f64) -> Rgbft {
 
 /// The image map's colour at pattern-space point `lp` (also what image patterns read).
 pub fn image(im: &ImageMap, lp: DVec3) -> Rgbft {
-    let (u, v) = match im.map_type {
-        1 => {
-            // Spherical: u starts at +x and runs towards +z (a -y rotation); v = 1 at +y.
-            let d = lp.normalize_or_zero();
-            if d == DVec3::ZERO {
-                return Rgbft::BLACK;
-            }
-            let mut u = d.z.atan2(d.x) / (2.0 * PI);
-            if u < 0.0 {
-                u += 1.0;
-            }
-            (u, 1.0 - d.y.clamp(-1.0, 1.0).acos() / PI)
-        }
-        2 => {
-            let mut u = lp.z.atan2(lp.x) / (2.0 * PI);
-            if u < 0.0 {
-                u += 1.0;
-            }
-            (u, lp.y)
-        }
-        5 => {
-            // Torus of major radius 1 in the x-z plane: u as cylindrical; v the angle around
-            // the tube, 0.5 on the outer equator, growing upwards, the seam on the inner rim
-            // (measured: scripts/measure_map_type.sh, probe image_map_torus).
-            let mut u = lp.z.atan2(lp.x) / (2.0 * PI);
-            if u < 0.0 {
-                u += 1.0;
-            }
-            let r = (lp.x * lp.x + lp.z * lp.z).sqrt() - 1.0;
-            let v = 0.5 + lp.y.atan2(r) / (2.0 * PI);
-            (u, v)
-        }
-        _ => (lp.x, lp.y),
+    let Some((u, v)) = image_uv(im, lp) else {
+        return Rgbft::BLACK;
     };
     // `once` leaves the rest of the plane (or cylinder) clear; it means nothing on a sphere.
     let inside = (0.0..1.0).contains(&u) && (0.0..1.0).contains(&v);
@@ -190,6 +160,60 @@ pub fn image(im: &ImageMap, lp: DVec3) -> Rgbft {
     let xi = (fx as usize).min(im.width as usize - 1);
     let yi = (fy as usize).min(im.height as usize - 1);
     im.pixels[yi * im.width as usize + xi]
+}
+
+/// The pixel (row 0 at the top) a `material_map` reads at `lp`: the image's nearest pixel,
+/// as an uninterpolated image map picks it. None off a `once` image or where the mapping has
+/// no direction.
+pub fn image_pixel(im: &ImageMap, lp: DVec3) -> Option<usize> {
+    let (u, v) = image_uv(im, lp)?;
+    let inside = (0.0..1.0).contains(&u) && (0.0..1.0).contains(&v);
+    if (im.once && im.map_type != 1 && !inside) || im.width == 0 || im.height == 0 {
+        return None;
+    }
+    let (u, v) = (u - u.floor(), v - v.floor());
+    let xi = ((u * im.width as f64) as usize).min(im.width as usize - 1);
+    let yi = (((1.0 - v) * im.height as f64) as usize).min(im.height as usize - 1);
+    Some(yi * im.width as usize + xi)
+}
+
+/// The image coordinates (u, v) of pattern-space point `lp` under the map type, before
+/// wrapping; None where a spherical map has no direction.
+fn image_uv(im: &ImageMap, lp: DVec3) -> Option<(f64, f64)> {
+    Some(match im.map_type {
+        1 => {
+            // Spherical: u starts at +x and runs towards +z (a -y rotation); v = 1 at +y.
+            let d = lp.normalize_or_zero();
+            if d == DVec3::ZERO {
+                return None;
+            }
+            let mut u = d.z.atan2(d.x) / (2.0 * PI);
+            if u < 0.0 {
+                u += 1.0;
+            }
+            (u, 1.0 - d.y.clamp(-1.0, 1.0).acos() / PI)
+        }
+        2 => {
+            let mut u = lp.z.atan2(lp.x) / (2.0 * PI);
+            if u < 0.0 {
+                u += 1.0;
+            }
+            (u, lp.y)
+        }
+        5 => {
+            // Torus of major radius 1 in the x-z plane: u as cylindrical; v the angle around
+            // the tube, 0.5 on the outer equator, growing upwards, the seam on the inner rim
+            // (measured: scripts/measure_map_type.sh, probe image_map_torus).
+            let mut u = lp.z.atan2(lp.x) / (2.0 * PI);
+            if u < 0.0 {
+                u += 1.0;
+            }
+            let r = (lp.x * lp.x + lp.z * lp.z).sqrt() - 1.0;
+            let v = 0.5 + lp.y.atan2(r) / (2.0 * PI);
+            (u, v)
+        }
+        _ => (lp.x, lp.y),
+    })
 }
 
 #[cfg(test)]

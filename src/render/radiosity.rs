@@ -281,7 +281,8 @@ impl<'a> Tracer<'a> {
             let (x, y) = rad.pool[(start + i) % rad.pool.len()];
             let z = (1.0 - x * x - y * y).max(0.0).sqrt();
             let dir = t1 * x + t2 * y + n * z;
-            let (mut c, t) = self.trace_gather(&Ray::new(p, dir), ray_path, ctx);
+            let share = i as f64 / count as f64;
+            let (mut c, t) = self.trace_gather(&Ray::new(p, dir), ray_path, share, ctx);
             if set.max_sample > 0.0 {
                 let m = c.max_element();
                 if m > set.max_sample {

@@ -76,12 +76,14 @@ fn blend_in(
         inner = tp.transform.then(space);
         &inner
     };
+    // The entries see the warped point (measured: see `pattern::warped`).
+    let q = pattern::warped(&tp.pattern, lp);
     let blend = |t: &Texture, w: f64, f: &mut dyn FnMut(Rgbft, &Texture, &Transform, f64)| {
-        blend_in(t, lp, uv_inner, space, quick, w, f)
+        blend_in(t, q, uv_inner, space, quick, w, f)
     };
     match &tp.entries {
         TextureEntries::List(items) => {
-            let i = pattern::index(&tp.pattern, lp).min(items.len().saturating_sub(1));
+            let i = pattern::index_warped(&tp.pattern, q).min(items.len().saturating_sub(1));
             if let Some(t) = items.get(i) {
                 blend(t, weight, f);
             }
@@ -95,7 +97,7 @@ fn blend_in(
             }
         }
         TextureEntries::Map(map) => {
-            let v = pattern::value(&tp.pattern, lp);
+            let v = pattern::value_warped(&tp.pattern, q);
             let (Some(first), Some(last)) = (map.first(), map.last()) else {
                 return;
             };

@@ -255,10 +255,15 @@ impl<'a> Tracer<'a> {
 
     /// A radiosity gathering ray: what it brings back, and how far it went (infinite to the
     /// background). It passes through `no_radiosity` objects.
+    ///
+    /// `share`: the ray's place in its sample's sequence (index / count). An object of
+    /// `radiosity { importance I }` is followed only by the first I of the sequence, which
+    /// count 1/I times to make up for the others (manual 3.4.4.3.4.1).
     pub(super) fn trace_gather(
         &self,
         ray: &Ray,
         path: Path<'a>,
+        share: f64,
         ctx: &mut TraceCtx<'a>,
     ) -> (DVec3, f64) {
         ctx.rays += 1;
@@ -266,6 +271,15 @@ impl<'a> Tracer<'a> {
             return (DVec3::ZERO, f64::INFINITY);
         }
         let (seen, t) = match self.first_visible(ray, false, true, ctx) {
+            Some(h) if h.obj.importance < 1.0 => {
+                let imp = f64::from(h.obj.importance);
+                if share >= imp {
+                    return (DVec3::ZERO, h.t * ray.dir.length());
+                }
+                let mut s = self.shade_blended(ray, &h, path, ctx);
+                s.rgb /= imp;
+                (s, h.t)
+            }
             Some(h) => (self.shade_blended(ray, &h, path, ctx), h.t),
             None => (self.background(ray.dir, false), f64::INFINITY),
         };
@@ -474,7 +488,7 @@ impl<'a> Tracer<'a> {
                     Some(_) if rad_normal => Some(self.irradiance(p, pn, path, ctx)),
                     Some(_) => Some(*irr.get_or_insert_with(|| self.irradiance(p, nf, path, ctx))),
                 };
-                col += through * w * self.layer_light(&c, fin, dir, pn, pmirror, indirect, ctx);
+                col += through * w * self.layer_light(&c, fin, p, dir, pn, pmirror, indirect, ctx);
                 let refl = &fin.reflection;
                 if !refl.is_zero() && q.reflection {
                     refl_power = refl.power().or(refl_power);
@@ -494,7 +508,8 @@ impl<'a> Tracer<'a> {
                         0.0
                     };
                     let amount = (refl.min + (refl.max - refl.min) * f) * w;
-                    let tinted = amount * (DVec3::ONE + (c.rgb - DVec3::ONE) * refl.metallic);
+                    // Measured: the tint fades to white at glancing angles (render::metallic).
+                    let tinted = amount * super::metallic::tint(c.rgb, refl.metallic, pcos);
                     refl_all_tinted += tinted;
                     if pmirror == mirror {
                         refl_amount += amount;
@@ -647,7 +662,33 @@ impl<'a> Tracer<'a> {
                 continue;
             };
             let l = inc.l;
+            let spread = light.area.as_ref().is_some_and(|a| a.illumination);
+            if spread && !light.shadowless && q.shadows && self.samples_area(light, gathering) {
+                if let Some(dist) = inc.shadow_dist {
+                    // `area_illumination`: every point of the array lights the surface from
+                    // its own direction, with its share of the light, even where the
+                    // array's centre is below the surface's horizon.
+                    let grain = grain(seed, slot as u32);
+                    self.area_each(p, (slot, light), l, dist, ctx, |dir, d, seen| {
+                        let lc = light.color * (light.fade(d) * inc.beam);
+                        let cos_n = nf.dot(dir);
+                        let back = cos_n <= 0.0 && double;
+                        if (cos_n > 0.0 || all || back) && seen != DVec3::ZERO {
+                            lit.push(LitBy {
+                                color: lc * seen,
+                                l: dir,
+                                cos_n,
+                                shadowless: false,
+                                back,
+                                grain,
+                            });
+                        }
+                    });
+                    continue;
+                }
+            }
             let cos_n = nf.dot(l);
+
             let back = cos_n <= 0.0 && double;
             if cos_n <= 0.0 && !all && !back {
                 continue;
@@ -695,6 +736,7 @@ impl<'a> Tracer<'a> {
         &self,
         c: &Rgbft,
         fin: &crate::scene::desc::Finish,
+        p: DVec3,
         dir: DVec3,
         nf: DVec3,
         mirror: DVec3,
@@ -710,10 +752,13 @@ impl<'a> Tracer<'a> {
             (None, _) => ambient,
         };
         let mut col = (own + fin.emission) * c.rgb * opacity;
-        // Highlights take the surface colour in proportion to `metallic`.
-        let highlight_tint = DVec3::ONE + (c.rgb - DVec3::ONE) * fin.metallic;
         for lb in &ctx.lit {
             let (lc, l) = (lb.color, lb.l);
+            // Iridescence scales the light's diffuse and highlight terms alike (measured).
+            let irid_f = match &fin.irid {
+                Some(irid) => super::irid::factor(irid, p, nf.dot(l), -dir.dot(nf)),
+                None => DVec3::ONE,
+            };
             if fin.diffuse > 0.0 {
                 // The same as lb.cos_n unless the normal was perturbed; a light behind a
                 // double-illuminated surface lights it as if from the front.
@@ -727,7 +772,7 @@ impl<'a> Tracer<'a> {
                     // crand darkens each light's diffuse term by its own random share
                     // (measured with povray: independent per light, uniform, ambient untouched).
                     let grainy = 1.0 - fin.crand * lb.grain;
-                    col += lc * c.rgb * (fin.diffuse * d * opacity * grainy);
+                    col += lc * irid_f * c.rgb * (fin.diffuse * d * opacity * grainy);
                 }
             }
             // POV-Ray 3.7 gives shadowless lights no highlights (tests/probes/shadowless_*),
@@ -735,17 +780,24 @@ impl<'a> Tracer<'a> {
             if lb.shadowless || lb.back {
                 continue;
             }
+            // Highlights take the surface colour in proportion to `metallic`, less so as the
+            // light grazes the surface (measured: render::metallic).
+            let highlight_tint = if fin.phong > 0.0 || fin.specular > 0.0 {
+                super::metallic::tint(c.rgb, fin.metallic, nf.dot(l))
+            } else {
+                DVec3::ONE
+            };
             if fin.phong > 0.0 {
                 let cos_r = mirror.dot(l);
                 if cos_r > 0.0 {
-                    col += lc * highlight_tint * (fin.phong * cos_r.powf(fin.phong_size));
+                    col += lc * irid_f * highlight_tint * (fin.phong * cos_r.powf(fin.phong_size));
                 }
             }
             if fin.specular > 0.0 {
                 let hv = (l - dir).normalize_or_zero();
                 let cos_h = nf.dot(hv);
                 if cos_h > 0.0 {
-                    col += lc * highlight_tint * (fin.specular * cos_h.powf(specular_exp));
+                    col += lc * irid_f * highlight_tint * (fin.specular * cos_h.powf(specular_exp));
                 }
             }
         }

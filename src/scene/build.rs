@@ -609,6 +609,7 @@ impl Ctx {
             no_image: o.no_image,
             no_reflection: o.no_reflection,
             no_radiosity: o.no_radiosity,
+            importance: o.rad_importance.unwrap_or(1.0),
             double_illuminate: o.double_illuminate,
             light_set: self.current_set,
             hollow: o.hollow.unwrap_or(false),

@@ -23,6 +23,8 @@ pub struct SceneDesc {
     pub sky_sphere: Option<Vec<Pigment>>,
     pub global: GlobalSettings,
     /// The texture given to objects that have none (`#default`).
+    /// `default { radiosity { importance } }`: the importance of objects without their own.
+    pub default_importance: Option<f32>,
     pub default_texture: Texture,
     /// `#version` in force at the end of parsing, if the scene set one.
     pub version: Option<f64>,
@@ -250,6 +252,9 @@ pub struct AreaLightDesc {
     pub jitter: bool,
     pub circular: bool,
     pub orient: bool,
+    /// `area_illumination`: each point of the array lights the surface from its own
+    /// direction (diffuse and highlights), not only shadows it.
+    pub illumination: bool,
 }
 
 /// A 1×1 array: holds the modifiers of an area light given before its `area_light` line.
@@ -264,6 +269,7 @@ impl Default for AreaLightDesc {
             jitter: false,
             circular: false,
             orient: false,
+            illumination: false,
         }
     }
 }
@@ -286,6 +292,9 @@ pub struct ObjectDesc {
     pub no_reflection: bool,
     /// `no_radiosity`: unseen by radiosity's gathering rays.
     pub no_radiosity: bool,
+    /// `radiosity { importance }`: the share of radiosity's gathering rays that meet it and
+    /// are followed (None: not written; CSG members inherit their parent's).
+    pub rad_importance: Option<f32>,
     /// `double_illuminate`: lit by lights behind its surface too (diffuse only).
     pub double_illuminate: bool,
     pub hollow: Option<bool>,
@@ -310,6 +319,7 @@ impl ObjectDesc {
             no_image: false,
             no_reflection: false,
             no_radiosity: false,
+            rad_importance: None,
             double_illuminate: false,
             hollow: None,
             inverse: false,
@@ -727,6 +737,8 @@ pub enum Special {
     Ripples,
     Waves,
     Wrinkles,
+    /// quilted: the cushion vector (`render::pattern::quilted_vector`) added to the normal.
+    Quilted,
 }
 
 #[derive(Clone, Debug)]
@@ -744,6 +756,16 @@ pub struct Finish {
     pub conserve_energy: bool,
     /// `crand`: each light's diffuse term is scaled by 1 - crand·u, u uniform in [0, 1).
     pub crand: f64,
+    /// `irid { amount thickness t turbulence u }` (boxed: rare, and textures stay small).
+    pub irid: Option<Box<Irid>>,
+}
+
+/// Thin-film iridescence (render::irid).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Irid {
+    pub amount: f64,
+    pub thickness: f64,
+    pub turbulence: f64,
 }
 
 impl Default for Finish {
@@ -761,6 +783,7 @@ impl Default for Finish {
             reflection: Reflection::default(),
             conserve_energy: false,
             crand: 0.0,
+            irid: None,
         }
     }
 }

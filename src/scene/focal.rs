@@ -1,9 +1,10 @@
 //! The camera's focal blur settings as written (`aperture`, `blur_samples`, `focal_point`,
-//! `confidence`, `variance`), with POV-Ray's defaults; render::focal traces with them.
+//! `confidence`, `variance`, `bokeh`), with POV-Ray's defaults; render::focal traces with them.
 
 use crate::math::DVec3;
+use crate::scene::desc::Pigment;
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub struct FocalDesc {
     pub aperture: f64,
     /// `blur_samples [min,] max`: the minimum when written.
@@ -12,6 +13,9 @@ pub struct FocalDesc {
     pub focal_point: DVec3,
     pub confidence: f64,
     pub variance: f64,
+    /// `bokeh { pigment }`: the aperture's shape and weight, the pigment's brightness over
+    /// the unit square <0,0,0>..<1,1,0> (None: the round lens).
+    pub bokeh: Option<Box<Pigment>>,
 }
 
 impl Default for FocalDesc {
@@ -23,6 +27,7 @@ impl Default for FocalDesc {
             focal_point: DVec3::ZERO,
             confidence: 0.9,
             variance: 1.0 / 128.0,
+            bokeh: None,
         }
     }
 }

@@ -333,6 +333,7 @@ mod tests {
             jitter: false,
             circular: false,
             orient: false,
+            illumination: false,
         };
         assert_eq!(
             a.point(0, 0, DVec3::Y, (0.0, 0.0)),

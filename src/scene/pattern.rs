@@ -75,9 +75,13 @@ impl Pattern {
                 | PatternKind::Triangular
                 | PatternKind::Cubic
                 | PatternKind::Object(_)
+                | PatternKind::MaterialMap(..)
         )
     }
 }
+
+/// The `tiling` numbers lancer draws (the others are warned about).
+pub const TILINGS_MEASURED: &[u32] = &[5];
 
 #[derive(Clone, Debug)]
 pub enum PatternKind {
@@ -138,6 +142,18 @@ pub enum PatternKind {
         solid: bool,
     },
     Cells,
+    /// `quilted`: each unit cube a cushion whose seam's cross-section is a cubic Bézier with
+    /// inner control points `control0` and `control1` (default 1, 1); see
+    /// `render::pattern::quilted_vector`.
+    Quilted {
+        c0: f64,
+        c1: f64,
+    },
+    /// `material_map { png "file" ... }`: the palette index of the image's pixel (planar,
+    /// spherical, cylindrical or torus mapping like an image map), which picks a listed texture.
+    MaterialMap(Arc<crate::scene::desc::ImageMap>, Arc<Vec<u8>>),
+    /// `tiling N`, one of `TILINGS_MEASURED` (render::tiling).
+    Tiling(u32),
     /// `mandel N` (`julia` None) or `julia <c>, N`: iterations of zⁿ + c from z = c = x + iy
     /// (mandel) or from z = x + iy (julia).
     Fractal(Box<Fractal>),

@@ -17,7 +17,12 @@ const UNSUPPORTED_BLOCKS: &[&str] = &["photons", "radiosity"];
 impl Parser {
     pub(super) fn parse_scene_items(&mut self) -> PResult<()> {
         loop {
-            if let Some(obj) = self.parse_object()? {
+            if let Some(mut obj) = self.parse_object()? {
+                if let Some(v) = self.scene.default_importance {
+                    super::object::set_deep(&mut obj, &|o: &mut crate::scene::desc::ObjectDesc| {
+                        o.rad_importance.get_or_insert(v);
+                    });
+                }
                 self.scene.objects.push(obj);
                 continue;
             }
@@ -174,6 +179,11 @@ impl Parser {
                 }
                 "irid_wavelength" => {
                     self.parse_color()?;
+                    // Measured only for the default (docs/textures.md, irid).
+                    self.unsupported(
+                        "irid_wavelength (the default's measured wavelengths are used)",
+                        t.span,
+                    );
                 }
                 "radiosity" => self.parse_global_radiosity()?,
                 "photons" => {
@@ -217,10 +227,7 @@ impl Parser {
                     cam.projection = match &**k {
                         "fisheye" => Projection::Fisheye,
                         "ultra_wide_angle" => Projection::UltraWideAngle,
-                        "omnimax" => {
-                            self.unsupported("omnimax camera (rendered as a 180° fisheye)", t.span);
-                            Projection::Omnimax
-                        }
+                        "omnimax" => Projection::Omnimax,
                         "panoramic" => Projection::Panoramic,
                         "spherical" => Projection::Spherical,
                         "cylinder" => {
@@ -284,23 +291,29 @@ impl Parser {
                 "confidence" => cam.blur.confidence = self.parse_float()?.clamp(0.0, 0.999_999),
                 "variance" => {
                     let v = self.parse_float()?;
-                    if v >= 1.0 || v <= 0.0 {
+                    if v >= 1.0 {
                         // The manual: "If 1 is used POV-Ray will issue a warning and then use
-                        // the default instead."
+                        // the default instead." Measured: `variance 0` is taken as written
+                        // (every pixel takes the most samples), without a warning.
                         self.warn(
                             t.span,
                             "focal blur variance must be below 1; the default 1/128 is used",
                         );
                     } else {
-                        cam.blur.variance = v;
+                        cam.blur.variance = v.max(0.0);
                     }
                 }
                 "normal" => {
                     cam.normal = Some(self.parse_normal_block(t.span)?);
                 }
                 "bokeh" => {
-                    self.unsupported(k, t.span);
-                    self.skip_block()?;
+                    self.expect_sym(Sym::LBrace, "after 'bokeh'")?;
+                    let pig = self.next_tok()?;
+                    if !matches!(&pig.tok, Tok::Ident(k) if &**k == "pigment") {
+                        return Err(self.error_at(pig.span, "expected 'pigment' in bokeh"));
+                    }
+                    cam.blur.bokeh = Some(Box::new(self.parse_pigment_block(None)?));
+                    self.expect_sym(Sym::RBrace, "to close 'bokeh'")?;
                 }
                 _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in camera"))),
             }

@@ -519,6 +519,11 @@ impl Parser {
                     let n = self.parse_normal_block(t.span)?;
                     self.scene.default_texture.normal = Some(Box::new(n));
                 }
+                Tok::Ident(k) if &**k == "radiosity" => {
+                    if let Some(v) = self.parse_object_radiosity()? {
+                        self.scene.default_importance = Some(v);
+                    }
+                }
                 _ => return Err(self.unexpected(&t, "in #default")),
             }
         }

@@ -107,11 +107,9 @@ impl Parser {
                             let o = self.object_ref(t.span)?;
                             light.projected_through = Some(Box::new(o));
                         }
-                        // Off is povray's default: nothing to say.
                         "area_illumination" => {
-                            if self.optional_bool()? {
-                                self.unsupported(&k, t.span);
-                            }
+                            let on = self.optional_bool()?;
+                            light.area.get_or_insert_default().illumination = on;
                         }
                         "media_interaction" => light.media_interaction = self.optional_bool()?,
                         "media_attenuation" => light.media_attenuation = self.optional_bool()?,

@@ -50,6 +50,7 @@ pub fn default_scene() -> SceneDesc {
         sky_sphere: None,
         global: GlobalSettings::default(),
         default_texture: Texture::default(),
+        default_importance: None,
         version: None,
         fogs: Vec::new(),
         media: Vec::new(),

@@ -109,6 +109,7 @@ impl Parser {
                 "ripples" => Some(Special::Ripples),
                 "waves" => Some(Special::Waves),
                 "wrinkles" => Some(Special::Wrinkles),
+                "quilted" => Some(Special::Quilted),
                 _ => None,
             };
             if let Some(kind) = self.pattern_keyword(k, t.span)? {

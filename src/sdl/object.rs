@@ -85,6 +85,10 @@ impl Parser {
 
     /// Parses modifiers up to and including the closing brace.
     pub(super) fn finish_object(&mut self, mut obj: ObjectDesc, open: Span) -> PResult<ObjectDesc> {
+        // `uv_mapping` among the modifiers maps the textures given after it (measured:
+        // povray draws `sphere { 0, 1 uv_mapping texture { T } }` as `texture { uv_mapping T }`
+        // and refuses it after the texture).
+        let mut uv = false;
         loop {
             let Some(t) = self.peek()? else {
                 return Err(self.error_at(open, "this '{' is never closed"));
@@ -92,8 +96,21 @@ impl Parser {
             match &t.tok {
                 Tok::Sym(Sym::RBrace) => {
                     self.advance();
+                    if uv {
+                        if let Some(tex) = &mut obj.texture {
+                            Arc::make_mut(tex).uv_mapping = true;
+                        }
+                    }
                     self.warn_uv_without_coordinates(&obj, open);
                     return Ok(obj);
+                }
+                Tok::Ident(k) if &**k == "uv_mapping" => {
+                    self.advance();
+                    if obj.texture.is_some() {
+                        return Err(self
+                            .error_at(t.span, "uv_mapping must come before the object's texture"));
+                    }
+                    uv = true;
                 }
                 Tok::Ident(k) => {
                     let k = k.clone();
@@ -204,7 +221,15 @@ impl Parser {
                 self.optional_bool()?;
             }
             "photons" => obj.photons = self.parse_object_photons(obj.photons)?,
-            "radiosity" => self.parse_object_radiosity(span)?,
+            "radiosity" => {
+                if let Some(v) = self.parse_object_radiosity()? {
+                    // CSG members without their own take their parent's.
+                    set_deep(obj, &|o: &mut ObjectDesc| {
+                        o.rad_importance.get_or_insert(v);
+                    });
+                    obj.rad_importance = Some(v);
+                }
+            }
             "clipped_by" => {
                 let open = self.open_brace("clipped_by")?;
                 let mut clips = Vec::new();
@@ -647,7 +672,7 @@ impl Parser {
 }
 
 /// Applies `f` to an object and, for CSG, to every member at any depth.
-fn set_deep(obj: &mut ObjectDesc, f: &dyn Fn(&mut ObjectDesc)) {
+pub(super) fn set_deep(obj: &mut ObjectDesc, f: &dyn Fn(&mut ObjectDesc)) {
     f(obj);
     if let ShapeDesc::Csg { children, .. } = &mut obj.shape {
         for c in children {

@@ -14,8 +14,7 @@ use super::source::Span;
 use super::value::Value;
 
 /// Pattern keywords POV-Ray 3.7 has that lancer does not evaluate yet.
-pub(super) const UNSUPPORTED_PATTERNS: &[&str] =
-    &["facets", "pavement", "quilted", "tiling", "proportion"];
+pub(super) const UNSUPPORTED_PATTERNS: &[&str] = &["facets", "pavement", "proportion"];
 
 /// Pattern keywords lancer evaluates (see `pattern_keyword`).
 const PATTERNS: &[&str] = &[
@@ -47,6 +46,8 @@ const PATTERNS: &[&str] = &[
     "waves",
     "crackle",
     "cells",
+    "quilted",
+    "tiling",
     "function",
     "mandel",
     "julia",
@@ -67,13 +68,7 @@ pub(super) fn is_pattern_keyword(k: &str) -> bool {
 }
 
 /// Modifiers of patterns lancer does not evaluate, read past with a warning (one value each).
-const UNSUPPORTED_MODIFIERS: &[&str] = &[
-    "control0",
-    "control1",
-    "orientation",
-    "dist_exp",
-    "strength",
-];
+const UNSUPPORTED_MODIFIERS: &[&str] = &["orientation", "dist_exp", "strength"];
 
 /// Where `warp { planar n, d }` puts a point's x, y and the distance d: POV-Ray's frame for
 /// the six axis normals, measured with scripts/measure_pattern.py (`function { 0.5+0.1*x }
@@ -207,6 +202,18 @@ impl Parser {
                 solid: false,
             },
             "cells" => PatternKind::Cells,
+            // The manual: both controls default to 1.
+            "quilted" => PatternKind::Quilted { c0: 1.0, c1: 1.0 },
+            "tiling" => {
+                let n = self.parse_float()?;
+                let n = if n >= 1.0 { n as u32 } else { 0 };
+                if crate::scene::pattern::TILINGS_MEASURED.contains(&n) {
+                    PatternKind::Tiling(n)
+                } else {
+                    self.unsupported(&format!("tiling {n} (lancer draws tiling 5 only)"), span);
+                    PatternKind::Unsupported
+                }
+            }
             "square" => PatternKind::Square,
             "triangular" => PatternKind::Triangular,
             "cubic" => PatternKind::Cubic,
@@ -300,7 +307,6 @@ impl Parser {
             }
             k if UNSUPPORTED_PATTERNS.contains(&k) => {
                 self.unsupported(&format!("{k} pattern"), span);
-                self.skip_pattern_args(k)?;
                 PatternKind::Unsupported
             }
             _ => return Ok(None),
@@ -375,13 +381,6 @@ impl Parser {
         }
         self.expect_sym(Sym::RBrace, "slope")?;
         Ok(sl)
-    }
-
-    fn skip_pattern_args(&mut self, k: &str) -> PResult<()> {
-        if k == "tiling" {
-            self.parse_expr()?;
-        }
-        Ok(())
     }
 
     /// Generators 1 and 2 are POV-Ray's own, measured (docs/noise.md); generator 3's hashing
@@ -519,6 +518,14 @@ impl Parser {
                         "offset" => *offset = v.x,
                         _ => *solid = true,
                     }
+                }
+            }
+            "control0" | "control1" => {
+                let v = self.parse_float()?;
+                match &mut pat.kind {
+                    PatternKind::Quilted { c0, .. } if k == "control0" => *c0 = v,
+                    PatternKind::Quilted { c1, .. } => *c1 = v,
+                    _ => self.unsupported(&format!("{k} (outside quilted)"), span),
                 }
             }
             "warp" => {

@@ -3,7 +3,6 @@
 
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
-use super::source::Span;
 
 impl Parser {
     pub(super) fn parse_global_radiosity(&mut self) -> PResult<()> {
@@ -70,18 +69,24 @@ impl Parser {
         Ok(())
     }
 
-    /// An object's `radiosity { importance F }`.
-    pub(super) fn parse_object_radiosity(&mut self, span: Span) -> PResult<()> {
+    /// An object's `radiosity { importance F }`: the importance, when written (the manual's
+    /// range, above 0 and at most 1; values outside are clamped into it with a warning).
+    pub(super) fn parse_object_radiosity(&mut self) -> PResult<Option<f32>> {
         self.expect_sym(Sym::LBrace, "after 'radiosity'")?;
+        let mut importance = None;
         loop {
             let t = self.next_tok()?;
             match &t.tok {
-                Tok::Sym(Sym::RBrace) => return Ok(()),
+                Tok::Sym(Sym::RBrace) => return Ok(importance),
                 Tok::Ident(k) if &**k == "importance" => {
                     let v = self.parse_float()?;
-                    if v < 1.0 {
-                        self.unsupported("radiosity importance below 1", span);
+                    if !(v > 0.0 && v <= 1.0) {
+                        self.warn(
+                            t.span,
+                            format!("radiosity importance {v} is outside (0, 1]; clamped"),
+                        );
                     }
+                    importance = Some(v.clamp(1e-6, 1.0) as f32);
                 }
                 _ => return Err(self.unexpected(&t, "in an object's radiosity block")),
             }
@@ -98,6 +103,25 @@ mod tests {
         let mut p = Parser::new(ParseOptions::default());
         p.parse_str("t.pov", src).map_err(|_| ())?;
         Ok(p.scene)
+    }
+
+    #[test]
+    fn importance_is_inherited_and_defaulted() {
+        let d = parse_str(
+            "default { radiosity { importance 0.5 } }
+             union { sphere { 0, 1 } sphere { x, 1 radiosity { importance 0.75 } }
+                     radiosity { importance 0.25 } }
+             sphere { 0, 1 }",
+        )
+        .unwrap();
+        let imp = |o: &crate::scene::desc::ObjectDesc| o.rad_importance;
+        let crate::scene::desc::ShapeDesc::Csg { children, .. } = &d.objects[0].shape else {
+            panic!("union expected");
+        };
+        assert_eq!(imp(&d.objects[0]), Some(0.25));
+        assert_eq!(imp(&children[0]), Some(0.25));
+        assert_eq!(imp(&children[1]), Some(0.75));
+        assert_eq!(imp(&d.objects[1]), Some(0.5));
     }
 
     #[test]

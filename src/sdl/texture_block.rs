@@ -9,6 +9,7 @@ use crate::scene::pattern::{Pattern, PatternKind};
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
 use super::pattern::is_pattern_keyword;
+use super::source::Span;
 use super::value::Value;
 
 impl Parser {
@@ -135,8 +136,9 @@ impl Parser {
                     }));
                 }
                 "material_map" => {
-                    self.unsupported(&format!("{k} (patterned texture)"), t.span);
-                    self.skip_texture_pattern()?;
+                    if let Some(tp) = self.parse_material_map(t.span)? {
+                        tex.pattern = Some(Box::new(tp));
+                    }
                 }
                 _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in texture"))),
             }
@@ -244,6 +246,98 @@ impl Parser {
     }
 
     /// Reads past the rest of a patterned texture up to (not including) its closing brace.
+    /// `material_map { TYPE "file" [map_type N] [once] [interpolate N] TEXTURE... }` (povray
+    /// 3.7 rejects transforms inside, though the manual lists them)
+    /// after the keyword: a texture list picked by the palette index of the image's pixel.
+    /// None (after a warning) for an image without a palette, whose rule is not measured.
+    fn parse_material_map(&mut self, span: Span) -> PResult<Option<TexturePattern>> {
+        self.open_brace("material_map")?;
+        if let Some(k) = self.peek_ident()? {
+            if matches!(
+                &*k,
+                "png"
+                    | "gif"
+                    | "tga"
+                    | "iff"
+                    | "ppm"
+                    | "pgm"
+                    | "sys"
+                    | "jpeg"
+                    | "tiff"
+                    | "exr"
+                    | "hdr"
+            ) {
+                self.advance();
+            }
+        }
+        let name_span = self.next_span()?;
+        let name = self.parse_string()?;
+        let mut im = crate::scene::desc::ImageMap {
+            path: Default::default(),
+            map_type: 0,
+            once: false,
+            interpolate: 0,
+            width: 0,
+            height: 0,
+            pixels: Vec::new(),
+            use_alpha: false,
+            bump_size: None,
+            use_index: true,
+        };
+        let mut items = Vec::new();
+        loop {
+            items.extend(self.parse_texture_items()?);
+            let t = self.next_tok()?;
+            let Tok::Ident(k) = &t.tok else {
+                if t.tok == Tok::Sym(Sym::RBrace) {
+                    break;
+                }
+                return Err(self.unexpected(&t, "in material_map"));
+            };
+            match &**k {
+                "map_type" => im.map_type = self.parse_float()? as u32,
+                "once" => im.once = true,
+                "interpolate" => {
+                    // The manual: the index is interpolated before the texture is chosen,
+                    // "no useful purpose"; lancer takes the nearest pixel.
+                    self.parse_float()?;
+                    self.unsupported(
+                        "interpolate (in material_map; the nearest pixel is used)",
+                        t.span,
+                    );
+                }
+                _ => return Err(self.error_at(t.span, format!("unexpected '{k}' in material_map"))),
+            }
+        }
+        let Some(path) = self.find_file(&name) else {
+            return Err(self.error_at(name_span, format!("cannot find image file \"{name}\" (searched the scene directory and the library path)")));
+        };
+        let Some(indices) = crate::scene::image::palette_indices(&path) else {
+            self.unsupported("material_map (with an image without a palette)", span);
+            return Ok(None);
+        };
+        crate::scene::image::load_image_map(&path, &mut im)
+            .map_err(|e| self.error_at(name_span, e))?;
+        if indices.len() != im.pixels.len() || items.is_empty() {
+            self.unsupported("material_map (image or texture list unreadable)", span);
+            return Ok(None);
+        }
+        im.path = path;
+        // Measured (tests/probes/material_map): an index past the list's end wraps around it.
+        let n = items.len();
+        let indices: Vec<u8> = indices.iter().map(|&i| (i as usize % n) as u8).collect();
+        let mut pattern = Pattern::new(PatternKind::MaterialMap(
+            std::sync::Arc::new(im),
+            std::sync::Arc::new(indices),
+        ));
+        pattern.noise_generator = 0;
+        Ok(Some(TexturePattern {
+            pattern,
+            transform: Default::default(),
+            entries: TextureEntries::List(items),
+        }))
+    }
+
     fn skip_texture_pattern(&mut self) -> PResult<()> {
         let mut depth = 0;
         loop {
