@@ -16,6 +16,7 @@
 # missing (override with LANCER=/path/to/binary; POVRAY=... likewise).
 # Both renderers get the same POV-Ray options verbatim; both use all cores.
 set -euo pipefail
+export LANCER_NO_CONFIG=1 # lancer reads no povray.ini/povray.conf: results do not depend on the machine
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 REPS=3

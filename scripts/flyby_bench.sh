@@ -4,6 +4,7 @@
 # against POV-Ray's (lancer compare). Needs povray.
 #   scripts/flyby_bench.sh [WORK_DIR]
 set -euo pipefail
+export LANCER_NO_CONFIG=1 # lancer reads no povray.ini/povray.conf: results do not depend on the machine
 root=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mkdir -p "${1:-/tmp/flyby_bench}" && cd "${1:-/tmp/flyby_bench}" && pwd)
 command -v povray >/dev/null || { echo "flyby_bench: povray is not installed" >&2; exit 2; }

@@ -3,6 +3,7 @@
 # animated GIF, with whichever tool is here: ffmpeg, ImageMagick's convert, or Python's Pillow.
 #   scripts/flyby_gif.sh [OUT_DIR]      (default: flyby/ under the current directory)
 set -euo pipefail
+export LANCER_NO_CONFIG=1 # lancer reads no povray.ini/povray.conf: results do not depend on the machine
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=$(mkdir -p "${1:-flyby}" && cd "${1:-flyby}" && pwd)
 cargo build --release --quiet --manifest-path "$root/Cargo.toml"

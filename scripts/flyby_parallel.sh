@@ -4,6 +4,7 @@
 # one whole run. Needs GNU parallel (Debian package `parallel`).
 #   scripts/flyby_parallel.sh [WORK_DIR] [JOBS]
 set -euo pipefail
+export LANCER_NO_CONFIG=1 # lancer reads no povray.ini/povray.conf: results do not depend on the machine
 root=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mkdir -p "${1:-/tmp/flyby_parallel}" && cd "${1:-/tmp/flyby_parallel}" && pwd)
 jobs=${2:-4}

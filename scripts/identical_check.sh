@@ -13,6 +13,7 @@
 # env:   JOBS (parallel renders per side, default 1), LIMIT (seconds per render, default 120)
 # exit:  0 when every picture is byte-identical, 1 otherwise (the differing scenes are listed)
 set -uo pipefail
+export LANCER_NO_CONFIG=1 # lancer reads no povray.ini/povray.conf: results do not depend on the machine
 cd "$(dirname "$0")/.."
 base=/work/baseline/lancer-main
 new=$PWD/target/release/lancer

@@ -9,6 +9,7 @@
 #
 # usage: scripts/radiosity_table.sh [-n lancer] [-b other_lancer] [-W width -H height] [-s scene]...
 set -uo pipefail
+export LANCER_NO_CONFIG=1 # lancer reads no povray.ini/povray.conf: results do not depend on the machine
 cd "$(dirname "$0")/.."
 lancer=$PWD/target/release/lancer
 other=

@@ -4,6 +4,7 @@
 # file names, and how close is each frame (lowest and mean SSIM)? Prints a Markdown table.
 #   scripts/sample_animations.sh [SCENES_DIR]
 set -uo pipefail
+export LANCER_NO_CONFIG=1 # lancer reads no povray.ini/povray.conf: results do not depend on the machine
 root=$(cd "$(dirname "$0")/.." && pwd)
 scenes=${1:-/usr/share/povray-3.7/scenes}
 cargo build --release --quiet --manifest-path "$root/Cargo.toml"

@@ -18,6 +18,7 @@
 # default uses every core on both sides. lancer is target/release/lancer (LANCER=... to
 # override), POV-Ray is `povray` (POVRAY=...).
 set -euo pipefail
+export LANCER_NO_CONFIG=1 # lancer reads no povray.ini/povray.conf: results do not depend on the machine
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 CASES="spheres1m,spheres300k,mesh1m"

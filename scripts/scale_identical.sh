@@ -15,6 +15,7 @@
 #        OPTS (options replacing the default "-A +FN8", e.g. "+A0.3 +FN8" or "-A +FP")
 # exit:  0 when every picture is byte-identical, 1 otherwise (the differing scenes are listed)
 set -uo pipefail
+export LANCER_NO_CONFIG=1 # lancer reads no povray.ini/povray.conf: results do not depend on the machine
 cd "$(dirname "$0")/.."
 base=/work/baseline/lancer-main
 new=$PWD/target/release/lancer

@@ -3,6 +3,7 @@
 # wall time of each (best of N) and POV-Ray's own trace time. A benchmark, not a test.
 # usage: scripts/scene_times.sh [reps]
 set -euo pipefail
+export LANCER_NO_CONFIG=1 # lancer reads no povray.ini/povray.conf: results do not depend on the machine
 cd "$(dirname "$0")/.."
 reps=${1:-3}
 command -v povray >/dev/null || { echo "povray not found: apt-get install povray povray-includes" >&2; exit 1; }

@@ -23,6 +23,7 @@
 #       load: waiting for a core counts in it). /usr/bin/time counts in 10 ms steps.
 #       Benchmark 1 and 2 only use this.
 set -uo pipefail
+export LANCER_NO_CONFIG=1 # lancer reads no povray.ini/povray.conf: results do not depend on the machine
 cd "$(dirname "$0")/.."
 lancer=$PWD/target/release/lancer
 other=

@@ -70,6 +70,9 @@ pub struct CompareArgs {
     /// Write a heat map of where the pictures differ (PNG).
     #[arg(long, value_name = "PNG")]
     pub diff: Option<PathBuf>,
+    /// Write an HTML page (one file) with both pictures, the heat map and the numbers.
+    #[arg(long, value_name = "HTML")]
+    pub html: Option<PathBuf>,
 }
 
 #[derive(Args, Debug)]
@@ -96,7 +99,7 @@ pub struct ConformanceArgs {
     /// than N reach SSIM 0.95.
     #[arg(long)]
     pub subset: Option<PathBuf>,
-    /// Write the report to PREFIX.md and PREFIX.tsv.
+    /// Write the report to PREFIX.md, PREFIX.tsv and PREFIX.html (pictures in PREFIX_files/).
     #[arg(long, value_name = "PREFIX")]
     pub report: Option<PathBuf>,
     /// Write a subset file for CI: the scenes at SSIM ≥ 0.95 that POV-Ray renders within
@@ -170,6 +173,10 @@ pub struct RenderArgs {
     /// No progress bar or statistics.
     #[arg(short, long)]
     pub quiet: bool,
+    /// Also print the lines POV-Ray prints on stderr (`File '...' line N: Parse Error: ...`,
+    /// the statistics with `Render Time`), as when lancer is invoked as `povray`.
+    #[arg(long)]
+    pub povray_messages: bool,
     #[command(flatten)]
     pub safety: SafetyArgs,
     /// POV-Ray style options (+W640 +H480 -A +A0.3 +R3 -J +Oout.png +Iscene.pov +Ldir +FN16 +FE
@@ -192,6 +199,14 @@ pub struct SafetyArgs {
     /// Let #fopen read and write anywhere.
     #[arg(long)]
     pub io_unrestricted: bool,
+    /// Read no povray.ini or povray.conf (POV-Ray's configuration files, read by default as
+    /// povray reads them), for runs that must not depend on the machine. LANCER_NO_CONFIG=1
+    /// does the same.
+    #[arg(long)]
+    pub no_config: bool,
+    /// povray.conf's I/O restrictions, when configuration files are read.
+    #[arg(skip)]
+    pub conf: Option<crate::config::IoConf>,
 }
 
 impl SafetyArgs {
@@ -199,6 +214,12 @@ impl SafetyArgs {
         o.max_loop_iterations = self.max_loop_iterations;
         o.io_allowed_dirs.extend(self.allow_io.iter().cloned());
         o.io_unrestricted |= self.io_unrestricted;
+        if let Some(c) = &self.conf {
+            use crate::config::IoSecurity;
+            o.io_unrestricted |= c.security == IoSecurity::None;
+            o.io_read_anywhere |= c.security == IoSecurity::ReadOnly;
+            o.io_permits.extend(c.permits.iter().cloned());
+        }
     }
 }
 
@@ -300,7 +321,19 @@ pub fn split_args(args: Vec<String>) -> (Vec<String>, Vec<String>) {
     (clap_args, pov)
 }
 
-pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
+pub fn make_job(a: RenderArgs, pov: &[String]) -> Result<Job, String> {
+    make_job_with(a, &crate::config::Config::default(), pov)
+}
+
+/// Like `make_job`, starting from POV-Ray's configuration files (config.rs): the main INI
+/// file's options come first, so lancer's long options and the command line's switches win.
+/// A file type the main INI file sets does not count as asked for: `-o out.exr` still writes
+/// OpenEXR.
+pub fn make_job_with(
+    mut a: RenderArgs,
+    config: &crate::config::Config,
+    pov: &[String],
+) -> Result<Job, String> {
     let mut s = RenderSettings::default();
     let mut out = OutputOpts::default();
     let mut warnings = Vec::new();
@@ -309,7 +342,38 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
     let mut declares = Vec::new();
     let mut version = None;
     let mut include_header = None;
-    let (mut display, mut pause) = (false, false);
+    let mut show = (false, false);
+    let cli_scene = a.scene.take();
+    let cli_output = a.output.take();
+    let cli_libs = std::mem::take(&mut a.library_path);
+    let cli_threads = a.threads.take();
+    for opt in &config.switches {
+        apply_switch(
+            opt,
+            &mut Switches {
+                s: &mut s,
+                a: &mut a,
+                out: &mut out,
+                warnings: &mut warnings,
+                anim: &mut anim,
+                partial: &mut partial,
+                declares: &mut declares,
+                version: &mut version,
+                include_header: &mut include_header,
+                show: &mut show,
+            },
+        )
+        .map_err(|e| match &config.ini {
+            Some(f) => format!("{}: {e}", f.display()),
+            None => e,
+        })?;
+    }
+    out.type_given = false;
+    a.scene = cli_scene.or(a.scene.take());
+    a.output = cli_output.or(a.output.take());
+    a.library_path.extend(cli_libs);
+    a.threads = cli_threads.or(a.threads);
+    a.safety.conf = config.io.clone();
     if let Some(w) = a.width {
         s.width = w;
     }
@@ -335,37 +399,21 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
         out.type_given = true;
     }
     for opt in pov {
-        let upper = opt.to_ascii_uppercase();
-        if let Some(d) = upper.strip_prefix("+DECLARE=") {
-            // Keep the name's own spelling: identifiers are case-sensitive.
-            let rest = &opt[opt.len() - d.len()..];
-            let (name, v) = rest
-                .split_once('=')
-                .ok_or_else(|| format!("{opt}: expected Declare=Name=number"))?;
-            let v: f64 = v
-                .parse()
-                .map_err(|_| format!("{opt}: expected Declare=Name=number"))?;
-            declares.push((name.to_string(), v));
-        } else if let Some(v) = upper[1..].strip_prefix("MV") {
-            version = Some(
-                v.parse::<f64>()
-                    .map_err(|_| format!("{opt}: expected a version number such as +MV3.7"))?,
-            );
-        } else if upper[1..] == *"P" {
-            pause = upper.starts_with('+');
-        } else if upper[1..].starts_with('D')
-            && upper.len() <= 4
-            && upper[1..].chars().all(|c| c.is_ascii_alphanumeric())
-        {
-            // +D, or +D with POV-Ray's display type and palette letters after it (+D0, +DGT):
-            // show the picture.
-            display = upper.starts_with('+');
-        } else if upper[1..].starts_with("HI") {
-            // A file name keeps its own spelling.
-            include_header = Some(opt[3..].to_string()).filter(|n| !n.is_empty());
-        } else if !anim.apply(opt)? && !partial.apply(opt)? {
-            apply_pov_option(opt, &mut s, &mut a, &mut out, &mut warnings)?;
-        }
+        apply_switch(
+            opt,
+            &mut Switches {
+                s: &mut s,
+                a: &mut a,
+                out: &mut out,
+                warnings: &mut warnings,
+                anim: &mut anim,
+                partial: &mut partial,
+                declares: &mut declares,
+                version: &mut version,
+                include_header: &mut include_header,
+                show: &mut show,
+            },
+        )?;
     }
     let scene = a
         .scene
@@ -419,10 +467,60 @@ pub fn make_job(mut a: RenderArgs, pov: &[String]) -> Result<Job, String> {
         continue_trace: anim.continue_trace,
         version,
         include_header,
-        display,
-        pause,
+        display: show.0,
+        pause: show.1,
         warnings,
     })
+}
+
+/// Everything a POV-Ray switch may change while a job is put together.
+struct Switches<'a> {
+    s: &'a mut RenderSettings,
+    a: &'a mut RenderArgs,
+    out: &'a mut OutputOpts,
+    warnings: &'a mut Vec<String>,
+    anim: &'a mut AnimOpts,
+    partial: &'a mut PartialOpts,
+    declares: &'a mut Vec<(String, f64)>,
+    version: &'a mut Option<f64>,
+    include_header: &'a mut Option<String>,
+    /// `+D` and `+P`.
+    show: &'a mut (bool, bool),
+}
+
+fn apply_switch(opt: &str, w: &mut Switches) -> Result<(), String> {
+    let upper = opt.to_ascii_uppercase();
+    if let Some(d) = upper.strip_prefix("+DECLARE=") {
+        // Keep the name's own spelling: identifiers are case-sensitive.
+        let rest = &opt[opt.len() - d.len()..];
+        let (name, v) = rest
+            .split_once('=')
+            .ok_or_else(|| format!("{opt}: expected Declare=Name=number"))?;
+        let v: f64 = v
+            .parse()
+            .map_err(|_| format!("{opt}: expected Declare=Name=number"))?;
+        w.declares.push((name.to_string(), v));
+    } else if let Some(v) = upper[1..].strip_prefix("MV") {
+        *w.version = Some(
+            v.parse::<f64>()
+                .map_err(|_| format!("{opt}: expected a version number such as +MV3.7"))?,
+        );
+    } else if upper[1..] == *"P" {
+        w.show.1 = upper.starts_with('+');
+    } else if upper[1..].starts_with('D')
+        && upper.len() <= 4
+        && upper[1..].chars().all(|c| c.is_ascii_alphanumeric())
+    {
+        // +D, or +D with POV-Ray's display type and palette letters after it (+D0, +DGT):
+        // show the picture.
+        w.show.0 = upper.starts_with('+');
+    } else if upper[1..].starts_with("HI") {
+        // A file name keeps its own spelling.
+        *w.include_header = Some(opt[3..].to_string()).filter(|n| !n.is_empty());
+    } else if !w.anim.apply(opt)? && !w.partial.apply(opt)? {
+        apply_pov_option(opt, w.s, w.a, w.out, w.warnings)?;
+    }
+    Ok(())
 }
 
 /// `+SR +ER +SC +EC` (Start_Row, End_Row, Start_Column, End_Column): above 1 a pixel number

@@ -83,6 +83,14 @@ impl Comparison {
     /// makes the small differences that still fail a 0.95 threshold visible. Written under a
     /// temporary name and renamed, like every output.
     pub fn write_heat_map(&self, base: &Picture, path: &Path) -> Result<(), String> {
+        let png = self.heat_map_png(base)?;
+        crate::output::write_atomic(path, |tmp| {
+            std::fs::write(tmp, &png).map_err(|e| e.to_string())
+        })
+    }
+
+    /// The heat map as PNG file bytes (see `write_heat_map`).
+    pub fn heat_map_png(&self, base: &Picture) -> Result<Vec<u8>, String> {
         let (w, h, values) = &self.map;
         let mut bytes = Vec::with_capacity(values.len() * 3);
         for (i, &s) in values.iter().enumerate() {
@@ -98,18 +106,34 @@ impl Comparison {
                 bytes.push((v.clamp(0.0, 1.0) * 255.0 + 0.5) as u8);
             }
         }
-        crate::output::write_atomic(path, |tmp| {
-            image::save_buffer_with_format(
-                tmp,
-                &bytes,
-                *w,
-                *h,
-                image::ExtendedColorType::Rgb8,
-                image::ImageFormat::Png,
-            )
-            .map_err(|e| e.to_string())
-        })
+        rgb8_png(*w, *h, &bytes)
     }
+}
+
+/// 8-bit RGB samples as PNG file bytes.
+pub fn rgb8_png(w: u32, h: u32, bytes: &[u8]) -> Result<Vec<u8>, String> {
+    let mut out = std::io::Cursor::new(Vec::new());
+    image::write_buffer_with_format(
+        &mut out,
+        bytes,
+        w,
+        h,
+        image::ExtendedColorType::Rgb8,
+        image::ImageFormat::Png,
+    )
+    .map_err(|e| e.to_string())?;
+    Ok(out.into_inner())
+}
+
+/// A picture as loaded for comparison (any file type `lancer compare` reads) as an 8-bit PNG,
+/// for showing it in a browser.
+pub fn picture_png(p: &Picture) -> Result<Vec<u8>, String> {
+    let bytes: Vec<u8> = p
+        .rgb
+        .iter()
+        .map(|v| (v.clamp(0.0, 1.0) * 255.0 + 0.5) as u8)
+        .collect();
+    rgb8_png(p.width, p.height, &bytes)
 }
 
 /// A black-body-like ramp: 0 black, 0.33 red, 0.66 orange-yellow, 1 near white.

@@ -33,6 +33,13 @@ pub fn expand(args: Vec<String>, warnings: &mut Vec<String>) -> Result<Vec<Strin
     Ok(out)
 }
 
+/// The switches one INI file holds (its unlabelled top), as for a main INI file.
+pub fn expand_file(path: &Path, warnings: &mut Vec<String>) -> Result<Vec<String>, String> {
+    let mut out = Vec::new();
+    read(path, None, 0, &mut out, warnings)?;
+    Ok(out)
+}
+
 /// `name.ini[Section]` → the file and the section, when the argument names an INI file.
 fn ini_reference(arg: &str, dir: &Path) -> Option<(PathBuf, Option<String>)> {
     if arg.starts_with(['+', '-']) {
@@ -203,10 +210,12 @@ fn switch_for(key: &str, value: &str) -> Result<Option<String>, String> {
         "bits_per_color" | "file_gamma" | "dither_method" | "compression" => {
             Ok(Some(format!("+{key}={value}")))
         }
-        "display" => flag("D"),
-        "pause_when_done" => flag("P"),
-        // Verbosity, statistics and text streams do not change the picture.
-        "verbose"
+        // Display, pause, verbosity, statistics and text streams do not change the picture.
+        // (Debian's povray.ini, read as povray reads it, says Display=On: a window for every
+        // render would be no service; +D on the command line opens one.)
+        "display"
+        | "pause_when_done"
+        | "verbose"
         | "test_abort"
         | "test_abort_count"
         | "display_gamma"
@@ -304,8 +313,7 @@ mod tests {
                 "+H60",
                 "+KFI1",
                 "+KFF20",
-                "+KC",
-                "-P"
+                "+KC"
             ]
         );
         assert_eq!(w.len(), 1);

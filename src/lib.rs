@@ -7,13 +7,16 @@
 
 pub mod anim;
 pub mod api;
+pub mod app;
 pub mod cli;
 pub mod color;
 pub mod compare;
+pub mod config;
 pub mod conformance;
 pub mod diag;
 pub mod func;
 pub mod geom;
+pub mod html_report;
 pub mod ini;
 pub mod math;
 pub mod output;

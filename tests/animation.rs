@@ -87,6 +87,7 @@ fn ini_file_with_a_section_and_switches_after_it() {
     )
     .unwrap();
     let out = Command::new(env!("CARGO_BIN_EXE_lancer"))
+        .env("LANCER_NO_CONFIG", "1")
         .current_dir(&d)
         .args(["spin.ini[small]", "+EF2"])
         .output()
@@ -110,6 +111,7 @@ fn partial_render_is_the_whole_render_inside_the_window_and_black_outside() {
         args.extend_from_slice(extra);
         args.push(out);
         let o = Command::new(env!("CARGO_BIN_EXE_lancer"))
+            .env("LANCER_NO_CONFIG", "1")
             .current_dir(&d)
             .args(&args)
             .output()
@@ -142,6 +144,7 @@ fn declare_and_output_to_file_from_the_command_line() {
     .unwrap();
     let run = |args: &[&str]| {
         Command::new(env!("CARGO_BIN_EXE_lancer"))
+            .env("LANCER_NO_CONFIG", "1")
             .current_dir(&d)
             .args(args)
             .output()

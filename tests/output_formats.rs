@@ -246,26 +246,36 @@ fn every_type_is_written_and_reads_back() {
 
 #[test]
 fn alpha_is_straight_except_in_exr() {
+    // Names of its own: the tests run at once in one process and share the scratch directory,
+    // and every_type_is_written_and_reads_back writes a.png, a.tga, ... there too.
     let film = render(&scene("alpha.pov", ALPHA), true);
-    let png = samples(&open(&ours(&film, "a.png", &spec(FileType::Png))));
+    let png = samples(&open(&ours(&film, "alpha.png", &spec(FileType::Png))));
     // The corner sees only the background rgbt <0.2,0.3,0.5,0.5>: POV-Ray writes
     // [124 149 188 128] there.
     assert_eq!(&png[..4], &[124, 149, 188, 128]);
-    let p16 = open(&ours(&film, "a16.png", &spec(FileType::Png).with_bits(16)));
+    let p16 = open(&ours(
+        &film,
+        "alpha16.png",
+        &spec(FileType::Png).with_bits(16),
+    ));
     assert!(matches!(p16, DynamicImage::ImageRgba16(_)));
-    let tga = samples(&open(&ours(&film, "a.tga", &spec(FileType::Tga))));
+    let tga = samples(&open(&ours(&film, "alpha.tga", &spec(FileType::Tga))));
     assert_eq!(tga, png);
-    let rle = samples(&open(&ours(&film, "c.tga", &spec(FileType::TgaRle))));
+    let rle = samples(&open(&ours(
+        &film,
+        "alpha-rle.tga",
+        &spec(FileType::TgaRle),
+    )));
     assert_eq!(rle, png);
     assert_eq!(
-        bmp_samples(&ours(&film, "a.bmp", &spec(FileType::Bmp))),
+        bmp_samples(&ours(&film, "alpha.bmp", &spec(FileType::Bmp))),
         png
     );
     // Types without alpha get the colour over black: [89 108 137] in the corner.
-    let (_, ppm) = ppm_samples(&ours(&film, "a.ppm", &spec(FileType::Ppm)));
+    let (_, ppm) = ppm_samples(&ours(&film, "alpha.ppm", &spec(FileType::Ppm)));
     assert_eq!(&ppm[..3], &[89, 108, 137]);
     // EXR: associated alpha, so the corner's colour is half the background's linear value.
-    let exr = open(&ours(&film, "a.exr", &spec(FileType::Exr))).to_rgba32f();
+    let exr = open(&ours(&film, "alpha.exr", &spec(FileType::Exr))).to_rgba32f();
     let c = exr.get_pixel(0, 0).0;
     assert!(
         (c[0] - 0.1).abs() < 1e-5 && (c[3] - 0.5).abs() < 1e-5,

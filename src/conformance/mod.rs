@@ -39,6 +39,16 @@ pub struct Options {
     pub lancer: PathBuf,
     /// Print one line per scene as it finishes.
     pub verbose: bool,
+    /// Keep each scene's pictures here (POV-Ray's, lancer's and the heat map, named by
+    /// `picture_names`) for the HTML report.
+    pub pictures: Option<PathBuf>,
+}
+
+/// The file names of a scene's pictures in `Options::pictures`: POV-Ray's, lancer's, the
+/// heat map.
+pub fn picture_names(scene: &str) -> [String; 3] {
+    let stem = scene.trim_end_matches(".pov").replace(['/', '\\'], "__");
+    ["povray", "lancer", "diff"].map(|k| format!("{stem}-{k}.png"))
 }
 
 /// How lancer did on one scene, relative to POV-Ray.
@@ -162,6 +172,7 @@ pub fn run(o: &Options) -> Result<Vec<SceneResult>, String> {
         cache: o.cache.clone(),
         povray: o.povray.clone(),
         lancer: o.lancer.clone(),
+        pictures: o.pictures.clone(),
         ..*o
     };
     let next = AtomicUsize::new(0);
@@ -267,6 +278,9 @@ fn run_one(
             Err(e) => Class::Error(format!("cannot compare the pictures: {e}")),
         }
     };
+    if let (Some(dir), true) = (&o.pictures, ssim.is_some()) {
+        keep_pictures(dir, name, &cache.picture(key), &out)?;
+    }
     let _ = std::fs::remove_file(&out);
     Ok(SceneResult {
         name: name.to_string(),
@@ -276,6 +290,20 @@ fn run_one(
         pov,
         missing,
     })
+}
+
+/// Copies both pictures into `dir` and draws the heat map of their differences.
+fn keep_pictures(dir: &Path, name: &str, povray: &Path, lancer: &Path) -> Result<(), String> {
+    let [p, l, d] = picture_names(name).map(|n| dir.join(n));
+    let copy = |from: &Path, to: &Path| {
+        std::fs::copy(from, to)
+            .map(|_| ())
+            .map_err(|e| format!("cannot copy {} to {}: {e}", from.display(), to.display()))
+    };
+    copy(povray, &p)?;
+    copy(lancer, &l)?;
+    let (c, base) = crate::compare::compare_files(povray, lancer).map_err(|e| e.0)?;
+    c.write_heat_map(&base, &d)
 }
 
 fn run_povray(o: &Options, scene: &Path, dir: &Path, out: &Path) -> Result<PovResult, String> {

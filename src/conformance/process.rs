@@ -28,6 +28,8 @@ pub fn run(
     let mut child = Command::new(program)
         .args(args)
         .current_dir(dir)
+        // lancer reads no povray.ini or povray.conf: the report must not depend on the machine.
+        .env(crate::config::NO_CONFIG_ENV, "1")
         .stdin(Stdio::null())
         .stdout(Stdio::null())
         .stderr(Stdio::piped())

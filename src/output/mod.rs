@@ -256,6 +256,19 @@ pub fn to_rgb8(film: &Film) -> Vec<u8> {
     plane.data.iter().map(|&v| v as u8).collect()
 }
 
+/// 8-bit samples as an 8-bit PNG of `spec` would hold them, RGB or RGBA (`alpha` and a film
+/// with alpha), and the channel count.
+pub fn samples8(film: &Film, spec: &OutputSpec, alpha: bool) -> (Vec<u8>, usize) {
+    let mut spec = *spec;
+    spec.file_type = FileType::Png;
+    spec.set_bits(8);
+    let plane = pixels::quantise(film, &spec, alpha);
+    (
+        plane.data.iter().map(|&v| v as u8).collect(),
+        plane.channels,
+    )
+}
+
 /// Writes the picture to `path`, or to standard output when `path` is `-` (POV-Ray's `+O-`,
 /// for piping into another program).
 pub fn write(film: &Film, path: &Path, spec: &OutputSpec) -> Result<(), String> {

@@ -271,8 +271,8 @@ impl<'a> Tracer<'a> {
             return (DVec3::ZERO, f64::INFINITY);
         }
         let (seen, t) = match self.first_visible(ray, false, true, ctx) {
-            Some(h) if h.obj.importance < 1.0 => {
-                let imp = f64::from(h.obj.importance);
+            Some(h) if h.obj.importance < u8::MAX => {
+                let imp = f64::from(h.obj.importance) / 255.0;
                 if share >= imp {
                     return (DVec3::ZERO, h.t * ray.dir.length());
                 }

@@ -609,7 +609,11 @@ impl Ctx {
             no_image: o.no_image,
             no_reflection: o.no_reflection,
             no_radiosity: o.no_radiosity,
-            importance: o.rad_importance.unwrap_or(1.0),
+            importance: if o.rad_importance > 0.0 {
+                (f64::from(o.rad_importance) * 255.0).round().max(1.0) as u8
+            } else {
+                u8::MAX
+            },
             double_illuminate: o.double_illuminate,
             light_set: self.current_set,
             hollow: o.hollow.unwrap_or(false),

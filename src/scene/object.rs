@@ -50,9 +50,10 @@ pub struct Object {
     pub no_reflection: bool,
     /// Unseen by radiosity's gathering rays (`no_radiosity`).
     pub no_radiosity: bool,
-    /// `radiosity { importance }` (1 when not written): the share of radiosity's gathering
-    /// rays meeting it that are followed.
-    pub importance: f32,
+    /// `radiosity { importance }` in 1/255ths (255, all, when not written): the share of
+    /// radiosity's gathering rays meeting it that are followed. One byte fits beside the
+    /// flags; anything wider grows every object by 8 (tests/memory_layout.rs).
+    pub importance: u8,
     /// Lit from behind its surface too (`double_illuminate`).
     pub double_illuminate: bool,
     /// `hollow`: fog and other atmosphere reach inside it (they stop inside solid objects).

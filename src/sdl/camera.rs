@@ -20,7 +20,9 @@ impl Parser {
             if let Some(mut obj) = self.parse_object()? {
                 if let Some(v) = self.scene.default_importance {
                     super::object::set_deep(&mut obj, &|o: &mut crate::scene::desc::ObjectDesc| {
-                        o.rad_importance.get_or_insert(v);
+                        if o.rad_importance == 0.0 {
+                            o.rad_importance = v;
+                        }
                     });
                 }
                 self.scene.objects.push(obj);

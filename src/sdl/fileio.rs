@@ -11,7 +11,8 @@
 //!
 //! Scenes may only read and write below the scene file's directory and the current working
 //! directory (reads may also use the library paths), unless `ParseOptions::io_unrestricted`
-//! is set or the directory is listed in `ParseOptions::io_allowed_dirs`.
+//! is set or the directory is listed in `ParseOptions::io_allowed_dirs` or permitted by
+//! povray.conf (`ParseOptions::io_permits`, `io_read_anywhere`; see config.rs).
 
 use std::collections::HashMap;
 use std::io::Write;
@@ -88,7 +89,20 @@ fn binary_word(kind: &str, v: f64) -> Option<Vec<u8>> {
 impl Parser {
     /// Whether `path` (absolute, resolved) lies where the scene may read or write.
     fn io_permitted(&self, path: &Path, write: bool) -> bool {
-        if self.options.io_unrestricted {
+        if self.options.io_unrestricted || (!write && self.options.io_read_anywhere) {
+            return true;
+        }
+        let permitted = self.options.io_permits.iter().any(|p| {
+            (p.write || !write)
+                && p.dir.canonicalize().is_ok_and(|d| {
+                    if p.subdirs {
+                        path.starts_with(&d)
+                    } else {
+                        path.parent() == Some(d.as_path())
+                    }
+                })
+        });
+        if permitted {
             return true;
         }
         let mut roots: Vec<PathBuf> = vec![self.scene_dir.clone(), PathBuf::from(".")];

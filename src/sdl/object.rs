@@ -225,9 +225,11 @@ impl Parser {
                 if let Some(v) = self.parse_object_radiosity()? {
                     // CSG members without their own take their parent's.
                     set_deep(obj, &|o: &mut ObjectDesc| {
-                        o.rad_importance.get_or_insert(v);
+                        if o.rad_importance == 0.0 {
+                            o.rad_importance = v;
+                        }
                     });
-                    obj.rad_importance = Some(v);
+                    obj.rad_importance = v;
                 }
             }
             "clipped_by" => {

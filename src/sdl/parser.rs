@@ -45,6 +45,10 @@ pub struct ParseOptions {
     pub io_unrestricted: bool,
     /// Further directories `#fopen` may read and write below.
     pub io_allowed_dirs: Vec<PathBuf>,
+    /// povray.conf's `read-only` security: `#fopen` may read anywhere.
+    pub io_read_anywhere: bool,
+    /// povray.conf's `[Permitted Paths]`, beside the directories above.
+    pub io_permits: Vec<crate::config::IoPermit>,
     /// Stops the parse with an error after this many `#while`/`#for` iterations in all;
     /// `None` (the default) lets loops run as long as they like, as POV-Ray does.
     pub max_loop_iterations: Option<u64>,
@@ -72,6 +76,8 @@ impl Default for ParseOptions {
             final_clock: 0.0,
             io_unrestricted: false,
             io_allowed_dirs: Vec::new(),
+            io_read_anywhere: false,
+            io_permits: Vec::new(),
             max_loop_iterations: None,
             declares: Vec::new(),
             version: None,

@@ -118,10 +118,10 @@ mod tests {
         let crate::scene::desc::ShapeDesc::Csg { children, .. } = &d.objects[0].shape else {
             panic!("union expected");
         };
-        assert_eq!(imp(&d.objects[0]), Some(0.25));
-        assert_eq!(imp(&children[0]), Some(0.25));
-        assert_eq!(imp(&children[1]), Some(0.75));
-        assert_eq!(imp(&d.objects[1]), Some(0.5));
+        assert_eq!(imp(&d.objects[0]), 0.25);
+        assert_eq!(imp(&children[0]), 0.25);
+        assert_eq!(imp(&children[1]), 0.75);
+        assert_eq!(imp(&d.objects[1]), 0.5);
     }
 
     #[test]

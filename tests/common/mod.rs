@@ -51,6 +51,7 @@ pub fn radii(s: &SceneDesc) -> Vec<f64> {
 /// Runs the lancer binary in `dir` with `args`: exit code, stdout, stderr.
 pub fn lancer_in(dir: &Path, args: &[&str]) -> (i32, String, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_lancer"))
+        .env("LANCER_NO_CONFIG", "1")
         .current_dir(dir)
         .args(args)
         .output()

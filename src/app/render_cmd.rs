@@ -1,5 +1,5 @@
 //! `lancer render` (the default command): a still picture, or an animation frame by frame with
-//! the scene parsed anew for each frame, as POV-Ray does. Part of the binary.
+//! the scene parsed anew for each frame, as POV-Ray does. Part of the `lancer` command (app).
 
 use std::collections::HashSet;
 use std::process::ExitCode;
@@ -7,9 +7,11 @@ use std::time::Instant;
 
 use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
 
-use lancer::anim::Frame;
-use lancer::cli::Job;
-use lancer::preview::display::Feed;
+use crate::anim::Frame;
+use crate::cli::Job;
+use crate::preview::display::Feed;
+
+use super::povray_msgs;
 
 /// Renders the job; with `feed` (`+D`) each picture is also shown as it is drawn.
 pub fn render(job: Job, feed: Option<Feed>) -> ExitCode {
@@ -35,6 +37,7 @@ pub fn render(job: Job, feed: Option<Feed>) -> ExitCode {
         Ok(p) => p,
         Err(e) => {
             eprintln!("lancer: {e}");
+            povray_msgs::render_failed();
             return ExitCode::from(1);
         }
     };
@@ -93,7 +96,7 @@ pub fn render(job: Job, feed: Option<Feed>) -> ExitCode {
     }
     frame_bar.finish_and_clear();
     // The lexed files are freed by the exit that follows.
-    lancer::stats::dispose(lexed, true);
+    crate::stats::dispose(lexed, true);
     if animated && !job.quiet {
         eprintln!(
             "lancer: {} frames in {:.2}s",
@@ -120,7 +123,7 @@ const BAND_ABOVE: u64 = 2 << 30;
 /// Decides, before any work, how the picture is held; a picture that can neither be banded
 /// nor fit in the memory available is refused with what it needs and how to avoid it.
 fn plan(job: &Job) -> Result<Plan, String> {
-    use lancer::render::band;
+    use crate::render::band;
     let s = &job.settings;
     let need = band::whole_picture_bytes(s);
     if need <= BAND_ABOVE {
@@ -129,14 +132,14 @@ fn plan(job: &Job) -> Result<Plan, String> {
     let why_not = if !band::can_band(s) {
         Some("anti-aliasing method 2 (+AM2) needs the whole picture".to_string())
     } else if job.write_output {
-        lancer::output::why_not_streamable(&job.output_spec)
+        crate::output::why_not_streamable(&job.output_spec)
     } else {
         None
     };
     let Some(why) = why_not else {
         return Ok(Plan::Banded(band::band_rows(s)));
     };
-    let available = lancer::stats::available_memory_bytes();
+    let available = crate::stats::available_memory_bytes();
     if available.is_none_or(|a| need < a) {
         return Ok(Plan::Whole);
     }
@@ -161,13 +164,13 @@ fn render_frame(
     last: bool,
     plan: Plan,
     said: &mut HashSet<String>,
-    lexed: &mut Option<lancer::sdl::parser::Lexed>,
+    lexed: &mut Option<crate::sdl::parser::Lexed>,
     bar: &ProgressBar,
     feed: Option<&Feed>,
 ) -> ExitCode {
     let start = Instant::now();
     let opts = job.parse_options(f);
-    let mut parsed = lancer::api::parse_file_with(&job.scene, opts, lexed.take());
+    let mut parsed = crate::api::parse_file_with(&job.scene, opts, lexed.take());
     let sources = &parsed.parser.sources;
     for w in &parsed.parser.warnings {
         if said.insert(w.one_line(sources)) {
@@ -176,6 +179,12 @@ fn render_frame(
     }
     if let Some(e) = &parsed.error {
         e.emit_stderr(sources);
+        if !job.scene.is_file() {
+            povray_msgs::missing_input(&job.scene.display().to_string());
+        } else {
+            let place = crate::api::ErrorPlace::of(e, sources);
+            povray_msgs::parse_error(place.file.as_deref(), place.line, &e.message);
+        }
         return ExitCode::from(1);
     }
     let parse_time = start.elapsed();
@@ -188,7 +197,7 @@ fn render_frame(
     } else {
         *lexed = Some(files);
     }
-    let built = lancer::scene::build::build(
+    let built = crate::scene::build::build(
         &parsed.parser.scene,
         job.settings.width,
         job.settings.height,
@@ -212,13 +221,14 @@ fn render_frame(
         Plan::Whole => {
             let film = match feed {
                 Some(feed) => feed.render(&built.scene, &job.settings),
-                None => lancer::render::render(&built.scene, &job.settings, &progress),
+                None => crate::render::render(&built.scene, &job.settings, &progress),
             };
             let render_time = trace_start.elapsed().as_secs_f64();
             let write_start = Instant::now();
             if job.write_output {
-                if let Err(e) = lancer::output::write(&film, &f.output, &job.output_spec) {
+                if let Err(e) = crate::output::write(&film, &f.output, &job.output_spec) {
                     eprintln!("lancer: {e}");
+                    povray_msgs::render_failed();
                     return ExitCode::from(1);
                 }
             }
@@ -231,14 +241,14 @@ fn render_frame(
             (film.rays, film.camera_rays, timing)
         }
         Plan::Banded(rows) => {
-            use lancer::render::band::render_bands;
+            use crate::render::band::render_bands;
             if feed.is_some() {
                 eprintln!("warning: +D: a picture rendered band by band is not shown");
             }
             let scene = &built.scene;
             let s = &job.settings;
             let counts = if job.write_output {
-                lancer::output::write_banded(&f.output, &job.output_spec, w, h, |sink| {
+                crate::output::write_banded(&f.output, &job.output_spec, w, h, |sink| {
                     render_bands(scene, s, rows, &progress, sink)
                 })
             } else {
@@ -248,6 +258,7 @@ fn render_frame(
                 Ok(c) => c,
                 Err(e) => {
                     eprintln!("lancer: {e}");
+                    povray_msgs::render_failed();
                     return ExitCode::from(1);
                 }
             };
@@ -264,8 +275,21 @@ fn render_frame(
             )
         }
     };
+    povray_msgs::statistics(
+        &povray_msgs::Stats {
+            width: w,
+            height: h,
+            parse_seconds: parse_time.as_secs_f64(),
+            build_seconds: build_time.as_secs_f64(),
+            trace_seconds: trace_start.elapsed().as_secs_f64(),
+            rays,
+            camera_rays,
+            threads: rayon::current_num_threads(),
+        },
+        last,
+    );
     if !job.quiet {
-        let peak = lancer::stats::peak_rss_bytes()
+        let peak = crate::stats::peak_rss_bytes()
             .map_or(String::new(), |b| format!(", peak {} MB", b / (1 << 20)));
         let phases = format!(
             "parse {:.3}s, build {:.3}s, {timing}{peak}",
@@ -289,6 +313,6 @@ fn render_frame(
             );
         }
     }
-    lancer::stats::dispose(built.scene, last);
+    crate::stats::dispose(built.scene, last);
     ExitCode::SUCCESS
 }

@@ -1,14 +1,14 @@
-//! The `compare`, `check` and `conformance` subcommands of the `lancer` binary (rendering lives
-//! in main.rs). Each returns the process exit code.
+//! The `compare`, `check` and `conformance` subcommands of the `lancer` command (rendering
+//! lives in render_cmd.rs). Each returns the process exit code.
 
 use std::process::ExitCode;
 use std::time::Duration;
 
-use lancer::cli::{make_job, CheckArgs, CompareArgs, ConformanceArgs, RenderArgs};
-use lancer::conformance::{self, report, Options};
+use crate::cli::{make_job_with, CheckArgs, CompareArgs, ConformanceArgs, RenderArgs};
+use crate::conformance::{self, report, Options};
 
 pub fn compare(a: CompareArgs) -> ExitCode {
-    let (c, base) = match lancer::compare::compare_files(&a.a, &a.b) {
+    let (c, base) = match crate::compare::compare_files(&a.a, &a.b) {
         Ok(r) => r,
         Err(e) => {
             eprintln!("lancer compare: {}", e.0);
@@ -20,6 +20,28 @@ pub fn compare(a: CompareArgs) -> ExitCode {
     if let Some(path) = &a.diff {
         if let Err(e) = c.write_heat_map(&base, path) {
             eprintln!("lancer compare: cannot write the heat map: {e}");
+            return ExitCode::from(2);
+        }
+    }
+    if let Some(path) = &a.html {
+        let page = (|| -> Result<String, String> {
+            let pb = crate::ssim::Picture::load(&a.b)?;
+            Ok(crate::html_report::compare_page(
+                &a.a.display().to_string(),
+                &a.b.display().to_string(),
+                &crate::compare::picture_png(&base)?,
+                &crate::compare::picture_png(&pb)?,
+                &c.heat_map_png(&base)?,
+                &c,
+            ))
+        })();
+        let written = page.and_then(|p| {
+            crate::output::write_atomic(path, |tmp| {
+                std::fs::write(tmp, p.as_bytes()).map_err(|e| e.to_string())
+            })
+        });
+        if let Err(e) = written {
+            eprintln!("lancer compare: cannot write the HTML page: {e}");
             return ExitCode::from(2);
         }
     }
@@ -35,7 +57,7 @@ pub fn compare(a: CompareArgs) -> ExitCode {
     }
 }
 
-pub fn check(a: CheckArgs, pov: &[String]) -> ExitCode {
+pub fn check(a: CheckArgs, config: &crate::config::Config, pov: &[String]) -> ExitCode {
     let mut failed = 0;
     for file in &a.files {
         // The same options as a render of the file would get (+L, +W/+H, Declare=, +K, ...).
@@ -45,7 +67,7 @@ pub fn check(a: CheckArgs, pov: &[String]) -> ExitCode {
             safety: a.safety.clone(),
             ..RenderArgs::default()
         };
-        let job = match make_job(args, pov) {
+        let job = match make_job_with(args, config, pov) {
             Ok(j) => j,
             Err(e) => {
                 eprintln!("lancer check: {e}");
@@ -65,7 +87,7 @@ pub fn check(a: CheckArgs, pov: &[String]) -> ExitCode {
             }
         }
         let opts = job.parse_options(&frame);
-        let parsed = lancer::api::parse_file(file, opts);
+        let parsed = crate::api::parse_file(file, opts);
         let sources = &parsed.parser.sources;
         if !a.quiet {
             for w in &parsed.parser.warnings {
@@ -142,7 +164,11 @@ fn run_conformance(a: ConformanceArgs) -> Result<ExitCode, String> {
         povray: a.povray.clone(),
         lancer,
         verbose: !a.quiet,
+        pictures: a.report.as_ref().map(|p| files_dir(p)),
     };
+    if let Some(d) = &o.pictures {
+        std::fs::create_dir_all(d).map_err(|e| format!("cannot create {}: {e}", d.display()))?;
+    }
     let results = conformance::run(&o)?;
     let summary = report::summarize(&results);
     println!("{}", summary.line());
@@ -163,11 +189,35 @@ fn run_conformance(a: ConformanceArgs) -> Result<ExitCode, String> {
             .transpose()?
             .unwrap_or_default();
         let md = report::markdown(&results, &header, &known);
-        lancer::output::write_text_atomic(&prefix.with_extension("md"), &md)?;
-        lancer::output::write_text_atomic(
+        crate::output::write_text_atomic(&prefix.with_extension("md"), &md)?;
+        crate::output::write_text_atomic(
             &prefix.with_extension("tsv"),
             &report::tsv(&results, &known),
         )?;
+        let dir = files_dir(prefix);
+        let rel = dir.file_name().map(|n| n.to_string_lossy().into_owned());
+        let pictures: Vec<_> = results
+            .iter()
+            .map(|r| {
+                let names = conformance::picture_names(&r.name);
+                let at = |n: &String| format!("{}/{n}", rel.clone().unwrap_or_default());
+                dir.join(&names[2])
+                    .exists()
+                    .then(|| crate::html_report::ScenePictures {
+                        povray: at(&names[0]),
+                        lancer: at(&names[1]),
+                        diff: at(&names[2]),
+                    })
+            })
+            .collect();
+        let page = crate::html_report::conformance_page(
+            "lancer conformance",
+            &format!("{}. {header}", summary.line()),
+            &results,
+            &pictures,
+            a.width,
+        );
+        crate::output::write_text_atomic(&prefix.with_extension("html"), &page)?;
     }
     if let Some(path) = &a.write_subset {
         write_subset(path, &results, a.subset_seconds)?;
@@ -186,6 +236,13 @@ fn run_conformance(a: ConformanceArgs) -> Result<ExitCode, String> {
         );
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// Where the HTML report's pictures go: `PREFIX_files` beside `PREFIX.html`.
+fn files_dir(prefix: &std::path::Path) -> std::path::PathBuf {
+    let mut name = prefix.file_name().unwrap_or_default().to_os_string();
+    name.push("_files");
+    prefix.with_file_name(name)
 }
 
 /// The CI subset: every good scene POV-Ray renders quickly, so CI can afford to render them
@@ -221,5 +278,5 @@ min_good {}\n",
         text.push_str(g);
         text.push('\n');
     }
-    lancer::output::write_text_atomic(path, &text)
+    crate::output::write_text_atomic(path, &text)
 }

@@ -1,0 +1,134 @@
+//! The `lancer` command's work, in the library so that the binary and the Python module's
+//! `lancer` command run the same code: INI expansion, configuration files, the subcommands.
+//! Reads POV-Ray's povray.ini and povray.conf as povray does unless `--no-config` /
+//! `LANCER_NO_CONFIG=1` (config.rs).
+
+use std::process::ExitCode;
+
+use clap::Parser as _;
+
+use crate::cli::{make_job_with, split_args, Cli, Command};
+
+mod commands;
+pub mod povray_msgs;
+mod render_cmd;
+
+/// Runs the `lancer` command with `args` (the program name first) and returns its exit code:
+/// 0 success, 1 scene or output error, 2 usage error.
+pub fn run(args: Vec<String>) -> ExitCode {
+    // INI files on the command line become the switches they hold, where they stand.
+    let mut ini_warnings = Vec::new();
+    let raw = args;
+    let hermetic = crate::config::disabled(&raw);
+    let as_povray = raw
+        .first()
+        .is_some_and(|a| povray_msgs::invoked_as_povray(a));
+    povray_msgs::set(as_povray || raw.iter().skip(1).any(|a| a == "--povray-messages"));
+    // POV-Ray exits with 1 when it cannot read its options; lancer has kept 2.
+    let usage = if as_povray { 1 } else { 2 };
+    let args = match crate::ini::expand(raw, &mut ini_warnings) {
+        Ok(a) => a,
+        Err(e) => {
+            eprintln!("lancer: {e}");
+            return ExitCode::from(usage);
+        }
+    };
+    for w in &ini_warnings {
+        eprintln!("warning: {w}");
+    }
+    let (clap_args, pov) = split_args(args);
+    let cli = match Cli::try_parse_from(clap_args) {
+        Ok(c) => c,
+        Err(e) => {
+            let code = if e.use_stderr() { usage } else { 0 };
+            let _ = e.print();
+            return ExitCode::from(code);
+        }
+    };
+    let config = || {
+        if hermetic {
+            return Ok(crate::config::Config::default());
+        }
+        let mut w = Vec::new();
+        let c = crate::config::load(&crate::config::Places::from_env(), &mut w);
+        for w in &w {
+            eprintln!("warning: {w}");
+        }
+        c
+    };
+    let config = match &cli.command {
+        Command::Render(_) | Command::Check(_) | Command::Preview(_) => match config() {
+            Ok(c) => c,
+            Err(e) => {
+                eprintln!("lancer: {e}");
+                return ExitCode::from(usage);
+            }
+        },
+        _ => crate::config::Config::default(),
+    };
+    match cli.command {
+        Command::Render(args) => match make_job_with(args, &config, &pov) {
+            Ok(job) => {
+                on_abort_exit();
+                let (display, pause) = (job.display, job.pause);
+                let size = (job.settings.width, job.settings.height);
+                crate::preview::display::run(display, pause, size, move |feed| {
+                    render_cmd::render(job, feed)
+                })
+            }
+            Err(e) => {
+                eprintln!("lancer: {e}");
+                if povray_msgs::on() {
+                    eprintln!("Failed to parse command-line option");
+                }
+                ExitCode::from(usage)
+            }
+        },
+        Command::Compare(args) => commands::compare(args),
+        Command::Check(args) => commands::check(args, &config, &pov),
+        Command::Conformance(args) => commands::conformance(args),
+        Command::Preview(args) => match make_job_with(args.render, &config, &pov) {
+            Ok(job) => {
+                let options = crate::preview::Options {
+                    screenshot: args.screenshot,
+                    screenshot_exit: args.exit_after_screenshot,
+                    bench: args.bench,
+                    full_resolution: args.full_resolution,
+                    follow_scene_camera: true,
+                };
+                ExitCode::from(crate::preview::run(job, options))
+            }
+            Err(e) => {
+                eprintln!("lancer: {e}");
+                ExitCode::from(usage)
+            }
+        },
+    }
+}
+
+/// A user abort (SIGINT, SIGTERM) ends a render at once with exit code 2, as povray's: no
+/// picture is written (pictures are renamed into place only when complete).
+fn on_abort_exit() {
+    use signal_hook::consts::{SIGINT, SIGTERM};
+    let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM]) else {
+        return;
+    };
+    std::thread::spawn(move || {
+        if let Some(sig) = signals.forever().next() {
+            povray_msgs::aborted(if sig == SIGINT {
+                "SIGINT: Interrupt"
+            } else {
+                "SIGTERM: Termination"
+            });
+            std::process::exit(2);
+        }
+    });
+}
+
+/// `run`'s exit code as a number, for callers that are not a Rust `main` (the Python module).
+pub fn run_status(args: Vec<String>) -> u8 {
+    let code = run(args);
+    (0..=255u8)
+        .find(|&c| ExitCode::from(c) == code)
+        .unwrap_or(1)
+}
