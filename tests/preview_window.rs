@@ -4,7 +4,9 @@
 //! rays through the same code), that a toolbox switch gives the batch picture of the quality
 //! level with that flag off, that the keys move the camera the way they say, and that a
 //! screenshot is written. Without a display (plain `cargo test`) the window tests print a note
-//! and pass; the exit without a display is tested everywhere.
+//! and pass; the exit without a display is tested everywhere. Built with the `preview` feature
+//! (the default) only.
+#![cfg(feature = "preview")]
 
 use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};

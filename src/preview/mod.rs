@@ -5,14 +5,20 @@
 //! POV-Ray's `+D`/`+P` for batch renders. The window is eframe/egui on OpenGL (glow), loaded
 //! at run time: building needs no system libraries, running needs a display and libGL.
 
+#[cfg(feature = "preview")]
 pub mod app;
+#[cfg(feature = "preview")]
+pub mod display;
+#[cfg(not(feature = "preview"))]
+#[path = "no_window.rs"]
 pub mod display;
 pub mod pose;
+#[cfg(feature = "preview")]
 pub mod watch;
+#[cfg(feature = "preview")]
 pub mod worker;
 
 use std::path::PathBuf;
-use std::sync::Arc;
 
 use crate::cli::Job;
 
@@ -49,6 +55,22 @@ pub fn no_display() -> Option<String> {
 /// Opens the preview window for `job` and returns the exit code: 0 when the window is
 /// closed, 1 when it cannot be opened.
 pub fn run(job: Job, options: Options) -> u8 {
+    #[cfg(not(feature = "preview"))]
+    {
+        let _ = (job, options);
+        eprintln!(
+            "lancer preview: this lancer was built without the preview window (cargo feature \
+             `preview`)"
+        );
+        1
+    }
+    #[cfg(feature = "preview")]
+    window(job, options)
+}
+
+#[cfg(feature = "preview")]
+fn window(job: Job, options: Options) -> u8 {
+    use std::sync::Arc;
     if let Some(why) = no_display() {
         eprintln!("lancer preview: {why}");
         return 1;
