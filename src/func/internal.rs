@@ -156,7 +156,7 @@ impl Internal {
         match self {
             Internal::Unknown(n) => Some(match NAMES.get(n as usize) {
                 Some(name) => format!(
-                    "the internal function {n} ({name} in functions.inc) is not supported by lancer yet"
+                    "'{name}' is not supported by lancer yet (internal function {n} of functions.inc)"
                 ),
                 None => format!("POV-Ray 3.7 has no internal function {n}"),
             }),
