@@ -35,6 +35,27 @@ pub enum Command {
     /// Render a directory of scenes with povray and lancer and report how they compare.
     #[command(hide = true)]
     Conformance(ConformanceArgs),
+    /// Open a scene in a window: the picture refines while nothing changes, the keyboard and
+    /// mouse move the camera, a toolbox switches effects. Takes the render's options.
+    Preview(PreviewArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct PreviewArgs {
+    #[command(flatten)]
+    pub render: RenderArgs,
+    /// Write a screenshot of the window (PNG) once the first view is refined.
+    #[arg(long, value_name = "PNG")]
+    pub screenshot: Option<PathBuf>,
+    /// Close the window once the screenshot is written.
+    #[arg(long, requires = "screenshot")]
+    pub exit_after_screenshot: bool,
+    /// Orbit the camera for SECONDS, print the frame rate and close (benchmarks).
+    #[arg(long, value_name = "SECONDS")]
+    pub bench: Option<f64>,
+    /// Render every view at full resolution, without the coarse levels.
+    #[arg(long)]
+    pub full_resolution: bool,
 }
 
 #[derive(Args, Debug)]
@@ -225,6 +246,9 @@ pub struct Job {
     pub version: Option<f64>,
     /// `+HI` / `Include_Header=`: a file included before the scene.
     pub include_header: Option<String>,
+    /// `+D`: show the picture in a window as it is drawn; `+P`: keep it open at the end.
+    pub display: bool,
+    pub pause: bool,
     pub warnings: Vec<String>,
 }
 
@@ -278,7 +302,14 @@ pub fn split_args(args: Vec<String>) -> (Vec<String>, Vec<String>) {
         i += 1;
     }
     // `lancer scene.pov ...` means `lancer render scene.pov ...`.
-    let known = ["render", "help", "compare", "check", "conformance"];
+    let known = [
+        "render",
+        "help",
+        "compare",
+        "check",
+        "conformance",
+        "preview",
+    ];
     if clap_args.len() == 1
         || !known.contains(&clap_args[1].as_str()) && !clap_args[1].starts_with("--")
         || clap_args
@@ -311,6 +342,7 @@ pub fn make_job_with(
     let mut declares = Vec::new();
     let mut version = None;
     let mut include_header = None;
+    let mut show = (false, false);
     let cli_scene = a.scene.take();
     let cli_output = a.output.take();
     let cli_libs = std::mem::take(&mut a.library_path);
@@ -328,6 +360,7 @@ pub fn make_job_with(
                 declares: &mut declares,
                 version: &mut version,
                 include_header: &mut include_header,
+                show: &mut show,
             },
         )
         .map_err(|e| match &config.ini {
@@ -378,6 +411,7 @@ pub fn make_job_with(
                 declares: &mut declares,
                 version: &mut version,
                 include_header: &mut include_header,
+                show: &mut show,
             },
         )?;
     }
@@ -433,6 +467,8 @@ pub fn make_job_with(
         continue_trace: anim.continue_trace,
         version,
         include_header,
+        display: show.0,
+        pause: show.1,
         warnings,
     })
 }
@@ -448,6 +484,8 @@ struct Switches<'a> {
     declares: &'a mut Vec<(String, f64)>,
     version: &'a mut Option<f64>,
     include_header: &'a mut Option<String>,
+    /// `+D` and `+P`.
+    show: &'a mut (bool, bool),
 }
 
 fn apply_switch(opt: &str, w: &mut Switches) -> Result<(), String> {
@@ -467,6 +505,15 @@ fn apply_switch(opt: &str, w: &mut Switches) -> Result<(), String> {
             v.parse::<f64>()
                 .map_err(|_| format!("{opt}: expected a version number such as +MV3.7"))?,
         );
+    } else if upper[1..] == *"P" {
+        w.show.1 = upper.starts_with('+');
+    } else if upper[1..].starts_with('D')
+        && upper.len() <= 4
+        && upper[1..].chars().all(|c| c.is_ascii_alphanumeric())
+    {
+        // +D, or +D with POV-Ray's display type and palette letters after it (+D0, +DGT):
+        // show the picture.
+        w.show.0 = upper.starts_with('+');
     } else if upper[1..].starts_with("HI") {
         // A file name keeps its own spelling.
         *w.include_header = Some(opt[3..].to_string()).filter(|n| !n.is_empty());
@@ -961,5 +1008,17 @@ mod tests {
         assert!(err(&["+File_Gamma=-1"]).contains("File_Gamma"));
         assert!(err(&["+Bits_Per_Color=many"]).contains("Bits_Per_Color"));
         assert!(err(&["--format", "gif"]).contains("gif"));
+    }
+
+    #[test]
+    fn display_and_pause_options() {
+        let j = job(&["lancer", "s.pov", "+D", "+P"]).unwrap();
+        assert!(j.display && j.pause);
+        let j = job(&["lancer", "s.pov", "+D0", "-P"]).unwrap();
+        assert!(j.display && !j.pause);
+        let j = job(&["lancer", "s.pov", "+D", "-D", "+Dither_Method=b4"]).unwrap();
+        assert!(!j.display);
+        let j = job(&["lancer", "preview", "s.pov", "+W64"]);
+        assert!(j.is_err(), "preview is its own command");
     }
 }

@@ -211,6 +211,8 @@ fn switch_for(key: &str, value: &str) -> Result<Option<String>, String> {
             Ok(Some(format!("+{key}={value}")))
         }
         // Display, pause, verbosity, statistics and text streams do not change the picture.
+        // (Debian's povray.ini, read as povray reads it, says Display=On: a window for every
+        // render would be no service; +D on the command line opens one.)
         "display"
         | "pause_when_done"
         | "verbose"

@@ -20,6 +20,7 @@ pub mod html_report;
 pub mod ini;
 pub mod math;
 pub mod output;
+pub mod preview;
 pub mod render;
 pub mod scene;
 pub mod sdl;

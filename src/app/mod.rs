@@ -57,7 +57,7 @@ pub fn run(args: Vec<String>) -> ExitCode {
         c
     };
     let config = match &cli.command {
-        Command::Render(_) | Command::Check(_) => match config() {
+        Command::Render(_) | Command::Check(_) | Command::Preview(_) => match config() {
             Ok(c) => c,
             Err(e) => {
                 eprintln!("lancer: {e}");
@@ -70,7 +70,11 @@ pub fn run(args: Vec<String>) -> ExitCode {
         Command::Render(args) => match make_job_with(args, &config, &pov) {
             Ok(job) => {
                 on_abort_exit();
-                render_cmd::render(job)
+                let (display, pause) = (job.display, job.pause);
+                let size = (job.settings.width, job.settings.height);
+                crate::preview::display::run(display, pause, size, move |feed| {
+                    render_cmd::render(job, feed)
+                })
             }
             Err(e) => {
                 eprintln!("lancer: {e}");
@@ -83,6 +87,22 @@ pub fn run(args: Vec<String>) -> ExitCode {
         Command::Compare(args) => commands::compare(args),
         Command::Check(args) => commands::check(args, &config, &pov),
         Command::Conformance(args) => commands::conformance(args),
+        Command::Preview(args) => match make_job_with(args.render, &config, &pov) {
+            Ok(job) => {
+                let options = crate::preview::Options {
+                    screenshot: args.screenshot,
+                    screenshot_exit: args.exit_after_screenshot,
+                    bench: args.bench,
+                    full_resolution: args.full_resolution,
+                    follow_scene_camera: true,
+                };
+                ExitCode::from(crate::preview::run(job, options))
+            }
+            Err(e) => {
+                eprintln!("lancer: {e}");
+                ExitCode::from(usage)
+            }
+        },
     }
 }
 

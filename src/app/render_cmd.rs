@@ -9,10 +9,12 @@ use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
 
 use crate::anim::Frame;
 use crate::cli::Job;
+use crate::preview::display::Feed;
 
 use super::povray_msgs;
 
-pub fn render(job: Job) -> ExitCode {
+/// Renders the job; with `feed` (`+D`) each picture is also shown as it is drawn.
+pub fn render(job: Job, feed: Option<Feed>) -> ExitCode {
     for w in &job.warnings {
         eprintln!("warning: {w}");
     }
@@ -75,7 +77,15 @@ pub fn render(job: Job) -> ExitCode {
         };
         let last = std::ptr::eq(f, frames.last().unwrap_or(f));
         let code = render_frame(
-            &job, f, animated, last, plan, &mut said, &mut lexed, &row_bar,
+            &job,
+            f,
+            animated,
+            last,
+            plan,
+            &mut said,
+            &mut lexed,
+            &row_bar,
+            feed.as_ref(),
         );
         row_bar.finish_and_clear();
         bars.remove(&row_bar);
@@ -156,6 +166,7 @@ fn render_frame(
     said: &mut HashSet<String>,
     lexed: &mut Option<crate::sdl::parser::Lexed>,
     bar: &ProgressBar,
+    feed: Option<&Feed>,
 ) -> ExitCode {
     let start = Instant::now();
     let opts = job.parse_options(f);
@@ -208,7 +219,10 @@ fn render_frame(
     let trace_start = Instant::now();
     let (rays, camera_rays, timing) = match plan {
         Plan::Whole => {
-            let film = crate::render::render(&built.scene, &job.settings, &progress);
+            let film = match feed {
+                Some(feed) => feed.render(&built.scene, &job.settings),
+                None => crate::render::render(&built.scene, &job.settings, &progress),
+            };
             let render_time = trace_start.elapsed().as_secs_f64();
             let write_start = Instant::now();
             if job.write_output {
@@ -228,6 +242,9 @@ fn render_frame(
         }
         Plan::Banded(rows) => {
             use crate::render::band::render_bands;
+            if feed.is_some() {
+                eprintln!("warning: +D: a picture rendered band by band is not shown");
+            }
             let scene = &built.scene;
             let s = &job.settings;
             let counts = if job.write_output {

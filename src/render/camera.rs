@@ -33,6 +33,30 @@ pub struct Camera {
 }
 
 impl Camera {
+    /// This camera moved to `location` with new axes (the preview window's camera): the same
+    /// projection; a focal-blur lens turns with the view.
+    pub fn posed(&self, location: DVec3, direction: DVec3, right: DVec3, up: DVec3) -> Camera {
+        let frame = |d: DVec3, r: DVec3, u: DVec3| {
+            glam::DMat3::from_cols(
+                r.normalize_or(DVec3::X),
+                u.normalize_or(DVec3::Y),
+                d.normalize_or(DVec3::Z),
+            )
+        };
+        // The turn taking the old axes to the new ones (both frames orthonormal up to
+        // lengths, so the inverse of the old is its transpose).
+        let turn =
+            frame(direction, right, up) * frame(self.direction, self.right, self.up).transpose();
+        Camera {
+            location,
+            direction,
+            right,
+            up,
+            lens: self.lens.as_ref().map(|l| l.turned(|v| turn * v)),
+            ..self.clone()
+        }
+    }
+
     pub fn new(d: &CameraDesc, width: u32, height: u32) -> Camera {
         let mut dir = d.direction;
         let mut right = d.right;
@@ -122,6 +146,26 @@ impl Camera {
     }
 
     /// The mesh camera, when the scene has one: its pixels take several rays or none.
+    /// What kind of camera this is when it is not a plain perspective one (the preview's
+    /// copied camera block cannot say everything about those).
+    pub fn unusual_kind(&self) -> Option<&'static str> {
+        if self.mesh.is_some() {
+            return Some("a mesh camera");
+        }
+        if self.orthographic {
+            return Some("orthographic");
+        }
+        match self.projection {
+            Projection::Perspective => None,
+            Projection::Fisheye => Some("fisheye"),
+            Projection::UltraWideAngle => Some("ultra_wide_angle"),
+            Projection::Omnimax => Some("omnimax"),
+            Projection::Panoramic => Some("panoramic"),
+            Projection::Spherical => Some("spherical"),
+            Projection::Cylinder(_) => Some("cylinder"),
+        }
+    }
+
     pub fn mesh(&self) -> Option<&MeshCamera> {
         self.mesh.as_deref()
     }

@@ -37,6 +37,16 @@ pub struct Lens {
 }
 
 impl Lens {
+    /// The lens of a camera turned by `turn` (the preview window's camera moves).
+    pub fn turned(&self, turn: impl Fn(DVec3) -> DVec3) -> Lens {
+        Lens {
+            right: turn(self.right),
+            up: turn(self.up),
+            forward: turn(self.forward),
+            ..self.clone()
+        }
+    }
+
     /// The lens for a camera at `location` (before the camera's transforms, like
     /// `focal_point`) whose world-space axes are given.
     pub fn new(

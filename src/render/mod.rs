@@ -21,6 +21,7 @@ mod photon_file;
 mod photon_tree;
 pub mod photons;
 pub mod pigment;
+pub mod progressive;
 pub mod radiosity;
 mod shadow;
 pub mod texture_map;

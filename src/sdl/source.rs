@@ -27,6 +27,10 @@ impl Sources {
     pub fn add(&mut self, name: String, text: String) -> u32 {
         self.files.add(name, text) as u32
     }
+    /// How many files were read (ids 0..count).
+    pub fn count(&self) -> usize {
+        (0..).take_while(|&i| self.files.get(i).is_ok()).count()
+    }
     pub fn name(&self, file: u32) -> String {
         self.files
             .get(file as usize)
