@@ -4,6 +4,7 @@
 # channel. tests/crand.rs holds these numbers. One light: uniform over [1-crand, 1]; two lights
 # of half strength: the triangular spread of two independent draws.
 set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
 command -v povray >/dev/null || { echo "povray not found: apt-get install povray" >&2; exit 1; }
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 for lights in "light_source { <0,0,-1000> rgb 1 }" \
@@ -15,20 +16,11 @@ $lights
 plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 crand 0.5 } }
 POV
   povray -D -V +FP16 -A +W100 +H100 File_Gamma=1.0 "+I$tmp/c.pov" "+O$tmp/c.ppm" 2>/dev/null
-  python3 - "$tmp/c.ppm" "$lights" <<'PY'
+  python3 - "$tmp/c.ppm" "$lights" "$here" <<'PY'
 import sys
-d = open(sys.argv[1], 'rb').read()
-toks, i = [], 0
-while len(toks) < 4:
-    while d[i:i+1].isspace(): i += 1
-    if d[i:i+1] == b'#':
-        while d[i:i+1] != b'\n': i += 1
-        continue
-    j = i
-    while not d[j:j+1].isspace(): j += 1
-    toks.append(d[i:j]); i = j
-px, mx = d[i+1:], int(toks[3])
-v = sorted(((px[k] << 8) | px[k+1]) / mx for k in range(0, len(px), 6))
+sys.path.insert(0, sys.argv[3])
+from ppm import read
+v = sorted(p[0] for row in read(sys.argv[1]) for p in row)
 n = len(v)
 print(f"{sys.argv[2]}: p10 {v[n//10]:.4f} median {v[n//2]:.4f} p90 {v[9*n//10]:.4f}")
 PY

@@ -9,25 +9,16 @@
 #     Rayleigh 0.79935*(1 + c^2), Henyey-Greenstein (1-g^2)/(1+g^2-2gc)^1.5.
 # usage: scripts/measure_media.sh   (needs povray and python3)
 set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 cd "$dir"
-cat > read.py <<'PY'
-import sys, struct
-d = open(sys.argv[1], 'rb').read()
-pos, vals = 2, []
-while len(vals) < 3:
-    while d[pos:pos+1].isspace(): pos += 1
-    if d[pos:pos+1] == b'#':
-        while d[pos:pos+1] != b'\n': pos += 1
-        continue
-    s = pos
-    while not d[pos:pos+1].isspace(): pos += 1
-    vals.append(int(d[s:pos]))
-w, h, mx = vals
-px = d[pos+1:]
-i = ((h // 2) * w + w // 2) * 6
-print('%.5f' % (struct.unpack('>H', px[i:i+2])[0] / mx))
+cat > read.py <<PY
+import sys
+sys.path.insert(0, "$here")
+from ppm import read
+px = read(sys.argv[1])
+print('%.5f' % px[len(px) // 2][len(px[0]) // 2][0])
 PY
 render() { # scene, declares...
   local s=$1; shift

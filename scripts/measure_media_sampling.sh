@@ -9,6 +9,7 @@
 # Prints, per setting, the positions where the light changes and the weight lost there.
 # usage: scripts/measure_media_sampling.sh   (needs povray and python3 with numpy)
 set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cat > "$tmp/st.pov" <<'POV'
@@ -23,19 +24,13 @@ POV
 run() { # S T L E
   povray -D -V -A +W400 +H3 +FP16 File_Gamma=1 "Declare=S=$1" "Declare=T=$2" "Declare=L=$3" \
     "Declare=E=$4" "+I$tmp/st.pov" "+O$tmp/p.ppm" 2>/dev/null
-  python3 - "$tmp/p.ppm" "$@" <<'PY'
+  python3 - "$tmp/p.ppm" "$@" "$here" <<'PY'
 import sys
 import numpy as np
-d = open(sys.argv[1], 'rb').read(); pos = 2; vals = []
-while len(vals) < 3:
-    while d[pos:pos+1].isspace(): pos += 1
-    if d[pos:pos+1] == b'#':
-        pos = d.index(b'\n', pos); continue
-    s = pos
-    while not d[pos:pos+1].isspace(): pos += 1
-    vals.append(int(d[s:pos]))
-w, h, mx = vals
-a = np.frombuffer(d[pos+1:], dtype='>u2')[:w*h*3].reshape(h, w, 3) / mx
+sys.path.insert(0, sys.argv[6])
+from ppm import read_array
+a = read_array(sys.argv[1])
+w = a.shape[1]
 S, T, L, E = sys.argv[2:6]
 row = a[1, :, 0] / float(E)
 x = (np.arange(w) + 0.5) / w

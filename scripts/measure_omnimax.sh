@@ -9,6 +9,7 @@
 #     and the dome's lower edge -> omnimax_disc.
 # usage: scripts/measure_omnimax.sh   (needs povray, python3 with numpy and scipy)
 set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cat > "$tmp/dir.pov" <<'POV'
@@ -25,23 +26,15 @@ POV
 pov() { povray -D -V -A +FP16 File_Gamma=1 "+I$tmp/dir.pov" "$@" 2>/dev/null; }
 pov +W8193 +H3 Declare=R=1 "+O$tmp/row.ppm"
 for r in 0.75 1 1.1 1.2 1.3333333 2 3; do pov +W321 +H241 "Declare=R=$r" "+O$tmp/r$r.ppm"; done
-python3 - "$tmp" <<'PY'
+python3 - "$tmp" "$here" <<'PY'
 import sys, math, glob
 import numpy as np
+sys.path.insert(0, sys.argv[2])
+from ppm import read_array
 from scipy.optimize import least_squares
 tmp = sys.argv[1]
 def read(fn):
-    d = open(fn, 'rb').read(); pos = 2; vals = []
-    while len(vals) < 3:
-        while d[pos:pos+1].isspace(): pos += 1
-        if d[pos:pos+1] == b'#':
-            pos = d.index(b'\n', pos); continue
-        s = pos
-        while not d[pos:pos+1].isspace(): pos += 1
-        vals.append(int(d[s:pos]))
-    w, h, mx = vals
-    a = np.frombuffer(d[pos+1:], dtype='>u2')[:w*h*3].reshape(h, w, 3) / mx
-    return a * 2 - 1
+    return read_array(fn) * 2 - 1
 def angles(d):
     ok = abs(np.linalg.norm(d, axis=2) - 1) < 0.002
     return ok, np.arctan2(np.hypot(d[..., 0], d[..., 1]), d[..., 2]), np.arctan2(d[..., 1], d[..., 0])

@@ -20,24 +20,30 @@ import tempfile
 INC = "/usr/share/povray-3.7/include"
 
 
-def values(pattern, points):
+def evaluate(declaration, expression, points):
+    """POV-Ray's value of `expression` (a format string over x, y, z, reading P) at each
+    point, with `#declare P = declaration` first; also used by measure_tiling.py."""
     with tempfile.TemporaryDirectory() as d:
         out = os.path.join(d, "o.txt")
         src = os.path.join(d, "s.pov")
         with open(src, "w") as f:
             f.write("#version 3.7;\n")
-            f.write(f"#declare P = function {{ pattern {{ {pattern} }} }}\n")
+            f.write(f"#declare P = {declaration}\n")
             f.write(f'#fopen F "{out}" write\n')
             for x, y, z in points:
-                f.write(f'#write(F, str(P({x!r},{y!r},{z!r}),0,12), "\\n")\n')
+                e = expression.format(x=repr(x), y=repr(y), z=repr(z))
+                f.write(f'#write(F, str({e},0,12), "\\n")\n')
             f.write("#fclose F\n")
         r = subprocess.run([os.environ.get("RENDERER", "povray"), "-D", "-V", "+FN8", "-A", "+W8", "+H8", f"+L{INC}",
                             f"+I{src}", "+O/dev/null"], capture_output=True, text=True)
         try:
-            vals = [float(v) for v in open(out).read().split()]
+            return [float(v) for v in open(out).read().split()]
         except FileNotFoundError:
             sys.exit("povray failed:\n" + r.stderr[-3000:])
-        return vals
+
+
+def values(pattern, points):
+    return evaluate(f"function {{ pattern {{ {pattern} }} }}", "P({x},{y},{z})", points)
 
 
 def main():

@@ -13,32 +13,15 @@ RENDERER=target/release/lancer evaluates the same with lancer.
 """
 
 import os
-import subprocess
 import sys
-import tempfile
 
-INC = "/usr/share/povray-3.7/include"
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from measure_pattern import evaluate  # noqa: E402
 
 
 def values(n, points):
-    with tempfile.TemporaryDirectory() as d:
-        out = os.path.join(d, "o.txt")
-        src = os.path.join(d, "s.pov")
-        with open(src, "w") as f:
-            f.write("#version 3.7;\n")
-            f.write(f"#declare P = function {{ pigment {{ tiling {n} "
-                    "color_map { [0 rgb 0] [1 rgb 1] } } }\n")
-            f.write(f'#fopen F "{out}" write\n')
-            for x, z in points:
-                f.write(f'#write(F, str(P({x!r},0,{z!r}).red,0,12), "\\n")\n')
-            f.write("#fclose F\n")
-        r = subprocess.run([os.environ.get("RENDERER", "povray"), "-D", "-V", "+FN8", "-A", "+W8",
-                            "+H8", f"+L{INC}", f"+I{src}", "+O/dev/null"],
-                           capture_output=True, text=True)
-        try:
-            return [float(v) for v in open(out).read().split()]
-        except FileNotFoundError:
-            sys.exit("povray failed:\n" + r.stderr[-3000:])
+    return evaluate(f"function {{ pigment {{ tiling {n} color_map {{ [0 rgb 0] [1 rgb 1] }} }} }}",
+                    "P({x},0,{z}).red", [(x, 0.0, z) for x, z in points])
 
 
 def main():

@@ -347,9 +347,10 @@ pub fn make_job_with(
     let cli_output = a.output.take();
     let cli_libs = std::mem::take(&mut a.library_path);
     let cli_threads = a.threads.take();
-    for opt in &config.switches {
-        apply_switch(
-            opt,
+    // The switches' view of the job being built, borrowed afresh for each loop below (the
+    // code between them reads and changes the same values).
+    macro_rules! switches {
+        () => {
             &mut Switches {
                 s: &mut s,
                 a: &mut a,
@@ -361,9 +362,11 @@ pub fn make_job_with(
                 version: &mut version,
                 include_header: &mut include_header,
                 show: &mut show,
-            },
-        )
-        .map_err(|e| match &config.ini {
+            }
+        };
+    }
+    for opt in &config.switches {
+        apply_switch(opt, switches!()).map_err(|e| match &config.ini {
             Some(f) => format!("{}: {e}", f.display()),
             None => e,
         })?;
@@ -399,21 +402,7 @@ pub fn make_job_with(
         out.type_given = true;
     }
     for opt in pov {
-        apply_switch(
-            opt,
-            &mut Switches {
-                s: &mut s,
-                a: &mut a,
-                out: &mut out,
-                warnings: &mut warnings,
-                anim: &mut anim,
-                partial: &mut partial,
-                declares: &mut declares,
-                version: &mut version,
-                include_header: &mut include_header,
-                show: &mut show,
-            },
-        )?;
+        apply_switch(opt, switches!())?;
     }
     let scene = a
         .scene

@@ -666,6 +666,26 @@ pub struct ImageMap {
     pub use_index: bool,
 }
 
+impl ImageMap {
+    /// An image map not yet loaded, with POV-Ray's defaults (planar, repeated, not
+    /// interpolated); `use_index` as the map's kind takes it (a material map's texture is
+    /// picked by palette index).
+    pub fn new(use_index: bool) -> ImageMap {
+        ImageMap {
+            path: PathBuf::new(),
+            map_type: 0,
+            once: false,
+            interpolate: 0,
+            width: 0,
+            height: 0,
+            pixels: Vec::new(),
+            use_alpha: false,
+            bump_size: None,
+            use_index,
+        }
+    }
+}
+
 /// `normal { ... }`: how a texture perturbs the surface normal (evaluation in render::normal).
 #[derive(Clone, Debug)]
 pub struct Normal {

@@ -19,11 +19,7 @@ impl Parser {
         loop {
             if let Some(mut obj) = self.parse_object()? {
                 if let Some(v) = self.scene.default_importance {
-                    super::object::set_deep(&mut obj, &|o: &mut crate::scene::desc::ObjectDesc| {
-                        if o.rad_importance == 0.0 {
-                            o.rad_importance = v;
-                        }
-                    });
+                    super::object::inherit_importance(&mut obj, v);
                 }
                 self.scene.objects.push(obj);
                 continue;

@@ -404,10 +404,6 @@ impl Parser {
 
 /// Image types POV-Ray reads for height fields that lancer cannot decode.
 const HF_UNREADABLE: &[&str] = &["iff", "sys", "tiff"];
-/// Image type keywords a height field may start with.
-const HF_TYPES: &[&str] = &[
-    "exr", "gif", "hdr", "iff", "jpeg", "pgm", "png", "pot", "ppm", "sys", "tga", "tiff", "bmp",
-];
 
 impl Parser {
     /// `height_field { [type] "file" [gamma G] [premultiplied B] | function W, H { ... }
@@ -495,7 +491,8 @@ impl Parser {
     fn hf_image(&mut self, span: Span) -> PResult<Option<(usize, usize, Vec<u16>)>> {
         let mut kind = None;
         if let Some(k) = self.peek_ident()? {
-            if HF_TYPES.contains(&&*k) {
+            // An image map's types, and POV-Ray's `pot` (16-bit heights) for height fields.
+            if super::texture::IMAGE_TYPES.contains(&&*k) || &*k == "pot" {
                 self.advance();
                 kind = Some(k);
             }

@@ -232,11 +232,7 @@ impl Parser {
             "radiosity" => {
                 if let Some(v) = self.parse_object_radiosity()? {
                     // CSG members without their own take their parent's.
-                    set_deep(obj, &|o: &mut ObjectDesc| {
-                        if o.rad_importance == 0.0 {
-                            o.rad_importance = v;
-                        }
-                    });
+                    inherit_importance(obj, v);
                     obj.rad_importance = v;
                 }
             }
@@ -682,7 +678,17 @@ impl Parser {
 }
 
 /// Applies `f` to an object and, for CSG, to every member at any depth.
-pub(super) fn set_deep(obj: &mut ObjectDesc, f: &dyn Fn(&mut ObjectDesc)) {
+/// Gives `obj` and its CSG members that have no `radiosity { importance }` of their own
+/// importance `v`.
+pub(super) fn inherit_importance(obj: &mut ObjectDesc, v: f32) {
+    set_deep(obj, &|o: &mut ObjectDesc| {
+        if o.rad_importance == 0.0 {
+            o.rad_importance = v;
+        }
+    });
+}
+
+fn set_deep(obj: &mut ObjectDesc, f: &dyn Fn(&mut ObjectDesc)) {
     f(obj);
     if let ShapeDesc::Csg { children, .. } = &mut obj.shape {
         for c in children {

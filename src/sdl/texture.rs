@@ -1,6 +1,7 @@
 //! Texture statements: pigment (colours, patterns, colour maps, pigment maps, image maps),
 //! finish, normal and interior blocks. Texture blocks are in texture_block.rs.
 
+use std::rc::Rc;
 use std::sync::Arc;
 
 use crate::color::Rgbft;
@@ -30,6 +31,10 @@ enum Form {
     Image(Arc<ImageMap>),
 }
 
+/// The file type keywords an image map may start with (POV-Ray 3.7's list).
+pub(super) const IMAGE_TYPES: &[&str] = &[
+    "png", "gif", "tga", "iff", "ppm", "pgm", "sys", "jpeg", "tiff", "exr", "hdr", "bmp",
+];
 impl Parser {
     /// Whether the next token starts a colour (so `pigment { Red }` is a solid colour): a colour
     /// keyword, a number, `<`, `(`, or an identifier holding a colour, vector or float.
@@ -300,43 +305,23 @@ impl Parser {
         Ok(map)
     }
 
-    pub(super) fn parse_image_map(&mut self, span: Span) -> PResult<ImageMap> {
-        self.open_brace("image_map")?;
+    /// An image map's optional file type keyword and its file name (and where the name is).
+    pub(super) fn image_file_name(&mut self) -> PResult<(Option<Rc<str>>, Span, String)> {
         let mut kind = None;
         if let Some(k) = self.peek_ident()? {
-            if matches!(
-                &*k,
-                "png"
-                    | "gif"
-                    | "tga"
-                    | "iff"
-                    | "ppm"
-                    | "pgm"
-                    | "sys"
-                    | "jpeg"
-                    | "tiff"
-                    | "exr"
-                    | "hdr"
-                    | "bmp"
-            ) {
+            if IMAGE_TYPES.contains(&&*k) {
                 self.advance();
                 kind = Some(k);
             }
         }
         let name_span = self.next_span()?;
-        let name = self.parse_string()?;
-        let mut map = ImageMap {
-            path: Default::default(),
-            map_type: 0,
-            once: false,
-            interpolate: 0,
-            width: 0,
-            height: 0,
-            pixels: Vec::new(),
-            use_alpha: false,
-            bump_size: None,
-            use_index: false,
-        };
+        Ok((kind, name_span, self.parse_string()?))
+    }
+
+    pub(super) fn parse_image_map(&mut self, span: Span) -> PResult<ImageMap> {
+        self.open_brace("image_map")?;
+        let (kind, name_span, name) = self.image_file_name()?;
+        let mut map = ImageMap::new(false);
         let (mut filter_all, mut transmit_all) = (None, None);
         // `filter N, v` / `transmit N, v`: for the pixels of palette index N.
         let mut by_index = Vec::new();

@@ -245,45 +245,14 @@ impl Parser {
         )
     }
 
-    /// Reads past the rest of a patterned texture up to (not including) its closing brace.
     /// `material_map { TYPE "file" [map_type N] [once] [interpolate N] TEXTURE... }` (povray
     /// 3.7 rejects transforms inside, though the manual lists them)
     /// after the keyword: a texture list picked by the palette index of the image's pixel.
     /// None (after a warning) for an image without a palette, whose rule is not measured.
     fn parse_material_map(&mut self, span: Span) -> PResult<Option<TexturePattern>> {
         self.open_brace("material_map")?;
-        if let Some(k) = self.peek_ident()? {
-            if matches!(
-                &*k,
-                "png"
-                    | "gif"
-                    | "tga"
-                    | "iff"
-                    | "ppm"
-                    | "pgm"
-                    | "sys"
-                    | "jpeg"
-                    | "tiff"
-                    | "exr"
-                    | "hdr"
-            ) {
-                self.advance();
-            }
-        }
-        let name_span = self.next_span()?;
-        let name = self.parse_string()?;
-        let mut im = crate::scene::desc::ImageMap {
-            path: Default::default(),
-            map_type: 0,
-            once: false,
-            interpolate: 0,
-            width: 0,
-            height: 0,
-            pixels: Vec::new(),
-            use_alpha: false,
-            bump_size: None,
-            use_index: true,
-        };
+        let (_, name_span, name) = self.image_file_name()?;
+        let mut im = crate::scene::desc::ImageMap::new(true);
         let mut items = Vec::new();
         loop {
             items.extend(self.parse_texture_items()?);
