@@ -197,8 +197,8 @@ fn render_frame(
     } else {
         *lexed = Some(files);
     }
-    let built = crate::scene::build::build(
-        &parsed.parser.scene,
+    let built = crate::scene::build::build_consuming(
+        &mut parsed.parser.scene,
         job.settings.width,
         job.settings.height,
     );

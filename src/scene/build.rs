@@ -72,6 +72,24 @@ pub struct BuildOutput {
 }
 
 pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
+    build_from(desc, desc.objects.iter(), width, height)
+}
+
+/// `build` that takes the objects out of the description, freeing each one's description
+/// as soon as its runtime object exists: a million-object scene's descriptions (hundreds of
+/// megabytes) are gone before the BVH is built, which keeps the peak memory down. The
+/// description keeps everything else.
+pub fn build_consuming(desc: &mut SceneDesc, width: u32, height: u32) -> BuildOutput {
+    let objects = std::mem::take(&mut desc.objects);
+    build_from(desc, objects.into_iter(), width, height)
+}
+
+fn build_from<O: std::borrow::Borrow<ObjectDesc>>(
+    desc: &SceneDesc,
+    descs: impl ExactSizeIterator<Item = O>,
+    width: u32,
+    height: u32,
+) -> BuildOutput {
     let mut warnings = Vec::new();
     let gamma = match (desc.global.assumed_gamma, desc.version) {
         (Some(g), _) => GammaMode::Corrected(if g > 0.0 { g } else { 1.0 }),
@@ -89,9 +107,9 @@ pub fn build(desc: &SceneDesc, width: u32, height: u32) -> BuildOutput {
     };
     let mut ctx = Ctx::new(gamma, desc.global.noise_generator);
     let default_texture = Arc::new(desc.default_texture.clone());
-    let mut objects = Vec::with_capacity(desc.objects.len());
-    for o in &desc.objects {
-        if let Some(obj) = ctx.object(o, None, None, &default_texture) {
+    let mut objects = Vec::with_capacity(descs.len());
+    for o in descs {
+        if let Some(obj) = ctx.object(o.borrow(), None, None, &default_texture) {
             objects.push(obj);
         }
     }
