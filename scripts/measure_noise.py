@@ -431,8 +431,12 @@ def write_probes(path, rng):
         pre = f"#declare PF = function {{ pattern {{ {pat} }} }}\n"
         p = [(round(rng.uniform(0.3, 0.45), 6), y, z) for _, y, z in pts(40, 20.0)]
         group(pre, [f"PF({x},{y},{z})" for x, y, z in p])
+    # keep the generator-3 section scripts/measure_noise3.py appends
+    mark = "# --- generator 3 (scripts/measure_noise3.py) ---"
+    old = open(path).read() if os.path.exists(path) else ""
+    tail = mark + old.split(mark, 1)[1] if mark in old else ""
     with open(path, "w") as f:
-        f.write("\n".join(lines) + "\n")
+        f.write("\n".join(lines) + "\n" + tail)
 
 
 def write_cells_rust(path, o, lam, p_tab, q_tab, vals, points):

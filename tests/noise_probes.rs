@@ -1,8 +1,8 @@
 //! POV-Ray's noise, turbulence and noise patterns against values the `povray` binary printed
 //! at points none of the measurement used (tests/data/noise_probes.txt, written by
-//! scripts/measure_noise.py). Tolerance 1e-6, the bar; the generators, turbulence and
-//! the patterns built on them match to about 1e-15 (float rounding order differs), so any
-//! real difference in the function shows.
+//! scripts/measure_noise.py and, for generator 3, scripts/measure_noise3.py). Tolerance 1e-6,
+//! the bar; the generators, turbulence and the patterns built on them match to about
+//! 1e-15 (float rounding order differs), so any real difference in the function shows.
 
 mod common;
 

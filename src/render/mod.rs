@@ -14,6 +14,7 @@ mod irid;
 mod media;
 mod metallic;
 pub mod noise;
+mod noise3_data;
 mod noise_data;
 pub mod normal;
 pub mod pattern;

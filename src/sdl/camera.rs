@@ -156,9 +156,6 @@ impl Parser {
                 "noise_generator" => {
                     let v = self.parse_float()?;
                     self.scene.global.noise_generator = (v as i64).clamp(1, 3) as u8;
-                    if self.scene.global.noise_generator == 3 {
-                        self.warn_noise_generator_3(t.span);
-                    }
                 }
                 "number_of_waves" => {
                     let v = self.parse_float()?;

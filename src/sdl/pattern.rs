@@ -383,12 +383,6 @@ impl Parser {
         Ok(sl)
     }
 
-    /// Generators 1 and 2 are POV-Ray's own, measured (docs/noise.md); generator 3's hashing
-    /// has not been recovered yet, so lancer draws Perlin's improved noise in its place.
-    pub(super) fn warn_noise_generator_3(&mut self, span: Span) {
-        self.warn(span, "'noise_generator 3' is not supported by lancer yet: Perlin's improved noise is drawn in its place, so noise patterns will differ from POV-Ray's");
-    }
-
     /// A pattern modifier just read as keyword `k`; false when `k` is not one. `space` is the
     /// pattern's transform so far, which a warp keeps.
     pub(super) fn pattern_modifier(
@@ -454,9 +448,6 @@ impl Parser {
             }
             "noise_generator" => {
                 pat.noise_generator = (self.parse_float()? as i64).clamp(1, 3) as u8;
-                if pat.noise_generator == 3 {
-                    self.warn_noise_generator_3(span);
-                }
             }
             "agate_turb" => {
                 let v = self.parse_float()?;
