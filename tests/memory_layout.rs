@@ -16,8 +16,11 @@ fn per_object_types_stay_small() {
     // (3 bytes, but the struct had no padding left); 8 MB per million object descriptions.
     // 200 -> 208 knowingly: the interior's `dispersion` (f32) and `dispersion_samples` (u16),
     // held inline like the rest of the interior; another 8 MB per million.
+    // 208 -> 216 knowingly: the interior's `caustics` (f32); the interior had two bytes of
+    // padding left. 8 MB per million object descriptions, which are freed before the BVH is
+    // built.
     assert!(
-        size_of::<ObjectDesc>() <= 208,
+        size_of::<ObjectDesc>() <= 216,
         "{}",
         size_of::<ObjectDesc>()
     );

@@ -138,8 +138,10 @@ fn local(nd: &Normal, lp: DVec3, ln: DVec3) -> DVec3 {
 
 /// The value's height (through the slope map) and its slope at `lp` from four samples.
 fn slope(pat: &Pattern, map: Option<&[(f64, f64, f64)]>, lp: DVec3, accuracy: f64) -> DVec3 {
+    // Warps and turbulence move the point once; the samples sit around the moved point.
+    let centre = pattern::warped(pat, lp);
     let h = |q: DVec3| {
-        let v = pattern::value(pat, q);
+        let v = pattern::value_warped(pat, centre + (q - lp));
         match map {
             Some(m) => slope_height(m, v),
             None => v,

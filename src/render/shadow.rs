@@ -297,6 +297,11 @@ impl<'a> Tracer<'a> {
                     }
                     att *= c.transmitted();
                 }
+                if let Some(int) = h.obj.interior.as_deref().filter(|i| i.caustics > 0.0) {
+                    let n = h.obj.normal(hp, h);
+                    let n = if n.dot(l) > 0.0 { -n } else { n };
+                    att *= int.caustic_gain(caustic_normal(top, hp, n).dot(l));
+                }
             }
             // Fading interiors and media dim the light over each stretch the ray spends
             // inside them: from the last crossing (or the shaded point) to a crossing that
@@ -327,5 +332,14 @@ impl<'a> Tracer<'a> {
             ctx.blockers[slot] = blocker;
         }
         att
+    }
+}
+
+/// The normal fake caustics are computed with: the surface's, perturbed by the top layer's
+/// own normal where it has one (POV-Ray's `caustics` light up where bumps face the light).
+fn caustic_normal(top: &crate::scene::desc::Texture, p: DVec3, n: DVec3) -> DVec3 {
+    match top.layers().next().and_then(|l| l.normal.as_deref()) {
+        Some(nd) if super::normal::perturbs(Some(nd)) => super::normal::perturb(nd, p, n),
+        _ => n,
     }
 }

@@ -640,7 +640,7 @@ impl Ctx {
             transparent,
             clip,
             interior: int
-                .filter(|i| i.fades() || i.has_media() || i.dispersion != 1.0)
+                .filter(|i| i.fades() || i.has_media() || i.dispersion != 1.0 || i.caustics > 0.0)
                 .map(|i| Box::new(self.interior(i))),
             photons: object_photon_flags(o),
             photon_mult: o.photons.spacing_mult(),

@@ -69,8 +69,8 @@ pub struct Object {
     pub transparent: bool,
     /// `clipped_by`: crossings outside any of these are dropped.
     pub clip: Vec<Object>,
-    /// An interior that fades light passing through it, holds media or splits light into
-    /// colours (`dispersion`).
+    /// An interior that fades light passing through it, holds media, splits light into
+    /// colours (`dispersion`) or fakes caustics.
     pub interior: Option<Box<crate::scene::desc::Interior>>,
     /// `photons { }` flags (scene::photon::flags), a CSG's given to its members too; `pass_through`
     /// is set for `no_shadow` objects unless turned off.

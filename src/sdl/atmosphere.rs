@@ -105,7 +105,7 @@ impl Parser {
                 "jitter" => {
                     rb.jitter = self.parse_float()?;
                     if rb.jitter != 0.0 {
-                        self.warn(t.span, "'jitter' (in rainbow) is random in POV-Ray: lancer adds noise of the same size to the rainbow's index, the same for any thread count, but not povray's pixels");
+                        self.warn_if_used(t.span, "'jitter' (in rainbow) is random in POV-Ray: lancer adds noise of the same size to the rainbow's index, the same for any thread count, but not povray's pixels");
                     }
                 }
                 "color_map" | "colour_map" => rb.color_map = self.parse_color_map()?,

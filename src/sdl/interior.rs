@@ -24,9 +24,7 @@ impl Parser {
             }
             match &**k {
                 "ior" => int.ior = self.parse_float()?,
-                "caustics" => {
-                    self.parse_float()?;
-                }
+                "caustics" => int.caustics = self.parse_float()? as f32,
                 "fade_distance" => int.fade_distance = self.parse_float()?,
                 "fade_power" => int.fade_power = self.parse_float()?,
                 "fade_color" | "fade_colour" => int.fade_color = self.parse_color()?.rgb,

@@ -93,7 +93,7 @@ impl Parser {
                                 }
                                 "jitter" => {
                                     area.jitter = true;
-                                    self.warn(t.span, "'jitter' is random in POV-Ray (its pixels change with the thread count): soft shadow edges have the same grain as povray's but not the same pixels, and are the same for any thread count");
+                                    self.warn_if_used(t.span, "'jitter' is random in POV-Ray (its pixels change with the thread count): soft shadow edges have the same grain as povray's but not the same pixels, and are the same for any thread count");
                                 }
                                 "circular" => area.circular = self.optional_bool()?,
                                 _ => area.orient = self.optional_bool()?,

@@ -884,12 +884,23 @@ impl Parser {
 
     /// A warning at `span`, once: a macro called 400 times says it once, not 400 times.
     pub fn warn(&mut self, span: Span, message: impl Into<String>) {
-        let message = message.into();
+        self.warn_with(span, message.into(), false);
+    }
+
+    /// `warn` about how a declared thing looks (a finish's `crand`, a light's `jitter`): held
+    /// back, like "not supported" warnings, until the declaration is used. An include file's
+    /// unused textures say nothing.
+    pub fn warn_if_used(&mut self, span: Span, message: impl Into<String>) {
+        self.warn_with(span, message.into(), true);
+    }
+
+    fn warn_with(&mut self, span: Span, message: String, deferrable: bool) {
         if !self.warned.insert((message.as_str().into(), span)) {
             return;
         }
         let mut d = Diagnostic::warning(message, Some(span));
         d.chain = self.chain();
+        d.deferrable = deferrable;
         self.warnings.push(d);
     }
 

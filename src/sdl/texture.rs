@@ -466,7 +466,7 @@ impl Parser {
                 "conserve_energy" => f.conserve_energy = self.optional_bool()?,
                 "crand" => {
                     f.crand = self.parse_float()?;
-                    self.warn(t.span, "'crand' is random in POV-Ray (its pixels change with the thread count): lancer's graininess has the same distribution (measured) but not the same pixels, and is the same for any thread count");
+                    self.warn_if_used(t.span, "'crand' is random in POV-Ray (its pixels change with the thread count): lancer's graininess has the same distribution (measured) but not the same pixels, and is the same for any thread count");
                 }
                 "irid" => f.irid = Some(Box::new(self.parse_irid(t.span)?)),
                 "subsurface" => {
