@@ -394,10 +394,16 @@ impl<'a> Tracer<'a> {
         };
         if !s.sky.is_empty() {
             let d = dir.normalize_or_zero();
+            let below = seen.rgb;
+            let mut filtered = false;
             for layer in &s.sky {
                 let c = pigment::eval(layer, d);
+                filtered |= c.filter > 0.0;
                 seen.rgb = c.rgb * c.opacity() + seen.rgb * c.transmitted();
                 seen.clear *= c.filter * grey(c.rgb) + c.transmit;
+            }
+            if filtered && s.legacy_sky_filter {
+                seen.rgb = legacy_sky(&s.sky, d, below);
             }
         }
         seen
@@ -846,4 +852,24 @@ pub(super) fn grain(seed: u32, light: u32) -> f64 {
     h = h.wrapping_mul(0x846c_a68b);
     h ^= h >> 16;
     (h >> 8) as f64 / (1u32 << 24) as f64
+}
+
+/// A sky_sphere's layers over `below` (the background) as POV-Ray composes them before
+/// `#version 3.7` when some layer filters (measured, probe sky_sphere_filter_36): from the top
+/// down, each layer's own colour is let through by the products of the filters and of the
+/// transmits of the layers above, added and untinted (Πf + Πt); the background is let through
+/// by Π(f·colour) + Πt. From 3.7 on, each layer lets f·colour + t of everything below through.
+fn legacy_sky(sky: &[crate::scene::desc::Pigment], d: DVec3, below: DVec3) -> DVec3 {
+    let mut rgb = DVec3::ZERO;
+    let (mut pf, mut pt, mut tint) = (1.0, 1.0, DVec3::ONE);
+    let mut through = 1.0;
+    for layer in sky.iter().rev() {
+        let c = pigment::eval(layer, d);
+        rgb += c.rgb * c.opacity() * through;
+        pf *= c.filter;
+        pt *= c.transmit;
+        tint *= c.filter * c.rgb;
+        through = pf + pt;
+    }
+    rgb + below * (tint + DVec3::splat(pt))
 }

@@ -50,6 +50,9 @@ pub struct Scene {
     parents: Vec<(usize, usize)>,
     pub background: Rgbft,
     pub sky: Vec<Pigment>,
+    /// Scenes before `#version 3.7` (or with none): a filtering sky_sphere layer passes the
+    /// layers below it untinted (measured; render::trace background).
+    pub legacy_sky_filter: bool,
     pub max_trace_level: u32,
     pub adc_bailout: f64,
     pub ambient_light: DVec3,
@@ -153,6 +156,7 @@ fn build_from<O: std::borrow::Borrow<ObjectDesc>>(
         parents: Vec::new(),
         background: desc.background,
         sky,
+        legacy_sky_filter: desc.version.is_none_or(|v| v < 3.7),
         max_trace_level: desc.global.max_trace_level,
         adc_bailout: desc.global.adc_bailout,
         ambient_light: desc.global.ambient_light,
