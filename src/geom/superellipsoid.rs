@@ -88,7 +88,7 @@ impl Power {
 /// The two table entries around `x` in `[0, 1]` (None outside, or NaN).
 #[inline]
 fn around(table: &[f64; STEPS + 1], x: f64) -> Option<(f64, f64)> {
-    if !(x <= 1.0) {
+    if x > 1.0 || x.is_nan() {
         return None;
     }
     let i = (x * STEPS as f64) as usize;
