@@ -177,8 +177,17 @@ impl Superellipsoid {
         Field::Value(xy + zc - 1.0)
     }
 
-    /// Crossings as distances along the unit direction `u` from `o`, within `[lo, hi]`.
-    fn crossings(&self, o: DVec3, u: DVec3, lo: f64, hi: f64, out: &mut Vec<f64>) {
+    /// Crossings as distances along the unit direction `u` from `o`, within `[lo, hi]`,
+    /// increasing; the search stops after the first crossing `last` accepts.
+    fn crossings(
+        &self,
+        o: DVec3,
+        u: DVec3,
+        lo: f64,
+        hi: f64,
+        out: &mut Vec<f64>,
+        last: impl Fn(f64) -> bool,
+    ) {
         // Breakpoints: where the ray meets each plane n·p = 0.
         const PLANES: [[f64; 3]; 9] = [
             [1.0, 0.0, 0.0],
@@ -233,12 +242,47 @@ impl Superellipsoid {
                 let mut f1 = self.field(o + u * s1);
                 if f0.negative() != f1.negative() {
                     let (v0, v1) = (exact(s0, f0), exact(s1, f1));
-                    out.push(refine(&f, s0, v0, s1, v1));
+                    let root = refine(&f, s0, v0, s1, v1);
+                    out.push(root);
+                    if last(root) {
+                        return;
+                    }
                     f1 = Field::Value(v1);
                 }
                 (s0, f0) = (s1, f1);
             }
         }
+    }
+}
+
+impl Superellipsoid {
+    /// The crossings with `t > EPSILON`, increasing; with `first_only` only the first.
+    fn hits(&self, ray: &Ray, out: &mut Vec<Hit>, first_only: bool) {
+        let len = ray.dir.length();
+        if !(len > 0.0 && len.is_finite()) {
+            return;
+        }
+        let u = ray.dir / len;
+        let Some((lo, hi)) = box_interval(ray.origin, u, 1.0 + MARGIN) else {
+            return;
+        };
+        let lo = lo.max(EPSILON * len);
+        if lo >= hi || lo.is_nan() || hi.is_nan() {
+            return;
+        }
+        // Distances are measured from the box entry so the samples keep their digits.
+        let o = ray.origin + u * lo;
+        let to_t = |s: f64| (s + lo) / len;
+        let mut s = Vec::new();
+        self.crossings(o, u, 0.0, hi - lo, &mut s, |s| {
+            first_only && to_t(s) > EPSILON
+        });
+        out.extend(
+            s.into_iter()
+                .map(to_t)
+                .filter(|&t| t > EPSILON)
+                .map(Hit::new),
+        );
     }
 }
 
@@ -305,28 +349,15 @@ impl Shape for Superellipsoid {
     }
 
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
-        let len = ray.dir.length();
-        if !(len > 0.0 && len.is_finite()) {
-            return;
-        }
-        let u = ray.dir / len;
-        let Some((lo, hi)) = box_interval(ray.origin, u, 1.0 + MARGIN) else {
-            return;
-        };
-        let lo = lo.max(EPSILON * len);
-        if lo >= hi || lo.is_nan() || hi.is_nan() {
-            return;
-        }
-        // Distances are measured from the box entry so the samples keep their digits.
-        let o = ray.origin + u * lo;
-        let mut s = Vec::new();
-        self.crossings(o, u, 0.0, hi - lo, &mut s);
-        out.extend(
-            s.into_iter()
-                .map(|s| (s + lo) / len)
-                .filter(|&t| t > EPSILON)
-                .map(Hit::new),
-        );
+        self.hits(ray, out, false)
+    }
+
+    /// Only the first crossing is refined: the `t` are increasing in the crossings, so the
+    /// first whose `t` passes `EPSILON` is the nearest.
+    fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
+        scratch.clear();
+        self.hits(ray, scratch, true);
+        scratch.first().filter(|h| h.t < tmax).copied()
     }
 
     fn inside(&self, p: DVec3) -> bool {
@@ -510,6 +541,29 @@ mod tests {
                         Field::Sign(neg) => assert_eq!(neg, v < 0.0, "{e} {n} {p}"),
                     }
                 }
+            }
+        }
+    }
+
+    /// The nearest crossing alone is `intersect_all`'s nearest, to the bit.
+    #[test]
+    fn first_crossing_is_the_nearest_of_all() {
+        let mut rng = crate::geom::test_rng::Lcg(5);
+        for (e, n) in [(0.3, 0.3), (1.0, 0.1), (2.0, 0.5), (3.0, 3.0), (1.0, 1.0)] {
+            let s = Superellipsoid::new(e, n);
+            for _ in 0..3000 {
+                let o = rng.vec(5.0);
+                let ray = Ray::new(o, rng.vec(1.0).normalize() * 1.7 - o * 0.1 * rng.next());
+                let tmax = if rng.next() < 0.3 { 2.0 } else { f64::INFINITY };
+                let mut all = Vec::new();
+                s.intersect_all(&ray, &mut all);
+                let want = all
+                    .iter()
+                    .filter(|h| h.t > EPSILON && h.t < tmax)
+                    .min_by(|a, b| a.t.total_cmp(&b.t))
+                    .map(|h| h.t.to_bits());
+                let got = s.intersect_first(&ray, tmax, &mut Vec::new());
+                assert_eq!(want, got.map(|h| h.t.to_bits()), "{e} {n} {ray:?}");
             }
         }
     }
