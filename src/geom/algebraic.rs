@@ -87,7 +87,8 @@ impl Algebraic {
 
     /// Crossings with the ray (its `t`), those outside `window` possibly left out.
     fn crossings(&self, ray: &Ray, window: Option<(f64, f64)>, out: &mut Vec<Hit>) {
-        let Some((c, hi, len)) = self.along_ray(ray) else {
+        let mut c = [0.0; MAX_ORDER + 1];
+        let Some((hi, len)) = self.along_ray(ray, &mut c) else {
             return;
         };
         let c = &c[..=self.order];
@@ -102,17 +103,16 @@ impl Algebraic {
         out.extend(roots.iter().map(|t| Hit::new(t / len)));
     }
 
-    /// The polynomial along the ray in units of its unit direction, the end of the search
-    /// interval and the direction's length; None when there is nothing to solve.
+    /// The polynomial along the ray in units of its unit direction (into `c`), the end of
+    /// the search interval and the direction's length; None when there is nothing to solve.
     #[inline(always)]
-    fn along_ray(&self, ray: &Ray) -> Option<([f64; MAX_ORDER + 1], f64, f64)> {
+    fn along_ray(&self, ray: &Ray, c: &mut [f64; MAX_ORDER + 1]) -> Option<(f64, f64)> {
         let len = ray.dir.length();
         if !(len > 0.0 && len.is_finite()) || self.terms.is_empty() {
             return None;
         }
         let u = ray.dir / len;
-        let mut c = [0.0; MAX_ORDER + 1];
-        self.along(ray.origin, u, &mut c);
+        self.along(ray.origin, u, c);
         // Cauchy's bound on the roots keeps the search interval finite.
         let lead = c[..=self.order]
             .iter()
@@ -125,7 +125,7 @@ impl Algebraic {
             .iter()
             .map(|v| (v / c[lead]).abs())
             .fold(0.0, f64::max);
-        Some((c, (1.0 + m).min(FAR), len))
+        Some(((1.0 + m).min(FAR), len))
     }
 
     /// The polynomial along `origin + t·dir` (ascending coefficients in t).
@@ -293,7 +293,8 @@ impl Shape for Algebraic {
                 .min_by(|a, b| a.t.total_cmp(&b.t))
                 .copied();
         }
-        let (c, hi, len) = self.along_ray(ray)?;
+        let mut c = [0.0; MAX_ORDER + 1];
+        let (hi, len) = self.along_ray(ray, &mut c)?;
         first_root_in(&c[..=self.order], EPSILON * len, hi, |x| x / len > EPSILON)
             .map(|x| x / len)
             .filter(|&t| t < tmax)
