@@ -5,7 +5,7 @@
 //! crossings (found by `poly`'s isolation and polishing). The shapes are unbounded, as in
 //! POV-Ray; `clipped_by` gives them bounds.
 
-use crate::geom::poly::{roots_in, roots_in_window, sturm_roots_in, MAX_DEGREE};
+use crate::geom::poly::{first_root_in, roots_in, roots_in_window, sturm_roots_in, MAX_DEGREE};
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
 
@@ -87,25 +87,11 @@ impl Algebraic {
 
     /// Crossings with the ray (its `t`), those outside `window` possibly left out.
     fn crossings(&self, ray: &Ray, window: Option<(f64, f64)>, out: &mut Vec<Hit>) {
-        let len = ray.dir.length();
-        if !(len > 0.0 && len.is_finite()) || self.terms.is_empty() {
-            return;
-        }
-        let u = ray.dir / len;
         let mut c = [0.0; MAX_ORDER + 1];
-        self.along(ray.origin, u, &mut c);
-        let c = &c[..=self.order];
-        // Cauchy's bound on the roots keeps the search interval finite.
-        let lead = c.iter().rposition(|v| *v != 0.0).unwrap_or(0);
-        let hi = if lead == 0 {
+        let Some((hi, len)) = self.along_ray(ray, &mut c) else {
             return;
-        } else {
-            let m = c[..lead]
-                .iter()
-                .map(|v| (v / c[lead]).abs())
-                .fold(0.0, f64::max);
-            (1.0 + m).min(FAR)
         };
+        let c = &c[..=self.order];
         let roots = match (self.sturm, window) {
             (true, _) => sturm_roots_in(c, EPSILON * len, hi),
             (false, None) => roots_in(c, EPSILON * len, hi),
@@ -115,6 +101,31 @@ impl Algebraic {
             }
         };
         out.extend(roots.iter().map(|t| Hit::new(t / len)));
+    }
+
+    /// The polynomial along the ray in units of its unit direction (into `c`), the end of
+    /// the search interval and the direction's length; None when there is nothing to solve.
+    #[inline(always)]
+    fn along_ray(&self, ray: &Ray, c: &mut [f64; MAX_ORDER + 1]) -> Option<(f64, f64)> {
+        let len = ray.dir.length();
+        if !(len > 0.0 && len.is_finite()) || self.terms.is_empty() {
+            return None;
+        }
+        let u = ray.dir / len;
+        self.along(ray.origin, u, c);
+        // Cauchy's bound on the roots keeps the search interval finite.
+        let lead = c[..=self.order]
+            .iter()
+            .rposition(|v| *v != 0.0)
+            .unwrap_or(0);
+        if lead == 0 {
+            return None;
+        }
+        let m = c[..lead]
+            .iter()
+            .map(|v| (v / c[lead]).abs())
+            .fold(0.0, f64::max);
+        Some(((1.0 + m).min(FAR), len))
     }
 
     /// The polynomial along `origin + t·dir` (ascending coefficients in t).
@@ -267,6 +278,27 @@ impl Shape for Algebraic {
 
     fn intersect_all_within(&self, ray: &Ray, lo: f64, hi: f64, out: &mut Vec<Hit>) {
         self.crossings(ray, Some((lo, hi)), out)
+    }
+
+    /// The nearest of `intersect_all`'s crossings without polishing the roots beyond it
+    /// (`first_root_in`); the `t` are increasing in the roots, so the first root whose `t`
+    /// passes `EPSILON` gives the nearest crossing.
+    fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
+        if self.sturm {
+            scratch.clear();
+            self.crossings(ray, None, scratch);
+            return scratch
+                .iter()
+                .filter(|h| h.t > EPSILON && h.t < tmax)
+                .min_by(|a, b| a.t.total_cmp(&b.t))
+                .copied();
+        }
+        let mut c = [0.0; MAX_ORDER + 1];
+        let (hi, len) = self.along_ray(ray, &mut c)?;
+        first_root_in(&c[..=self.order], EPSILON * len, hi, |x| x / len > EPSILON)
+            .map(|x| x / len)
+            .filter(|&t| t < tmax)
+            .map(Hit::new)
     }
 
     fn windowed(&self) -> bool {

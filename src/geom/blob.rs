@@ -17,7 +17,7 @@
 use std::cell::RefCell;
 
 use crate::geom::bvh::Bvh;
-use crate::geom::poly::{roots_in, sturm_roots_in};
+use crate::geom::poly::{first_root_in, roots_in, sturm_roots_in};
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, Transform, EPSILON};
 
@@ -276,7 +276,9 @@ impl Blob {
         );
     }
 
-    fn crossings(&self, ray: &Ray, w: &mut Work, out: &mut Vec<Hit>) {
+    /// The crossings, or with `first_only` only the nearest (`first_root_in`: the roots
+    /// beyond it are not polished), the same bits.
+    fn crossings(&self, ray: &Ray, w: &mut Work, out: &mut Vec<Hit>, first_only: bool) {
         let len = ray.dir.length();
         if !(len > 0.0 && len.is_finite() && ray.origin.is_finite()) {
             return;
@@ -330,6 +332,21 @@ impl Blob {
             if !any {
                 continue;
             }
+            if first_only && !self.sturm {
+                // `keep` takes the roots as the loop below does, `last` included.
+                let keep = |s: f64| {
+                    if s - last <= 1e-12 * (1.0 + s.abs()) {
+                        return false;
+                    }
+                    last = s;
+                    (s + shift) / len > EPSILON
+                };
+                if let Some(s) = first_root_in(&sum, lo, hi, keep) {
+                    out.push(Hit::with_part((s + shift) / len, PART_BLENDED));
+                    return;
+                }
+                continue;
+            }
             let roots = if self.sturm {
                 sturm_roots_in(&sum, lo, hi)
             } else {
@@ -370,10 +387,24 @@ impl Shape for Blob {
 
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
         WORK.with(|w| match w.try_borrow_mut() {
-            Ok(mut w) => self.crossings(ray, &mut w, out),
+            Ok(mut w) => self.crossings(ray, &mut w, out, false),
             // Never re-entered in practice; a fresh buffer keeps it correct if it were.
-            Err(_) => self.crossings(ray, &mut Work::default(), out),
+            Err(_) => self.crossings(ray, &mut Work::default(), out, false),
         });
+    }
+
+    fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
+        scratch.clear();
+        WORK.with(|w| match w.try_borrow_mut() {
+            Ok(mut w) => self.crossings(ray, &mut w, scratch, true),
+            Err(_) => self.crossings(ray, &mut Work::default(), scratch, true),
+        });
+        // With `sturm` every crossing is there; without, only the nearest.
+        scratch
+            .iter()
+            .filter(|h| h.t > EPSILON && h.t < tmax)
+            .min_by(|a, b| a.t.total_cmp(&b.t))
+            .copied()
     }
 
     fn inside(&self, p: DVec3) -> bool {

@@ -108,12 +108,82 @@ fn quadratic(c: &[f64], out: &mut Roots, with_vertex: bool) {
 pub fn roots_in(c: &[f64], lo: f64, hi: f64) -> Roots {
     let mut out = Roots::new();
     if let Some(c) = trim(c) {
-        if lo <= hi {
+        if lo <= hi && !surely_no_root(c, lo, hi) {
             isolate(c, lo, hi, &mut out, false);
         }
     }
     out
 }
+
+/// Whether the polynomial keeps one sign on `[lo, hi]` by a margin far above every rounding
+/// error of evaluating it there, so that `isolate` could find no change of sign and no exact
+/// zero: its Bernstein coefficients on the interval (whose hull holds the curve) all exceed,
+/// in magnitude and with one sign, 1e-11 of `T = Σ|c_j|(|lo| + (hi - lo))^j`. `T` bounds
+/// the sum of the magnitudes of the terms in Horner's evaluation at any point of the interval
+/// and in the interval's change of variable, whose rounding errors are a few times
+/// `degree · 2^-53 · T` (well below 1e-13 T up to degree 8). Most intervals a ray spends near a
+/// blob or quartic hold no crossing, and this is far cheaper than isolating the roots.
+fn surely_no_root(c: &[f64], lo: f64, hi: f64) -> bool {
+    let n = c.len().saturating_sub(1);
+    if !(3..=8).contains(&n) {
+        return false;
+    }
+    let (f_lo, f_hi) = (eval(c, lo), eval(c, hi));
+    if (f_lo > 0.0) != (f_hi > 0.0) || f_lo == 0.0 || f_hi == 0.0 {
+        return false;
+    }
+    let w = hi - lo;
+    let reach = lo.abs() + w;
+    let mut t = 0.0;
+    let mut pw = 1.0;
+    for &cj in c {
+        t += cj.abs() * pw;
+        pw *= reach;
+    }
+    if !(t.is_finite() && w.is_finite()) {
+        return false;
+    }
+    // q(u) = p(lo + w u): a Taylor shift to `lo` (repeated synthetic division), then scaling.
+    let mut q = [0.0f64; 9];
+    q[..=n].copy_from_slice(c);
+    for i in 0..n {
+        for j in (i..n).rev() {
+            q[j] += lo * q[j + 1];
+        }
+    }
+    let mut scale = 1.0;
+    for qi in q[..=n].iter_mut() {
+        *qi *= scale;
+        scale *= w;
+    }
+    // Bernstein coefficients b_k = Σ_{i ≤ k} C(k, i) / C(n, i) · q_i.
+    let margin = 1e-11 * t;
+    let positive = f_lo > 0.0;
+    (0..=n).all(|k| {
+        let b: f64 = (0..=k).map(|i| BINOM[k][i] / BINOM[n][i] * q[i]).sum();
+        if positive {
+            b > margin
+        } else {
+            b < -margin
+        }
+    })
+}
+
+/// Binomial coefficients C(k, i) up to k = 8 (exact integers).
+const BINOM: [[f64; 9]; 9] = {
+    let mut binom = [[0.0f64; 9]; 9];
+    let mut k = 0;
+    while k < 9 {
+        binom[k][0] = 1.0;
+        let mut i = 1;
+        while i <= k {
+            binom[k][i] = binom[k - 1][i - 1] + if i < k { binom[k - 1][i] } else { 0.0 };
+            i += 1;
+        }
+        k += 1;
+    }
+    binom
+};
 
 fn isolate(c: &[f64], lo: f64, hi: f64, out: &mut Roots, breakpoints: bool) {
     let n = c.len().saturating_sub(1);
@@ -147,6 +217,118 @@ fn isolate(c: &[f64], lo: f64, hi: f64, out: &mut Roots, breakpoints: bool) {
     if fa == 0.0 {
         out.push(a);
     }
+}
+
+/// The first of [`roots_in`]'s roots (in increasing order) for which `keep` holds, bit for bit
+/// as [`roots_in`] gives it, for a caller that wants only the nearest crossing: the roots and
+/// critical points beyond it are not polished. The pieces are walked as `isolate` walks them,
+/// each critical point polished only when the walk reaches it (see [`critical_in_window`]
+/// for the brackets), so every piece reached has the same ends as in [`roots_in`].
+pub fn first_root_in(
+    c: &[f64],
+    lo: f64,
+    hi: f64,
+    mut keep: impl FnMut(f64) -> bool,
+) -> Option<f64> {
+    let c = trim(c)?;
+    let n = c.len().saturating_sub(1);
+    if lo > hi || lo.is_nan() || hi.is_nan() || surely_no_root(c, lo, hi) {
+        return None;
+    }
+    if n <= 2 {
+        let mut out = Roots::new();
+        isolate(c, lo, hi, &mut out, false);
+        return out.iter().copied().find(|&x| keep(x));
+    }
+    let mut d = [0.0; MAX_DEGREE];
+    for i in 1..=n {
+        d[i - 1] = c[i] * i as f64;
+    }
+    let d = &d[..n];
+    // The critical points as brackets still to polish (an exact point has equal ends): a
+    // cubic's are a quadratic's, found at once; otherwise the brackets are those
+    // `critical_in_window` finds.
+    let mut cands = [(0.0, 0.0, false); MAX_DEGREE + 2];
+    let mut m = 0;
+    if n == 3 {
+        let mut crit = Roots::new();
+        isolate(d, lo, hi, &mut crit, true);
+        for &x in crit.iter() {
+            cands[m] = (x, x, false);
+            m += 1;
+        }
+    } else {
+        let mut dd = [0.0; MAX_DEGREE];
+        for i in 1..n {
+            dd[i - 1] = d[i] * i as f64;
+        }
+        let mut crit2 = Roots::new();
+        isolate(&dd[..n - 1], lo, hi, &mut crit2, true);
+        let mut a = lo;
+        let mut fa = eval(d, a);
+        for &b in crit2.iter().chain(std::iter::once(&hi)) {
+            let fb = eval(d, b);
+            if fa == 0.0 {
+                cands[m] = (a, a, false);
+                m += 1;
+            } else if (fa < 0.0) != (fb < 0.0) && fb != 0.0 {
+                cands[m] = (a, b, fa < 0.0);
+                m += 1;
+            }
+            a = b;
+            fa = fb;
+        }
+        if fa == 0.0 {
+            cands[m] = (a, a, false);
+            m += 1;
+        }
+    }
+    // `isolate`'s loop over the pieces. The critical points are deduplicated and capped as
+    // `Roots::push` does when `isolate` collects them.
+    let mut a = lo;
+    let mut fa = eval(c, a);
+    let (mut last, mut count) = (None, 0);
+    let mut k = 0;
+    loop {
+        let b = if k < m {
+            let (x0, x1, neg) = cands[k];
+            k += 1;
+            let x = if x0 == x1 { x0 } else { polish(d, x0, x1, neg) };
+            if count >= MAX_DEGREE || last == Some(x) {
+                continue;
+            }
+            last = Some(x);
+            count += 1;
+            x
+        } else {
+            break;
+        };
+        let fb = eval(c, b);
+        if fa == 0.0 {
+            if keep(a) {
+                return Some(a);
+            }
+        } else if (fa < 0.0) != (fb < 0.0) && fb != 0.0 {
+            let x = polish(c, a, b, fa < 0.0);
+            if keep(x) {
+                return Some(x);
+            }
+        }
+        a = b;
+        fa = fb;
+    }
+    let fb = eval(c, hi);
+    if fa == 0.0 {
+        if keep(a) {
+            return Some(a);
+        }
+    } else if (fa < 0.0) != (fb < 0.0) && fb != 0.0 {
+        let x = polish(c, a, hi, fa < 0.0);
+        if keep(x) {
+            return Some(x);
+        }
+    }
+    (fb == 0.0 && keep(hi)).then_some(hi)
 }
 
 /// [`roots_in`] for a caller that needs only the roots in `[wlo, whi]` (a clipped shape's
@@ -554,6 +736,72 @@ mod tests {
             let all = roots_in_window(&c, lo, hi, f64::NEG_INFINITY, f64::INFINITY);
             assert_eq!(&*all, &*full);
         }
+    }
+
+    /// The first root kept is `roots_in`'s first root kept, bit for bit: random polynomials
+    /// of degree 1 to 8 with clustered, double and far roots, and thresholds anywhere.
+    #[test]
+    fn first_root_is_roots_ins_first() {
+        let mut rng = crate::geom::test_rng::Lcg(17);
+        for case in 0..20_000 {
+            let deg = 1 + case % 8;
+            let mut roots: Vec<f64> = (0..deg).map(|_| rng.next() * 8.0 - 2.0).collect();
+            if case % 3 == 0 {
+                roots[0] = roots[deg - 1] + 1e-9 * rng.next();
+            }
+            let mut c = from_roots(&roots);
+            if case % 5 == 0 {
+                c[0] += rng.next() - 0.5;
+            }
+            let (lo, hi) = (rng.next() - 0.5, 4.0 + 4.0 * rng.next());
+            let all = roots_in(&c, lo, hi);
+            for k in 0..4 {
+                let cut = if k == 0 {
+                    f64::NEG_INFINITY
+                } else {
+                    lo + (hi - lo) * rng.next()
+                };
+                let want = all.iter().copied().find(|&x| x > cut);
+                let got = first_root_in(&c, lo, hi, |x| x > cut);
+                assert_eq!(
+                    want.map(f64::to_bits),
+                    got.map(f64::to_bits),
+                    "{c:?} {lo} {hi} {cut}"
+                );
+            }
+        }
+        assert_eq!(
+            first_root_in(&[1.0, 0.0, 0.0, 1.0], f64::NAN, 1.0, |_| true),
+            None
+        );
+    }
+
+    /// The Bernstein shortcut never hides a root `isolate` would find: random polynomials of
+    /// degree 3 to 8, many of them grazing zero (a tiny constant shift), on random intervals.
+    #[test]
+    fn no_root_test_never_hides_a_root() {
+        let mut rng = crate::geom::test_rng::Lcg(23);
+        let mut skipped = 0;
+        for case in 0..100_000 {
+            let deg = 3 + case % 6;
+            let roots: Vec<f64> = (0..deg).map(|_| rng.next() * 6.0 - 3.0).collect();
+            let mut c = from_roots(&roots);
+            let k = rng.next();
+            c[0] += if case % 2 == 0 {
+                k * 1e-12
+            } else {
+                k * 40.0 - 20.0
+            };
+            let lo = rng.next() * 8.0 - 4.0;
+            let hi = lo + rng.next() * rng.next() * 6.0;
+            if surely_no_root(&c, lo, hi) {
+                skipped += 1;
+                let mut out = Roots::new();
+                isolate(&c, lo, hi, &mut out, false);
+                assert!(out.is_empty(), "{c:?} {lo} {hi} {:?}", &out[..]);
+            }
+        }
+        assert!(skipped > 10_000, "{skipped}");
     }
 
     #[test]

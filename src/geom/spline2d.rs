@@ -173,6 +173,23 @@ pub fn sign_changes(c: &[f64], lo: f64, hi: f64, f_lo: f64, f_hi: f64, mut found
     }
 }
 
+/// Binomial coefficients C(k, i) up to k = 16 (exact integers), built once at compile time
+/// rather than for every polynomial tested.
+const BINOM: [[f64; 17]; 17] = {
+    let mut binom = [[0.0f64; 17]; 17];
+    let mut k = 0;
+    while k < 17 {
+        binom[k][0] = 1.0;
+        let mut i = 1;
+        while i <= k {
+            binom[k][i] = binom[k - 1][i - 1] + if i < k { binom[k - 1][i] } else { 0.0 };
+            i += 1;
+        }
+        k += 1;
+    }
+    binom
+};
+
 /// Whether the polynomial surely keeps one sign on [0, 1], ends included: its Bernstein
 /// coefficients (whose hull holds the curve) all share the sign of both end values. Most
 /// pieces a ray passes near have no crossing, and this is far cheaper than isolating roots.
@@ -183,15 +200,8 @@ fn no_sign_change(c: &[f64], f_lo: f64, f_hi: f64) -> bool {
         return false;
     }
     // b_k = Σ_{i ≤ k} C(k, i) / C(n, i) · c_i
-    let mut binom = [[0.0f64; 17]; 17];
-    for k in 0..=n {
-        binom[k][0] = 1.0;
-        for i in 1..=k {
-            binom[k][i] = binom[k - 1][i - 1] + if i < k { binom[k - 1][i] } else { 0.0 };
-        }
-    }
     (0..=n).all(|k| {
-        let b: f64 = (0..=k).map(|i| binom[k][i] / binom[n][i] * c[i]).sum();
+        let b: f64 = (0..=k).map(|i| BINOM[k][i] / BINOM[n][i] * c[i]).sum();
         if positive {
             b > 0.0
         } else {

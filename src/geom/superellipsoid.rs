@@ -20,16 +20,79 @@ const MARGIN: f64 = 1e-6;
 /// Samples per piece between breakpoints.
 const SAMPLES: usize = 4;
 
-#[derive(Clone, Copy, Debug)]
+/// Table steps on [0, 1] for the bounds of the samples' powers (a power of two, so that
+/// `x * STEPS` and its floor are exact).
+const STEPS: usize = 128;
+
+#[derive(Clone, Debug)]
 pub struct Superellipsoid {
     /// 2/e, the exponent of |x| and |y|.
-    a: f64,
+    a: Power,
     /// e/n, the exponent of their sum.
-    b: f64,
+    b: Power,
     /// 2/n, the exponent of |z|.
-    c: f64,
+    c: Power,
     /// 2^(e/n): the largest `(1 + r^a)^b` can be (r <= 1), for `sign`.
     top: f64,
+    /// `x^c` at `x = i / STEPS`: with `x^c` increasing, the two entries around `x` bound it.
+    pow_c: [f64; STEPS + 1],
+    /// `(1 + r^a)^b` at `r = i / STEPS`, increasing in `r` like `pow_c`.
+    pow_ab: [f64; STEPS + 1],
+}
+
+/// A fixed exponent. `powf` with exponent 1, 2 or 1/2 gives exactly `x`, `x * x` and
+/// `x.sqrt()` (the correctly rounded results; unit test `special_powers_are_exact`), at a
+/// fraction of the cost: these exponents come from round shapes' `e` or `n` of 1 or 2.
+#[derive(Clone, Copy, Debug)]
+enum Power {
+    One,
+    Two,
+    Half,
+    Other(f64),
+}
+
+impl Power {
+    fn new(k: f64) -> Power {
+        if k == 1.0 {
+            Power::One
+        } else if k == 2.0 {
+            Power::Two
+        } else if k == 0.5 {
+            Power::Half
+        } else {
+            Power::Other(k)
+        }
+    }
+
+    /// `x.powf(k)` to the bit, for `x >= 0` (the field's arguments are absolute values).
+    #[inline]
+    fn of(self, x: f64) -> f64 {
+        match self {
+            Power::One => x,
+            Power::Two => x * x,
+            Power::Half => x.sqrt(),
+            Power::Other(k) => x.powf(k),
+        }
+    }
+
+    fn exponent(self) -> f64 {
+        match self {
+            Power::One => 1.0,
+            Power::Two => 2.0,
+            Power::Half => 0.5,
+            Power::Other(k) => k,
+        }
+    }
+}
+
+/// The two table entries around `x` in `[0, 1]` (None outside, or NaN).
+#[inline]
+fn around(table: &[f64; STEPS + 1], x: f64) -> Option<(f64, f64)> {
+    if x > 1.0 || x.is_nan() {
+        return None;
+    }
+    let i = (x * STEPS as f64) as usize;
+    Some((table[i], table[(i + 1).min(STEPS)]))
 }
 
 /// A point's field value, or only its sign when that is certain without the whole value.
@@ -52,11 +115,15 @@ impl Field {
 impl Superellipsoid {
     /// Exponents must be positive and finite; callers clamp (the parser warns).
     pub fn new(e: f64, n: f64) -> Superellipsoid {
+        let (a, b, c) = (Power::new(2.0 / e), Power::new(e / n), Power::new(2.0 / n));
+        let at = |i: usize| i as f64 / STEPS as f64;
         Superellipsoid {
-            a: 2.0 / e,
-            b: e / n,
-            c: 2.0 / n,
+            a,
+            b,
+            c,
             top: 2f64.powf(e / n),
+            pow_c: std::array::from_fn(|i| c.of(at(i))),
+            pow_ab: std::array::from_fn(|i| b.of(1.0 + a.of(at(i)))),
         }
     }
 
@@ -66,11 +133,11 @@ impl Superellipsoid {
         let m = x.max(y);
         let xy = if m > 0.0 {
             let r = x.min(y) / m;
-            m.powf(self.c) * (1.0 + r.powf(self.a)).powf(self.b)
+            self.c.of(m) * self.b.of(1.0 + self.a.of(r))
         } else {
             0.0
         };
-        xy + z.powf(self.c) - 1.0
+        xy + self.c.of(z) - 1.0
     }
 
     /// `value`, or its sign alone when the two powers of `m` and `|z|` settle it: the field
@@ -83,7 +150,22 @@ impl Superellipsoid {
         if m <= 0.0 || m.is_nan() {
             return Field::Value(self.value(p));
         }
-        let (mc, zc) = (m.powf(self.c), z.powf(self.c));
+        let r = x.min(y) / m;
+        // Bounds from the tables first (no power at all): the field is increasing in `m`, `r`
+        // and `|z|`, and the margins are far above the tables' and these sums' rounding.
+        if let (Some((mc0, mc1)), Some((g0, g1)), Some((zc0, zc1))) = (
+            around(&self.pow_c, m),
+            around(&self.pow_ab, r),
+            around(&self.pow_c, z),
+        ) {
+            if mc0 * g0 + zc0 > 1.0 + 1e-9 {
+                return Field::Sign(false);
+            }
+            if mc1 * g1 + zc1 < 1.0 - 1e-9 {
+                return Field::Sign(true);
+            }
+        }
+        let (mc, zc) = (self.c.of(m), self.c.of(z));
         // Margins far above the rounding of these few operations.
         if mc + zc > 1.0 + 1e-9 {
             return Field::Sign(false);
@@ -91,13 +173,21 @@ impl Superellipsoid {
         if mc * self.top + zc < 1.0 - 1e-9 {
             return Field::Sign(true);
         }
-        let r = x.min(y) / m;
-        let xy = mc * (1.0 + r.powf(self.a)).powf(self.b);
+        let xy = mc * self.b.of(1.0 + self.a.of(r));
         Field::Value(xy + zc - 1.0)
     }
 
-    /// Crossings as distances along the unit direction `u` from `o`, within `[lo, hi]`.
-    fn crossings(&self, o: DVec3, u: DVec3, lo: f64, hi: f64, out: &mut Vec<f64>) {
+    /// Crossings as distances along the unit direction `u` from `o`, within `[lo, hi]`,
+    /// increasing; the search stops after the first crossing `last` accepts.
+    fn crossings(
+        &self,
+        o: DVec3,
+        u: DVec3,
+        lo: f64,
+        hi: f64,
+        out: &mut Vec<f64>,
+        last: impl Fn(f64) -> bool,
+    ) {
         // Breakpoints: where the ray meets each plane n·p = 0.
         const PLANES: [[f64; 3]; 9] = [
             [1.0, 0.0, 0.0],
@@ -152,12 +242,47 @@ impl Superellipsoid {
                 let mut f1 = self.field(o + u * s1);
                 if f0.negative() != f1.negative() {
                     let (v0, v1) = (exact(s0, f0), exact(s1, f1));
-                    out.push(refine(&f, s0, v0, s1, v1));
+                    let root = refine(&f, s0, v0, s1, v1);
+                    out.push(root);
+                    if last(root) {
+                        return;
+                    }
                     f1 = Field::Value(v1);
                 }
                 (s0, f0) = (s1, f1);
             }
         }
+    }
+}
+
+impl Superellipsoid {
+    /// The crossings with `t > EPSILON`, increasing; with `first_only` only the first.
+    fn hits(&self, ray: &Ray, out: &mut Vec<Hit>, first_only: bool) {
+        let len = ray.dir.length();
+        if !(len > 0.0 && len.is_finite()) {
+            return;
+        }
+        let u = ray.dir / len;
+        let Some((lo, hi)) = box_interval(ray.origin, u, 1.0 + MARGIN) else {
+            return;
+        };
+        let lo = lo.max(EPSILON * len);
+        if lo >= hi || lo.is_nan() || hi.is_nan() {
+            return;
+        }
+        // Distances are measured from the box entry so the samples keep their digits.
+        let o = ray.origin + u * lo;
+        let to_t = |s: f64| (s + lo) / len;
+        let mut s = Vec::new();
+        self.crossings(o, u, 0.0, hi - lo, &mut s, |s| {
+            first_only && to_t(s) > EPSILON
+        });
+        out.extend(
+            s.into_iter()
+                .map(to_t)
+                .filter(|&t| t > EPSILON)
+                .map(Hit::new),
+        );
     }
 }
 
@@ -224,28 +349,15 @@ impl Shape for Superellipsoid {
     }
 
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
-        let len = ray.dir.length();
-        if !(len > 0.0 && len.is_finite()) {
-            return;
-        }
-        let u = ray.dir / len;
-        let Some((lo, hi)) = box_interval(ray.origin, u, 1.0 + MARGIN) else {
-            return;
-        };
-        let lo = lo.max(EPSILON * len);
-        if lo >= hi || lo.is_nan() || hi.is_nan() {
-            return;
-        }
-        // Distances are measured from the box entry so the samples keep their digits.
-        let o = ray.origin + u * lo;
-        let mut s = Vec::new();
-        self.crossings(o, u, 0.0, hi - lo, &mut s);
-        out.extend(
-            s.into_iter()
-                .map(|s| (s + lo) / len)
-                .filter(|&t| t > EPSILON)
-                .map(Hit::new),
-        );
+        self.hits(ray, out, false)
+    }
+
+    /// Only the first crossing is refined: the `t` are increasing in the crossings, so the
+    /// first whose `t` passes `EPSILON` is the nearest.
+    fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
+        scratch.clear();
+        self.hits(ray, scratch, true);
+        scratch.first().filter(|h| h.t < tmax).copied()
     }
 
     fn inside(&self, p: DVec3) -> bool {
@@ -259,14 +371,15 @@ impl Shape for Superellipsoid {
         let m = x.max(y);
         let ln_s = if m > 0.0 {
             let r = x.min(y) / m;
-            self.a * m.ln() + (1.0 + r.powf(self.a)).ln()
+            self.a.exponent() * m.ln() + (1.0 + self.a.of(r)).ln()
         } else {
             f64::NEG_INFINITY
         };
         let part = |v: f64, k: f64| if k == 0.0 { 0.0 } else { k * v.ln() };
-        let lx = (self.b - 1.0) * ln_s + part(x, self.a - 1.0);
-        let ly = (self.b - 1.0) * ln_s + part(y, self.a - 1.0);
-        let lz = part(z, self.c - 1.0);
+        let (a, b, c) = (self.a.exponent(), self.b.exponent(), self.c.exponent());
+        let lx = (b - 1.0) * ln_s + part(x, a - 1.0);
+        let ly = (b - 1.0) * ln_s + part(y, a - 1.0);
+        let lz = part(z, c - 1.0);
         let l = [lx, ly, lz];
         let top = l
             .iter()
@@ -349,6 +462,109 @@ mod tests {
         for p in [DVec3::X, DVec3::Y, DVec3::Z, DVec3::ZERO] {
             let n = s.normal(p, &Hit::new(0.0));
             assert!(n.is_finite() && n != DVec3::ZERO, "{p} {n}");
+        }
+    }
+
+    /// `Power` relies on these being `powf`'s results to the bit (they are its correctly rounded
+    /// results; LLVM makes the same replacements for constant exponents).
+    #[test]
+    fn special_powers_are_exact() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        for i in 0..200_000 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            // Uniform in [0, 2), then spread over many binades.
+            let u = f64::from_bits((state >> 12) | 0x3ff0_0000_0000_0000) - 1.0;
+            let x = std::hint::black_box(u * 2f64.powi((i % 64) - 40));
+            assert_eq!(
+                Power::new(2.0).of(x).to_bits(),
+                x.powf(2.0).to_bits(),
+                "{x}"
+            );
+            assert_eq!(
+                Power::new(0.5).of(x).to_bits(),
+                x.powf(0.5).to_bits(),
+                "{x}"
+            );
+            assert_eq!(
+                Power::new(1.0).of(x).to_bits(),
+                x.powf(1.0).to_bits(),
+                "{x}"
+            );
+        }
+        for x in [0.0, f64::INFINITY, f64::NAN, f64::MIN_POSITIVE, 5e-324] {
+            for k in [0.5, 1.0, 2.0] {
+                let (p, q) = (Power::new(k).of(x), x.powf(k));
+                assert!(
+                    p.to_bits() == q.to_bits() || (p.is_nan() && q.is_nan()),
+                    "{x} {k}"
+                );
+            }
+        }
+    }
+
+    /// The samples' sign from the tables (or the two cheap powers) is the sign of `value`.
+    #[test]
+    fn field_sign_is_the_value_sign() {
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            f64::from_bits((state >> 12) | 0x3ff0_0000_0000_0000) - 1.0
+        };
+        let exps = [0.1, 0.3, 0.5, 1.0, 2.0, 3.0];
+        for &e in &exps {
+            for &n in &exps {
+                let s = Superellipsoid::new(e, n);
+                for _ in 0..20_000 {
+                    let p = DVec3::new(next(), next(), next()) * 2.0 - DVec3::ONE;
+                    // Half the points pulled onto the surface, where the sign is close.
+                    let p = if next() < 0.5 {
+                        let (mut lo, mut hi) = (0.0, 2.0);
+                        for _ in 0..60 {
+                            let mid = 0.5 * (lo + hi);
+                            if s.value(p * mid) < 0.0 {
+                                lo = mid;
+                            } else {
+                                hi = mid;
+                            }
+                        }
+                        p * lo
+                    } else {
+                        p
+                    };
+                    let v = s.value(p);
+                    match s.field(p) {
+                        Field::Value(f) => assert_eq!(f.to_bits(), v.to_bits(), "{e} {n} {p}"),
+                        Field::Sign(neg) => assert_eq!(neg, v < 0.0, "{e} {n} {p}"),
+                    }
+                }
+            }
+        }
+    }
+
+    /// The nearest crossing alone is `intersect_all`'s nearest, to the bit.
+    #[test]
+    fn first_crossing_is_the_nearest_of_all() {
+        let mut rng = crate::geom::test_rng::Lcg(5);
+        for (e, n) in [(0.3, 0.3), (1.0, 0.1), (2.0, 0.5), (3.0, 3.0), (1.0, 1.0)] {
+            let s = Superellipsoid::new(e, n);
+            for _ in 0..3000 {
+                let o = rng.vec(5.0);
+                let ray = Ray::new(o, rng.vec(1.0).normalize() * 1.7 - o * 0.1 * rng.next());
+                let tmax = if rng.next() < 0.3 { 2.0 } else { f64::INFINITY };
+                let mut all = Vec::new();
+                s.intersect_all(&ray, &mut all);
+                let want = all
+                    .iter()
+                    .filter(|h| h.t > EPSILON && h.t < tmax)
+                    .min_by(|a, b| a.t.total_cmp(&b.t))
+                    .map(|h| h.t.to_bits());
+                let got = s.intersect_first(&ray, tmax, &mut Vec::new());
+                assert_eq!(want, got.map(|h| h.t.to_bits()), "{e} {n} {ray:?}");
+            }
         }
     }
 

@@ -11,7 +11,7 @@
 //!   form (see `poly`). `sturm` adds a Sturm-sequence search for exact tangencies (double
 //!   roots without a sign change); it is slower and visually the same.
 
-use crate::geom::poly::{roots_in, sturm_roots_in};
+use crate::geom::poly::{first_root_in, roots_in, sturm_roots_in};
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
 
@@ -45,6 +45,12 @@ impl Torus {
 
     /// Crossings as t values (ray units), increasing, with t > EPSILON.
     pub fn crossings(&self, ray: &Ray, out: &mut [f64; 4]) -> usize {
+        self.crossings_up_to(ray, out, false)
+    }
+
+    /// `crossings`, or with `first_only` only the first of them (the others neither found nor
+    /// polished: `first_root_in`), the same bits.
+    fn crossings_up_to(&self, ray: &Ray, out: &mut [f64; 4], first_only: bool) -> usize {
         if self.empty {
             return 0;
         }
@@ -102,6 +108,15 @@ impl Torus {
             ];
             if self.sturm {
                 sturm_roots_in(&c, 0.0, hi - shift)
+            } else if first_only {
+                let to_t = |s: f64| (s + shift) * scale / len;
+                return match first_root_in(&c, 0.0, hi - shift, |s| to_t(s) > EPSILON) {
+                    Some(s) => {
+                        out[0] = to_t(s);
+                        1
+                    }
+                    None => 0,
+                };
             } else {
                 roots_in(&c, 0.0, hi - shift)
             }
@@ -138,7 +153,7 @@ impl Shape for Torus {
 
     fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
         let mut t = [0.0; 4];
-        let n = self.crossings(ray, &mut t);
+        let n = self.crossings_up_to(ray, &mut t, true);
         t[..n].first().filter(|&&t| t < tmax).map(|&t| Hit::new(t))
     }
 
