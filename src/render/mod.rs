@@ -220,6 +220,11 @@ fn first_pass_rows(
 ) -> aa::Pass {
     let w = s.width as usize;
     let mut samples = vec![Seen::default(); w * rows.len()];
+    // Radiosity's last completion pass lit some of these very rays (radiosity::pretrace).
+    let lit = tracer
+        .rad
+        .as_ref()
+        .and_then(|r| r.cache.first_pass.as_deref());
     let rays = AtomicU64::new(0);
     let camera_rays = AtomicU64::new(0);
     samples
@@ -232,7 +237,10 @@ fn first_pass_rows(
                 if !s.inside(x, y) {
                     continue;
                 }
-                *px = tracer.trace_camera_at(x as f64 + 0.5, y as f64 + 0.5, ctx);
+                *px = match lit.and_then(|l| l[y * w + x]) {
+                    Some(seen) => seen,
+                    None => tracer.trace_camera_at(x as f64 + 0.5, y as f64 + 0.5, ctx),
+                };
                 traced += 1;
             }
             camera_rays.fetch_add(traced, Ordering::Relaxed);

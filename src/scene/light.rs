@@ -130,7 +130,17 @@ impl Light {
     pub fn fade(&self, dist: f64) -> f64 {
         match self.fade_distance {
             Some(fd) if fd > 0.0 && self.fade_power > 0.0 => {
-                2.0 / (1.0 + (dist / fd).powf(self.fade_power))
+                let x = dist / fd;
+                // powf is a libm call; 2 and 1 are the common powers (x·x is the correctly
+                // rounded square, powf's result is within a rounding of it).
+                let xp = if self.fade_power == 2.0 {
+                    x * x
+                } else if self.fade_power == 1.0 {
+                    x
+                } else {
+                    x.powf(self.fade_power)
+                };
+                2.0 / (1.0 + xp)
             }
             _ => 1.0,
         }
@@ -183,7 +193,10 @@ impl Light {
                 } else {
                     smoothstep((c - cos_falloff) / (cos_radius - cos_falloff))
                 };
-                if tightness != 0.0 {
+                if tightness == 1.0 {
+                    // powf(c, 1) is c exactly, without the libm call.
+                    edge * c
+                } else if tightness != 0.0 {
                     edge * c.powf(tightness)
                 } else {
                     edge
