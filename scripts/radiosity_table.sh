@@ -3,7 +3,7 @@
 # `nice`): the 12 sample scenes where radiosity is the only missing feature, 160x120 -A, one
 # thread each side (+WT1). Per scene: lancer's SSIM against povray's render, povray's CPU
 # seconds for Radiosity + Trace (its statistics' "CPU-seconds total" lines) against lancer's
-# whole process (user + system from /usr/bin/time, writing PPM: parse and build included, a
+# whole process (perf's task-clock, else user + system from /usr/bin/time; writing PPM: parse and build included, a
 # few ms on these scenes), and their ratio. CPU seconds, not wall clock: the machine is
 # shared and waiting for a core would count in wall time.
 #
@@ -44,8 +44,15 @@ chmod -R u+w "$tmp/samples"
 run_lancer() {
   local bin=$1 path=$2 out=$3 dir
   dir=$(dirname "$path")
-  (cd "$dir" && nice /usr/bin/time -f "cpu %U %S" "$bin" -D -V +FP -A "+W$w" "+H$h" +WT1 "+L$dir" "+L$inc" "+I$path" "+O$out.ppm" 2>&1 >/dev/null) |
-    grep -oE "^cpu [0-9.]+ [0-9.]+" | awk '{printf "%.3f", $2 + $3}'
+  if command -v perf >/dev/null; then
+    # task-clock: the process's CPU time to the millisecond (/usr/bin/time's is 10 ms steps,
+    # coarse for the small scenes).
+    (cd "$dir" && nice perf stat -x, -e task-clock "$bin" -D -V +FP -A "+W$w" "+H$h" +WT1 "+L$dir" "+L$inc" "+I$path" "+O$out.ppm" 2>&1 >/dev/null) |
+      awk -F, '/task-clock/ {printf "%.3f", $1 / 1000}'
+  else
+    (cd "$dir" && nice /usr/bin/time -f "cpu %U %S" "$bin" -D -V +FP -A "+W$w" "+H$h" +WT1 "+L$dir" "+L$inc" "+I$path" "+O$out.ppm" 2>&1 >/dev/null) |
+      grep -oE "^cpu [0-9.]+ [0-9.]+" | awk '{printf "%.3f", $2 + $3}'
+  fi
   "$bin" compare "$tmp/pov.png" "$out.ppm" 2>/dev/null | awk '/^ssim/ {printf " %.4f", $2}'
 }
 

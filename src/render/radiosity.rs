@@ -107,7 +107,7 @@ impl Cache {
 
     /// Every sample whose reach may cover `p`, each once, in the order of the scales and of
     /// their cells' lists (the blend's sums depend on it).
-    fn near(&self, p: DVec3, mut f: impl FnMut(&Sample)) {
+    fn near(&self, p: DVec3, mut f: impl FnMut(usize, &Sample)) {
         // The cells of every scale are found first, then read: each is a cache miss (the
         // grids are megabytes), and asked one after another the misses overlap instead of
         // each waiting on the scan of the scale before (cornell: the lookup's share of the
@@ -127,7 +127,7 @@ impl Cache {
         }
         for ids in &found[..k] {
             for &i in *ids {
-                f(&self.samples[i as usize]);
+                f(i as usize, &self.samples[i as usize]);
             }
         }
         // Cells past MAX (reaches spread over more than 2^24): read as found.
@@ -138,7 +138,7 @@ impl Cache {
                     seen += 1;
                     if seen > MAX {
                         for &i in ids {
-                            f(&self.samples[i as usize]);
+                            f(i as usize, &self.samples[i as usize]);
                         }
                     }
                 }
@@ -178,37 +178,45 @@ struct Blend {
 impl Blend {
     #[inline]
     fn add(&mut self, s: &Sample, p: DVec3, n: DVec3, level: u32, bound: f64) {
-        if s.level > level {
-            return;
+        if let Some(w) = weight(s, p, n, level, bound) {
+            self.sum += s.irr * w;
+            self.weight += w;
+            self.count += 1;
         }
-        let d = p - s.p;
-        let d2 = d.length_squared();
-        let far = s.r * bound;
-        if d2 >= far * far {
-            return;
-        }
-        let cos = n.dot(s.n);
-        if cos < 0.5 {
-            return;
-        }
-        let dist = d2.sqrt();
-        // Samples in front of the point see a different neighbourhood (Ward's test).
-        if d.dot(n + s.n) * 0.5 < -0.05 * s.r {
-            return;
-        }
-        let err = dist / s.r + 2.0 * (1.0 - cos).max(0.0).sqrt();
-        if err >= bound {
-            return;
-        }
-        // Zero at the bound, so no seam where a sample stops counting; the square root keeps
-        // the weight up over most of the reach (1/err - 1/bound peaked at the sample and left
-        // each sample's blotch in the picture: radiosity_37 SSIM 0.896 -> 0.907,
-        // radiosity_36 0.883 -> 0.901 against povray).
-        let w = (1.0 - err / bound).sqrt();
-        self.sum += s.irr * w;
-        self.weight += w;
-        self.count += 1;
     }
+}
+
+/// The weight of sample `s` in the blend at (p, n) for a lookup of `level`, None where it is
+/// not valid there.
+#[inline]
+fn weight(s: &Sample, p: DVec3, n: DVec3, level: u32, bound: f64) -> Option<f64> {
+    if s.level > level {
+        return None;
+    }
+    let d = p - s.p;
+    let d2 = d.length_squared();
+    let far = s.r * bound;
+    if d2 >= far * far {
+        return None;
+    }
+    let cos = n.dot(s.n);
+    if cos < 0.5 {
+        return None;
+    }
+    let dist = d2.sqrt();
+    // Samples in front of the point see a different neighbourhood (Ward's test).
+    if d.dot(n + s.n) * 0.5 < -0.05 * s.r {
+        return None;
+    }
+    let err = dist / s.r + 2.0 * (1.0 - cos).max(0.0).sqrt();
+    if err >= bound {
+        return None;
+    }
+    // Zero at the bound, so no seam where a sample stops counting; the square root keeps
+    // the weight up over most of the reach (1/err - 1/bound peaked at the sample and left
+    // each sample's blotch in the picture: radiosity_37 SSIM 0.896 -> 0.907,
+    // radiosity_36 0.883 -> 0.901 against povray).
+    Some((1.0 - err / bound).sqrt())
 }
 
 /// What the tracer needs to look up and gather irradiance during one pass.
@@ -222,6 +230,8 @@ pub struct RadTrace<'a> {
     /// A pass of `pretrace` (seeding, pretrace or completion): only the samples its camera
     /// rays gather are kept, not their colour.
     pub probe: bool,
+    /// Keep the points a camera ray's lookups read the cache at (`Scratch::rad_seen`).
+    pub record: bool,
     /// Unit-disc points of the direction pool (cosine-weighted hemisphere once lifted).
     pub pool: &'a [(f64, f64)],
     pub eye: DVec3,
@@ -277,7 +287,7 @@ impl<'a> Tracer<'a> {
         }
         let bound = rad.bound;
         let mut b = Blend::default();
-        rad.cache.near(p, |s| b.add(s, p, n, level, bound));
+        rad.cache.near(p, |_, s| b.add(s, p, n, level, bound));
         for s in &ctx.rad_local {
             b.add(s, p, n, level, bound);
         }
@@ -289,6 +299,9 @@ impl<'a> Tracer<'a> {
             b.count > 0
         };
         if enough && b.weight > 0.0 {
+            if rad.record {
+                ctx.rad_seen.push((p, n));
+            }
             return b.sum / b.weight;
         }
         let s = self.gather(rad, p, n, level, path, ctx);
@@ -408,6 +421,10 @@ fn halving(start: f64, end: f64, width: u32, height: u32) -> Vec<f64> {
     out
 }
 
+/// What a pass traced at one position: the samples it gathered, the colour (when lit) and
+/// where its lookups read the cache.
+type Traced = (Vec<Sample>, Seen, Vec<(DVec3, DVec3)>);
+
 /// The order of a pass's four interleaved phases: (column, row) parity of the block.
 const PHASES: [(usize, usize); 4] = [(0, 0), (1, 1), (1, 0), (0, 1)];
 
@@ -443,8 +460,10 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
         && scene.camera.lens().is_none()
         && !(s.antialias.is_some() && s.sampling_method == 2);
     let mut first: Vec<Option<Seen>> = Vec::new();
-    // Per phase of the last pass: the colours it lit, and whether it added samples.
-    let mut phases: Vec<(Vec<(usize, Seen)>, bool)> = Vec::new();
+    // The colours the last pass lit: (pixel, colour, where its lookups read the cache, how
+    // many samples the cache held when its phase began).
+    type Lit = (usize, Seen, Vec<(DVec3, DVec3)>, usize);
+    let mut lit_colours: Vec<Lit> = Vec::new();
     let rays = AtomicU64::new(0);
     for (pass, block) in blocks.into_iter().chain(finishing).enumerate() {
         let pretrace = pass < pretrace_passes;
@@ -462,15 +481,12 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
         // than each gathering its own copy (cornell: 3681 first-level samples instead of
         // 4579, povray takes 3463).
         for phase in PHASES {
-            // Lit only while the pass has added nothing: after a phase that added samples,
-            // the colours of the phases before it are not the final trace's (lighting them
-            // would be spent in vain).
-            let lit = last && !phases.iter().any(|p| p.1);
+            let lit = last;
             let positions: Vec<(usize, usize)> = (0..nx * ny)
                 .map(|i| (i % nx, i / nx))
                 .filter(|&(ix, iy)| phase == (ix % 2, iy % 2))
                 .collect();
-            let new: Vec<(Vec<Sample>, Seen)> = {
+            let new: Vec<Traced> = {
                 let tracer = Tracer {
                     rad: Some(RadTrace {
                         set,
@@ -478,6 +494,7 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
                         bound,
                         pretrace,
                         probe: !lit,
+                        record: lit,
                         pool: &cache.pool,
                         eye: scene.camera.location,
                     }),
@@ -497,23 +514,25 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
                             y = y.floor() + 0.5;
                         }
                         ctx.rad_local.clear();
+                        ctx.rad_seen.clear();
                         let ray = scene.camera.ray(x, y);
                         let seen = tracer.trace_pretrace(ray, ctx);
                         rays.fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
-                        (std::mem::take(&mut ctx.rad_local), seen)
+                        (
+                            std::mem::take(&mut ctx.rad_local),
+                            seen,
+                            std::mem::take(&mut ctx.rad_seen),
+                        )
                     })
                     .collect()
             };
             let before = cache.samples.len();
-            let mut colours = Vec::new();
-            for (&(ix, iy), (v, seen)) in positions.iter().zip(new) {
-                cache.samples.extend(v);
-                if lit {
-                    colours.push((iy * s.width as usize + ix, seen));
+            for (&(ix, iy), (v, seen, looked)) in positions.iter().zip(new) {
+                // A pixel that gathered samples of its own is traced again by the final trace.
+                if lit && v.is_empty() {
+                    lit_colours.push((iy * s.width as usize + ix, seen, looked, before));
                 }
-            }
-            if lit {
-                phases.push((colours, cache.samples.len() > before));
+                cache.samples.extend(v);
             }
             if cache.samples.len() > before {
                 cache.file_new(set.error_bound);
@@ -565,16 +584,21 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
         std::fs::write(path, out).ok();
     }
     cache.rays = rays.into_inner();
-    // The phases after the last one that added samples.
-    let after = match phases.iter().rposition(|p| p.1) {
-        None => 0,
-        Some(k) => k + 1,
-    };
-    if after < phases.len() {
-        let k = after;
+    // A lit pixel's colour is the final trace's when none of the samples added from its phase
+    // on is valid where its lookups read the cache: they then saw the final cache's valid
+    // samples, in its order.
+    if fold {
+        cache.file_new(set.error_bound);
         first = vec![None; s.width as usize * s.height as usize];
-        for (colours, _) in phases.drain(k..) {
-            for (at, seen) in colours {
+        for (at, seen, looked, before) in lit_colours {
+            let unchanged = looked.iter().all(|&(p, n)| {
+                let mut valid = false;
+                cache.near(p, |i, smp| {
+                    valid |= i >= before && weight(smp, p, n, 1, set.error_bound).is_some();
+                });
+                !valid
+            });
+            if unchanged {
                 first[at] = Some(seen);
             }
         }
@@ -596,6 +620,7 @@ pub fn final_tracer<'a>(
             bound: set.error_bound,
             pretrace: false,
             probe: false,
+            record: false,
             pool: &cache.pool,
             eye: base.scene.camera.location,
         }),

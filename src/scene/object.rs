@@ -103,6 +103,8 @@ pub struct Scratch<'a> {
     /// Radiosity samples gathered while tracing the current camera sample, not yet in the
     /// shared cache (which is frozen during a pass, for determinism).
     pub rad_local: Vec<crate::render::radiosity::Sample>,
+    /// Where a camera ray's radiosity lookups read the cache: (point, normal).
+    pub rad_seen: Vec<(DVec3, DVec3)>,
     /// Photons found around the point being shaded: (squared distance, index).
     pub photon_found: Vec<(f32, u32)>,
     /// The media lists along the ray stretch being sampled (render::media).
