@@ -83,6 +83,7 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
 }
 
 pub mod algebraic;
+pub mod bernstein;
 pub mod bicubic;
 pub mod blob;
 pub mod boxes;

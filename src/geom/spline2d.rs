@@ -13,6 +13,7 @@
 //! share it. So a crossing at a shared vertex is found by exactly one of the two pieces, and
 //! even-odd counts never double or lose a vertex.
 
+use crate::geom::bernstein::BINOM;
 use crate::geom::poly::{eval, eval_with_derivative, roots_in};
 
 /// A point of a 2-D curve: (x, z) for prisms, (radius, height) for lathes.
@@ -172,23 +173,6 @@ pub fn sign_changes(c: &[f64], lo: f64, hi: f64, f_lo: f64, f_hi: f64, mut found
         fa = fb;
     }
 }
-
-/// Binomial coefficients C(k, i) up to k = 16 (exact integers), built once at compile time
-/// rather than for every polynomial tested.
-const BINOM: [[f64; 17]; 17] = {
-    let mut binom = [[0.0f64; 17]; 17];
-    let mut k = 0;
-    while k < 17 {
-        binom[k][0] = 1.0;
-        let mut i = 1;
-        while i <= k {
-            binom[k][i] = binom[k - 1][i - 1] + if i < k { binom[k - 1][i] } else { 0.0 };
-            i += 1;
-        }
-        k += 1;
-    }
-    binom
-};
 
 /// Whether the polynomial surely keeps one sign on [0, 1], ends included: its Bernstein
 /// coefficients (whose hull holds the curve) all share the sign of both end values. Most
