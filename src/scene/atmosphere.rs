@@ -18,6 +18,37 @@ pub struct FogDesc {
     pub up: DVec3,
     /// A rainbow takes its colour from its map by the ray's direction.
     pub rainbow: Option<Box<RainbowDesc>>,
+    /// `turbulence` (present even as <0,0,0>: POV-Ray stirs the fog once the keyword is
+    /// there) with its `turb_depth`, `octaves`, `omega`, `lambda` and the scene's noise
+    /// generator.
+    pub turbulence: Option<Box<FogTurbulence>>,
+}
+
+/// A fog's turbulence (render::fog::stirred).
+#[derive(Clone, Debug)]
+pub struct FogTurbulence {
+    /// Whether `turbulence` was given (the other keywords alone do nothing).
+    pub on: bool,
+    pub amount: DVec3,
+    pub depth: f64,
+    pub octaves: u32,
+    pub omega: f64,
+    pub lambda: f64,
+    pub noise_generator: u8,
+}
+
+impl Default for FogTurbulence {
+    fn default() -> Self {
+        FogTurbulence {
+            on: false,
+            amount: DVec3::ZERO,
+            depth: 0.5,
+            octaves: 6,
+            omega: 0.5,
+            lambda: 2.0,
+            noise_generator: 2,
+        }
+    }
 }
 
 impl Default for FogDesc {
@@ -30,6 +61,7 @@ impl Default for FogDesc {
             alt: 0.0,
             up: DVec3::Y,
             rainbow: None,
+            turbulence: None,
         }
     }
 }

@@ -177,6 +177,9 @@ fn build_from<O: std::borrow::Borrow<ObjectDesc>>(
                     up: f.up.normalize_or(DVec3::Y),
                     ..f.clone()
                 };
+                if let Some(tb) = &mut f.turbulence {
+                    tb.noise_generator = desc.global.noise_generator;
+                }
                 // A rainbow's direction unit and its up perpendicular to it, once per scene.
                 if let Some(rb) = &mut f.rainbow {
                     let d = rb.direction.normalize_or(DVec3::Z);

@@ -38,11 +38,20 @@ impl Parser {
                         "fog_alt" => fog.alt = self.parse_float()?,
                         "up" => fog.up = self.parse_vector()?,
                         "turbulence" => {
-                            self.unsupported("turbulence (in fog)", t.span);
-                            self.parse_vector()?;
+                            let amount = self.parse_vector()?;
+                            let tb = fog.turbulence.get_or_insert_default();
+                            (tb.on, tb.amount) = (true, amount);
                         }
                         "turb_depth" | "omega" | "lambda" | "octaves" => {
-                            self.parse_float()?;
+                            // Kept, though without `turbulence` they change nothing.
+                            let v = self.parse_float()?;
+                            let tb = fog.turbulence.get_or_insert_default();
+                            match &*k {
+                                "turb_depth" => tb.depth = v,
+                                "omega" => tb.omega = v,
+                                "lambda" => tb.lambda = v,
+                                _ => tb.octaves = v.max(1.0) as u32,
+                            }
                         }
                         other => match self.transform_item(other)? {
                             // Only the up direction turns with the fog; translation does
