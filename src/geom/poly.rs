@@ -117,6 +117,38 @@ pub fn roots_in(c: &[f64], lo: f64, hi: f64) -> Roots {
     out
 }
 
+/// The roots `isolate` reports for `d` on [lo, hi] with critical points `crit` (ascending),
+/// in order, each as its bracket (a, b, sign of d at a) written into `out`; an exact zero
+/// has a == b. Returns how many.
+fn brackets(
+    d: &[f64],
+    crit: impl Iterator<Item = f64>,
+    lo: f64,
+    hi: f64,
+    out: &mut [(f64, f64, bool); MAX_DEGREE + 2],
+) -> usize {
+    let mut m = 0;
+    let mut a = lo;
+    let mut fa = eval(d, a);
+    for b in crit.chain(std::iter::once(hi)) {
+        let fb = eval(d, b);
+        if fa == 0.0 {
+            out[m] = (a, a, false);
+            m += 1;
+        } else if (fa < 0.0) != (fb < 0.0) && fb != 0.0 {
+            out[m] = (a, b, fa < 0.0);
+            m += 1;
+        }
+        a = b;
+        fa = fb;
+    }
+    if fa == 0.0 {
+        out[m] = (a, a, false);
+        m += 1;
+    }
+    m
+}
+
 fn isolate(c: &[f64], lo: f64, hi: f64, out: &mut Roots, breakpoints: bool) {
     let n = c.len().saturating_sub(1);
     if n <= 2 {
@@ -196,24 +228,7 @@ pub fn first_root_in(
         }
         let mut crit2 = Roots::new();
         isolate(&dd[..n - 1], lo, hi, &mut crit2, true);
-        let mut a = lo;
-        let mut fa = eval(d, a);
-        for &b in crit2.iter().chain(std::iter::once(&hi)) {
-            let fb = eval(d, b);
-            if fa == 0.0 {
-                cands[m] = (a, a, false);
-                m += 1;
-            } else if (fa < 0.0) != (fb < 0.0) && fb != 0.0 {
-                cands[m] = (a, b, fa < 0.0);
-                m += 1;
-            }
-            a = b;
-            fa = fb;
-        }
-        if fa == 0.0 {
-            cands[m] = (a, a, false);
-            m += 1;
-        }
+        m = brackets(d, crit2.iter().copied(), lo, hi, &mut cands);
     }
     // `isolate`'s loop over the pieces. The critical points are deduplicated and capped as
     // `Roots::push` does when `isolate` collects them.
@@ -347,25 +362,7 @@ fn critical_in_window(d: &[f64], lo: f64, hi: f64, wlo: f64, whi: f64) -> Roots 
     // The roots `isolate` would report, in order, each as its bracket (a, b, sign at a); an
     // exact zero has a == b.
     let mut cands = [(0.0, 0.0, false); MAX_DEGREE + 2];
-    let mut m = 0;
-    let mut a = lo;
-    let mut fa = eval(d, a);
-    for &b in crit.iter().chain(std::iter::once(&hi)) {
-        let fb = eval(d, b);
-        if fa == 0.0 {
-            cands[m] = (a, a, false);
-            m += 1;
-        } else if (fa < 0.0) != (fb < 0.0) && fb != 0.0 {
-            cands[m] = (a, b, fa < 0.0);
-            m += 1;
-        }
-        a = b;
-        fa = fb;
-    }
-    if fa == 0.0 {
-        cands[m] = (a, a, false);
-        m += 1;
-    }
+    let m = brackets(d, crit.iter().copied(), lo, hi, &mut cands);
     for k in 0..m {
         if (k + 1 < m && cands[k + 1].1 < wlo) || (k > 0 && cands[k - 1].0 > whi) {
             continue;
