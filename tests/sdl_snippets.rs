@@ -158,13 +158,13 @@ fn unsupported_keyword_warns_with_place() {
     let mut p = Parser::new(ParseOptions::default());
     p.parse_str(
         "w.pov",
-        "fog { distance 3 rgb 1 turbulence 0.5 }\nsphere { 0, 1 pigment { tiling 3 } }",
+        "sphere { 0, 1 finish { subsurface { translucency 0.5 } } }\nsphere { 0, 1 pigment { tiling 3 } }",
     )
     .unwrap();
     let msgs: Vec<String> = p.warnings.iter().map(|w| w.one_line(&p.sources)).collect();
     assert!(
         msgs.iter()
-            .any(|m| m.starts_with("w.pov:1:") && m.contains("turbulence")),
+            .any(|m| m.starts_with("w.pov:1:") && m.contains("subsurface")),
         "{msgs:?}"
     );
     assert!(
