@@ -78,19 +78,7 @@ pub(crate) fn surely_no_root(c: &[f64], lo: f64, hi: f64) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn from_roots(roots: &[f64]) -> Vec<f64> {
-        let mut c = vec![1.0];
-        for &r in roots {
-            let mut n = vec![0.0; c.len() + 1];
-            for (i, &ci) in c.iter().enumerate() {
-                n[i + 1] += ci;
-                n[i] -= r * ci;
-            }
-            c = n;
-        }
-        c
-    }
+    use crate::geom::test_rng::from_roots;
 
     /// `roots_in` with the shortcut off: the roots `isolate` finds.
     fn roots_in_no_shortcut(c: &[f64], lo: f64, hi: f64) -> Vec<f64> {

@@ -111,7 +111,8 @@ pub mod text;
 pub mod torus;
 pub mod triangle;
 
-/// A small deterministic generator for the geometry tests, so they need no extra crates.
+/// Helpers for the geometry tests: a small deterministic generator (no extra crates) and
+/// polynomials built from their roots.
 #[cfg(test)]
 pub(crate) mod test_rng {
     use crate::math::DVec3;
@@ -129,5 +130,19 @@ pub(crate) mod test_rng {
         pub fn vec(&mut self, s: f64) -> DVec3 {
             DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * s
         }
+    }
+
+    /// Expands `prod (x - r_i)` into ascending coefficients.
+    pub fn from_roots(roots: &[f64]) -> Vec<f64> {
+        let mut c = vec![1.0];
+        for &r in roots {
+            let mut n = vec![0.0; c.len() + 1];
+            for (i, &ci) in c.iter().enumerate() {
+                n[i + 1] += ci;
+                n[i] -= r * ci;
+            }
+            c = n;
+        }
+        c
     }
 }

@@ -563,20 +563,7 @@ fn numerically_zero(c: &[f64], x: f64) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// Expands `prod (x - r_i)` into ascending coefficients.
-    fn from_roots(roots: &[f64]) -> Vec<f64> {
-        let mut c = vec![1.0];
-        for &r in roots {
-            let mut n = vec![0.0; c.len() + 1];
-            for (i, &ci) in c.iter().enumerate() {
-                n[i + 1] += ci;
-                n[i] -= r * ci;
-            }
-            c = n;
-        }
-        c
-    }
+    use crate::geom::test_rng::from_roots;
 
     fn check(found: &[f64], want: &[f64], tol: f64) {
         assert_eq!(found.len(), want.len(), "found {found:?} want {want:?}");
