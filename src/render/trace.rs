@@ -394,16 +394,17 @@ impl<'a> Tracer<'a> {
         };
         if !s.sky.is_empty() {
             let d = dir.normalize_or_zero();
-            let below = seen.rgb;
-            let mut filtered = false;
+            let mut legacy = LegacySky::new(seen.rgb);
             for layer in &s.sky {
                 let c = pigment::eval(layer, d);
-                filtered |= c.filter > 0.0;
+                if s.legacy_sky_filter {
+                    legacy.add(&c);
+                }
                 seen.rgb = c.rgb * c.opacity() + seen.rgb * c.transmitted();
                 seen.clear *= c.filter * grey(c.rgb) + c.transmit;
             }
-            if filtered && s.legacy_sky_filter {
-                seen.rgb = legacy_sky(&s.sky, d, below);
+            if let Some(rgb) = legacy.filtered_rgb() {
+                seen.rgb = rgb;
             }
         }
         seen
@@ -854,22 +855,49 @@ pub(super) fn grain(seed: u32, light: u32) -> f64 {
     (h >> 8) as f64 / (1u32 << 24) as f64
 }
 
-/// A sky_sphere's layers over `below` (the background) as POV-Ray composes them before
-/// `#version 3.7` when some layer filters (measured, probe sky_sphere_filter_36): from the top
-/// down, each layer's own colour is let through by the products of the filters and of the
-/// transmits of the layers above, added and untinted (Πf + Πt); the background is let through
-/// by Π(f·colour) + Πt. From 3.7 on, each layer lets f·colour + t of everything below through.
-fn legacy_sky(sky: &[crate::scene::desc::Pigment], d: DVec3, below: DVec3) -> DVec3 {
-    let mut rgb = DVec3::ZERO;
-    let (mut pf, mut pt, mut tint) = (1.0, 1.0, DVec3::ONE);
-    let mut through = 1.0;
-    for layer in sky.iter().rev() {
-        let c = pigment::eval(layer, d);
-        rgb += c.rgb * c.opacity() * through;
-        pf *= c.filter;
-        pt *= c.transmit;
-        tint *= c.filter * c.rgb;
-        through = pf + pt;
+/// A sky_sphere's layers over the background as POV-Ray composes them before `#version 3.7`
+/// when some layer filters (measured, probe sky_sphere_filter_36): each layer's own colour
+/// (rgb·(1 − f − t)) reaches the eye times Πf + Πt over the layers above it (untinted; the top
+/// layer's times 1), the background times Π(f·rgb) + Πt over all layers. From 3.7 on, each
+/// layer lets f·rgb + t of everything below it through. Fed bottom layer first: `filtered`
+/// sums the layers below the current top weighted by the products of their filters above
+/// them, `transmitted` likewise by the transmits, so each layer is evaluated once.
+struct LegacySky {
+    background: DVec3,
+    top: DVec3,
+    filtered: DVec3,
+    transmitted: DVec3,
+    tint: DVec3,
+    transmit: f64,
+    any_filter: bool,
+}
+
+impl LegacySky {
+    fn new(background: DVec3) -> Self {
+        LegacySky {
+            background,
+            top: DVec3::ZERO,
+            filtered: DVec3::ZERO,
+            transmitted: DVec3::ZERO,
+            tint: DVec3::ONE,
+            transmit: 1.0,
+            any_filter: false,
+        }
     }
-    rgb + below * (tint + DVec3::splat(pt))
+
+    fn add(&mut self, c: &Rgbft) {
+        let own = c.rgb * c.opacity();
+        self.top = own + self.filtered * c.filter + self.transmitted * c.transmit;
+        self.filtered = own + self.filtered * c.filter;
+        self.transmitted = own + self.transmitted * c.transmit;
+        self.tint *= c.filter * c.rgb;
+        self.transmit *= c.transmit;
+        self.any_filter |= c.filter > 0.0;
+    }
+
+    /// The composed colour, when some layer filtered (otherwise the 3.7 rule gives the same).
+    fn filtered_rgb(&self) -> Option<DVec3> {
+        self.any_filter
+            .then(|| self.top + self.background * (self.tint + DVec3::splat(self.transmit)))
+    }
 }
