@@ -300,7 +300,7 @@ impl<'a> Tracer<'a> {
                 if let Some(int) = h.obj.interior.as_deref().filter(|i| i.caustics > 0.0) {
                     let n = h.obj.normal(hp, h);
                     let n = if n.dot(l) > 0.0 { -n } else { n };
-                    att *= int.caustic_gain(caustic_normal(top, hp, n).dot(l));
+                    att *= int.caustic_gain(caustic_normal(top, hp, uv, n).dot(l));
                 }
             }
             // Fading interiors and media dim the light over each stretch the ray spends
@@ -335,11 +335,28 @@ impl<'a> Tracer<'a> {
     }
 }
 
-/// The normal fake caustics are computed with: the surface's, perturbed by the top layer's
-/// own normal where it has one (POV-Ray's `caustics` light up where bumps face the light).
-fn caustic_normal(top: &crate::scene::desc::Texture, p: DVec3, n: DVec3) -> DVec3 {
-    match top.layers().next().and_then(|l| l.normal.as_deref()) {
-        Some(nd) if super::normal::perturbs(Some(nd)) => super::normal::perturb(nd, p, n),
-        _ => n,
+/// The normal fake caustics are computed with: the surface's, perturbed by the first normal
+/// pattern of the texture at the point (through layers, texture maps and lists), the one
+/// that decides refraction in `shade` (POV-Ray's `caustics` light up where bumps face the
+/// light).
+fn caustic_normal(
+    top: &crate::scene::desc::Texture,
+    p: DVec3,
+    uv: Option<DVec3>,
+    n: DVec3,
+) -> DVec3 {
+    let mut pn = None;
+    for layer in top.layers() {
+        texture_map::blend(layer, p, uv, false, 1.0, &mut |_, part, space, _| {
+            if pn.is_none() && super::normal::perturbs(part.normal.as_deref()) {
+                if let Some(nd) = part.normal.as_deref() {
+                    pn = Some(super::normal::perturb_in(nd, space, p, n));
+                }
+            }
+        });
+        if pn.is_some() {
+            break;
+        }
     }
+    pn.unwrap_or(n)
 }
