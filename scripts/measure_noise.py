@@ -409,18 +409,29 @@ MARBLE = [
 ]
 
 
+def probe_group(lines, pre, exprs):
+    """Appends a probe group: a 'P' line with the declarations `pre`, then each expression
+    with the value povray prints for it."""
+    vals = evalpov(exprs, pre)
+    lines.append("P " + pre.replace("\n", " ").strip())
+    lines.extend(f"{e}\t{v!r}" for e, v in zip(exprs, vals))
+
+
+def probe_points(rng, n, r):
+    """n random points in the cube of half-size r, rounded to 6 decimals."""
+    return [tuple(round(rng.uniform(-r, r), 6) for _ in range(3)) for _ in range(n)]
+
+
 def write_probes(path, rng):
     lines = ["# (point, value) pairs printed by povray 3.7 at points not used to fit lancer's",
              "# noise; written by scripts/measure_noise.py. 'P' lines declare; others are",
              "# <expression>\t<value>."]
 
     def group(pre, exprs):
-        vals = evalpov(exprs, pre)
-        lines.append("P " + pre.replace("\n", " ").strip())
-        lines.extend(f"{e}\t{v!r}" for e, v in zip(exprs, vals))
+        probe_group(lines, pre, exprs)
 
     def pts(n, r):
-        return [tuple(round(rng.uniform(-r, r), 6) for _ in range(3)) for _ in range(n)]
+        return probe_points(rng, n, r)
 
     for pre, tmpl, n, r in PROBE_GROUPS:
         group(pre, [tmpl.format(x=x, y=y, z=z) for x, y, z in pts(n, r)])

@@ -23,7 +23,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from measure_noise import ROOT, evalpov, fmt  # noqa: E402
+from measure_noise import ROOT, evalpov, fmt, probe_group, probe_points  # noqa: E402
 
 N = 2048  # generator 3's lattice hash works on 11-bit coordinates
 PROBE_MARK = "# --- generator 3 (scripts/measure_noise3.py) ---"
@@ -249,12 +249,10 @@ def probe_lines(rng):
     lines = [PROBE_MARK]
 
     def group(pre, exprs):
-        vals = evalpov(exprs, pre)
-        lines.append("P " + pre.replace("\n", " ").strip())
-        lines.extend(f"{e}\t{v!r}" for e, v in zip(exprs, vals))
+        probe_group(lines, pre, exprs)
 
     def pts(n, r):
-        return [tuple(round(rng.uniform(-r, r), 6) for _ in range(3)) for _ in range(n)]
+        return probe_points(rng, n, r)
 
     for tmpl, n, r in PROBE_GROUPS:
         group("", [tmpl.format(x=x, y=y, z=z) for x, y, z in pts(n, r)])
