@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # CPU seconds of a few sample scenes: two lancer binaries (whole process, `perf stat -e
 # task-clock`, best of REPS, writing PPM so PNG compression is not counted) beside POV-Ray (the
-# CPU-seconds its Parse, Bounding and Trace phases report, best of REPS). 320x240, no AA, one
+# CPU-seconds its Parse, Bounding, Photon, Radiosity and Trace phases report, best of REPS). 320x240, no AA, one
 # thread each. For a shared machine, where wall time says more about the load than about either
 # renderer. A benchmark, not a test. Prints a markdown table.
 #
@@ -36,12 +36,12 @@ lancer_ms() { # binary scene-path
     grep task-clock "$tmp/stat" | cut -d, -f1
   done | sort -g | head -1 | awk '{printf "%.0f", $1}'
 }
-pov_ms() { # scene-path: POV-Ray's Parse + Bounding + Trace CPU-seconds, in ms
+pov_ms() { # scene-path: POV-Ray's Parse + Bounding + Photon + Radiosity + Trace CPU-seconds, in ms
   local dir
   dir=$(dirname "$1")
   for _ in $(seq "$reps"); do
     (cd "$dir" && povray -D -V +FN8 -A +W320 +H240 +WT1 "+L$dir" "+L$inc" "+I$1" "+O$tmp/p.png" 2>&1) |
-      grep -A1 -E "^ *(Parse|Bounding|Trace) Time:" | grep -oE "with [0-9.]+ CPU-seconds" |
+      grep -A1 -E "^ *(Parse|Bounding|Photon|Radiosity|Trace) Time:" | grep -oE "with [0-9.]+ CPU-seconds" |
       awk '{s += $2} END {printf "%.0f\n", s * 1000}'
   done | sort -g | head -1
 }

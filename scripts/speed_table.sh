@@ -5,7 +5,8 @@
 # 1. Every sample scene lancer renders at SSIM >= 0.95 (from $SPEED_TSV, else
 #    docs/conformance.tsv), 320x240, no AA (-A), one thread each side (+WT1), best of
 #    REPS: lancer's own phases (parse + build + render from its statistics line; not the
-#    writing of the file) against POV-Ray's Parse + Bounding + Trace times from its statistics.
+#    writing of the file) against POV-Ray's Parse + Bounding + Photon + Radiosity + Trace times from its
+#    statistics (the photon and radiosity phases are the same work lancer does in its render).
 #    Per-scene ratio lancer/povray and the geometric mean over scenes where POV-Ray works at
 #    least 0.05 s. With -b, a second lancer binary (e.g. main before a change) gets a column.
 # 2. 10,000 spheres in one union against the same spheres outside any union.
@@ -16,7 +17,7 @@
 # usage: scripts/speed_table.sh [-c] [-n lancer] [-b other_lancer] [-r reps] [-s only_scene ...]
 #   -n: the lancer binary measured (default target/release/lancer)
 #   -c: CPU seconds instead of wall-clock phases, for a shared machine: POV-Ray's
-#       "CPU-seconds total" of Parse, Bounding and Trace against lancer's whole process
+#       "CPU-seconds total" of Parse, Bounding, Photon, Radiosity and Trace against lancer's whole process
 #       (user + system, from /usr/bin/time) writing a PPM file (+FP), whose writing costs
 #       next to nothing (a PNG's compression does: 10-20 ms at 320x240), so it is parse, build
 #       and render plus start-up (subtracting the write phase's wall time does not work under
@@ -56,9 +57,9 @@ chmod -R u+w "$tmp/samples"
 pov_work() {
   if [ "$cpu" = 1 ]; then
     # The "using 1 thread(s) with X CPU-seconds total" line after each phase's time.
-    grep -A1 -E "^ *(Parse|Bounding|Trace) Time:" | grep -oE "with [0-9.]+ CPU-seconds" | awk '{s += $2} END {printf "%.3f", s}'
+    grep -A1 -E "^ *(Parse|Bounding|Photon|Radiosity|Trace) Time:" | grep -oE "with [0-9.]+ CPU-seconds" | awk '{s += $2} END {printf "%.3f", s}'
   else
-    grep -E "^ *(Parse|Bounding|Trace) Time:" | grep -oE "\([0-9.]+ seconds\)" | tr -d '(' | awk '{s += $1} END {printf "%.3f", s}'
+    grep -E "^ *(Parse|Bounding|Photon|Radiosity|Trace) Time:" | grep -oE "\([0-9.]+ seconds\)" | tr -d '(' | awk '{s += $1} END {printf "%.3f", s}'
   fi
 }
 lancer_work() { grep -oE "(parse|build|render) [0-9.]+s" | awk '{s += $2} END {printf "%.3f", s}'; }
