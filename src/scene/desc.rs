@@ -467,7 +467,7 @@ pub struct MeshData {
     pub vertices: Vec<DVec3>,
     /// Per-vertex normals for smooth triangles; empty when the mesh is flat.
     pub normals: Vec<DVec3>,
-    pub triangles: Vec<MeshTriangle>,
+    pub triangles: Triangles,
     /// Texture coordinates (`uv_vectors`) for uv_mapping.
     pub uvs: Vec<[f64; 2]>,
     /// Textures named inside the mesh per triangle (index into this list).
@@ -477,15 +477,7 @@ pub struct MeshData {
     pub inside_vector: Option<DVec3>,
 }
 
-#[derive(Clone, Copy, Debug)]
-pub struct MeshTriangle {
-    pub v: [u32; 3],
-    /// Indices into `MeshData::normals` for a smooth triangle.
-    pub n: Option<[u32; 3]>,
-    pub texture: Option<u32>,
-    /// Indices into `MeshData::uvs`, when the triangle has texture coordinates.
-    pub uv: Option<[u32; 3]>,
-}
+pub use super::mesh_triangles::{MeshTriangle, Triangles};
 
 #[derive(Clone, Debug)]
 pub struct Texture {

@@ -94,7 +94,7 @@ impl MeshCamera {
         let mut uv_faces = Vec::new();
         if d.distribution == 3 {
             if let Some((m, t)) = d.meshes.first() {
-                for tri in &m.triangles {
+                for tri in m.triangles.iter() {
                     let Some(uvi) = tri.uv else { continue };
                     let p = corners(m, t, tri.v);
                     let geo = face_normal(&p);
@@ -261,7 +261,8 @@ mod tests {
                     texture: None,
                     uv: Some([2, 3, 1]),
                 },
-            ],
+            ]
+            .into(),
             uvs: vec![[0.0, 0.0], [0.5, 1.0], [0.5, 0.0], [1.0, 0.0]],
             textures: Vec::new(),
             inside_vector: None,

@@ -14,6 +14,7 @@ pub mod light;
 pub mod light_group;
 pub mod media;
 pub mod mesh_camera;
+pub mod mesh_triangles;
 pub mod object;
 pub mod pattern;
 pub mod photon;

@@ -21,6 +21,8 @@ pub enum Tok {
     /// `#name`, without the hash.
     Directive(std::rc::Rc<str>),
     Sym(Sym),
+    /// The entries of a literal mesh2 list, between its braces (`super::bulk`).
+    Bulk(std::rc::Rc<super::bulk::Bulk>),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -91,6 +93,7 @@ impl std::fmt::Display for Tok {
             Tok::Ident(s) => write!(f, "'{s}'"),
             Tok::Directive(s) => write!(f, "'#{s}'"),
             Tok::Sym(s) => write!(f, "'{}'", s.text()),
+            Tok::Bulk(b) => write!(f, "a list of {} entries", b.vectors.len()),
         }
     }
 }
@@ -157,15 +160,48 @@ pub fn lex(text: &str, file: u32) -> Result<Vec<Token>, LexError> {
             t => t,
         };
         let end = text.len() - next.len();
+        let bulk_kind = match &tok {
+            Tok::Ident(name) => super::bulk::list_kind(name),
+            _ => None,
+        };
+        let span = |start: usize, end: usize| Span {
+            file,
+            start: start as u32,
+            end: end as u32,
+        };
         out.push(Token {
             tok,
-            span: Span {
-                file,
-                start: start as u32,
-                end: end as u32,
-            },
+            span: span(start, end),
         });
         rest = next;
+        if let Some(kind) = bulk_kind {
+            let Ok(at_brace) = skip_trivia(rest, text.len()) else {
+                continue;
+            };
+            let Some(inner) = at_brace.strip_prefix('{') else {
+                continue;
+            };
+            if let Some((bulk, close)) = super::bulk::scan(inner, kind) {
+                let open = text.len() - at_brace.len();
+                out.push(Token {
+                    tok: Tok::Sym(Sym::LBrace),
+                    span: span(open, open + 1),
+                });
+                out.push(Token {
+                    tok: Tok::Bulk(bulk.into()),
+                    span: span(open + 1, text.len() - close.len()),
+                });
+                rest = close;
+            }
+        }
+    }
+}
+
+/// A number literal at the start of `s` as the lexer reads it, and the text after it.
+pub(super) fn number_value(s: &str) -> Option<(f64, &str)> {
+    match number(s) {
+        Ok((rest, Tok::Num(v))) => Some((v, rest)),
+        _ => None,
     }
 }
 

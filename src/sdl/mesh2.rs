@@ -1,11 +1,13 @@
 //! Reading `mesh2 { vertex_vectors normal_vectors uv_vectors texture_list face_indices
 //! normal_indices uv_indices }` into the same triangle data as `mesh`.
 
+use std::rc::Rc;
 use std::sync::Arc;
 
 use crate::math::DVec3;
 use crate::scene::desc::{MeshData, MeshTriangle, ObjectDesc, ShapeDesc};
 
+use super::bulk::Bulk;
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
 use super::source::Span;
@@ -117,9 +119,25 @@ impl Parser {
         self.finish_object(ObjectDesc::new(ShapeDesc::Mesh(Arc::new(data))), open)
     }
 
+    /// The entries of a list the lexer stored in bulk (`super::bulk`), with its closing brace.
+    fn bulk_list(&mut self, what: &str) -> PResult<Option<Rc<Bulk>>> {
+        let Some(Tok::Bulk(b)) = self.peek()?.map(|t| t.tok) else {
+            return Ok(None);
+        };
+        self.advance();
+        let n = b.vectors.len();
+        self.expect_sym_with(Sym::RBrace, || {
+            format!("to close {what} (after {n} entries)")
+        })?;
+        Ok(Some(b))
+    }
+
     /// `{ N, <v>, <v>, ... }`.
     fn vector_list(&mut self, what: &str) -> PResult<Vec<DVec3>> {
         self.open_brace(what)?;
+        if let Some(b) = self.bulk_list(what)? {
+            return Ok(b.vectors.iter().map(|&v| DVec3::from_array(v)).collect());
+        }
         let n = self.parse_float()?.max(0.0) as usize;
         let mut v = Vec::with_capacity(n.min(1 << 20));
         for _ in 0..n {
@@ -137,12 +155,26 @@ impl Parser {
     /// three per-vertex textures the first is used (POV-Ray blends them).
     fn index_list(&mut self, what: &str, textures: bool) -> PResult<Vec<([u32; 3], Option<u32>)>> {
         self.open_brace(what)?;
+        let idx = |x: f64| x.max(0.0) as u32;
+        if let Some(b) = self.bulk_list(what)? {
+            let tex = |i: usize| {
+                b.first_texture
+                    .get(i)
+                    .filter(|t| !t.is_nan())
+                    .map(|&t| idx(t))
+            };
+            return Ok(b
+                .vectors
+                .iter()
+                .enumerate()
+                .map(|(i, v)| ([idx(v[0]), idx(v[1]), idx(v[2])], tex(i)))
+                .collect());
+        }
         let n = self.parse_float()?.max(0.0) as usize;
         let mut out = Vec::with_capacity(n.min(1 << 20));
         for _ in 0..n {
             self.skip_optional_comma()?;
             let v = self.parse_vector()?;
-            let idx = |x: f64| x.max(0.0) as u32;
             let mut tex = None;
             if textures {
                 let mut given = Vec::new();
@@ -168,5 +200,49 @@ impl Parser {
             format!("to close {what} (after {n} entries)")
         })?;
         Ok(out)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::scene::desc::{MeshData, ShapeDesc};
+    use crate::sdl::parser::{ParseOptions, Parser};
+
+    fn mesh(text: &str) -> MeshData {
+        let mut p = Parser::new(ParseOptions::default());
+        p.parse_str("t.pov", text).unwrap();
+        match &p.scene.objects[0].shape {
+            ShapeDesc::Mesh(m) => (**m).clone(),
+            _ => panic!("not a mesh"),
+        }
+    }
+
+    /// A literal list stored in bulk by the lexer reads as the same mesh as the same entries
+    /// read by expressions (forced here by a `+0` in the first entry of each list).
+    #[test]
+    fn bulk_lists_read_as_expressions_do() {
+        let lists = |z: &str| {
+            format!(
+                "mesh2 {{ vertex_vectors {{ 4, <0,0,0{z}>, <1,0,-0>, <1,1,.5>, <0,1,-2.5e-1> }}
+                 normal_vectors {{ 2, <0,0,-1{z}>, <0,1,-1> }}
+                 uv_vectors {{ 3, <0,0{z}>, <1,0>, <0.5,1> }}
+                 texture_list {{ 2, texture {{ pigment {{ rgb 1 }} }} texture {{ pigment {{ rgb 0 }} }} }}
+                 face_indices {{ 3, <0,1,2{z}>, 1, <0,2,3>, <1,2,3>, 0, 1, 1 }}
+                 normal_indices {{ 3, <0,1,1{z}>, <1,1,0>, <0,0,0> }}
+                 uv_indices {{ 3, <0,1,2{z}>, <2,1,0>, <0,0,1>, }} }}"
+            )
+        };
+        let (a, b) = (mesh(&lists("")), mesh(&lists("+0")));
+        assert_eq!(a.vertices, b.vertices);
+        assert_eq!(a.normals, b.normals);
+        assert_eq!(a.uvs, b.uvs);
+        let (ta, tb): (Vec<_>, Vec<_>) =
+            (a.triangles.iter().collect(), b.triangles.iter().collect());
+        assert_eq!(ta, tb);
+        assert_eq!(ta[0].texture, Some(1));
+        assert_eq!(ta[1].texture, None);
+        assert_eq!(ta[2].texture, Some(0));
+        assert_eq!(ta[1].n, Some([1, 1, 0]));
+        assert_eq!(ta[2].uv, Some([0, 0, 1]));
     }
 }

@@ -5,6 +5,7 @@ pub mod algebraic;
 pub mod array;
 pub mod atmosphere;
 pub mod builtins_math;
+pub mod bulk;
 pub mod byref;
 pub mod camera;
 pub mod deprecated;

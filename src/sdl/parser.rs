@@ -619,7 +619,7 @@ impl Parser {
         // known to be plain need no directive or macro handling.
         if let Some(t) = self.current_token() {
             let plain = match &t.tok {
-                Tok::Num(_) | Tok::Sym(_) | Tok::Str(_) => true,
+                Tok::Num(_) | Tok::Sym(_) | Tok::Str(_) | Tok::Bulk(_) => true,
                 Tok::Ident(_) => self.plain_ident_at == Some(self.position_key()),
                 Tok::Directive(_) => false,
             };
