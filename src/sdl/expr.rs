@@ -47,7 +47,7 @@ impl Parser {
     }
 
     fn parse_conditional(&mut self) -> PResult<Value> {
-        let c = self.parse_or()?;
+        let c = self.parse_binary(1)?;
         if self.rel_ok && self.raw_peek_sym()? == Some(Sym::Question) {
             self.advance();
             let span = self.cur_span();
@@ -86,115 +86,80 @@ impl Parser {
         })
     }
 
-    fn parse_or(&mut self) -> PResult<Value> {
-        let mut a = self.parse_and()?;
-        while self.rel_ok && self.raw_peek_sym()? == Some(Sym::Or) {
-            self.advance();
-            let span = self.cur_span();
-            let b = self.parse_and()?;
-            a = self.arith(a, b, span, |x, y| ((x != 0.0) || (y != 0.0)) as u8 as f64)?;
-        }
-        Ok(a)
-    }
-
-    fn parse_and(&mut self) -> PResult<Value> {
-        let mut a = self.parse_rel()?;
-        while self.rel_ok && self.raw_peek_sym()? == Some(Sym::And) {
-            self.advance();
-            let span = self.cur_span();
-            let b = self.parse_rel()?;
-            a = self.arith(a, b, span, |x, y| ((x != 0.0) && (y != 0.0)) as u8 as f64)?;
-        }
-        Ok(a)
-    }
-
-    fn parse_rel(&mut self) -> PResult<Value> {
-        let mut a = self.parse_add()?;
-        // POV-Ray reads comparisons, `&`, `|` and `? :` only inside parentheses, so that
-        // `box { <0,0,0> <1,1,1> }` is two vectors rather than a comparison.
-        if !self.rel_ok {
-            return Ok(a);
-        }
-        loop {
-            let op = match self.raw_peek_sym()? {
-                Some(s @ (Sym::Lt | Sym::Le | Sym::Eq | Sym::Ne | Sym::Ge)) => s,
-                Some(Sym::Gt) => Sym::Gt,
-                _ => return Ok(a),
-            };
-            self.advance();
-            let span = self.cur_span();
-            let b = self.parse_add()?;
-            if let (Value::Str(x), Value::Str(y)) = (&a, &b) {
-                let o = x.cmp(y);
-                let r = match op {
-                    Sym::Lt => o.is_lt(),
-                    Sym::Le => o.is_le(),
-                    Sym::Eq => o.is_eq(),
-                    Sym::Ne => o.is_ne(),
-                    Sym::Ge => o.is_ge(),
-                    _ => o.is_gt(),
-                };
-                a = Value::Float(r as u8 as f64);
-                continue;
-            }
-            let f = move |x: f64, y: f64| {
-                (match op {
-                    Sym::Lt => x < y,
-                    Sym::Le => x <= y,
-                    Sym::Eq => x == y,
-                    Sym::Ne => x != y,
-                    Sym::Ge => x >= y,
-                    _ => x > y,
-                }) as u8 as f64
-            };
-            a = self.arith(a, b, span, f)?;
-        }
-    }
-
-    fn parse_add(&mut self) -> PResult<Value> {
-        let mut a = self.parse_mul()?;
-        loop {
-            let op = self.raw_peek_sym()?;
-            if !matches!(op, Some(Sym::Plus) | Some(Sym::Minus)) {
-                return Ok(a);
-            }
-            self.advance();
-            let span = self.cur_span();
-            let b = self.parse_mul()?;
-            a = if op == Some(Sym::Plus) {
-                self.arith(a, b, span, |x, y| x + y)?
-            } else {
-                self.arith(a, b, span, |x, y| x - y)?
-            };
-        }
-    }
-
-    fn parse_mul(&mut self) -> PResult<Value> {
+    /// Binary operators by precedence climbing: `|` < `&` < comparisons < `+ -` < `* /`, all
+    /// left-associative. One loop instead of a function per level keeps the value of a plain
+    /// operand from being returned through five levels (a million-iteration `#while` parses
+    /// millions of operands). POV-Ray reads comparisons, `&` and `|` only inside parentheses
+    /// (`rel_ok`), so that `box { <0,0,0> <1,1,1> }` is two vectors rather than a comparison.
+    fn parse_binary(&mut self, min: u8) -> PResult<Value> {
         let mut a = self.parse_unary()?;
         loop {
-            let op = self.raw_peek_sym()?;
-            if !matches!(op, Some(Sym::Star) | Some(Sym::Slash)) {
+            let Some(op) = self.raw_peek_sym()? else {
+                return Ok(a);
+            };
+            let prec = match op {
+                Sym::Star | Sym::Slash => 5,
+                Sym::Plus | Sym::Minus => 4,
+                _ if !self.rel_ok => return Ok(a),
+                Sym::Lt | Sym::Le | Sym::Eq | Sym::Ne | Sym::Ge | Sym::Gt => 3,
+                Sym::And => 2,
+                Sym::Or => 1,
+                _ => return Ok(a),
+            };
+            if prec < min {
                 return Ok(a);
             }
             self.advance();
             let span = self.cur_span();
-            let b = self.parse_unary()?;
-            a = if op == Some(Sym::Star) {
-                self.arith(a, b, span, |x, y| x * y)?
-            } else {
-                // POV-Ray divides by zero with a warning and a huge result; keep it finite.
-                self.arith(a, b, span, |x, y| {
-                    if y == 0.0 {
-                        if x == 0.0 {
-                            0.0
-                        } else {
-                            x.signum() * 1e10
-                        }
+            let b = self.parse_binary(prec + 1)?;
+            a = self.binary(op, a, b, span)?;
+        }
+    }
+
+    fn binary(&mut self, op: Sym, a: Value, b: Value, span: Span) -> PResult<Value> {
+        match op {
+            Sym::Star => self.arith(a, b, span, |x, y| x * y),
+            // POV-Ray divides by zero with a warning and a huge result; keep it finite.
+            Sym::Slash => self.arith(a, b, span, |x, y| {
+                if y == 0.0 {
+                    if x == 0.0 {
+                        0.0
                     } else {
-                        x / y
+                        x.signum() * 1e10
                     }
-                })?
-            };
+                } else {
+                    x / y
+                }
+            }),
+            Sym::Plus => self.arith(a, b, span, |x, y| x + y),
+            Sym::Minus => self.arith(a, b, span, |x, y| x - y),
+            Sym::And => self.arith(a, b, span, |x, y| ((x != 0.0) && (y != 0.0)) as u8 as f64),
+            Sym::Or => self.arith(a, b, span, |x, y| ((x != 0.0) || (y != 0.0)) as u8 as f64),
+            _ => {
+                if let (Value::Str(x), Value::Str(y)) = (&a, &b) {
+                    let o = x.cmp(y);
+                    let r = match op {
+                        Sym::Lt => o.is_lt(),
+                        Sym::Le => o.is_le(),
+                        Sym::Eq => o.is_eq(),
+                        Sym::Ne => o.is_ne(),
+                        Sym::Ge => o.is_ge(),
+                        _ => o.is_gt(),
+                    };
+                    return Ok(Value::Float(r as u8 as f64));
+                }
+                let f = move |x: f64, y: f64| {
+                    (match op {
+                        Sym::Lt => x < y,
+                        Sym::Le => x <= y,
+                        Sym::Eq => x == y,
+                        Sym::Ne => x != y,
+                        Sym::Ge => x >= y,
+                        _ => x > y,
+                    }) as u8 as f64
+                };
+                self.arith(a, b, span, f)
+            }
         }
     }
 

@@ -165,7 +165,7 @@ pub struct Parser {
     deferred: RefCell<HashMap<Rc<str>, Vec<Diagnostic>>>,
     /// Deferred warnings whose identifier has been used, waiting to join `warnings`.
     released: RefCell<Vec<Diagnostic>>,
-    /// Inside `( )`, where comparisons, logic and `? :` are read (see `parse_rel`).
+    /// Inside `( )`, where comparisons, logic and `? :` are read (see `parse_binary`).
     pub(super) rel_ok: bool,
     last_span: Span,
     /// States of the random streams `seed()` made, indexed by what it returned.
