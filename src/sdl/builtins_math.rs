@@ -112,6 +112,19 @@ const NAMES: &[&str] = &[
     "vturbulence",
 ];
 
+/// A built-in call's arguments with their spans; up to four without a heap allocation (a
+/// loop calling `mod(I, 100)` a million times allocated and freed a `Vec` for each).
+pub(super) type Args = smallvec::SmallVec<[(Value, Span); 4]>;
+
+/// Whether `name` is one of `NAMES`: one hash and one comparison, where a binary search made
+/// half a dozen string comparisons for every `mod(I, 100)` of a loop.
+pub(super) fn is_math_builtin(name: &str) -> bool {
+    static SET: std::sync::OnceLock<rustc_hash::FxHashSet<&'static str>> =
+        std::sync::OnceLock::new();
+    SET.get_or_init(|| NAMES.iter().copied().collect())
+        .contains(name)
+}
+
 impl Parser {
     /// The built-in float identifiers: constants and the animation variables.
     pub(super) fn builtin_float_ident(&self, name: &str) -> Option<f64> {
@@ -140,11 +153,11 @@ impl Parser {
     }
 
     /// Arguments of a built-in call, after its name: `( expr, expr, ... )`.
-    pub(super) fn call_args(&mut self, name: &str) -> PResult<Vec<(Value, Span)>> {
+    pub(super) fn call_args(&mut self, name: &str) -> PResult<Args> {
         // The error context is formatted only on an error: this runs for every `mod(I, 100)`
         // of a million-iteration loop.
         self.expect_sym_with(Sym::LParen, || format!("after the function name {name}"))?;
-        let mut args = Vec::new();
+        let mut args = Args::new();
         if self.eat_sym(Sym::RParen)? {
             return Ok(args);
         }
@@ -160,7 +173,7 @@ impl Parser {
 
     /// A maths built-in call, or `None` when `name` is not one of them.
     pub(super) fn math_builtin(&mut self, name: &str, span: Span) -> Option<PResult<Value>> {
-        if NAMES.binary_search(&name).is_err() {
+        if !is_math_builtin(name) {
             return None;
         }
         Some(if name == "trace" {
@@ -521,8 +534,80 @@ mod tests {
     use super::*;
 
     #[test]
-    fn builtin_names_are_sorted_for_binary_search() {
+    fn builtin_names_are_sorted_and_found() {
         assert!(NAMES.windows(2).all(|w| w[0] < w[1]));
+        assert!(NAMES.iter().all(|n| is_math_builtin(n)));
+        assert!(!is_math_builtin("sphere") && !is_math_builtin("Mod"));
+    }
+
+    /// `parse_ident_value` tries the maths built-ins before the other built-in identifiers
+    /// (string functions, constants, `x`, `rgb`, ...), which is right only while no name is
+    /// both.
+    #[test]
+    fn maths_names_are_no_other_builtin_identifier() {
+        let others = [
+            "dimensions",
+            "dimension_size",
+            "defined",
+            "str",
+            "vstr",
+            "substr",
+            "strupr",
+            "strlwr",
+            "strlen",
+            "str_len",
+            "strcmp",
+            "val",
+            "asc",
+            "chr",
+            "concat",
+            "file_exists",
+            "input_file_name",
+            "datetime",
+            "pi",
+            "tau",
+            "true",
+            "on",
+            "yes",
+            "false",
+            "off",
+            "no",
+            "image_width",
+            "image_height",
+            "clock",
+            "clock_delta",
+            "clock_on",
+            "frame_number",
+            "initial_frame",
+            "final_frame",
+            "initial_clock",
+            "final_clock",
+            "version",
+            "now",
+            "x",
+            "y",
+            "z",
+            "t",
+            "u",
+            "v",
+            "function",
+            "color",
+            "colour",
+            "rgb",
+            "rgbf",
+            "rgbt",
+            "rgbft",
+            "srgb",
+            "srgbf",
+            "srgbt",
+            "srgbft",
+            "red",
+            "green",
+            "blue",
+            "filter",
+            "transmit",
+        ];
+        assert!(others.iter().all(|n| !is_math_builtin(n)));
     }
 
     #[test]

@@ -303,6 +303,11 @@ impl Parser {
             Some(v) => return Ok(v.clone()),
             None => {}
         }
+        // The maths built-ins first: `mod(I, 100)` in a loop should not be compared with every
+        // other built-in name on the way (no name is both; see builtins_math's tests).
+        if let Some(r) = self.math_builtin(&k, span) {
+            return r;
+        }
         if let Some(v) = self.lang_ident_value(&k, span)? {
             return Ok(v);
         }
