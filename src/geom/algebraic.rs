@@ -39,6 +39,28 @@ pub fn pov_term_order(order: usize) -> Vec<[u8; 3]> {
 }
 
 impl Algebraic {
+    /// A quadric's square, linear and constant coefficients per axis, when it has no cross
+    /// terms.
+    fn diagonal_quadric(&self) -> Option<([f64; 3], [f64; 3], f64)> {
+        if self.order != 2 {
+            return None;
+        }
+        let (mut sq, mut lin, mut k) = ([0.0f64; 3], [0.0f64; 3], 0.0);
+        for ([i, j, l], c) in &self.terms {
+            match (*i, *j, *l) {
+                (2, 0, 0) => sq[0] = *c,
+                (0, 2, 0) => sq[1] = *c,
+                (0, 0, 2) => sq[2] = *c,
+                (1, 0, 0) => lin[0] = *c,
+                (0, 1, 0) => lin[1] = *c,
+                (0, 0, 1) => lin[2] = *c,
+                (0, 0, 0) => k = *c,
+                _ => return None,
+            }
+        }
+        Some((sq, lin, k))
+    }
+
     pub fn new(order: usize, terms: &[([u8; 3], f64)], sturm: bool) -> Algebraic {
         let terms: Vec<([u8; 3], f64)> = terms
             .iter()
@@ -315,22 +337,9 @@ impl Shape for Algebraic {
     /// ellipsoids, the axis cylinders of shapes.inc): its solid (negative side) lies within
     /// centre ± sqrt(K / a) on each axis with a square term.
     fn slab_bounds(&self) -> Aabb {
-        if self.order != 2 {
+        let Some((sq, lin, k)) = self.diagonal_quadric() else {
             return Aabb::INFINITE;
-        }
-        let (mut sq, mut lin, mut k) = ([0.0f64; 3], [0.0f64; 3], 0.0);
-        for ([i, j, l], c) in &self.terms {
-            match (*i, *j, *l) {
-                (2, 0, 0) => sq[0] = *c,
-                (0, 2, 0) => sq[1] = *c,
-                (0, 0, 2) => sq[2] = *c,
-                (1, 0, 0) => lin[0] = *c,
-                (0, 1, 0) => lin[1] = *c,
-                (0, 0, 1) => lin[2] = *c,
-                (0, 0, 0) => k = *c,
-                _ => return Aabb::INFINITE,
-            }
-        }
+        };
         if sq.iter().any(|&a| a < 0.0) || (0..3).any(|a| sq[a] == 0.0 && lin[a] != 0.0) {
             return Aabb::INFINITE;
         }
@@ -352,6 +361,53 @@ impl Shape for Algebraic {
                 lo[a] = c - r - pad;
                 hi[a] = c + r + pad;
             }
+        }
+        Aabb::new(lo, hi)
+    }
+
+    /// A quadric without cross terms inside a box: on each axis with a positive square term,
+    /// sq·(x - c)² is at most what the other axes' terms leave of -k at their least over the
+    /// box (a negative square term's least is at an end of its interval, so it needs that
+    /// interval finite; a hyperboloid between two planes).
+    fn slab_bounds_within(&self, b: &Aabb) -> Aabb {
+        let own = self.slab_bounds().intersection(b);
+        let Some((sq, lin, k)) = self.diagonal_quadric() else {
+            return own;
+        };
+        // The least of g(x) = sq·x² + lin·x over [lo, hi], and the size of the terms in it.
+        let least = |a: usize| -> f64 {
+            let (lo, hi) = (own.min[a], own.max[a]);
+            let g = |x: f64| sq[a] * x * x + lin[a] * x;
+            if sq[a] > 0.0 {
+                let c = -lin[a] / (2.0 * sq[a]);
+                g(c.clamp(lo, hi))
+            } else if sq[a] == 0.0 && lin[a] == 0.0 {
+                0.0
+            } else {
+                // Concave or linear: the least is at an end (-inf when that end is open).
+                g(lo).min(g(hi))
+            }
+        };
+        let mins = [least(0), least(1), least(2)];
+        let (mut lo, mut hi) = (own.min, own.max);
+        for i in 0..3 {
+            if sq[i] <= 0.0 {
+                continue;
+            }
+            let others: f64 = (0..3).filter(|&j| j != i).map(|j| mins[j]).sum();
+            let c = -lin[i] / (2.0 * sq[i]);
+            let shift = lin[i] * lin[i] / (4.0 * sq[i]);
+            // sq·(x - c)² = g(x) + shift <= -k - others + shift
+            let q = (-k - others + shift) / sq[i];
+            if !q.is_finite() {
+                continue;
+            }
+            // Rounding in the sums above is far below this margin.
+            let scale = (k.abs() + mins.iter().map(|m| m.abs()).sum::<f64>() + shift) / sq[i];
+            let r = (q.max(0.0) + 1e-9 * scale).sqrt();
+            let pad = 1e-6 * (r + c.abs()) + 1e-9;
+            lo[i] = lo[i].max(c - r - pad);
+            hi[i] = hi[i].min(c + r + pad);
         }
         Aabb::new(lo, hi)
     }
@@ -436,6 +492,58 @@ mod tests {
         assert!(!h.slab_bounds().is_finite() && h.slab_bounds().min.x.is_infinite());
         let c = Algebraic::new(2, &[([2, 0, 0], 1.0), ([1, 1, 0], 1.0)], false);
         assert_eq!(c.slab_bounds().max.x, f64::INFINITY);
+    }
+
+    #[test]
+    fn hyperboloid_within_a_slab() {
+        // shapes.inc's Hyperboloid_Y, x² - y² + z² <= 1, for y in [-2, 1]: x² + z² <= 5.
+        let h = Algebraic::new(
+            2,
+            &[
+                ([2, 0, 0], 1.0),
+                ([0, 2, 0], -1.0),
+                ([0, 0, 2], 1.0),
+                ([0, 0, 0], -1.0),
+            ],
+            false,
+        );
+        let slab = Aabb::new(
+            DVec3::new(f64::NEG_INFINITY, -2.0, f64::NEG_INFINITY),
+            DVec3::new(f64::INFINITY, 1.0, f64::INFINITY),
+        );
+        let b = h.slab_bounds_within(&slab);
+        let r = 5f64.sqrt();
+        assert!(b.max.x >= r && b.max.x < r + 1e-4 && b.min.z <= -r && b.min.z > -r - 1e-4);
+        assert_eq!((b.min.y, b.max.y), (-2.0, 1.0));
+        // Every point of the solid in the slab is in the box.
+        for i in 0..2000 {
+            let t = i as f64 * 0.37;
+            let y = -2.0 + 3.0 * ((t * 0.13).sin() * 0.5 + 0.5);
+            let rr = (1.0 + y * y).sqrt() * ((t * 0.7).cos() * 0.5 + 0.5);
+            let p = DVec3::new(rr * t.cos(), y, rr * t.sin());
+            assert!(!h.inside(p) || b.contains(p));
+        }
+        // Open on y, nothing closes x or z.
+        assert_eq!(h.slab_bounds_within(&Aabb::INFINITE).max.x, f64::INFINITY);
+        // A translated cylinder (x-3)² + z² <= 4 inside x <= 2 keeps its own z bounds.
+        let c = Algebraic::new(
+            2,
+            &[
+                ([2, 0, 0], 1.0),
+                ([0, 0, 2], 1.0),
+                ([1, 0, 0], -6.0),
+                ([0, 0, 0], 5.0),
+            ],
+            false,
+        );
+        let half = Aabb::new(
+            DVec3::splat(f64::NEG_INFINITY),
+            DVec3::new(2.0, f64::INFINITY, f64::INFINITY),
+        );
+        let b = c.slab_bounds_within(&half);
+        assert!(b.min.x < 1.0 && b.min.x > 0.99 && b.max.x == 2.0);
+        // x = 2 leaves z² <= 3.
+        assert!(b.max.z >= 3f64.sqrt() && b.max.z < 3f64.sqrt() + 1e-4);
     }
 
     #[test]

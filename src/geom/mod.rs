@@ -75,6 +75,12 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
     fn slab_bounds(&self) -> Aabb {
         self.bounds()
     }
+    /// Bounds of the part of the solid inside `b` (both in the shape's space), for the same
+    /// use as `slab_bounds`: a hyperboloid between two planes is bounded across them although
+    /// it has no slab of its own.
+    fn slab_bounds_within(&self, b: &Aabb) -> Aabb {
+        self.slab_bounds().intersection(b)
+    }
     /// The surface's (u, v) texture coordinates at a point it reported, for `uv_mapping`;
     /// None for shapes POV-Ray 3.7 gives no uv coordinates.
     fn uv(&self, _p: DVec3, _hit: &Hit) -> Option<[f64; 2]> {

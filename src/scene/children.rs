@@ -39,12 +39,7 @@ fn indexed(b: &Aabb) -> bool {
 /// finite box its planes and clipping give, if any. The index's boxes only pick the leaves to
 /// ask, so a tighter one changes no answer.
 fn leaf_box(o: &Object) -> Aabb {
-    if indexed(&o.bounds) {
-        return o.bounds;
-    }
-    crate::scene::cull::object_cull(o)
-        .filter(indexed)
-        .unwrap_or(o.bounds)
+    crate::scene::cull::solid_box(o).unwrap_or(o.bounds)
 }
 
 /// A union whose members can stand in for it in every query of an enclosing union.
@@ -70,8 +65,28 @@ fn members(o: &Object) -> &[Object] {
 /// enclosing union's index: queries reach their members through that one (`inside_without`,
 /// which walks the tree, finds them without an index and scans).
 pub fn attach(o: &mut Object, opened: bool) {
+    set_culls(o);
+    attach_indexes(o, opened);
+}
+
+/// Every CSG node's tight box (`scene::cull::cull_box`), members first: a union's box is
+/// made of its members' boxes, some of which are their own culls.
+fn set_culls(o: &mut Object) {
     for c in &mut o.clip {
-        attach(c, false);
+        set_culls(c);
+    }
+    if let ObjKind::Csg {
+        op, children, cull, ..
+    } = &mut o.kind
+    {
+        children.iter_mut().for_each(set_culls);
+        *cull = crate::scene::cull::cull_box(*op, children, &o.bounds).map(Box::new);
+    }
+}
+
+fn attach_indexes(o: &mut Object, opened: bool) {
+    for c in &mut o.clip {
+        attach_indexes(c, false);
     }
     if let ObjKind::Shape(shape, _) = &o.kind {
         // A clipped shape whose crossings outside a box are all clipped away (a clipped
@@ -88,12 +103,11 @@ pub fn attach(o: &mut Object, opened: bool) {
         op,
         children,
         index,
-        cull,
+        ..
     } = &mut o.kind
     else {
         return;
     };
-    *cull = crate::scene::cull::cull_box(*op, children, &o.bounds).map(Box::new);
     let mine = if opened {
         None
     } else {
@@ -102,7 +116,7 @@ pub fn attach(o: &mut Object, opened: bool) {
     let opening = *op == CsgOp::Union && (opened || mine.is_some());
     for c in children.iter_mut() {
         let open = opening && opens(c);
-        attach(c, open);
+        attach_indexes(c, open);
     }
     *index = mine;
 }

@@ -8,7 +8,7 @@
 //! intersection lies on one member and inside all the others, so inside every half-space), and
 //! it leaves `bounds`, and so the scene's BVH, as they were.
 
-use crate::math::{Aabb, DVec3};
+use crate::math::{Aabb, DMat4, DVec3};
 use crate::scene::desc::CsgOp;
 use crate::scene::object::{ObjKind, Object};
 
@@ -29,12 +29,22 @@ pub fn object_cull(o: &Object) -> Option<Aabb> {
     for c in &o.clip {
         half_spaces(c, &mut planes);
     }
-    let mut b = polyhedron_box(&planes)?;
+    let mut b = polyhedron_box(&planes).unwrap_or(Aabb::INFINITE);
     if let ObjKind::Csg { cull: Some(c), .. } = &o.kind {
         b = b.intersection(c);
     }
     let b = b.intersection(&o.bounds);
-    (b.is_finite() || b.min.is_finite() || b.max.is_finite()).then_some(b)
+    (b != Aabb::INFINITE && (b.is_finite() || b.min.is_finite() || b.max.is_finite())).then_some(b)
+}
+
+/// A finite box holding an object's solid and crossings: its bounds, or when they are not
+/// finite the box its planes, clipping and CSG cull give (`object_cull`).
+pub fn solid_box(o: &Object) -> Option<Aabb> {
+    let finite = |b: &Aabb| b.is_finite() && !b.is_empty();
+    if finite(&o.bounds) {
+        return Some(o.bounds);
+    }
+    object_cull(o).filter(finite)
 }
 
 /// The tight box of a CSG node, when it is finite on some side and tighter than `bounds`.
@@ -45,11 +55,38 @@ pub fn cull_box(op: CsgOp, children: &[Object], bounds: &Aabb) -> Option<Aabb> {
             for c in children {
                 half_spaces(c, &mut planes);
             }
-            polyhedron_box(&planes)?
+            let mut b = polyhedron_box(&planes).unwrap_or(Aabb::INFINITE);
+            // Members bounded only within what the others close (a hyperboloid between two
+            // planes, chess2's pieces); twice, so two such members can close each other.
+            for _ in 0..2 {
+                for c in children {
+                    if let Some(m) = member_box_within(c, &b) {
+                        b = b.intersection(&m);
+                    }
+                }
+            }
+            if b == Aabb::INFINITE {
+                return None;
+            }
+            b
         }
         // A difference lies inside its first member.
         CsgOp::Difference => member_box(&children[0])?,
-        CsgOp::Union | CsgOp::Merge => return None,
+        // A union of members that are each finite (some only by their own cull: chess2's
+        // pieces, a hyperboloid between planes beside spheres) lies in their boxes' union.
+        CsgOp::Union | CsgOp::Merge => {
+            let mut b = Aabb::EMPTY;
+            for c in children {
+                if c.bounds.is_empty() {
+                    continue;
+                }
+                b = b.union(&solid_box(c)?);
+            }
+            if b.is_empty() {
+                return None;
+            }
+            b
+        }
     };
     let b = b.intersection(bounds);
     (b.min.cmpgt(bounds.min).any() || b.max.cmplt(bounds.max).any()).then_some(b)
@@ -63,6 +100,57 @@ fn member_box(o: &Object) -> Option<Aabb> {
     let mut planes = Vec::new();
     half_spaces(o, &mut planes);
     polyhedron_box(&planes)
+}
+
+/// A box holding the part of a shape member's solid inside `b` (before any clipping, which
+/// only takes away), from the shape's `slab_bounds_within` in its own space.
+fn member_box_within(o: &Object, b: &Aabb) -> Option<Aabb> {
+    let ObjKind::Shape(s, _) = &o.kind else {
+        return None;
+    };
+    if o.inverse {
+        return None;
+    }
+    match &o.transform {
+        None => Some(s.slab_bounds_within(b)),
+        Some(t) => {
+            let local = map_box(b, &t.inv)?;
+            map_box(&s.slab_bounds_within(&local), &t.m)
+        }
+    }
+}
+
+/// A box through an affine map: per axis when the map only scales and moves (so open sides
+/// stay open), by its corners when the box is finite; `None` otherwise.
+fn map_box(b: &Aabb, m: &DMat4) -> Option<Aabb> {
+    if b.is_empty() {
+        return Some(*b);
+    }
+    let axis_aligned = (0..3).all(|c| (0..3).all(|r| r == c || m.col(c)[r] == 0.0));
+    if axis_aligned {
+        let (mut lo, mut hi) = (DVec3::ZERO, DVec3::ZERO);
+        for a in 0..3 {
+            let (s, t) = (m.col(a)[a], m.w_axis[a]);
+            let (p, q) = (s * b.min[a] + t, s * b.max[a] + t);
+            lo[a] = p.min(q);
+            hi[a] = p.max(q);
+        }
+        let out = Aabb::new(lo, hi);
+        return (!lo.is_nan() && !hi.is_nan()).then_some(out);
+    }
+    if !b.is_finite() {
+        return None;
+    }
+    let mut out = Aabb::EMPTY;
+    for i in 0..8 {
+        let p = DVec3::new(
+            if i & 1 == 0 { b.min.x } else { b.max.x },
+            if i & 2 == 0 { b.min.y } else { b.max.y },
+            if i & 4 == 0 { b.min.z } else { b.max.z },
+        );
+        out = out.grow(m.transform_point3(p));
+    }
+    Some(out)
 }
 
 /// Half-spaces n·p <= d holding the object's solid: a plane's own, its box's faces, those of
@@ -175,6 +263,29 @@ fn polyhedron_box(planes: &[(DVec3, f64)]) -> Option<Aabb> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn boxes_through_maps() {
+        let open_x = Aabb::new(
+            DVec3::new(f64::NEG_INFINITY, 1.0, 2.0),
+            DVec3::new(f64::INFINITY, 3.0, 4.0),
+        );
+        // Scale (with a mirror) and move: open sides stay open.
+        let m = DMat4::from_scale_rotation_translation(
+            DVec3::new(2.0, -1.0, 0.5),
+            glam::DQuat::IDENTITY,
+            DVec3::new(0.0, 5.0, 0.0),
+        );
+        let b = map_box(&open_x, &m).unwrap();
+        assert_eq!(b.min, DVec3::new(f64::NEG_INFINITY, 2.0, 1.0));
+        assert_eq!(b.max, DVec3::new(f64::INFINITY, 4.0, 2.0));
+        // A rotation of an open box says nothing; of a finite one, its corners' box.
+        let r = DMat4::from_rotation_y(0.5);
+        assert!(map_box(&open_x, &r).is_none());
+        let unit = Aabb::new(-DVec3::ONE, DVec3::ONE);
+        let b = map_box(&unit, &r).unwrap();
+        assert!(b.max.x > 1.0 && b.contains(r.transform_point3(DVec3::ONE)));
+    }
 
     #[test]
     fn cube_and_open_slab() {
