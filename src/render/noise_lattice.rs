@@ -9,7 +9,8 @@
 //! the scalar code's order, and nothing here is contracted to FMA, so the results are the
 //! scalar code's bits (unit test `packed_lattice_is_the_scalar_lattice`, tests/noise_probes.rs).
 //! With AVX (detected at run time; the build targets x86-64-v2) the lanes are one 256-bit
-//! register; without it the same lanes are plain arrays.
+//! register; without it the same lanes are plain arrays. The scalar noise (bozo, granite,
+//! wrinkles) puts four corners in the lanes instead and sums their terms in corner order.
 
 use crate::math::DVec3;
 
@@ -47,6 +48,24 @@ const fn pack() -> [Packed; 256] {
 
 /// HASH_Z's values are below 256, so 256 positions cover every corner.
 static PACKED: [Packed; 256] = pack();
+
+/// Component 0's four numbers per position (½e0, e1, e2, e3) as one 32-byte row, for the
+/// scalar noise, which takes four corners' rows at once and transposes them into lanes.
+#[repr(C, align(32))]
+#[derive(Clone, Copy)]
+struct Row([f64; 4]);
+
+const fn rows() -> [Row; 256] {
+    let mut t = [Row([0.0; 4]); 256];
+    let mut i = 0;
+    while i < 256 {
+        t[i] = Row([0.5 * ENTRY[i], ENTRY[i + 1], ENTRY[i + 2], ENTRY[i + 3]]);
+        i += 1;
+    }
+    t
+}
+
+static ROWS: [Row; 256] = rows();
 
 /// What the eight corners share: the fractional position, the x·y weights of the four
 /// (dx, dy) columns, the z weights, and each corner's ENTRY position (corner = dx + 2dy + 4dz).
@@ -92,6 +111,17 @@ fn cell(p: DVec3) -> Cell {
 /// is generator 1's unclipped value.
 #[inline]
 pub fn scalar(p: DVec3) -> f64 {
+    #[cfg(target_arch = "x86_64")]
+    if has_avx() {
+        // SAFETY: AVX was detected.
+        return unsafe { scalar_avx(p) };
+    }
+    scalar_lanes(p)
+}
+
+/// `scalar` one corner at a time.
+#[inline(always)]
+fn scalar_lanes(p: DVec3) -> f64 {
     let c = cell(p);
     let mut out = 0.0;
     for (k, &i) in c.entry.iter().enumerate() {
@@ -102,6 +132,45 @@ pub fn scalar(p: DVec3) -> f64 {
         out += w * (e[0][0] + e[1][0] * ddx + e[2][0] * ddy + e[3][0] * ddz);
     }
     out
+}
+
+/// `scalar` with the four corners of each z layer as the lanes of one AVX register: their
+/// rows are transposed so that lane k holds corner k's numbers, each lane computes its
+/// corner's term as the scalar code does, and the eight terms are summed in corner order.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+fn scalar_avx(p: DVec3) -> f64 {
+    use std::arch::x86_64::*;
+    let c = cell(p);
+    let [tx, ty, tz] = c.t;
+    // SAFETY: this function only runs with AVX; ROWS' rows are 32-byte aligned.
+    unsafe {
+        let dx = _mm256_setr_pd(tx, tx - 1.0, tx, tx - 1.0);
+        let dy = _mm256_setr_pd(ty, ty, ty - 1.0, ty - 1.0);
+        let wxy = _mm256_loadu_pd(c.wxy.as_ptr());
+        let mut out = 0.0;
+        for (z, entry) in c.entry.chunks_exact(4).enumerate() {
+            let row = |k: usize| _mm256_load_pd(ROWS[entry[k]].0.as_ptr());
+            let (r0, r1, r2, r3) = (row(0), row(1), row(2), row(3));
+            let (t0, t1) = (_mm256_unpacklo_pd(r0, r1), _mm256_unpackhi_pd(r0, r1));
+            let (t2, t3) = (_mm256_unpacklo_pd(r2, r3), _mm256_unpackhi_pd(r2, r3));
+            let e0 = _mm256_permute2f128_pd(t0, t2, 0x20);
+            let e1 = _mm256_permute2f128_pd(t1, t3, 0x20);
+            let e2 = _mm256_permute2f128_pd(t0, t2, 0x31);
+            let e3 = _mm256_permute2f128_pd(t1, t3, 0x31);
+            let dz = _mm256_set1_pd(tz - z as f64);
+            let mut t = _mm256_add_pd(e0, _mm256_mul_pd(e1, dx));
+            t = _mm256_add_pd(t, _mm256_mul_pd(e2, dy));
+            t = _mm256_add_pd(t, _mm256_mul_pd(e3, dz));
+            let w = _mm256_mul_pd(wxy, _mm256_set1_pd(c.wz[z]));
+            let mut terms = [0.0; 4];
+            _mm256_storeu_pd(terms.as_mut_ptr(), _mm256_mul_pd(w, t));
+            for v in terms {
+                out += v;
+            }
+        }
+        out
+    }
 }
 
 /// The three components of the vector noise with plain arrays as lanes.
@@ -261,6 +330,7 @@ mod tests {
             let p = DVec3::new(t.sin() * 50.0, t * 0.31 - 7.0, (t * 0.7).cos() * 33.0);
             let want = [reference(p, 0), reference(p, 4), reference(p, 8)];
             assert_eq!(scalar(p).to_bits(), want[0].to_bits(), "{p}");
+            assert_eq!(scalar_lanes(p).to_bits(), want[0].to_bits(), "{p}");
             assert_eq!(
                 vector(p).to_array().map(f64::to_bits),
                 want.map(f64::to_bits),
