@@ -169,18 +169,50 @@ pub fn clipped_noise(p: DVec3, generator: u8) -> f64 {
     sum_noise(p, generator).clamp(0.0, 1.0)
 }
 
+/// `sum_noise` at up to 10 points into `out` (the octaves of one sum, whose lattice hash
+/// walks `noise_lattice::scalar_into` overlaps).
+fn sum_noise_into(ps: &[DVec3], generator: u8, out: &mut [f64]) {
+    match generator {
+        3 => {
+            for (o, &p) in out.iter_mut().zip(ps) {
+                *o = sum_noise(p, 3);
+            }
+        }
+        1 => {
+            noise_lattice::scalar_into(ps, out);
+            for o in out.iter_mut() {
+                *o = (0.5 + *o).clamp(0.0, 1.0);
+            }
+        }
+        _ => {
+            noise_lattice::scalar_into(ps, out);
+            for o in out.iter_mut() {
+                *o = 2.0 * (GEN2_A + GEN2_B * (0.5 + *o)) - 0.5;
+            }
+        }
+    }
+}
+
 /// Scalar turbulence (marble's and agate's): the first octave clipped to [0, 1], the others
 /// added unclipped, each `lambda` times finer and `omega` times weaker (lambda and omega in
 /// single precision, as POV-Ray keeps them). Measured: `marble turbulence t ramp_wave` is
 /// x + t·this.
 pub fn turbulence(p: DVec3, octaves: u32, omega: f64, lambda: f64, generator: u8) -> f64 {
     let (omega, lambda) = (omega as f32 as f64, lambda as f32 as f64);
-    let mut sum = clipped_noise(p, generator);
-    let (mut scale, mut weight) = (1.0, 1.0);
-    for _ in 1..octaves.clamp(1, 10) {
+    let n = octaves.clamp(1, 10) as usize;
+    let mut ps = [p; 10];
+    let mut scale = 1.0;
+    for q in &mut ps[1..n] {
         scale *= lambda;
+        *q = p * scale;
+    }
+    let mut v = [0.0; 10];
+    sum_noise_into(&ps[..n], generator, &mut v[..n]);
+    let mut sum = v[0].clamp(0.0, 1.0);
+    let mut weight = 1.0;
+    for &x in &v[1..n] {
         weight *= omega;
-        sum += weight * sum_noise(p * scale, generator);
+        sum += weight * x;
     }
     sum
 }
@@ -188,22 +220,28 @@ pub fn turbulence(p: DVec3, octaves: u32, omega: f64, lambda: f64, generator: u8
 /// Granite: six octaves from four times the point's frequency, each |noise - 1/2| halving in
 /// weight.
 pub fn granite(p: DVec3, generator: u8) -> f64 {
+    let freqs = [4.0, 8.0, 16.0, 32.0, 64.0, 128.0];
+    let mut v = [0.0; 6];
+    sum_noise_into(&freqs.map(|f| p * f), generator, &mut v);
     let mut sum = 0.0;
-    let mut freq = 4.0;
-    for _ in 0..6 {
-        sum += (clipped_noise(p * freq, generator) - 0.5).abs() * 4.0 / freq;
-        freq *= 2.0;
+    for (x, f) in v.into_iter().zip(freqs) {
+        sum += (x.clamp(0.0, 1.0) - 0.5).abs() * 4.0 / f;
     }
     sum
 }
 
 /// Wrinkles: ten octaves of the clipped noise, weights 1/2, 1/4, ...
 pub fn wrinkles(p: DVec3, generator: u8) -> f64 {
+    let mut freqs = [1.0; 10];
+    for k in 1..10 {
+        freqs[k] = freqs[k - 1] * 2.0;
+    }
+    let mut v = [0.0; 10];
+    sum_noise_into(&freqs.map(|f| p * f), generator, &mut v);
     let mut sum = 0.0;
-    let (mut freq, mut weight) = (1.0, 0.5);
-    for _ in 0..10 {
-        sum += weight * clipped_noise(p * freq, generator);
-        freq *= 2.0;
+    let mut weight = 0.5;
+    for x in v {
+        sum += weight * x.clamp(0.0, 1.0);
         weight *= 0.5;
     }
     sum

@@ -69,6 +69,7 @@ static ROWS: [Row; 256] = rows();
 
 /// What the eight corners share: the fractional position, the x·y weights of the four
 /// (dx, dy) columns, the z weights, and each corner's ENTRY position (corner = dx + 2dy + 4dz).
+#[derive(Clone, Copy)]
 struct Cell {
     t: [f64; 3],
     wxy: [f64; 4],
@@ -111,18 +112,43 @@ fn cell(p: DVec3) -> Cell {
 /// is generator 1's unclipped value.
 #[inline]
 pub fn scalar(p: DVec3) -> f64 {
-    #[cfg(target_arch = "x86_64")]
-    if has_avx() {
-        // SAFETY: AVX was detected.
-        return unsafe { scalar_avx(p) };
-    }
-    scalar_lanes(p)
+    scalar_many([p])[0]
 }
 
-/// `scalar` one corner at a time.
+/// `scalar` at up to 10 points (the octaves of granite, wrinkles and scalar turbulence) into
+/// `out`: every point's hash walk first, then the arithmetic, so that the walks' dependent
+/// table reads overlap instead of each waiting for the one before.
+#[inline]
+pub fn scalar_into(ps: &[DVec3], out: &mut [f64]) {
+    let mut cells = [const { None }; 10];
+    for (c, &p) in cells.iter_mut().zip(ps) {
+        *c = Some(cell(p));
+    }
+    let cells = cells.iter().flatten();
+    #[cfg(target_arch = "x86_64")]
+    if has_avx() {
+        for (o, c) in out.iter_mut().zip(cells) {
+            // SAFETY: AVX was detected.
+            *o = unsafe { scalar_avx(c) };
+        }
+        return;
+    }
+    for (o, c) in out.iter_mut().zip(cells) {
+        *o = scalar_lanes(c);
+    }
+}
+
+/// `scalar_into` for a fixed number of points.
+#[inline]
+pub fn scalar_many<const N: usize>(ps: [DVec3; N]) -> [f64; N] {
+    let mut out = [0.0; N];
+    scalar_into(&ps, &mut out);
+    out
+}
+
+/// `scalar`'s arithmetic one corner at a time.
 #[inline(always)]
-fn scalar_lanes(p: DVec3) -> f64 {
-    let c = cell(p);
+fn scalar_lanes(c: &Cell) -> f64 {
     let mut out = 0.0;
     for (k, &i) in c.entry.iter().enumerate() {
         let e = &PACKED[i].0;
@@ -134,14 +160,14 @@ fn scalar_lanes(p: DVec3) -> f64 {
     out
 }
 
-/// `scalar` with the four corners of each z layer as the lanes of one AVX register: their
-/// rows are transposed so that lane k holds corner k's numbers, each lane computes its
-/// corner's term as the scalar code does, and the eight terms are summed in corner order.
+/// `scalar`'s arithmetic with the four corners of each z layer as the lanes of one AVX
+/// register: their rows are transposed so that lane k holds corner k's numbers, each lane
+/// computes its corner's term as the scalar code does, and the eight terms are summed in
+/// corner order.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx")]
-fn scalar_avx(p: DVec3) -> f64 {
+fn scalar_avx(c: &Cell) -> f64 {
     use std::arch::x86_64::*;
-    let c = cell(p);
     let [tx, ty, tz] = c.t;
     // SAFETY: this function only runs with AVX; ROWS' rows are 32-byte aligned.
     unsafe {
@@ -175,8 +201,7 @@ fn scalar_avx(p: DVec3) -> f64 {
 
 /// The three components of the vector noise with plain arrays as lanes.
 #[inline(always)]
-fn vector_lanes(p: DVec3) -> [f64; 3] {
-    let c = cell(p);
+fn vector_lanes(c: &Cell) -> [f64; 3] {
     let mut out = [0.0; 4];
     for (k, &i) in c.entry.iter().enumerate() {
         let e = &PACKED[i].0;
@@ -196,9 +221,8 @@ fn vector_lanes(p: DVec3) -> [f64; 3] {
 /// The CPU must have AVX.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn vector_avx(p: DVec3) -> [f64; 3] {
+unsafe fn vector_avx(c: &Cell) -> [f64; 3] {
     use std::arch::x86_64::*;
-    let c = cell(p);
     // SAFETY: the caller guarantees AVX; PACKED's rows are 32-byte aligned, as the aligned
     // loads need.
     unsafe {
@@ -244,32 +268,38 @@ pub fn vector(p: DVec3) -> DVec3 {
         // SAFETY: AVX was detected.
         return unsafe { vector_avx_fn(p) };
     }
-    DVec3::from_array(vector_lanes(p))
+    DVec3::from_array(vector_lanes(&cell(p)))
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx")]
 fn vector_avx_fn(p: DVec3) -> DVec3 {
     // SAFETY: this function only runs with AVX enabled.
-    DVec3::from_array(unsafe { vector_avx(p) })
+    DVec3::from_array(unsafe { vector_avx(&cell(p)) })
 }
 
 /// Octaves of vector noise, each `lambda` times finer and `omega` times weaker than the one
 /// before, summed (turbulence's displacement; lambda and omega already as POV-Ray rounds
-/// them).
+/// them; at most 10 octaves). Every octave's hash walk comes first, as in `scalar_many`.
 #[inline(always)]
 fn octaves_with(
     p: DVec3,
     octaves: u32,
     omega: f64,
     lambda: f64,
-    lattice: impl Fn(DVec3) -> [f64; 3],
+    terms: impl Fn(&Cell) -> [f64; 3],
 ) -> DVec3 {
-    let mut sum = DVec3::ZERO;
-    let (mut scale, mut weight) = (1.0, 1.0);
-    for _ in 0..octaves {
-        sum += weight * DVec3::from_array(lattice(p * scale));
+    let n = octaves.min(10) as usize;
+    let mut cells = [const { None }; 10];
+    let mut scale = 1.0;
+    for c in &mut cells[..n] {
+        *c = Some(cell(p * scale));
         scale *= lambda;
+    }
+    let mut sum = DVec3::ZERO;
+    let mut weight = 1.0;
+    for c in cells[..n].iter().flatten() {
+        sum += weight * DVec3::from_array(terms(c));
         weight *= omega;
     }
     sum
@@ -279,10 +309,10 @@ fn octaves_with(
 #[target_feature(enable = "avx")]
 fn octaves_avx(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
     // SAFETY: this function only runs with AVX enabled.
-    octaves_with(p, octaves, omega, lambda, |q| unsafe { vector_avx(q) })
+    octaves_with(p, octaves, omega, lambda, |c| unsafe { vector_avx(c) })
 }
 
-/// `octaves` octaves of vector noise from `p`.
+/// `octaves` octaves (at most 10) of vector noise from `p`.
 pub fn vector_octaves(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
     #[cfg(target_arch = "x86_64")]
     if has_avx() {
@@ -330,14 +360,14 @@ mod tests {
             let p = DVec3::new(t.sin() * 50.0, t * 0.31 - 7.0, (t * 0.7).cos() * 33.0);
             let want = [reference(p, 0), reference(p, 4), reference(p, 8)];
             assert_eq!(scalar(p).to_bits(), want[0].to_bits(), "{p}");
-            assert_eq!(scalar_lanes(p).to_bits(), want[0].to_bits(), "{p}");
+            assert_eq!(scalar_lanes(&cell(p)).to_bits(), want[0].to_bits(), "{p}");
             assert_eq!(
                 vector(p).to_array().map(f64::to_bits),
                 want.map(f64::to_bits),
                 "{p}"
             );
             assert_eq!(
-                vector_lanes(p).map(f64::to_bits),
+                vector_lanes(&cell(p)).map(f64::to_bits),
                 want.map(f64::to_bits),
                 "{p}"
             );
@@ -345,12 +375,29 @@ mod tests {
     }
 
     #[test]
-    fn octaves_agree_between_paths() {
+    fn batched_scalar_is_the_scalar_lattice() {
+        for n in 0..2_000 {
+            let p = DVec3::new(n as f64 * 0.37 - 300.0, (n as f64).sqrt(), -0.01 * n as f64);
+            let got = scalar_many([p, p * 2.0, p * 4.0, p * 8.0, p * 16.0, p * 32.0]);
+            for (k, v) in got.into_iter().enumerate() {
+                assert_eq!(v.to_bits(), reference(p * (1 << k) as f64, 0).to_bits());
+            }
+        }
+    }
+
+    #[test]
+    fn octaves_are_the_scalar_lattice_octaves() {
         for n in 0..2_000 {
             let t = n as f64 * 0.173;
             let p = DVec3::new(t.cos() * 9.0, t * 0.05, t.sin() * 4.0 - 2.0);
             let a = vector_octaves(p, 10, 0.5, 2.5);
-            let b = octaves_with(p, 10, 0.5, 2.5, vector_lanes);
+            let (mut b, mut scale, mut weight) = (DVec3::ZERO, 1.0, 1.0);
+            for _ in 0..10 {
+                let q = p * scale;
+                b += weight * DVec3::new(reference(q, 0), reference(q, 4), reference(q, 8));
+                scale *= 2.5;
+                weight *= 0.5;
+            }
             assert_eq!(
                 a.to_array().map(f64::to_bits),
                 b.to_array().map(f64::to_bits)
