@@ -120,22 +120,30 @@ pub fn scalar(p: DVec3) -> f64 {
 /// table reads overlap instead of each waiting for the one before.
 #[inline]
 pub fn scalar_into(ps: &[DVec3], out: &mut [f64]) {
+    #[cfg(target_arch = "x86_64")]
+    if has_avx() {
+        // SAFETY: AVX was detected.
+        return unsafe { scalar_into_avx(ps, out) };
+    }
+    scalar_into_with(ps, out, scalar_lanes)
+}
+
+#[inline(always)]
+fn scalar_into_with(ps: &[DVec3], out: &mut [f64], terms: impl Fn(&Cell) -> f64) {
     let mut cells = [const { None }; 10];
     for (c, &p) in cells.iter_mut().zip(ps) {
         *c = Some(cell(p));
     }
-    let cells = cells.iter().flatten();
-    #[cfg(target_arch = "x86_64")]
-    if has_avx() {
-        for (o, c) in out.iter_mut().zip(cells) {
-            // SAFETY: AVX was detected.
-            *o = unsafe { scalar_avx(c) };
-        }
-        return;
+    for (o, c) in out.iter_mut().zip(cells.iter().flatten()) {
+        *o = terms(c);
     }
-    for (o, c) in out.iter_mut().zip(cells) {
-        *o = scalar_lanes(c);
-    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+fn scalar_into_avx(ps: &[DVec3], out: &mut [f64]) {
+    // SAFETY: this function only runs with AVX enabled.
+    scalar_into_with(ps, out, |c| unsafe { scalar_avx(c) })
 }
 
 /// `scalar_into` for a fixed number of points.
@@ -164,12 +172,15 @@ fn scalar_lanes(c: &Cell) -> f64 {
 /// register: their rows are transposed so that lane k holds corner k's numbers, each lane
 /// computes its corner's term as the scalar code does, and the eight terms are summed in
 /// corner order.
+///
+/// # Safety
+/// The CPU must have AVX.
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-fn scalar_avx(c: &Cell) -> f64 {
+#[inline(always)]
+unsafe fn scalar_avx(c: &Cell) -> f64 {
     use std::arch::x86_64::*;
     let [tx, ty, tz] = c.t;
-    // SAFETY: this function only runs with AVX; ROWS' rows are 32-byte aligned.
+    // SAFETY: the caller guarantees AVX; ROWS' rows are 32-byte aligned.
     unsafe {
         let dx = _mm256_setr_pd(tx, tx - 1.0, tx, tx - 1.0);
         let dy = _mm256_setr_pd(ty, ty, ty - 1.0, ty - 1.0);
