@@ -16,6 +16,7 @@ mod metallic;
 pub mod noise;
 mod noise3_data;
 mod noise_data;
+mod noise_lattice;
 pub mod normal;
 pub mod pattern;
 mod photon_file;

@@ -10,7 +10,10 @@
 //! Generator 3 is a gradient-only lattice noise of its own: the point moved by a constant,
 //! unit gradients from a table of 2048 chosen by an additive 11-bit hash (`noise3_data`).
 //! Everything here is a pure function of the point: no tables built at run time, no
-//! allocation.
+//! allocation (turbulence keeps its last result per thread, which changes no value). The
+//! lattice itself is in `noise_lattice`.
+
+use std::cell::Cell;
 
 use crate::math::DVec3;
 
@@ -18,51 +21,12 @@ use super::cells_data::{
     CELL_HASH_OFFSET, CELL_HASH_X, CELL_HASH_Y, CELL_HASH_Z, CELL_POINT, CELL_VALUE,
 };
 use super::noise3_data::{GEN3_A, GEN3_B, GEN3_GRAD, GEN3_PERM, GEN3_SHIFT};
-use super::noise_data::{ENTRY, GEN2_A, GEN2_B, HASH_OFFSET, HASH_X, HASH_Y, HASH_Z};
+use super::noise_data::{GEN2_A, GEN2_B};
+use super::noise_lattice;
 
 #[inline]
 fn s_curve(t: f64) -> f64 {
     t * t * (3.0 - 2.0 * t)
-}
-
-/// The lattice noise with every corner's entry moved `k` places on (0, 4, 8: the three
-/// components of the vector noise), in about [-0.5, 0.5]; 0.5 plus it is generator 1's
-/// unclipped value.
-#[inline]
-fn lattice(p: DVec3, k: usize) -> f64 {
-    lattice3(p, [k])[0]
-}
-
-/// `lattice` for several offsets at once, sharing the hash and weights.
-#[inline]
-fn lattice3<const N: usize>(p: DVec3, ks: [usize; N]) -> [f64; N] {
-    let (fx, fy, fz) = (p.x.floor(), p.y.floor(), p.z.floor());
-    let (ix, iy, iz) = (fx as i64, fy as i64, fz as i64);
-    let (tx, ty, tz) = (p.x - fx, p.y - fy, p.z - fz);
-    let (sx, sy, sz) = (s_curve(tx), s_curve(ty), s_curve(tz));
-    let (wx, wy, wz) = ([1.0 - sx, sx], [1.0 - sy, sy], [1.0 - sz, sz]);
-    // Each corner's position in ENTRY: a three-stage hash of its coordinates, the first
-    // stages shared between corners (14 table reads instead of 24).
-    let m = |c: i64| (c.wrapping_add(HASH_OFFSET) & 4095) as usize;
-    let hx = [HASH_X[m(ix)] as usize, HASH_X[m(ix + 1)] as usize];
-    let (my, mz) = ([m(iy), m(iy + 1)], [m(iz), m(iz + 1)]);
-    let mut hxy = [0usize; 4];
-    for (k, h) in hxy.iter_mut().enumerate() {
-        // The mask changes nothing (both sides are below 4096) but spares a bounds check.
-        *h = HASH_Y[(hx[k & 1] ^ my[k >> 1]) & 4095] as usize;
-    }
-    let mut out = [0.0; N];
-    for corner in 0..8 {
-        let (dx, dy, dz) = (corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
-        let w = wx[dx] * wy[dy] * wz[dz];
-        let i = HASH_Z[(hxy[corner & 3] ^ mz[dz]) & 4095] as usize;
-        let (ddx, ddy, ddz) = (tx - dx as f64, ty - dy as f64, tz - dz as f64);
-        for (o, &k) in out.iter_mut().zip(ks.iter()) {
-            let e = &ENTRY[i + k..i + k + 4];
-            *o += w * (0.5 * e[0] + e[1] * ddx + e[2] * ddy + e[3] * ddz);
-        }
-    }
-    out
 }
 
 /// Generator 3's unclipped value (measured, docs/noise.md): each coordinate plus GEN3_SHIFT
@@ -138,8 +102,8 @@ pub fn unit(h: u32) -> f64 {
 pub fn noise(p: DVec3, generator: u8) -> f64 {
     match generator {
         3 => gradient_noise(p).clamp(0.0, 1.0),
-        1 => (0.5 + lattice(p, 0)).clamp(0.0, 1.0),
-        _ => (GEN2_A + GEN2_B * (0.5 + lattice(p, 0))).clamp(0.0, 1.0),
+        1 => (0.5 + noise_lattice::scalar(p)).clamp(0.0, 1.0),
+        _ => (GEN2_A + GEN2_B * (0.5 + noise_lattice::scalar(p))).clamp(0.0, 1.0),
     }
 }
 
@@ -148,24 +112,43 @@ pub fn noise(p: DVec3, generator: u8) -> f64 {
 /// noise_generator (measured: `gradient x turbulence 0.1 noise_generator 3` moves the point
 /// exactly as generator 2 does).
 pub fn dnoise(p: DVec3, _generator: u8) -> DVec3 {
-    let [x, y, z] = lattice3(p, [0, 4, 8]);
-    DVec3::new(x, y, z)
+    noise_lattice::vector(p)
 }
 
 /// The displacement of turbulence: octaves of vector noise, each `lambda` times finer and
 /// `omega` times weaker than the one before. POV-Ray keeps lambda and omega in single
 /// precision (measured: vturbulence(2.7, 0.6, ...) matches only with both rounded to f32).
-pub fn turbulence_vec(p: DVec3, octaves: u32, omega: f64, lambda: f64, generator: u8) -> DVec3 {
+///
+/// The last result is kept per thread: layers of one texture or sky (S_Cloud5's three cloud
+/// layers, a wood's layers) often stir the same point with the same octaves, omega and lambda
+/// and differ only in the amount, which the caller applies.
+pub fn turbulence_vec(p: DVec3, octaves: u32, omega: f64, lambda: f64, _generator: u8) -> DVec3 {
     let (omega, lambda) = (omega as f32 as f64, lambda as f32 as f64);
-    let mut sum = DVec3::ZERO;
-    let (mut scale, mut weight) = (1.0, 1.0);
     // POV-Ray stops at 10 octaves (measured: vturbulence with 12 or 20 equals 10).
-    for _ in 0..octaves.clamp(1, 10) {
-        sum += weight * dnoise(p * scale, generator);
-        scale *= lambda;
-        weight *= omega;
-    }
-    sum
+    let octaves = octaves.clamp(1, 10);
+    let key = [
+        p.x.to_bits(),
+        p.y.to_bits(),
+        p.z.to_bits(),
+        octaves as u64,
+        omega.to_bits(),
+        lambda.to_bits(),
+    ];
+    LAST_TURBULENCE.with(|last| {
+        if let Some((k, v)) = last.get() {
+            if k == key {
+                return v;
+            }
+        }
+        let v = noise_lattice::vector_octaves(p, octaves, omega, lambda);
+        last.set(Some((key, v)));
+        v
+    })
+}
+
+thread_local! {
+    /// `turbulence_vec`'s last key (the point's and parameters' bits) and result.
+    static LAST_TURBULENCE: Cell<Option<([u64; 6], DVec3)>> = const { Cell::new(None) };
 }
 
 /// The noise the patterns' own sums (turbulence, granite, wrinkles) are built on, per
@@ -174,9 +157,9 @@ pub fn turbulence_vec(p: DVec3, octaves: u32, omega: f64, lambda: f64, generator
 #[inline]
 fn sum_noise(p: DVec3, generator: u8) -> f64 {
     match generator {
-        1 => (0.5 + lattice(p, 0)).clamp(0.0, 1.0),
+        1 => (0.5 + noise_lattice::scalar(p)).clamp(0.0, 1.0),
         3 => 2.0 * noise(p, 3) - 0.5,
-        _ => 2.0 * (GEN2_A + GEN2_B * (0.5 + lattice(p, 0))) - 0.5,
+        _ => 2.0 * (GEN2_A + GEN2_B * (0.5 + noise_lattice::scalar(p))) - 0.5,
     }
 }
 
@@ -186,18 +169,50 @@ pub fn clipped_noise(p: DVec3, generator: u8) -> f64 {
     sum_noise(p, generator).clamp(0.0, 1.0)
 }
 
+/// `sum_noise` at up to 10 points into `out` (the octaves of one sum, whose lattice hash
+/// walks `noise_lattice::scalar_into` overlaps).
+fn sum_noise_into(ps: &[DVec3], generator: u8, out: &mut [f64]) {
+    match generator {
+        3 => {
+            for (o, &p) in out.iter_mut().zip(ps) {
+                *o = sum_noise(p, 3);
+            }
+        }
+        1 => {
+            noise_lattice::scalar_into(ps, out);
+            for o in out.iter_mut() {
+                *o = (0.5 + *o).clamp(0.0, 1.0);
+            }
+        }
+        _ => {
+            noise_lattice::scalar_into(ps, out);
+            for o in out.iter_mut() {
+                *o = 2.0 * (GEN2_A + GEN2_B * (0.5 + *o)) - 0.5;
+            }
+        }
+    }
+}
+
 /// Scalar turbulence (marble's and agate's): the first octave clipped to [0, 1], the others
 /// added unclipped, each `lambda` times finer and `omega` times weaker (lambda and omega in
 /// single precision, as POV-Ray keeps them). Measured: `marble turbulence t ramp_wave` is
 /// x + t·this.
 pub fn turbulence(p: DVec3, octaves: u32, omega: f64, lambda: f64, generator: u8) -> f64 {
     let (omega, lambda) = (omega as f32 as f64, lambda as f32 as f64);
-    let mut sum = clipped_noise(p, generator);
-    let (mut scale, mut weight) = (1.0, 1.0);
-    for _ in 1..octaves.clamp(1, 10) {
+    let n = octaves.clamp(1, 10) as usize;
+    let mut ps = [p; 10];
+    let mut scale = 1.0;
+    for q in &mut ps[1..n] {
         scale *= lambda;
+        *q = p * scale;
+    }
+    let mut v = [0.0; 10];
+    sum_noise_into(&ps[..n], generator, &mut v[..n]);
+    let mut sum = v[0].clamp(0.0, 1.0);
+    let mut weight = 1.0;
+    for &x in &v[1..n] {
         weight *= omega;
-        sum += weight * sum_noise(p * scale, generator);
+        sum += weight * x;
     }
     sum
 }
@@ -205,22 +220,28 @@ pub fn turbulence(p: DVec3, octaves: u32, omega: f64, lambda: f64, generator: u8
 /// Granite: six octaves from four times the point's frequency, each |noise - 1/2| halving in
 /// weight.
 pub fn granite(p: DVec3, generator: u8) -> f64 {
+    let freqs = [4.0, 8.0, 16.0, 32.0, 64.0, 128.0];
+    let mut v = [0.0; 6];
+    sum_noise_into(&freqs.map(|f| p * f), generator, &mut v);
     let mut sum = 0.0;
-    let mut freq = 4.0;
-    for _ in 0..6 {
-        sum += (clipped_noise(p * freq, generator) - 0.5).abs() * 4.0 / freq;
-        freq *= 2.0;
+    for (x, f) in v.into_iter().zip(freqs) {
+        sum += (x.clamp(0.0, 1.0) - 0.5).abs() * 4.0 / f;
     }
     sum
 }
 
 /// Wrinkles: ten octaves of the clipped noise, weights 1/2, 1/4, ...
 pub fn wrinkles(p: DVec3, generator: u8) -> f64 {
+    let mut freqs = [1.0; 10];
+    for k in 1..10 {
+        freqs[k] = freqs[k - 1] * 2.0;
+    }
+    let mut v = [0.0; 10];
+    sum_noise_into(&freqs.map(|f| p * f), generator, &mut v);
     let mut sum = 0.0;
-    let (mut freq, mut weight) = (1.0, 0.5);
-    for _ in 0..10 {
-        sum += weight * clipped_noise(p * freq, generator);
-        freq *= 2.0;
+    let mut weight = 0.5;
+    for x in v {
+        sum += weight * x.clamp(0.0, 1.0);
         weight *= 0.5;
     }
     sum

@@ -116,7 +116,9 @@ fn shape(pat: &Pattern, v: f64) -> f64 {
     if pat.is_block() {
         return v;
     }
-    let mut v = (v * pat.frequency + pat.phase) % WRAP;
+    let x = v * pat.frequency + pat.phase;
+    // `%` is a software fmod; below WRAP in size it returns x itself, as most values are.
+    let mut v = if x.abs() < WRAP { x } else { x % WRAP };
     if v < 0.0 {
         // Measured: gradient x at x = -0.3 gives 0.7, so negatives wrap by 1, not WRAP.
         v += 1.0;
@@ -167,7 +169,10 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
         // values above 1 are reduced before the 1.00001 wrap).
         PatternKind::Gradient(a) => {
             let v = q.dot(*a);
-            if v > 1.0 {
+            if v > 1.0 && v < 2.0 {
+                // fmod's exact result here (Sterbenz: v − 1 is exact for v in [1, 2]).
+                v - 1.0
+            } else if v > 1.0 {
                 v % 1.0
             } else {
                 v

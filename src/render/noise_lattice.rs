@@ -1,0 +1,422 @@
+//! The lattice noise of generators 1 and 2 and of POV-Ray's vector noise, the hot loop of
+//! every noise-textured scene (skies, woods, granite: 20-70% of their time).
+//!
+//! One corner's contribution to one component is `w·(½e0 + e1·dx + e2·dy + e3·dz)`, e the four
+//! ENTRY values at the corner's hashed position moved 0, 4 or 8 places on for the x, y and z
+//! components. `PACKED` lays those twelve numbers out per position as four rows of (x, y, z,
+//! unused) lanes, with ½e0 already halved (exact: a power of two), so the three components are
+//! one 4-lane multiply-add chain per corner. Every lane does the scalar code's operations in
+//! the scalar code's order, and nothing here is contracted to FMA, so the results are the
+//! scalar code's bits (unit test `packed_lattice_is_the_scalar_lattice`, tests/noise_probes.rs).
+//! With AVX (detected at run time; the build targets x86-64-v2) the lanes are one 256-bit
+//! register; without it the same lanes are plain arrays. The scalar noise (bozo, granite,
+//! wrinkles) puts four corners in the lanes instead and sums their terms in corner order.
+
+use crate::math::DVec3;
+
+use super::noise_data::{ENTRY, HASH_OFFSET, HASH_X, HASH_Y, HASH_Z};
+
+#[inline(always)]
+fn s_curve(t: f64) -> f64 {
+    t * t * (3.0 - 2.0 * t)
+}
+
+/// Twelve ENTRY values of one hashed position as four 32-byte rows: row j holds entry j of
+/// the x, y and z components (positions i+j, i+j+4, i+j+8), row 0 halved.
+#[repr(C, align(32))]
+#[derive(Clone, Copy)]
+struct Packed([[f64; 4]; 4]);
+
+const fn pack() -> [Packed; 256] {
+    let mut t = [Packed([[0.0; 4]; 4]); 256];
+    let mut i = 0;
+    while i < 256 {
+        let mut j = 0;
+        while j < 4 {
+            let mut c = 0;
+            while c < 3 {
+                let v = ENTRY[i + j + 4 * c];
+                t[i].0[j][c] = if j == 0 { 0.5 * v } else { v };
+                c += 1;
+            }
+            j += 1;
+        }
+        i += 1;
+    }
+    t
+}
+
+/// HASH_Z's values are below 256, so 256 positions cover every corner.
+static PACKED: [Packed; 256] = pack();
+
+/// Component 0's four numbers per position (½e0, e1, e2, e3) as one 32-byte row, for the
+/// scalar noise, which takes four corners' rows at once and transposes them into lanes.
+#[repr(C, align(32))]
+#[derive(Clone, Copy)]
+struct Row([f64; 4]);
+
+const fn rows() -> [Row; 256] {
+    let mut t = [Row([0.0; 4]); 256];
+    let mut i = 0;
+    while i < 256 {
+        t[i] = Row([0.5 * ENTRY[i], ENTRY[i + 1], ENTRY[i + 2], ENTRY[i + 3]]);
+        i += 1;
+    }
+    t
+}
+
+static ROWS: [Row; 256] = rows();
+
+/// What the eight corners share: the fractional position, the x·y weights of the four
+/// (dx, dy) columns, the z weights, and each corner's ENTRY position (corner = dx + 2dy + 4dz).
+#[derive(Clone, Copy)]
+struct Cell {
+    t: [f64; 3],
+    wxy: [f64; 4],
+    wz: [f64; 2],
+    entry: [usize; 8],
+}
+
+#[inline(always)]
+fn cell(p: DVec3) -> Cell {
+    let (fx, fy, fz) = (p.x.floor(), p.y.floor(), p.z.floor());
+    let (ix, iy, iz) = (fx as i64, fy as i64, fz as i64);
+    let (tx, ty, tz) = (p.x - fx, p.y - fy, p.z - fz);
+    let (sx, sy, sz) = (s_curve(tx), s_curve(ty), s_curve(tz));
+    let (wx, wy) = ([1.0 - sx, sx], [1.0 - sy, sy]);
+    // The scalar weight is (wx·wy)·wz: the first product is shared by the two z layers.
+    let wxy = [wx[0] * wy[0], wx[1] * wy[0], wx[0] * wy[1], wx[1] * wy[1]];
+    // Each corner's position in ENTRY: a three-stage hash of its coordinates, the first
+    // stages shared between corners (14 table reads instead of 24).
+    let m = |c: i64| (c.wrapping_add(HASH_OFFSET) & 4095) as usize;
+    let hx = [HASH_X[m(ix)] as usize, HASH_X[m(ix + 1)] as usize];
+    let (my, mz) = ([m(iy), m(iy + 1)], [m(iz), m(iz + 1)]);
+    let mut hxy = [0usize; 4];
+    for (k, h) in hxy.iter_mut().enumerate() {
+        // The mask changes nothing (both sides are below 4096) but spares a bounds check.
+        *h = HASH_Y[(hx[k & 1] ^ my[k >> 1]) & 4095] as usize;
+    }
+    let mut entry = [0usize; 8];
+    for (c, e) in entry.iter_mut().enumerate() {
+        *e = HASH_Z[(hxy[c & 3] ^ mz[c >> 2]) & 4095] as usize;
+    }
+    Cell {
+        t: [tx, ty, tz],
+        wxy,
+        wz: [1.0 - sz, sz],
+        entry,
+    }
+}
+
+/// The lattice noise of component 0 (the scalar noise), in about [-0.5, 0.5]; 0.5 plus it
+/// is generator 1's unclipped value.
+#[inline]
+pub fn scalar(p: DVec3) -> f64 {
+    scalar_many([p])[0]
+}
+
+/// `scalar` at up to 10 points (the octaves of granite, wrinkles and scalar turbulence) into
+/// `out`: every point's hash walk first, then the arithmetic, so that the walks' dependent
+/// table reads overlap instead of each waiting for the one before.
+#[inline]
+pub fn scalar_into(ps: &[DVec3], out: &mut [f64]) {
+    #[cfg(target_arch = "x86_64")]
+    if has_avx() {
+        // SAFETY: AVX was detected.
+        return unsafe { scalar_into_avx(ps, out) };
+    }
+    scalar_into_with(ps, out, scalar_lanes)
+}
+
+#[inline(always)]
+fn scalar_into_with(ps: &[DVec3], out: &mut [f64], terms: impl Fn(&Cell) -> f64) {
+    let mut cells = [const { None }; 10];
+    for (c, &p) in cells.iter_mut().zip(ps) {
+        *c = Some(cell(p));
+    }
+    for (o, c) in out.iter_mut().zip(cells.iter().flatten()) {
+        *o = terms(c);
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+fn scalar_into_avx(ps: &[DVec3], out: &mut [f64]) {
+    // SAFETY: this function only runs with AVX enabled.
+    scalar_into_with(ps, out, |c| unsafe { scalar_avx(c) })
+}
+
+/// `scalar_into` for a fixed number of points.
+#[inline]
+pub fn scalar_many<const N: usize>(ps: [DVec3; N]) -> [f64; N] {
+    let mut out = [0.0; N];
+    scalar_into(&ps, &mut out);
+    out
+}
+
+/// `scalar`'s arithmetic one corner at a time.
+#[inline(always)]
+fn scalar_lanes(c: &Cell) -> f64 {
+    let mut out = 0.0;
+    for (k, &i) in c.entry.iter().enumerate() {
+        let e = &PACKED[i].0;
+        let (dx, dy, dz) = (k & 1, (k >> 1) & 1, k >> 2);
+        let (ddx, ddy, ddz) = (c.t[0] - dx as f64, c.t[1] - dy as f64, c.t[2] - dz as f64);
+        let w = c.wxy[k & 3] * c.wz[dz];
+        out += w * (e[0][0] + e[1][0] * ddx + e[2][0] * ddy + e[3][0] * ddz);
+    }
+    out
+}
+
+/// `scalar`'s arithmetic with the four corners of each z layer as the lanes of one AVX
+/// register: their rows are transposed so that lane k holds corner k's numbers, each lane
+/// computes its corner's term as the scalar code does, and the eight terms are summed in
+/// corner order.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn scalar_avx(c: &Cell) -> f64 {
+    use std::arch::x86_64::*;
+    let [tx, ty, tz] = c.t;
+    // SAFETY: the caller guarantees AVX; ROWS' rows are 32-byte aligned.
+    unsafe {
+        let dx = _mm256_setr_pd(tx, tx - 1.0, tx, tx - 1.0);
+        let dy = _mm256_setr_pd(ty, ty, ty - 1.0, ty - 1.0);
+        let wxy = _mm256_loadu_pd(c.wxy.as_ptr());
+        let mut out = 0.0;
+        for (z, entry) in c.entry.chunks_exact(4).enumerate() {
+            let row = |k: usize| _mm256_load_pd(ROWS[entry[k]].0.as_ptr());
+            let (r0, r1, r2, r3) = (row(0), row(1), row(2), row(3));
+            let (t0, t1) = (_mm256_unpacklo_pd(r0, r1), _mm256_unpackhi_pd(r0, r1));
+            let (t2, t3) = (_mm256_unpacklo_pd(r2, r3), _mm256_unpackhi_pd(r2, r3));
+            let e0 = _mm256_permute2f128_pd(t0, t2, 0x20);
+            let e1 = _mm256_permute2f128_pd(t1, t3, 0x20);
+            let e2 = _mm256_permute2f128_pd(t0, t2, 0x31);
+            let e3 = _mm256_permute2f128_pd(t1, t3, 0x31);
+            let dz = _mm256_set1_pd(tz - z as f64);
+            let mut t = _mm256_add_pd(e0, _mm256_mul_pd(e1, dx));
+            t = _mm256_add_pd(t, _mm256_mul_pd(e2, dy));
+            t = _mm256_add_pd(t, _mm256_mul_pd(e3, dz));
+            let w = _mm256_mul_pd(wxy, _mm256_set1_pd(c.wz[z]));
+            let mut terms = [0.0; 4];
+            _mm256_storeu_pd(terms.as_mut_ptr(), _mm256_mul_pd(w, t));
+            for v in terms {
+                out += v;
+            }
+        }
+        out
+    }
+}
+
+/// The three components of the vector noise with plain arrays as lanes.
+#[inline(always)]
+fn vector_lanes(c: &Cell) -> [f64; 3] {
+    let mut out = [0.0; 4];
+    for (k, &i) in c.entry.iter().enumerate() {
+        let e = &PACKED[i].0;
+        let (dx, dy, dz) = (k & 1, (k >> 1) & 1, k >> 2);
+        let (ddx, ddy, ddz) = (c.t[0] - dx as f64, c.t[1] - dy as f64, c.t[2] - dz as f64);
+        let w = c.wxy[k & 3] * c.wz[dz];
+        for (l, o) in out.iter_mut().enumerate() {
+            *o += w * (e[0][l] + e[1][l] * ddx + e[2][l] * ddy + e[3][l] * ddz);
+        }
+    }
+    [out[0], out[1], out[2]]
+}
+
+/// The same with one AVX register as the lanes.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn vector_avx(c: &Cell) -> [f64; 3] {
+    use std::arch::x86_64::*;
+    // SAFETY: the caller guarantees AVX; PACKED's rows are 32-byte aligned, as the aligned
+    // loads need.
+    unsafe {
+        let dx = [_mm256_set1_pd(c.t[0]), _mm256_set1_pd(c.t[0] - 1.0)];
+        let dy = [_mm256_set1_pd(c.t[1]), _mm256_set1_pd(c.t[1] - 1.0)];
+        let dz = [_mm256_set1_pd(c.t[2]), _mm256_set1_pd(c.t[2] - 1.0)];
+        let mut acc = _mm256_setzero_pd();
+        for (k, &i) in c.entry.iter().enumerate() {
+            let e = PACKED[i].0.as_ptr() as *const f64;
+            let w = _mm256_set1_pd(c.wxy[k & 3] * c.wz[k >> 2]);
+            let mut t = _mm256_add_pd(
+                _mm256_load_pd(e),
+                _mm256_mul_pd(_mm256_load_pd(e.add(4)), dx[k & 1]),
+            );
+            t = _mm256_add_pd(t, _mm256_mul_pd(_mm256_load_pd(e.add(8)), dy[(k >> 1) & 1]));
+            t = _mm256_add_pd(t, _mm256_mul_pd(_mm256_load_pd(e.add(12)), dz[k >> 2]));
+            acc = _mm256_add_pd(acc, _mm256_mul_pd(w, t));
+        }
+        let mut out = [0.0; 4];
+        _mm256_storeu_pd(out.as_mut_ptr(), acc);
+        [out[0], out[1], out[2]]
+    }
+}
+
+/// Whether the AVX path may run (std caches the CPU query).
+#[inline(always)]
+fn has_avx() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        std::arch::is_x86_feature_detected!("avx")
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
+}
+
+/// POV-Ray's vector noise: the lattice noise of components 0, 4 and 8 places on.
+#[inline]
+pub fn vector(p: DVec3) -> DVec3 {
+    #[cfg(target_arch = "x86_64")]
+    if has_avx() {
+        // SAFETY: AVX was detected.
+        return unsafe { vector_avx_fn(p) };
+    }
+    DVec3::from_array(vector_lanes(&cell(p)))
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+fn vector_avx_fn(p: DVec3) -> DVec3 {
+    // SAFETY: this function only runs with AVX enabled.
+    DVec3::from_array(unsafe { vector_avx(&cell(p)) })
+}
+
+/// Octaves of vector noise, each `lambda` times finer and `omega` times weaker than the one
+/// before, summed (turbulence's displacement; lambda and omega already as POV-Ray rounds
+/// them; at most 10 octaves). Every octave's hash walk comes first, as in `scalar_many`.
+#[inline(always)]
+fn octaves_with(
+    p: DVec3,
+    octaves: u32,
+    omega: f64,
+    lambda: f64,
+    terms: impl Fn(&Cell) -> [f64; 3],
+) -> DVec3 {
+    let n = octaves.min(10) as usize;
+    let mut cells = [const { None }; 10];
+    let mut scale = 1.0;
+    for c in &mut cells[..n] {
+        *c = Some(cell(p * scale));
+        scale *= lambda;
+    }
+    let mut sum = DVec3::ZERO;
+    let mut weight = 1.0;
+    for c in cells[..n].iter().flatten() {
+        sum += weight * DVec3::from_array(terms(c));
+        weight *= omega;
+    }
+    sum
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+fn octaves_avx(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
+    // SAFETY: this function only runs with AVX enabled.
+    octaves_with(p, octaves, omega, lambda, |c| unsafe { vector_avx(c) })
+}
+
+/// `octaves` octaves (at most 10) of vector noise from `p`.
+pub fn vector_octaves(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
+    #[cfg(target_arch = "x86_64")]
+    if has_avx() {
+        // SAFETY: AVX was detected.
+        return unsafe { octaves_avx(p, octaves, omega, lambda) };
+    }
+    octaves_with(p, octaves, omega, lambda, vector_lanes)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The original formulation: one scalar chain per corner and component, read straight
+    /// from ENTRY.
+    fn reference(p: DVec3, k: usize) -> f64 {
+        let (fx, fy, fz) = (p.x.floor(), p.y.floor(), p.z.floor());
+        let (ix, iy, iz) = (fx as i64, fy as i64, fz as i64);
+        let t = [p.x - fx, p.y - fy, p.z - fz];
+        let s = t.map(s_curve);
+        let m = |c: i64| (c.wrapping_add(HASH_OFFSET) & 4095) as usize;
+        let mut out = 0.0;
+        for corner in 0..8usize {
+            let d = [corner & 1, (corner >> 1) & 1, corner >> 2];
+            let w: [f64; 3] = std::array::from_fn(|a| if d[a] == 1 { s[a] } else { 1.0 - s[a] });
+            let hx = HASH_X[m(ix + d[0] as i64)] as usize;
+            let hy = HASH_Y[hx ^ m(iy + d[1] as i64)] as usize;
+            let i = HASH_Z[hy ^ m(iz + d[2] as i64)] as usize + k;
+            let dd: [f64; 3] = std::array::from_fn(|a| t[a] - d[a] as f64);
+            out += w[0]
+                * w[1]
+                * w[2]
+                * (0.5 * ENTRY[i]
+                    + ENTRY[i + 1] * dd[0]
+                    + ENTRY[i + 2] * dd[1]
+                    + ENTRY[i + 3] * dd[2]);
+        }
+        out
+    }
+
+    #[test]
+    fn packed_lattice_is_the_scalar_lattice() {
+        for n in 0..20_000 {
+            let t = n as f64 * 0.0137;
+            let p = DVec3::new(t.sin() * 50.0, t * 0.31 - 7.0, (t * 0.7).cos() * 33.0);
+            let want = [reference(p, 0), reference(p, 4), reference(p, 8)];
+            assert_eq!(scalar(p).to_bits(), want[0].to_bits(), "{p}");
+            assert_eq!(scalar_lanes(&cell(p)).to_bits(), want[0].to_bits(), "{p}");
+            assert_eq!(
+                vector(p).to_array().map(f64::to_bits),
+                want.map(f64::to_bits),
+                "{p}"
+            );
+            assert_eq!(
+                vector_lanes(&cell(p)).map(f64::to_bits),
+                want.map(f64::to_bits),
+                "{p}"
+            );
+        }
+    }
+
+    #[test]
+    fn batched_scalar_is_the_scalar_lattice() {
+        for n in 0..2_000 {
+            let p = DVec3::new(n as f64 * 0.37 - 300.0, (n as f64).sqrt(), -0.01 * n as f64);
+            let ps = [p, p * 2.0, p * 4.0, p * 8.0, p * 16.0, p * 32.0];
+            let got = scalar_many(ps);
+            // The path without AVX too (this machine may take the AVX one above).
+            let mut lanes = [0.0; 6];
+            scalar_into_with(&ps, &mut lanes, scalar_lanes);
+            for (k, (v, l)) in got.into_iter().zip(lanes).enumerate() {
+                let want = reference(p * (1 << k) as f64, 0).to_bits();
+                assert_eq!((v.to_bits(), l.to_bits()), (want, want));
+            }
+        }
+    }
+
+    #[test]
+    fn octaves_are_the_scalar_lattice_octaves() {
+        for n in 0..2_000 {
+            let t = n as f64 * 0.173;
+            let p = DVec3::new(t.cos() * 9.0, t * 0.05, t.sin() * 4.0 - 2.0);
+            let a = vector_octaves(p, 10, 0.5, 2.5);
+            let (mut b, mut scale, mut weight) = (DVec3::ZERO, 1.0, 1.0);
+            for _ in 0..10 {
+                let q = p * scale;
+                b += weight * DVec3::new(reference(q, 0), reference(q, 4), reference(q, 8));
+                scale *= 2.5;
+                weight *= 0.5;
+            }
+            let lanes = octaves_with(p, 10, 0.5, 2.5, vector_lanes);
+            let bits = |v: DVec3| v.to_array().map(f64::to_bits);
+            assert_eq!((bits(a), bits(lanes)), (bits(b), bits(b)));
+        }
+    }
+}
