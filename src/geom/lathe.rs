@@ -189,8 +189,8 @@ impl Lathe {
         }
         cand.sort_unstable_by(|p, q| p.t.total_cmp(&q.t).then(p.part.cmp(&q.part)));
         let mut best: Option<Hit> = None;
-        for k in 0..cand.len() {
-            let (floor, i) = (cand[k].t, cand[k].part);
+        for cd in cand.iter() {
+            let (floor, i) = (cd.t, cd.part);
             if best.is_some_and(|h| floor > h.t) || floor >= tmax {
                 break;
             }
