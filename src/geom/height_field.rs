@@ -36,9 +36,25 @@ pub struct HeightData {
     pub heights: Vec<u16>,
     pub smooth: bool,
     pub water_level: f64,
+    /// The min/max pyramid over `heights`, made by the first `HeightField` built on this grid
+    /// and shared by the others: `trace()` and `inside()` in a scene's loops build the object
+    /// anew for every call (advanced/landscape places 256 trees on a 500×500 field). It
+    /// depends only on the grid, which is not changed once a shape uses it.
+    pyramid: std::sync::OnceLock<std::sync::Arc<[Level]>>,
 }
 
 impl HeightData {
+    pub fn new(width: usize, depth: usize, heights: Vec<u16>) -> HeightData {
+        HeightData {
+            width,
+            depth,
+            heights,
+            smooth: false,
+            water_level: 0.0,
+            pyramid: Default::default(),
+        }
+    }
+
     fn h(&self, i: usize, j: usize) -> f64 {
         self.heights[j * self.width + i] as f64 * SCALE
     }
@@ -57,7 +73,7 @@ struct Level {
 pub struct HeightField {
     data: std::sync::Arc<HeightData>,
     /// Level 0 has one block per cell; the last level has a single block.
-    levels: Vec<Level>,
+    levels: std::sync::Arc<[Level]>,
     bounds: Aabb,
 }
 
@@ -72,50 +88,57 @@ struct GridRay<'a> {
     out: &'a mut Vec<Hit>,
 }
 
+/// The min/max pyramid of a grid of at least 2×2 vertices.
+fn pyramid(data: &HeightData) -> std::sync::Arc<[Level]> {
+    let w = data.width;
+    let (nx, nz) = (w - 1, data.depth - 1);
+    let mut min = vec![0u16; nx * nz];
+    let mut max = vec![0u16; nx * nz];
+    for j in 0..nz {
+        for i in 0..nx {
+            let c = [
+                data.heights[j * w + i],
+                data.heights[j * w + i + 1],
+                data.heights[(j + 1) * w + i],
+                data.heights[(j + 1) * w + i + 1],
+            ];
+            min[j * nx + i] = *c.iter().min().unwrap();
+            max[j * nx + i] = *c.iter().max().unwrap();
+        }
+    }
+    let mut levels = vec![Level { nx, nz, min, max }];
+    while levels.last().is_some_and(|l| l.nx > 1 || l.nz > 1) {
+        let l = levels.last().unwrap();
+        let (px, pz) = (l.nx.div_ceil(2), l.nz.div_ceil(2));
+        let mut min = vec![u16::MAX; px * pz];
+        let mut max = vec![0u16; px * pz];
+        for j in 0..l.nz {
+            for i in 0..l.nx {
+                let k = (j / 2) * px + i / 2;
+                min[k] = min[k].min(l.min[j * l.nx + i]);
+                max[k] = max[k].max(l.max[j * l.nx + i]);
+            }
+        }
+        levels.push(Level {
+            nx: px,
+            nz: pz,
+            min,
+            max,
+        });
+    }
+    levels.into()
+}
+
 impl HeightField {
     pub fn new(data: std::sync::Arc<HeightData>) -> HeightField {
         let (w, h) = (data.width, data.depth);
         let ok = w >= 2 && h >= 2 && data.heights.len() == w * h;
-        let mut levels = Vec::new();
-        let mut top = 0.0;
-        if ok {
-            let (nx, nz) = (w - 1, h - 1);
-            let mut min = vec![0u16; nx * nz];
-            let mut max = vec![0u16; nx * nz];
-            for j in 0..nz {
-                for i in 0..nx {
-                    let c = [
-                        data.heights[j * w + i],
-                        data.heights[j * w + i + 1],
-                        data.heights[(j + 1) * w + i],
-                        data.heights[(j + 1) * w + i + 1],
-                    ];
-                    min[j * nx + i] = *c.iter().min().unwrap();
-                    max[j * nx + i] = *c.iter().max().unwrap();
-                }
-            }
-            levels.push(Level { nx, nz, min, max });
-            while levels.last().is_some_and(|l| l.nx > 1 || l.nz > 1) {
-                let l = levels.last().unwrap();
-                let (px, pz) = (l.nx.div_ceil(2), l.nz.div_ceil(2));
-                let mut min = vec![u16::MAX; px * pz];
-                let mut max = vec![0u16; px * pz];
-                for j in 0..l.nz {
-                    for i in 0..l.nx {
-                        let k = (j / 2) * px + i / 2;
-                        min[k] = min[k].min(l.min[j * l.nx + i]);
-                        max[k] = max[k].max(l.max[j * l.nx + i]);
-                    }
-                }
-                levels.push(Level {
-                    nx: px,
-                    nz: pz,
-                    min,
-                    max,
-                });
-            }
-            top = levels.last().unwrap().max[0] as f64 * SCALE;
-        }
+        let levels = if ok {
+            data.pyramid.get_or_init(|| pyramid(&data)).clone()
+        } else {
+            std::sync::Arc::from([])
+        };
+        let top = levels.last().map_or(0.0, |l| l.max[0] as f64 * SCALE);
         let bounds = if ok && top >= data.water_level {
             Aabb::new(
                 DVec3::new(0.0, -SOLID_DEPTH, 0.0),
@@ -485,6 +508,7 @@ mod tests {
             heights,
             smooth: false,
             water_level: water,
+            pyramid: Default::default(),
         }))
     }
 
@@ -594,6 +618,7 @@ mod tests {
             heights: vec![0; 5],
             smooth: true,
             water_level: 0.0,
+            pyramid: Default::default(),
         }));
         assert!(flat.bounds().is_empty() && down(&flat, 0.5, 0.5).is_none());
         assert!(!flat.inside(DVec3::splat(0.5)));
@@ -619,6 +644,7 @@ mod tests {
             heights,
             smooth: true,
             water_level: 0.0,
+            pyramid: Default::default(),
         }));
         // At the middle vertex the central difference is the true slope of 0.5 x² at 0.5.
         let (_, n) = down(&hf, 0.5 + 1e-9, 0.5).unwrap();

@@ -139,6 +139,7 @@ impl JuliaFn {
 
 type Q = [f64; 4];
 
+#[inline(always)]
 fn qmul(p: &Q, q: &Q) -> Q {
     [
         p[0] * q[0] - p[1] * q[1] - p[2] * q[2] - p[3] * q[3],
@@ -148,12 +149,19 @@ fn qmul(p: &Q, q: &Q) -> Q {
     ]
 }
 
+#[inline(always)]
 fn qadd(p: &Q, q: &Q) -> Q {
     std::array::from_fn(|i| p[i] + q[i])
 }
 
+#[inline(always)]
 fn qnorm(h: &Q) -> f64 {
-    (h[0] * h[0] + h[1] * h[1] + h[2] * h[2] + h[3] * h[3]).sqrt()
+    qnorm_sq(h).sqrt()
+}
+
+#[inline(always)]
+fn qnorm_sq(h: &Q) -> f64 {
+    h[0] * h[0] + h[1] * h[1] + h[2] * h[2] + h[3] * h[3]
 }
 
 /// The two complex halves of a hypercomplex number.
@@ -167,8 +175,32 @@ fn split(h: &Q) -> (C, C) {
 /// What the iteration says about a point.
 enum Orbit {
     Inside,
-    /// Outside, with the distance estimate ln|h_n| / |h_n'|.
-    Outside(f64),
+    /// Outside, with |h_n| and |h_n'|: the distance estimate is ln|h_n| / |h_n'| (`ln r / 1`
+    /// is `ln r` to the bit, so an escape before any iteration has `dr` 1).
+    Outside {
+        r: f64,
+        dr: f64,
+    },
+}
+
+/// How far the march advances after a sample: the distance estimate, at least `min_step`.
+fn march_step(orbit: &Orbit, min_step: f64) -> f64 {
+    match *orbit {
+        // ln r <= r - 1, with a margin far above the logarithm's rounding once r is a little
+        // above 1 (then (r - 1)² / 2 > 1e-13 r), and rounded division is monotone: when
+        // (r - 1) / dr is below the least step, so is the estimate, and the step is the least
+        // one, found without the logarithm.
+        Orbit::Outside { r, dr } if r >= 1.0 + 1e-6 && (r - 1.0) / dr < min_step => min_step,
+        Orbit::Outside { r, dr } => {
+            let de = r.ln() / dr;
+            if de.is_finite() {
+                de.max(min_step)
+            } else {
+                min_step
+            }
+        }
+        Orbit::Inside => min_step,
+    }
 }
 
 #[derive(Clone, Debug)]
@@ -182,6 +214,32 @@ pub struct Julia {
     pub slice: ([f64; 4], f64),
     /// Escape radius of the orbit and radius of the sphere the march runs in.
     bailout: f64,
+    /// The largest squared norm whose square root is at most the bailout: `sqrt(s) > bailout`
+    /// exactly when `s > bail_sq` (the rounded square root is monotone), so the inside test
+    /// needs no square root.
+    bail_sq: f64,
+}
+
+/// The largest non-negative `s` with `s.sqrt() <= b`, found on the bit patterns (ordered as
+/// integers for non-negative floats).
+fn sqrt_threshold(b: f64) -> f64 {
+    if b.is_nan() || b < 0.0 {
+        return -1.0;
+    }
+    if b == f64::INFINITY {
+        return f64::INFINITY;
+    }
+    // sqrt(lo) <= b < sqrt(hi) holds throughout.
+    let (mut lo, mut hi) = (0u64, f64::INFINITY.to_bits());
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if f64::from_bits(mid).sqrt() <= b {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    f64::from_bits(lo)
 }
 
 impl Julia {
@@ -214,6 +272,7 @@ impl Julia {
             precision: precision.max(1.0),
             slice,
             bailout,
+            bail_sq: sqrt_threshold(bailout),
         }
     }
 
@@ -240,6 +299,7 @@ impl Julia {
         ([p.x, p.y, z, w], axes)
     }
 
+    #[inline(always)]
     fn quaternion_step(&self, h: &Q) -> Q {
         let h2 = qmul(h, h);
         let f = if self.func == JuliaFn::Cube {
@@ -251,46 +311,88 @@ impl Julia {
     }
 
     fn orbit(&self, p: DVec3) -> Orbit {
+        self.orbit_with::<true>(p)
+    }
+
+    /// The orbit of `p`; with `DE` false the distance estimate is left out (0), which saves
+    /// its logarithm and products where only inside-ness is asked (the bisection): the
+    /// iterates, and so the answer, are the same.
+    #[inline(always)]
+    fn orbit_with<const DE: bool>(&self, p: DVec3) -> Orbit {
+        let (h, _) = self.lift(p);
+        match self.algebra {
+            Algebra::Quaternion if self.func == JuliaFn::Cube => {
+                self.quaternion_orbit::<true, DE>(h)
+            }
+            Algebra::Quaternion => self.quaternion_orbit::<false, DE>(h),
+            Algebra::Hypercomplex => self.hypercomplex_orbit::<DE>(h),
+        }
+    }
+
+    #[inline(always)]
+    fn quaternion_orbit<const CUBE: bool, const DE: bool>(&self, mut h: Q) -> Orbit {
+        let steps = self.max_iteration.saturating_sub(1);
+        if !DE {
+            let bail_sq = self.bail_sq;
+            if qnorm_sq(&h) > bail_sq {
+                return Orbit::Outside { r: 0.0, dr: 0.0 };
+            }
+            for _ in 0..steps {
+                let h2 = qmul(&h, &h);
+                let f = if CUBE { qmul(&h, &h2) } else { h2 };
+                h = qadd(&f, &self.param);
+                if qnorm_sq(&h) > bail_sq {
+                    return Orbit::Outside { r: 0.0, dr: 0.0 };
+                }
+            }
+            return Orbit::Inside;
+        }
         let bail = self.bailout;
-        let (mut h, _) = self.lift(p);
         let mut r = qnorm(&h);
         let mut dr = 1.0;
         if r > bail {
-            return Orbit::Outside(r.ln());
+            return Orbit::Outside { r, dr: 1.0 };
+        }
+        for _ in 0..steps {
+            let h2 = qmul(&h, &h);
+            let f = if CUBE { qmul(&h, &h2) } else { h2 };
+            h = qadd(&f, &self.param);
+            dr *= if CUBE { 3.0 * r * r } else { 2.0 * r };
+            r = qnorm(&h);
+            if r > bail {
+                return Orbit::Outside { r, dr };
+            }
+        }
+        Orbit::Inside
+    }
+
+    fn hypercomplex_orbit<const DE: bool>(&self, h: Q) -> Orbit {
+        let bail = self.bailout;
+        let mut r = qnorm(&h);
+        let mut dr = 1.0;
+        if r > bail {
+            return Orbit::Outside { r, dr: 1.0 };
         }
         let steps = self.max_iteration.saturating_sub(1);
-        match self.algebra {
-            Algebra::Quaternion => {
-                let cube = self.func == JuliaFn::Cube;
-                for _ in 0..steps {
-                    h = self.quaternion_step(&h);
-                    dr *= if cube { 3.0 * r * r } else { 2.0 * r };
-                    r = qnorm(&h);
-                    if r > bail {
-                        return Orbit::Outside(r.ln() / dr);
-                    }
-                }
+        let (mut z1, mut z2) = split(&h);
+        let (c1, c2) = split(&self.param);
+        for _ in 0..steps {
+            z1 = self.func.apply(z1) + c1;
+            z2 = self.func.apply(z2) + c2;
+            if DE {
+                dr *= 2.0 * r;
             }
-            Algebra::Hypercomplex => {
-                let (mut z1, mut z2) = split(&h);
-                let (c1, c2) = split(&self.param);
-                for _ in 0..steps {
-                    z1 = self.func.apply(z1) + c1;
-                    z2 = self.func.apply(z2) + c2;
-                    dr *= 2.0 * r;
-                    r = (0.5 * (z1.norm_sqr() + z2.norm_sqr())).sqrt();
-                    // NaN does not escape (POV-Ray compares `> bailout`).
-                    if r > bail {
-                        return Orbit::Outside(r.ln() / dr);
-                    }
-                }
+            r = (0.5 * (z1.norm_sqr() + z2.norm_sqr())).sqrt();
+            // NaN does not escape (POV-Ray compares `> bailout`).
+            if r > bail {
+                return Orbit::Outside { r, dr };
             }
         }
         Orbit::Inside
     }
 
     fn is_in(&self, p: DVec3) -> bool {
-        matches!(self.orbit(p), Orbit::Inside)
+        matches!(self.orbit_with::<false>(p), Orbit::Inside)
     }
 
     /// Crossings along the unit direction `u` from `o` (object space) beyond `tmin`, as
@@ -308,10 +410,7 @@ impl Julia {
             return;
         }
         let min_step = 1.0 / self.precision;
-        let step = |orbit: &Orbit| match orbit {
-            Orbit::Outside(de) if de.is_finite() => de.max(min_step),
-            _ => min_step,
-        };
+        let step = |orbit: &Orbit| march_step(orbit, min_step);
         let mut t = (entry + ENTRY_EPS).max(0.0);
         let mut prev: Option<(f64, bool)> = None;
         if t > 0.0 {

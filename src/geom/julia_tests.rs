@@ -350,3 +350,69 @@ fn zero_parameter_ball_is_found_one_step_in() {
     assert!(hit(0.865).is_some());
     assert!(hit(0.867).is_none());
 }
+
+/// The inside test compares squared norms with `sqrt_threshold(bailout)` instead of taking
+/// square roots: the two comparisons must agree on every value (exactly, no tolerance: the
+/// pictures must not move).
+#[test]
+fn sqrt_threshold_decides_as_the_square_root() {
+    let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+    let mut rnd = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        seed
+    };
+    let mut bails = vec![2.0, 4.0, 1.0, 1.5, 0.0, 1e-300, 1e300];
+    for _ in 0..200 {
+        bails.push(1.0 + (rnd() >> 11) as f64 / (1u64 << 53) as f64);
+    }
+    for b in bails {
+        let t = sqrt_threshold(b);
+        assert!(t.sqrt() <= b, "{b}");
+        assert!(f64::from_bits(t.to_bits() + 1).sqrt() > b, "{b}");
+        let b2 = b * b;
+        for k in 0..2000u64 {
+            let s = if k < 1000 {
+                // Around b² to the last bits.
+                f64::from_bits(b2.to_bits().wrapping_add(k).wrapping_sub(500))
+            } else {
+                b2 * (rnd() >> 11) as f64 / (1u64 << 52) as f64
+            };
+            assert_eq!(s.sqrt() > b, s > t, "b {b} s {s}");
+        }
+        let nan = f64::from_bits(f64::NAN.to_bits() | std::hint::black_box(1));
+        assert_eq!(nan > t, nan.sqrt() > b);
+        assert!(f64::INFINITY > t);
+    }
+}
+
+/// The march's step skips the logarithm when `r - 1` already bounds the estimate below the
+/// least step: the step must be the estimate's to the bit (`max(ln r / dr, min_step)`).
+#[test]
+fn march_step_is_the_estimate_to_the_bit() {
+    let mut seed = 0x2545_f491_4f6c_dd1du64;
+    let mut unit = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for _ in 0..200_000 {
+        let r = 1.0 + 20.0 * unit().powi(3);
+        let dr = 10f64.powf(12.0 * unit() - 4.0);
+        let min_step = 1.0 / (1.0 + 40.0 * unit());
+        let de = r.ln() / dr;
+        let want = if de.is_finite() {
+            de.max(min_step)
+        } else {
+            min_step
+        };
+        let got = march_step(&Orbit::Outside { r, dr }, min_step);
+        assert_eq!(
+            got.to_bits(),
+            want.to_bits(),
+            "r {r} dr {dr} min {min_step}"
+        );
+    }
+}

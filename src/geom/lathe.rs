@@ -122,27 +122,7 @@ impl Lathe {
         let c = o.x * o.x + o.z * o.z;
         let dy = u.y;
         for (i, pc) in self.pieces.iter().enumerate() {
-            // The ray must pass through the piece's own cylindrical shell.
-            let r_max = pc.lo[0].abs().max(pc.hi[0].abs());
-            let disc = b * b - a * (c - r_max * r_max);
-            if disc < 0.0 && c > r_max * r_max {
-                continue;
-            }
-            let (mut lo, mut hi) = (t_lo, t_hi);
-            if a > 0.0 {
-                let h = disc.max(0.0).sqrt();
-                lo = lo.max((-b - h) / a);
-                hi = hi.min((-b + h) / a);
-            }
-            if dy != 0.0 {
-                let (y0, y1) = ((pc.lo[1] - o.y) / dy, (pc.hi[1] - o.y) / dy);
-                lo = lo.max(y0.min(y1));
-                hi = hi.min(y0.max(y1));
-            } else if o.y < pc.lo[1] || o.y > pc.hi[1] {
-                continue;
-            }
-            // A degenerate ray leaves NaN bounds: nothing to find.
-            if lo.is_nan() || hi.is_nan() || lo > hi + 1e-9 {
+            if !Self::may_cross(pc, o, [a, b, c], dy, t_lo, t_hi) {
                 continue;
             }
             if dy.abs() >= FLAT {
@@ -151,6 +131,85 @@ impl Lathe {
                 self.flat(pc, i, o, [a, b, c], dy, found);
             }
         }
+    }
+
+    /// Whether the ray's stretch [t_lo, t_hi] passes through the piece's own cylindrical shell
+    /// and height band.
+    fn may_cross(pc: &Piece, o: DVec3, [a, b, c]: [f64; 3], dy: f64, t_lo: f64, t_hi: f64) -> bool {
+        let r_max = pc.lo[0].abs().max(pc.hi[0].abs());
+        let disc = b * b - a * (c - r_max * r_max);
+        if disc < 0.0 && c > r_max * r_max {
+            return false;
+        }
+        let (mut lo, mut hi) = (t_lo, t_hi);
+        if a > 0.0 {
+            let h = disc.max(0.0).sqrt();
+            lo = lo.max((-b - h) / a);
+            hi = hi.min((-b + h) / a);
+        }
+        if dy != 0.0 {
+            let (y0, y1) = ((pc.lo[1] - o.y) / dy, (pc.hi[1] - o.y) / dy);
+            lo = lo.max(y0.min(y1));
+            hi = hi.min(y0.max(y1));
+        } else if o.y < pc.lo[1] || o.y > pc.hi[1] {
+            return false;
+        }
+        // A degenerate ray leaves NaN bounds: nothing to find.
+        !(lo.is_nan() || hi.is_nan() || lo > hi + 1e-9)
+    }
+
+    /// `intersect_first` for a ray that is not nearly horizontal: the crossings of a piece
+    /// then have `t = (y(s) − oy) / dy` with `y(s)` in the piece's height band, so the band
+    /// bounds them below (less a margin far above rounding). Pieces are taken by that bound
+    /// and the search stops beyond the best crossing found; a crossing replaces the best
+    /// when its `t` is less, or equal and from an earlier piece, which is the default's
+    /// choice (the first least `t` in `intersect_all`'s order) to the bit.
+    fn first_sloped(
+        &self,
+        (o, u, lo, hi, back): (DVec3, DVec3, f64, f64, f64),
+        tmax: f64,
+        cand: &mut Vec<Hit>,
+    ) -> Option<Hit> {
+        let shift = lo;
+        let o = o + u * shift;
+        let (t_lo, t_hi) = (0.0, hi - shift);
+        let a = u.x * u.x + u.z * u.z;
+        let b = o.x * u.x + o.z * u.z;
+        let c = o.x * o.x + o.z * o.z;
+        let dy = u.y;
+        cand.clear();
+        for (i, pc) in self.pieces.iter().enumerate() {
+            if Self::may_cross(pc, o, [a, b, c], dy, t_lo, t_hi) {
+                let (y0, y1) = ((pc.lo[1] - o.y) / dy, (pc.hi[1] - o.y) / dy);
+                let t = y0.min(y1);
+                let floor =
+                    t - 1e-9 * (t.abs() + (pc.lo[1].abs() + pc.hi[1].abs() + o.y.abs()) / dy.abs());
+                cand.push(Hit::with_part((floor + shift) * back, i as u32));
+            }
+        }
+        cand.sort_unstable_by(|p, q| p.t.total_cmp(&q.t).then(p.part.cmp(&q.part)));
+        let mut best: Option<Hit> = None;
+        for cd in cand.iter() {
+            let (floor, i) = (cd.t, cd.part);
+            if best.is_some_and(|h| floor > h.t) || floor >= tmax {
+                break;
+            }
+            let pc = &self.pieces[i as usize];
+            self.sloped(pc, i as usize, o, [a, b, c], dy, &mut |t, i, s| {
+                let t = (t + shift) * back;
+                if t > EPSILON
+                    && t < tmax
+                    && best.is_none_or(|h| t < h.t || (t == h.t && (i as u32) < h.part))
+                {
+                    best = Some(Hit {
+                        t,
+                        part: i as u32,
+                        uv: [s, 0.0],
+                    });
+                }
+            });
+        }
+        best
     }
 
     fn sloped(
@@ -307,6 +366,20 @@ impl Shape for Lathe {
 
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
         self.each_hit(ray, |h| out.push(h));
+    }
+
+    fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
+        let setup = self.setup(ray)?;
+        if setup.1.y.abs() >= FLAT {
+            return self.first_sloped(setup, tmax, scratch);
+        }
+        scratch.clear();
+        self.intersect_all(ray, scratch);
+        scratch
+            .iter()
+            .filter(|h| h.t > EPSILON && h.t < tmax)
+            .min_by(|a, b| a.t.total_cmp(&b.t))
+            .copied()
     }
 
     fn inside(&self, p: DVec3) -> bool {

@@ -171,9 +171,10 @@ impl Prism {
         }
     }
 
-    fn walls(&self, ray: &Ray, out: &mut Vec<Hit>) {
+    /// The plane holding the ray and the sweep direction, `g(q) = n · (q, 1) + k`, as
+    /// (nx, ny + k, nz); None when the ray runs along the sweep direction.
+    fn cut_plane(&self, ray: &Ray) -> Option<(f64, f64, f64)> {
         let (o, d) = (ray.origin, ray.dir);
-        // The plane holding the ray and the sweep direction: g(q) = n · (q, 1) + k.
         let (nx, ny, nz, k) = if self.conic {
             let n = o.cross(d);
             (n.x, n.y, n.z, 0.0)
@@ -181,45 +182,144 @@ impl Prism {
             (-d.z, 0.0, d.x, d.z * o.x - d.x * o.z)
         };
         if nx == 0.0 && nz == 0.0 {
+            return None;
+        }
+        Some((nx, ny + k, nz))
+    }
+
+    /// Whether the cut plane can meet piece `pc`: it must separate the piece's bounding box
+    /// corners.
+    fn may_cut(pc: &Piece, g: impl Fn(P2) -> f64) -> bool {
+        let c = [
+            g(pc.lo),
+            g(pc.hi),
+            g([pc.lo[0], pc.hi[1]]),
+            g([pc.hi[0], pc.lo[1]]),
+        ];
+        !(c.iter().all(|&v| v > 0.0) || c.iter().all(|&v| v < 0.0))
+    }
+
+    /// The wall crossings of piece `i`, in increasing s.
+    fn piece_hits(&self, ray: &Ray, plane: (f64, f64, f64), i: usize, mut found: impl FnMut(Hit)) {
+        let (o, d) = (ray.origin, ray.dir);
+        let (nx, c0, nz) = plane;
+        let g = |q: P2| nx * q[0] + nz * q[1] + c0;
+        let pc = &self.pieces[i];
+        let (g0, g1) = (g(pc.p0), g(pc.p1));
+        let mut hit = |s: f64, q: P2| {
+            if let Some(t) = self.wall_t(o, d, q) {
+                found(Hit {
+                    t,
+                    part: i as u32,
+                    uv: [s, 0.0],
+                });
+            }
+        };
+        if pc.is_linear() {
+            if (g0 >= 0.0) != (g1 >= 0.0) {
+                let s = g0 / (g0 - g1);
+                let q = [
+                    pc.p0[0] + s * (pc.p1[0] - pc.p0[0]),
+                    pc.p0[1] + s * (pc.p1[1] - pc.p0[1]),
+                ];
+                hit(s, q);
+            }
             return;
         }
-        let g = |q: P2| nx * q[0] + nz * q[1] + (ny + k);
+        let mut c: [f64; 4] = std::array::from_fn(|j| nx * pc.x[j] + nz * pc.y[j]);
+        c[0] += c0;
+        sign_changes(&c, 0.0, 1.0, g0, g1, |s| hit(s, pc.at(s)));
+    }
+
+    fn walls(&self, ray: &Ray, out: &mut Vec<Hit>) {
+        let Some(plane) = self.cut_plane(ray) else {
+            return;
+        };
+        let (nx, c0, nz) = plane;
+        let g = |q: P2| nx * q[0] + nz * q[1] + c0;
         for (i, pc) in self.pieces.iter().enumerate() {
-            // The plane must separate the piece's bounding box corners.
-            let c = [
-                g(pc.lo),
-                g(pc.hi),
-                g([pc.lo[0], pc.hi[1]]),
-                g([pc.hi[0], pc.lo[1]]),
-            ];
-            if c.iter().all(|&v| v > 0.0) || c.iter().all(|&v| v < 0.0) {
-                continue;
+            if Self::may_cut(pc, g) {
+                self.piece_hits(ray, plane, i, |h| out.push(h));
             }
-            let (g0, g1) = (g(pc.p0), g(pc.p1));
-            let mut hit = |s: f64, q: P2| {
-                if let Some(t) = self.wall_t(o, d, q) {
-                    out.push(Hit {
-                        t,
-                        part: i as u32,
-                        uv: [s, 0.0],
-                    });
-                }
-            };
-            if pc.is_linear() {
-                if (g0 >= 0.0) != (g1 >= 0.0) {
-                    let s = g0 / (g0 - g1);
-                    let q = [
-                        pc.p0[0] + s * (pc.p1[0] - pc.p0[0]),
-                        pc.p0[1] + s * (pc.p1[1] - pc.p0[1]),
-                    ];
-                    hit(s, q);
-                }
-                continue;
-            }
-            let mut c: [f64; 4] = std::array::from_fn(|j| nx * pc.x[j] + nz * pc.y[j]);
-            c[0] += ny + k;
-            sign_changes(&c, 0.0, 1.0, g0, g1, |s| hit(s, pc.at(s)));
         }
+    }
+
+    /// A lower bound of the `t` any wall crossing of piece `pc` can get from `wall_t` (linear
+    /// sweep): the least of the linear `t(q)` over the piece's box, less a margin far above
+    /// the rounding of `wall_t` and of the curve's points (a few ulps of the terms).
+    fn wall_t_floor(pc: &Piece, o: DVec3, d: DVec3, dd: f64) -> f64 {
+        let x = if d.x >= 0.0 { pc.lo[0] } else { pc.hi[0] };
+        let z = if d.z >= 0.0 { pc.lo[1] } else { pc.hi[1] };
+        let t = ((x - o.x) * d.x + (z - o.z) * d.z) / dd;
+        let size = (pc.hi[0] - pc.lo[0]).max(pc.hi[1] - pc.lo[1]);
+        let mag = ((x.abs() + o.x.abs() + size) * d.x.abs()
+            + (z.abs() + o.z.abs() + size) * d.z.abs())
+            / dd;
+        t - 1e-9 * (mag + t.abs())
+    }
+
+    /// `intersect_first` of a linear sweep: the same crossing the default (every crossing,
+    /// then the first least `t` in `intersect_all`'s order) picks, with pieces and caps taken
+    /// by the least `t` they can reach and the search stopped when that is beyond the best
+    /// found. A crossing replaces the best when its `t` is less, or equal and earlier in
+    /// `intersect_all`'s order (walls by piece, then the low and the high cap).
+    fn first_linear(&self, ray: &Ray, tmax: f64, cand: &mut Vec<Hit>) -> Option<Hit> {
+        let (o, d) = (ray.origin, ray.dir);
+        cand.clear();
+        let plane = self.cut_plane(ray);
+        if let Some((nx, c0, nz)) = plane {
+            let g = |q: P2| nx * q[0] + nz * q[1] + c0;
+            let dd = d.x * d.x + d.z * d.z;
+            for (i, pc) in self.pieces.iter().enumerate() {
+                if Self::may_cut(pc, g) {
+                    let floor = Self::wall_t_floor(pc, o, d, dd);
+                    // NaN floors are kept (and never stop the search).
+                    if floor < tmax || floor.is_nan() {
+                        cand.push(Hit::with_part(floor, i as u32));
+                    }
+                }
+            }
+        }
+        let n_pieces = self.pieces.len() as u32;
+        if !self.open && d.y != 0.0 {
+            for (h, key) in [(self.h[0], n_pieces), (self.h[1], n_pieces + 1)] {
+                let t = (h - o.y) / d.y;
+                if !t.is_nan() && t > EPSILON && t < tmax {
+                    cand.push(Hit::with_part(t, key));
+                }
+            }
+        }
+        cand.sort_unstable_by(|a, b| a.t.total_cmp(&b.t).then(a.part.cmp(&b.part)));
+        // (t, order key) of the best crossing so far.
+        let mut best: Option<(Hit, u32)> = None;
+        let offer = |h: Hit, key: u32, best: &mut Option<(Hit, u32)>| {
+            if h.t < tmax && best.is_none_or(|(b, bk)| h.t < b.t || (h.t == b.t && key < bk)) {
+                *best = Some((h, key));
+            }
+        };
+        for c in cand.iter() {
+            if best.is_some_and(|(b, _)| c.t > b.t) {
+                break;
+            }
+            if c.part < n_pieces {
+                if let Some(plane) = plane {
+                    self.piece_hits(ray, plane, c.part as usize, |h| offer(h, c.part, &mut best));
+                }
+            } else {
+                let (h, part) = if c.part == n_pieces {
+                    (self.h[0], CAP_LOW)
+                } else {
+                    (self.h[1], CAP_HIGH)
+                };
+                let p = o + d * c.t;
+                if let Some(q) = self.unswept(p.x, p.z, h) {
+                    if inside_even_odd(&self.pieces, q, false) {
+                        offer(Hit::with_part(c.t, part), c.part, &mut best);
+                    }
+                }
+            }
+        }
+        best.map(|(h, _)| h)
     }
 
     /// Where the ray meets the wall line through outline point `q`, within the heights.
@@ -290,6 +390,38 @@ impl Shape for Prism {
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
         self.walls(ray, out);
         self.caps(ray, out);
+    }
+
+    fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
+        if self.conic {
+            // Every wall crossing, then a cap only where it comes strictly before the best
+            // (the caps come after the walls in `intersect_all`'s order, so ties go to walls):
+            // the caps' even-odd tests are the costly part.
+            scratch.clear();
+            self.walls(ray, scratch);
+            let mut best = scratch
+                .iter()
+                .filter(|h| h.t > EPSILON && h.t < tmax)
+                .min_by(|a, b| a.t.total_cmp(&b.t))
+                .copied();
+            let (o, d) = (ray.origin, ray.dir);
+            if !self.open && d.y != 0.0 {
+                for (h, part) in [(self.h[0], CAP_LOW), (self.h[1], CAP_HIGH)] {
+                    let t = (h - o.y) / d.y;
+                    if t.is_nan() || t <= EPSILON || t >= best.map_or(tmax, |b| b.t) {
+                        continue;
+                    }
+                    let p = o + d * t;
+                    if let Some(q) = self.unswept(p.x, p.z, h) {
+                        if inside_even_odd(&self.pieces, q, false) {
+                            best = Some(Hit::with_part(t, part));
+                        }
+                    }
+                }
+            }
+            return best;
+        }
+        self.first_linear(ray, tmax, scratch)
     }
 
     fn inside(&self, p: DVec3) -> bool {
@@ -562,5 +694,68 @@ mod tests {
             let p = d * h[0].t;
             assert!(pr.normal(p, &h[0]).dot(DVec3::new(p.x, 0.0, p.z)) > 0.0);
         }
+    }
+
+    /// `intersect_first` skips pieces and caps that cannot come first: it must give the
+    /// default's answer (every crossing, the first least `t`) to the bit, part and uv
+    /// included, for both sweeps and every spline kind, rays from inside and outside.
+    #[test]
+    fn nearest_crossing_is_the_defaults() {
+        let mut seed = 0x1234_5678_9abc_def1u64;
+        let mut unit = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let star: Vec<P2> = (0..11)
+            .map(|k| {
+                let a = k as f64 * std::f64::consts::TAU / 10.0;
+                let r = if k % 2 == 0 { 1.0 } else { 0.45 };
+                [r * a.cos(), r * a.sin()]
+            })
+            .collect();
+        let mut holed = square(-1.0, 1.0);
+        holed.extend(square(-0.5, 0.5));
+        let mut quad = vec![star[9]];
+        quad.extend(&star[..10]);
+        quad.push(star[0]);
+        quad.push(star[1]);
+        let kinds: Vec<(SplineKind, Vec<P2>)> = vec![
+            (SplineKind::Linear, star.clone()),
+            (SplineKind::Linear, holed),
+            (SplineKind::Quadratic, quad[..12].to_vec()),
+            (SplineKind::Cubic, quad.clone()),
+        ];
+        let mut n_hits = 0;
+        for (kind, pts) in kinds {
+            let pieces = outline(kind, &pts).unwrap().pieces;
+            for conic in [false, true] {
+                let pr = Prism::new(pieces.clone(), 0.2, 1.0, conic, false);
+                for _ in 0..4000 {
+                    let o = DVec3::new(4.0 * unit() - 2.0, 3.0 * unit() - 1.0, 4.0 * unit() - 2.0);
+                    let target = DVec3::new(2.0 * unit() - 1.0, unit(), 2.0 * unit() - 1.0);
+                    let ray = Ray::new(o, target - o);
+                    let tmax = if unit() < 0.3 {
+                        0.5 + unit()
+                    } else {
+                        f64::INFINITY
+                    };
+                    let mut all = Vec::new();
+                    pr.intersect_all(&ray, &mut all);
+                    let want = all
+                        .iter()
+                        .filter(|h| h.t > EPSILON && h.t < tmax)
+                        .min_by(|a, b| a.t.total_cmp(&b.t))
+                        .copied();
+                    let got = pr.intersect_first(&ray, tmax, &mut Vec::new());
+                    n_hits += want.is_some() as usize;
+                    let key =
+                        |h: Option<Hit>| h.map(|h| (h.t.to_bits(), h.part, h.uv[0].to_bits()));
+                    assert_eq!(key(got), key(want), "{kind:?} conic {conic} {ray:?}");
+                }
+            }
+        }
+        assert!(n_hits > 10_000, "{n_hits}");
     }
 }

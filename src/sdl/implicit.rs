@@ -424,13 +424,7 @@ impl Parser {
                 children: Vec::new(),
             }));
         };
-        let mut data = HeightData {
-            width,
-            depth,
-            heights,
-            smooth: false,
-            water_level: 0.0,
-        };
+        let mut data = HeightData::new(width, depth, heights);
         // A stand-in shape while the modifiers are read (a CSG one would not keep transforms).
         let mut obj = ObjectDesc::new(ShapeDesc::Sphere {
             center: DVec3::ZERO,

@@ -147,3 +147,60 @@ fn every_spline_kind_matches_reference() {
         assert!(bad * 100 <= checked, "{kind:?}: {bad} of {checked}");
     }
 }
+
+/// `intersect_first` skips pieces whose height band lies beyond the best crossing: it must
+/// give the default's answer (every crossing, the first least `t`) to the bit, part and uv
+/// included, for every spline kind, from inside and outside, with and without `tmax`.
+#[test]
+fn nearest_crossing_is_the_defaults() {
+    let mut rng = Lcg(0x5eed_1a7e);
+    let vase = [
+        [0.0, -0.2],
+        [1.0, 0.0],
+        [1.4, 0.8],
+        [0.6, 1.6],
+        [0.9, 2.4],
+        [1.3, 3.0],
+        [0.0, 3.2],
+        [1.0, 0.0],
+        [1.4, 0.8],
+    ];
+    let mut hits = 0;
+    for (kind, pts) in [
+        (SplineKind::Linear, &vase[1..8]),
+        (SplineKind::Quadratic, &vase[..8]),
+        (SplineKind::Cubic, &vase[..]),
+    ] {
+        let l = Lathe::new(profile(kind, pts).unwrap());
+        for _ in 0..6000 {
+            let o = DVec3::new(
+                6.0 * rng.next() - 3.0,
+                5.0 * rng.next() - 1.0,
+                6.0 * rng.next() - 3.0,
+            );
+            let target = DVec3::new(
+                2.0 * rng.next() - 1.0,
+                3.2 * rng.next(),
+                2.0 * rng.next() - 1.0,
+            );
+            let ray = Ray::new(o, target - o);
+            let tmax = if rng.next() < 0.3 {
+                0.5 + rng.next()
+            } else {
+                f64::INFINITY
+            };
+            let mut all = Vec::new();
+            l.intersect_all(&ray, &mut all);
+            let want = all
+                .iter()
+                .filter(|h| h.t > EPSILON && h.t < tmax)
+                .min_by(|a, b| a.t.total_cmp(&b.t))
+                .copied();
+            let got = l.intersect_first(&ray, tmax, &mut Vec::new());
+            hits += want.is_some() as usize;
+            let key = |h: Option<Hit>| h.map(|h| (h.t.to_bits(), h.part, h.uv[0].to_bits()));
+            assert_eq!(key(got), key(want), "{kind:?} {ray:?}");
+        }
+    }
+    assert!(hits > 5000, "{hits}");
+}
