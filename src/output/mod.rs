@@ -12,6 +12,7 @@ mod dither;
 mod pixels;
 mod png;
 mod simple;
+mod steps;
 mod stream;
 
 use std::path::{Path, PathBuf};

@@ -67,10 +67,10 @@ impl<'a> Tracer<'a> {
         };
         let seen = self.area_seen(p, (slot, light), a, ctx);
         let share = self.attenuated(seen, p, light, l, dist) / (a.size1 * a.size2) as f64;
-        let from = (p - light.position).normalize_or_zero();
+        let axes = a.axes((p - light.position).normalize_or_zero());
         for j in 0..a.size2 {
             for i in 0..a.size1 {
-                let to = light.position + a.point(i, j, from, (0.0, 0.0)) - p;
+                let to = light.position + a.point_on(i, j, axes, (0.0, 0.0)) - p;
                 let d = to.length();
                 f(if d > 0.0 { to / d } else { l }, d, share);
             }
@@ -85,7 +85,7 @@ impl<'a> Tracer<'a> {
         (slot, light): (usize, &Light),
         a: &AreaLightDesc,
         (i, j): (u32, u32),
-        (from, seed): (DVec3, u32),
+        (axes, seed): ((DVec3, DVec3), u32),
         ctx: &mut TraceCtx<'a>,
     ) -> (DVec3, Option<DVec3>) {
         let jit = if a.jitter {
@@ -96,7 +96,7 @@ impl<'a> Tracer<'a> {
         } else {
             (0.0, 0.0)
         };
-        let to = light.position + a.point(i, j, from, jit) - p;
+        let to = light.position + a.point_on(i, j, axes, jit) - p;
         let d = to.length();
         if d <= 0.0 {
             return (DVec3::ONE, None);
@@ -126,10 +126,11 @@ impl<'a> Tracer<'a> {
         a: &AreaLightDesc,
         ctx: &mut TraceCtx<'a>,
     ) -> DVec3 {
-        let from = (p - light.position).normalize_or_zero();
+        // The array's axes face the point the same way for all of its samples.
+        let axes = a.axes((p - light.position).normalize_or_zero());
         let seed = point_seed(p);
         let sample = |i: u32, j: u32, ctx: &mut TraceCtx<'a>| {
-            self.area_point(p, (slot, light), a, (i, j), (from, seed), ctx)
+            self.area_point(p, (slot, light), a, (i, j), (axes, seed), ctx)
                 .0
         };
         let (n1, n2) = (a.size1, a.size2);

@@ -242,6 +242,21 @@ impl AreaLightDesc {
     /// (unit vector from the light towards the shaded point, used by `orient`). `jitter` is a
     /// pair in [-0.5, 0.5) moving the point within its cell.
     pub fn point(&self, i: u32, j: u32, from: DVec3, jitter: (f64, f64)) -> DVec3 {
+        self.point_on(i, j, self.axes(from), jitter)
+    }
+
+    /// The array's axes as seen from direction `from` (turned to face it with `orient`): the
+    /// same for every point of the array, so a shaded point asks once.
+    pub fn axes(&self, from: DVec3) -> (DVec3, DVec3) {
+        if self.orient {
+            orient_axes(self.axis1, self.axis2, from)
+        } else {
+            (self.axis1, self.axis2)
+        }
+    }
+
+    /// `point` with the axes `axes` gave.
+    pub fn point_on(&self, i: u32, j: u32, (a1, a2): (DVec3, DVec3), jitter: (f64, f64)) -> DVec3 {
         let frac = |k: u32, n: u32, jit: f64| {
             if n <= 1 {
                 0.0
@@ -257,11 +272,6 @@ impl AreaLightDesc {
             u *= 0.5;
             v *= 0.5;
         }
-        let (a1, a2) = if self.orient {
-            orient_axes(self.axis1, self.axis2, from)
-        } else {
-            (self.axis1, self.axis2)
-        };
         a1 * u + a2 * v
     }
 }

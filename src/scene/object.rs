@@ -172,10 +172,13 @@ pub struct SurfaceHit<'a> {
 }
 
 impl Object {
-    fn local_ray(&self, ray: &Ray) -> Ray {
+    /// The ray in object space: `ray` itself when there is no transform (a copy costs more
+    /// than the plane or sphere test reading it), else the transformed ray put in `local`.
+    #[inline]
+    fn local_ray<'r>(&self, ray: &'r Ray, local: &'r mut Option<Ray>) -> &'r Ray {
         match &self.transform {
-            Some(t) => t.inv_ray(ray),
-            None => *ray,
+            Some(t) => local.insert(t.inv_ray(ray)),
+            None => ray,
         }
     }
 
@@ -200,9 +203,10 @@ impl Object {
         }
         match &self.kind {
             ObjKind::Shape(shape, _) => {
-                let r = self.local_ray(ray);
+                let mut local = None;
+                let r = self.local_ray(ray, &mut local);
                 shape
-                    .intersect_first(&r, tmax, &mut s.hits)
+                    .intersect_first(r, tmax, &mut s.hits)
                     .map(|hit| SurfaceHit {
                         t: hit.t,
                         obj: self,
@@ -272,7 +276,8 @@ impl Object {
     fn all_hits_unclipped<'a>(&'a self, ray: &Ray, tmax: f64, s: &mut Scratch<'a>) {
         match &self.kind {
             ObjKind::Shape(shape, window) => {
-                let r = self.local_ray(ray);
+                let mut local = None;
+                let r = self.local_ray(ray, &mut local);
                 s.hits.clear();
                 match window {
                     // Crossings outside the box are clipped away: the shape may leave them
@@ -285,10 +290,10 @@ impl Object {
                         let pad = 1e-7 * (lo.abs().max(hi.abs()) + 1.0);
                         // NaN (a ray in a face's plane) asks for everything.
                         if lo <= hi || lo.is_nan() || hi.is_nan() {
-                            shape.intersect_all_within(&r, lo - pad, hi + pad, &mut s.hits);
+                            shape.intersect_all_within(r, lo - pad, hi + pad, &mut s.hits);
                         }
                     }
-                    None => shape.intersect_all(&r, &mut s.hits),
+                    None => shape.intersect_all(r, &mut s.hits),
                 }
                 s.surface
                     .extend(s.hits.iter().filter(|h| h.t < tmax).map(|&hit| SurfaceHit {
