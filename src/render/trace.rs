@@ -197,6 +197,9 @@ impl<'a> Tracer<'a> {
             }
             return self.trace_camera(cam.ray(px, py), ctx);
         };
+        // As in `trace_camera`: the radiosity samples this position gathers serve it alone
+        // (they were kept from pixel to pixel, so the picture depended on the thread count).
+        ctx.rad_local.clear();
         let mut sum = Seen::default();
         let mut n = 0u32;
         mesh.for_each_ray(px, py, |ray| {
