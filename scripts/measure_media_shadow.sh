@@ -8,6 +8,10 @@
 #    shadow ray's distance from where it enters the box, 1 - x) and weights.
 # 2. Scattering media under an area light (4x4, no jitter) half hidden by a wall: prints the
 #    in-scattered light across the penumbra (four levels: the light's four columns).
+# 3. A box of scattering media whose density steps from 0.05 to 1 at x = 0.6, lit from +x by
+#    a light, then by the same light made shadowless: prints the scattered light per column
+#    (the shadowed light's thin part is dimmed by the dense part; the shadowless light
+#    scatters nothing at all).
 # usage: scripts/measure_media_shadow.sh   (needs povray and python3 with numpy)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -61,3 +65,24 @@ r = read_array(sys.argv[1])[1, :, 0]
 print("area light 4x4 over scattering media, x = -3..3 in 300 columns, every 12th:")
 print("   " + " ".join(f"{v:.4f}" for v in r[::12]))
 PY
+cat > "$tmp/ss.pov" <<'POV'
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { orthographic location <0.5, 0.5, -1> direction z right x up y }
+light_source { <100, 0.5, 0.5> rgb 1 #if (SL) shadowless #end }
+box { <0, 0, 0>, <1, 1, 1> pigment { rgbt 1 } finish { ambient 0 diffuse 0 } hollow
+  interior { media { scattering { 1, 3 extinction 1 } method 3 samples 3, 3
+    density { function { select(x - 0.6, 0.05, 1) } } } } }
+background { rgb 0 }
+POV
+for sl in 0 1; do
+  povray -D -V -A +W10 +H3 +FP16 File_Gamma=1 "Declare=SL=$sl" "+I$tmp/ss.pov" "+O$tmp/ss.ppm" 2>/dev/null
+  python3 - "$tmp/ss.ppm" "$sl" "$here" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[3])
+from ppm import read_array
+r = read_array(sys.argv[1])[1, :, 0]
+print(f"scattering lit by a {'shadowless ' if sys.argv[2] == '1' else ''}light, x = 0.05..0.95:")
+print("   " + " ".join(f"{v:.4f}" for v in r))
+PY
+done

@@ -192,7 +192,7 @@ impl<'a> Tracer<'a> {
         cuts.extend([0.0, t * len]);
         if scatters {
             for light in &self.scene.lights {
-                if light.media_interaction {
+                if light.media_interaction && !light.shadowless {
                     beam_cuts(light, ray.origin, dir, t * len, &mut cuts);
                 }
             }
@@ -296,14 +296,16 @@ impl<'a> Tracer<'a> {
     ) -> DVec3 {
         let mut out = DVec3::ZERO;
         for (slot, light) in self.scene.lights.iter().enumerate() {
-            if !light.media_interaction {
+            // Measured: a shadowless light scatters nothing in media (a box of scattering
+            // media lit only by one stays black; scripts/measure_media_shadow.sh).
+            if !light.media_interaction || light.shadowless {
                 continue;
             }
             let Some(inc) = light.incidence(p) else {
                 continue;
             };
             let mut lc = light.color * (light.fade(inc.dist) * inc.beam);
-            if !light.shadowless && self.quality.shadows {
+            if self.quality.shadows {
                 if let Some(dist) = inc.shadow_dist {
                     lc *= self.light_seen(p, (slot, light), inc.l, dist, false, ctx);
                 }
