@@ -78,9 +78,11 @@ fn leader<'m>(media: &[&'m [Media]]) -> Option<&'m Media> {
     media.iter().flat_map(|l| l.iter()).next()
 }
 
-/// How many equal steps a stretch is sampled in.
-fn steps(media: &[&[Media]]) -> u32 {
-    leader(media).map_or(1, |m| m.steps() * m.intervals)
+/// How a stretch is sampled: in how many equal intervals, each taken in how many steps
+/// (measured: `intervals 2` samples each half of a box as `intervals 1` samples the whole,
+/// its own last h unsampled).
+fn steps(media: &[&[Media]]) -> (u32, u32) {
+    leader(media).map_or((1, 1), |m| (m.intervals.max(1), m.steps()))
 }
 
 /// Where the ray `origin + s·dir` (dir unit, 0 < s < len) crosses the edge of `light`'s
@@ -131,6 +133,12 @@ fn beam_cuts(light: &Light, origin: DVec3, dir: DVec3, len: f64, out: &mut Vec<f
 }
 
 /// What a light crossing `ray` from `t0` to `t1` (ray units) keeps through `media`.
+///
+/// Measured with a step of absorbing density moved through a box between a parallel light
+/// and a wall (scripts/measure_media_shadow.sh): a shadow ray's stretch is sampled as a
+/// viewing ray's is, from the shadowed point towards the light: n steps each weighing L/n,
+/// step j the mean of the samples at j·h, (j + ½)·h and (j + 1)·h with h = L/(n + 1), so the
+/// last h before the light is never sampled; absorption alone never splits a step.
 pub fn transmittance(media: &[&[Media]], ray: &Ray, t0: f64, t1: f64) -> DVec3 {
     if !media
         .iter()
@@ -139,14 +147,24 @@ pub fn transmittance(media: &[&[Media]], ray: &Ray, t0: f64, t1: f64) -> DVec3 {
     {
         return DVec3::ONE;
     }
-    let n = steps(media);
+    let (intervals, n) = steps(media);
     let len = ray.dir.length();
-    let dt = (t1 - t0) / n as f64;
+    let span = (t1 - t0) / intervals as f64;
+    let h = span / (n + 1) as f64;
     let mut depth = DVec3::ZERO;
-    for i in 0..n {
-        depth += extinction_at(media, ray.at(t0 + dt * i as f64));
+    for i in 0..intervals {
+        let start = t0 + span * i as f64;
+        let at = |k: u32| extinction_at(media, ray.at(start + 0.5 * h * k as f64));
+        // Ends shared by neighbouring steps count twice, middles once.
+        depth += at(0) + at(2 * n);
+        for j in 0..n {
+            depth += at(2 * j + 1);
+            if j > 0 {
+                depth += 2.0 * at(2 * j);
+            }
+        }
     }
-    (-depth * (dt * len)).exp()
+    (-depth * (span * len / (3.0 * n as f64))).exp()
 }
 
 impl<'a> Tracer<'a> {
@@ -159,7 +177,7 @@ impl<'a> Tracer<'a> {
         seen: Seen,
         ctx: &mut TraceCtx<'a>,
     ) -> Seen {
-        let n = steps(media);
+        let (intervals, n) = steps(media);
         let len = ray.dir.length();
         let dir = ray.dir / len;
         let scatters = media
@@ -174,7 +192,7 @@ impl<'a> Tracer<'a> {
         cuts.extend([0.0, t * len]);
         if scatters {
             for light in &self.scene.lights {
-                if light.media_interaction {
+                if light.media_interaction && !light.shadowless {
                     beam_cuts(light, ray.origin, dir, t * len, &mut cuts);
                 }
             }
@@ -225,32 +243,37 @@ impl<'a> Tracer<'a> {
             Sample { sigma, glow }
         };
         // Measured with a thin bump and a step of density moved through a box
-        // (docs/media.md): each of the n steps of a stretch of length L weighs L/n, but its
-        // samples lie at j·h, (j + 1/2)·h and (j + 1)·h with h = L/(n + 1), so the last
-        // h of the stretch is never sampled; a step is the mean of its three samples, or,
-        // where neighbouring samples' light differs by more than aa_threshold (summed over
-        // the channels), the mean of its two halves sampled likewise.
+        // (docs/media.md): a stretch is cut into `intervals` equal parts; each of a part's n
+        // steps weighs L/n (L the part's length), but its samples lie at j·h, (j + 1/2)·h
+        // and (j + 1)·h with h = L/(n + 1), so the last h of the part is never sampled; a
+        // step is the mean of its three samples, or, where neighbouring samples' light
+        // (summed over the channels) times L differs by more than aa_threshold, the mean of
+        // its two halves sampled likewise.
         for w in cuts.windows(2).filter(|w| w[1] > w[0]) {
-            let len = w[1] - w[0];
-            let h = len / (n + 1) as f64;
-            let weight = len / n as f64;
-            let mut left = sample(w[0], ctx);
-            for j in 0..n {
-                let a = w[0] + h * j as f64;
-                let mid = sample(a + 0.5 * h, ctx);
-                let right = sample(a + h, ctx);
-                let step = refine(
-                    a,
-                    h,
-                    [left, mid, right],
-                    levels,
-                    aa_threshold,
-                    &mut sample,
-                    ctx,
-                );
-                acc.added += acc.kept * step.glow * weight;
-                acc.kept *= (-step.sigma * weight).exp();
-                left = right;
+            let span = (w[1] - w[0]) / intervals as f64;
+            let h = span / (n + 1) as f64;
+            let weight = span / n as f64;
+            let threshold = aa_threshold / span;
+            for i in 0..intervals {
+                let start = w[0] + span * i as f64;
+                let mut left = sample(start, ctx);
+                for j in 0..n {
+                    let a = start + h * j as f64;
+                    let mid = sample(a + 0.5 * h, ctx);
+                    let right = sample(a + h, ctx);
+                    let step = refine(
+                        a,
+                        h,
+                        [left, mid, right],
+                        levels,
+                        threshold,
+                        &mut sample,
+                        ctx,
+                    );
+                    acc.added += acc.kept * step.glow * weight;
+                    acc.kept *= (-step.sigma * weight).exp();
+                    left = right;
+                }
             }
         }
         ctx.media_cuts = cuts;
@@ -273,14 +296,16 @@ impl<'a> Tracer<'a> {
     ) -> DVec3 {
         let mut out = DVec3::ZERO;
         for (slot, light) in self.scene.lights.iter().enumerate() {
-            if !light.media_interaction {
+            // Measured: a shadowless light scatters nothing in media (a box of scattering
+            // media lit only by one stays black; scripts/measure_media_shadow.sh).
+            if !light.media_interaction || light.shadowless {
                 continue;
             }
             let Some(inc) = light.incidence(p) else {
                 continue;
             };
             let mut lc = light.color * (light.fade(inc.dist) * inc.beam);
-            if !light.shadowless && self.quality.shadows {
+            if self.quality.shadows {
                 if let Some(dist) = inc.shadow_dist {
                     lc *= self.light_seen(p, (slot, light), inc.l, dist, false, ctx);
                 }

@@ -261,11 +261,18 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
         PatternKind::Fractal(f) => fractal(f, (q.x, q.y)),
         PatternKind::DensityFile(d) => d.eval(q),
         PatternKind::Object(o) => o.inside(q) as u8 as f64,
+        // Measured as gradient's: values above 1 are reduced first (2 and 3 give 0, 2.5 gives
+        // 0.5, 1 stays 1; a density of 3 is no media at all).
         PatternKind::Function(f) => {
             if f.unsupported.is_some() {
                 0.0
             } else {
-                f.eval(&[q.x, q.y, q.z])
+                let v = f.eval(&[q.x, q.y, q.z]);
+                if v > 1.0 {
+                    v % 1.0
+                } else {
+                    v
+                }
             }
         }
         // Maps handle `average` themselves; as a plain value it is the middle.

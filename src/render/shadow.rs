@@ -170,11 +170,12 @@ impl<'a> Tracer<'a> {
             if !splittable || (forced == 0 && !differ) {
                 return mean;
             }
-            // A side one cell long is not split.
+            // A side one cell long is not split; an even number of points splits into two
+            // halves that share no point (measured: a 4x4 light whose columns are hidden one
+            // by one gives 3/4, 1/2, 1/4, as 5x5's shared middle gives its fifths' levels).
             let halves = |a: u32, b: u32| {
-                let m = (a + b) / 2;
                 if b - a > 1 {
-                    ([(a, m), (m, b)], 2)
+                    ([(a, (a + b) / 2), ((a + b).div_ceil(2), b)], 2)
                 } else {
                     ([(a, b), (a, b)], 1)
                 }
