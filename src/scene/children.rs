@@ -261,7 +261,7 @@ impl ChildIndex {
 #[cfg(test)]
 mod tests {
     use crate::geom::test_rng::Lcg;
-    use crate::math::Ray;
+    use crate::math::{DVec3, Ray};
     use crate::scene::build::build;
     use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
     use crate::sdl::{ParseOptions, Parser};
@@ -384,6 +384,69 @@ mod tests {
                 assert_eq!(a.inside(p), b.inside(p));
             }
             assert!(hits > 10, "{hits}");
+        }
+    }
+
+    /// `first_hit` of a CSG node (nearest first, stopping at the first crossing kept) is the
+    /// first least crossing of `all_hits`, bit for bit: polyhedra of transformed planes (their
+    /// faces meet along edges, where crossings tie), inverted, nested and subtracted.
+    #[test]
+    fn first_hit_is_the_least_of_all_hits() {
+        const POLY: &str = r#"
+            #declare R = seed(5);
+            #declare Dodec = intersection {
+              plane { -z, 1 rotate <-26.56505117708, 0, 0> }
+              plane { -z, 1 rotate <-26.56505117708, -72, 0> }
+              plane { -z, 1 rotate <-26.56505117708, -144, 0> }
+              plane { -z, 1 rotate <-26.56505117708, -216, 0> }
+              plane { -z, 1 rotate <-26.56505117708, -288, 0> }
+              plane { z, 1 rotate <26.56505117708, -36, 0> }
+              plane { z, 1 rotate <26.56505117708, -108, 0> }
+              plane { z, 1 rotate <26.56505117708, -180, 0> }
+              plane { z, 1 rotate <26.56505117708, -252, 0> }
+              plane { z, 1 rotate <26.56505117708, -324, 0> }
+              plane { y, 1 rotate <0, 0, 0> }
+              plane { -y, 1 rotate <0, 0, 0> }
+            }
+            object { Dodec translate y * 1.8 rotate x * 72 }
+            object { Dodec inverse scale 2 }
+            difference { object { Dodec scale 2 } object { Dodec rotate y * 20 } sphere { 1.1 * x, 0.7 } }
+            merge { object { Dodec } sphere { y, 1 } box { -0.5, <1, 2, 3> } }
+            intersection { object { Dodec } box { -0.9, 2 } sphere { 0, 1.3 } plane { x, 0 } }
+            intersection { plane { y, 0 } plane { y, 0 } plane { -y, 0 } box { -1, 1 } }
+        "#;
+        let mut p = Parser::new(ParseOptions::default());
+        p.parse_str("t.pov", POLY)
+            .map_err(|e| e.message.clone())
+            .unwrap();
+        let scene = build(&p.scene, 64, 48).scene;
+        let mut rng = Lcg(7);
+        let mut s = Scratch::default();
+        assert_eq!(scene.objects.len(), 6);
+        for o in &scene.objects {
+            let mut hits = 0;
+            for k in 0..4000 {
+                // Every fourth ray starts on a vertex-ish lattice point and runs along an axis,
+                // to meet faces at equal `t`.
+                let ray = if k % 4 == 0 {
+                    let q = rng.vec(3.0);
+                    Ray::new(q.round(), [DVec3::X, DVec3::Y, DVec3::Z][k % 3])
+                } else {
+                    Ray::new(rng.vec(6.0), rng.vec(2.0))
+                };
+                let tmax = if rng.next() < 0.3 { 3.0 } else { f64::INFINITY };
+                let first = o.first_hit(&ray, tmax, &mut s).map(|h| key(&h));
+                o.all_hits(&ray, tmax, &mut s);
+                let least = s.surface.iter().min_by(|a, b| a.t.total_cmp(&b.t)).map(key);
+                s.surface.clear();
+                assert_eq!(first, least);
+                hits += first.is_some() as usize;
+            }
+            // The last node, a flat slab, is met only by rays lying in it.
+            assert!(
+                hits > 50 || std::ptr::eq(o, scene.objects.last().unwrap()),
+                "{hits}"
+            );
         }
     }
 }

@@ -97,6 +97,9 @@ pub struct Scratch<'a> {
     /// CSG members a ray may meet, gathered from a node's index (a stack: nested nodes append
     /// after their parent's and truncate back).
     pub members: Vec<u32>,
+    /// A CSG node's member crossings for `first_hit`, nearest first: (t, where in `surface`,
+    /// member). A stack like `members`.
+    pub csg_order: Vec<(f64, u32, u32)>,
     /// Per light, the opaque object that last blocked a shadow ray to it (POV-Ray's shadow
     /// cache): asked first, since neighbouring points are mostly shadowed by the same object.
     pub blockers: Vec<Option<&'a Object>>,
@@ -240,6 +243,20 @@ impl Object {
                 }
                 best
             }
+            ObjKind::Csg {
+                op,
+                children,
+                index,
+                cull,
+            } if *op != CsgOp::Union => self.csg_first_hit(
+                *op,
+                children,
+                index.as_deref(),
+                cull.as_deref(),
+                ray,
+                tmax,
+                s,
+            ),
             ObjKind::Csg { .. } => {
                 let start = s.surface.len();
                 self.all_hits(ray, tmax, s);
@@ -251,6 +268,73 @@ impl Object {
                 best
             }
         }
+    }
+
+    /// `first_hit` of an intersection, difference or merge without `clipped_by`: the nearest
+    /// of the crossings `all_hits` would keep, found by testing the members' crossings nearest
+    /// first and stopping at the first one kept. `all_hits` tests every crossing (for a
+    /// polyhedron of n planes, n crossings each asking up to n - 1 members), and the nearest
+    /// kept one is usually among the first few. The same crossings are gathered in the same
+    /// order, each is kept or not by the same `csg_keeps` (which has no side effect on the
+    /// answer), and ties in `t` go to the earlier in that order, as `min_by` over `all_hits`
+    /// does: the answer is the same crossing, bit for bit.
+    #[allow(clippy::too_many_arguments)]
+    fn csg_first_hit<'a>(
+        &'a self,
+        op: CsgOp,
+        children: &'a [Object],
+        index: Option<&ChildIndex>,
+        cull: Option<&Aabb>,
+        ray: &Ray,
+        tmax: f64,
+        s: &mut Scratch<'a>,
+    ) -> Option<SurfaceHit<'a>> {
+        let inv_dir = ray.dir.recip();
+        if cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none()) {
+            return None;
+        }
+        let start = s.surface.len();
+        let order_from = s.csg_order.len();
+        let gather = |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
+            if c.bounds.hit(ray.origin, inv_dir, tmax).is_none() {
+                return;
+            }
+            let from = s.surface.len();
+            c.all_hits(ray, tmax, s);
+            for j in from..s.surface.len() {
+                s.csg_order.push((s.surface[j].t, j as u32, i as u32));
+            }
+        };
+        match index {
+            None => children
+                .iter()
+                .enumerate()
+                .for_each(|(i, c)| gather(c, i, s)),
+            Some(ix) => {
+                let from = s.members.len();
+                ix.candidates(ray, tmax, &mut s.members);
+                for k in from..s.members.len() {
+                    let i = s.members[k] as usize;
+                    gather(ix.leaf(children, i), i, s);
+                }
+                s.members.truncate(from);
+            }
+        }
+        let order = &mut s.csg_order[order_from..];
+        order.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        let rejecter = std::cell::Cell::new(usize::MAX);
+        let best = order.iter().find_map(|&(t, j, i)| {
+            let i = i as usize;
+            csg_keeps(op, i, children, index, ray.at(t), &rejecter).then(|| {
+                let mut h = s.surface[j as usize];
+                h.flip ^= op == CsgOp::Difference && i > 0;
+                h.flip ^= self.inverse;
+                h
+            })
+        });
+        s.csg_order.truncate(order_from);
+        s.surface.truncate(start);
+        best
     }
 
     /// Appends every crossing with t in (EPSILON, tmax), in no particular order, to
