@@ -510,6 +510,7 @@ fn object_queries_follow_changes_to_the_identifier() {
          #undef S
          #declare S = sphere { 0, 7 }
          #declare H = max_extent(S).x + 10 * inside(S, <6.5,0,0>);
+         #declare K = trace(S, <-9,0,0>, x).x - trace(S, <9,0,0>, -x).x;
          #macro Fresh(R) #local T = sphere { 0, R } trace(T, <-9,0,0>, x).x #end
          #declare J = Fresh(1) + Fresh(2);",
     );
@@ -523,6 +524,7 @@ fn object_queries_follow_changes_to_the_identifier() {
         ("F", -4.0),
         ("G", -6.0),
         ("H", 17.0),
+        ("K", -14.0),
         ("J", -3.0),
     ] {
         assert!((float(&p, n) - v).abs() < 1e-9, "{n} {}", float(&p, n));

@@ -35,6 +35,14 @@ pub(super) struct Key {
     pub generation: u64,
 }
 
+/// How a call got its object argument.
+pub(super) enum ObjectArg {
+    /// Its description was read (and copied) from this identifier.
+    Read(Key),
+    /// The identifier's object was kept: its description was not even read.
+    Kept(Built),
+}
+
 impl BuiltObjects {
     pub(super) fn generation(&self) -> u64 {
         self.generation
