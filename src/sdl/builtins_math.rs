@@ -7,15 +7,24 @@
 //! [-1,1] warn and clamp; `int`, `div` and the bitwise functions convert through a C `int`, so
 //! values beyond ±2^31 (and NaN) become -2^31 as they do on x86.
 
+use std::rc::Rc;
 use std::sync::Arc;
 
 use crate::func::{FnValue, Function};
 use crate::math::{DVec3, Ray};
 
+use super::built_objects::{Built, Key, ObjectArg};
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
 use super::source::Span;
 use super::value::Value;
+
+/// What stands in the arguments for an object argument answered by `ObjectArg::Kept`: only
+/// `runtime_object` reads that argument's value, and it does not for a kept object.
+const KEPT_PLACEHOLDER: Value = Value::Float(0.0);
+
+/// A kept object and the span of the identifier that named it.
+type KeptArg = (Built, Span);
 
 /// POV-Ray's random streams: `state = state * 1812433253 + 12345 (mod 2^32)` and the number
 /// returned is `state / (2^32 - 1)`, so both 0 and 1 can occur. `seed(S)` starts a stream
@@ -154,18 +163,48 @@ impl Parser {
 
     /// Arguments of a built-in call, after its name: `( expr, expr, ... )`.
     pub(super) fn call_args(&mut self, name: &str) -> PResult<Args> {
+        Ok(self.call_args_first_ident(name, false)?.0)
+    }
+
+    /// `call_args`, and with `first_ident` the identifier the first argument starts with
+    /// (the object of `inside(Obj, P)`, to find what was built from it before).
+    fn call_args_first_ident(
+        &mut self,
+        name: &str,
+        first_ident: bool,
+    ) -> PResult<(Args, Option<ObjectArg>)> {
         // The error context is formatted only on an error: this runs for every `mod(I, 100)`
         // of a million-iteration loop.
         self.expect_sym_with(Sym::LParen, || format!("after the function name {name}"))?;
         let mut args = Args::new();
         if self.eat_sym(Sym::RParen)? {
-            return Ok(args);
+            return Ok((args, None));
+        }
+        let mut key = None;
+        let mut ident = None;
+        if first_ident {
+            match self.kept_object_arg()? {
+                (_, Some((built, s))) => {
+                    args.push((KEPT_PLACEHOLDER, s));
+                    key = Some(ObjectArg::Kept(built));
+                    if self.eat_sym(Sym::RParen)? {
+                        return Ok((args, key));
+                    }
+                    self.expect_sym_with(Sym::Comma, || {
+                        format!("between the arguments of {name}")
+                    })?;
+                }
+                (n, None) => ident = n,
+            }
         }
         loop {
             let s = self.next_span()?;
             args.push((self.with_rel(false, |p| p.parse_expr())?, s));
+            if let Some(n) = ident.take() {
+                key = self.object_key(n).map(ObjectArg::Read);
+            }
             if self.eat_sym(Sym::RParen)? {
-                return Ok(args);
+                return Ok((args, key));
             }
             self.expect_sym_with(Sym::Comma, || format!("between the arguments of {name}"))?;
         }
@@ -179,8 +218,9 @@ impl Parser {
         Some(if name == "trace" {
             self.trace_call()
         } else {
-            self.call_args(name)
-                .and_then(|args| self.math_call(name, span, &args))
+            let object_arg = matches!(name, "inside" | "min_extent" | "max_extent");
+            self.call_args_first_ident(name, object_arg)
+                .and_then(|(args, ident)| self.math_call(name, span, &args, ident))
         })
     }
 
@@ -199,7 +239,14 @@ impl Parser {
         self.vector_of(&a.0, a.1, &format!("{name} needs a vector here"))
     }
 
-    fn math_call(&mut self, name: &str, span: Span, args: &[(Value, Span)]) -> PResult<Value> {
+    /// `ident`: where the first argument was read from, if it is an identifier.
+    fn math_call(
+        &mut self,
+        name: &str,
+        span: Span,
+        args: &[(Value, Span)],
+        mut ident: Option<ObjectArg>,
+    ) -> PResult<Value> {
         let arity: &[usize] = match name {
             "atan2" | "div" | "mod" | "pow" | "vdot" | "vcross" | "vrotate" | "inside" => &[2],
             "vaxis_rotate" => &[3],
@@ -378,13 +425,13 @@ impl Parser {
             }
             "inside" => {
                 let p = ve(self, 1)?;
-                let Some(obj) = self.runtime_object(name, &args[0])? else {
+                let Some(obj) = self.runtime_object(name, &args[0], ident.take())? else {
                     return f(0.0);
                 };
                 f(obj.inside(p) as u8 as f64)
             }
             "min_extent" | "max_extent" => {
-                let Some(obj) = self.runtime_object(name, &args[0])? else {
+                let Some(obj) = self.runtime_object(name, &args[0], ident.take())? else {
                     return Ok(Value::vec3(DVec3::ZERO));
                 };
                 let b = obj.bounds;
@@ -405,11 +452,73 @@ impl Parser {
     /// The object an identifier argument holds, built as the renderer would build it; `None`,
     /// with a warning, when nothing in it is geometry lancer renders yet (a `blob`):
     /// the caller then answers as for an empty object, so the scene still parses.
+    ///
+    /// `ident` is the identifier the argument was read from, if it was one: what was built
+    /// from it is kept (`built_objects`) and answers the next call on it, until it changes.
     fn runtime_object(
         &mut self,
         name: &str,
         a: &(Value, Span),
-    ) -> PResult<Option<crate::scene::object::Object>> {
+        arg: Option<ObjectArg>,
+    ) -> PResult<Built> {
+        let key = match arg {
+            Some(ObjectArg::Kept(built)) => {
+                if built.is_none() {
+                    self.warn_no_geometry(name, a.1);
+                }
+                return Ok(built);
+            }
+            Some(ObjectArg::Read(key)) => Some(key),
+            None => None,
+        };
+        let built = self.build_runtime_object(name, a)?;
+        if let Some(key) = key {
+            self.built_objects.insert(key, built.clone());
+        }
+        Ok(built)
+    }
+
+    /// Before an object argument: the identifier it starts with, and when the object built
+    /// from that identifier is kept, that object and the identifier's span, the identifier
+    /// then read without copying its description (a union of 100 spheres copied and dropped
+    /// per call was a third of a loop of `trace` calls).
+    fn kept_object_arg(&mut self) -> PResult<(Option<Rc<str>>, Option<KeptArg>)> {
+        let Some(name) = self.peek_ident()? else {
+            return Ok((None, None));
+        };
+        let kept = self
+            .object_key(name.clone())
+            .and_then(|key| self.built_objects.get(&key));
+        let Some(built) = kept else {
+            return Ok((Some(name), None));
+        };
+        let t = self.next_tok()?;
+        // As reading it in an expression would: counts as a use of the identifier.
+        let _ = self.lookup(&name);
+        Ok((Some(name), Some((built, t.span))))
+    }
+
+    /// Where the argument just read from identifier `name` came from, when `name` holds an
+    /// object itself: not a by-reference alias nor an array, whose writes go elsewhere.
+    fn object_key(&self, name: Rc<str>) -> Option<Key> {
+        let scope = (0..self.scopes.len())
+            .rev()
+            .find(|&i| self.scopes[i].contains_key(&name))?;
+        matches!(self.scopes[scope].get(&name), Some(Value::Object(_))).then(|| Key {
+            name,
+            scope,
+            generation: self.built_objects.generation(),
+        })
+    }
+
+    fn warn_no_geometry(&mut self, name: &str, span: Span) {
+        self.warn(
+            span,
+            format!("{name}: this object has no geometry lancer renders yet; answering as for an empty object (POV-Ray's answer will differ)"),
+        );
+    }
+
+    fn build_runtime_object(&mut self, name: &str, a: &(Value, Span)) -> PResult<Built> {
         let Value::Object(desc) = &a.0 else {
             return Err(self.error_at(
                 a.1,
@@ -424,12 +533,9 @@ impl Parser {
         scene.global.assumed_gamma = Some(1.0);
         let mut built = crate::scene::build::build(&scene, 1, 1).scene;
         match built.objects.pop() {
-            Some(o) if built.objects.is_empty() => Ok(Some(o)),
+            Some(o) if built.objects.is_empty() => Ok(Some(Rc::new(o))),
             _ => {
-                self.warn(
-                    a.1,
-                    format!("{name}: this object has no geometry lancer renders yet; answering as for an empty object (POV-Ray's answer will differ)"),
-                );
+                self.warn_no_geometry(name, a.1);
                 Ok(None)
             }
         }
@@ -439,12 +545,24 @@ impl Parser {
     fn trace_call(&mut self) -> PResult<Value> {
         self.expect_sym(Sym::LParen, "after trace")?;
         let mut args = Vec::new();
-        for i in 0..3 {
+        let (ident, kept) = self.kept_object_arg()?;
+        let mut key = None;
+        if let Some((built, s)) = kept {
+            args.push((KEPT_PLACEHOLDER, s));
+            key = Some(ObjectArg::Kept(built));
+        }
+        for i in args.len()..3 {
             if i > 0 {
                 self.expect_sym(Sym::Comma, "between the arguments of trace")?;
             }
             let s = self.next_span()?;
             args.push((self.with_rel(false, |p| p.parse_expr())?, s));
+            if i == 0 {
+                key = ident
+                    .clone()
+                    .and_then(|n| self.object_key(n))
+                    .map(ObjectArg::Read);
+            }
         }
         let mut normal_var = None;
         if self.eat_sym(Sym::Comma)? {
@@ -467,7 +585,7 @@ impl Parser {
         if dir == DVec3::ZERO {
             return Err(self.error_at(args[2].1, "trace needs a non-zero direction"));
         }
-        let obj = self.runtime_object("trace", &args[0])?;
+        let obj = self.runtime_object("trace", &args[0], key)?;
         self.trace_calls += 1;
         if self.trace_calls == TRACE_CALLS_WARNED {
             // Measured (language/tracevines): lancer's trace() answers agree with POV-Ray's to

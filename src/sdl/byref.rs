@@ -105,6 +105,10 @@ impl Parser {
         name: Rc<str>,
         v: Value,
     ) -> PResult<()> {
+        match &target {
+            AssignTarget::Ref(r) => self.built_objects.forget(&r.name),
+            AssignTarget::Scope(_) => self.built_objects.forget(&name),
+        }
         match target {
             AssignTarget::Ref(r) if r.path.is_empty() => {
                 if let Some(scope) = self.scopes.get_mut(r.scope) {

@@ -33,6 +33,7 @@ impl Parser {
                 if let Some(p) = elem {
                     return self.set_element(&p, None);
                 }
+                self.built_objects.forget(&name);
                 for s in self.scopes.iter_mut().rev() {
                     if s.remove(&*name).is_some() {
                         break;
@@ -487,6 +488,11 @@ impl Parser {
                     m.name
                 ),
             ));
+        }
+        // The macro's table is new, so nothing built can be read from it yet; the parameters
+        // are forgotten anyway so no name bound here can ever be answered from before.
+        for (p, _) in &m.params {
+            self.built_objects.forget(p);
         }
         let scope = self.scopes.last_mut().expect("macro scope");
         for ((p, _), a) in m.params.iter().zip(args) {

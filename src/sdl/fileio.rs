@@ -202,6 +202,7 @@ impl Parser {
             OpenFile::Write(std::io::BufWriter::new(f))
         };
         self.files.insert(id.clone(), file);
+        self.built_objects.forget(&id);
         self.scopes[0].insert(id.clone(), Value::File(id));
         Ok(())
     }
@@ -229,6 +230,7 @@ impl Parser {
             w.flush()
                 .map_err(|e| self.error_at(span, format!("cannot write the file '{id}': {e}")))?;
         }
+        self.built_objects.forget(id);
         self.scopes[0].remove(id);
         Ok(())
     }

@@ -4,6 +4,7 @@
 pub mod algebraic;
 pub mod array;
 pub mod atmosphere;
+mod built_objects;
 pub mod builtins_math;
 pub mod bulk;
 pub mod byref;

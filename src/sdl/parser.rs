@@ -177,6 +177,8 @@ pub struct Parser {
     pub(super) deprecated: super::deprecated::Deprecations,
     /// How many times `trace()` ran, to warn once a scene leans on it heavily.
     pub(super) trace_calls: u32,
+    /// Objects built for `trace()` and its kin, per identifier.
+    pub(super) built_objects: super::built_objects::BuiltObjects,
     /// `#while`/`#for` iterations so far, against `ParseOptions::max_loop_iterations`.
     pub(super) loop_iterations: u64,
     /// Current depth of `nested` calls.
@@ -246,6 +248,7 @@ impl Parser {
             files: Default::default(),
             deprecated: Default::default(),
             trace_calls: 0,
+            built_objects: Default::default(),
             loop_iterations: 0,
             nesting: 0,
             utf8_strings: false,
@@ -542,6 +545,7 @@ impl Parser {
             self.check_conds_closed()?;
             if self.frames.pop().is_some_and(|f| f.scope) {
                 self.scopes.pop();
+                self.built_objects.scopes_left(self.scopes.len());
             }
         }
     }
