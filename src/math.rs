@@ -232,6 +232,10 @@ impl Aabb {
                 Aabb::INFINITE
             };
         }
+        self.corners_mapped(&t.m)
+    }
+    /// The box of this finite box's eight corners taken through the affine matrix `m`.
+    pub fn corners_mapped(&self, m: &DMat4) -> Aabb {
         let mut out = Aabb::EMPTY;
         for i in 0..8 {
             let p = DVec3::new(
@@ -239,7 +243,7 @@ impl Aabb {
                 if i & 2 == 0 { self.min.y } else { self.max.y },
                 if i & 4 == 0 { self.min.z } else { self.max.z },
             );
-            out = out.grow(t.point(p));
+            out = out.grow(m.transform_point3(p));
         }
         out
     }

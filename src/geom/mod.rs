@@ -151,4 +151,18 @@ pub(crate) mod test_rng {
         }
         c
     }
+
+    /// The nearest of all a shape's crossings in (EPSILON, tmax): what `intersect_first` must
+    /// answer, bit for bit, for the solvers that find it without every crossing.
+    pub fn nearest_of_all<S: super::Shape + ?Sized>(
+        shape: &S,
+        ray: &crate::math::Ray,
+        tmax: f64,
+    ) -> Option<super::Hit> {
+        let mut all = Vec::new();
+        shape.intersect_all(ray, &mut all);
+        all.into_iter()
+            .filter(|h| h.t > crate::math::EPSILON && h.t < tmax)
+            .min_by(|a, b| a.t.total_cmp(&b.t))
+    }
 }

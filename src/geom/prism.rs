@@ -741,13 +741,7 @@ mod tests {
                     } else {
                         f64::INFINITY
                     };
-                    let mut all = Vec::new();
-                    pr.intersect_all(&ray, &mut all);
-                    let want = all
-                        .iter()
-                        .filter(|h| h.t > EPSILON && h.t < tmax)
-                        .min_by(|a, b| a.t.total_cmp(&b.t))
-                        .copied();
+                    let want = crate::geom::test_rng::nearest_of_all(&pr, &ray, tmax);
                     let got = pr.intersect_first(&ray, tmax, &mut Vec::new());
                     n_hits += want.is_some() as usize;
                     let key =

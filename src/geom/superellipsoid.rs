@@ -555,13 +555,8 @@ mod tests {
                 let o = rng.vec(5.0);
                 let ray = Ray::new(o, rng.vec(1.0).normalize() * 1.7 - o * 0.1 * rng.next());
                 let tmax = if rng.next() < 0.3 { 2.0 } else { f64::INFINITY };
-                let mut all = Vec::new();
-                s.intersect_all(&ray, &mut all);
-                let want = all
-                    .iter()
-                    .filter(|h| h.t > EPSILON && h.t < tmax)
-                    .min_by(|a, b| a.t.total_cmp(&b.t))
-                    .map(|h| h.t.to_bits());
+                let want =
+                    crate::geom::test_rng::nearest_of_all(&s, &ray, tmax).map(|h| h.t.to_bits());
                 let got = s.intersect_first(&ray, tmax, &mut Vec::new());
                 assert_eq!(want, got.map(|h| h.t.to_bits()), "{e} {n} {ray:?}");
             }

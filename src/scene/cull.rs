@@ -138,19 +138,7 @@ fn map_box(b: &Aabb, m: &DMat4) -> Option<Aabb> {
         let out = Aabb::new(lo, hi);
         return (!lo.is_nan() && !hi.is_nan()).then_some(out);
     }
-    if !b.is_finite() {
-        return None;
-    }
-    let mut out = Aabb::EMPTY;
-    for i in 0..8 {
-        let p = DVec3::new(
-            if i & 1 == 0 { b.min.x } else { b.max.x },
-            if i & 2 == 0 { b.min.y } else { b.max.y },
-            if i & 4 == 0 { b.min.z } else { b.max.z },
-        );
-        out = out.grow(m.transform_point3(p));
-    }
-    Some(out)
+    b.is_finite().then(|| b.corners_mapped(m))
 }
 
 /// Half-spaces n·p <= d holding the object's solid: a plane's own, its box's faces, those of

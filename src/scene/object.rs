@@ -118,6 +118,31 @@ pub struct Scratch<'a> {
     pub media_scatter: Vec<(DVec3, crate::scene::media::Scattering)>,
 }
 
+/// Calls `f(member, i, s)` for every member of a CSG node a ray may cross within `tmax`: all of
+/// them in member order without an index, else the index's candidates (a leaf of an opened
+/// member union, numbered as the index numbers it).
+fn each_member<'a>(
+    children: &'a [Object],
+    index: Option<&ChildIndex>,
+    ray: &Ray,
+    tmax: f64,
+    s: &mut Scratch<'a>,
+    mut f: impl FnMut(&'a Object, usize, &mut Scratch<'a>),
+) {
+    match index {
+        None => children.iter().enumerate().for_each(|(i, c)| f(c, i, s)),
+        Some(ix) => {
+            let from = s.members.len();
+            ix.candidates(ray, tmax, &mut s.members);
+            for k in from..s.members.len() {
+                let i = s.members[k] as usize;
+                f(ix.leaf(children, i), i, s);
+            }
+            s.members.truncate(from);
+        }
+    }
+}
+
 /// Whether a crossing at `p` of CSG member `i` is on the result's surface: every other member
 /// must contain `p` (intersection), not contain it (union-like merge), or, for a difference,
 /// the first member must and the subtracted ones must not.
@@ -305,21 +330,7 @@ impl Object {
                 s.csg_order.push((s.surface[j].t, j as u32, i as u32));
             }
         };
-        match index {
-            None => children
-                .iter()
-                .enumerate()
-                .for_each(|(i, c)| gather(c, i, s)),
-            Some(ix) => {
-                let from = s.members.len();
-                ix.candidates(ray, tmax, &mut s.members);
-                for k in from..s.members.len() {
-                    let i = s.members[k] as usize;
-                    gather(ix.leaf(children, i), i, s);
-                }
-                s.members.truncate(from);
-            }
-        }
+        each_member(children, index, ray, tmax, s, gather);
         let order = &mut s.csg_order[order_from..];
         order.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
         let rejecter = std::cell::Cell::new(usize::MAX);
@@ -427,22 +438,8 @@ impl Object {
                     }
                     s.surface.truncate(k);
                 };
-                match index {
-                    None => children
-                        .iter()
-                        .enumerate()
-                        .for_each(|(i, c)| member(c, i, s)),
-                    // In member order, as the scan: callers see crossings in this order.
-                    Some(ix) => {
-                        let from = s.members.len();
-                        ix.candidates(ray, tmax, &mut s.members);
-                        for k in from..s.members.len() {
-                            let i = s.members[k] as usize;
-                            member(ix.leaf(children, i), i, s);
-                        }
-                        s.members.truncate(from);
-                    }
-                }
+                // In member order, as the scan: callers see crossings in this order.
+                each_member(children, index, ray, tmax, s, member);
                 if self.inverse {
                     s.surface[mine..].iter_mut().for_each(|h| h.flip = !h.flip);
                 }

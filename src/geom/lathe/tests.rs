@@ -189,13 +189,7 @@ fn nearest_crossing_is_the_defaults() {
             } else {
                 f64::INFINITY
             };
-            let mut all = Vec::new();
-            l.intersect_all(&ray, &mut all);
-            let want = all
-                .iter()
-                .filter(|h| h.t > EPSILON && h.t < tmax)
-                .min_by(|a, b| a.t.total_cmp(&b.t))
-                .copied();
+            let want = crate::geom::test_rng::nearest_of_all(&l, &ray, tmax);
             let got = l.intersect_first(&ray, tmax, &mut Vec::new());
             hits += want.is_some() as usize;
             let key = |h: Option<Hit>| h.map(|h| (h.t.to_bits(), h.part, h.uv[0].to_bits()));
