@@ -38,8 +38,18 @@ sphere { <-1,0,0>, 0.7 pigment { rgb <0.2,0.8,0.3> } }
 sphere { <1,0,0>, 0.7 pigment { rgbt <0.9,0.5,0.2,0.4> } }
 ";
 
+/// A directory of the running test's own: the tests run in parallel and several write files
+/// of the same names (ramp.pov, g1.png), so a shared one let one test read another's
+/// half-written scene (seen once in CI: an empty ramp.pov rendered without gamma handling).
 fn scratch() -> PathBuf {
-    let d = std::env::temp_dir().join(format!("lancer-output-formats-{}", std::process::id()));
+    let test = std::thread::current()
+        .name()
+        .unwrap_or("main")
+        .replace("::", "-");
+    let d = std::env::temp_dir().join(format!(
+        "lancer-output-formats-{}/{test}",
+        std::process::id()
+    ));
     std::fs::create_dir_all(&d).unwrap();
     d
 }
