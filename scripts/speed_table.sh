@@ -18,15 +18,18 @@
 #   -n: the lancer binary measured (default target/release/lancer)
 #   -c: CPU seconds instead of wall-clock phases, for a shared machine: POV-Ray's
 #       "CPU-seconds total" of Parse, Bounding, Photon, Radiosity and Trace against lancer's whole process
-#       (user + system, from /usr/bin/time) writing a PPM file (+FP), whose writing costs
-#       next to nothing (a PNG's compression does: 10-20 ms at 320x240), so it is parse, build
-#       and render plus start-up (subtracting the write phase's wall time does not work under
-#       load: waiting for a core counts in it). /usr/bin/time counts in 10 ms steps.
+#       (task-clock from `perf stat`, or user + system from /usr/bin/time in 10 ms steps when
+#       perf is missing) writing a PPM file (+FP), whose writing costs next to nothing (a PNG's
+#       compression does: 10-20 ms at 320x240), so it is parse, build and render plus start-up
+#       (subtracting the write phase's wall time does not work under load: waiting for a core
+#       counts in it).
 #       Benchmark 1 and 2 only use this.
 set -uo pipefail
 export LANCER_NO_CONFIG=1 # lancer reads no povray.ini/povray.conf: results do not depend on the machine
 cd "$(dirname "$0")/.."
 lancer=$PWD/target/release/lancer
+have_perf=0
+perf stat -x, -e task-clock -o /dev/null true 2>/dev/null && have_perf=1
 other=
 reps=2
 only=()
@@ -80,8 +83,17 @@ run_lancer() {
   for i in $(seq "$reps"); do
     if [ "$cpu" = 1 ]; then
       # PPM: writing it costs next to nothing, so the process's CPU is parse, build and render.
-      (cd "$dir" && nice timeout 300 /usr/bin/time -f "cpu %U %S" "$bin" -D -V +FP -A "+W$w" "+H$h" +WT1 "+L$dir" "+L$inc" "+I$path" "+O$tmp/l.ppm" 2>&1 >/dev/null) |
-        grep -B1 -E "^cpu " | paste -sd' ' | grep -E "wrote" | grep -oE "cpu [0-9.]+ [0-9.]+$" | awk '{printf "%.3f", $2 + $3}'
+      if [ "$have_perf" = 1 ]; then
+        # perf's task-clock counts in nanoseconds; /usr/bin/time's 10 ms steps were a fifth of
+        # the smallest scenes' time.
+        rm -f "$tmp/perf.txt"
+        if (cd "$dir" && nice timeout 300 perf stat -x, -e task-clock -o "$tmp/perf.txt" "$bin" -D -V +FP -A "+W$w" "+H$h" +WT1 "+L$dir" "+L$inc" "+I$path" "+O$tmp/l.ppm" 2>&1 >/dev/null) | grep -qE "wrote"; then
+          awk -F, '$3 ~ /^task-clock/ {printf "%.4f", $1 / 1000}' "$tmp/perf.txt"
+        fi
+      else
+        (cd "$dir" && nice timeout 300 /usr/bin/time -f "cpu %U %S" "$bin" -D -V +FP -A "+W$w" "+H$h" +WT1 "+L$dir" "+L$inc" "+I$path" "+O$tmp/l.ppm" 2>&1 >/dev/null) |
+          grep -B1 -E "^cpu " | paste -sd' ' | grep -E "wrote" | grep -oE "cpu [0-9.]+ [0-9.]+$" | awk '{printf "%.3f", $2 + $3}'
+      fi
     else
       (cd "$dir" && nice timeout 300 "$bin" -D -V +FN8 -A "+W$w" "+H$h" +WT1 "+L$dir" "+L$inc" "+I$path" "+O$tmp/l.png" 2>&1) | grep -E "wrote" | lancer_work
     fi
