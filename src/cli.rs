@@ -736,10 +736,15 @@ fn apply_pov_option(
         t.parse::<f64>()
             .map_err(|_| format!("bad number in option {opt}"))
     };
-    // Memory (+MI), render order (+RP +RS +BS), bounding (+B +BM) and warning-level (+WL)
+    // Memory (+MI), render order (+RP +RS), bounding (+B +BM) and warning-level (+WL)
     // options do not change the picture. Field rendering (+UF +UO) is accepted and ignored by
     // povray 3.7 as well: its frames are whole pictures either way (checked).
-    if ["MI", "RP", "RS", "BS", "WL", "UF", "UO", "B"]
+    if let Some(rest) = upper.strip_prefix("BS") {
+        // POV-Ray takes at least 4 (its manual).
+        s.aa_block = (num(rest)? as u32).max(4);
+        return Ok(());
+    }
+    if ["MI", "RP", "RS", "WL", "UF", "UO", "B"]
         .iter()
         .any(|p| upper.starts_with(p))
     {

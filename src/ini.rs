@@ -175,6 +175,7 @@ fn switch_for(key: &str, value: &str) -> Result<Option<String>, String> {
         "antialias" => flag("A"),
         "antialias_threshold" => with("A"),
         "antialias_depth" => with("R"),
+        "render_block_size" => with("BS"),
         "sampling_method" => with("AM"),
         "antialias_gamma" => with("AG"),
         "output_alpha" => flag("UA"),
@@ -252,7 +253,6 @@ fn switch_for(key: &str, value: &str) -> Result<Option<String>, String> {
         | "odd_field"
         | "max_image_buffer_memory"
         | "render_pattern"
-        | "render_block_size"
         | "render_block_step"
         | "warning_level"
         // Preview-only, and lancer's radiosity is always reproducible (docs/radiosity.md).

@@ -1,5 +1,5 @@
-//! POV-Ray's adaptive anti-aliasing: method 1 refines the first pass of one sample per pixel,
-//! method 2 replaces it with recursive subdivision from the pixel corners.
+//! POV-Ray's adaptive anti-aliasing: method 1 (`aa1`) refines the first pass of one sample per
+//! pixel, method 2 (here) replaces it with recursive subdivision from the pixel corners.
 //!
 //! Samples are compared on linear light raised to 1/Antialias_Gamma (2.5 by default), the way
 //! POV-Ray 3.7 compares them, not on the file's encoding; they are averaged in the working
@@ -24,14 +24,14 @@ pub struct Pass {
 }
 
 /// How POV-Ray measures the difference between two samples.
-struct Measure {
+pub(super) struct Measure {
     /// Working space to linear light to the 1/Antialias_Gamma power, in one exponent.
     exponent: f64,
     alpha: bool,
 }
 
 impl Measure {
-    fn new(tracer: &Tracer, s: &RenderSettings) -> Measure {
+    pub(super) fn new(tracer: &Tracer, s: &RenderSettings) -> Measure {
         let working_gamma = match tracer.scene.gamma {
             GammaMode::Corrected(g) => g,
             GammaMode::None => 1.0,
@@ -42,7 +42,7 @@ impl Measure {
         }
     }
 
-    fn sample(&self, seen: Seen) -> Sample {
+    pub(super) fn sample(&self, seen: Seen) -> Sample {
         let e = self.exponent;
         let c = seen.rgb;
         Sample {
@@ -55,7 +55,7 @@ impl Measure {
         }
     }
 
-    fn distance(&self, a: &Sample, b: &Sample) -> f64 {
+    pub(super) fn distance(&self, a: &Sample, b: &Sample) -> f64 {
         let d = (a.enc - b.enc).abs().element_sum();
         // With +UA POV-Ray adds the difference in transparency, as it is (no gamma): black
         // spheres with transmit T (T² through both surfaces) over the background start being
@@ -72,109 +72,9 @@ impl Measure {
 /// A sample with its colour in the space where differences are measured, converted once
 /// however often it is compared.
 #[derive(Clone, Copy, Default)]
-struct Sample {
-    seen: Seen,
+pub(super) struct Sample {
+    pub(super) seen: Seen,
     enc: DVec3,
-}
-
-/// Method 1 refines `samples` (the first pass) in place: a pixel whose colour differs from its
-/// left or upper neighbour by more than the threshold (sum over channels) is supersampled on a
-/// depth×depth grid, and so is that neighbour; the samples are averaged with the first one.
-/// Returns all rays and camera rays traced.
-pub fn method1(
-    tracer: &Tracer,
-    samples: &mut [Seen],
-    s: &RenderSettings,
-    threshold: f64,
-) -> (u64, u64) {
-    let mark = method1_marks(tracer, samples, 0, s, threshold);
-    method1_refine(tracer, samples, &mark, 0, s)
-}
-
-/// Which pixels method 1 supersamples, for first-pass `samples` holding whole picture rows
-/// from row `first_y` on. The first row is compared with nothing above it: a band rendered
-/// alone passes the row above it along, and uses only the marks of the rows below that.
-pub fn method1_marks(
-    tracer: &Tracer,
-    samples: &[Seen],
-    first_y: usize,
-    s: &RenderSettings,
-    threshold: f64,
-) -> Vec<bool> {
-    let w = s.width as usize;
-    let h = samples.len() / w.max(1);
-    let measure = Measure::new(tracer, s);
-    let enc: Vec<Sample> = samples.iter().map(|p| measure.sample(*p)).collect();
-    let differs = |a: usize, b: usize| measure.distance(&enc[a], &enc[b]) > threshold;
-    // Outside a partial render's window nothing was traced, so nothing is compared there.
-    let mut mark = vec![false; w * h];
-    for ly in 0..h {
-        let y = first_y + ly;
-        for x in 0..w {
-            let i = ly * w + x;
-            if !s.inside(x, y) {
-                continue;
-            }
-            if x > 0 && s.inside(x - 1, y) && differs(i, i - 1) {
-                mark[i] = true;
-                mark[i - 1] = true;
-            }
-            if ly > 0 && s.inside(x, y - 1) && differs(i, i - w) {
-                mark[i] = true;
-                mark[i - w] = true;
-            }
-        }
-    }
-    mark
-}
-
-/// Supersamples the marked pixels of `samples` (whole rows from row `first_y` on) in place;
-/// returns all rays and camera rays traced.
-pub fn method1_refine(
-    tracer: &Tracer,
-    samples: &mut [Seen],
-    mark: &[bool],
-    first_y: usize,
-    s: &RenderSettings,
-) -> (u64, u64) {
-    let w = s.width as usize;
-    let n = s.aa_depth.max(1);
-    let rays = AtomicU64::new(0);
-    let camera_rays = AtomicU64::new(0);
-    samples
-        .par_chunks_mut(w)
-        .enumerate()
-        .for_each_init(TraceCtx::default, |ctx, (ly, row)| {
-            let y = first_y + ly;
-            let mut traced = 0;
-            for (x, px) in row.iter_mut().enumerate() {
-                if !mark[ly * w + x] {
-                    continue;
-                }
-                traced += (n * n) as u64;
-                let mut sum = *px;
-                for j in 0..n {
-                    for i in 0..n {
-                        let k = j * n + i;
-                        let jx = jitter_hash(x as u32, y as u32, 2 * k) * s.jitter;
-                        let jy = jitter_hash(x as u32, y as u32, 2 * k + 1) * s.jitter;
-                        let sx = x as f64 + (i as f64 + 0.5 + jx) / n as f64;
-                        let sy = y as f64 + (j as f64 + 0.5 + jy) / n as f64;
-                        let t = tracer.trace_camera_at(sx, sy, ctx);
-                        sum.rgb += t.rgb;
-                        sum.clear += t.clear;
-                    }
-                }
-                let k = (1 + n * n) as f64;
-                *px = Seen {
-                    rgb: sum.rgb / k,
-                    clear: sum.clear / k,
-                };
-            }
-            camera_rays.fetch_add(traced, Ordering::Relaxed);
-            rays.fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
-        });
-    (rays.into_inner(), camera_rays.into_inner())
 }
 
 /// Method 2, adaptive recursive supersampling. What POV-Ray 3.7.0.10 does was measured with

@@ -3,13 +3,13 @@
 //!
 //! Every pixel is computed exactly as `render` computes it (same rays, same jitter, same
 //! anti-aliasing decisions), so the pixels are the same; only their delivery differs. Method 1
-//! anti-aliasing compares each pixel's first-pass sample with its four neighbours, so each band
-//! is given the first-pass row above it and traces the row below it one band early (and hands
-//! it on), so that no row is traced twice and the ray counts agree too. Method 2 shares corner
-//! samples between rows and is not banded: callers keep it in memory or refuse.
+//! anti-aliasing refines blocks of rows on their own (`aa1`), so with it a band holds whole
+//! block rows and is given the first-pass row above it by the band before, so that no row is
+//! traced twice and the ray counts agree too. Method 2 shares corner samples between rows and
+//! is not banded: callers keep it in memory or refuse.
 
 use super::trace::{Quality, Seen, Tracer};
-use super::{aa, film_of, first_pass_rows, Film, RenderSettings};
+use super::{aa1, film_of, first_pass_rows, Film, RenderSettings};
 use crate::scene::build::Scene;
 
 /// Bytes a pixel costs while a picture is rendered and written whole: the first pass's
@@ -63,14 +63,17 @@ pub fn render_bands(
     let (w, h) = (s.width as usize, s.height as usize);
     let rows = rows.max(1);
     let (mut rays, mut camera_rays) = (cache.as_ref().map_or(0, |c| c.rays), 0);
-    // First-pass samples of the row above the band and of the band's first row, when an
-    // earlier band traced them.
-    let mut above: Vec<Seen> = Vec::new();
-    let mut ahead: Vec<Seen> = Vec::new();
+    // Method 1 refines whole blocks, so its bands hold whole block rows, counted from the
+    // window's top; each needs only the first pass of the row above it, which the band before
+    // traced and hands on.
+    let block = aa1::block_size(s);
+    let (_, top) = aa1::block_origin(s);
+    let aligned = rows.div_ceil(block) * block;
+    let mut above: Option<Vec<Seen>> = None;
     let mut y0 = 0;
     while y0 < h {
-        let y1 = (y0 + rows).min(h);
         let Some(threshold) = s.antialias else {
+            let y1 = (y0 + rows).min(h);
             let pass = first_pass_rows(&tracer, s, y0..y1, progress);
             let film = film_of(&pass.samples, s, (y1 - y0) as u32, scene.gamma, (0, 0));
             rays += pass.rays;
@@ -79,27 +82,28 @@ pub fn render_bands(
             y0 = y1;
             continue;
         };
-        // Rows first_y..end: the row above (if any), this band, the row below (if any).
-        let end = (y1 + 1).min(h);
-        let traced_from = y0 + usize::from(!ahead.is_empty());
-        let pass = first_pass_rows(&tracer, s, traced_from..end, progress);
+        let y1 = if y0 < top {
+            (y0 + aligned).min(top)
+        } else {
+            y0 + aligned
+        }
+        .min(h);
+        let mut pass = first_pass_rows(&tracer, s, y0..y1, progress);
         rays += pass.rays;
         camera_rays += pass.camera_rays;
-        let first_y = y0 - usize::from(!above.is_empty());
-        let mut local = std::mem::take(&mut above);
-        local.append(&mut ahead);
-        local.extend_from_slice(&pass.samples);
-        drop(pass);
-        let mark = aa::method1_marks(&tracer, &local, first_y, s, threshold);
-        let at = |y: usize| (y - first_y) * w;
-        above = local[at(y1 - 1)..at(y1)].to_vec();
-        ahead = local[at(y1)..].to_vec();
-        let mut band = local[at(y0)..at(y1)].to_vec();
-        drop(local);
-        let (r, c) = aa::method1_refine(&tracer, &mut band, &mark[at(y0)..at(y1)], y0, s);
+        let last = pass.samples[(y1 - 1 - y0) * w..].to_vec();
+        let (r, c) = aa1::refine_rows(
+            &tracer,
+            &mut pass.samples,
+            y0,
+            above.as_deref(),
+            s,
+            threshold,
+        );
+        above = Some(last);
         rays += r;
         camera_rays += c;
-        let film = film_of(&band, s, (y1 - y0) as u32, scene.gamma, (0, 0));
+        let film = film_of(&pass.samples, s, (y1 - y0) as u32, scene.gamma, (0, 0));
         sink(&film)?;
         y0 = y1;
     }
@@ -159,12 +163,14 @@ mod tests {
             (Some(0.1), false, None),
             (Some(0.1), true, Some(windowed)),
         ] {
+            // Blocks of 4 rows, so that method 1's bands are several.
             let s = RenderSettings {
                 width: 37,
                 height: 29,
                 antialias: aa,
                 alpha,
                 window,
+                aa_block: 4,
                 ..RenderSettings::default()
             };
             let whole = render(&scene, &s, &|_| {});

@@ -4,6 +4,7 @@
 //! from a hash of the pixel and sample, so the picture is the same for any thread count.
 
 mod aa;
+mod aa1;
 pub mod band;
 pub mod camera;
 mod cells_data;
@@ -60,6 +61,9 @@ pub struct RenderSettings {
     pub aa_gamma: f64,
     /// `+AM`: 1 is POV-Ray's non-recursive adaptive method, 2 the recursive one.
     pub sampling_method: u32,
+    /// `+BS` (`Render_Block_Size`): method 1 refines the picture in blocks this wide, each on
+    /// its own, so the block size changes the picture (`aa1`).
+    pub aa_block: u32,
 }
 
 /// A rectangle of pixels, end-exclusive.
@@ -91,6 +95,7 @@ impl Default for RenderSettings {
             quality: 9,
             aa_gamma: 2.5,
             sampling_method: 1,
+            aa_block: aa1::DEFAULT_BLOCK,
         }
     }
 }
@@ -163,7 +168,7 @@ pub fn render(scene: &Scene, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)
         threshold => {
             let mut pass = first_pass(&tracer, s, progress);
             if let Some(threshold) = threshold {
-                let (rays, camera_rays) = aa::method1(&tracer, &mut pass.samples, s, threshold);
+                let (rays, camera_rays) = aa1::method1(&tracer, &mut pass.samples, s, threshold);
                 pass.rays += rays;
                 pass.camera_rays += camera_rays;
             }

@@ -12,7 +12,7 @@ use rayon::prelude::*;
 
 use super::photons::PhotonMap;
 use super::trace::{Quality, Seen, TraceCtx, Tracer};
-use super::{aa, film_of, radiosity, with_radiosity, Film, RenderSettings};
+use super::{aa, aa1, film_of, radiosity, with_radiosity, Film, RenderSettings};
 use crate::scene::build::Scene;
 
 /// What the preview switches beyond `RenderSettings`.
@@ -196,7 +196,7 @@ impl View<'_> {
             threshold => {
                 if let Some(threshold) = threshold {
                     let (rays, camera_rays) =
-                        aa::method1(&self.tracer, &mut p.samples, s, threshold);
+                        aa1::method1(&self.tracer, &mut p.samples, s, threshold);
                     p.rays += rays;
                     p.camera_rays += camera_rays;
                 }
