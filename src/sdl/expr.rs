@@ -235,9 +235,30 @@ impl Parser {
     }
 
     fn parse_primary(&mut self) -> PResult<Value> {
+        // The token is read in place (`ready`): copying it out was a tenth of a `#while`
+        // loop's parse.
+        if !self.ready()? {
+            return Err(self.eof_error());
+        }
+        let Some(t) = self.current_token() else {
+            return Err(self.eof_error());
+        };
+        let span = t.span;
+        match &t.tok {
+            Tok::Num(n) => {
+                let n = *n;
+                self.advance();
+                return Ok(Value::Float(n));
+            }
+            Tok::Ident(k) => {
+                let k = k.clone();
+                self.advance();
+                return self.parse_ident_value(k, span);
+            }
+            _ => {}
+        }
         let t = self.next_tok()?;
         match &t.tok {
-            Tok::Num(n) => Ok(Value::Float(*n)),
             Tok::Str(s) => Ok(Value::Str(s.clone())),
             Tok::Sym(Sym::LParen) => {
                 let v = self.with_rel(true, |p| p.parse_expr())?;
@@ -245,7 +266,6 @@ impl Parser {
                 Ok(v)
             }
             Tok::Sym(Sym::Lt) => self.parse_vector_literal(),
-            Tok::Ident(k) => self.parse_ident_value(k.clone(), t.span),
             _ => Err(self.error_at(
                 t.span,
                 format!(
@@ -429,7 +449,11 @@ impl Parser {
 
     /// Span of the next token, for messages about the value that starts there.
     pub(super) fn next_span(&mut self) -> PResult<Span> {
-        Ok(self.peek()?.map(|t| t.span).unwrap_or_default())
+        Ok(if self.ready()? {
+            self.last_span
+        } else {
+            Span::default()
+        })
     }
 
     pub fn parse_vector(&mut self) -> PResult<DVec3> {
