@@ -9,7 +9,7 @@ use crate::color::Rgbft;
 use crate::math::DVec3;
 
 use super::lexer::{Sym, Tok};
-use super::parser::{PResult, Parser};
+use super::parser::{IdentClass, PResult, Parser};
 use super::source::Span;
 use super::value::Value;
 
@@ -252,8 +252,14 @@ impl Parser {
             }
             Tok::Ident(k) => {
                 let k = k.clone();
+                // `ready` looked the identifier up already.
+                let class = self.plain_ident_class();
                 self.advance();
-                return self.parse_ident_value(k, span);
+                return match class {
+                    Some(IdentClass::Float(f)) => Ok(Value::Float(f)),
+                    Some(IdentClass::Undeclared) => self.builtin_ident_value(k, span),
+                    _ => self.parse_ident_value(k, span),
+                };
             }
             _ => {}
         }
@@ -323,6 +329,11 @@ impl Parser {
             Some(v) => return Ok(v.clone()),
             None => {}
         }
+        self.builtin_ident_value(k, span)
+    }
+
+    /// An identifier no symbol table holds: a built-in value or call, or an error.
+    fn builtin_ident_value(&mut self, k: Rc<str>, span: Span) -> PResult<Value> {
         // The maths built-ins first: `mod(I, 100)` in a loop should not be compared with every
         // other built-in name on the way (no name is both; see builtins_math's tests).
         if let Some(r) = self.math_builtin(&k, span) {

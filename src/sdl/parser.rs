@@ -153,6 +153,9 @@ pub struct Parser {
     /// The token position (frame count, position, token list) last found by `peek` to be a
     /// plain identifier, so peeking it again skips the macro and array lookups.
     plain_ident_at: Option<(usize, usize, usize)>,
+    /// What the look-up at `plain_ident_at` found, so the operand reader need not look the
+    /// identifier up a second time.
+    pub(super) plain_ident: IdentClass,
     file_cache: HashMap<PathBuf, CachedFile>,
     pub options: ParseOptions,
     pub(super) scene_dir: PathBuf,
@@ -189,6 +192,17 @@ pub struct Parser {
     /// Inside a media's `density { }`: a pigment body read as a density (white by default,
     /// a grey ramp as its default map, `density` items and `density_map`).
     pub(super) in_density: bool,
+}
+
+/// What an identifier found plain by `ready` stands for.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum IdentClass {
+    /// No symbol table has it: a keyword or built-in name, or an undeclared identifier.
+    Undeclared,
+    /// A declared float (the loop counters and constants of big loops), its value.
+    Float(f64),
+    /// Anything else declared.
+    Declared,
 }
 
 /// A file's tokens, kept for as long as the file on disk is unchanged.
@@ -233,6 +247,7 @@ impl Parser {
             conds: Vec::new(),
             scopes: vec![globals],
             plain_ident_at: None,
+            plain_ident: IdentClass::Declared,
             file_cache: HashMap::new(),
             options,
             scene_dir: PathBuf::from("."),
@@ -698,7 +713,12 @@ impl Parser {
                             self.advance();
                             self.push_element(name, span)?;
                         }
-                        _ => {
+                        found => {
+                            self.plain_ident = match found {
+                                None => IdentClass::Undeclared,
+                                Some(Value::Float(f)) => IdentClass::Float(*f),
+                                Some(_) => IdentClass::Declared,
+                            };
                             self.plain_ident_at = Some(at);
                             return Ok(true);
                         }
@@ -707,6 +727,12 @@ impl Parser {
                 _ => return Ok(true),
             }
         }
+    }
+
+    /// What the identifier at the current token stands for, when `ready` has just found
+    /// it plain (`None` otherwise).
+    pub(super) fn plain_ident_class(&self) -> Option<IdentClass> {
+        (self.plain_ident_at == Some(self.position_key())).then_some(self.plain_ident)
     }
 
     /// Where the token stream stands: frame count, position in the innermost frame, and that
