@@ -47,6 +47,9 @@ impl Parser {
     }
 
     fn parse_conditional(&mut self) -> PResult<Value> {
+        if let Some(v) = self.lone_float_operand()? {
+            return Ok(v);
+        }
         let c = self.parse_binary(1)?;
         if self.rel_ok && self.raw_peek_sym()? == Some(Sym::Question) {
             self.advance();
@@ -58,6 +61,46 @@ impl Parser {
             return Ok(if cond != 0.0 { a } else { b });
         }
         Ok(c)
+    }
+
+    /// The whole expression when it is one number or float identifier followed by a symbol
+    /// that ends every expression (`I` and `100` in `mod(I, 100)`): the value is had without
+    /// passing it up through the operator levels, each of which would only look at that same
+    /// symbol. Leaves `last_span` at the symbol, as the levels' look-ahead does.
+    #[inline]
+    fn lone_float_operand(&mut self) -> PResult<Option<Value>> {
+        if !self.ready()? {
+            return Ok(None);
+        }
+        let Some(f) = self.frames.last() else {
+            return Ok(None);
+        };
+        let x = match f.tokens[f.pos].tok {
+            Tok::Num(n) => n,
+            Tok::Ident(_) => match self.plain_ident_class() {
+                Some(IdentClass::Float(x)) => x,
+                _ => return Ok(None),
+            },
+            _ => return Ok(None),
+        };
+        // The symbol must be in the same token list: at its end, the levels' look-ahead
+        // would pop the frame (and report an unclosed #if there).
+        let Some(next) = f.tokens[..f.end].get(f.pos + 1) else {
+            return Ok(None);
+        };
+        let ends = match next.tok {
+            Tok::Sym(Sym::Comma | Sym::RParen | Sym::RBrace | Sym::RBracket | Sym::Semi) => true,
+            // Inside parentheses `>` is a comparison.
+            Tok::Sym(Sym::Gt) => !self.rel_ok,
+            _ => false,
+        };
+        if !ends {
+            return Ok(None);
+        }
+        let span = next.span;
+        self.advance();
+        self.last_span = span;
+        Ok(Some(Value::Float(x)))
     }
 
     fn arith(
@@ -117,20 +160,15 @@ impl Parser {
     }
 
     fn binary(&mut self, op: Sym, a: Value, b: Value, span: Span) -> PResult<Value> {
+        if let (Value::Float(x), Value::Float(y)) = (&a, &b) {
+            // Two floats, the loops' arithmetic: `arith` on them computes exactly this.
+            if let Some(r) = float_op(op, *x, *y) {
+                return Ok(Value::Float(r));
+            }
+        }
         match op {
             Sym::Star => self.arith(a, b, span, |x, y| x * y),
-            // POV-Ray divides by zero with a warning and a huge result; keep it finite.
-            Sym::Slash => self.arith(a, b, span, |x, y| {
-                if y == 0.0 {
-                    if x == 0.0 {
-                        0.0
-                    } else {
-                        x.signum() * 1e10
-                    }
-                } else {
-                    x / y
-                }
-            }),
+            Sym::Slash => self.arith(a, b, span, div_or_big),
             Sym::Plus => self.arith(a, b, span, |x, y| x + y),
             Sym::Minus => self.arith(a, b, span, |x, y| x - y),
             Sym::And => self.arith(a, b, span, |x, y| ((x != 0.0) && (y != 0.0)) as u8 as f64),
@@ -533,6 +571,36 @@ impl Parser {
             return r;
         }
         Err(self.error_at(span, format!("undeclared identifier '{name}'")))
+    }
+}
+
+/// A binary operator on two floats, as `Parser::binary` computes it through `arith`.
+fn float_op(op: Sym, x: f64, y: f64) -> Option<f64> {
+    Some(match op {
+        Sym::Star => x * y,
+        Sym::Slash => div_or_big(x, y),
+        Sym::Plus => x + y,
+        Sym::Minus => x - y,
+        Sym::Lt => (x < y) as u8 as f64,
+        Sym::Le => (x <= y) as u8 as f64,
+        Sym::Eq => (x == y) as u8 as f64,
+        Sym::Ne => (x != y) as u8 as f64,
+        Sym::Ge => (x >= y) as u8 as f64,
+        Sym::Gt => (x > y) as u8 as f64,
+        _ => return None,
+    })
+}
+
+/// POV-Ray divides by zero with a warning and a huge result; keep it finite.
+fn div_or_big(x: f64, y: f64) -> f64 {
+    if y == 0.0 {
+        if x == 0.0 {
+            0.0
+        } else {
+            x.signum() * 1e10
+        }
+    } else {
+        x / y
     }
 }
 
