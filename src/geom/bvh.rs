@@ -61,6 +61,29 @@ fn clamp_box(b: &Aabb) -> Aabb {
     }
 }
 
+/// `Aabb::union` for boxes with no NaN in them (the clamped boxes the heuristic bins): the
+/// ordinary min and max, which pass over NaN, take several instructions a component, and this
+/// union ran three times per primitive per tree level. Only the heuristic's areas come from
+/// these boxes, and a tie between 0 and -0 (the one case where the result may differ) gives
+/// the same area, so the tree is the same.
+#[inline(always)]
+fn union_no_nan(a: &Aabb, b: &Aabb) -> Aabb {
+    let lo = |x: f64, y: f64| if y < x { y } else { x };
+    let hi = |x: f64, y: f64| if y > x { y } else { x };
+    Aabb {
+        min: DVec3::new(
+            lo(a.min.x, b.min.x),
+            lo(a.min.y, b.min.y),
+            lo(a.min.z, b.min.z),
+        ),
+        max: DVec3::new(
+            hi(a.max.x, b.max.x),
+            hi(a.max.y, b.max.y),
+            hi(a.max.z, b.max.z),
+        ),
+    }
+}
+
 fn centroid(b: &Aabb) -> DVec3 {
     if b.is_empty() {
         DVec3::ZERO
@@ -192,11 +215,11 @@ impl Builder<'_> {
         let mut all_counts = [[0usize; BINS]; 3];
         for &p in prims {
             let b = &self.clamped[p as usize];
-            parent = parent.union(b);
+            parent = union_no_nan(&parent, b);
             for axis in 0..3 {
                 if live[axis] {
                     let k = self.bin_of(p, axis, cb);
-                    all_boxes[axis][k] = all_boxes[axis][k].union(b);
+                    all_boxes[axis][k] = union_no_nan(&all_boxes[axis][k], b);
                     all_counts[axis][k] += 1;
                 }
             }
@@ -215,13 +238,13 @@ impl Builder<'_> {
             let mut right_cost = [0.0; BINS];
             let (mut acc, mut cnt) = (Aabb::EMPTY, 0);
             for i in (1..BINS).rev() {
-                acc = acc.union(&boxes[i]);
+                acc = union_no_nan(&acc, &boxes[i]);
                 cnt += counts[i];
                 right_cost[i - 1] = acc.surface_area() * cnt as f64;
             }
             let (mut acc, mut cnt) = (Aabb::EMPTY, 0);
             for i in 0..BINS - 1 {
-                acc = acc.union(&boxes[i]);
+                acc = union_no_nan(&acc, &boxes[i]);
                 cnt += counts[i];
                 if cnt == 0 || cnt == prims.len() {
                     continue;

@@ -163,22 +163,26 @@ impl Parser {
 
     /// Arguments of a built-in call, after its name: `( expr, expr, ... )`.
     pub(super) fn call_args(&mut self, name: &str) -> PResult<Args> {
-        Ok(self.call_args_first_ident(name, false)?.0)
+        let mut args = Args::new();
+        self.call_args_into(name, false, &mut args)?;
+        Ok(args)
     }
 
-    /// `call_args`, and with `first_ident` the identifier the first argument starts with
-    /// (the object of `inside(Obj, P)`, to find what was built from it before).
-    fn call_args_first_ident(
+    /// `call_args` into `args`, and with `first_ident` the identifier the first argument
+    /// starts with (the object of `inside(Obj, P)`, to find what was built from it before).
+    /// The arguments are filled in place: returning them through a `Result` copied the
+    /// 300-byte `Args` for every `mod(I, 100)` of a loop.
+    fn call_args_into(
         &mut self,
         name: &str,
         first_ident: bool,
-    ) -> PResult<(Args, Option<ObjectArg>)> {
+        args: &mut Args,
+    ) -> PResult<Option<ObjectArg>> {
         // The error context is formatted only on an error: this runs for every `mod(I, 100)`
         // of a million-iteration loop.
         self.expect_sym_with(Sym::LParen, || format!("after the function name {name}"))?;
-        let mut args = Args::new();
         if self.eat_sym(Sym::RParen)? {
-            return Ok((args, None));
+            return Ok(None);
         }
         let mut key = None;
         let mut ident = None;
@@ -188,7 +192,7 @@ impl Parser {
                     args.push((KEPT_PLACEHOLDER, s));
                     key = Some(ObjectArg::Kept(built));
                     if self.eat_sym(Sym::RParen)? {
-                        return Ok((args, key));
+                        return Ok(key);
                     }
                     self.expect_sym_with(Sym::Comma, || {
                         format!("between the arguments of {name}")
@@ -199,12 +203,13 @@ impl Parser {
         }
         loop {
             let s = self.next_span()?;
-            args.push((self.with_rel(false, |p| p.parse_expr())?, s));
+            let v = self.with_rel(false, |p| p.parse_expr())?;
+            args.push((v, s));
             if let Some(n) = ident.take() {
                 key = self.object_key(n).map(ObjectArg::Read);
             }
             if self.eat_sym(Sym::RParen)? {
-                return Ok((args, key));
+                return Ok(key);
             }
             self.expect_sym_with(Sym::Comma, || format!("between the arguments of {name}"))?;
         }
@@ -219,8 +224,9 @@ impl Parser {
             self.trace_call()
         } else {
             let object_arg = matches!(name, "inside" | "min_extent" | "max_extent");
-            self.call_args_first_ident(name, object_arg)
-                .and_then(|(args, ident)| self.math_call(name, span, &args, ident))
+            let mut args = Args::new();
+            self.call_args_into(name, object_arg, &mut args)
+                .and_then(|ident| self.math_call(name, span, &args, ident))
         })
     }
 

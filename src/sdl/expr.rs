@@ -9,7 +9,7 @@ use crate::color::Rgbft;
 use crate::math::DVec3;
 
 use super::lexer::{Sym, Tok};
-use super::parser::{PResult, Parser};
+use super::parser::{IdentClass, PResult, Parser};
 use super::source::Span;
 use super::value::Value;
 
@@ -47,6 +47,9 @@ impl Parser {
     }
 
     fn parse_conditional(&mut self) -> PResult<Value> {
+        if let Some(v) = self.lone_float_operand()? {
+            return Ok(v);
+        }
         let c = self.parse_binary(1)?;
         if self.rel_ok && self.raw_peek_sym()? == Some(Sym::Question) {
             self.advance();
@@ -58,6 +61,46 @@ impl Parser {
             return Ok(if cond != 0.0 { a } else { b });
         }
         Ok(c)
+    }
+
+    /// The whole expression when it is one number or float identifier followed by a symbol
+    /// that ends every expression (`I` and `100` in `mod(I, 100)`): the value is had without
+    /// passing it up through the operator levels, each of which would only look at that same
+    /// symbol. Leaves `last_span` at the symbol, as the levels' look-ahead does.
+    #[inline]
+    fn lone_float_operand(&mut self) -> PResult<Option<Value>> {
+        if !self.ready()? {
+            return Ok(None);
+        }
+        let Some(f) = self.frames.last() else {
+            return Ok(None);
+        };
+        let x = match f.tokens[f.pos].tok {
+            Tok::Num(n) => n,
+            Tok::Ident(_) => match self.plain_ident_class() {
+                Some(IdentClass::Float(x)) => x,
+                _ => return Ok(None),
+            },
+            _ => return Ok(None),
+        };
+        // The symbol must be in the same token list: at its end, the levels' look-ahead
+        // would pop the frame (and report an unclosed #if there).
+        let Some(next) = f.tokens[..f.end].get(f.pos + 1) else {
+            return Ok(None);
+        };
+        let ends = match next.tok {
+            Tok::Sym(Sym::Comma | Sym::RParen | Sym::RBrace | Sym::RBracket | Sym::Semi) => true,
+            // Inside parentheses `>` is a comparison.
+            Tok::Sym(Sym::Gt) => !self.rel_ok,
+            _ => false,
+        };
+        if !ends {
+            return Ok(None);
+        }
+        let span = next.span;
+        self.advance();
+        self.last_span = span;
+        Ok(Some(Value::Float(x)))
     }
 
     fn arith(
@@ -117,20 +160,15 @@ impl Parser {
     }
 
     fn binary(&mut self, op: Sym, a: Value, b: Value, span: Span) -> PResult<Value> {
+        if let (Value::Float(x), Value::Float(y)) = (&a, &b) {
+            // Two floats, the loops' arithmetic: `arith` on them computes exactly this.
+            if let Some(r) = float_op(op, *x, *y) {
+                return Ok(Value::Float(r));
+            }
+        }
         match op {
             Sym::Star => self.arith(a, b, span, |x, y| x * y),
-            // POV-Ray divides by zero with a warning and a huge result; keep it finite.
-            Sym::Slash => self.arith(a, b, span, |x, y| {
-                if y == 0.0 {
-                    if x == 0.0 {
-                        0.0
-                    } else {
-                        x.signum() * 1e10
-                    }
-                } else {
-                    x / y
-                }
-            }),
+            Sym::Slash => self.arith(a, b, span, div_or_big),
             Sym::Plus => self.arith(a, b, span, |x, y| x + y),
             Sym::Minus => self.arith(a, b, span, |x, y| x - y),
             Sym::And => self.arith(a, b, span, |x, y| ((x != 0.0) && (y != 0.0)) as u8 as f64),
@@ -235,9 +273,36 @@ impl Parser {
     }
 
     fn parse_primary(&mut self) -> PResult<Value> {
+        // The token is read in place (`ready`): copying it out was a tenth of a `#while`
+        // loop's parse.
+        if !self.ready()? {
+            return Err(self.eof_error());
+        }
+        let Some(t) = self.current_token() else {
+            return Err(self.eof_error());
+        };
+        let span = t.span;
+        match &t.tok {
+            Tok::Num(n) => {
+                let n = *n;
+                self.advance();
+                return Ok(Value::Float(n));
+            }
+            Tok::Ident(k) => {
+                let k = k.clone();
+                // `ready` looked the identifier up already.
+                let class = self.plain_ident_class();
+                self.advance();
+                return match class {
+                    Some(IdentClass::Float(f)) => Ok(Value::Float(f)),
+                    Some(IdentClass::Undeclared) => self.builtin_ident_value(k, span),
+                    _ => self.parse_ident_value(k, span),
+                };
+            }
+            _ => {}
+        }
         let t = self.next_tok()?;
         match &t.tok {
-            Tok::Num(n) => Ok(Value::Float(*n)),
             Tok::Str(s) => Ok(Value::Str(s.clone())),
             Tok::Sym(Sym::LParen) => {
                 let v = self.with_rel(true, |p| p.parse_expr())?;
@@ -245,7 +310,6 @@ impl Parser {
                 Ok(v)
             }
             Tok::Sym(Sym::Lt) => self.parse_vector_literal(),
-            Tok::Ident(k) => self.parse_ident_value(k.clone(), t.span),
             _ => Err(self.error_at(
                 t.span,
                 format!(
@@ -303,6 +367,11 @@ impl Parser {
             Some(v) => return Ok(v.clone()),
             None => {}
         }
+        self.builtin_ident_value(k, span)
+    }
+
+    /// An identifier no symbol table holds: a built-in value or call, or an error.
+    fn builtin_ident_value(&mut self, k: Rc<str>, span: Span) -> PResult<Value> {
         // The maths built-ins first: `mod(I, 100)` in a loop should not be compared with every
         // other built-in name on the way (no name is both; see builtins_math's tests).
         if let Some(r) = self.math_builtin(&k, span) {
@@ -429,7 +498,11 @@ impl Parser {
 
     /// Span of the next token, for messages about the value that starts there.
     pub(super) fn next_span(&mut self) -> PResult<Span> {
-        Ok(self.peek()?.map(|t| t.span).unwrap_or_default())
+        Ok(if self.ready()? {
+            self.last_span
+        } else {
+            Span::default()
+        })
     }
 
     pub fn parse_vector(&mut self) -> PResult<DVec3> {
@@ -498,6 +571,36 @@ impl Parser {
             return r;
         }
         Err(self.error_at(span, format!("undeclared identifier '{name}'")))
+    }
+}
+
+/// A binary operator on two floats, as `Parser::binary` computes it through `arith`.
+fn float_op(op: Sym, x: f64, y: f64) -> Option<f64> {
+    Some(match op {
+        Sym::Star => x * y,
+        Sym::Slash => div_or_big(x, y),
+        Sym::Plus => x + y,
+        Sym::Minus => x - y,
+        Sym::Lt => (x < y) as u8 as f64,
+        Sym::Le => (x <= y) as u8 as f64,
+        Sym::Eq => (x == y) as u8 as f64,
+        Sym::Ne => (x != y) as u8 as f64,
+        Sym::Ge => (x >= y) as u8 as f64,
+        Sym::Gt => (x > y) as u8 as f64,
+        _ => return None,
+    })
+}
+
+/// POV-Ray divides by zero with a warning and a huge result; keep it finite.
+fn div_or_big(x: f64, y: f64) -> f64 {
+    if y == 0.0 {
+        if x == 0.0 {
+            0.0
+        } else {
+            x.signum() * 1e10
+        }
+    } else {
+        x / y
     }
 }
 

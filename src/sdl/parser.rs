@@ -153,6 +153,9 @@ pub struct Parser {
     /// The token position (frame count, position, token list) last found by `peek` to be a
     /// plain identifier, so peeking it again skips the macro and array lookups.
     plain_ident_at: Option<(usize, usize, usize)>,
+    /// What the look-up at `plain_ident_at` found, so the operand reader need not look the
+    /// identifier up a second time.
+    pub(super) plain_ident: IdentClass,
     file_cache: HashMap<PathBuf, CachedFile>,
     pub options: ParseOptions,
     pub(super) scene_dir: PathBuf,
@@ -167,7 +170,7 @@ pub struct Parser {
     released: RefCell<Vec<Diagnostic>>,
     /// Inside `( )`, where comparisons, logic and `? :` are read (see `parse_binary`).
     pub(super) rel_ok: bool,
-    last_span: Span,
+    pub(super) last_span: Span,
     /// States of the random streams `seed()` made, indexed by what it returned.
     pub(super) rand_streams: Vec<u32>,
     /// The array element most recently resolved and the token positions it spanned, so a
@@ -189,6 +192,17 @@ pub struct Parser {
     /// Inside a media's `density { }`: a pigment body read as a density (white by default,
     /// a grey ramp as its default map, `density` items and `density_map`).
     pub(super) in_density: bool,
+}
+
+/// What an identifier found plain by `ready` stands for.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum IdentClass {
+    /// No symbol table has it: a keyword or built-in name, or an undeclared identifier.
+    Undeclared,
+    /// A declared float (the loop counters and constants of big loops), its value.
+    Float(f64),
+    /// Anything else declared.
+    Declared,
 }
 
 /// A file's tokens, kept for as long as the file on disk is unchanged.
@@ -233,6 +247,7 @@ impl Parser {
             conds: Vec::new(),
             scopes: vec![globals],
             plain_ident_at: None,
+            plain_ident: IdentClass::Declared,
             file_cache: HashMap::new(),
             options,
             scene_dir: PathBuf::from("."),
@@ -521,26 +536,34 @@ impl Parser {
         }
     }
 
-    /// The next token without executing directives or macro calls; pops finished frames.
     /// The token at the position in the innermost frame, if that frame has one left.
-    fn current_token(&self) -> Option<&Token> {
+    pub(super) fn current_token(&self) -> Option<&Token> {
         let f = self.frames.last()?;
         (f.pos < f.end).then(|| &f.tokens[f.pos])
     }
 
+    /// The next token without executing directives or macro calls; pops finished frames.
     pub(super) fn raw_peek(&mut self) -> PResult<Option<Token>> {
+        Ok(if self.raw_ready()? {
+            self.current_token().cloned()
+        } else {
+            None
+        })
+    }
+
+    /// `raw_peek` without the copy: whether a token is left, which is then `current_token()`.
+    fn raw_ready(&mut self) -> PResult<bool> {
         loop {
             let Some(f) = self.frames.last() else {
-                return Ok(None);
+                return Ok(false);
             };
             if f.pos < f.end {
-                let t = f.tokens[f.pos].clone();
-                self.last_span = t.span;
-                return Ok(Some(t));
+                self.last_span = f.tokens[f.pos].span;
+                return Ok(true);
             }
             if self.frames.len() == 1 {
                 self.check_conds_closed()?;
-                return Ok(None);
+                return Ok(false);
             }
             self.check_conds_closed()?;
             if self.frames.pop().is_some_and(|f| f.scope) {
@@ -619,6 +642,19 @@ impl Parser {
 
     /// The next token after executing any directives and macro calls in the way.
     pub fn peek(&mut self) -> PResult<Option<Token>> {
+        Ok(if self.ready()? {
+            self.current_token().cloned()
+        } else {
+            None
+        })
+    }
+
+    /// `peek` without copying the token out (a token holding an `Rc` costs a count up and
+    /// down, and returning one through `PResult<Option<Token>>` a 40-byte copy): runs the
+    /// directives and macro calls in the way and says whether a token is left; it is then
+    /// `current_token()`. The grammar's hot paths (operands, symbols, keywords) read it there.
+    #[inline]
+    pub(super) fn ready(&mut self) -> PResult<bool> {
         // Fast path, kept small so it inlines: literals, symbols and identifiers already
         // known to be plain need no directive or macro handling.
         if let Some(t) = self.current_token() {
@@ -628,25 +664,28 @@ impl Parser {
                 Tok::Directive(_) => false,
             };
             if plain {
-                let t = t.clone();
                 self.last_span = t.span;
-                return Ok(Some(t));
+                return Ok(true);
             }
         }
-        self.peek_slow()
+        self.ready_slow()
     }
 
     #[inline(never)]
-    fn peek_slow(&mut self) -> PResult<Option<Token>> {
+    fn ready_slow(&mut self) -> PResult<bool> {
         loop {
-            let Some(t) = self.raw_peek()? else {
-                return Ok(None);
+            if !self.raw_ready()? {
+                return Ok(false);
+            }
+            let Some(t) = self.current_token() else {
+                return Ok(false);
             };
+            let span = t.span;
             match &t.tok {
                 Tok::Directive(d) => {
-                    self.advance();
                     let d = d.clone();
-                    self.directive(&d, t.span)?;
+                    self.advance();
+                    self.directive(&d, span)?;
                 }
                 Tok::Ident(name) => {
                     // Nothing can change what an identifier means between two peeks at the same
@@ -654,31 +693,46 @@ impl Parser {
                     // kept until the next `advance`.
                     let at = self.position_key();
                     if self.plain_ident_at == Some(at) {
-                        return Ok(Some(t));
+                        return Ok(true);
                     }
                     if self.has_deprecations() {
-                        self.check_deprecated(name, t.span);
+                        let name = name.clone();
+                        self.check_deprecated(&name, span);
                     }
+                    let Some(Tok::Ident(name)) = self.current_token().map(|t| &t.tok) else {
+                        unreachable!("the token at the position did not change");
+                    };
                     match self.lookup(name) {
                         Some(Value::Macro(m)) => {
                             let m = m.clone();
                             self.advance();
-                            self.invoke_macro(&m, t.span)?;
+                            self.invoke_macro(&m, span)?;
                         }
                         Some(Value::Array(_)) if self.at_subscript() => {
                             let name = name.clone();
                             self.advance();
-                            self.push_element(name, t.span)?;
+                            self.push_element(name, span)?;
                         }
-                        _ => {
+                        found => {
+                            self.plain_ident = match found {
+                                None => IdentClass::Undeclared,
+                                Some(Value::Float(f)) => IdentClass::Float(*f),
+                                Some(_) => IdentClass::Declared,
+                            };
                             self.plain_ident_at = Some(at);
-                            return Ok(Some(t));
+                            return Ok(true);
                         }
                     }
                 }
-                _ => return Ok(Some(t)),
+                _ => return Ok(true),
             }
         }
+    }
+
+    /// What the identifier at the current token stands for, when `ready` has just found
+    /// it plain (`None` otherwise).
+    pub(super) fn plain_ident_class(&self) -> Option<IdentClass> {
+        (self.plain_ident_at == Some(self.position_key())).then_some(self.plain_ident)
     }
 
     /// Where the token stream stands: frame count, position in the innermost frame, and that
@@ -721,10 +775,13 @@ impl Parser {
                 return Ok(sym);
             }
         }
-        Ok(match self.peek()? {
+        if !self.ready()? {
+            return Ok(None);
+        }
+        Ok(match self.current_token() {
             Some(Token {
                 tok: Tok::Sym(s), ..
-            }) => Some(s),
+            }) => Some(*s),
             _ => None,
         })
     }
@@ -780,7 +837,15 @@ impl Parser {
     }
 
     pub(super) fn peek_ident(&mut self) -> PResult<Option<Rc<str>>> {
-        Ok(match self.peek()? {
+        Ok(self.peek_keyword()?.cloned())
+    }
+
+    /// The next token's identifier, read in place (`peek_ident` without the copy).
+    pub(super) fn peek_keyword(&mut self) -> PResult<Option<&Rc<str>>> {
+        if !self.ready()? {
+            return Ok(None);
+        }
+        Ok(match self.current_token() {
             Some(Token {
                 tok: Tok::Ident(s), ..
             }) => Some(s),
@@ -806,6 +871,12 @@ impl Parser {
         s: Sym,
         context: impl FnOnce() -> String,
     ) -> PResult<Span> {
+        if self.peek_sym()? == Some(s) {
+            // `peek_sym` left the symbol's span in `last_span`.
+            let span = self.last_span;
+            self.advance();
+            return Ok(span);
+        }
         let t = self.next_tok()?;
         if t.tok == Tok::Sym(s) {
             return Ok(t.span);
@@ -817,7 +888,7 @@ impl Parser {
     }
 
     pub(super) fn eat_keyword(&mut self, k: &str) -> PResult<bool> {
-        if self.peek_ident()?.as_deref() == Some(k) {
+        if self.peek_keyword()?.is_some_and(|s| **s == *k) {
             self.advance();
             return Ok(true);
         }
