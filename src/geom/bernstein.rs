@@ -21,6 +21,27 @@ pub const BINOM: [[f64; 17]; 17] = {
     binom
 };
 
+/// `BINOM[k][i] / BINOM[n][i]` for degrees `n` up to 8, the weights of the change to the
+/// Bernstein basis: the same quotients (IEEE division, at compile time) without a division per
+/// term at run time.
+const TO_BERNSTEIN: [[[f64; 9]; 9]; 9] = {
+    let mut w = [[[0.0f64; 9]; 9]; 9];
+    let mut n = 0;
+    while n < 9 {
+        let mut k = 0;
+        while k <= n {
+            let mut i = 0;
+            while i <= k {
+                w[n][k][i] = BINOM[k][i] / BINOM[n][i];
+                i += 1;
+            }
+            k += 1;
+        }
+        n += 1;
+    }
+    w
+};
+
 /// Whether the polynomial keeps one sign on `[lo, hi]` by a margin far above every rounding
 /// error of evaluating it there, so that `isolate` could find no change of sign and no exact
 /// zero: its Bernstein coefficients on the interval (whose hull holds the curve) all exceed,
@@ -65,8 +86,9 @@ pub(crate) fn surely_no_root(c: &[f64], lo: f64, hi: f64) -> bool {
     // Bernstein coefficients b_k = Σ_{i ≤ k} C(k, i) / C(n, i) · q_i.
     let margin = 1e-11 * t;
     let positive = f_lo > 0.0;
+    let w = &TO_BERNSTEIN[n];
     (0..=n).all(|k| {
-        let b: f64 = (0..=k).map(|i| BINOM[k][i] / BINOM[n][i] * q[i]).sum();
+        let b: f64 = (0..=k).map(|i| w[k][i] * q[i]).sum();
         if positive {
             b > margin
         } else {
@@ -110,5 +132,18 @@ mod tests {
             }
         }
         assert!(skipped > 10_000, "{skipped}");
+    }
+
+    /// The table holds the quotients computed at run time, bit for bit.
+    #[test]
+    fn weights_are_the_quotients() {
+        for n in 0..9 {
+            for k in 0..=n {
+                for i in 0..=k {
+                    let q = std::hint::black_box(BINOM[k][i]) / std::hint::black_box(BINOM[n][i]);
+                    assert_eq!(TO_BERNSTEIN[n][k][i].to_bits(), q.to_bits());
+                }
+            }
+        }
     }
 }

@@ -408,28 +408,32 @@ fn polish(c: &[f64], mut a: f64, mut b: f64, neg_at_a: bool) -> f64 {
     x
 }
 
-/// A Sturm sequence, each member scaled to unit max coefficient (signs are all that count).
-struct Sturm {
-    polys: [[f64; MAX_DEGREE + 1]; MAX_DEGREE + 1],
-    lens: [usize; MAX_DEGREE + 1],
+/// A Sturm sequence, each member scaled to unit max coefficient (signs are all that count),
+/// for polynomials of at most `N` coefficients (a quartic's sequence fits in 5×5, not the
+/// 17×17 of the highest degree: less to zero and to copy on every ray).
+struct Sturm<const N: usize> {
+    polys: [[f64; N]; N],
+    lens: [usize; N],
     count: usize,
 }
 
-impl Sturm {
-    fn new(c: &[f64]) -> Sturm {
+impl<const N: usize> Sturm<N> {
+    /// The sequence of `c`, which has at most `N` coefficients. Each member's degree is below
+    /// the previous one's, so at most `N` members: `count` never reaches past the arrays.
+    fn new(c: &[f64]) -> Sturm<N> {
         let mut s = Sturm {
-            polys: [[0.0; MAX_DEGREE + 1]; MAX_DEGREE + 1],
-            lens: [0; MAX_DEGREE + 1],
+            polys: [[0.0; N]; N],
+            lens: [0; N],
             count: 0,
         };
         s.set(0, c);
-        let mut d = [0.0; MAX_DEGREE];
+        let mut d = [0.0; N];
         for i in 1..c.len() {
             d[i - 1] = c[i] * i as f64;
         }
         s.set(1, &d[..c.len() - 1]);
         s.count = 2;
-        while s.count <= MAX_DEGREE && s.lens[s.count - 1] > 1 {
+        while s.count < N && s.lens[s.count - 1] > 1 {
             let (a, b) = (s.count - 2, s.count - 1);
             let (la, lb) = (s.lens[a], s.lens[b]);
             let mut r = s.polys[a];
@@ -445,7 +449,7 @@ impl Sturm {
                 }
                 r[i] = 0.0;
             }
-            let mut neg = [0.0; MAX_DEGREE + 1];
+            let mut neg = [0.0; N];
             for j in 0..lb - 1 {
                 neg[j] = if r[j].abs() <= 64.0 * f64::EPSILON * size[j] {
                     0.0
@@ -505,12 +509,28 @@ pub fn sturm_roots_in(c: &[f64], lo: f64, hi: f64) -> Roots {
         Some(c) if c.len() >= 3 && lo <= hi => c,
         _ => return base,
     };
-    let seq = Sturm::new(c);
+    match c.len() {
+        3..=5 => sturm_search::<5>(c, lo, hi, base),
+        6..=9 => sturm_search::<9>(c, lo, hi, base),
+        _ => sturm_search::<{ MAX_DEGREE + 1 }>(c, lo, hi, base),
+    }
+}
+
+/// [`sturm_roots_in`]'s search for the roots `base` (from [`roots_in`]) lacks, with a
+/// sequence sized for `c` (at most `N` coefficients).
+fn sturm_search<const N: usize>(c: &[f64], lo: f64, hi: f64, base: Roots) -> Roots {
+    let seq = Sturm::<N>::new(c);
+    let (v_lo, v_hi) = (seq.sign_changes(lo), seq.sign_changes(hi));
+    // The search's first step, before its stack is set up: nothing to add when the count over
+    // the whole interval is no more than the roots already found (most rays).
+    if v_lo <= v_hi || v_lo - v_hi <= base.iter().filter(|&&x| x > lo && x <= hi).count() as u32 {
+        return base;
+    }
     let mut extra = Roots::new();
     // Depth-first over (lo, hi, changes at lo, changes at hi, depth), left half first so
     // the candidates come out sorted; 64 levels of bisection exhaust f64 resolution.
     let mut stack = [(0.0, 0.0, 0u32, 0u32, 0u32); 2 * 64 + 2];
-    stack[0] = (lo, hi, seq.sign_changes(lo), seq.sign_changes(hi), 0);
+    stack[0] = (lo, hi, v_lo, v_hi, 0);
     let mut sp = 1;
     while sp > 0 {
         sp -= 1;
@@ -716,6 +736,38 @@ mod tests {
             first_root_in(&[1.0, 0.0, 0.0, 1.0], f64::NAN, 1.0, |_| true),
             None
         );
+    }
+
+    /// A sequence sized for the polynomial holds the same members as the largest one: the
+    /// same counts everywhere, on random polynomials of degree 2 to 8 with double roots.
+    #[test]
+    fn sized_sturm_sequence_is_the_full_one() {
+        let mut rng = crate::geom::test_rng::Lcg(5);
+        for case in 0..3_000 {
+            let deg = 2 + case % 7;
+            let mut roots: Vec<f64> = (0..deg).map(|_| rng.next() * 6.0 - 3.0).collect();
+            if case % 2 == 0 {
+                roots[1] = roots[0];
+            }
+            let c = from_roots(&roots);
+            let small: Sturm<9> = Sturm::new(&c);
+            let full: Sturm<{ MAX_DEGREE + 1 }> = Sturm::new(&c);
+            assert_eq!(small.count, full.count);
+            for k in 0..small.count {
+                assert_eq!(small.lens[k], full.lens[k]);
+                for j in 0..small.lens[k] {
+                    assert_eq!(small.polys[k][j].to_bits(), full.polys[k][j].to_bits());
+                }
+            }
+            if deg <= 4 {
+                let tiny: Sturm<5> = Sturm::new(&c);
+                assert_eq!(tiny.count, full.count);
+            }
+            for _ in 0..8 {
+                let x = rng.next() * 8.0 - 4.0;
+                assert_eq!(small.sign_changes(x), full.sign_changes(x));
+            }
+        }
     }
 
     #[test]
