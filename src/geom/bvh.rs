@@ -407,6 +407,7 @@ impl Bvh {
     /// Visits primitives whose box the ray crosses within (0, tmax), nearest child first. The
     /// callback gets the primitive index and `&mut tmax` (it lowers it after a closer hit,
     /// pruning the rest); returning `true` stops the traversal (any-hit queries).
+    #[inline]
     pub fn traverse(&self, ray: &Ray, tmax: f64, f: impl FnMut(usize, &mut f64) -> bool) {
         self.traverse_inv(ray, ray_recip(ray), tmax, f);
     }
@@ -427,7 +428,8 @@ impl Bvh {
         if root.bounds.hit(origin, inv_dir, tmax).is_none() {
             return;
         }
-        let slabs = if self.finite {
+        // A tree of one leaf (a CSG node's few members) has no pair of boxes to test.
+        let slabs = if self.finite && self.nodes.len() > 1 {
             Slabs2::new(origin, inv_dir)
         } else {
             None
