@@ -475,7 +475,18 @@ fn cpow(zr: f64, zi: f64, n: u32) -> (f64, f64) {
 
 fn checker(q: DVec3) -> usize {
     let s = (q.x + CHECKER_EPS).floor() + (q.y + CHECKER_EPS).floor() + (q.z + CHECKER_EPS).floor();
-    s.rem_euclid(2.0) as usize
+    parity(s)
+}
+
+/// `s.rem_euclid(2.0) as usize` for a whole number `s` without the software fmod: its parity
+/// as an integer. Beyond i64's range (and for NaN and infinities, which `rem_euclid` makes NaN)
+/// the answer is 0, as there: doubles that large are even.
+fn parity(s: f64) -> usize {
+    if s.abs() < 9.0e18 {
+        (s as i64 & 1) as usize
+    } else {
+        0
+    }
 }
 
 /// Hexagons of side 1 in the x-z plane: the nearest centre of the lattice spanned by
@@ -652,6 +663,37 @@ fn crackle(q: DVec3, form: DVec3, metric: f64, offset: f64, solid: bool, gen: u8
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn parity_is_rem_euclid() {
+        let mut vals = vec![
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            2.0,
+            -3.0,
+            9.0e15,
+            9.007_199_254_740_993e15,
+        ];
+        vals.extend([
+            1e18,
+            -1e18,
+            1e19,
+            -1e300,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+        ]);
+        vals.extend(
+            (-3000i32..3000)
+                .map(|i| (i as f64) * 1.000_37_f64.powi(i.abs() / 10))
+                .map(f64::floor),
+        );
+        for s in vals {
+            assert_eq!(parity(s), s.rem_euclid(2.0) as usize, "{s}");
+        }
+    }
 
     fn pat(kind: PatternKind) -> Pattern {
         Pattern::new(kind)

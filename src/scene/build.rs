@@ -700,7 +700,7 @@ impl Scene {
     ) -> Option<SurfaceHit<'a>> {
         let mut best: Option<SurfaceHit<'a>> = None;
         let mut tmax = tmax;
-        let inv_dir = ray.dir.recip();
+        let inv_dir = crate::geom::bvh::ray_recip(ray);
         for (&i, cull) in self.unbounded.iter().zip(&self.unbounded_cull) {
             if cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none()) {
                 continue;
@@ -710,7 +710,7 @@ impl Scene {
                 best = Some(h);
             }
         }
-        self.bvh.traverse(ray, tmax, |prim, tmax| {
+        self.bvh.traverse_inv(ray, inv_dir, tmax, |prim, tmax| {
             if let Some(h) = self.objects[self.bounded[prim]].first_hit(ray, *tmax, scratch) {
                 *tmax = h.t;
                 best = Some(h);
@@ -728,7 +728,7 @@ impl Scene {
         tmax: f64,
         mut f: impl FnMut(&'a Object) -> bool,
     ) {
-        let inv_dir = ray.dir.recip();
+        let inv_dir = crate::geom::bvh::ray_recip(ray);
         for (&i, cull) in self.unbounded.iter().zip(&self.unbounded_cull) {
             // An object the ray misses adds nothing, opaque or not.
             let missed = cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none());
@@ -736,8 +736,9 @@ impl Scene {
                 return;
             }
         }
-        self.bvh
-            .traverse(ray, tmax, |prim, _| f(&self.objects[self.bounded[prim]]));
+        self.bvh.traverse_inv(ray, inv_dir, tmax, |prim, _| {
+            f(&self.objects[self.bounded[prim]])
+        });
     }
 
     /// Whether any top-level object that may hold `p` (the unbounded ones past their cull
