@@ -557,6 +557,7 @@ impl Ctx {
                         op: *op,
                         index: None,
                         cull: None,
+                        faces: None,
                         children: kids,
                     },
                     bounds,

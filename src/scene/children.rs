@@ -76,11 +76,20 @@ fn set_culls(o: &mut Object) {
         set_culls(c);
     }
     if let ObjKind::Csg {
-        op, children, cull, ..
+        op,
+        children,
+        cull,
+        faces,
+        ..
     } = &mut o.kind
     {
         children.iter_mut().for_each(set_culls);
         *cull = crate::scene::cull::cull_box(*op, children, &o.bounds).map(Box::new);
+        // Unions keep every crossing and ask no member whether it holds a point.
+        *faces = (*op != CsgOp::Union)
+            .then(|| crate::scene::faces::Faces::of(children))
+            .flatten()
+            .map(Box::new);
     }
 }
 
@@ -318,11 +327,13 @@ mod tests {
             children,
             index,
             cull,
+            faces,
             ..
         } = &mut o.kind
         {
             *index = None;
             *cull = None;
+            *faces = None;
             children.iter_mut().for_each(strip);
         }
     }
