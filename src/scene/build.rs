@@ -557,7 +557,6 @@ impl Ctx {
                         op: *op,
                         index: None,
                         cull: None,
-                        faces: None,
                         children: kids,
                     },
                     bounds,

@@ -76,20 +76,17 @@ fn set_culls(o: &mut Object) {
         set_culls(c);
     }
     if let ObjKind::Csg {
-        op,
-        children,
-        cull,
-        faces,
-        ..
+        op, children, cull, ..
     } = &mut o.kind
     {
         children.iter_mut().for_each(set_culls);
-        *cull = crate::scene::cull::cull_box(*op, children, &o.bounds).map(Box::new);
+        let aabb = crate::scene::cull::cull_box(*op, children, &o.bounds);
         // Unions keep every crossing and ask no member whether it holds a point.
-        *faces = (*op != CsgOp::Union)
+        let faces = (*op != CsgOp::Union)
             .then(|| crate::scene::faces::Faces::of(children))
-            .flatten()
-            .map(Box::new);
+            .flatten();
+        *cull = (aabb.is_some() || faces.is_some())
+            .then(|| Box::new(crate::scene::object::Cull { aabb, faces }));
     }
 }
 
@@ -327,13 +324,11 @@ mod tests {
             children,
             index,
             cull,
-            faces,
             ..
         } = &mut o.kind
         {
             *index = None;
             *cull = None;
-            *faces = None;
             children.iter_mut().for_each(strip);
         }
     }

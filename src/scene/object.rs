@@ -20,13 +20,19 @@ pub enum ObjKind {
         children: Vec<Object>,
         /// A BVH over the members, for nodes with many of them.
         index: Option<Box<ChildIndex>>,
-        /// A box tighter than `bounds` holding the node's solid (before `inverse`), for
-        /// intersections whose members are unbounded planes (`scene::cull`).
-        cull: Option<Box<Aabb>>,
-        /// The members that are planes with an axis normal (`scene::faces`), of nodes other
-        /// than unions (whose index, if any, numbers their members as `children` does).
-        faces: Option<Box<Faces>>,
+        /// What lets rays and points skip work: a tight box, the plane members.
+        cull: Option<Box<Cull>>,
     },
+}
+
+/// What a CSG node keeps to skip work; one box for both, so nodes stay as small as before.
+pub struct Cull {
+    /// A box tighter than `bounds` holding the node's solid (before `inverse`), for
+    /// intersections whose members are unbounded planes (`scene::cull`).
+    pub aabb: Option<Aabb>,
+    /// The members that are planes with an axis normal (`scene::faces`), of nodes other than
+    /// unions (whose index, if any, numbers their members as `children` does).
+    pub faces: Option<Faces>,
 }
 
 /// A shape's data with the textures of its parts (mesh triangles, blob components).
@@ -311,12 +317,14 @@ impl Object {
                 children,
                 index,
                 cull,
-                faces,
             } if *op != CsgOp::Union => self.csg_first_hit(
                 *op,
                 children,
                 index.as_deref(),
-                (cull.as_deref(), faces.as_deref()),
+                (
+                    cull.as_ref().and_then(|c| c.aabb.as_ref()),
+                    cull.as_ref().and_then(|c| c.faces.as_ref()),
+                ),
                 ray,
                 tmax,
                 s,
@@ -443,19 +451,19 @@ impl Object {
                 children,
                 index,
                 cull,
-                faces,
             } => {
                 let mine = s.surface.len();
                 let inv_dir = ray.dir.recip();
                 // Every crossing lies in the tight box.
                 if cull
                     .as_ref()
+                    .and_then(|c| c.aabb.as_ref())
                     .is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none())
                 {
                     return;
                 }
                 let index = index.as_deref();
-                let faces = faces.as_deref();
+                let faces = cull.as_ref().and_then(|c| c.faces.as_ref());
                 let ray_faces = faces.filter(|_| faces::ray_ok(ray));
                 let rejecter = std::cell::Cell::new(usize::MAX);
                 // Member `i` is `c`; in a union's index `c` may be a leaf of an opened member
@@ -503,7 +511,7 @@ impl Object {
                 };
                 s.inside(lp)
             }
-            ObjKind::Csg { cull: Some(c), .. } if !c.contains(p) => false,
+            ObjKind::Csg { cull: Some(c), .. } if c.aabb.is_some_and(|a| !a.contains(p)) => false,
             ObjKind::Csg {
                 op,
                 children,
