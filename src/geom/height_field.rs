@@ -41,6 +41,10 @@ pub struct HeightData {
     /// anew for every call (advanced/landscape places 256 trees on a 500×500 field). It
     /// depends only on the grid, which is not changed once a shape uses it.
     pyramid: std::sync::OnceLock<std::sync::Arc<[Level]>>,
+    /// Every vertex's `vertex_normal` (whole numbers within ±32767, so kept exactly as
+    /// 16-bit integers), made on the first smooth normal asked for: a hit mixes four of them,
+    /// each the sum of four normalised cross products.
+    normals: std::sync::OnceLock<Box<[[i16; 3]]>>,
 }
 
 impl HeightData {
@@ -52,6 +56,7 @@ impl HeightData {
             smooth: false,
             water_level: 0.0,
             pyramid: Default::default(),
+            normals: Default::default(),
         }
     }
 
@@ -194,32 +199,38 @@ impl HeightField {
         Some((t0, t1))
     }
 
-    /// Visits the blocks the ray crosses, nearest first; `tmax` shrinks as hits are found
-    /// when only the first is wanted. `xz` is the block's `slab_xz`, found by the caller.
-    ///
-    /// The slab test is split in its x-and-z part and its y part, which are combined with
-    /// `min` and `max` (exact, in any order): the same answers as `slab` over the block's box.
-    fn visit(&self, r: &mut GridRay, level: usize, bi: usize, bj: usize, xz: (f64, f64)) {
+    /// Whether the ray meets block (bi, bj) of `level` within `r.tmax`, its heights included,
+    /// given the block's `slab_xz`. As `r.tmax` only shrinks, a block that fails here fails
+    /// for the rest of the walk.
+    #[inline(always)]
+    fn reaches(&self, r: &GridRay, level: usize, bi: usize, bj: usize, xz: (f64, f64)) -> bool {
         let l = &self.levels[level];
         let k = bj * l.nx + bi;
         let ymax = l.max[k] as f64 * SCALE;
         if ymax < self.data.water_level {
-            return;
+            return false;
         }
         let (ylo, yhi) = (l.min[k] as f64 * SCALE, ymax);
         let (mut t0, mut t1) = (xz.0, r.tmax.min(xz.1));
         if r.d.y == 0.0 {
             if r.o.y < ylo || r.o.y > yhi {
-                return;
+                return false;
             }
         } else {
             let (u, v) = ((ylo - r.o.y) * r.inv.y, (yhi - r.o.y) * r.inv.y);
             t0 = t0.max(u.min(v));
             t1 = t1.min(u.max(v));
         }
-        if !slack_ok(t0, t1) {
-            return;
-        }
+        slack_ok(t0, t1)
+    }
+
+    /// Visits the blocks the ray crosses, nearest first; `tmax` shrinks as hits are found
+    /// when only the first is wanted. The caller has found that the ray `reaches` the block
+    /// with the current `tmax`.
+    ///
+    /// The slab test is split in its x-and-z part and its y part, which are combined with
+    /// `min` and `max` (exact, in any order): the same answers as `slab` over the block's box.
+    fn visit(&self, r: &mut GridRay, level: usize, bi: usize, bj: usize) {
         if level == 0 {
             self.cell_hits(r, bi, bj);
             return;
@@ -260,7 +271,12 @@ impl HeightField {
                     // As `slab_xz`: an axis the ray runs along adds nothing (max with -inf
                     // and min with +inf change no value).
                     let xz = (0.0f64.max(x.0).max(z.0), f64::INFINITY.min(x.1).min(z.1));
-                    if slack_ok(xz.0, r.tmax.min(xz.1)) {
+                    // A child the ray does not reach now is left out of the sort, which
+                    // changes nothing: it would not be reached with the same or a smaller
+                    // `tmax` on its turn, the others keep their order, and the loop below
+                    // stops at the first child starting beyond `tmax` no later. A child
+                    // kept is asked again only if `tmax` shrank before its turn.
+                    if self.reaches(r, level - 1, ci, cj, xz) {
                         kids[n] = (xz, ci, cj);
                         n += 1;
                     }
@@ -278,11 +294,14 @@ impl HeightField {
                 }
             }
         }
+        let tmax = r.tmax;
         for &(xz, ci, cj) in kids.iter() {
             if r.first && xz.0 > r.tmax {
                 break;
             }
-            self.visit(r, level - 1, ci, cj, xz);
+            if r.tmax == tmax || self.reaches(r, level - 1, ci, cj, xz) {
+                self.visit(r, level - 1, ci, cj);
+            }
         }
     }
 
@@ -367,7 +386,9 @@ impl HeightField {
         let Some(xz) = self.slab_xz(&r, (1usize << top) as f64, 0, 0) else {
             return;
         };
-        self.visit(&mut r, top, 0, 0, xz);
+        if self.reaches(&r, top, 0, 0, xz) {
+            self.visit(&mut r, top, 0, 0);
+        }
     }
 
     /// The normal at vertex (i, j) as povray keeps it: in grid units (one per grid step, heights
@@ -466,9 +487,15 @@ impl Shape for HeightField {
             // (not by the triangle's barycentric weights): povray's trace() answers match this
             // exactly inside cells of a random grid.
             let [u, v] = hit.uv;
+            let normals = d.normals.get_or_init(|| {
+                (0..d.depth)
+                    .flat_map(|j| (0..d.width).map(move |i| (i, j)))
+                    .map(|(i, j)| self.vertex_normal(i, j).to_array().map(|c| c as i16))
+                    .collect()
+            });
             let corner = |a: usize, b: usize| {
-                let n = self.vertex_normal(a, b);
-                DVec3::new(n.x * cx, n.y * 65536.0, n.z * cz).normalize_or_zero()
+                let n = normals[b * d.width + a].map(f64::from);
+                DVec3::new(n[0] * cx, n[1] * 65536.0, n[2] * cz).normalize_or_zero()
             };
             let n = corner(i, j) * ((1.0 - u) * (1.0 - v))
                 + corner(i + 1, j) * (u * (1.0 - v))
@@ -509,6 +536,7 @@ mod tests {
             smooth: false,
             water_level: water,
             pyramid: Default::default(),
+            normals: Default::default(),
         }))
     }
 
@@ -619,6 +647,7 @@ mod tests {
             smooth: true,
             water_level: 0.0,
             pyramid: Default::default(),
+            normals: Default::default(),
         }));
         assert!(flat.bounds().is_empty() && down(&flat, 0.5, 0.5).is_none());
         assert!(!flat.inside(DVec3::splat(0.5)));
@@ -627,6 +656,26 @@ mod tests {
         hf.intersect_all(&Ray::new(DVec3::splat(f64::NAN), DVec3::Y), &mut v);
         hf.intersect_all(&Ray::new(DVec3::ZERO, DVec3::ZERO), &mut v);
         assert!(v.is_empty());
+    }
+
+    /// The cached corner normals are `vertex_normal`'s, kept exactly.
+    #[test]
+    fn cached_vertex_normals_are_exact() {
+        let f = |i: usize, j: usize| 0.5 + 0.45 * ((i as f64 * 1.7).sin() * (j as f64 * 0.9).cos());
+        let mut hf = grid(23, 17, f, 0.0);
+        Arc::get_mut(&mut hf.data).unwrap().smooth = true;
+        let r = Ray::new(DVec3::new(0.4, 5.0, 0.6), DVec3::NEG_Y);
+        let h = hf
+            .intersect_first(&r, f64::INFINITY, &mut Vec::new())
+            .unwrap();
+        hf.normal(r.at(h.t), &h);
+        let cache = hf.data.normals.get().unwrap();
+        for j in 0..17 {
+            for i in 0..23 {
+                let c = cache[j * 23 + i].map(f64::from);
+                assert_eq!(DVec3::from_array(c), hf.vertex_normal(i, j), "{i} {j}");
+            }
+        }
     }
 
     #[test]
@@ -645,6 +694,7 @@ mod tests {
             smooth: true,
             water_level: 0.0,
             pyramid: Default::default(),
+            normals: Default::default(),
         }));
         // At the middle vertex the central difference is the true slope of 0.5 x² at 0.5.
         let (_, n) = down(&hf, 0.5 + 1e-9, 0.5).unwrap();

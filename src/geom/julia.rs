@@ -172,6 +172,16 @@ fn split(h: &Q) -> (C, C) {
     )
 }
 
+/// Where `intersect_first` and `any_hit` may end a march early: the ray direction's length
+/// (distances along the unit direction over it are the ray's `t`), the `tmax` asked for, and
+/// whether only the existence of a crossing before it matters.
+#[derive(Clone, Copy)]
+struct Stop {
+    len: f64,
+    tmax: f64,
+    any: bool,
+}
+
 /// What the iteration says about a point.
 enum Orbit {
     Inside,
@@ -397,7 +407,20 @@ impl Julia {
 
     /// Crossings along the unit direction `u` from `o` (object space) beyond `tmin`, as
     /// distances: POV-Ray's march (module doc).
-    fn crossings(&self, o: DVec3, u: DVec3, tmin: f64, first_only: bool, out: &mut Vec<f64>) {
+    ///
+    /// With `stop` (for `intersect_first`, so `first_only`), crossings that would be turned
+    /// away for lying beyond its `tmax` end the march unbisected, and for `any_hit` so does a
+    /// crossing sure to be kept, which is pushed as the far end of its bracket: the bisection
+    /// only moves a crossing within the bracket of its two samples.
+    fn crossings(
+        &self,
+        o: DVec3,
+        u: DVec3,
+        tmin: f64,
+        first_only: bool,
+        out: &mut Vec<f64>,
+        stop: Option<Stop>,
+    ) {
         let rb = self.bailout;
         let b = o.dot(u);
         let disc = b * b - (o.length_squared() - rb * rb);
@@ -425,6 +448,16 @@ impl Julia {
             let inside = matches!(orbit, Orbit::Inside);
             if let Some((tp, was_in)) = prev {
                 if was_in != inside {
+                    if let Some(st) = stop {
+                        // The crossing lies in [tp, t] (a midpoint of two numbers in it).
+                        if tp / st.len >= st.tmax {
+                            return;
+                        }
+                        if st.any && tp > tmin && t / st.len < st.tmax {
+                            out.push(t);
+                            return;
+                        }
+                    }
                     let (mut a, mut c) = (tp, t);
                     while c - a > BISECT_TOL {
                         let m = 0.5 * (a + c);
@@ -506,7 +539,7 @@ impl Shape for Julia {
         }
         let u = ray.dir / len;
         let mut s = Vec::new();
-        self.crossings(ray.origin, u, EPSILON * len, false, &mut s);
+        self.crossings(ray.origin, u, EPSILON * len, false, &mut s, None);
         out.extend(s.into_iter().map(|s| Hit::new(s / len)));
     }
 
@@ -517,9 +550,30 @@ impl Shape for Julia {
         }
         let u = ray.dir / len;
         let mut s = Vec::with_capacity(1);
-        self.crossings(ray.origin, u, EPSILON * len, true, &mut s);
+        let stop = Stop {
+            len,
+            tmax,
+            any: false,
+        };
+        self.crossings(ray.origin, u, EPSILON * len, true, &mut s, Some(stop));
         let t = s.first()? / len;
         (t < tmax).then(|| Hit::new(t))
+    }
+
+    fn any_hit(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> bool {
+        let len = ray.dir.length();
+        if !(len > 0.0 && len.is_finite()) {
+            return false;
+        }
+        let u = ray.dir / len;
+        let mut s = Vec::with_capacity(1);
+        let stop = Stop {
+            len,
+            tmax,
+            any: true,
+        };
+        self.crossings(ray.origin, u, EPSILON * len, true, &mut s, Some(stop));
+        s.first().is_some_and(|&t| t / len < tmax)
     }
 
     fn inside(&self, p: DVec3) -> bool {

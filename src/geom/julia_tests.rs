@@ -416,3 +416,65 @@ fn march_step_is_the_estimate_to_the_bit() {
         );
     }
 }
+
+/// `intersect_first` ends its march at the first crossing beyond `tmax`, and `any_hit` at
+/// the first crossing sure to come before it: both must answer as the whole march does (the
+/// nearest crossing of `intersect_all` beyond EPSILON, then `tmax`), to the bit.
+#[test]
+fn early_stops_answer_as_the_whole_march() {
+    let mut rng = crate::geom::test_rng::Lcg(5);
+    let shapes = [
+        julia(
+            [-0.083, 0.0, -0.83, -0.025],
+            Algebra::Quaternion,
+            JuliaFn::Sqr,
+            8,
+            15.0,
+        ),
+        julia(
+            [-0.03, 0.5, -0.2, -0.5],
+            Algebra::Quaternion,
+            JuliaFn::Cube,
+            8,
+            15.0,
+        ),
+        julia(
+            [0.4, 0.2, 0.1, 0.0],
+            Algebra::Hypercomplex,
+            JuliaFn::Sqr,
+            6,
+            20.0,
+        ),
+    ];
+    let mut hits = 0;
+    for (k, j) in shapes.iter().enumerate() {
+        for i in 0..300 {
+            // From outside towards the set, and from points near it (shadow rays start on it).
+            let o = if i % 2 == 0 {
+                rng.vec(8.0)
+            } else {
+                rng.vec(1.5)
+            };
+            let ray = Ray::new(o, rng.vec(2.0) - o * (i % 3) as f64 * 0.3);
+            let mut all = Vec::new();
+            j.intersect_all(&ray, &mut all);
+            let nearest = all
+                .iter()
+                .map(|h| h.t)
+                .filter(|&t| t > EPSILON)
+                .min_by(f64::total_cmp);
+            for tmax in [f64::INFINITY, 0.5, 1.0, 2.0, 4.0, rng.next() * 3.0] {
+                let first = j.intersect_first(&ray, tmax, &mut Vec::new());
+                let want = nearest.filter(|&t| t < tmax);
+                assert_eq!(
+                    first.map(|h| h.t.to_bits()),
+                    want.map(f64::to_bits),
+                    "{k} {ray:?}"
+                );
+                assert_eq!(j.any_hit(&ray, tmax, &mut Vec::new()), want.is_some());
+                hits += want.is_some() as usize;
+            }
+        }
+    }
+    assert!(hits > 300, "{hits}");
+}

@@ -50,6 +50,10 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
             .min_by(|a, b| a.t.total_cmp(&b.t))
             .copied()
     }
+    /// `intersect_first(..).is_some()` (shadow rays), for shapes that can tell sooner.
+    fn any_hit(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> bool {
+        self.intersect_first(ray, tmax, scratch).is_some()
+    }
     /// `intersect_all`, but crossings with `t` outside `[lo, hi]` may be left out (a clipped
     /// object's crossings outside its clipping box): those inside come out exactly as
     /// `intersect_all` gives them.
@@ -65,7 +69,8 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
     /// Outward normal at a point the shape reported, not necessarily unit length.
     fn normal(&self, p: DVec3, hit: &Hit) -> DVec3;
     /// A half-space `n·p <= d` holding the solid, for shapes that are one (planes): CSG
-    /// intersections of them get finite boxes from it.
+    /// intersections of them get finite boxes from it, and `scene::faces` answers for such a
+    /// shape with `Plane`'s arithmetic.
     fn half_space(&self) -> Option<(DVec3, f64)> {
         None
     }

@@ -80,7 +80,13 @@ fn set_culls(o: &mut Object) {
     } = &mut o.kind
     {
         children.iter_mut().for_each(set_culls);
-        *cull = crate::scene::cull::cull_box(*op, children, &o.bounds).map(Box::new);
+        let aabb = crate::scene::cull::cull_box(*op, children, &o.bounds);
+        // Unions keep every crossing and ask no member whether it holds a point.
+        let faces = (*op != CsgOp::Union)
+            .then(|| crate::scene::faces::Faces::of(children))
+            .flatten();
+        *cull = (aabb.is_some() || faces.is_some())
+            .then(|| Box::new(crate::scene::object::Cull { aabb, faces }));
     }
 }
 

@@ -31,7 +31,9 @@ pub fn object_cull(o: &Object) -> Option<Aabb> {
     }
     let mut b = polyhedron_box(&planes).unwrap_or(Aabb::INFINITE);
     if let ObjKind::Csg { cull: Some(c), .. } = &o.kind {
-        b = b.intersection(c);
+        if let Some(a) = &c.aabb {
+            b = b.intersection(a);
+        }
     }
     let b = b.intersection(&o.bounds);
     (b != Aabb::INFINITE && (b.is_finite() || b.min.is_finite() || b.max.is_finite())).then_some(b)

@@ -6,6 +6,7 @@ pub mod children;
 pub mod cull;
 pub mod desc;
 pub mod df3;
+pub mod faces;
 pub mod focal;
 pub mod gif;
 pub mod height_image;

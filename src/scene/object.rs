@@ -9,6 +9,7 @@ use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, Transform};
 use crate::scene::children::ChildIndex;
 use crate::scene::desc::{CsgOp, MeshData, Texture};
+use crate::scene::faces::{self, Faces};
 
 pub enum ObjKind {
     /// A shape, and for a clipped leaf whose crossings outside a box are all clipped away
@@ -19,10 +20,19 @@ pub enum ObjKind {
         children: Vec<Object>,
         /// A BVH over the members, for nodes with many of them.
         index: Option<Box<ChildIndex>>,
-        /// A box tighter than `bounds` holding the node's solid (before `inverse`), for
-        /// intersections whose members are unbounded planes (`scene::cull`).
-        cull: Option<Box<Aabb>>,
+        /// What lets rays and points skip work: a tight box, the plane members.
+        cull: Option<Box<Cull>>,
     },
+}
+
+/// What a CSG node keeps to skip work; one box for both, so nodes stay as small as before.
+pub struct Cull {
+    /// A box tighter than `bounds` holding the node's solid (before `inverse`), for
+    /// intersections whose members are unbounded planes (`scene::cull`).
+    pub aabb: Option<Aabb>,
+    /// The members that are planes with an axis normal (`scene::faces`), of nodes other than
+    /// unions (whose index, if any, numbers their members as `children` does).
+    pub faces: Option<Faces>,
 }
 
 /// A shape's data with the textures of its parts (mesh triangles, blob components).
@@ -151,6 +161,7 @@ fn csg_keeps(
     i: usize,
     children: &[Object],
     index: Option<&ChildIndex>,
+    faces: Option<&Faces>,
     p: DVec3,
     rejecter: &std::cell::Cell<usize>,
 ) -> bool {
@@ -165,13 +176,21 @@ fn csg_keeps(
         }
         _ => {}
     }
+    // Faces answer `inside` as the member would (`scene::faces`), points far out excepted.
+    let faces = faces.filter(|_| faces::point_ok(p));
     let wants = |j: usize, o: &Object| {
         let want_inside = match op {
             CsgOp::Intersection => true,
             CsgOp::Difference => j == 0,
             CsgOp::Union | CsgOp::Merge => false,
         };
-        o.inside(p) == want_inside
+        let inside = match faces.and_then(|f| f.get(j)) {
+            // `Object::inside` of a leaf, with the face's test for its shape's.
+            Some(f) if o.bounds.contains(p) => f.inside(p) != o.inverse,
+            Some(_) => o.inverse,
+            None => o.inside(p),
+        };
+        inside == want_inside
     };
     // The member that turned the last crossing of this node away is asked first: crossings
     // outside a polyhedron are mostly turned away by the same face. `inside` has no side
@@ -187,6 +206,31 @@ fn csg_keeps(
         }
     }
     true
+}
+
+/// `c.all_hits(ray, tmax, s)` of CSG member `c`, through its face when it has one (`ray` then
+/// within `faces::ray_ok`): a plane leaf without clipping has at most one crossing.
+#[inline]
+fn member_hits<'a>(
+    c: &'a Object,
+    face: Option<&faces::Face>,
+    ray: &Ray,
+    tmax: f64,
+    s: &mut Scratch<'a>,
+) {
+    match face {
+        Some(f) => {
+            if let Some(t) = f.hit(ray).filter(|&t| t < tmax) {
+                s.surface.push(SurfaceHit {
+                    t,
+                    obj: c,
+                    hit: Hit::new(t),
+                    flip: c.inverse,
+                });
+            }
+        }
+        None => c.all_hits(ray, tmax, s),
+    }
 }
 
 /// A crossing of a ray with a leaf object.
@@ -277,7 +321,10 @@ impl Object {
                 *op,
                 children,
                 index.as_deref(),
-                cull.as_deref(),
+                (
+                    cull.as_ref().and_then(|c| c.aabb.as_ref()),
+                    cull.as_ref().and_then(|c| c.faces.as_ref()),
+                ),
                 ray,
                 tmax,
                 s,
@@ -309,7 +356,7 @@ impl Object {
         op: CsgOp,
         children: &'a [Object],
         index: Option<&ChildIndex>,
-        cull: Option<&Aabb>,
+        (cull, faces): (Option<&Aabb>, Option<&Faces>),
         ray: &Ray,
         tmax: f64,
         s: &mut Scratch<'a>,
@@ -318,6 +365,7 @@ impl Object {
         if cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none()) {
             return None;
         }
+        let ray_faces = faces.filter(|_| faces::ray_ok(ray));
         let start = s.surface.len();
         let order_from = s.csg_order.len();
         let gather = |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
@@ -325,7 +373,7 @@ impl Object {
                 return;
             }
             let from = s.surface.len();
-            c.all_hits(ray, tmax, s);
+            member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
             for j in from..s.surface.len() {
                 s.csg_order.push((s.surface[j].t, j as u32, i as u32));
             }
@@ -336,7 +384,7 @@ impl Object {
         let rejecter = std::cell::Cell::new(usize::MAX);
         let best = order.iter().find_map(|&(t, j, i)| {
             let i = i as usize;
-            csg_keeps(op, i, children, index, ray.at(t), &rejecter).then(|| {
+            csg_keeps(op, i, children, index, faces, ray.at(t), &rejecter).then(|| {
                 let mut h = s.surface[j as usize];
                 h.flip ^= op == CsgOp::Difference && i > 0;
                 h.flip ^= self.inverse;
@@ -409,11 +457,14 @@ impl Object {
                 // Every crossing lies in the tight box.
                 if cull
                     .as_ref()
+                    .and_then(|c| c.aabb.as_ref())
                     .is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none())
                 {
                     return;
                 }
                 let index = index.as_deref();
+                let faces = cull.as_ref().and_then(|c| c.faces.as_ref());
+                let ray_faces = faces.filter(|_| faces::ray_ok(ray));
                 let rejecter = std::cell::Cell::new(usize::MAX);
                 // Member `i` is `c`; in a union's index `c` may be a leaf of an opened member
                 // union (its number then does not matter: a union keeps every crossing).
@@ -425,11 +476,11 @@ impl Object {
                     }
                     // Each child's crossings are appended, then filtered in place.
                     let start = s.surface.len();
-                    c.all_hits(ray, tmax, s);
+                    member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
                     let mut k = start;
                     for j in start..s.surface.len() {
                         let mut h = s.surface[j];
-                        if csg_keeps(*op, i, children, index, ray.at(h.t), &rejecter) {
+                        if csg_keeps(*op, i, children, index, faces, ray.at(h.t), &rejecter) {
                             // Surfaces of subtracted operands face into the result.
                             h.flip ^= *op == CsgOp::Difference && i > 0;
                             s.surface[k] = h;
@@ -460,7 +511,7 @@ impl Object {
                 };
                 s.inside(lp)
             }
-            ObjKind::Csg { cull: Some(c), .. } if !c.contains(p) => false,
+            ObjKind::Csg { cull: Some(c), .. } if c.aabb.is_some_and(|a| !a.contains(p)) => false,
             ObjKind::Csg {
                 op,
                 children,
@@ -505,6 +556,11 @@ impl Object {
                 let c = ix.leaf(children, i);
                 c.bounds.hit(ray.origin, inv_dir, tmax).is_some() && c.any_hit(ray, tmax, s)
             });
+        }
+        if let (ObjKind::Shape(shape, _), true) = (&self.kind, self.clip.is_empty()) {
+            // `first_hit` of a leaf without clipping is the shape's `intersect_first`.
+            let mut local = None;
+            return shape.any_hit(self.local_ray(ray, &mut local), tmax, &mut s.hits);
         }
         self.first_hit(ray, tmax, s).is_some()
     }
