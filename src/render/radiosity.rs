@@ -96,6 +96,10 @@ struct Scale {
     exp: i32,
     /// The size of its cells at the bound filed for.
     cell: f64,
+    /// The lowest level of its samples: a lookup of a lower level finds none valid in it
+    /// and skips the scale (deeper samples reach farther, so the widest scales hold only
+    /// them).
+    level: u32,
     grid: FxHashMap<(i64, i64, i64), Vec<u32>>,
 }
 
@@ -137,6 +141,7 @@ impl Cache {
                     self.scales.push(Scale {
                         exp: e,
                         cell: 0.0,
+                        level: u32::MAX,
                         grid: FxHashMap::default(),
                     });
                     self.scales.len() - 1
@@ -144,6 +149,7 @@ impl Cache {
             };
             let scale = &mut self.scales[at];
             scale.cell = 2f64.powi(e + shift);
+            scale.level = scale.level.min(s.level);
             let lo = scale.key(s.p - DVec3::splat(rr));
             let hi = scale.key(s.p + DVec3::splat(rr));
             for x in lo.0..=hi.0 {
@@ -159,9 +165,17 @@ impl Cache {
 
     /// Every sample from number `from` on whose reach at error bound `bound` covers `p`
     /// (`weight`'s distance test), each once, in the order of the scales and of their cells'
-    /// lists (the blend's sums depend on it).
+    /// lists (the blend's sums depend on it), leaving out scales holding no sample of level
+    /// `level` or less (none of which `weight` takes).
     #[inline]
-    fn near(&self, p: DVec3, bound: f64, from: usize, mut f: impl FnMut(usize, &Footprint)) {
+    fn near(
+        &self,
+        p: DVec3,
+        bound: f64,
+        level: u32,
+        from: usize,
+        mut f: impl FnMut(usize, &Footprint),
+    ) {
         debug_assert!(bound <= self.filed_bound, "grids filed for a smaller reach");
         // The cells of every scale are found first, then read: each is a cache miss (the
         // grids are megabytes), and asked one after another the misses overlap instead of
@@ -171,6 +185,9 @@ impl Cache {
         for group in self.scales.chunks(MAX) {
             let mut found: [&[u32]; MAX] = [&[]; MAX];
             for (scale, found) in group.iter().zip(&mut found) {
+                if scale.level > level {
+                    continue;
+                }
                 if let Some(ids) = scale.grid.get(&scale.key(p)) {
                     prefetch(ids.as_ptr());
                     *found = ids;
@@ -351,7 +368,7 @@ impl<'a> Tracer<'a> {
         let bound = rad.bound;
         let mut b = Blend::default();
         let cache = rad.cache;
-        cache.near(p, bound, 0, |i, s| {
+        cache.near(p, bound, level, 0, |i, s| {
             b.add(s, cache.irr[i], p, n, level, bound)
         });
         for s in &ctx.rad_local {
@@ -672,7 +689,7 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
         for (at, seen, looked, before) in lit_colours {
             let unchanged = looked.iter().all(|&(p, n)| {
                 let mut valid = false;
-                cache.near(p, set.error_bound, before, |_, smp| {
+                cache.near(p, set.error_bound, 1, before, |_, smp| {
                     valid |= weight(smp, p, n, 1, set.error_bound).is_some();
                 });
                 !valid
@@ -749,7 +766,7 @@ mod tests {
                 let p = DVec3::new(rnd(), rnd(), rnd()) * 10.0;
                 let from = (rnd() * 100.0) as usize;
                 let mut found = Vec::new();
-                cache.near(p, bound, from, |i, _| found.push(i));
+                cache.near(p, bound, 3, from, |i, _| found.push(i));
                 let mut want: Vec<usize> = (from..cache.samples.len())
                     .filter(|&i| {
                         let s = &cache.samples[i];
