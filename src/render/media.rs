@@ -184,6 +184,7 @@ impl<'a> Tracer<'a> {
                 m.aa_threshold,
             )
         });
+        let mut dimmed = (DVec3::ZERO, DVec3::ONE);
         let mut acc = Composite {
             kept: DVec3::ONE,
             added: DVec3::ZERO,
@@ -201,10 +202,12 @@ impl<'a> Tracer<'a> {
             let weight = span / n as f64;
             let threshold = aa_threshold / span;
             piece.clear();
+            // Samples reach no further than w[1] − h (the last h is never sampled).
+            let last = w[1] - 0.5 * h;
             piece.extend(
                 lights
                     .iter()
-                    .filter(|&&(_, lo, hi)| w[1] >= lo && w[0] <= hi)
+                    .filter(|&&(_, lo, hi)| last >= lo && w[0] <= hi)
                     .map(|&(slot, _, _)| slot),
             );
             let mut sample = |s: f64, ctx: &mut TraceCtx<'a>| {
@@ -251,7 +254,13 @@ impl<'a> Tracer<'a> {
                         ctx,
                     );
                     acc.added += acc.kept * step.glow * weight;
-                    acc.kept *= (-step.sigma * weight).exp();
+                    // Uniform media give every step of a piece the same extinction: exp is
+                    // asked once for it (the same argument gives the same bits).
+                    let arg = -step.sigma * weight;
+                    if arg != dimmed.0 {
+                        dimmed = (arg, arg.exp());
+                    }
+                    acc.kept *= dimmed.1;
                     left = right;
                 }
             }

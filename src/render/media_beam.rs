@@ -130,11 +130,11 @@ pub(super) fn lit_span(light: &Light, origin: DVec3, dir: DVec3, len: f64) -> Op
         }
     };
     let (lo, hi) = (lo.max(0.0), hi.min(len));
+    let line = Line::new(light, origin, dir);
     if lo.is_nan() || hi.is_nan() || lo > hi {
-        return (!dark_on(light, origin, dir, 0.0, len)).then_some((0.0, len));
+        return (!line.dark_on(0.0, len)).then_some((0.0, len));
     }
-    let proven = (lo <= 0.0 || dark_on(light, origin, dir, 0.0, lo))
-        && (hi >= len || dark_on(light, origin, dir, hi, len));
+    let proven = (lo <= 0.0 || line.dark_on(0.0, lo)) && (hi >= len || line.dark_on(hi, len));
     if proven {
         Some((lo, hi))
     } else {
@@ -165,21 +165,86 @@ const MARGIN: f64 = 1e-9;
 
 /// Whether `light`'s beam is certainly zero at every point `origin + s·dir` (dir unit) with
 /// `s0 <= s <= s1`. False means "perhaps lit", never "lit".
-pub(super) fn dark_on(light: &Light, origin: DVec3, dir: DVec3, s0: f64, s1: f64) -> bool {
-    let v = origin - light.position;
-    let w0 = v + dir * s0;
-    let w1 = v + dir * s1;
-    // Absolute rounding scale of everything computed below and of the sample points.
-    let scale = MARGIN
-        * (origin.length() + light.position.length() + s0.abs() + s1.abs() + w0.length())
-        + MARGIN * w1.length();
-    match light.cone {
-        Cone::Point => false,
-        Cone::Spot {
-            axis, cos_falloff, ..
-        } => spot_dark(v, dir, axis, cos_falloff, (s0, s1), scale),
-        Cone::Cylinder { axis, falloff, .. } => {
-            cylinder_dark(v, dir, axis, falloff, (s0, s1), scale)
+#[cfg(test)]
+fn dark_on(light: &Light, origin: DVec3, dir: DVec3, s0: f64, s1: f64) -> bool {
+    Line::new(light, origin, dir).dark_on(s0, s1)
+}
+
+/// A ray against one light's beam, with what all its pieces share worked out once.
+struct Line<'l> {
+    light: &'l Light,
+    origin: DVec3,
+    dir: DVec3,
+    /// origin − the light's position.
+    v: DVec3,
+    /// Where along the line the beam's edge function peaks (spotlights: f below, the least
+    /// distance from the axis for cylinders); ±infinity where it only rises or falls.
+    peak: f64,
+}
+
+impl<'l> Line<'l> {
+    fn new(light: &'l Light, origin: DVec3, dir: DVec3) -> Line<'l> {
+        let v = origin - light.position;
+        let peak = match light.cone {
+            Cone::Point => f64::NAN,
+            Cone::Spot {
+                axis, cos_falloff, ..
+            } => {
+                let k = dir.dot(axis) / cos_falloff;
+                if k >= 1.0 {
+                    f64::INFINITY
+                } else if k <= -1.0 {
+                    f64::NEG_INFINITY
+                } else {
+                    let p = v.dot(dir);
+                    let q = (v.length_squared() - p * p).max(0.0).sqrt();
+                    -p + k * q / (1.0 - k * k).sqrt()
+                }
+            }
+            Cone::Cylinder { axis, .. } => {
+                let up = dir - axis * dir.dot(axis);
+                let vp = v - axis * v.dot(axis);
+                let a = up.length_squared();
+                if a > 1e-12 {
+                    -up.dot(vp) / a
+                } else {
+                    f64::NAN
+                }
+            }
+        };
+        Line {
+            light,
+            origin,
+            dir,
+            v,
+            peak,
+        }
+    }
+
+    /// `dark_on` for this line.
+    fn dark_on(&self, s0: f64, s1: f64) -> bool {
+        if !ordered(s0, s1) {
+            return false;
+        }
+        let (v, dir) = (self.v, self.dir);
+        // Absolute rounding scale of everything computed below and of the sample points (sums
+        // of the coordinates' magnitudes, which bound the lengths without square roots).
+        let size = |u: DVec3| u.abs().element_sum();
+        let scale = MARGIN
+            * (size(self.origin)
+                + size(self.light.position)
+                + s0.abs()
+                + s1.abs()
+                + size(v + dir * s0)
+                + size(v + dir * s1));
+        match self.light.cone {
+            Cone::Point => false,
+            Cone::Spot {
+                axis, cos_falloff, ..
+            } => spot_dark(v, dir, axis, cos_falloff, self.peak.clamp(s0, s1), scale),
+            Cone::Cylinder { axis, falloff, .. } => {
+                cylinder_dark(v, dir, axis, falloff, (s0, s1), self.peak, scale)
+            }
         }
     }
 }
@@ -188,38 +253,20 @@ pub(super) fn dark_on(light: &Light, origin: DVec3, dir: DVec3, s0: f64, s1: f64
 /// f(s) = w·axis − cos_falloff·|w| (w = v + s·dir, the point relative to the light), that is
 /// f <= 0 (which also covers the rear nappe). For cos_falloff > 0, f is concave (a linear
 /// function minus a multiple of a norm), so its greatest value on [s0, s1] is where f' = 0,
-/// clamped to the piece: with x = s + v·dir and q the line's distance from the light,
-/// f'(s) = dir·axis − cos_falloff·x/√(x² + q²) vanishes at x = k·q/√(1 − k²),
+/// clamped to the piece (`top`): with x = s + v·dir and q the line's distance from the
+/// light, f'(s) = dir·axis − cos_falloff·x/√(x² + q²) vanishes at x = k·q/√(1 − k²),
 /// k = dir·axis / cos_falloff (for |k| < 1; otherwise f is monotonic). f is flat there, so
-/// placing that point a little wrong changes the value found by far less than the margin.
-fn spot_dark(v: DVec3, dir: DVec3, axis: DVec3, cf: f64, (s0, s1): (f64, f64), m: f64) -> bool {
-    if cf.is_nan() || cf <= 0.0 || !ordered(s0, s1) {
+/// placing that point a little wrong changes the value found by far less than the margin;
+/// near the light's apex f is near 0 and nothing is claimed.
+fn spot_dark(v: DVec3, dir: DVec3, axis: DVec3, cf: f64, top: f64, m: f64) -> bool {
+    if cf.is_nan() || cf <= 0.0 || top.is_nan() {
         return false;
     }
-    let at = |s: f64| {
-        let w = v + dir * s;
-        let len = w.length();
-        (w.dot(axis) - cf * len, len)
-    };
-    let (f0, l0) = at(s0);
-    let (f1, l1) = at(s1);
-    // Near the apex the direction to the light is ill-defined: no claim.
-    if l0.is_nan() || l1.is_nan() || l0 <= m || l1 <= m {
-        return false;
-    }
-    let k = dir.dot(axis) / cf;
-    let top = if k >= 1.0 {
-        s1
-    } else if k <= -1.0 {
-        s0
-    } else {
-        let p = v.dot(dir);
-        let q = (v.length_squared() - p * p).max(0.0).sqrt();
-        (-p + k * q / (1.0 - k * k).sqrt()).clamp(s0, s1)
-    };
-    let bound = at(top).0.max(f0).max(f1);
-    // beam() compares cos(angle) = f/|w| + cf with cf; |w| <= max(l0, l1) on the piece, and the
-    // margin `m` (at least MARGIN·|w|) keeps the cosine MARGIN below cf, far beyond rounding.
+    let w = v + dir * top;
+    let bound = w.dot(axis) - cf * w.length();
+    // beam() compares cos(angle) = f/|w| + cf with cf; the margin `m` is at least MARGIN·|w|
+    // anywhere on the piece (|w| is largest at an end), which keeps the cosine MARGIN below
+    // cf, far beyond rounding.
     bound.is_finite() && bound < -m
 }
 
@@ -233,32 +280,24 @@ fn cylinder_dark(
     axis: DVec3,
     falloff: f64,
     (s0, s1): (f64, f64),
+    vertex: f64,
     m: f64,
 ) -> bool {
-    if !ordered(s0, s1) {
-        return false;
-    }
     // Behind the light's plane at both ends, so everywhere between.
     if (v + dir * s0).dot(axis) < -m && (v + dir * s1).dot(axis) < -m {
         return true;
     }
     let up = dir - axis * dir.dot(axis);
     let vp = v - axis * v.dot(axis);
-    let a = up.length_squared();
-    let s = if a > 1e-12 {
-        (-up.dot(vp) / a).clamp(s0, s1)
-    } else {
-        s0
-    };
     let at = |s: f64| (vp + up * s).length();
-    // The distance is Lipschitz with constant |up| = sqrt(a): a vertex misplaced by ds costs at
-    // most sqrt(a)·ds; for tiny a, the whole piece's change is bounded the same way.
-    let slack = if a > 1e-12 {
-        m
+    // The distance is Lipschitz with constant |up|: a vertex misplaced by ds costs at most
+    // |up|·ds; where there is no vertex (the ray along the axis) the whole piece's change
+    // is bounded the same way.
+    let least = if vertex.is_nan() {
+        at(s0) - up.length() * (s1 - s0) - m
     } else {
-        a.sqrt() * (s1 - s0) + m
+        at(vertex.clamp(s0, s1)) - m
     };
-    let least = at(s) - slack;
     least.is_finite() && least > falloff + m
 }
 
