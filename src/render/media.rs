@@ -14,10 +14,10 @@
 //! Samples are evenly spaced and never jittered: the same bytes for any thread count.
 
 use crate::math::{DVec3, Ray};
-use crate::scene::light::{Cone, Light};
 use crate::scene::media::{Media, Scattering};
 use crate::scene::object::{ObjKind, Object};
 
+use super::media_beam::{beam_cuts, lit_span};
 use super::pigment;
 use super::trace::{Seen, TraceCtx, Tracer};
 
@@ -85,53 +85,6 @@ fn steps(media: &[&[Media]]) -> (u32, u32) {
     leader(media).map_or((1, 1), |m| (m.intervals.max(1), m.steps()))
 }
 
-/// Where the ray `origin + s·dir` (dir unit, 0 < s < len) crosses the edge of `light`'s
-/// beam, if it has one.
-fn beam_cuts(light: &Light, origin: DVec3, dir: DVec3, len: f64, out: &mut Vec<f64>) {
-    let v = origin - light.position;
-    let (a, b, c, axis, spot) = match light.cone {
-        Cone::Point => return,
-        Cone::Spot {
-            axis, cos_falloff, ..
-        } => {
-            let (ua, va) = (dir.dot(axis), v.dot(axis));
-            let c2 = cos_falloff * cos_falloff;
-            (
-                ua * ua - c2,
-                2.0 * (va * ua - c2 * v.dot(dir)),
-                va * va - c2 * v.length_squared(),
-                axis,
-                true,
-            )
-        }
-        Cone::Cylinder { axis, falloff, .. } => {
-            let up = dir - axis * dir.dot(axis);
-            let vp = v - axis * v.dot(axis);
-            (
-                up.length_squared(),
-                2.0 * up.dot(vp),
-                vp.length_squared() - falloff * falloff,
-                axis,
-                false,
-            )
-        }
-    };
-    if a.abs() < 1e-12 {
-        return;
-    }
-    let disc = b * b - 4.0 * a * c;
-    if disc < 0.0 {
-        return;
-    }
-    let r = disc.sqrt();
-    for s in [(-b - r) / (2.0 * a), (-b + r) / (2.0 * a)] {
-        // A spotlight's cone has one nappe, in front of the light.
-        if s > 0.0 && s < len && (!spot || (v + dir * s).dot(axis) > 0.0) {
-            out.push(s);
-        }
-    }
-}
-
 /// What a light crossing `ray` from `t0` to `t1` (ray units) keeps through `media`.
 ///
 /// Measured with a step of absorbing density moved through a box between a parallel light
@@ -151,10 +104,19 @@ pub fn transmittance(media: &[&[Media]], ray: &Ray, t0: f64, t1: f64) -> DVec3 {
     let len = ray.dir.length();
     let span = (t1 - t0) / intervals as f64;
     let h = span / (n + 1) as f64;
+    // Media without densities (fog-like atmospheres) have the same extinction everywhere:
+    // asked once, then summed exactly as the samples would be.
+    let uniform = media
+        .iter()
+        .flat_map(|l| l.iter())
+        .all(|m| m.density.is_empty())
+        .then(|| extinction_at(media, ray.origin));
     let mut depth = DVec3::ZERO;
     for i in 0..intervals {
         let start = t0 + span * i as f64;
-        let at = |k: u32| extinction_at(media, ray.at(start + 0.5 * h * k as f64));
+        let at = |k: u32| {
+            uniform.unwrap_or_else(|| extinction_at(media, ray.at(start + 0.5 * h * k as f64)))
+        };
         // Ends shared by neighbouring steps count twice, middles once.
         depth += at(0) + at(2 * n);
         for j in 0..n {
@@ -187,13 +149,24 @@ impl<'a> Tracer<'a> {
         // The stretch is cut where it enters and leaves spotlight and cylinder beams, each
         // piece sampled on its own (manual: lit intervals are sampled apart from unlit ones),
         // so that a narrow beam is not missed between samples.
+        // The lights that may scatter here, each with the part of the stretch outside which
+        // its beam is provably zero: a piece's samples ask only the lights whose part it
+        // meets (media_beam; the others would answer zero, so no picture changes).
         let mut cuts = std::mem::take(&mut ctx.media_cuts);
+        let mut lights = std::mem::take(&mut ctx.media_lights);
+        let mut piece = std::mem::take(&mut ctx.media_piece);
         cuts.clear();
         cuts.extend([0.0, t * len]);
+        lights.clear();
         if scatters {
-            for light in &self.scene.lights {
+            for (slot, light) in self.scene.lights.iter().enumerate() {
+                // Measured: a shadowless light scatters nothing in media (a box of scattering
+                // media lit only by one stays black; scripts/measure_media_shadow.sh).
                 if light.media_interaction && !light.shadowless {
                     beam_cuts(light, ray.origin, dir, t * len, &mut cuts);
+                    if let Some((lo, hi)) = lit_span(light, ray.origin, dir, t * len) {
+                        lights.push((slot, lo, hi));
+                    }
                 }
             }
             cuts.sort_by(f64::total_cmp);
@@ -211,36 +184,10 @@ impl<'a> Tracer<'a> {
                 m.aa_threshold,
             )
         });
+        let mut dimmed = (DVec3::ZERO, DVec3::ONE);
         let mut acc = Composite {
             kept: DVec3::ONE,
             added: DVec3::ZERO,
-        };
-        let mut sample = |s: f64, ctx: &mut TraceCtx<'a>| {
-            let p = ray.origin + dir * s;
-            let mut sigma = DVec3::ZERO;
-            let mut glow = DVec3::ZERO;
-            // Each density is evaluated once here, also for the lights' scattering below.
-            let mut scatter = std::mem::take(&mut ctx.media_scatter);
-            scatter.clear();
-            for m in media.iter().flat_map(|l| l.iter()) {
-                let rho = density(m, p);
-                if rho == DVec3::ZERO {
-                    continue;
-                }
-                sigma += m.absorption * rho;
-                glow += m.emission * rho;
-                if let Some(sc) = &m.scattering {
-                    sigma += sc.color * sc.extinction * rho;
-                    if sc.color != DVec3::ZERO {
-                        scatter.push((rho, *sc));
-                    }
-                }
-            }
-            if !scatter.is_empty() {
-                glow += self.in_scattered(&scatter, p, dir, ctx);
-            }
-            ctx.media_scatter = scatter;
-            Sample { sigma, glow }
         };
         // Measured with a thin bump and a step of density moved through a box
         // (docs/media.md): a stretch is cut into `intervals` equal parts; each of a part's n
@@ -254,6 +201,42 @@ impl<'a> Tracer<'a> {
             let h = span / (n + 1) as f64;
             let weight = span / n as f64;
             let threshold = aa_threshold / span;
+            piece.clear();
+            // Samples reach no further than w[1] − h (the last h is never sampled).
+            let last = w[1] - 0.5 * h;
+            piece.extend(
+                lights
+                    .iter()
+                    .filter(|&&(_, lo, hi)| last >= lo && w[0] <= hi)
+                    .map(|&(slot, _, _)| slot),
+            );
+            let mut sample = |s: f64, ctx: &mut TraceCtx<'a>| {
+                let p = ray.origin + dir * s;
+                let mut sigma = DVec3::ZERO;
+                let mut glow = DVec3::ZERO;
+                // Each density is evaluated once here, also for the lights' scattering below.
+                let mut scatter = std::mem::take(&mut ctx.media_scatter);
+                scatter.clear();
+                for m in media.iter().flat_map(|l| l.iter()) {
+                    let rho = density(m, p);
+                    if rho == DVec3::ZERO {
+                        continue;
+                    }
+                    sigma += m.absorption * rho;
+                    glow += m.emission * rho;
+                    if let Some(sc) = &m.scattering {
+                        sigma += sc.color * sc.extinction * rho;
+                        if sc.color != DVec3::ZERO {
+                            scatter.push((rho, *sc));
+                        }
+                    }
+                }
+                if !scatter.is_empty() {
+                    glow += self.in_scattered(&scatter, &piece, p, dir, ctx);
+                }
+                ctx.media_scatter = scatter;
+                Sample { sigma, glow }
+            };
             for i in 0..intervals {
                 let start = w[0] + span * i as f64;
                 let mut left = sample(start, ctx);
@@ -271,12 +254,20 @@ impl<'a> Tracer<'a> {
                         ctx,
                     );
                     acc.added += acc.kept * step.glow * weight;
-                    acc.kept *= (-step.sigma * weight).exp();
+                    // Uniform media give every step of a piece the same extinction: exp is
+                    // asked once for it (the same argument gives the same bits).
+                    let arg = -step.sigma * weight;
+                    if arg != dimmed.0 {
+                        dimmed = (arg, arg.exp());
+                    }
+                    acc.kept *= dimmed.1;
                     left = right;
                 }
             }
         }
         ctx.media_cuts = cuts;
+        ctx.media_lights = lights;
+        ctx.media_piece = piece;
         let Composite { kept, added } = acc;
         Seen {
             rgb: seen.rgb * kept + added,
@@ -285,22 +276,20 @@ impl<'a> Tracer<'a> {
     }
 
     /// The light the media's scattering sends from `p` towards the viewer (the ray goes
-    /// `dir` from the viewer): every light reaching `p`, shadows included, times each
+    /// `dir` from the viewer): every light of `lights` (slots; the others give nothing here)
+    /// reaching `p`, shadows included, times each
     /// scattering media's phase function, colour and density (`scatter`).
     fn in_scattered(
         &self,
         scatter: &[(DVec3, Scattering)],
+        lights: &[usize],
         p: DVec3,
         dir: DVec3,
         ctx: &mut TraceCtx<'a>,
     ) -> DVec3 {
         let mut out = DVec3::ZERO;
-        for (slot, light) in self.scene.lights.iter().enumerate() {
-            // Measured: a shadowless light scatters nothing in media (a box of scattering
-            // media lit only by one stays black; scripts/measure_media_shadow.sh).
-            if !light.media_interaction || light.shadowless {
-                continue;
-            }
+        for &slot in lights {
+            let light = &self.scene.lights[slot];
             let Some(inc) = light.incidence(p) else {
                 continue;
             };

@@ -13,6 +13,7 @@ pub mod focal;
 mod fog;
 mod irid;
 mod media;
+mod media_beam;
 mod metallic;
 pub mod noise;
 mod noise3_data;

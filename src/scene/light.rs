@@ -155,7 +155,8 @@ impl Light {
         if dist <= 0.0 {
             return None;
         }
-        let beam = self.beam(p);
+        // p − position is −to_light, whose length is `dist` to the bit.
+        let beam = self.beam_from(p - self.position, dist);
         if beam <= 0.0 {
             return None;
         }
@@ -177,6 +178,13 @@ impl Light {
     }
 
     pub fn beam(&self, p: DVec3) -> f64 {
+        let w = p - self.position;
+        self.beam_from(w, w.length())
+    }
+
+    /// `beam` at the point `w` from the light, `len` = |w| (so callers that know it save a
+    /// square root): the same arithmetic as `beam`, bit for bit.
+    fn beam_from(&self, w: DVec3, len: f64) -> f64 {
         match self.cone {
             Cone::Point => 1.0,
             Cone::Spot {
@@ -185,7 +193,14 @@ impl Light {
                 cos_falloff,
                 tightness,
             } => {
-                let c = (p - self.position).normalize_or_zero().dot(axis);
+                // glam's normalize_or_zero, with the length already known.
+                let rcp = 1.0 / len;
+                let unit = if rcp.is_finite() && rcp > 0.0 {
+                    w * rcp
+                } else {
+                    DVec3::ZERO
+                };
+                let c = unit.dot(axis);
                 if c <= cos_falloff {
                     return 0.0;
                 }
@@ -209,7 +224,7 @@ impl Light {
                 falloff,
                 tightness,
             } => {
-                let v = p - self.position;
+                let v = w;
                 if v.dot(axis) <= 0.0 {
                     return 0.0;
                 }

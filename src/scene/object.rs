@@ -124,6 +124,10 @@ pub struct Scratch<'a> {
     pub media_lists: Vec<&'a [crate::scene::media::Media]>,
     /// Where that stretch enters and leaves light beams.
     pub media_cuts: Vec<f64>,
+    /// The lights that may scatter on that stretch (slot, and the part of the stretch outside
+    /// which the light is dark), and those that may on the piece being sampled (slots).
+    pub media_lights: Vec<(usize, f64, f64)>,
+    pub media_piece: Vec<usize>,
     /// At one media sample: each scattering media's density, with its scattering.
     pub media_scatter: Vec<(DVec3, crate::scene::media::Scattering)>,
 }
