@@ -29,7 +29,29 @@ DEFAULT = [
     "f_klein_bottle:6", "f_kummer_surface_v1:4", "f_lemniscate_of_gerono:4", "f_mitre:4",
     "f_nodal_cubic:3", "f_odd:4", "f_pillow:4", "f_piriform:4", "f_quartic_paraboloid:4",
     "f_quartic_saddle:4", "f_steiners_roman:4", "f_torus_gumdrop:6", "f_umbrella:4",
+    "f_hyperbolic_torus:4:0.7:1:2", "f_parabolic_torus:4:0.7:1:2", "f_witch_of_agnesi:4:0.7:1:1",
+    "f_quartic_cylinder:4:0.7:1:2", "f_folium_surface:4:0.7:1:2", "f_bifolia:6:0.7:1:1",
 ]
+
+# Polynomials whose parameters reach a degree the joint fit would need too many povray runs
+# for: their terms were read off per-parameter-set fits (fit with K = 0 at several fixed
+# parameter sets and compare the coefficients), and are only checked here.
+HAND = {
+    # P2² x⁴ − P1² P2² x² − y² − z²
+    "f_kampyle_of_eudoxus": (2, [(1, [4, 0, 0, 0, 2]), (-1, [2, 0, 0, 2, 2]), (-1, [0, 2, 0, 0, 0]),
+                                 (-1, [0, 0, 2, 0, 0])]),
+    # −(x²+y²+z²)² − 2 R² y² + (T − 2) R² (x² + z²) − R⁴ + F²  (R, F, T = P1, P2, P3)
+    "f_ovals_of_cassini": (3, [(-1, [4, 0, 0, 0, 0, 0]), (-1, [0, 4, 0, 0, 0, 0]), (-1, [0, 0, 4, 0, 0, 0]),
+                               (-2, [2, 2, 0, 0, 0, 0]), (-2, [2, 0, 2, 0, 0, 0]), (-2, [0, 2, 2, 0, 0, 0]),
+                               (-2, [0, 2, 0, 2, 0, 0]), (1, [2, 0, 0, 2, 0, 1]), (-2, [2, 0, 0, 2, 0, 0]),
+                               (1, [0, 0, 2, 2, 0, 1]), (-2, [0, 0, 2, 2, 0, 0]), (-1, [0, 0, 0, 4, 0, 0]),
+                               (1, [0, 0, 0, 0, 2, 0])]),
+    # 1 − x⁴ − y⁴ − z⁴ − P1 (x² + y² + z²) − P2 (x²y² + x²z² + y²z²) − P3 xyz
+    "f_kummer_surface_v2": (3, [(1, [0, 0, 0, 0, 0, 0]), (-1, [4, 0, 0, 0, 0, 0]), (-1, [0, 4, 0, 0, 0, 0]),
+                                (-1, [0, 0, 4, 0, 0, 0]), (-1, [2, 0, 0, 1, 0, 0]), (-1, [0, 2, 0, 1, 0, 0]),
+                                (-1, [0, 0, 2, 1, 0, 0]), (-1, [2, 2, 0, 0, 1, 0]), (-1, [2, 0, 2, 0, 1, 0]),
+                                (-1, [0, 2, 2, 0, 1, 0]), (-1, [1, 1, 1, 0, 0, 1])]),
+}
 
 
 def monomials(deg, nvars):
@@ -91,18 +113,24 @@ def check(name, terms, k):
     return worst
 
 
+def print_rows(name, k, worst, terms):
+    rows = ", ".join(
+        f"({f.numerator}.0 / {f.denominator}.0, {list(m) + [0] * (6 - len(m))})"
+        if f.denominator != 1 and len(str(float(f))) >= 12
+        else f"({float(f)!r}, {list(m) + [0] * (6 - len(m))})" for f, m in terms)
+    print(f"// {name}: {k} parameter(s), worst {worst:.2e}\n{rows}", flush=True)
+
+
 def main():
+    for name, (k, hand) in HAND.items() if len(sys.argv) < 2 else []:
+        terms = [(Fraction(c), tuple(m[:3 + k])) for c, m in hand]
+        print_rows(name, k, check(name, terms, k), terms)
     for spec in sys.argv[1:] or DEFAULT:
         parts = spec.split(":") + [None] * 4
         name, deg = parts[0], int(parts[1] or 6)
         rng, p0, k = float(parts[2] or 0.7), float(parts[3] or 1.0), int(parts[4] or 0)
         terms = fit(name, deg, rng, p0, k)
-        worst = check(name, terms, k)
-        rows = ", ".join(
-            f"({f.numerator}.0 / {f.denominator}.0, {list(m) + [0] * (6 - len(m))})"
-            if f.denominator != 1 and len(str(float(f))) >= 12
-            else f"({float(f)!r}, {list(m) + [0] * (6 - len(m))})" for f, m in terms)
-        print(f"// {name}: {k} parameter(s), worst {worst:.2e}\n{rows}", flush=True)
+        print_rows(name, k, check(name, terms, k), terms)
 
 
 if __name__ == "__main__":
