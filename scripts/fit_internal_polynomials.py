@@ -14,6 +14,7 @@ Usage: fit_internal_polynomials.py [NAME:DEGREE:RANGE:FIT_P0:K ...]
 (FIT_P0 keeps large polynomials inside the clamp while fitting; K extra parameters, drawn
 in [0.3, 1.5]). Without arguments, every function lancer takes from this fit.
 """
+import math
 import random
 import sys
 from fractions import Fraction
@@ -51,6 +52,16 @@ HAND = {
                                 (-1, [0, 0, 4, 0, 0, 0]), (-1, [2, 0, 0, 1, 0, 0]), (-1, [0, 2, 0, 1, 0, 0]),
                                 (-1, [0, 0, 2, 1, 0, 0]), (-1, [2, 2, 0, 0, 1, 0]), (-1, [2, 0, 2, 0, 1, 0]),
                                 (-1, [0, 2, 2, 0, 1, 0]), (-1, [1, 1, 1, 0, 0, 1])]),
+    # P1 times a sextic whose odd coefficients are multiples of 2√2 (fits at P1 = 0.5, 1, 2
+    # with field strength 0.001, which keeps it inside the clamp).
+    "f_boy_surface": (1, [(c * (2 * math.sqrt(2) if r8 else 1), list(m) + [1]) for c, r8, m in [
+        (64, 0, (0, 0, 3)), (-288, 0, (0, 0, 4)), (432, 0, (0, 0, 5)), (-216, 0, (0, 0, 6)),
+        (-144, 0, (0, 2, 2)), (324, 0, (0, 2, 4)), (216, 1, (0, 3, 2)), (-216, 1, (0, 3, 3)),
+        (324, 0, (0, 4, 1)), (-810, 0, (0, 4, 2)), (-729, 0, (0, 6, 0)), (324, 1, (1, 2, 3)),
+        (-1458, 1, (1, 4, 1)), (-144, 0, (2, 0, 2)), (324, 0, (2, 0, 4)), (-648, 1, (2, 1, 2)),
+        (648, 1, (2, 1, 3)), (648, 0, (2, 2, 1)), (-1620, 0, (2, 2, 2)), (-2187, 0, (2, 4, 0)),
+        (-108, 1, (3, 0, 3)), (-972, 1, (3, 2, 1)), (324, 0, (4, 0, 1)), (-810, 0, (4, 0, 2)),
+        (-2187, 0, (4, 2, 0)), (486, 1, (5, 0, 1)), (-729, 0, (6, 0, 0))]]),
 }
 
 
@@ -116,14 +127,14 @@ def check(name, terms, k):
 def print_rows(name, k, worst, terms):
     rows = ", ".join(
         f"({f.numerator}.0 / {f.denominator}.0, {list(m) + [0] * (6 - len(m))})"
-        if f.denominator != 1 and len(str(float(f))) >= 12
+        if isinstance(f, Fraction) and f.denominator != 1 and len(str(float(f))) >= 12
         else f"({float(f)!r}, {list(m) + [0] * (6 - len(m))})" for f, m in terms)
     print(f"// {name}: {k} parameter(s), worst {worst:.2e}\n{rows}", flush=True)
 
 
 def main():
     for name, (k, hand) in HAND.items() if len(sys.argv) < 2 else []:
-        terms = [(Fraction(c), tuple(m[:3 + k])) for c, m in hand]
+        terms = [(Fraction(c) if isinstance(c, int) else c, tuple(m[:3 + k])) for c, m in hand]
         print_rows(name, k, check(name, terms, k), terms)
     for spec in sys.argv[1:] or DEFAULT:
         parts = spec.split(":") + [None] * 4

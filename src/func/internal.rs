@@ -12,10 +12,11 @@ use super::internal_surfaces as surf;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Internal {
     Ellipsoid,
-    /// `f_helix1`, `f_helix2`, `f_spiral`: see [`super::internal_surfaces`].
+    /// `f_helix1`, `f_helix2`, `f_spiral`, `f_poly4`: see [`super::internal_surfaces`].
     Helix1,
     Helix2,
     Spiral,
+    Poly4,
     /// A polynomial times a field strength: see [`super::internal_polynomials`].
     Polynomial(u32),
     /// `f_noise3d`: the default noise generator's value in [0, 1].
@@ -134,6 +135,7 @@ impl Internal {
             25 => Internal::Helix1,
             26 => Internal::Helix2,
             64 => Internal::Spiral,
+            51 => Internal::Poly4,
             45 => Internal::Paraboloid,
             47 => Internal::Ph,
             57 => Internal::R,
@@ -159,6 +161,7 @@ impl Internal {
             Internal::Polynomial(id) => 4 + super::internal_polynomials::terms(id)?.1,
             Internal::Torus | Internal::Superellipsoid => 5,
             Internal::Ellipsoid | Internal::Torus2 => 6,
+            Internal::Poly4 => 8,
             Internal::RoundedBox => 7,
             Internal::RidgedMf | Internal::Spiral => 9,
             Internal::Helix1 | Internal::Helix2 => 10,
@@ -234,6 +237,7 @@ impl Internal {
             Internal::Helix1 => surf::helix1(x, y, z, std::array::from_fn(|i| g(i + 3))),
             Internal::Helix2 => surf::helix2(x, y, z, std::array::from_fn(|i| g(i + 3))),
             Internal::Spiral => surf::spiral(x, y, z, std::array::from_fn(|i| g(i + 3))),
+            Internal::Poly4 => surf::poly4(x, y, z, std::array::from_fn(|i| g(i + 3))),
             Internal::Polynomial(id) => match super::internal_polynomials::terms(id) {
                 Some((t, _)) => super::internal_polynomials::eval(t, a),
                 None => f64::NAN,

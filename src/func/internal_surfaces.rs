@@ -1,5 +1,5 @@
-//! The helix and spiral surfaces among POV-Ray's internal functions (`f_helix1`,
-//! `f_helix2`, `f_spiral` of `functions.inc`).
+//! The helix, spiral and lathe-like surfaces among POV-Ray's internal functions
+//! (`f_helix1`, `f_helix2`, `f_spiral`, `f_poly4` of `functions.inc`).
 //!
 //! Fitted black-box to the `povray` binary: scripts/measure_internal_functions.py prints a
 //! function at chosen points, and every formula here reproduces those values to ~1e-15
@@ -79,6 +79,14 @@ pub fn spiral(x: f64, y: f64, z: f64, p: [f64; 6]) -> f64 {
     d.max(len - outer)
 }
 
+/// `f_poly4(x, y, z, c0, c1, c2, c3, c4)`: the surface of revolution about y whose radius at
+/// height y is c0 + c1·y + c2·y² + c3·y³ + c4·y⁴; measured: the radius is kept at −5 or
+/// above (c0 = −20 gives r + 5), never capped above.
+pub fn poly4(x: f64, y: f64, z: f64, c: [f64; 5]) -> f64 {
+    let radius = c.iter().rev().fold(0.0, |acc, &ci| acc * y + ci);
+    x.hypot(z) - radius.max(-5.0)
+}
+
 #[cfg(test)]
 // The expected values are kept exactly as POV-Ray printed them.
 #[allow(clippy::excessive_precision)]
@@ -109,6 +117,8 @@ mod tests {
             (Internal::Spiral, &[0.5, 0.1, 2.0, 0.0, 0.0, 1.0], [1.900034067737354, 0.200113051987741, 1.402178113427381, 0.125000000000000, 0.002108430359606, 0.395438738625047]),
             (Internal::Spiral, &[0.45, 0.12, 2.2, 0.0, 0.0, 2.7], [2.230125461656047, 0.311191566810149, 1.547333200053306, 0.042500000000000, 0.078926108183655, 0.473942512004740]),
             (Internal::Spiral, &[0.3, 0.05, 1.7, 0.0, 0.0, 0.0], [2.041657386773942, 0.250000000000000, 1.450000000000000, -0.025000000000000, 0.050000000000000, 0.400000000000000]),
+            (Internal::Poly4, &[1.0, -0.5, 0.3, 0.2, -0.1], [1.962277660168380, -0.343073519286549, -0.515739011071948, -0.600000000000000, -0.191612689413609, 0.403122033614167]),
+            (Internal::Poly4, &[-2.0, -1.0, 2.0, 0.5, -0.3], [-0.037722339831621, 2.647446480713450, -0.065739011071948, 2.400000000000000, 2.841107310586391, 3.264735783614167]),
         ];
         for (f, extra, want) in cases {
             for (p, w) in pts.iter().zip(want) {
@@ -128,6 +138,10 @@ mod tests {
         assert!((at([0.0, 0.0, 0.0]) - -0.099999).abs() < 1e-15);
         assert!((at([1e-7, 0.0, 0.0]) - -0.0999999).abs() < 1e-15);
         assert!((at([-2.0, 0.0, 0.0])).abs() < 1e-15);
+        let p4 =
+            |p: [f64; 3]| Internal::Poly4.eval(&[&p[..], &[-20.0, 0.0, 0.0, 0.0, 0.0]].concat());
+        assert!((p4([0.3, 0.5, 0.4]) - 5.5).abs() < 1e-15);
+        assert!((p4([3.0, 0.0, 4.0]) - 10.0).abs() < 1e-15);
         let h = [0.0, 0.3, 0.0, 1.0, 1.0, 0.2, 1.0, 1.0, 1.0, 0.0];
         assert!((Internal::Helix1.eval(&h) - 0.8).abs() < 1e-15);
     }
