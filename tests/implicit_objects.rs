@@ -137,9 +137,9 @@ fn isosurface_errors_and_unsupported_functions() {
     );
     let e = parse_err("isosurface { function { x } hierarchy }");
     assert!(e.contains("not an isosurface item"), "{e}");
-    // A function lancer cannot evaluate (f_cushion): not rendered, with the reason.
+    // A function lancer cannot evaluate (f_comma): not rendered, with the reason.
     let p = parser(
-        "#declare C = function { internal(13) }
+        "#declare C = function { internal(9) }
          isosurface { function { C(x, y, z) - 0.5 } }",
     );
     assert!(matches!(p.scene.objects[0].shape, ShapeDesc::Csg { .. }));

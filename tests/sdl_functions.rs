@@ -359,20 +359,17 @@ fn function_errors_come_when_called() {
     // Declaring what lancer cannot evaluate is silent; calling it warns at the call (the
     // standard for anything lancer lacks) and gives 0, so the scene still parses.
     let p = parser(
-        "#declare N = function { internal(13) }
+        "#declare N = function { internal(9) }
          #declare W = function { 2 * N(x, y, z) - 1 }
          #declare Pg = function { pigment { checker } }",
     );
     assert!(matches!(p.lookup("W"), Some(Value::Function(_))));
-    let m = warned("#declare N = function { internal(13) } #declare R = N(1,2,3);");
-    assert!(
-        m.contains("f_cushion") && m.contains("not supported"),
-        "{m}"
-    );
-    let p = parser("#declare N = function { internal(13) } #declare R = N(1,2,3);");
+    let m = warned("#declare N = function { internal(9) } #declare R = N(1,2,3);");
+    assert!(m.contains("f_comma") && m.contains("not supported"), "{m}");
+    let p = parser("#declare N = function { internal(9) } #declare R = N(1,2,3);");
     assert_eq!(float(&p, "R"), 0.0);
-    let m = warned("#declare N = function { internal(13) } #declare W = function { N(x,y,z) } #declare R = W(1,2,3);");
-    assert!(m.contains("f_cushion"), "{m}");
+    let m = warned("#declare N = function { internal(9) } #declare W = function { N(x,y,z) } #declare R = W(1,2,3);");
+    assert!(m.contains("f_comma"), "{m}");
     // Pigment functions give the pigment's colour (components as in POV-Ray).
     let p = parser(
         "#declare Pg = function { pigment { checker rgb <1,0.5,0.25>, rgb 0 } }

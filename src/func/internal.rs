@@ -6,10 +6,19 @@
 //! Numbers lancer does not implement yet (the noise-based ones and the rarer surfaces) are
 //! reported as unsupported when such a function is called, not when it is declared.
 
+use super::internal_surfaces as surf;
+
 /// One internal function, by what it computes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Internal {
     Ellipsoid,
+    /// `f_helix1`, `f_helix2`, `f_spiral`, `f_poly4`: see [`super::internal_surfaces`].
+    Helix1,
+    Helix2,
+    Spiral,
+    Poly4,
+    /// A polynomial times a field strength: see [`super::internal_polynomials`].
+    Polynomial(u32),
     /// `f_noise3d`: the default noise generator's value in [0, 1].
     Noise3d,
     /// `f_noise_generator(x, y, z, generator)`.
@@ -123,6 +132,10 @@ impl Internal {
     pub fn from_id(id: u32) -> Internal {
         match id {
             17 => Internal::Ellipsoid,
+            25 => Internal::Helix1,
+            26 => Internal::Helix2,
+            64 => Internal::Spiral,
+            51 => Internal::Poly4,
             45 => Internal::Paraboloid,
             47 => Internal::Ph,
             57 => Internal::R,
@@ -135,6 +148,7 @@ impl Internal {
             76 => Internal::Noise3d,
             78 => Internal::NoiseGenerator,
             59 => Internal::RidgedMf,
+            n if super::internal_polynomials::terms(n).is_some() => Internal::Polynomial(n),
             n => Internal::Unknown(n),
         }
     }
@@ -144,10 +158,13 @@ impl Internal {
         Some(match self {
             Internal::Ph | Internal::R | Internal::Th | Internal::Noise3d => 3,
             Internal::Sphere | Internal::Paraboloid | Internal::NoiseGenerator => 4,
+            Internal::Polynomial(id) => 4 + super::internal_polynomials::terms(id)?.1,
             Internal::Torus | Internal::Superellipsoid => 5,
             Internal::Ellipsoid | Internal::Torus2 => 6,
+            Internal::Poly4 => 8,
             Internal::RoundedBox => 7,
-            Internal::RidgedMf => 9,
+            Internal::RidgedMf | Internal::Spiral => 9,
+            Internal::Helix1 | Internal::Helix2 => 10,
             Internal::Unknown(_) => return None,
         })
     }
@@ -217,6 +234,14 @@ impl Internal {
                 [g(3), g(4), g(5), g(6), g(7)],
                 (g(8) as i64).clamp(1, 3) as u8,
             ),
+            Internal::Helix1 => surf::helix1(x, y, z, std::array::from_fn(|i| g(i + 3))),
+            Internal::Helix2 => surf::helix2(x, y, z, std::array::from_fn(|i| g(i + 3))),
+            Internal::Spiral => surf::spiral(x, y, z, std::array::from_fn(|i| g(i + 3))),
+            Internal::Poly4 => surf::poly4(x, y, z, std::array::from_fn(|i| g(i + 3))),
+            Internal::Polynomial(id) => match super::internal_polynomials::terms(id) {
+                Some((t, _)) => super::internal_polynomials::eval(t, a),
+                None => f64::NAN,
+            },
             Internal::Unknown(_) => f64::NAN,
         }
     }

@@ -15,6 +15,8 @@
 
 pub mod compile;
 pub mod internal;
+pub mod internal_polynomials;
+pub mod internal_surfaces;
 pub mod vm;
 
 use std::sync::Arc;
