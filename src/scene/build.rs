@@ -250,6 +250,9 @@ struct Ctx {
     light_sets: Vec<LightSet>,
     current_set: u16,
     current_group: u16,
+    /// The `hollow` of the CSG being built, which its members take unless they say their own
+    /// (manual, "Hollow Object Modifier").
+    hollow_default: bool,
     groups: u16,
 }
 
@@ -267,6 +270,7 @@ impl Ctx {
             light_sets: vec![LightSet::outside()],
             current_set: 0,
             current_group: 0,
+            hollow_default: false,
             groups: 0,
         }
     }
@@ -540,10 +544,13 @@ impl Ctx {
                 return self.object_in(&shape, parent_tex, parent_itex, parent_int, default);
             }
             ShapeDesc::Csg { op, children } => {
+                let outer_hollow = self.hollow_default;
+                self.hollow_default = o.hollow.unwrap_or(outer_hollow);
                 let kids: Vec<Object> = children
                     .iter()
                     .filter_map(|c| self.object_in(c, tex_desc, itex_desc, int, default))
                     .collect();
+                self.hollow_default = outer_hollow;
                 if kids.is_empty() {
                     return None;
                 }
@@ -641,7 +648,7 @@ impl Ctx {
             },
             double_illuminate: o.double_illuminate,
             light_set: self.current_set,
-            hollow: o.hollow.unwrap_or(false),
+            hollow: o.hollow.unwrap_or(self.hollow_default),
             inverse: o.inverse,
             bounds,
             transparent,
@@ -777,7 +784,7 @@ impl Scene {
     /// Whether `p` is inside an object that is not `hollow`, where POV-Ray computes no
     /// atmosphere.
     pub fn inside_solid(&self, p: DVec3) -> bool {
-        self.any_object_at(p, |o| !o.hollow && o.inside(p))
+        self.any_object_at(p, |o| o.solid_at(p))
     }
 
     /// Whether `p` is inside any object other than `leaf` (CSG nodes holding `leaf` are

@@ -502,6 +502,25 @@ impl Object {
         }
     }
 
+    /// Whether `p` lies inside this object where it is solid (not `hollow`), for the rule
+    /// that no atmosphere or media is computed inside solid objects. POV-Ray judges a union by
+    /// its members (measured: a hollow media sphere in a union that is not hollow shows its
+    /// media around the camera; a solid member around the camera hides it until the ray
+    /// leaves that member), other objects by their own flag (an intersection or merge with a
+    /// hollow member is solid).
+    pub fn solid_at(&self, p: DVec3) -> bool {
+        match &self.kind {
+            ObjKind::Csg {
+                op: CsgOp::Union,
+                children,
+                ..
+            } if !self.inverse && self.clip.is_empty() => {
+                self.bounds.contains(p) && children.iter().any(|c| c.solid_at(p))
+            }
+            _ => !self.hollow && self.inside(p),
+        }
+    }
+
     pub fn inside(&self, p: DVec3) -> bool {
         // Bounds enclose the (un-inverted) solid, so outside them the answer is known.
         if !self.bounds.contains(p) {
