@@ -303,6 +303,34 @@ fn atan2_or_zero(a: f64, b: f64) -> f64 {
     }
 }
 
+/// The points at which POV-Ray's printed values of internal functions are tabled in the
+/// tests (scripts/measure_internal_functions.py's default points).
+#[cfg(test)]
+pub(crate) const PRINTED_AT: [[f64; 3]; 6] = [
+    [1.0, 2.0, 3.0],
+    [-0.5, 0.3, 0.2],
+    [0.2, -1.5, 0.7],
+    [0.0, 0.0, 0.4],
+    [0.7, 0.1, -0.3],
+    [-1.1, 0.45, -0.6],
+];
+
+/// Asserts that `f` with parameters `extra` takes the arity it should and gives POV-Ray's
+/// printed values `want` at the first `want.len()` of `PRINTED_AT`, within 1e-12 (printed with
+/// 15 decimals).
+#[cfg(test)]
+pub(crate) fn check_printed(f: Internal, extra: &[f64], want: &[f64]) {
+    for (p, w) in PRINTED_AT.iter().zip(want) {
+        let args = [&p[..], extra].concat();
+        assert_eq!(f.arity(), Some(args.len()), "{f:?}");
+        let got = f.eval(&args);
+        assert!(
+            (got - w).abs() < 1e-12,
+            "{f:?} {extra:?} at {p:?}: {got} vs {w}"
+        );
+    }
+}
+
 #[cfg(test)]
 // The expected values are kept exactly as POV-Ray printed them.
 #[allow(clippy::excessive_precision)]
@@ -312,12 +340,6 @@ mod tests {
     /// Values printed by POV-Ray 3.7 for `f_...(X,Y,Z,...)` at these points.
     #[test]
     fn matches_povray_at_sample_points() {
-        let pts = [
-            [1.0, 2.0, 3.0],
-            [-0.5, 0.3, 0.2],
-            [0.2, -1.5, 0.7],
-            [0.0, 0.0, 0.4],
-        ];
         #[rustfmt::skip]
         let cases: &[(Internal, &[f64], [f64; 4])] = &[
             (Internal::Sphere, &[0.8], [2.941657386773941, -0.183558599703102, 0.867333200053306, -0.4]),
@@ -336,13 +358,7 @@ mod tests {
             (Internal::RidgedMf, &[0.07, 2.2, 7.0, 0.6, 0.9, 1.0], [0.048016074648238, 0.002640418425742, 0.238491689069120, 0.342913651060993]),
         ];
         for (f, extra, want) in cases {
-            for (p, w) in pts.iter().zip(want) {
-                let mut args = p.to_vec();
-                args.extend_from_slice(extra);
-                assert_eq!(args.len(), f.arity().unwrap());
-                let got = f.eval(&args);
-                assert!((got - w).abs() < 1e-12, "{f:?} at {p:?}: {got} vs {w}");
-            }
+            check_printed(*f, extra, want);
         }
         assert_eq!(Internal::Paraboloid.eval(&[0.0, 20.0, 0.0, 2.0]), 10.0);
         assert_eq!(Internal::Ph.eval(&[0.0, 0.0, 0.0]), 0.0);

@@ -461,7 +461,7 @@ const WITCH_OF_AGNESI: Terms = &[
 // The expected values are kept exactly as POV-Ray printed them.
 #[allow(clippy::excessive_precision)]
 mod tests {
-    use crate::func::internal::Internal;
+    use crate::func::internal::{check_printed, Internal};
 
     /// Values printed by POV-Ray 3.7 (scripts/measure_internal_functions.py, its default
     /// points) for each polynomial function with two parameter sets (field strengths 1 and
@@ -469,14 +469,6 @@ mod tests {
     /// ~1e-13 relative).
     #[test]
     fn matches_povray_at_sample_points() {
-        let pts = [
-            [1.0, 2.0, 3.0],
-            [-0.5, 0.3, 0.2],
-            [0.2, -1.5, 0.7],
-            [0.0, 0.0, 0.4],
-            [0.7, 0.1, -0.3],
-            [-1.1, 0.45, -0.6],
-        ];
         #[rustfmt::skip]
         let cases: &[(u32, &[f64], [f64; 6])] = &[
             (8, &[0.001, 1.0], [-10.000000000000000, -0.029474320494848, -10.000000000000000, 0.000262144000000, -0.218260080838534, -2.947213188477136]),
@@ -543,16 +535,7 @@ mod tests {
             (74, &[-0.37, 2.2], [8.214000000000000, -0.537610000000000, -2.329150000000000, -0.814000000000000, -0.711140000000000, -0.186295000000000]),
         ];
         for (id, params, want) in cases {
-            let f = Internal::from_id(*id);
-            assert_eq!(f.arity(), Some(3 + params.len()), "internal {id}");
-            for (p, w) in pts.iter().zip(want) {
-                let args = [&p[..], params].concat();
-                let got = f.eval(&args);
-                assert!(
-                    (got - w).abs() < 1e-12,
-                    "internal {id} {params:?} at {p:?}: {got} vs {w}"
-                );
-            }
+            check_printed(Internal::from_id(*id), params, want);
         }
     }
 }

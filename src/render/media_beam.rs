@@ -333,6 +333,35 @@ mod tests {
         }
     }
 
+    /// Case `case` of the property tests: a spot (or, every third, a cylinder) light of random
+    /// place, aim, radius and falloff, and a ray of random length from a random point, from
+    /// the light itself (every fifth) or beyond its aim point (every fifth), running down the
+    /// axis every seventh and, with `backwards`, up it the next.
+    fn random_case(rng: &mut Lcg, case: u32, backwards: bool) -> (Light, DVec3, DVec3, f64) {
+        let kind = if case % 3 == 2 {
+            LightKind::Cylinder
+        } else {
+            LightKind::Spot
+        };
+        let pos = rng.vec(20.0);
+        let at = pos + rng.vec(5.0);
+        let radius = rng.next() * 3.0;
+        let falloff = radius + rng.next() * 20.0;
+        let l = light(kind, pos, at, radius, falloff);
+        let origin = match case % 5 {
+            0 => pos,
+            1 => pos + (at - pos) * 3.0,
+            _ => rng.vec(30.0),
+        };
+        let dir = match case % 7 {
+            0 => (at - pos).normalize(),
+            1 if backwards => -(at - pos).normalize(),
+            _ => rng.vec(1.0).normalize(),
+        };
+        let len = rng.next() * 80.0;
+        (l, origin, dir, len)
+    }
+
     /// Every piece called dark has zero beam at each of many points along it (and the
     /// points exactly at its ends), over random spot and cylinder lights and rays, including
     /// rays through the apex and along the axis. Exact: a dark claim that is wrong anywhere
@@ -343,26 +372,7 @@ mod tests {
         let mut dark = 0;
         let mut total = 0;
         for case in 0..4000 {
-            let kind = if case % 3 == 2 {
-                LightKind::Cylinder
-            } else {
-                LightKind::Spot
-            };
-            let pos = rng.vec(20.0);
-            let at = pos + rng.vec(5.0);
-            let radius = rng.next() * 3.0;
-            let falloff = radius + rng.next() * 20.0;
-            let l = light(kind, pos, at, radius, falloff);
-            let origin = match case % 5 {
-                0 => pos,
-                1 => pos + (at - pos) * 3.0,
-                _ => rng.vec(30.0),
-            };
-            let dir = match case % 7 {
-                0 => (at - pos).normalize(),
-                _ => rng.vec(1.0).normalize(),
-            };
-            let len = rng.next() * 80.0;
+            let (l, origin, dir, len) = random_case(&mut rng, case, false);
             let mut cuts = vec![0.0, len];
             beam_cuts(&l, origin, dir, len, &mut cuts);
             cuts.sort_by(f64::total_cmp);
@@ -389,27 +399,7 @@ mod tests {
         let mut rng = Lcg(11);
         let mut narrowed = 0;
         for case in 0..4000 {
-            let kind = if case % 3 == 2 {
-                LightKind::Cylinder
-            } else {
-                LightKind::Spot
-            };
-            let pos = rng.vec(20.0);
-            let at = pos + rng.vec(5.0);
-            let radius = rng.next() * 3.0;
-            let falloff = radius + rng.next() * 20.0;
-            let l = light(kind, pos, at, radius, falloff);
-            let origin = match case % 5 {
-                0 => pos,
-                1 => pos + (at - pos) * 3.0,
-                _ => rng.vec(30.0),
-            };
-            let dir = match case % 7 {
-                0 => (at - pos).normalize(),
-                1 => -(at - pos).normalize(),
-                _ => rng.vec(1.0).normalize(),
-            };
-            let len = rng.next() * 80.0;
+            let (l, origin, dir, len) = random_case(&mut rng, case, true);
             let span = lit_span(&l, origin, dir, len);
             if span.is_none_or(|(lo, hi)| hi - lo < len) {
                 narrowed += 1;
