@@ -405,6 +405,22 @@ impl Julia {
         matches!(self.orbit_with::<false>(p), Orbit::Inside)
     }
 
+    /// The ray's first crossing before `tmax`, as a ray parameter, for `intersect_first`
+    /// (`any` false) and for `any_hit` (`any` true: a crossing sure to be kept may be reported
+    /// at the far end of its bracket, see `crossings`).
+    fn first_crossing(&self, ray: &Ray, tmax: f64, any: bool) -> Option<f64> {
+        let len = ray.dir.length();
+        if !(len > 0.0 && len.is_finite()) {
+            return None;
+        }
+        let u = ray.dir / len;
+        let mut s = Vec::with_capacity(1);
+        let stop = Stop { len, tmax, any };
+        self.crossings(ray.origin, u, EPSILON * len, true, &mut s, Some(stop));
+        let t = s.first()? / len;
+        (t < tmax).then_some(t)
+    }
+
     /// Crossings along the unit direction `u` from `o` (object space) beyond `tmin`, as
     /// distances: POV-Ray's march (module doc).
     ///
@@ -544,36 +560,11 @@ impl Shape for Julia {
     }
 
     fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
-        let len = ray.dir.length();
-        if !(len > 0.0 && len.is_finite()) {
-            return None;
-        }
-        let u = ray.dir / len;
-        let mut s = Vec::with_capacity(1);
-        let stop = Stop {
-            len,
-            tmax,
-            any: false,
-        };
-        self.crossings(ray.origin, u, EPSILON * len, true, &mut s, Some(stop));
-        let t = s.first()? / len;
-        (t < tmax).then(|| Hit::new(t))
+        self.first_crossing(ray, tmax, false).map(Hit::new)
     }
 
     fn any_hit(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> bool {
-        let len = ray.dir.length();
-        if !(len > 0.0 && len.is_finite()) {
-            return false;
-        }
-        let u = ray.dir / len;
-        let mut s = Vec::with_capacity(1);
-        let stop = Stop {
-            len,
-            tmax,
-            any: true,
-        };
-        self.crossings(ray.origin, u, EPSILON * len, true, &mut s, Some(stop));
-        s.first().is_some_and(|&t| t / len < tmax)
+        self.first_crossing(ray, tmax, true).is_some()
     }
 
     fn inside(&self, p: DVec3) -> bool {
