@@ -39,9 +39,8 @@ pub fn block_size(s: &RenderSettings) -> usize {
 
 /// The first row of block rows: the window's top (0 without a window). Bands of rows given to
 /// `refine_rows` start at this row plus a multiple of the block size.
-pub fn block_origin(s: &RenderSettings) -> (usize, usize) {
-    s.window
-        .map_or((0, 0), |win| (win.x0 as usize, win.y0 as usize))
+pub fn block_top(s: &RenderSettings) -> usize {
+    s.window.map_or(0, |win| win.y0 as usize)
 }
 
 /// Method 1 over the whole picture's first pass `samples`, in place; returns all rays and

@@ -67,7 +67,7 @@ pub fn render_bands(
     // window's top; each needs only the first pass of the row above it, which the band before
     // traced and hands on.
     let block = aa1::block_size(s);
-    let (_, top) = aa1::block_origin(s);
+    let top = aa1::block_top(s);
     let aligned = rows.div_ceil(block) * block;
     let mut above: Option<Vec<Seen>> = None;
     let mut y0 = 0;
