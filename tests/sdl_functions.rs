@@ -354,6 +354,43 @@ fn user_functions_match_povray() {
     assert_eq!(float(&p, "Fb"), 3.0);
 }
 
+/// Spline functions keep the spline's components (2 here, 5 for a colour) and its type, in the
+/// scene language and through `.y` / `.t` / `.transmit` inside float functions. Values printed
+/// by POV-Ray 3.7.0 (`vstr(.., 0, 12)`, `str(.., 0, 12)`) for the same declarations.
+#[test]
+fn spline_functions_match_povray() {
+    let p = parser(
+        "#declare S2 = spline { natural_spline 0,<1,2> 1,<3,-1> 2,<0,0> 4,<5,5> }
+         #declare F2 = function { spline { S2 } }
+         #declare F5 = function { spline { linear_spline
+             0, rgbft <0,0.1,0.2,0.3,0.4> 1, rgbft <1,1,1,1,1> } }
+         #declare G = function(a) { F2(a).y + F5(a).t * 10 + F5(a).transmit * 100 }
+         #declare V = F2(1.5);
+         #declare C = F5(0.25);
+         #declare G1 = G(0.25);
+         #declare G3 = G(3);",
+    );
+    match p.lookup("V") {
+        Some(Value::Vector(c, 2)) => {
+            assert!(
+                close(c[0], 1.638586956522) && close(c[1], -0.899456521739),
+                "{c:?}"
+            )
+        }
+        other => panic!("V is {other:?}"),
+    }
+    match p.lookup("C") {
+        Some(Value::Vector(c, 5)) => {
+            let want = [0.25, 0.325, 0.4, 0.475, 0.55];
+            assert!(c.iter().zip(want).all(|(a, b)| close(*a, b)), "{c:?}");
+        }
+        other => panic!("C is {other:?}"),
+    }
+    // POV-Ray prints 12 decimals: compare to that.
+    assert!((float(&p, "G1") - 60.770720108696).abs() < 1e-11);
+    assert!((float(&p, "G3") - 112.369565217391).abs() < 1e-11);
+}
+
 #[test]
 fn function_errors_come_when_called() {
     // Declaring what lancer cannot evaluate is silent; calling it warns at the call (the

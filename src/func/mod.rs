@@ -6,7 +6,8 @@
 //! stream), then a small stack bytecode ([`vm::Code`]) that evaluates without allocating.
 //! `internal(N)` bodies point at the built-in functions of `functions.inc` ([`internal`]).
 //! Special functions (`transform`, `pigment`, `pattern`, `spline`) are kept as what they are;
-//! pigment and pattern functions are evaluated by the renderer's pigment and pattern code.
+//! pigment and pattern functions are evaluated by the renderer's pigment and pattern code,
+//! spline functions by [`spline`].
 //!
 //! A function that can be declared but not evaluated by lancer (an unknown internal number, a
 //! pigment function, or a float function calling one of those) carries the reason in
@@ -17,6 +18,7 @@ pub mod compile;
 pub mod internal;
 pub mod internal_polynomials;
 pub mod internal_surfaces;
+pub mod spline;
 pub mod vm;
 
 use std::sync::Arc;
@@ -54,8 +56,9 @@ pub enum FnKind {
     /// One component of a vector or colour function's result (`F(x,y,z).y`, `P(..).gray`):
     /// 0-4 red, green, blue, filter, transmit; 5 POV-Ray's grey (0.297, 0.589, 0.114).
     Component(Arc<Function>, u8),
-    /// `function { spline {...} }`: parsed, not evaluated.
-    Special(&'static str),
+    /// `function { spline {...} }`: a vector function of one parameter, with as many
+    /// components as the spline's longest point (2 to 5).
+    Spline(Arc<spline::SplineDef>),
 }
 
 /// What a function returns when called from the scene language.
@@ -63,6 +66,8 @@ pub enum FnKind {
 pub enum FnValue {
     Float(f64),
     Vector(DVec3),
+    /// A spline function's point: components and how many of them there are (2 to 5).
+    Components([f64; 5], u8),
 }
 
 /// A float expression in the function language, as the parser read it.
@@ -203,16 +208,19 @@ impl Function {
 
     /// Whether `.x`, `.red`, `.gray` ... can be taken of this function's result.
     pub fn has_components(&self) -> bool {
-        matches!(self.kind, FnKind::Transform(_) | FnKind::Pigment(_))
+        matches!(
+            self.kind,
+            FnKind::Transform(_) | FnKind::Pigment(_) | FnKind::Spline(_)
+        )
     }
 
-    pub fn special(what: &'static str) -> Function {
+    /// `function { spline { ... } }`: called with the spline's parameter, it gives the spline's
+    /// point with the spline's own type.
+    pub fn spline(s: spline::SplineDef) -> Function {
         Function {
-            params: vec!["x".into(), "y".into(), "z".into()],
-            kind: FnKind::Special(what),
-            unsupported: Some(format!(
-                "{what} functions (function {{ {what} {{ ... }} }}) are not supported by lancer yet"
-            )),
+            params: vec!["x".into()],
+            kind: FnKind::Spline(Arc::new(s)),
+            unsupported: None,
         }
     }
 
@@ -266,9 +274,10 @@ impl Function {
                     }
                 }
                 (FnKind::Transform(t), i) if i < 3 => t.point(point(args))[i as usize],
+                (FnKind::Spline(s), i) if i < 5 => s.eval(first(args), s.kind)[i as usize],
                 _ => f64::NAN,
             },
-            FnKind::Transform(_) | FnKind::Pigment(_) | FnKind::Special(_) => f64::NAN,
+            FnKind::Transform(_) | FnKind::Pigment(_) | FnKind::Spline(_) => f64::NAN,
         }
     }
 
@@ -277,9 +286,15 @@ impl Function {
         match &self.kind {
             FnKind::Transform(t) => FnValue::Vector(t.point(point(args))),
             FnKind::Pigment(p) => FnValue::Vector(crate::render::pigment::eval(p, point(args)).rgb),
+            FnKind::Spline(s) => FnValue::Components(s.eval(first(args), s.kind), s.dim.max(2)),
             _ => FnValue::Float(self.eval(args)),
         }
     }
+}
+
+/// A one-parameter function's argument (0 if the call gave none).
+fn first(args: &[f64]) -> f64 {
+    args.first().copied().unwrap_or(0.0)
 }
 
 /// The point a function of x, y, z is called at (missing arguments read as 0).

@@ -649,6 +649,7 @@ impl Parser {
         Ok(match func.call(&vals) {
             FnValue::Float(x) => Value::Float(x),
             FnValue::Vector(v) => Value::vec3(v),
+            FnValue::Components(c, n) => Value::Vector(c, n),
         })
     }
 }

@@ -147,9 +147,9 @@ impl Parser {
                 Function::pattern(p)
             }
             Some(_) => {
+                let kspan = self.cur_span();
                 self.advance();
-                self.skip_block()?;
-                Function::special("spline")
+                Function::spline(self.parse_spline_def(kspan)?)
             }
             None => {
                 let mut scope = FnScope {
