@@ -3,9 +3,10 @@
 //! The numbers are those `functions.inc` uses. The formulas were written from the parameter
 //! descriptions in `functions.inc` and the manual, then checked against the `povray` binary by
 //! printing each function at several points (see the tests below for the values captured).
-//! Numbers lancer does not implement yet (the noise-based ones and the rarer surfaces) are
+//! Numbers lancer does not implement yet (the rarer surfaces and curves) are
 //! reported as unsupported when such a function is called, not when it is declared.
 
+use super::internal_noise as noisy;
 use super::internal_surfaces as surf;
 
 /// One internal function, by what it computes.
@@ -26,6 +27,10 @@ pub enum Internal {
     /// `f_ridged_mf(x, y, z, H, lacunarity, octaves, offset, gain, generator)`: Musgrave's
     /// ridged multifractal over signed noise.
     RidgedMf,
+    /// `f_hetero_mf(x, y, z, H, lacunarity, octaves, offset, T, generator)`.
+    HeteroMf,
+    /// `f_ridge(x, y, z, lambda, octaves, omega, offset, ridge, generator)`.
+    Ridge,
     Paraboloid,
     Ph,
     R,
@@ -148,6 +153,8 @@ impl Internal {
             76 => Internal::Noise3d,
             78 => Internal::NoiseGenerator,
             59 => Internal::RidgedMf,
+            29 => Internal::HeteroMf,
+            58 => Internal::Ridge,
             n if super::internal_polynomials::terms(n).is_some() => Internal::Polynomial(n),
             n => Internal::Unknown(n),
         }
@@ -163,7 +170,7 @@ impl Internal {
             Internal::Ellipsoid | Internal::Torus2 => 6,
             Internal::Poly4 => 8,
             Internal::RoundedBox => 7,
-            Internal::RidgedMf | Internal::Spiral => 9,
+            Internal::RidgedMf | Internal::HeteroMf | Internal::Ridge | Internal::Spiral => 9,
             Internal::Helix1 | Internal::Helix2 => 10,
             Internal::Unknown(_) => return None,
         })
@@ -222,14 +229,22 @@ impl Internal {
                 let xy = x.abs().powf(2.0 / e) + y.abs().powf(2.0 / e);
                 1.0 - (xy.powf(e / n) + z.abs().powf(2.0 / n)).powf(n / 2.0)
             }
-            // lancer's noise, not POV-Ray's: same range and character, different features
-            // (see render::noise).
             Internal::Noise3d => crate::render::noise::noise(crate::math::DVec3::new(x, y, z), 2),
             Internal::NoiseGenerator => crate::render::noise::noise(
                 crate::math::DVec3::new(x, y, z),
                 (g(3) as i64).clamp(1, 3) as u8,
             ),
-            Internal::RidgedMf => ridged_mf(
+            Internal::RidgedMf => noisy::ridged_mf(
+                crate::math::DVec3::new(x, y, z),
+                [g(3), g(4), g(5), g(6), g(7)],
+                (g(8) as i64).clamp(1, 3) as u8,
+            ),
+            Internal::HeteroMf => noisy::hetero_mf(
+                crate::math::DVec3::new(x, y, z),
+                [g(3), g(4), g(5), g(6), g(7)],
+                (g(8) as i64).clamp(1, 3) as u8,
+            ),
+            Internal::Ridge => noisy::ridge(
                 crate::math::DVec3::new(x, y, z),
                 [g(3), g(4), g(5), g(6), g(7)],
                 (g(8) as i64).clamp(1, 3) as u8,
@@ -245,54 +260,6 @@ impl Internal {
             Internal::Unknown(_) => f64::NAN,
         }
     }
-}
-
-/// Musgrave's ridged multifractal ("Texturing and Modeling", ch. 16) with POV-Ray's noise
-/// made signed: each octave is (offset − |noise|)², the ones after the first weighted by
-/// the previous octave times `gain` (clamped to [0, 1]) and by lacunarity^(−i·H). Checked
-/// against povray's printed values (tests below). One difference is kept on purpose:
-/// povray computes the lacunarity^(−i·H) weights once, from the first call it makes in a
-/// run, and uses them for every later call whatever their H and lacunarity (measured: a
-/// call with H 0 first makes H do nothing in all later calls); lancer uses each call's own,
-/// which is what povray draws whenever a scene calls f_ridged_mf with one parameter set.
-fn ridged_mf(
-    p: crate::math::DVec3,
-    [h, lacunarity, octaves, offset, gain]: [f64; 5],
-    gen: u8,
-) -> f64 {
-    let signed = |q: crate::math::DVec3| 2.0 * crate::render::noise::noise(q, gen) - 1.0;
-    let mut signal = offset - signed(p).abs();
-    signal *= signal;
-    let mut result = signal;
-    let mut q = p;
-    let n = octaves.max(1.0) as u32;
-    OCTAVE_WEIGHTS.with_borrow_mut(|w| {
-        // Each octave's weight lacunarity^(-i·H), kept per thread for the last (H,
-        // lacunarity) asked: an isosurface asks the same ones at every point, and `powf`
-        // was a sixth of the benchmark scene's render.
-        let key = (h.to_bits(), lacunarity.to_bits());
-        if w.0 != key {
-            *w = (key, Vec::new());
-        }
-        while (w.1.len() as u32) < n {
-            let i = w.1.len();
-            w.1.push(lacunarity.powf(-(i as f64) * h));
-        }
-        for i in 1..n {
-            q *= lacunarity;
-            let weight = (signal * gain).clamp(0.0, 1.0);
-            signal = offset - signed(q).abs();
-            signal = signal * signal * weight;
-            result += signal * w.1[i as usize];
-        }
-    });
-    result
-}
-
-thread_local! {
-    /// f_ridged_mf's octave weights for one (H, lacunarity) pair, by their bits.
-    static OCTAVE_WEIGHTS: std::cell::RefCell<((u64, u64), Vec<f64>)> =
-        const { std::cell::RefCell::new(((0, 0), Vec::new())) };
 }
 
 fn atan2_or_zero(a: f64, b: f64) -> f64 {
@@ -356,6 +323,12 @@ mod tests {
             (Internal::Torus2, &[2.0, 1.2, 0.3], [-10.0, -2.644999999999999, -10.0, -2.716999999999999]),
             // povray's first f_ridged_mf call of its run (see ridged_mf), generator 1 and 2.
             (Internal::RidgedMf, &[0.07, 2.2, 7.0, 0.6, 0.9, 1.0], [0.048016074648238, 0.002640418425742, 0.238491689069120, 0.342913651060993]),
+            // Fractional octaves, T 2 and 1, generators 2 and 3.
+            (Internal::HeteroMf, &[0.5, 2.0, 3.7, 0.3, 2.0, 2.0], [0.163751919025990, 0.012995625247854, 0.331596875334881, 0.373987374055675]),
+            (Internal::HeteroMf, &[0.8, 2.2, 6.0, -0.2, 1.0, 3.0], [-0.210436405577135, -0.098259394224290, -0.490169840430962, 0.146317492945162]),
+            // A ridge below 0.5 (folds scaled) and a negative one, fractional octaves.
+            (Internal::Ridge, &[2.1, 3.5, 0.6, 0.3, 0.4, 2.0], [-0.326484689433890, -0.298163106449626, -0.129975892950166, -0.142530703793675]),
+            (Internal::Ridge, &[1.7, 5.0, 0.8, 0.6, -1.0, 1.0], [0.274838017242055, 0.035857079179415, 0.252099538318762, 0.236131660963319]),
         ];
         for (f, extra, want) in cases {
             check_printed(*f, extra, want);
