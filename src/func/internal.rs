@@ -40,6 +40,9 @@ pub enum Internal {
     Th,
     Torus,
     Torus2,
+    /// `f_hex_x`, `f_hex_y`: see [`super::internal_surfaces`].
+    HexX,
+    HexY,
     /// An internal number lancer does not implement.
     Unknown(u32),
 }
@@ -154,6 +157,8 @@ impl Internal {
             78 => Internal::NoiseGenerator,
             59 => Internal::RidgedMf,
             29 => Internal::HeteroMf,
+            27 => Internal::HexX,
+            28 => Internal::HexY,
             58 => Internal::Ridge,
             n if super::internal_polynomials::terms(n).is_some() => Internal::Polynomial(n),
             n => Internal::Unknown(n),
@@ -164,7 +169,11 @@ impl Internal {
     pub fn arity(self) -> Option<usize> {
         Some(match self {
             Internal::Ph | Internal::R | Internal::Th | Internal::Noise3d => 3,
-            Internal::Sphere | Internal::Paraboloid | Internal::NoiseGenerator => 4,
+            Internal::Sphere
+            | Internal::Paraboloid
+            | Internal::NoiseGenerator
+            | Internal::HexX
+            | Internal::HexY => 4,
             Internal::Polynomial(id) => 4 + super::internal_polynomials::terms(id)?.1,
             Internal::Torus | Internal::Superellipsoid => 5,
             Internal::Ellipsoid | Internal::Torus2 => 6,
@@ -252,6 +261,8 @@ impl Internal {
             Internal::Helix1 => surf::helix1(x, y, z, std::array::from_fn(|i| g(i + 3))),
             Internal::Helix2 => surf::helix2(x, y, z, std::array::from_fn(|i| g(i + 3))),
             Internal::Spiral => surf::spiral(x, y, z, std::array::from_fn(|i| g(i + 3))),
+            Internal::HexX => surf::hex_x(x, y),
+            Internal::HexY => surf::hex_y(x, y),
             Internal::Poly4 => surf::poly4(x, y, z, std::array::from_fn(|i| g(i + 3))),
             Internal::Polynomial(id) => match super::internal_polynomials::terms(id) {
                 Some((t, _)) => super::internal_polynomials::eval(t, a),
@@ -326,6 +337,8 @@ mod tests {
             // Fractional octaves, T 2 and 1, generators 2 and 3.
             (Internal::HeteroMf, &[0.5, 2.0, 3.7, 0.3, 2.0, 2.0], [0.163751919025990, 0.012995625247854, 0.331596875334881, 0.373987374055675]),
             (Internal::HeteroMf, &[0.8, 2.2, 6.0, -0.2, 1.0, 3.0], [-0.210436405577135, -0.098259394224290, -0.490169840430962, 0.146317492945162]),
+            (Internal::HexX, &[0.0], [0.5, 0.509807621135332, 0.666025403784439, 0.0]),
+            (Internal::HexY, &[0.0], [0.133974596215561, 0.283012701892219, 0.0, 0.0]),
             // A ridge below 0.5 (folds scaled) and a negative one, fractional octaves.
             (Internal::Ridge, &[2.1, 3.5, 0.6, 0.3, 0.4, 2.0], [-0.326484689433890, -0.298163106449626, -0.129975892950166, -0.142530703793675]),
             (Internal::Ridge, &[1.7, 5.0, 0.8, 0.6, -1.0, 1.0], [0.274838017242055, 0.035857079179415, 0.252099538318762, 0.236131660963319]),
