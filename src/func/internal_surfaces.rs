@@ -87,6 +87,47 @@ pub fn poly4(x: f64, y: f64, z: f64, c: [f64; 5]) -> f64 {
     x.hypot(z) - radius.max(-5.0)
 }
 
+/// The hexagonal lattice of `f_hex_x` and `f_hex_y`: centres √3 apart along x in rows 1.5
+/// apart along y, every other row shifted by √3/2 (measured: `f_hex_x` is 0.866 = √3/2 at
+/// (0, 1.5) and 0.232 at (1.5, 0)).
+const HEX_ROW: f64 = 1.5;
+
+/// `f_hex_x(x, y, z, unused)`: the hexagon norm max(|dx|, |dx/2 ± dy·√3/2|) of the offset
+/// to the nearest lattice centre: hexagonal prisms along z whose flat sides face ±x, touching
+/// at 0.866. Checked at random points against povray (exact to ~1e-15).
+pub fn hex_x(x: f64, y: f64) -> f64 {
+    let s3 = 3f64.sqrt();
+    let norm = |dx: f64, dy: f64| {
+        let (a, b) = (dx / 2.0, dy * s3 / 2.0);
+        dx.abs().max((a + b).abs()).max((a - b).abs())
+    };
+    let j0 = (y / HEX_ROW).floor();
+    let mut best = f64::INFINITY;
+    for j in [j0 - 1.0, j0, j0 + 1.0, j0 + 2.0] {
+        let shift = if j.rem_euclid(2.0) == 1.0 {
+            s3 / 2.0
+        } else {
+            0.0
+        };
+        let i0 = ((x - shift) / s3).round();
+        for i in [i0 - 1.0, i0, i0 + 1.0] {
+            best = best.min(norm(x - (s3 * i + shift), y - HEX_ROW * j));
+        }
+    }
+    best
+}
+
+/// `f_hex_y(x, y, z, unused)`: the distance to the nearest line of the triangular grid
+/// through the same lattice's centres (lines along x and at ±60° to it, 1.5 apart): thin
+/// walls between the cells, "boxes rotated 60 degrees" in the manual's words.
+pub fn hex_y(x: f64, y: f64) -> f64 {
+    let s3 = 3f64.sqrt();
+    let off = |t: f64| (t - HEX_ROW * (t / HEX_ROW).round()).abs();
+    off(y)
+        .min(off(y / 2.0 + x * s3 / 2.0))
+        .min(off(y / 2.0 - x * s3 / 2.0))
+}
+
 #[cfg(test)]
 // The expected values are kept exactly as POV-Ray printed them.
 #[allow(clippy::excessive_precision)]
@@ -128,45 +169,4 @@ mod tests {
         let h = [0.0, 0.3, 0.0, 1.0, 1.0, 0.2, 1.0, 1.0, 1.0, 0.0];
         assert!((Internal::Helix1.eval(&h) - 0.8).abs() < 1e-15);
     }
-}
-
-/// The hexagonal lattice of `f_hex_x` and `f_hex_y`: centres √3 apart along x in rows 1.5
-/// apart along y, every other row shifted by √3/2 (measured: `f_hex_x` is 0.866 = √3/2 at
-/// (0, 1.5) and 0.232 at (1.5, 0)).
-const HEX_ROW: f64 = 1.5;
-
-/// `f_hex_x(x, y, z, unused)`: the hexagon norm max(|dx|, |dx/2 ± dy·√3/2|) of the offset
-/// to the nearest lattice centre: hexagonal prisms along z whose flat sides face ±x, touching
-/// at 0.866. Checked at random points against povray (exact to ~1e-15).
-pub fn hex_x(x: f64, y: f64) -> f64 {
-    let s3 = 3f64.sqrt();
-    let norm = |dx: f64, dy: f64| {
-        let (a, b) = (dx / 2.0, dy * s3 / 2.0);
-        dx.abs().max((a + b).abs()).max((a - b).abs())
-    };
-    let j0 = (y / HEX_ROW).floor();
-    let mut best = f64::INFINITY;
-    for j in [j0 - 1.0, j0, j0 + 1.0, j0 + 2.0] {
-        let shift = if j.rem_euclid(2.0) == 1.0 {
-            s3 / 2.0
-        } else {
-            0.0
-        };
-        let i0 = ((x - shift) / s3).round();
-        for i in [i0 - 1.0, i0, i0 + 1.0] {
-            best = best.min(norm(x - (s3 * i + shift), y - HEX_ROW * j));
-        }
-    }
-    best
-}
-
-/// `f_hex_y(x, y, z, unused)`: the distance to the nearest line of the triangular grid
-/// through the same lattice's centres (lines along x and at ±60° to it, 1.5 apart): thin
-/// walls between the cells, "boxes rotated 60 degrees" in the manual's words.
-pub fn hex_y(x: f64, y: f64) -> f64 {
-    let s3 = 3f64.sqrt();
-    let off = |t: f64| (t - HEX_ROW * (t / HEX_ROW).round()).abs();
-    off(y)
-        .min(off(y / 2.0 + x * s3 / 2.0))
-        .min(off(y / 2.0 - x * s3 / 2.0))
 }
