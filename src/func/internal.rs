@@ -43,6 +43,9 @@ pub enum Internal {
     /// `f_hex_x`, `f_hex_y`: see [`super::internal_surfaces`].
     HexX,
     HexY,
+    /// `f_cross_ellipsoids`, `f_isect_ellipsoids`.
+    CrossEllipsoids,
+    IsectEllipsoids,
     /// An internal number lancer does not implement.
     Unknown(u32),
 }
@@ -158,6 +161,8 @@ impl Internal {
             59 => Internal::RidgedMf,
             29 => Internal::HeteroMf,
             27 => Internal::HexX,
+            10 => Internal::CrossEllipsoids,
+            32 => Internal::IsectEllipsoids,
             28 => Internal::HexY,
             58 => Internal::Ridge,
             n if super::internal_polynomials::terms(n).is_some() => Internal::Polynomial(n),
@@ -178,7 +183,7 @@ impl Internal {
             Internal::Torus | Internal::Superellipsoid => 5,
             Internal::Ellipsoid | Internal::Torus2 => 6,
             Internal::Poly4 => 8,
-            Internal::RoundedBox => 7,
+            Internal::RoundedBox | Internal::CrossEllipsoids | Internal::IsectEllipsoids => 7,
             Internal::RidgedMf | Internal::HeteroMf | Internal::Ridge | Internal::Spiral => 9,
             Internal::Helix1 | Internal::Helix2 => 10,
             Internal::Unknown(_) => return None,
@@ -263,6 +268,12 @@ impl Internal {
             Internal::Spiral => surf::spiral(x, y, z, std::array::from_fn(|i| g(i + 3))),
             Internal::HexX => surf::hex_x(x, y),
             Internal::HexY => surf::hex_y(x, y),
+            Internal::CrossEllipsoids => {
+                surf::crossed_ellipsoids(x, y, z, [g(3), g(4), g(5), g(6)], true)
+            }
+            Internal::IsectEllipsoids => {
+                surf::crossed_ellipsoids(x, y, z, [g(3), g(4), g(5), g(6)], false)
+            }
             Internal::Poly4 => surf::poly4(x, y, z, std::array::from_fn(|i| g(i + 3))),
             Internal::Polynomial(id) => match super::internal_polynomials::terms(id) {
                 Some((t, _)) => super::internal_polynomials::eval(t, a),
@@ -339,6 +350,8 @@ mod tests {
             (Internal::HeteroMf, &[0.8, 2.2, 6.0, -0.2, 1.0, 3.0], [-0.210436405577135, -0.098259394224290, -0.490169840430962, 0.146317492945162]),
             (Internal::HexX, &[0.0], [0.5, 0.509807621135332, 0.666025403784439, 0.0]),
             (Internal::HexY, &[0.0], [0.133974596215561, 0.283012701892219, 0.0, 0.0]),
+            (Internal::CrossEllipsoids, &[2.0, 0.7, 1.5, 0.3], [0.299997488260186, -0.749658746601916, 0.152146726447691, -1.041066386250536]),
+            (Internal::IsectEllipsoids, &[0.5, -0.3, 1.2, -0.2], [-11.585283003630231, -1.478032207077566, -2.031841155159748, -1.429148381468746]),
             // A ridge below 0.5 (folds scaled) and a negative one, fractional octaves.
             (Internal::Ridge, &[2.1, 3.5, 0.6, 0.3, 0.4, 2.0], [-0.326484689433890, -0.298163106449626, -0.129975892950166, -0.142530703793675]),
             (Internal::Ridge, &[1.7, 5.0, 0.8, 0.6, -1.0, 1.0], [0.274838017242055, 0.035857079179415, 0.252099538318762, 0.236131660963319]),
