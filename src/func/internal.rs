@@ -46,6 +46,7 @@ pub enum Internal {
     /// `f_cross_ellipsoids`, `f_isect_ellipsoids`.
     CrossEllipsoids,
     IsectEllipsoids,
+    Quantum,
     /// An internal number lancer does not implement.
     Unknown(u32),
 }
@@ -162,6 +163,7 @@ impl Internal {
             29 => Internal::HeteroMf,
             27 => Internal::HexX,
             10 => Internal::CrossEllipsoids,
+            53 => Internal::Quantum,
             32 => Internal::IsectEllipsoids,
             28 => Internal::HexY,
             58 => Internal::Ridge,
@@ -178,7 +180,8 @@ impl Internal {
             | Internal::Paraboloid
             | Internal::NoiseGenerator
             | Internal::HexX
-            | Internal::HexY => 4,
+            | Internal::HexY
+            | Internal::Quantum => 4,
             Internal::Polynomial(id) => 4 + super::internal_polynomials::terms(id)?.1,
             Internal::Torus | Internal::Superellipsoid => 5,
             Internal::Ellipsoid | Internal::Torus2 => 6,
@@ -268,6 +271,7 @@ impl Internal {
             Internal::Spiral => surf::spiral(x, y, z, std::array::from_fn(|i| g(i + 3))),
             Internal::HexX => surf::hex_x(x, y),
             Internal::HexY => surf::hex_y(x, y),
+            Internal::Quantum => surf::quantum(x, y, z),
             Internal::CrossEllipsoids => {
                 surf::crossed_ellipsoids(x, y, z, [g(3), g(4), g(5), g(6)], true)
             }
@@ -352,6 +356,7 @@ mod tests {
             (Internal::HexY, &[0.0], [0.133974596215561, 0.283012701892219, 0.0, 0.0]),
             (Internal::CrossEllipsoids, &[2.0, 0.7, 1.5, 0.3], [0.299997488260186, -0.749658746601916, 0.152146726447691, -1.041066386250536]),
             (Internal::IsectEllipsoids, &[0.5, -0.3, 1.2, -0.2], [-11.585283003630231, -1.478032207077566, -2.031841155159748, -1.429148381468746]),
+            (Internal::Quantum, &[0.0], [1.156394782809103, 1.191489614654903, -1.530336625039595, 1.175970970720714]),
             // A ridge below 0.5 (folds scaled) and a negative one, fractional octaves.
             (Internal::Ridge, &[2.1, 3.5, 0.6, 0.3, 0.4, 2.0], [-0.326484689433890, -0.298163106449626, -0.129975892950166, -0.142530703793675]),
             (Internal::Ridge, &[1.7, 5.0, 0.8, 0.6, -1.0, 1.0], [0.274838017242055, 0.035857079179415, 0.252099538318762, 0.236131660963319]),
