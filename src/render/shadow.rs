@@ -251,10 +251,29 @@ impl<'a> Tracer<'a> {
                 tried = Some(b);
             }
         }
-        let mut att = DVec3::ONE;
-        let mut blocker = None;
         // With photons, light this light sends through refracting targets arrives as photons.
         let photons_only = self.photons.is_some() && self.scene.lights[slot].photons.refraction;
+        // The member of a transparent union that blocked the last ray: asked as the union's
+        // crossings would be (below), it answers only when it blocks, which the whole
+        // traversal would also find (the union is a top-level object whose box holds the
+        // member's, and a blocking crossing makes the answer exactly zero).
+        if ctx.member_blockers.len() <= slot {
+            ctx.member_blockers.resize(slot + 1, None);
+        }
+        if let Some((top, m)) = ctx.member_blockers[slot] {
+            let inv = ray.dir.recip();
+            let start = ctx.surface.len();
+            if top.bounds.hit(ray.origin, inv, dist).is_some()
+                && m.bounds.hit(ray.origin, inv, dist).is_some()
+                && self.member_blocks(m, &ray, l, dist, photons_only, ctx)
+            {
+                return DVec3::ZERO;
+            }
+            ctx.surface.truncate(start);
+        }
+        let mut att = DVec3::ONE;
+        let mut blocker = None;
+        let mut members = std::mem::take(&mut ctx.shadow_members);
         self.scene.for_each_candidate(&ray, dist, |obj| {
             // The cached blocker, opaque, was just found not to block.
             if obj.no_shadow || tried.is_some_and(|t| std::ptr::eq(t, obj)) {
@@ -269,40 +288,42 @@ impl<'a> Tracer<'a> {
                 return false;
             }
             let start = ctx.surface.len();
-            obj.all_hits(&ray, dist, ctx);
-            'hits: for h in &ctx.surface[start..] {
-                // Through each layer of a layered texture in turn.
-                if h.obj.no_shadow {
-                    // A CSG member's own no_shadow (advanced/infinitybox's walls).
-                    continue;
-                }
-                let hp = ray.at(h.t);
-                // A shadow ray leaving through a wall meets its inside (measured: an open
-                // box's interior_texture shadows its own far wall).
-                let inside =
-                    h.obj.interior_texture.is_some() && h.obj.normal(hp, h).dot(ray.dir) > 0.0;
-                let top = h.obj.texture_facing(h, inside);
-                let uv = if top.uses_uv() {
-                    h.obj.uv_point(hp, h)
-                } else {
-                    None
-                };
-                if photons_only && super::photons::refracts_photons(h.obj) {
-                    att = DVec3::ZERO;
-                    break 'hits;
-                }
-                for layer in top.layers() {
-                    let c = texture_map::color_at(layer, hp, uv, false);
-                    if c.is_opaque() {
-                        att = DVec3::ZERO;
-                        break 'hits;
+            members.clear();
+            if obj.union_members(&ray, dist, ctx, &mut members) {
+                // A union's crossings are its members' in member order. Any crossing that
+                // blocks makes the answer zero wherever it stands in that list, so the opaque
+                // members (most of a scene wrapped in a clear container, as advanced/abyss's
+                // media sphere) are asked first, each alone, and the first that blocks ends
+                // the ray; only when none does is the list gathered in order for the
+                // product below. A member without crossings is not asked twice.
+                let mut k = 0;
+                for i in 0..members.len() {
+                    let m = members[i];
+                    if !m.transparent {
+                        if self.member_blocks(m, &ray, l, dist, photons_only, ctx) {
+                            ctx.member_blockers[slot] = Some((obj, m));
+                            att = DVec3::ZERO;
+                            return true;
+                        }
+                        if ctx.surface.len() == start {
+                            continue;
+                        }
+                        ctx.surface.truncate(start);
                     }
-                    att *= c.transmitted();
+                    members[k] = m;
+                    k += 1;
                 }
-                if let Some(int) = h.obj.interior.as_deref().filter(|i| i.caustics > 0.0) {
-                    let n = h.obj.normal(hp, h);
-                    let n = if n.dot(l) > 0.0 { -n } else { n };
-                    att *= int.caustic_gain(caustic_normal(top, hp, uv, n).dot(l));
+                for &m in &members[..k] {
+                    m.all_hits(&ray, dist, ctx);
+                }
+            } else {
+                obj.all_hits(&ray, dist, ctx);
+            }
+            for i in start..ctx.surface.len() {
+                let h = ctx.surface[i];
+                if self.crossing_blocks(&h, &ray, l, photons_only, Some(&mut att)) {
+                    att = DVec3::ZERO;
+                    break;
                 }
             }
             // Fading interiors and media dim the light over each stretch the ray spends
@@ -330,10 +351,83 @@ impl<'a> Tracer<'a> {
             ctx.surface.truncate(start);
             att == DVec3::ZERO
         });
+        ctx.shadow_members = members;
         if blocker.is_some() {
             ctx.blockers[slot] = blocker;
         }
         att
+    }
+
+    /// Whether a crossing of `m` (a member of a transparent union) within `dist` blocks the
+    /// shadow ray, as `crossing_blocks` judges each; leaves its crossings in `ctx.surface`
+    /// when none blocks, and none when one does.
+    fn member_blocks(
+        &self,
+        m: &'a crate::scene::object::Object,
+        ray: &Ray,
+        l: DVec3,
+        dist: f64,
+        photons_only: bool,
+        ctx: &mut TraceCtx<'a>,
+    ) -> bool {
+        let start = ctx.surface.len();
+        m.all_hits(ray, dist, ctx);
+        let blocks = ctx.surface[start..]
+            .iter()
+            .any(|h| self.crossing_blocks(h, ray, l, photons_only, None));
+        if blocks {
+            ctx.surface.truncate(start);
+        }
+        blocks
+    }
+
+    /// Whether the shadow ray's crossing `h` stops the light (an opaque layer of the texture
+    /// it meets, or a photon target); otherwise `att`, when given, is filtered by each
+    /// layer's transmitted colour and fake caustics. Which crossings block does not depend
+    /// on `att` or on the other crossings.
+    fn crossing_blocks(
+        &self,
+        h: &crate::scene::object::SurfaceHit<'a>,
+        ray: &Ray,
+        l: DVec3,
+        photons_only: bool,
+        mut att: Option<&mut DVec3>,
+    ) -> bool {
+        // Through each layer of a layered texture in turn.
+        if h.obj.no_shadow {
+            // A CSG member's own no_shadow (advanced/infinitybox's walls).
+            return false;
+        }
+        let hp = ray.at(h.t);
+        // A shadow ray leaving through a wall meets its inside (measured: an open
+        // box's interior_texture shadows its own far wall).
+        let inside = h.obj.interior_texture.is_some() && h.obj.normal(hp, h).dot(ray.dir) > 0.0;
+        let top = h.obj.texture_facing(h, inside);
+        let uv = if top.uses_uv() {
+            h.obj.uv_point(hp, h)
+        } else {
+            None
+        };
+        if photons_only && super::photons::refracts_photons(h.obj) {
+            return true;
+        }
+        for layer in top.layers() {
+            let c = texture_map::color_at(layer, hp, uv, false);
+            if c.is_opaque() {
+                return true;
+            }
+            if let Some(a) = att.as_deref_mut() {
+                *a *= c.transmitted();
+            }
+        }
+        if let Some(a) = att {
+            if let Some(int) = h.obj.interior.as_deref().filter(|i| i.caustics > 0.0) {
+                let n = h.obj.normal(hp, h);
+                let n = if n.dot(l) > 0.0 { -n } else { n };
+                *a *= int.caustic_gain(caustic_normal(top, hp, uv, n).dot(l));
+            }
+        }
+        false
     }
 }
 

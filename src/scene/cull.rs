@@ -72,8 +72,21 @@ pub fn cull_box(op: CsgOp, children: &[Object], bounds: &Aabb) -> Option<Aabb> {
             }
             b
         }
-        // A difference lies inside its first member.
-        CsgOp::Difference => member_box(&children[0])?,
+        // A difference lies inside its first member, and outside every subtracted member that
+        // is a half-space (a plane): advanced/abyss's hull is a blob less three planes, an
+        // octant of the blob's box.
+        CsgOp::Difference => {
+            let first = member_box(&children[0])?;
+            let mut planes = Vec::new();
+            half_spaces(&children[0], &mut planes);
+            let own = planes.len();
+            planes.extend(children[1..].iter().filter_map(complement));
+            if planes.len() > own {
+                polyhedron_box(&planes).map_or(first, |b| b.intersection(&first))
+            } else {
+                first
+            }
+        }
         // A union of members that are each finite (some only by their own cull: chess2's
         // pieces, a hyperboloid between planes beside spheres) lies in their boxes' union.
         CsgOp::Union | CsgOp::Merge => {
@@ -189,6 +202,25 @@ fn half_spaces(o: &Object, out: &mut Vec<(DVec3, f64)>) {
     }
 }
 
+/// The half-space n·p <= d holding what a subtracted member leaves, when the member's solid is
+/// itself a half-space (a plane, not clipped): a plane's inside is n·p < d (`geom::plane`),
+/// so what lies outside it is n·p >= d, and the padded box holds that closed side.
+fn complement(o: &Object) -> Option<(DVec3, f64)> {
+    let ObjKind::Shape(s, _) = &o.kind else {
+        return None;
+    };
+    if !o.clip.is_empty() || o.bounds.is_finite() {
+        return None;
+    }
+    let h = s.half_space()?;
+    let (n, d) = if o.inverse { (-h.0, -h.1) } else { h };
+    let (n, d) = match &o.transform {
+        Some(t) => (t.normal(n), d - n.dot(t.inv_point(DVec3::ZERO))),
+        None => (n, d),
+    };
+    (n.is_finite() && d.is_finite() && n != DVec3::ZERO).then_some((-n, -d))
+}
+
 /// The bounding box of {p : n·p <= d for every half-space}, padded; `None` when it cannot be
 /// found (too many planes, nothing finite, no vertex).
 fn polyhedron_box(planes: &[(DVec3, f64)]) -> Option<Aabb> {
@@ -293,6 +325,87 @@ mod tests {
         assert!(b.max.y == f64::INFINITY && b.min.z == f64::NEG_INFINITY);
         // Empty: x <= -1 and x >= 1.
         assert!(polyhedron_box(&[(DVec3::X, -1.0), (-DVec3::X, -1.0)]).is_none());
+    }
+
+    /// A difference's box leaves out what its subtracted planes take away, and answers every
+    /// query as the node without a box does, bit for bit: blobs and spheres less planes
+    /// (moved, rotated, scaled, inverted, one clipped, which does not count), with rays and
+    /// points on the planes themselves.
+    #[test]
+    fn difference_less_planes() {
+        use crate::geom::test_rng::Lcg;
+        use crate::math::Ray;
+        use crate::scene::object::Scratch;
+        use crate::sdl::{ParseOptions, Parser};
+        const SCENE: &str = r#"
+            #declare B = blob { threshold 0.6 sphere { 0, 1, 1 } sphere { 0, 1, 1 scale <0.3, 0.45, 0.8> } }
+            difference { object { B } plane { y, 0 } plane { z, 0 inverse } plane { x, 0 inverse } scale <2, 1, 3> }
+            difference { sphere { 0, 2 } plane { x, 0.5 rotate z * 30 } plane { y, -1 } translate x }
+            difference { object { B } plane { y, 0 clipped_by { sphere { 0, 0.5 } } } }
+            difference { box { -1, 1 } plane { x, 0 } plane { -x, -0.5 } rotate <10, 20, 30> }
+        "#;
+        let scene = || {
+            let mut p = Parser::new(ParseOptions::default());
+            p.parse_str("t.pov", SCENE)
+                .map_err(|e| e.message.clone())
+                .unwrap();
+            crate::scene::build::build(&p.scene, 64, 48).scene
+        };
+        let culled = scene();
+        let mut bare = scene();
+        for o in &mut bare.objects {
+            if let ObjKind::Csg { cull, .. } = &mut o.kind {
+                *cull = None;
+            }
+        }
+        let boxes: Vec<Option<Aabb>> = culled
+            .objects
+            .iter()
+            .map(|o| match &o.kind {
+                ObjKind::Csg { cull: Some(c), .. } => c.aabb,
+                _ => None,
+            })
+            .collect();
+        // The octant of the blob's box; the sphere's box above y = -1.
+        let b = boxes[0].unwrap();
+        assert!(b.max.x < 1e-3 && b.min.y > -1e-3 && b.max.z < 1e-3, "{b:?}");
+        let b = boxes[1].unwrap();
+        assert!(b.min.y > -1.0 - 1e-3, "{b:?}");
+        // The clipped plane leaves the blob's own box.
+        assert!(boxes[2].is_none_or(|b| b.min.y < -0.4), "{:?}", boxes[2]);
+        let mut rng = Lcg(3);
+        let (mut sa, mut sb) = (Scratch::default(), Scratch::default());
+        for (a, b) in culled.objects.iter().zip(&bare.objects) {
+            let mut hits = 0;
+            for k in 0..4000 {
+                // Every third ray starts on a plane of the scene and runs in it or across it.
+                let ray = if k % 3 == 0 {
+                    let mut q = rng.vec(3.0);
+                    q[k % 2] = 0.0;
+                    Ray::new(q, [DVec3::X, DVec3::Y, DVec3::Z, rng.vec(1.0)][k % 4])
+                } else {
+                    Ray::new(rng.vec(8.0), rng.vec(2.0))
+                };
+                let tmax = if rng.next() < 0.3 { 3.0 } else { f64::INFINITY };
+                let (ha, hb) = (
+                    a.first_hit(&ray, tmax, &mut sa),
+                    b.first_hit(&ray, tmax, &mut sb),
+                );
+                assert_eq!(ha.map(|h| h.t.to_bits()), hb.map(|h| h.t.to_bits()));
+                hits += ha.is_some() as usize;
+                a.all_hits(&ray, tmax, &mut sa);
+                b.all_hits(&ray, tmax, &mut sb);
+                let la: Vec<_> = sa.surface.iter().map(|h| (h.t.to_bits(), h.flip)).collect();
+                let lb: Vec<_> = sb.surface.iter().map(|h| (h.t.to_bits(), h.flip)).collect();
+                assert_eq!(la, lb);
+                sa.surface.clear();
+                sb.surface.clear();
+                let mut p = rng.vec(4.0);
+                p[k % 3] = 0.0;
+                assert_eq!(a.inside(p), b.inside(p));
+            }
+            assert!(hits > 30, "{hits}");
+        }
     }
 
     #[test]

@@ -113,6 +113,11 @@ pub struct Scratch<'a> {
     /// Per light, the opaque object that last blocked a shadow ray to it (POV-Ray's shadow
     /// cache): asked first, since neighbouring points are mostly shadowed by the same object.
     pub blockers: Vec<Option<&'a Object>>,
+    /// Per light, the member of a transparent union (and that union, a top-level object)
+    /// whose crossing last blocked a shadow ray to it, asked first likewise.
+    pub member_blockers: Vec<Option<(&'a Object, &'a Object)>>,
+    /// The members of a transparent union a shadow ray may cross (render::shadow).
+    pub shadow_members: Vec<&'a Object>,
     /// Radiosity samples gathered while tracing the current camera sample, not yet in the
     /// shared cache (which is frozen during a pass, for determinism).
     pub rad_local: Vec<crate::render::radiosity::Sample>,
@@ -418,6 +423,46 @@ impl Object {
             }
             s.surface.truncate(k);
         }
+    }
+
+    /// For a union without `clipped_by` or `inverse`, true, with the members whose crossings
+    /// `all_hits` lists appended to `out` in its order: `all_hits` of such a union is exactly
+    /// their `all_hits`, one after another (a union keeps every crossing and flips none), so
+    /// a caller may ask them one by one. False, with nothing appended, for other objects.
+    pub fn union_members<'a>(
+        &'a self,
+        ray: &Ray,
+        tmax: f64,
+        s: &mut Scratch<'a>,
+        out: &mut Vec<&'a Object>,
+    ) -> bool {
+        let ObjKind::Csg {
+            op: CsgOp::Union,
+            children,
+            index,
+            cull,
+        } = &self.kind
+        else {
+            return false;
+        };
+        if self.inverse || !self.clip.is_empty() {
+            return false;
+        }
+        // The same tests, in the same order, as `all_hits_unclipped`.
+        let inv_dir = ray.dir.recip();
+        if cull
+            .as_ref()
+            .and_then(|c| c.aabb.as_ref())
+            .is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none())
+        {
+            return true;
+        }
+        each_member(children, index.as_deref(), ray, tmax, s, |c, _, _| {
+            if c.bounds.hit(ray.origin, inv_dir, tmax).is_some() {
+                out.push(c);
+            }
+        });
+        true
     }
 
     fn all_hits_unclipped<'a>(&'a self, ray: &Ray, tmax: f64, s: &mut Scratch<'a>) {
