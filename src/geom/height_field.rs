@@ -103,7 +103,9 @@ struct GridRay<'a> {
     /// Only crossings before this; shrinks as crossings are found when `first`.
     tmax: f64,
     first: bool,
+    /// The crossings found, from `out[from]` on (what was there before is not this shape's).
     out: &'a mut Vec<Hit>,
+    from: usize,
 }
 
 /// The min/max pyramid of a grid of at least 2×2 vertices.
@@ -375,8 +377,7 @@ impl HeightField {
             };
             // A crossing on a shared edge is found from both sides: keep one, the second
             // triangle or the cell further along x or z, as povray's trace answers there.
-            if let Some(h) = r
-                .out
+            if let Some(h) = r.out[r.from..]
                 .iter_mut()
                 .find(|h| (h.t - t).abs() <= 1e-12 * t.max(1.0))
             {
@@ -408,6 +409,7 @@ impl HeightField {
             inv: d.recip(),
             tmax,
             first,
+            from: out.len(),
             out,
         };
         let top = self.levels.len() - 1;
@@ -503,11 +505,7 @@ impl Shape for HeightField {
     }
 
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
-        let start = out.len();
-        let mut mine = Vec::new();
-        self.trace(ray, f64::INFINITY, false, &mut mine);
-        out.truncate(start);
-        out.extend(mine);
+        self.trace(ray, f64::INFINITY, false, out);
     }
 
     fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
