@@ -70,8 +70,21 @@ impl HeightData {
 struct Level {
     nx: usize,
     nz: usize,
-    min: Vec<u16>,
-    max: Vec<u16>,
+    /// The block's smallest and largest height in object units, side by side for the walk's
+    /// one load per block: a 16-bit value over 65536 is an f32 exactly, so these are the same
+    /// f64 values as `value as f64 * SCALE`.
+    range: Vec<[f32; 2]>,
+}
+
+impl Level {
+    fn new(nx: usize, nz: usize, min: &[u16], max: &[u16]) -> Level {
+        let range = min
+            .iter()
+            .zip(max)
+            .map(|(&a, &b)| [(a as f64 * SCALE) as f32, (b as f64 * SCALE) as f32])
+            .collect();
+        Level { nx, nz, range }
+    }
 }
 
 #[derive(Debug)]
@@ -90,7 +103,9 @@ struct GridRay<'a> {
     /// Only crossings before this; shrinks as crossings are found when `first`.
     tmax: f64,
     first: bool,
+    /// The crossings found, from `out[from]` on (what was there before is not this shape's).
     out: &'a mut Vec<Hit>,
+    from: usize,
 }
 
 /// The min/max pyramid of a grid of at least 2×2 vertices.
@@ -111,25 +126,21 @@ fn pyramid(data: &HeightData) -> std::sync::Arc<[Level]> {
             max[j * nx + i] = *c.iter().max().unwrap();
         }
     }
-    let mut levels = vec![Level { nx, nz, min, max }];
-    while levels.last().is_some_and(|l| l.nx > 1 || l.nz > 1) {
-        let l = levels.last().unwrap();
-        let (px, pz) = (l.nx.div_ceil(2), l.nz.div_ceil(2));
+    let mut levels = vec![Level::new(nx, nz, &min, &max)];
+    let (mut lmin, mut lmax, mut lnx, mut lnz) = (min, max, nx, nz);
+    while lnx > 1 || lnz > 1 {
+        let (px, pz) = (lnx.div_ceil(2), lnz.div_ceil(2));
         let mut min = vec![u16::MAX; px * pz];
         let mut max = vec![0u16; px * pz];
-        for j in 0..l.nz {
-            for i in 0..l.nx {
+        for j in 0..lnz {
+            for i in 0..lnx {
                 let k = (j / 2) * px + i / 2;
-                min[k] = min[k].min(l.min[j * l.nx + i]);
-                max[k] = max[k].max(l.max[j * l.nx + i]);
+                min[k] = min[k].min(lmin[j * lnx + i]);
+                max[k] = max[k].max(lmax[j * lnx + i]);
             }
         }
-        levels.push(Level {
-            nx: px,
-            nz: pz,
-            min,
-            max,
-        });
+        levels.push(Level::new(px, pz, &min, &max));
+        (lmin, lmax, lnx, lnz) = (min, max, px, pz);
     }
     levels.into()
 }
@@ -143,7 +154,7 @@ impl HeightField {
         } else {
             std::sync::Arc::from([])
         };
-        let top = levels.last().map_or(0.0, |l| l.max[0] as f64 * SCALE);
+        let top = levels.last().map_or(0.0, |l| l.range[0][1] as f64);
         let bounds = if ok && top >= data.water_level {
             Aabb::new(
                 DVec3::new(0.0, -SOLID_DEPTH, 0.0),
@@ -202,26 +213,32 @@ impl HeightField {
     /// Whether the ray meets block (bi, bj) of `level` within `r.tmax`, its heights included,
     /// given the block's `slab_xz`. As `r.tmax` only shrinks, a block that fails here fails
     /// for the rest of the walk.
+    ///
+    /// `PLAIN` (see `visit`) takes `min` and `max` as single comparisons.
     #[inline(always)]
-    fn reaches(&self, r: &GridRay, level: usize, bi: usize, bj: usize, xz: (f64, f64)) -> bool {
-        let l = &self.levels[level];
-        let k = bj * l.nx + bi;
-        let ymax = l.max[k] as f64 * SCALE;
-        if ymax < self.data.water_level {
+    fn reaches<const PLAIN: bool>(
+        &self,
+        r: &GridRay,
+        l: &Level,
+        bi: usize,
+        bj: usize,
+        xz: (f64, f64),
+    ) -> bool {
+        let [ylo, yhi] = l.range[bj * l.nx + bi].map(f64::from);
+        if yhi < self.data.water_level {
             return false;
         }
-        let (ylo, yhi) = (l.min[k] as f64 * SCALE, ymax);
-        let (mut t0, mut t1) = (xz.0, r.tmax.min(xz.1));
+        let (mut t0, mut t1) = (xz.0, fmin::<PLAIN>(r.tmax, xz.1));
         if r.d.y == 0.0 {
             if r.o.y < ylo || r.o.y > yhi {
                 return false;
             }
         } else {
             let (u, v) = ((ylo - r.o.y) * r.inv.y, (yhi - r.o.y) * r.inv.y);
-            t0 = t0.max(u.min(v));
-            t1 = t1.min(u.max(v));
+            t0 = fmax::<PLAIN>(t0, fmin::<PLAIN>(u, v));
+            t1 = fmin::<PLAIN>(t1, fmax::<PLAIN>(u, v));
         }
-        slack_ok(t0, t1)
+        slack_ok::<PLAIN>(t0, t1)
     }
 
     /// Visits the blocks the ray crosses, nearest first; `tmax` shrinks as hits are found
@@ -230,7 +247,16 @@ impl HeightField {
     ///
     /// The slab test is split in its x-and-z part and its y part, which are combined with
     /// `min` and `max` (exact, in any order): the same answers as `slab` over the block's box.
-    fn visit(&self, r: &mut GridRay, level: usize, bi: usize, bj: usize) {
+    ///
+    /// With `PLAIN`, `min` and `max` are single comparisons instead of `f64::min` and
+    /// `f64::max`, whose NaN handling was a quarter of the walk. `trace` asks for it only
+    /// when no NaN can arise: origin, direction and `tmax` are not NaN and every `1 / d` the
+    /// walk multiplies by is finite, so each distance is a finite difference times a finite
+    /// number (infinite at worst, never NaN). Without NaN the two agree except, perhaps, on
+    /// the sign of a zero, which the walk only compares (`<`, `<=`, and `abs`), except in
+    /// the sort key of the children (their entry along x and z, compared with `total_cmp`):
+    /// that key keeps `f64::max` and `f64::min`.
+    fn visit<const PLAIN: bool>(&self, r: &mut GridRay, level: usize, bi: usize, bj: usize) {
         if level == 0 {
             self.cell_hits(r, bi, bj);
             return;
@@ -247,8 +273,8 @@ impl HeightField {
         let axis = |b: usize, o: f64, d: f64, inv: f64, c: f64| {
             let f = [
                 (b * 2) as f64 * s,
-                ((b * 2 + 1) as f64 * s).min(c),
-                ((b * 2 + 2) as f64 * s).min(c),
+                fmin::<PLAIN>((b * 2 + 1) as f64 * s, c),
+                fmin::<PLAIN>((b * 2 + 2) as f64 * s, c),
             ];
             // Per child: entry and exit along the axis, or None when the ray runs along
             // the axis outside the child.
@@ -257,7 +283,8 @@ impl HeightField {
                     (o >= f[k] && o <= f[k + 1]).then_some((f64::NEG_INFINITY, f64::INFINITY))
                 } else {
                     let (u, v) = ((f[k] - o) * inv, (f[k + 1] - o) * inv);
-                    Some((u.min(v), u.max(v)))
+                    // The entry feeds the sort key: `f64::min` (see above).
+                    Some((u.min(v), fmax::<PLAIN>(u, v)))
                 }
             };
             [one(0), one(1)]
@@ -270,13 +297,16 @@ impl HeightField {
                 if let (Some(x), Some(z)) = (xs[di], zs[dj]) {
                     // As `slab_xz`: an axis the ray runs along adds nothing (max with -inf
                     // and min with +inf change no value).
-                    let xz = (0.0f64.max(x.0).max(z.0), f64::INFINITY.min(x.1).min(z.1));
+                    let xz = (
+                        0.0f64.max(x.0).max(z.0),
+                        fmin::<PLAIN>(fmin::<PLAIN>(f64::INFINITY, x.1), z.1),
+                    );
                     // A child the ray does not reach now is left out of the sort, which
                     // changes nothing: it would not be reached with the same or a smaller
                     // `tmax` on its turn, the others keep their order, and the loop below
                     // stops at the first child starting beyond `tmax` no later. A child
                     // kept is asked again only if `tmax` shrank before its turn.
-                    if self.reaches(r, level - 1, ci, cj, xz) {
+                    if self.reaches::<PLAIN>(r, below, ci, cj, xz) {
                         kids[n] = (xz, ci, cj);
                         n += 1;
                     }
@@ -299,8 +329,8 @@ impl HeightField {
             if r.first && xz.0 > r.tmax {
                 break;
             }
-            if r.tmax == tmax || self.reaches(r, level - 1, ci, cj, xz) {
-                self.visit(r, level - 1, ci, cj);
+            if r.tmax == tmax || self.reaches::<PLAIN>(r, below, ci, cj, xz) {
+                self.visit::<PLAIN>(r, level - 1, ci, cj);
             }
         }
     }
@@ -347,8 +377,7 @@ impl HeightField {
             };
             // A crossing on a shared edge is found from both sides: keep one, the second
             // triangle or the cell further along x or z, as povray's trace answers there.
-            if let Some(h) = r
-                .out
+            if let Some(h) = r.out[r.from..]
                 .iter_mut()
                 .find(|h| (h.t - t).abs() <= 1e-12 * t.max(1.0))
             {
@@ -380,14 +409,26 @@ impl HeightField {
             inv: d.recip(),
             tmax,
             first,
+            from: out.len(),
             out,
         };
         let top = self.levels.len() - 1;
         let Some(xz) = self.slab_xz(&r, (1usize << top) as f64, 0, 0) else {
             return;
         };
-        if self.reaches(&r, top, 0, 0, xz) {
-            self.visit(&mut r, top, 0, 0);
+        let l = &self.levels[top];
+        // No NaN in the walk (see `visit`): an axis the ray runs along is not divided by.
+        let finite = |d: f64, inv: f64| d == 0.0 || inv.is_finite();
+        if !tmax.is_nan()
+            && finite(r.d.x, r.inv.x)
+            && finite(r.d.y, r.inv.y)
+            && finite(r.d.z, r.inv.z)
+        {
+            if self.reaches::<true>(&r, l, 0, 0, xz) {
+                self.visit::<true>(&mut r, top, 0, 0);
+            }
+        } else if self.reaches::<false>(&r, l, 0, 0, xz) {
+            self.visit::<false>(&mut r, top, 0, 0);
         }
     }
 
@@ -428,9 +469,34 @@ impl HeightField {
 
 /// Whether a slab test's entry `t0` and exit `t1` overlap, with a little slack so crossings
 /// on block faces are not lost to rounding.
-#[inline]
-fn slack_ok(t0: f64, t1: f64) -> bool {
-    t0 <= t1 + 1e-9 * t1.abs().max(1.0)
+#[inline(always)]
+fn slack_ok<const PLAIN: bool>(t0: f64, t1: f64) -> bool {
+    t0 <= t1 + 1e-9 * fmax::<PLAIN>(t1.abs(), 1.0)
+}
+
+/// `f64::min`, or with `PLAIN` one comparison: the same for numbers that are not NaN, but
+/// for the sign of a zero (see `HeightField::visit`).
+#[inline(always)]
+fn fmin<const PLAIN: bool>(a: f64, b: f64) -> f64 {
+    if !PLAIN {
+        a.min(b)
+    } else if b < a {
+        b
+    } else {
+        a
+    }
+}
+
+/// `f64::max`, or with `PLAIN` one comparison (as `fmin`).
+#[inline(always)]
+fn fmax<const PLAIN: bool>(a: f64, b: f64) -> f64 {
+    if !PLAIN {
+        a.max(b)
+    } else if b > a {
+        b
+    } else {
+        a
+    }
 }
 
 impl Shape for HeightField {
@@ -439,11 +505,7 @@ impl Shape for HeightField {
     }
 
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
-        let start = out.len();
-        let mut mine = Vec::new();
-        self.trace(ray, f64::INFINITY, false, &mut mine);
-        out.truncate(start);
-        out.extend(mine);
+        self.trace(ray, f64::INFINITY, false, out);
     }
 
     fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {

@@ -414,10 +414,18 @@ impl Julia {
             return None;
         }
         let u = ray.dir / len;
-        let mut s = Vec::with_capacity(1);
+        // The march pushes one crossing at most here (`first_only`): no vector for it.
+        let mut first = None;
         let stop = Stop { len, tmax, any };
-        self.crossings(ray.origin, u, EPSILON * len, true, &mut s, Some(stop));
-        let t = s.first()? / len;
+        self.crossings(
+            ray.origin,
+            u,
+            EPSILON * len,
+            true,
+            &mut |t| first = first.or(Some(t)),
+            Some(stop),
+        );
+        let t = first? / len;
         (t < tmax).then_some(t)
     }
 
@@ -434,7 +442,7 @@ impl Julia {
         u: DVec3,
         tmin: f64,
         first_only: bool,
-        out: &mut Vec<f64>,
+        out: &mut impl FnMut(f64),
         stop: Option<Stop>,
     ) {
         let rb = self.bailout;
@@ -470,7 +478,7 @@ impl Julia {
                             return;
                         }
                         if st.any && tp > tmin && t / st.len < st.tmax {
-                            out.push(t);
+                            out(t);
                             return;
                         }
                     }
@@ -488,7 +496,7 @@ impl Julia {
                     }
                     let hit = 0.5 * (a + c);
                     if hit > tmin {
-                        out.push(hit);
+                        out(hit);
                         if first_only {
                             return;
                         }
@@ -554,9 +562,8 @@ impl Shape for Julia {
             return;
         }
         let u = ray.dir / len;
-        let mut s = Vec::new();
-        self.crossings(ray.origin, u, EPSILON * len, false, &mut s, None);
-        out.extend(s.into_iter().map(|s| Hit::new(s / len)));
+        let push = &mut |s: f64| out.push(Hit::new(s / len));
+        self.crossings(ray.origin, u, EPSILON * len, false, push, None);
     }
 
     fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
