@@ -33,6 +33,19 @@ PARAMS = {
 }
 
 
+def sor():
+    return [random.choice([0, 1, 0.5, -1, 2]), random.choice([0, 0.4, -0.3]),
+            random.choice([0, 30, -60, 90])]
+
+
+# The 2-d curves: field strength, the curve's parameters, then switch, offset, angle.
+for _name, _k in [("f_witch_of_agnesi_2d", 2), ("f_devils_curve_2d", 2),
+                  ("f_folium_surface_2d", 2), ("f_kampyle_of_eudoxus_2d", 2),
+                  ("f_lemniscate_of_gerono_2d", 2), ("f_strophoid_2d", 3)]:
+    PARAMS[_name] = (lambda k: lambda: [random.choice([1, -0.4, 2.5])]
+                     + [u(0.3, 1.5) for _ in range(k)] + sor())(_k)
+
+
 def values(cmd, cwd):
     out = os.path.join(cwd, "values.txt")
     if os.path.exists(out):

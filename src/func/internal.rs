@@ -20,6 +20,8 @@ pub enum Internal {
     Poly4,
     /// A polynomial times a field strength: see [`super::internal_polynomials`].
     Polynomial(u32),
+    /// A plane curve's polynomial, extruded or revolved: see [`super::internal_curves`].
+    Curve(u32),
     /// `f_noise3d`: the default noise generator's value in [0, 1].
     Noise3d,
     /// `f_noise_generator(x, y, z, generator)`.
@@ -168,6 +170,7 @@ impl Internal {
             28 => Internal::HexY,
             58 => Internal::Ridge,
             n if super::internal_polynomials::terms(n).is_some() => Internal::Polynomial(n),
+            n if super::internal_curves::terms(n).is_some() => Internal::Curve(n),
             n => Internal::Unknown(n),
         }
     }
@@ -183,6 +186,7 @@ impl Internal {
             | Internal::HexY
             | Internal::Quantum => 4,
             Internal::Polynomial(id) => 4 + super::internal_polynomials::terms(id)?.1,
+            Internal::Curve(id) => 7 + super::internal_curves::terms(id)?.1,
             Internal::Torus | Internal::Superellipsoid => 5,
             Internal::Ellipsoid | Internal::Torus2 => 6,
             Internal::Poly4 => 8,
@@ -283,6 +287,10 @@ impl Internal {
                 Some((t, _)) => super::internal_polynomials::eval(t, a),
                 None => f64::NAN,
             },
+            Internal::Curve(id) => match super::internal_curves::terms(id) {
+                Some((t, k)) => super::internal_curves::eval(t, k, a),
+                None => f64::NAN,
+            },
             Internal::Unknown(_) => f64::NAN,
         }
     }
@@ -357,6 +365,9 @@ mod tests {
             (Internal::CrossEllipsoids, &[2.0, 0.7, 1.5, 0.3], [0.299997488260186, -0.749658746601916, 0.152146726447691, -1.041066386250536]),
             (Internal::IsectEllipsoids, &[0.5, -0.3, 1.2, -0.2], [-11.585283003630231, -1.478032207077566, -2.031841155159748, -1.429148381468746]),
             (Internal::Quantum, &[0.0], [1.156394782809103, 1.191489614654903, -1.530336625039595, 1.175970970720714]),
+            (Internal::Curve(21), &[1.0, 0.8, 0.6, 0.0, 0.0, 0.0], [4.800000000000001, -0.607, -1.144, 0.0]),
+            // Revolved about y (switch 1), offset 0.4, turned 30 degrees.
+            (Internal::Curve(39), &[-0.7, 1.2, 0.9, 1.0, 0.4, 30.0], [7.331905267614897, 0.075062648479237, 0.677053370410730, 0.0]),
             // A ridge below 0.5 (folds scaled) and a negative one, fractional octaves.
             (Internal::Ridge, &[2.1, 3.5, 0.6, 0.3, 0.4, 2.0], [-0.326484689433890, -0.298163106449626, -0.129975892950166, -0.142530703793675]),
             (Internal::Ridge, &[1.7, 5.0, 0.8, 0.6, -1.0, 1.0], [0.274838017242055, 0.035857079179415, 0.252099538318762, 0.236131660963319]),

@@ -13,7 +13,7 @@
 
 /// A polynomial as (coefficient, powers of x, y, z and of the parameters after the field
 /// strength P1, P2, P3) terms.
-type Terms = &'static [(f64, [u8; 6])];
+pub type Terms = &'static [(f64, [u8; 6])];
 
 /// The polynomial of internal function `id` and how many parameters follow its field
 /// strength, if it is one of these.

@@ -16,6 +16,7 @@
 
 pub mod compile;
 pub mod internal;
+pub mod internal_curves;
 pub mod internal_noise;
 pub mod internal_polynomials;
 pub mod internal_surfaces;
