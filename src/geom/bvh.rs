@@ -398,8 +398,8 @@ thread_local! {
 /// already passed), so its element is still the one `bins[j]` belongs to.
 fn partition_by_bins(v: &mut [u32], bins: &[[u8; 3]], axis: usize, last: u8) -> usize {
     let mut i = 0;
-    for j in 0..v.len() {
-        if bins[j][axis] <= last {
+    for (j, ks) in bins[..v.len()].iter().enumerate() {
+        if ks[axis] <= last {
             v.swap(i, j);
             i += 1;
         }
