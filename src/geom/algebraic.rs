@@ -5,7 +5,10 @@
 //! crossings (found by `poly`'s isolation and polishing). The shapes are unbounded, as in
 //! POV-Ray; `clipped_by` gives them bounds.
 
-use crate::geom::poly::{first_root_in, roots_in, roots_in_window, sturm_roots_in, MAX_DEGREE};
+use crate::geom::poly::{
+    first_root_in, roots_in, roots_in_window, sturm_first_root_in, sturm_roots_in,
+    sturm_roots_in_window, MAX_DEGREE,
+};
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
 
@@ -115,7 +118,10 @@ impl Algebraic {
         };
         let c = &c[..=self.order];
         let roots = match (self.sturm, window) {
-            (true, _) => sturm_roots_in(c, EPSILON * len, hi),
+            (true, None) => sturm_roots_in(c, EPSILON * len, hi),
+            (true, Some((wlo, whi))) => {
+                sturm_roots_in_window(c, EPSILON * len, hi, wlo * len, whi * len)
+            }
             (false, None) => roots_in(c, EPSILON * len, hi),
             // In units of the unit direction.
             (false, Some((wlo, whi))) => {
@@ -305,27 +311,26 @@ impl Shape for Algebraic {
     /// The nearest of `intersect_all`'s crossings without polishing the roots beyond it
     /// (`first_root_in`); the `t` are increasing in the roots, so the first root whose `t`
     /// passes `EPSILON` gives the nearest crossing.
-    fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
-        if self.sturm {
-            scratch.clear();
-            self.crossings(ray, None, scratch);
-            return scratch
-                .iter()
-                .filter(|h| h.t > EPSILON && h.t < tmax)
-                .min_by(|a, b| a.t.total_cmp(&b.t))
-                .copied();
-        }
+    fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
         let mut c = [0.0; MAX_ORDER + 1];
         let (hi, len) = self.along_ray(ray, &mut c)?;
-        first_root_in(&c[..=self.order], EPSILON * len, hi, |x| x / len > EPSILON)
+        let keep = |x: f64| x / len > EPSILON;
+        if self.sturm {
+            return sturm_first_root_in(&c[..=self.order], EPSILON * len, hi, keep)
+                .map(|x| x / len)
+                .filter(|&t| t < tmax)
+                .map(Hit::new);
+        }
+        first_root_in(&c[..=self.order], EPSILON * len, hi, keep)
             .map(|x| x / len)
             .filter(|&t| t < tmax)
             .map(Hit::new)
     }
 
     fn windowed(&self) -> bool {
-        // Sturm's search counts roots over the whole interval.
-        !self.sturm && self.order >= 3
+        // Sturm's search counts roots over the whole interval, which
+        // `sturm_roots_in_window` does without polishing the roots outside the window.
+        self.order >= 3
     }
 
     fn inside(&self, p: DVec3) -> bool {

@@ -266,20 +266,27 @@ impl Builder<'_> {
         if n <= 1 {
             return None;
         }
-        let cb = prims
-            .iter()
-            .fold(Aabb::EMPTY, |b, &p| b.grow(self.centroids[p as usize]));
+        // The centroids hold no NaN (those of the clamped boxes, which have none), so
+        // `union_no_nan` is `Aabb::grow` here, up to the sign of a zero, which changes no bin
+        // (`bin_of`'s difference and the extents are the same numbers).
+        let cb = prims.iter().fold(Aabb::EMPTY, |b, &p| {
+            let c = self.centroids[p as usize];
+            union_no_nan(&b, &Aabb { min: c, max: c })
+        });
         let extent = cb.max - cb.min;
         if depth < SAH_DEPTH {
-            if let Some((cost, axis, bin)) = self.best_sah(prims, &cb) {
+            let found = BINS_SCRATCH.with_borrow_mut(|bins| {
+                let (cost, axis, bin) = self.best_sah(prims, &cb, bins)?;
                 if n <= MAX_LEAF && cost >= n as f64 {
-                    return None;
+                    return Some(None);
                 }
-                let key = |p: &u32| self.bin_of(*p, axis, &cb);
-                let mid = partition(prims, |p| key(p) <= bin);
-                if mid > 0 && mid < n {
-                    return Some(mid);
-                }
+                // `partition` looks at each position once, before any swap has moved it, so
+                // the bins `best_sah` stored in the original order decide as `bin_of` would.
+                let mid = partition_by_bins(prims, bins, axis, bin as u8);
+                (mid > 0 && mid < n).then_some(Some(mid))
+            });
+            if let Some(split) = found {
+                return split;
             }
         }
         if n <= MAX_LEAF {
@@ -308,8 +315,14 @@ impl Builder<'_> {
         ((f * BINS as f64) as usize).min(BINS - 1)
     }
 
-    /// Cheapest binned split as (cost, axis, last bin of the left side).
-    fn best_sah(&self, prims: &[u32], cb: &Aabb) -> Option<(f64, usize, usize)> {
+    /// Cheapest binned split as (cost, axis, last bin of the left side); `bins` receives each
+    /// primitive's bin on every live axis, in the order of `prims`.
+    fn best_sah(
+        &self,
+        prims: &[u32],
+        cb: &Aabb,
+        bins: &mut Vec<[u8; 3]>,
+    ) -> Option<(f64, usize, usize)> {
         // One pass over the primitives bins all three axes and takes the parent's box: each
         // primitive's data is fetched once instead of four times (the arithmetic and the
         // order of the unions are the serial passes', so the tree is the same).
@@ -321,16 +334,21 @@ impl Builder<'_> {
         let mut parent = Aabb::EMPTY;
         let mut all_boxes = [[Aabb::EMPTY; BINS]; 3];
         let mut all_counts = [[0usize; BINS]; 3];
+        bins.clear();
+        bins.reserve(prims.len());
         for &p in prims {
             let b = &self.clamped[p as usize];
             parent = union_no_nan(&parent, b);
+            let mut ks = [0u8; 3];
             for axis in 0..3 {
                 if live[axis] {
                     let k = self.bin_of(p, axis, cb);
+                    ks[axis] = k as u8;
                     all_boxes[axis][k] = union_no_nan(&all_boxes[axis][k], b);
                     all_counts[axis][k] += 1;
                 }
             }
+            bins.push(ks);
         }
         let parent_area = parent.surface_area();
         if parent_area <= 0.0 || !parent_area.is_finite() {
@@ -368,11 +386,20 @@ impl Builder<'_> {
     }
 }
 
-/// In-place partition; returns the number of elements satisfying `pred`, which come first.
-fn partition(v: &mut [u32], pred: impl Fn(&u32) -> bool) -> usize {
+thread_local! {
+    /// `best_sah`'s bins per primitive, kept for the partition that follows it (one buffer a
+    /// thread: `split` never runs inside another `split`).
+    static BINS_SCRATCH: std::cell::RefCell<Vec<[u8; 3]>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// In-place partition of `v` putting first the elements whose bin on `axis` (`bins[j]` for
+/// the element at position `j` before the partition) is at most `last`; returns how many.
+/// Position `j` is read before any swap reaches it (swaps exchange it only with positions
+/// already passed), so its element is still the one `bins[j]` belongs to.
+fn partition_by_bins(v: &mut [u32], bins: &[[u8; 3]], axis: usize, last: u8) -> usize {
     let mut i = 0;
-    for j in 0..v.len() {
-        if pred(&v[j]) {
+    for (j, ks) in bins[..v.len()].iter().enumerate() {
+        if ks[axis] <= last {
             v.swap(i, j);
             i += 1;
         }
