@@ -363,6 +363,17 @@ fn fractal(f: &Fractal, p: (f64, f64)) -> f64 {
     if f.magnet != 0 {
         return magnet(f, p);
     }
+    match (f.exponent, f.interior.0) {
+        // Only interior type 1 reads the orbit's smallest point; the loop without it is
+        // shorter (same values either way).
+        (2, 1) => fractal2::<true>(f, p),
+        (2, _) => fractal2::<false>(f, p),
+        _ => fractal_n(f, p),
+    }
+}
+
+/// `fractal` for any exponent (zⁿ by `cpow`).
+fn fractal_n(f: &Fractal, p: (f64, f64)) -> f64 {
     let c = f.julia.unwrap_or(p);
     let (mut zr, mut zi) = p;
     let n = f.iterations;
@@ -384,6 +395,43 @@ fn fractal(f: &Fractal, p: (f64, f64)) -> f64 {
             };
         }
         min_abs2 = min_abs2.min(a2);
+    }
+    let (t, factor) = f.interior;
+    orbit_value(t, zr, zi, min_abs2) * factor
+}
+
+/// `fractal` for z² + c, the arithmetic of the general loop with `cpow(z, 2)` written out:
+/// z·z's products zr·zr and zi·zi are the ones the escape test of the step before summed, so
+/// each is computed once, and zr·zi + zi·zr is zr·zi + zr·zi (the same product twice). The
+/// orbit is the same to the bit; the loop is about a sixth shorter. `MIN`: whether to keep
+/// the orbit's smallest |z|² (interior type 1 alone reads it).
+#[inline(always)]
+fn fractal2<const MIN: bool>(f: &Fractal, p: (f64, f64)) -> f64 {
+    let c = f.julia.unwrap_or(p);
+    let (mut zr, mut zi) = p;
+    let (mut rr, mut ii) = (zr * zr, zi * zi);
+    let n = f.iterations;
+    let mut min_abs2 = rr + ii;
+    for k in 0..n {
+        let ri = zr * zi;
+        zr = (rr - ii) + c.0;
+        zi = (ri + ri) + c.1;
+        rr = zr * zr;
+        ii = zi * zi;
+        let a2 = rr + ii;
+        if a2 > 4.0 {
+            let (t, factor) = f.exterior;
+            return match t {
+                1 => k as f64 / n as f64,
+                7 if factor != 0.0 => (k as f64 % factor) / factor,
+                8 if factor != 0.0 => (k as f64 % (factor + 1.0)) / factor,
+                6 => a2.sqrt() * factor,
+                _ => orbit_value(t, zr, zi, min_abs2) * factor,
+            };
+        }
+        if MIN {
+            min_abs2 = min_abs2.min(a2);
+        }
     }
     let (t, factor) = f.interior;
     orbit_value(t, zr, zi, min_abs2) * factor
@@ -751,6 +799,48 @@ mod tests {
                 "{p}: {}",
                 value(&ramp, p)
             );
+        }
+    }
+
+    /// The z² + c loop is the general loop's orbit to the bit, for every interior and
+    /// exterior type, mandel and julia, inside and outside the set.
+    #[test]
+    fn squaring_fractal_is_the_general_loop() {
+        for julia in [None, Some((0.3, 0.44)), Some((-0.75, 0.11))] {
+            for interior in [
+                (0, 1.0),
+                (1, 200.0),
+                (2, 1.0),
+                (3, 0.5),
+                (4, 1.0),
+                (5, 1.0),
+                (6, 2.0),
+            ] {
+                for exterior in [
+                    (1, 1.0),
+                    (0, 1.0),
+                    (2, 1.0),
+                    (5, 1.0),
+                    (6, 0.3),
+                    (7, 5.0),
+                    (8, 3.0),
+                ] {
+                    let f = Fractal {
+                        julia,
+                        iterations: 60,
+                        exponent: 2,
+                        magnet: 0,
+                        interior,
+                        exterior,
+                    };
+                    for n in 0..400 {
+                        let t = n as f64 * 0.0731;
+                        let p = (1.6 * (t * 1.3).sin() - 0.4, 1.2 * (t * 0.7).cos());
+                        let (a, b) = (fractal(&f, p), fractal_n(&f, p));
+                        assert_eq!(a.to_bits(), b.to_bits(), "{p:?} {interior:?} {exterior:?}");
+                    }
+                }
+            }
         }
     }
 
