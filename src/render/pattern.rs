@@ -420,14 +420,7 @@ fn fractal2<const MIN: bool>(f: &Fractal, p: (f64, f64)) -> f64 {
         ii = zi * zi;
         let a2 = rr + ii;
         if a2 > 4.0 {
-            let (t, factor) = f.exterior;
-            return match t {
-                1 => k as f64 / n as f64,
-                7 if factor != 0.0 => (k as f64 % factor) / factor,
-                8 if factor != 0.0 => (k as f64 % (factor + 1.0)) / factor,
-                6 => a2.sqrt() * factor,
-                _ => orbit_value(t, zr, zi, min_abs2) * factor,
-            };
+            return exterior_value(f, k, zr, zi, a2, min_abs2);
         }
         if MIN {
             min_abs2 = min_abs2.min(a2);
@@ -435,6 +428,79 @@ fn fractal2<const MIN: bool>(f: &Fractal, p: (f64, f64)) -> f64 {
     }
     let (t, factor) = f.interior;
     orbit_value(t, zr, zi, min_abs2) * factor
+}
+
+/// A z² + c fractal's value at the points of `ps` (a normal's samples), each lane the same
+/// arithmetic as `fractal2` at its point. One orbit is bound by the latency of its steps;
+/// L orbits stepped together overlap. Lanes that have left go on stepping (their values
+/// are kept from the step they left and what they compute after is never read).
+#[inline(always)]
+fn fractal2_lanes<const MIN: bool, const L: usize>(f: &Fractal, ps: [(f64, f64); L]) -> [f64; L] {
+    let c = ps.map(|p| f.julia.unwrap_or(p));
+    let (mut zr, mut zi) = (ps.map(|p| p.0), ps.map(|p| p.1));
+    let (mut rr, mut ii) = (zr.map(|x| x * x), zi.map(|y| y * y));
+    let mut min_abs2: [f64; L] = std::array::from_fn(|l| rr[l] + ii[l]);
+    let mut out = [0.0; L];
+    let mut live = [true; L];
+    let n = f.iterations;
+    for k in 0..n {
+        for l in 0..L {
+            let ri = zr[l] * zi[l];
+            zr[l] = (rr[l] - ii[l]) + c[l].0;
+            zi[l] = (ri + ri) + c[l].1;
+            rr[l] = zr[l] * zr[l];
+            ii[l] = zi[l] * zi[l];
+            let a2 = rr[l] + ii[l];
+            if live[l] && a2 > 4.0 {
+                out[l] = exterior_value(f, k, zr[l], zi[l], a2, min_abs2[l]);
+                live[l] = false;
+            }
+            if MIN {
+                min_abs2[l] = min_abs2[l].min(a2);
+            }
+        }
+        if live.iter().all(|&x| !x) {
+            return out;
+        }
+    }
+    let (t, factor) = f.interior;
+    for l in 0..L {
+        if live[l] {
+            out[l] = orbit_value(t, zr[l], zi[l], min_abs2[l]) * factor;
+        }
+    }
+    out
+}
+
+/// The value of an orbit that left the radius-2 disc at step k (from 0) at z, |z|² = a2.
+#[inline(always)]
+fn exterior_value(f: &Fractal, k: u32, zr: f64, zi: f64, a2: f64, min_abs2: f64) -> f64 {
+    let n = f.iterations;
+    let (t, factor) = f.exterior;
+    match t {
+        1 => k as f64 / n as f64,
+        7 if factor != 0.0 => (k as f64 % factor) / factor,
+        8 if factor != 0.0 => (k as f64 % (factor + 1.0)) / factor,
+        6 => a2.sqrt() * factor,
+        _ => orbit_value(t, zr, zi, min_abs2) * factor,
+    }
+}
+
+/// `value_warped` at four points (a normal's samples): the same values, with z² + c
+/// fractals' orbits stepped together (`fractal2_lanes`).
+pub fn values_warped4(pat: &Pattern, qs: [DVec3; 4]) -> [f64; 4] {
+    if let PatternKind::Fractal(f) = &pat.kind {
+        if f.magnet == 0 && f.exponent == 2 {
+            let ps = qs.map(|q| (q.x, q.y));
+            let raw = if f.interior.0 == 1 {
+                fractal2_lanes::<true, 4>(f, ps)
+            } else {
+                fractal2_lanes::<false, 4>(f, ps)
+            };
+            return raw.map(|v| shape(pat, v));
+        }
+    }
+    qs.map(|q| value_warped(pat, q))
 }
 
 /// The magnet fractals (fractint's magnet 1 and 2): z ← ((z² + c − 1)/(2z + c − 2))² or
@@ -838,6 +904,22 @@ mod tests {
                         let p = (1.6 * (t * 1.3).sin() - 0.4, 1.2 * (t * 0.7).cos());
                         let (a, b) = (fractal(&f, p), fractal_n(&f, p));
                         assert_eq!(a.to_bits(), b.to_bits(), "{p:?} {interior:?} {exterior:?}");
+                        // Four lanes: this point beside three others that leave at other
+                        // steps (or stay in).
+                        let others = [(0.25, 0.1), (-0.74, 0.12), (1.5, 1.5)];
+                        for lane in 0..4 {
+                            let mut ps = others.to_vec();
+                            ps.insert(lane, p);
+                            let ps: [(f64, f64); 4] = ps.try_into().unwrap();
+                            let got = if interior.0 == 1 {
+                                fractal2_lanes::<true, 4>(&f, ps)
+                            } else {
+                                fractal2_lanes::<false, 4>(&f, ps)
+                            };
+                            for (g, q) in got.iter().zip(ps) {
+                                assert_eq!(g.to_bits(), fractal_n(&f, q).to_bits(), "{q:?}");
+                            }
+                        }
                     }
                 }
             }
