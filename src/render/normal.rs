@@ -140,17 +140,16 @@ fn local(nd: &Normal, lp: DVec3, ln: DVec3) -> DVec3 {
 fn slope(pat: &Pattern, map: Option<&[(f64, f64, f64)]>, lp: DVec3, accuracy: f64) -> DVec3 {
     // Warps and turbulence move the point once; the samples sit around the moved point.
     let centre = pattern::warped(pat, lp);
-    let h = |q: DVec3| {
-        let v = pattern::value_warped(pat, centre + (q - lp));
-        match map {
-            Some(m) => slope_height(m, v),
-            None => v,
-        }
-    };
+    // The four samples' values together: a fractal steps their orbits at once.
+    let vs = pattern::values_warped4(pat, TETRA.map(|u| centre + ((lp + u * accuracy) - lp)));
     // For a regular tetrahedron Σ uuᵀ = (4/3)·I, so this is the linear fit's gradient.
     let mut g = DVec3::ZERO;
-    for u in TETRA {
-        g += u * h(lp + u * accuracy);
+    for (u, v) in TETRA.into_iter().zip(vs) {
+        let h = match map {
+            Some(m) => slope_height(m, v),
+            None => v,
+        };
+        g += u * h;
     }
     g * (0.75 / accuracy)
 }
