@@ -27,6 +27,7 @@ pub mod photons;
 pub mod pigment;
 pub mod progressive;
 pub mod radiosity;
+mod radiosity_cache;
 mod shadow;
 pub mod texture_map;
 mod tiling;

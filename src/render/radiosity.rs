@@ -11,7 +11,6 @@
 //! and the final trace never adds to the cache: a point it finds no sample for gets one
 //! computed for that camera sample only.
 
-use rustc_hash::FxHashMap;
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use rayon::prelude::*;
@@ -21,283 +20,10 @@ use crate::scene::build::Scene;
 use crate::scene::desc::RadiositySettings;
 use crate::scene::object::Scratch;
 
+use super::radiosity_cache::{weight, Blend};
+pub use super::radiosity_cache::{Cache, Sample};
 use super::trace::{point_seed, Path, Seen, Tracer};
 use super::RenderSettings;
-
-/// One cached irradiance value.
-#[derive(Clone, Copy, Debug)]
-pub struct Sample {
-    pub p: DVec3,
-    pub n: DVec3,
-    /// What the sample gathered, after `gray_threshold`, `max_sample` and `brightness`.
-    pub irr: DVec3,
-    /// Reuse radius: harmonic mean distance to what the rays met, clamped by
-    /// `minimum_reuse` and `maximum_reuse` times the distance from the camera.
-    pub r: f64,
-    /// 1 for samples seen from camera rays, deeper for those of their gathering rays.
-    pub level: u32,
-}
-
-impl Sample {
-    fn footprint(&self) -> Footprint {
-        Footprint {
-            p: self.p,
-            r: self.r,
-            n: self.n,
-            level: self.level,
-        }
-    }
-}
-
-/// Where a sample is valid: what `weight` reads of it, in one aligned cache line.
-#[derive(Clone, Copy)]
-#[repr(C, align(64))]
-struct Footprint {
-    p: DVec3,
-    r: f64,
-    n: DVec3,
-    level: u32,
-}
-
-/// The samples gathered so far, with grids over their reach for lookups.
-#[derive(Default)]
-pub struct Cache {
-    samples: Vec<Sample>,
-    /// What the lookups test of each filed sample, one cache line each (a `Sample` is 88
-    /// bytes, two lines for most), and what they blend of it: most of the samples a cell
-    /// lists are turned away by the first and never read in the second.
-    foot: Vec<Footprint>,
-    irr: Vec<DVec3>,
-    /// One grid per scale: samples whose reach at the final error bound is in [2^k, 2^(k+1))
-    /// are filed under every cell their reach at the bound in force touches, the cells'
-    /// size that reach's power of two, so a lookup reads one cell per scale and meets few
-    /// samples that cannot reach it (one grid for all reaches filed each sample under tens of
-    /// cells or none, and every lookup read the wide ones). The scales keep the order the
-    /// final bound gives them whatever bound they are filed for: the blend's sums follow it.
-    scales: Vec<Scale>,
-    /// How many of `samples` are filed in `scales`.
-    filed: usize,
-    /// The error bound the grids are filed for: the pretrace's (lowered by
-    /// `low_error_factor`) until its last pass, then the final one. Filed for the final bound
-    /// throughout, a pretrace lookup met about three times the samples its own bound lets
-    /// reach it (cornell: 145 read per lookup, 10 within reach; 33 read filed at its bound).
-    filed_bound: f64,
-    /// Unit-disc points of the gathering directions (`direction_pool`).
-    pool: Vec<(f64, f64)>,
-    /// Rays the pretrace traced, for the statistics line.
-    pub rays: u64,
-    /// First-pass colours (one ray at each pixel's centre, row by row) the last completion
-    /// pass lit exactly as the final trace would (`fold` in `pretrace`).
-    pub first_pass: Option<Vec<Option<Seen>>>,
-}
-
-struct Scale {
-    /// The scale's power of two at the final error bound (its identity and place in order).
-    exp: i32,
-    /// The size of its cells at the bound filed for.
-    cell: f64,
-    /// The lowest level of its samples: a lookup of a lower level finds none valid in it
-    /// and skips the scale (deeper samples reach farther, so the widest scales hold only
-    /// them).
-    level: u32,
-    grid: FxHashMap<(i64, i64, i64), Vec<u32>>,
-}
-
-impl Scale {
-    fn key(&self, p: DVec3) -> (i64, i64, i64) {
-        let k = |v: f64| (v / self.cell).floor().clamp(-1e15, 1e15) as i64;
-        (k(p.x), k(p.y), k(p.z))
-    }
-}
-
-impl Cache {
-    /// Files the samples added since the last call under their scale's cells, for lookups at
-    /// error bound `bound` (a sample reaches `r * bound`); `last` is the final error bound,
-    /// which orders the scales. Samples are only ever appended, so this gives the grids a
-    /// filing from scratch would; a new `bound` files every sample again.
-    fn file_new(&mut self, bound: f64, last: f64) {
-        for s in &self.samples[self.foot.len()..] {
-            self.foot.push(s.footprint());
-            self.irr.push(s.irr);
-        }
-        if bound != self.filed_bound {
-            for scale in &mut self.scales {
-                scale.grid.clear();
-            }
-            self.filed = 0;
-            self.filed_bound = bound;
-        }
-        // Cells of the scale's power of two at `bound`: between a quarter of the reach and
-        // the reach, as they were at the final bound (the ratio of the bounds is a power of
-        // two for the default `low_error_factor`, 0.5).
-        let shift = (bound / last).log2().floor().clamp(-60.0, 60.0) as i32;
-        for i in self.filed..self.samples.len() {
-            let s = &self.samples[i];
-            let e = (s.r * last).max(1e-9).log2().floor().clamp(-200.0, 200.0) as i32;
-            let rr = (s.r * bound).max(1e-9);
-            let at = match self.scales.iter().position(|g| g.exp == e) {
-                Some(at) => at,
-                None => {
-                    self.scales.push(Scale {
-                        exp: e,
-                        cell: 0.0,
-                        level: u32::MAX,
-                        grid: FxHashMap::default(),
-                    });
-                    self.scales.len() - 1
-                }
-            };
-            let scale = &mut self.scales[at];
-            scale.cell = 2f64.powi(e + shift);
-            scale.level = scale.level.min(s.level);
-            let lo = scale.key(s.p - DVec3::splat(rr));
-            let hi = scale.key(s.p + DVec3::splat(rr));
-            for x in lo.0..=hi.0 {
-                for y in lo.1..=hi.1 {
-                    for z in lo.2..=hi.2 {
-                        scale.grid.entry((x, y, z)).or_default().push(i as u32);
-                    }
-                }
-            }
-        }
-        self.filed = self.samples.len();
-    }
-
-    /// Every sample from number `from` on whose reach at error bound `bound` covers `p`
-    /// (`weight`'s distance test), each once, in the order of the scales and of their cells'
-    /// lists (the blend's sums depend on it), leaving out scales holding no sample of level
-    /// `level` or less (none of which `weight` takes).
-    #[inline]
-    fn near(
-        &self,
-        p: DVec3,
-        bound: f64,
-        level: u32,
-        from: usize,
-        mut f: impl FnMut(usize, &Footprint),
-    ) {
-        debug_assert!(bound <= self.filed_bound, "grids filed for a smaller reach");
-        // The cells of every scale are found first, then read: each is a cache miss (the
-        // grids are megabytes), and asked one after another the misses overlap instead of
-        // each waiting on the scan of the scale before (cornell: the lookup's share of the
-        // time 29% -> 23%).
-        const MAX: usize = 24;
-        for group in self.scales.chunks(MAX) {
-            let mut found: [&[u32]; MAX] = [&[]; MAX];
-            for (scale, found) in group.iter().zip(&mut found) {
-                if scale.level > level {
-                    continue;
-                }
-                if let Some(ids) = scale.grid.get(&scale.key(p)) {
-                    prefetch(ids.as_ptr());
-                    *found = ids;
-                }
-            }
-            for ids in &found[..group.len()] {
-                self.visit(ids, p, bound, from, &mut f);
-            }
-        }
-    }
-
-    /// The samples of `ids` from number `from` on whose reach covers `p`: `weight`'s
-    /// distance test (the same arithmetic, so the same samples pass).
-    #[inline(always)]
-    fn visit(
-        &self,
-        ids: &[u32],
-        p: DVec3,
-        bound: f64,
-        from: usize,
-        f: &mut impl FnMut(usize, &Footprint),
-    ) {
-        // A cell lists its samples in the order they were filed, which is their number's.
-        let ids = if from > 0 {
-            &ids[ids.partition_point(|&i| (i as usize) < from)..]
-        } else {
-            ids
-        };
-        for &i in ids {
-            let s = &self.foot[i as usize];
-            let d2 = (p - s.p).length_squared();
-            let far = s.r * bound;
-            if d2 < far * far {
-                f(i as usize, s);
-            }
-        }
-    }
-
-    pub fn len(&self) -> usize {
-        self.samples.len()
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.samples.is_empty()
-    }
-}
-
-/// Asks for the cache line at `p` ahead of its use (no effect on the result).
-#[inline(always)]
-fn prefetch<T>(p: *const T) {
-    #[cfg(target_arch = "x86_64")]
-    // SAFETY: a prefetch is only a hint; it reads nothing and cannot fault.
-    unsafe {
-        std::arch::x86_64::_mm_prefetch(p as *const i8, std::arch::x86_64::_MM_HINT_T0);
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = p;
-}
-
-/// Ward's interpolation of the samples valid at (p, n): weighted sum and count.
-#[derive(Default)]
-struct Blend {
-    sum: DVec3,
-    weight: f64,
-    count: u32,
-}
-
-impl Blend {
-    #[inline]
-    fn add(&mut self, s: &Footprint, irr: DVec3, p: DVec3, n: DVec3, level: u32, bound: f64) {
-        if let Some(w) = weight(s, p, n, level, bound) {
-            self.sum += irr * w;
-            self.weight += w;
-            self.count += 1;
-        }
-    }
-}
-
-/// The weight of sample `s` in the blend at (p, n) for a lookup of `level`, None where it is
-/// not valid there.
-#[inline]
-fn weight(s: &Footprint, p: DVec3, n: DVec3, level: u32, bound: f64) -> Option<f64> {
-    if s.level > level {
-        return None;
-    }
-    let d = p - s.p;
-    let d2 = d.length_squared();
-    let far = s.r * bound;
-    if d2 >= far * far {
-        return None;
-    }
-    let cos = n.dot(s.n);
-    if cos < 0.5 {
-        return None;
-    }
-    let dist = d2.sqrt();
-    // Samples in front of the point see a different neighbourhood (Ward's test).
-    if d.dot(n + s.n) * 0.5 < -0.05 * s.r {
-        return None;
-    }
-    let err = dist / s.r + 2.0 * (1.0 - cos).max(0.0).sqrt();
-    if err >= bound {
-        return None;
-    }
-    // Zero at the bound, so no seam where a sample stops counting; the square root keeps
-    // the weight up over most of the reach (1/err - 1/bound peaked at the sample and left
-    // each sample's blotch in the picture: radiosity_37 SSIM 0.896 -> 0.907,
-    // radiosity_36 0.883 -> 0.901 against povray).
-    Some((1.0 - err / bound).sqrt())
-}
 
 /// What the tracer needs to look up and gather irradiance during one pass.
 #[derive(Clone, Copy)]
@@ -340,7 +66,7 @@ pub fn direction_pool(n: u32) -> Vec<(f64, f64)> {
         .collect()
 }
 
-fn mix(mut h: u64) -> u64 {
+pub(super) fn mix(mut h: u64) -> u64 {
     h ^= h >> 33;
     h = h.wrapping_mul(0xff51_afd7_ed55_8ccd);
     h ^= h >> 33;
@@ -365,27 +91,34 @@ impl<'a> Tracer<'a> {
         if level > rad.set.recursion_limit {
             return DVec3::ZERO;
         }
-        let bound = rad.bound;
-        let mut b = Blend::default();
-        let cache = rad.cache;
-        cache.near(p, bound, level, 0, |i, s| {
-            b.add(s, cache.irr[i], p, n, level, bound)
-        });
-        for s in &ctx.rad_local {
-            b.add(&s.footprint(), s.irr, p, n, level, bound);
-        }
         // Deeper levels take one valid sample: asking nearest_count of them there multiplies
         // the samples gathered per ray tree beyond what povray's statistics show.
-        let enough = if level == 1 && (rad.pretrace || rad.set.always_sample) {
-            b.count >= rad.set.nearest_count
+        let need = if level == 1 && (rad.pretrace || rad.set.always_sample) {
+            rad.set.nearest_count
         } else {
-            b.count > 0
+            1
         };
-        if enough && b.weight > 0.0 {
-            if rad.record {
-                ctx.rad_seen.push((p, n));
+        if rad.probe && path.rad_level == 0 {
+            // A camera ray of a pretrace pass whose colour is not kept: only whether enough
+            // samples are valid here matters (it decides whether to gather).
+            if let Some(e) = enough_here(rad, p, n, need, ctx) {
+                return e;
             }
-            return b.sum / b.weight;
+        } else {
+            let (cache, bound) = (rad.cache, rad.bound);
+            let mut b = Blend::default();
+            cache.near(p, bound, level, 0, |i, s| {
+                b.add(s, cache.irr[i], p, n, level, bound)
+            });
+            for s in &ctx.rad_local {
+                b.add(&s.footprint(), s.irr, p, n, level, bound);
+            }
+            if b.count >= need && b.weight > 0.0 {
+                if rad.record {
+                    ctx.rad_seen.push((p, n));
+                }
+                return b.sum / b.weight;
+            }
         }
         let s = self.gather(rad, p, n, level, path, ctx);
         ctx.rad_local.push(s);
@@ -466,6 +199,30 @@ impl<'a> Tracer<'a> {
     }
 }
 
+/// Whether `need` samples are valid at (p, n) for a camera ray (level 1), with some weight:
+/// then a blend of those found so far (not all of them), else None. The count and the weight
+/// only grow, so the lookup stops once they are enough (raddem and rad_def_test, error_bound
+/// 1.8: a hundred samples within reach of a lookup). Not inlined: in `irradiance` beside the
+/// full lookup it made gamma_showcase's lookups 3% slower.
+#[inline(never)]
+fn enough_here(rad: &RadTrace, p: DVec3, n: DVec3, need: u32, ctx: &Scratch) -> Option<DVec3> {
+    let (cache, bound) = (rad.cache, rad.bound);
+    let mut b = Blend::default();
+    let enough = |b: &Blend| b.count >= need && b.weight > 0.0;
+    let mut done = !cache.near_while(p, bound, 1, |i, s| {
+        b.add(s, cache.irr[i], p, n, 1, bound);
+        !enough(&b)
+    });
+    for s in &ctx.rad_local {
+        if done {
+            break;
+        }
+        b.add(&s.footprint(), s.irr, p, n, 1, bound);
+        done = enough(&b);
+    }
+    enough(&b).then(|| b.sum / b.weight)
+}
+
 /// Two unit vectors perpendicular to `n` and to each other, fixed by `n` alone.
 fn frame(n: DVec3) -> (DVec3, DVec3) {
     let a = if n.x.abs() < 0.9 { DVec3::X } else { DVec3::Y };
@@ -516,10 +273,12 @@ const PHASES: [(usize, usize); 4] = [(0, 0), (1, 1), (1, 0), (0, 1)];
 /// (measured: povray +Q8 renders a radiosity scene as without it).
 pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cache> {
     let set = scene.radiosity.as_ref().filter(|_| s.quality >= 9)?;
-    let mut cache = Cache {
-        pool: direction_pool(set.count_pool.max(set.count)),
-        ..Cache::default()
-    };
+    // Cells twice the reach's power of two where gathering rays look the cache up (`count`
+    // lookups per sample: cornell +2% at four times), four times where only camera rays do
+    // (radiosity2 and radiosity3 -10%, stackernight -5% against the reach's own power of
+    // two, whose 27-125 cells per sample were mostly filed and never read).
+    let coarser = if set.recursion_limit > 1 { 1 } else { 2 };
+    let mut cache = Cache::with_pool(direction_pool(set.count_pool.max(set.count)), coarser);
     let (w, h) = (s.width as f64, s.height as f64);
     // Seeding passes at coarser blocks come first: within a pass no position sees another's
     // new samples, so the first dense pass would otherwise gather every deeper level afresh
@@ -738,46 +497,6 @@ mod tests {
             .sum::<f64>()
             / pool.len() as f64;
         assert!((mean - 2.0 / 3.0).abs() < 1e-3, "{mean}");
-    }
-
-    /// The grids filed for a lowered bound, and filed again for the final one, list every
-    /// sample whose reach covers a point, each once.
-    #[test]
-    fn near_finds_every_sample_in_reach() {
-        let mut cache = Cache::default();
-        let mut h = 1u64;
-        let mut rnd = || {
-            h = mix(h);
-            (h >> 11) as f64 / (1u64 << 53) as f64
-        };
-        for i in 0..400 {
-            let p = DVec3::new(rnd(), rnd(), rnd()) * 10.0;
-            cache.samples.push(Sample {
-                p,
-                n: DVec3::Z,
-                irr: DVec3::ONE,
-                r: 0.05 + 2.0 * rnd() * rnd(),
-                level: 1 + i % 3,
-            });
-        }
-        for bound in [0.25, 0.5] {
-            cache.file_new(bound, 0.5);
-            for _ in 0..200 {
-                let p = DVec3::new(rnd(), rnd(), rnd()) * 10.0;
-                let from = (rnd() * 100.0) as usize;
-                let mut found = Vec::new();
-                cache.near(p, bound, 3, from, |i, _| found.push(i));
-                let mut want: Vec<usize> = (from..cache.samples.len())
-                    .filter(|&i| {
-                        let s = &cache.samples[i];
-                        (p - s.p).length_squared() < (s.r * bound) * (s.r * bound)
-                    })
-                    .collect();
-                found.sort_unstable();
-                want.sort_unstable();
-                assert_eq!(found, want, "bound {bound} at {p}");
-            }
-        }
     }
 
     #[test]
