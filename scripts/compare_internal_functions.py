@@ -33,6 +33,9 @@ PARAMS = {
 }
 
 
+PARAMS["f_strophoid"] = lambda: [random.choice([1, -0.4, 2.5])] + [u(-1, 1.5) for _ in range(3)]
+
+
 def sor():
     return [random.choice([0, 1, 0.5, -1, 2]), random.choice([0, 0.4, -0.3]),
             random.choice([0, 30, -60, 90])]

@@ -32,6 +32,7 @@ DEFAULT = [
     "f_quartic_saddle:4", "f_steiners_roman:4", "f_torus_gumdrop:6", "f_umbrella:4",
     "f_hyperbolic_torus:4:0.7:1:2", "f_parabolic_torus:4:0.7:1:2", "f_witch_of_agnesi:4:0.7:1:1",
     "f_quartic_cylinder:4:0.7:1:2", "f_folium_surface:4:0.7:1:2", "f_bifolia:6:0.7:1:1",
+    "f_strophoid:5:0.7:1:3",
 ]
 
 # Polynomials whose parameters reach a degree the joint fit would need too many povray runs

@@ -47,6 +47,7 @@ pub fn terms(id: u32) -> Option<(Terms, usize)> {
         55 => (QUARTIC_SADDLE, 0),
         56 => (QUARTIC_CYLINDER, 2),
         65 => (STEINERS_ROMAN, 0),
+        66 => (STROPHOID, 3),
         72 => (TORUS_GUMDROP, 0),
         73 => (UMBRELLA, 0),
         74 => (WITCH_OF_AGNESI, 1),
@@ -72,6 +73,16 @@ pub fn eval(t: Terms, a: &[f64]) -> f64 {
     (g(3) * v).clamp(-10.0, 10.0)
 }
 
+/// `f_strophoid` (internal 66): the plane strophoid of `f_strophoid_2d` turned about the x
+/// axis (y² + z² in place of Y²); P1 the bulb's size, P2 the sharpness, P3 the flatness.
+const STROPHOID: Terms = &[
+    (-1.0, [0, 0, 2, 0, 1, 0]),
+    (-1.0, [0, 2, 0, 0, 1, 0]),
+    (1.0, [1, 0, 2, 0, 0, 0]),
+    (1.0, [1, 2, 0, 0, 0, 0]),
+    (1.0, [2, 0, 0, 1, 0, 2]),
+    (1.0, [3, 0, 0, 0, 0, 2]),
+];
 /// `f_bicorn` (internal 4).
 const BICORN: Terms = &[
     (-1.0, [0, 0, 0, 4, 0, 0]),
