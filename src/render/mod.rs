@@ -11,6 +11,7 @@ mod cells_data;
 mod dispersion;
 pub mod focal;
 mod fog;
+mod fractal;
 mod irid;
 mod media;
 mod media_beam;
