@@ -157,6 +157,45 @@ pub(crate) mod test_rng {
         c
     }
 
+    /// Asserts that `first(cut)` is the first of `all` above `cut`, bit for bit, with no cut
+    /// and with three cuts drawn in (lo, hi): a root finder that stops at the first root a
+    /// caller keeps must agree with the one that finds them all.
+    pub fn check_first_root(
+        rng: &mut Lcg,
+        all: &[f64],
+        (lo, hi): (f64, f64),
+        first: impl Fn(f64) -> Option<f64>,
+        what: &str,
+    ) {
+        for k in 0..4 {
+            let cut = if k == 0 {
+                f64::NEG_INFINITY
+            } else {
+                lo + (hi - lo) * rng.next()
+            };
+            let want = all.iter().copied().find(|&x| x > cut);
+            assert_eq!(
+                want.map(f64::to_bits),
+                first(cut).map(f64::to_bits),
+                "{what} {lo} {hi} {cut}"
+            );
+        }
+    }
+
+    /// Asserts that a window's roots `part` are roots of `all` and hold every one of `all`
+    /// in [wlo, whi].
+    pub fn check_window(all: &[f64], part: &[f64], (wlo, whi): (f64, f64), what: &str) {
+        for r in part {
+            assert!(all.contains(r), "{what}: {r} not in {all:?}");
+        }
+        for r in all.iter().filter(|&&r| r >= wlo && r <= whi) {
+            assert!(
+                part.contains(r),
+                "{what} [{wlo}, {whi}]: {r} lost, {part:?}"
+            );
+        }
+    }
+
     /// The nearest of all a shape's crossings in (EPSILON, tmax): what `intersect_first` must
     /// answer, bit for bit, for the solvers that find it without every crossing.
     pub fn nearest_of_all<S: super::Shape + ?Sized>(

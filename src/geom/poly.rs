@@ -692,12 +692,7 @@ mod tests {
             let w0 = rnd() * 12.0 - 1.0;
             let (wlo, whi) = (w0, w0 + rnd() * 3.0);
             let part = roots_in_window(&c, lo, hi, wlo, whi);
-            for r in part.iter() {
-                assert!(full.contains(r), "{c:?}: {r} not in {full:?}");
-            }
-            for r in full.iter().filter(|&&r| r >= wlo && r <= whi) {
-                assert!(part.contains(r), "{c:?} [{wlo}, {whi}]: {r} lost, {part:?}");
-            }
+            crate::geom::test_rng::check_window(&full, &part, (wlo, whi), &format!("{c:?}"));
             let all = roots_in_window(&c, lo, hi, f64::NEG_INFINITY, f64::INFINITY);
             assert_eq!(&*all, &*full);
         }
@@ -720,20 +715,14 @@ mod tests {
             }
             let (lo, hi) = (rng.next() - 0.5, 4.0 + 4.0 * rng.next());
             let all = roots_in(&c, lo, hi);
-            for k in 0..4 {
-                let cut = if k == 0 {
-                    f64::NEG_INFINITY
-                } else {
-                    lo + (hi - lo) * rng.next()
-                };
-                let want = all.iter().copied().find(|&x| x > cut);
-                let got = first_root_in(&c, lo, hi, |x| x > cut);
-                assert_eq!(
-                    want.map(f64::to_bits),
-                    got.map(f64::to_bits),
-                    "{c:?} {lo} {hi} {cut}"
-                );
-            }
+            let first = |cut: f64| first_root_in(&c, lo, hi, |x| x > cut);
+            crate::geom::test_rng::check_first_root(
+                &mut rng,
+                &all,
+                (lo, hi),
+                first,
+                &format!("{c:?}"),
+            );
         }
         assert_eq!(
             first_root_in(&[1.0, 0.0, 0.0, 1.0], f64::NAN, 1.0, |_| true),

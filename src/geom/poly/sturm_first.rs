@@ -189,7 +189,7 @@ fn surely_not_on(c: &[f64], p: f64) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geom::test_rng::{from_roots, Lcg};
+    use crate::geom::test_rng::{check_first_root, check_window, from_roots, Lcg};
 
     /// The first root kept is `sturm_roots_in`'s first root kept, bit for bit, and a window's
     /// roots are its roots inside the window (and maybe some outside, never others): random
@@ -213,29 +213,13 @@ mod tests {
             }
             let (lo, hi) = (rng.next() - 0.5, 4.0 + 4.0 * rng.next());
             let all = sturm_roots_in(&c, lo, hi);
-            for k in 0..4 {
-                let cut = if k == 0 {
-                    f64::NEG_INFINITY
-                } else {
-                    lo + (hi - lo) * rng.next()
-                };
-                let want = all.iter().copied().find(|&x| x > cut);
-                let got = sturm_first_root_in(&c, lo, hi, |x| x > cut);
-                assert_eq!(
-                    want.map(f64::to_bits),
-                    got.map(f64::to_bits),
-                    "{c:?} {lo} {hi} {cut}"
-                );
-            }
+            let what = format!("{c:?}");
+            let first = |cut: f64| sturm_first_root_in(&c, lo, hi, |x| x > cut);
+            check_first_root(&mut rng, &all, (lo, hi), first, &what);
             let w0 = lo + (hi - lo) * rng.next();
             let (wlo, whi) = (w0, w0 + rng.next() * 3.0);
             let part = sturm_roots_in_window(&c, lo, hi, wlo, whi);
-            for r in part.iter() {
-                assert!(all.contains(r), "{c:?}: {r} not in {all:?}");
-            }
-            for r in all.iter().filter(|&&r| r >= wlo && r <= whi) {
-                assert!(part.contains(r), "{c:?} [{wlo}, {whi}]: {r} lost, {part:?}");
-            }
+            check_window(&all, &part, (wlo, whi), &what);
         }
     }
 }
