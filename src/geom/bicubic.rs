@@ -47,11 +47,18 @@ fn eval(p: &[DVec3; 16], u: f64, v: f64) -> (DVec3, DVec3, DVec3) {
     (s, su, sv)
 }
 
-/// The surface normal at (u, v). Where a patch edge collapses to a point (the teapot's lid
-/// and bottom) one partial derivative vanishes; the normal is then taken a little way into
-/// the patch, where it is defined and tends to the limit.
+/// `normal_from` with the derivatives evaluated here.
+#[cfg(test)]
 fn normal_at(p: &[DVec3; 16], u: f64, v: f64) -> DVec3 {
     let (_, su, sv) = eval(p, u, v);
+    normal_from(p, u, v, su, sv)
+}
+
+/// The surface normal at (u, v), from the partial derivatives `eval` gave there (the
+/// tessellation takes the point and these from one evaluation). Where a patch edge collapses
+/// to a point (the teapot's lid and bottom) one partial derivative vanishes; the normal is
+/// then taken a little way into the patch, where it is defined and tends to the limit.
+fn normal_from(p: &[DVec3; 16], u: f64, v: f64, su: DVec3, sv: DVec3) -> DVec3 {
     let n = su.cross(sv);
     let scale = su.length_squared().max(sv.length_squared());
     if n.length_squared() > 1e-20 * scale * scale && n.is_finite() {
@@ -75,7 +82,8 @@ pub fn tessellate(p: &[DVec3; 16], u_steps: u32, v_steps: u32) -> MeshData {
     let nv = 1usize << v_steps.min(MAX_STEPS);
     crate::geom::mesh::grid_mesh(nu, nv, |i, j| {
         let (u, v) = (i as f64 / nu as f64, j as f64 / nv as f64);
-        (eval(p, u, v).0, normal_at(p, u, v), [u, v])
+        let (s, su, sv) = eval(p, u, v);
+        (s, normal_from(p, u, v, su, sv), [u, v])
     })
 }
 

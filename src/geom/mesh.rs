@@ -47,7 +47,10 @@ impl Mesh {
                 g.map_or(Aabb::EMPTY, |g| g.bounds())
             })
             .collect();
-        let bvh = Bvh::build(&boxes);
+        let bvh = match grid_cells(&data) {
+            Some((nu, nv)) => Bvh::build_grid(&boxes, nu, nv),
+            None => Bvh::build(&boxes),
+        };
         drop(boxes);
         let unit_normals = data.normals.iter().map(|n| n.normalize_or_zero()).collect();
         Mesh {
@@ -158,6 +161,35 @@ impl Shape for Mesh {
             a[1] * w + b[1] * u + c[1] * v,
         ])
     }
+}
+
+/// `(nu, nv)` when the triangles are exactly `grid_mesh`'s for an `nu` × `nv` grid (corner
+/// indices only: normals and uvs do not shape the hierarchy), so `Bvh::build_grid` can build
+/// the hierarchy from the layout.
+fn grid_cells(data: &MeshData) -> Option<(usize, usize)> {
+    let tris = &data.triangles;
+    if tris.is_empty() {
+        return None;
+    }
+    let nu = (tris.corners(0)[2] as usize).checked_sub(2)?;
+    if nu == 0 || !tris.len().is_multiple_of(2 * nu) {
+        return None;
+    }
+    let nv = tris.len() / (2 * nu);
+    if data.vertices.len() != (nu + 1) * (nv + 1) {
+        return None;
+    }
+    let idx = |i: usize, j: usize| (j * (nu + 1) + i) as u32;
+    for j in 0..nv {
+        for i in 0..nu {
+            let (a, b, c, d) = (idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
+            let k = 2 * (j * nu + i);
+            if tris.corners(k) != [a, b, c] || tris.corners(k + 1) != [a, c, d] {
+                return None;
+            }
+        }
+    }
+    Some((nu, nv))
 }
 
 /// A surface sampled on a regular grid of `nu` × `nv` cells as smooth triangles (bicubic
@@ -407,6 +439,59 @@ mod tests {
         // Out-of-range normal index: flat shading instead of a panic.
         assert_eq!(mesh.normal(r.at(h.t), &h).normalize(), DVec3::Z);
         assert_eq!(mesh.normal(DVec3::ZERO, &Hit::with_part(1.0, 99)), DVec3::Y);
+    }
+
+    /// A wavy 12 × 7 grid with a pole along its first row (degenerate triangles).
+    fn wavy_grid(pole: bool) -> MeshData {
+        grid_mesh(12, 7, |i, j| {
+            let (x, y) = (i as f64 * 0.3, j as f64 * 0.4);
+            let x = if pole && j == 0 { 1.8 } else { x };
+            let p = DVec3::new(x, y, (3.0 * x).sin() * (2.0 * y).cos());
+            (p, DVec3::Z, [x, y])
+        })
+    }
+
+    /// The grid hierarchy finds the nearest crossing the whole triangle list gives: the same
+    /// triangle at the same `t`, bit for bit, for rays from all sides (no two triangles of
+    /// this surface meet a ray at one `t` except on shared edges, which the rays avoid by
+    /// chance).
+    #[test]
+    fn grid_hierarchy_finds_the_nearest_triangle() {
+        let mut rng = crate::geom::test_rng::Lcg(7);
+        for pole in [false, true] {
+            let data = Arc::new(wavy_grid(pole));
+            assert_eq!(grid_cells(&data), Some((12, 7)));
+            let mesh = Mesh::new(data.clone());
+            let all: Vec<TriGeom> = (0..data.triangles.len())
+                .filter_map(|i| mesh.tri(i))
+                .collect();
+            assert_eq!(all.len() < data.triangles.len(), pole);
+            for _ in 0..2000 {
+                let o = DVec3::new(1.8, 1.4, 0.0) + rng.vec(8.0);
+                let target = DVec3::new(1.8, 1.4, 0.0) + rng.vec(3.0);
+                let ray = Ray::new(o, target - o);
+                let brute = (0..data.triangles.len())
+                    .filter_map(|i| Some((mesh.tri(i)?.intersect(&ray, f64::INFINITY)?.0, i)))
+                    .min_by(|a, b| a.0.total_cmp(&b.0));
+                let got = mesh.intersect_first(&ray, f64::INFINITY, &mut Vec::new());
+                assert_eq!(
+                    got.map(|h| (h.t.to_bits(), h.part as usize)),
+                    brute.map(|(t, i)| (t.to_bits(), i))
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn only_grid_layouts_take_the_grid_hierarchy() {
+        let mut data = wavy_grid(false);
+        assert_eq!(grid_cells(&icosphere(1, true)), None);
+        assert_eq!(grid_cells(&MeshData::default()), None);
+        // One triangle's corners swapped: no longer the layout.
+        let mut tris: Vec<MeshTriangle> = data.triangles.iter().collect();
+        tris[5].v.swap(1, 2);
+        data.triangles = tris.into();
+        assert_eq!(grid_cells(&data), None);
     }
 
     /// Throughput on the 20480-triangle icosphere: `cargo test --release -- --ignored --nocapture mesh_speed`.

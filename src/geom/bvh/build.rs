@@ -278,3 +278,143 @@ fn partition_by_bins(v: &mut [u32], bins: &[[u8; 3]], axis: usize, last: u8) -> 
     }
     i
 }
+
+/// The cells `[i0, i1) × [j0, j1)` of a grid mesh.
+#[derive(Clone, Copy)]
+struct Cells {
+    i0: usize,
+    i1: usize,
+    j0: usize,
+    j1: usize,
+}
+
+impl Cells {
+    fn count(&self) -> usize {
+        (self.i1 - self.i0) * (self.j1 - self.j0)
+    }
+
+    /// The two halves across the side with more cells.
+    fn halves(&self) -> (Cells, Cells) {
+        if self.i1 - self.i0 >= self.j1 - self.j0 {
+            let m = self.i0 + (self.i1 - self.i0) / 2;
+            (Cells { i1: m, ..*self }, Cells { i0: m, ..*self })
+        } else {
+            let m = self.j0 + (self.j1 - self.j0) / 2;
+            (Cells { j1: m, ..*self }, Cells { j0: m, ..*self })
+        }
+    }
+}
+
+/// `Bvh::build_grid`'s state: the triangles' boxes and the arrays being filled.
+struct GridBuilder<'a> {
+    bounds: &'a [Aabb],
+    nu: usize,
+    nodes: Vec<Node>,
+    prims: Vec<u32>,
+}
+
+/// Cells per leaf of a grid hierarchy: two cells are four triangles, `MAX_LEAF`.
+const GRID_LEAF_CELLS: usize = 2;
+
+impl GridBuilder<'_> {
+    /// Appends the subtree over `cells` in depth-first order and returns its box, or `None`
+    /// (appending nothing) when all its triangles are degenerate.
+    fn node(&mut self, cells: Cells) -> Option<Aabb> {
+        if cells.count() <= GRID_LEAF_CELLS {
+            let first = self.prims.len();
+            let mut b = Aabb::EMPTY;
+            for j in cells.j0..cells.j1 {
+                for i in cells.i0..cells.i1 {
+                    for p in [2 * (j * self.nu + i), 2 * (j * self.nu + i) + 1] {
+                        if !self.bounds[p].is_empty() {
+                            b = b.union(&self.bounds[p]);
+                            self.prims.push(p as u32);
+                        }
+                    }
+                }
+            }
+            let count = self.prims.len() - first;
+            if count == 0 {
+                return None;
+            }
+            self.nodes.push(Node {
+                bounds: b,
+                index: first as u32,
+                count: count as u32,
+            });
+            return Some(b);
+        }
+        let (a, c) = cells.halves();
+        let idx = self.nodes.len();
+        self.nodes.push(Node {
+            bounds: Aabb::EMPTY,
+            index: 0,
+            count: 0,
+        });
+        let ba = self.node(a);
+        let second = self.nodes.len();
+        let bc = self.node(c);
+        match (ba, bc) {
+            (Some(ba), Some(bc)) => {
+                let b = ba.union(&bc);
+                self.nodes[idx] = Node {
+                    bounds: b,
+                    index: second as u32,
+                    count: 0,
+                };
+                Some(b)
+            }
+            (None, None) => {
+                self.nodes.pop();
+                None
+            }
+            // One half holds nothing: the other takes the parent's place, its interior
+            // nodes' indices moving down with it.
+            (Some(b), None) | (None, Some(b)) => {
+                self.nodes.remove(idx);
+                for n in &mut self.nodes[idx..] {
+                    if n.count == 0 {
+                        n.index -= 1;
+                    }
+                }
+                Some(b)
+            }
+        }
+    }
+}
+
+impl Bvh {
+    /// The hierarchy of a mesh laid out as a grid of `nu` × `nv` cells, two triangles each
+    /// (cell (i, j) holds primitives `2 (j nu + i)` and the one after; `bounds` has their
+    /// boxes): each node halves its cells across the longer side. A tessellated bicubic
+    /// patch or parametric surface is such a grid, and this takes a few milliseconds where
+    /// the surface-area heuristic took most of the scene's time (objects/bezier: 131,072
+    /// triangles); on a smooth grid its nodes are as tight as the heuristic's.
+    pub fn build_grid(bounds: &[Aabb], nu: usize, nv: usize) -> Bvh {
+        assert_eq!(bounds.len(), 2 * nu * nv, "a grid has two triangles a cell");
+        let mut g = GridBuilder {
+            bounds,
+            nu,
+            nodes: Vec::with_capacity(bounds.len()),
+            prims: Vec::with_capacity(bounds.len()),
+        };
+        if nu == 0
+            || nv == 0
+            || g.node(Cells {
+                i0: 0,
+                i1: nu,
+                j0: 0,
+                j1: nv,
+            })
+            .is_none()
+        {
+            return Bvh::default();
+        }
+        let finite = g.nodes.iter().all(|n| n.bounds.is_finite());
+        Bvh {
+            nodes: g.nodes,
+            prims: g.prims,
+            finite,
+        }
+    }
+}
