@@ -232,30 +232,110 @@ impl Prism {
     }
 
     fn walls(&self, ray: &Ray, out: &mut Vec<Hit>) {
+        self.walls_in(ray, &self.window(ray), out);
+    }
+
+    /// The wall crossings of the pieces `window` lets through.
+    fn walls_in(&self, ray: &Ray, window: &Window, out: &mut Vec<Hit>) {
         let Some(plane) = self.cut_plane(ray) else {
             return;
         };
         let (nx, c0, nz) = plane;
         let g = |q: P2| nx * q[0] + nz * q[1] + c0;
         for (i, pc) in self.pieces.iter().enumerate() {
-            if Self::may_cut(pc, g) {
+            if Self::may_cut(pc, g) && window.may_hold(pc) {
                 self.piece_hits(ray, plane, i, |h| out.push(h));
             }
         }
     }
 
-    /// A lower bound of the `t` any wall crossing of piece `pc` can get from `wall_t` (linear
-    /// sweep): the least of the linear `t(q)` over the piece's box, less a margin far above
-    /// the rounding of `wall_t` and of the curve's points (a few ulps of the terms).
-    fn wall_t_floor(pc: &Piece, o: DVec3, d: DVec3, dd: f64) -> f64 {
-        let x = if d.x >= 0.0 { pc.lo[0] } else { pc.hi[0] };
-        let z = if d.z >= 0.0 { pc.lo[1] } else { pc.hi[1] };
-        let t = ((x - o.x) * d.x + (z - o.z) * d.z) / dd;
+    /// Which pieces can hold a wall crossing within the heights (see `Window`).
+    fn window(&self, ray: &Ray) -> Window {
+        let (o, d) = (ray.origin, ray.dir);
+        if !self.conic {
+            let (y_lo, y_hi) = self.height_t_range(o, d);
+            return Window::Linear {
+                o,
+                d,
+                dd: d.x * d.x + d.z * d.z,
+                y_lo,
+                y_hi,
+            };
+        }
+        // Between the heights the ray keeps to one side of the apex (when both heights do),
+        // and the central projection of a segment that does not reach y = 0 onto the plane
+        // y = 1 (the outline's) is the segment between its ends' projections.
+        let [h0, h1] = self.h;
+        if d.y == 0.0 || h0 <= 0.0 && h1 >= 0.0 {
+            return Window::All;
+        }
+        let end = |h: f64| {
+            let p = o + d * ((h - o.y) / d.y);
+            [p.x / h, p.z / h]
+        };
+        let (a, b) = (end(h0), end(h1));
+        let lo = [a[0].min(b[0]), a[1].min(b[1])];
+        let hi = [a[0].max(b[0]), a[1].max(b[1])];
+        let size = lo
+            .iter()
+            .chain(hi.iter())
+            .fold(0.0f64, |m, v| m.max(v.abs()));
+        // NaN or infinite ends (a ray nearly level, far from the heights) prune nothing.
+        if !size.is_finite() {
+            return Window::All;
+        }
+        let margin = 1e-6 * size;
+        Window::Conic {
+            lo: [lo[0] - margin, lo[1] - margin],
+            hi: [hi[0] + margin, hi[1] + margin],
+        }
+    }
+
+    /// Bounds of the `t` any wall crossing of piece `pc` can get from `wall_t` (linear
+    /// sweep): the least and the greatest of the linear `t(q)` over the piece's box, widened
+    /// by a margin far above the rounding of `wall_t` and of the curve's points (a few ulps
+    /// of the terms).
+    fn wall_t_range(pc: &Piece, o: DVec3, d: DVec3, dd: f64) -> (f64, f64) {
+        let (x0, x1) = if d.x >= 0.0 {
+            (pc.lo[0], pc.hi[0])
+        } else {
+            (pc.hi[0], pc.lo[0])
+        };
+        let (z0, z1) = if d.z >= 0.0 {
+            (pc.lo[1], pc.hi[1])
+        } else {
+            (pc.hi[1], pc.lo[1])
+        };
+        let t0 = ((x0 - o.x) * d.x + (z0 - o.z) * d.z) / dd;
+        let t1 = ((x1 - o.x) * d.x + (z1 - o.z) * d.z) / dd;
         let size = (pc.hi[0] - pc.lo[0]).max(pc.hi[1] - pc.lo[1]);
-        let mag = ((x.abs() + o.x.abs() + size) * d.x.abs()
-            + (z.abs() + o.z.abs() + size) * d.z.abs())
-            / dd;
-        t - 1e-9 * (mag + t.abs())
+        let mag = |x: f64, z: f64| {
+            ((x.abs() + o.x.abs() + size) * d.x.abs() + (z.abs() + o.z.abs() + size) * d.z.abs())
+                / dd
+        };
+        (
+            t0 - 1e-9 * (mag(x0, z0) + t0.abs()),
+            t1 + 1e-9 * (mag(x1, z1) + t1.abs()),
+        )
+    }
+
+    /// The `t` range outside which `wall_t` surely finds the ray beyond the heights: where
+    /// `o.y + t d.y` lies in [h0, h1], widened by a margin far above the rounding of both
+    /// that sum and the divisions here. Everything when the ray is level and within the
+    /// heights, nothing (an empty range) when it is level outside them.
+    fn height_t_range(&self, o: DVec3, d: DVec3) -> (f64, f64) {
+        if d.y == 0.0 {
+            return if self.in_heights(o.y) {
+                (f64::NEG_INFINITY, f64::INFINITY)
+            } else {
+                (f64::INFINITY, f64::NEG_INFINITY)
+            };
+        }
+        let ta = (self.h[0] - o.y) / d.y;
+        let tb = (self.h[1] - o.y) / d.y;
+        let margin = 1e-9
+            * (ta.abs() + tb.abs() + (o.y.abs() + self.h[0].abs() + self.h[1].abs()) / d.y.abs());
+        (ta.min(tb) - margin, ta.max(tb) + margin)
     }
 
     /// `intersect_first` of a linear sweep: the same crossing the default (every crossing,
@@ -270,9 +350,16 @@ impl Prism {
         if let Some((nx, c0, nz)) = plane {
             let g = |q: P2| nx * q[0] + nz * q[1] + c0;
             let dd = d.x * d.x + d.z * d.z;
+            // A crossing outside the heights is dropped by `wall_t`: pieces whose `t` range
+            // misses the heights' are never refined (a steep ray crosses the heights over a
+            // short stretch, and most pieces the cut plane meets lie outside it).
+            let (y_lo, y_hi) = self.height_t_range(o, d);
             for (i, pc) in self.pieces.iter().enumerate() {
                 if Self::may_cut(pc, g) {
-                    let floor = Self::wall_t_floor(pc, o, d, dd);
+                    let (floor, ceil) = Self::wall_t_range(pc, o, d, dd);
+                    if floor > y_hi || ceil < y_lo {
+                        continue;
+                    }
                     // NaN floors are kept (and never stop the search).
                     if floor < tmax || floor.is_nan() {
                         cand.push(Hit::with_part(floor, i as u32));
@@ -356,6 +443,48 @@ impl Prism {
                 if inside_even_odd(&self.pieces, q, false) {
                     out.push(Hit::with_part(t, part));
                 }
+            }
+        }
+    }
+}
+
+/// Which outline pieces can hold a wall crossing that `wall_t` keeps (within the heights),
+/// for one ray: a cheap test before the crossings are solved and refined.
+enum Window {
+    All,
+    /// Linear sweep: the piece's range of `t` (`Prism::wall_t_range`) must meet the
+    /// heights' (`Prism::height_t_range`).
+    Linear {
+        o: DVec3,
+        d: DVec3,
+        dd: f64,
+        y_lo: f64,
+        y_hi: f64,
+    },
+    /// Conic sweep: the piece's box must meet the box of the ray's stretch between the
+    /// heights projected onto the outline's plane (widened for rounding).
+    Conic {
+        lo: P2,
+        hi: P2,
+    },
+}
+
+impl Window {
+    fn may_hold(&self, pc: &Piece) -> bool {
+        match *self {
+            Window::All => true,
+            Window::Linear {
+                o,
+                d,
+                dd,
+                y_lo,
+                y_hi,
+            } => {
+                let (floor, ceil) = Prism::wall_t_range(pc, o, d, dd);
+                !(floor > y_hi || ceil < y_lo)
+            }
+            Window::Conic { lo, hi } => {
+                !(pc.hi[0] < lo[0] || pc.lo[0] > hi[0] || pc.hi[1] < lo[1] || pc.lo[1] > hi[1])
             }
         }
     }
@@ -468,288 +597,4 @@ impl Shape for Prism {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn square(a: f64, b: f64) -> Vec<P2> {
-        vec![[a, a], [b, a], [b, b], [a, b], [a, a]]
-    }
-
-    fn hits(s: &Prism, r: &Ray) -> Vec<(f64, u32)> {
-        let mut v = Vec::new();
-        s.intersect_all(r, &mut v);
-        let mut v: Vec<(f64, u32)> = v.iter().map(|h| (h.t, h.part)).collect();
-        v.sort_by(|a, b| a.0.total_cmp(&b.0));
-        v
-    }
-
-    #[test]
-    fn outlines_close_as_povray_does() {
-        let mut p = square(0.0, 6.0);
-        p.extend(square(1.0, 5.0));
-        let o = outline(SplineKind::Linear, &p).unwrap();
-        assert_eq!((o.pieces.len(), o.warning), (8, None));
-        // The last outline is closed with a warning; a stray point after a closed one is not.
-        let o = outline(SplineKind::Linear, &p[..8]).unwrap();
-        assert_eq!(o.pieces.len(), 7);
-        assert!(o.warning.unwrap().contains("Closing"));
-        let mut q = square(0.0, 1.0);
-        q.push([5.0, 5.0]);
-        let o = outline(SplineKind::Linear, &q).unwrap();
-        assert_eq!((o.pieces.len(), o.warning), (4, None));
-        assert!(outline(SplineKind::Linear, &q[..2])
-            .unwrap_err()
-            .contains("three"));
-        // Quadratic: control point, then the outline up to its first point again.
-        let quad = [
-            [1.0, -1.0],
-            [0.0, 0.0],
-            [6.0, 0.0],
-            [6.0, 8.0],
-            [0.0, 8.0],
-            [0.0, 0.0],
-        ];
-        let o = outline(SplineKind::Quadratic, &quad).unwrap();
-        assert_eq!((o.pieces.len(), o.warning), (4, None));
-        let e = outline(SplineKind::Quadratic, &quad[..5]).unwrap_err();
-        assert!(e.contains("Too few"), "{e}");
-        let mut cub = quad.to_vec();
-        cub.push([-1.0, 1.0]);
-        assert_eq!(outline(SplineKind::Cubic, &cub).unwrap().pieces.len(), 4);
-        assert!(outline(SplineKind::Cubic, &cub[..5]).is_err());
-        let bez = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 0.0]];
-        assert_eq!(outline(SplineKind::Bezier, &bez).unwrap().pieces.len(), 1);
-        assert!(outline(SplineKind::Bezier, &bez[..3])
-            .unwrap_err()
-            .contains("four points per"));
-        let open_bez = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.5, 0.0]];
-        assert!(outline(SplineKind::Bezier, &open_bez).is_err());
-    }
-
-    #[test]
-    fn frame_with_hole() {
-        let mut p = square(0.0, 6.0);
-        p.extend(square(1.0, 5.0));
-        let pr = Prism::new(
-            outline(SplineKind::Linear, &p).unwrap().pieces,
-            1.0,
-            0.0,
-            false,
-            false,
-        );
-        // Along x through the frame at mid height: in, out of the rim, into the rim, out.
-        let r = Ray::new(DVec3::new(-1.0, 0.5, 3.0), DVec3::X);
-        let t: Vec<f64> = hits(&pr, &r).iter().map(|h| h.0).collect();
-        assert_eq!(t, vec![1.0, 2.0, 6.0, 7.0]);
-        // Down onto the rim hits the top cap; down through the hole misses.
-        let down = Ray::new(DVec3::new(0.5, 5.0, 0.5), DVec3::NEG_Y);
-        assert_eq!(hits(&pr, &down), vec![(4.0, CAP_HIGH), (5.0, CAP_LOW)]);
-        assert!(hits(&pr, &Ray::new(DVec3::new(3.0, 5.0, 3.0), DVec3::NEG_Y)).is_empty());
-        assert!(pr.inside(DVec3::new(0.5, 0.5, 3.0)));
-        assert!(!pr.inside(DVec3::new(3.0, 0.5, 3.0)));
-        assert!(!pr.inside(DVec3::new(0.5, 1.5, 3.0)));
-        // Normals point out of the material, also on the hole's walls.
-        let n = |x: f64, z: f64, part: u32| {
-            let hit = Hit {
-                t: 0.0,
-                part,
-                uv: [0.5, 0.0],
-            };
-            pr.normal(DVec3::new(x, 0.5, z), &hit).normalize()
-        };
-        // Piece 0 runs along z = 0 (outer), piece 4 along z = 1 (the hole's edge).
-        assert!((n(3.0, 0.0, 0) - DVec3::NEG_Z).length() < 1e-12);
-        assert!((n(3.0, 1.0, 4) - DVec3::Z).length() < 1e-12);
-        let open = Prism::new(pr.pieces.clone(), 0.0, 1.0, false, true);
-        assert!(hits(&open, &down).is_empty());
-    }
-
-    #[test]
-    fn conic_sweep_scales_with_height() {
-        let p = square(-1.0, 1.0);
-        let pieces = outline(SplineKind::Linear, &p).unwrap().pieces;
-        let pr = Prism::new(pieces, 0.5, 2.0, true, false);
-        // At height 1 the section is the written square; at 2 twice as large.
-        let r = Ray::new(DVec3::new(-5.0, 1.0, 0.0), DVec3::X);
-        let t: Vec<f64> = hits(&pr, &r).iter().map(|h| h.0).collect();
-        assert!(
-            (t[0] - 4.0).abs() < 1e-12 && (t[1] - 6.0).abs() < 1e-12,
-            "{t:?}"
-        );
-        let r = Ray::new(DVec3::new(1.5, 5.0, 0.0), DVec3::NEG_Y);
-        let h = hits(&pr, &r);
-        assert_eq!(h.len(), 2);
-        assert_eq!(h[0], (3.0, CAP_HIGH));
-        assert!((h[1].0 - 3.5).abs() < 1e-12);
-        let b = pr.bounds();
-        assert_eq!(b.min, DVec3::new(-2.0, 0.5, -2.0));
-        assert!(pr.inside(DVec3::new(1.5, 1.9, 0.0)) && !pr.inside(DVec3::new(1.5, 1.0, 0.0)));
-        let hit = Hit {
-            t: 0.0,
-            part: 1,
-            uv: [0.5, 0.0],
-        };
-        // Piece 1 is the edge x = 1; at height y the wall is x = y, leaning outward.
-        let n = pr.normal(DVec3::new(1.0, 1.0, 0.0), &hit).normalize();
-        let want = DVec3::new(1.0, -1.0, 0.0).normalize();
-        assert!((n - want).length() < 1e-12, "{n}");
-    }
-
-    /// Random rays against the crossings found by walking the ray with the inside test.
-    #[test]
-    fn random_rays_match_the_inside_test() {
-        use crate::geom::test_rng::Lcg;
-        let quad: Vec<P2> = vec![
-            [1.0, -1.0],
-            [0.0, 0.0],
-            [6.0, 0.0],
-            [6.0, 8.0],
-            [0.0, 8.0],
-            [0.0, 0.0],
-            [2.0, 0.0],
-            [1.0, 1.0],
-            [5.0, 1.0],
-            [5.0, 7.0],
-            [1.0, 7.0],
-            [1.0, 1.0],
-        ];
-        let bez: Vec<P2> = vec![
-            [0.0, 0.0],
-            [4.0, -2.0],
-            [7.0, 3.0],
-            [6.0, 6.0],
-            [6.0, 6.0],
-            [3.0, 9.0],
-            [-2.0, 4.0],
-            [0.0, 0.0],
-        ];
-        let mut rng = Lcg(11);
-        for (kind, pts, conic) in [
-            (SplineKind::Quadratic, &quad, false),
-            (SplineKind::Bezier, &bez, false),
-            (SplineKind::Bezier, &bez, true),
-        ] {
-            let pieces = outline(kind, pts).unwrap().pieces;
-            let pr = Prism::new(pieces, 0.3, 2.0, conic, false);
-            let mut bad = 0;
-            for _ in 0..300 {
-                let target = DVec3::new(3.0, 1.0, 3.0) + rng.vec(10.0);
-                let origin = target + rng.vec(1.0).normalize() * 25.0;
-                let r = Ray::new(origin, (target - origin) * 0.1);
-                let got: Vec<f64> = hits(&pr, &r).iter().map(|h| h.0).collect();
-                let far = 50.0 / r.dir.length();
-                let mut want = Vec::new();
-                let steps = 5000;
-                let mut prev = pr.inside(r.at(0.0));
-                for i in 1..=steps {
-                    let (mut a, mut b) = (
-                        far * (i - 1) as f64 / steps as f64,
-                        far * i as f64 / steps as f64,
-                    );
-                    let cur = pr.inside(r.at(b));
-                    if cur != prev {
-                        for _ in 0..80 {
-                            let m = 0.5 * (a + b);
-                            if pr.inside(r.at(m)) == prev {
-                                a = m;
-                            } else {
-                                b = m;
-                            }
-                        }
-                        want.push(0.5 * (a + b));
-                    }
-                    prev = cur;
-                }
-                let ok = got.len() == want.len()
-                    && got.iter().zip(&want).all(|(a, b)| (a - b).abs() < 1e-6);
-                if !ok {
-                    bad += 1;
-                    eprintln!("{kind:?} conic {conic}: got {got:?} want {want:?}");
-                }
-            }
-            // A step may hold two crossings closer than it: allow a rare miss.
-            assert!(bad <= 3, "{kind:?} conic {conic}: {bad} of 300");
-        }
-    }
-
-    #[test]
-    fn curved_outline_round_trip() {
-        // A Catmull-Rom ring: rays from the centre leave it once, wherever they point.
-        let ring: Vec<P2> = (0..9)
-            .map(|i| {
-                let a = (i % 6) as f64 * std::f64::consts::TAU / 6.0;
-                [a.cos(), a.sin()]
-            })
-            .collect();
-        let pieces = outline(SplineKind::Cubic, &ring).unwrap().pieces;
-        assert_eq!(pieces.len(), 6);
-        let pr = Prism::new(pieces, -1.0, 1.0, false, false);
-        for k in 0..50 {
-            let a = k as f64 * 0.37;
-            let d = DVec3::new(a.cos(), 0.1 * (k as f64 - 25.0) / 25.0, a.sin());
-            let mut h = Vec::new();
-            pr.intersect_all(&Ray::new(DVec3::ZERO, d), &mut h);
-            assert_eq!(h.len(), 1, "{k}: {h:?}");
-            // The normal points away from the centre.
-            let p = d * h[0].t;
-            assert!(pr.normal(p, &h[0]).dot(DVec3::new(p.x, 0.0, p.z)) > 0.0);
-        }
-    }
-
-    /// `intersect_first` skips pieces and caps that cannot come first: it must give the
-    /// default's answer (every crossing, the first least `t`) to the bit, part and uv
-    /// included, for both sweeps and every spline kind, rays from inside and outside.
-    #[test]
-    fn nearest_crossing_is_the_defaults() {
-        let mut seed = 0x1234_5678_9abc_def1u64;
-        let mut unit = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
-        let star: Vec<P2> = (0..11)
-            .map(|k| {
-                let a = k as f64 * std::f64::consts::TAU / 10.0;
-                let r = if k % 2 == 0 { 1.0 } else { 0.45 };
-                [r * a.cos(), r * a.sin()]
-            })
-            .collect();
-        let mut holed = square(-1.0, 1.0);
-        holed.extend(square(-0.5, 0.5));
-        let mut quad = vec![star[9]];
-        quad.extend(&star[..10]);
-        quad.push(star[0]);
-        quad.push(star[1]);
-        let kinds: Vec<(SplineKind, Vec<P2>)> = vec![
-            (SplineKind::Linear, star.clone()),
-            (SplineKind::Linear, holed),
-            (SplineKind::Quadratic, quad[..12].to_vec()),
-            (SplineKind::Cubic, quad.clone()),
-        ];
-        let mut n_hits = 0;
-        for (kind, pts) in kinds {
-            let pieces = outline(kind, &pts).unwrap().pieces;
-            for conic in [false, true] {
-                let pr = Prism::new(pieces.clone(), 0.2, 1.0, conic, false);
-                for _ in 0..4000 {
-                    let o = DVec3::new(4.0 * unit() - 2.0, 3.0 * unit() - 1.0, 4.0 * unit() - 2.0);
-                    let target = DVec3::new(2.0 * unit() - 1.0, unit(), 2.0 * unit() - 1.0);
-                    let ray = Ray::new(o, target - o);
-                    let tmax = if unit() < 0.3 {
-                        0.5 + unit()
-                    } else {
-                        f64::INFINITY
-                    };
-                    let want = crate::geom::test_rng::nearest_of_all(&pr, &ray, tmax);
-                    let got = pr.intersect_first(&ray, tmax, &mut Vec::new());
-                    n_hits += want.is_some() as usize;
-                    let key =
-                        |h: Option<Hit>| h.map(|h| (h.t.to_bits(), h.part, h.uv[0].to_bits()));
-                    assert_eq!(key(got), key(want), "{kind:?} conic {conic} {ray:?}");
-                }
-            }
-        }
-        assert!(n_hits > 10_000, "{n_hits}");
-    }
-}
+mod tests;
