@@ -10,7 +10,7 @@ use crate::geom::bvh::Bvh;
 use crate::geom::triangle::{smooth_normal, TriGeom};
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
-use crate::scene::desc::{MeshData, MeshTriangle};
+use crate::scene::desc::{MeshData, MeshTriangle, Triangles};
 
 pub struct Mesh {
     data: Arc<MeshData>,
@@ -39,26 +39,33 @@ impl Mesh {
             let v = c.map(|i| data.vertices.get(i as usize).copied());
             TriGeom::new([v[0]?, v[1]?, v[2]?])
         };
-        let mut valid = Vec::with_capacity(data.triangles.len());
-        let boxes: Vec<Aabb> = (0..data.triangles.len())
-            .map(|i| {
-                let g = geom(data.triangles.corners(i));
-                valid.push(g.is_some());
-                g.map_or(Aabb::EMPTY, |g| g.bounds())
-            })
-            .collect();
-        let bvh = match grid_cells(&data) {
-            Some((nu, nv)) => Bvh::build_grid(&boxes, nu, nv),
-            None => Bvh::build(&boxes),
-        };
-        drop(boxes);
+        let n = data.triangles.len();
+        let grid = grid_cells(&data);
+        let mut valid = Vec::with_capacity(n);
+        let mut boxes = Vec::with_capacity(if grid.is_some() { 0 } else { n });
+        for i in 0..n {
+            let g = geom(data.triangles.corners(i));
+            valid.push(g.is_some());
+            if grid.is_none() {
+                boxes.push(g.map_or(Aabb::EMPTY, |g| g.bounds()));
+            }
+        }
         let unit_normals = data.normals.iter().map(|n| n.normalize_or_zero()).collect();
-        Mesh {
+        let mut mesh = Mesh {
             data,
             valid,
             unit_normals,
-            bvh,
-        }
+            bvh: Bvh::default(),
+        };
+        mesh.bvh = match grid {
+            // The grid build asks each box once, from the corners and edges `tri` rebuilds,
+            // so none are kept (6 MB for a patch of 2^8 × 2^8 pieces, in fresh pages).
+            Some((nu, nv)) => {
+                Bvh::build_grid(nu, nv, |i| mesh.tri(i).map_or(Aabb::EMPTY, |g| g.bounds()))
+            }
+            None => Bvh::build(&boxes),
+        };
+        mesh
     }
 
     /// Triangle `i`'s corner and edges, bit for bit what `TriGeom::new` made at the build.
@@ -214,7 +221,9 @@ pub fn grid_mesh(
         }
     }
     let idx = |i: usize, j: usize| (j * (nu + 1) + i) as u32;
-    let mut triangles = Vec::with_capacity(nu * nv * 2);
+    // Pushed as they come rather than collected and converted: a patch's list of
+    // `MeshTriangle`s was 7 MB of fresh pages written once and read once.
+    let mut triangles = Triangles::with_capacity(nu * nv * 2);
     for j in 0..nv {
         for i in 0..nu {
             let (a, b, c, d) = (idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
@@ -235,7 +244,7 @@ pub fn grid_mesh(
     MeshData {
         vertices,
         normals,
-        triangles: triangles.into(),
+        triangles,
         uvs,
         textures: Vec::new(),
         inside_vector: None,

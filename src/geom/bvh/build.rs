@@ -306,8 +306,8 @@ impl Cells {
 }
 
 /// `Bvh::build_grid`'s state: the triangles' boxes and the arrays being filled.
-struct GridBuilder<'a> {
-    bounds: &'a [Aabb],
+struct GridBuilder<F> {
+    bounds: F,
     nu: usize,
     nodes: Vec<Node>,
     prims: Vec<u32>,
@@ -316,7 +316,7 @@ struct GridBuilder<'a> {
 /// Cells per leaf of a grid hierarchy: two cells are four triangles, `MAX_LEAF`.
 const GRID_LEAF_CELLS: usize = 2;
 
-impl GridBuilder<'_> {
+impl<F: Fn(usize) -> Aabb> GridBuilder<F> {
     /// Appends the subtree over `cells` in depth-first order and returns its box, or `None`
     /// (appending nothing) when all its triangles are degenerate.
     fn node(&mut self, cells: Cells) -> Option<Aabb> {
@@ -326,8 +326,9 @@ impl GridBuilder<'_> {
             for j in cells.j0..cells.j1 {
                 for i in cells.i0..cells.i1 {
                     for p in [2 * (j * self.nu + i), 2 * (j * self.nu + i) + 1] {
-                        if !self.bounds[p].is_empty() {
-                            b = b.union(&self.bounds[p]);
+                        let pb = (self.bounds)(p);
+                        if !pb.is_empty() {
+                            b = b.union(&pb);
                             self.prims.push(p as u32);
                         }
                     }
@@ -385,18 +386,19 @@ impl GridBuilder<'_> {
 
 impl Bvh {
     /// The hierarchy of a mesh laid out as a grid of `nu` × `nv` cells, two triangles each
-    /// (cell (i, j) holds primitives `2 (j nu + i)` and the one after; `bounds` has their
-    /// boxes): each node halves its cells across the longer side. A tessellated bicubic
+    /// (cell (i, j) holds primitives `2 (j nu + i)` and the one after; `bounds(p)` is
+    /// primitive p's box, asked once each): each node halves its cells across the longer
+    /// side. A tessellated bicubic
     /// patch or parametric surface is such a grid, and this takes a few milliseconds where
     /// the surface-area heuristic took most of the scene's time (objects/bezier: 131,072
     /// triangles); on a smooth grid its nodes are as tight as the heuristic's.
-    pub fn build_grid(bounds: &[Aabb], nu: usize, nv: usize) -> Bvh {
-        assert_eq!(bounds.len(), 2 * nu * nv, "a grid has two triangles a cell");
+    pub fn build_grid(nu: usize, nv: usize, bounds: impl Fn(usize) -> Aabb) -> Bvh {
+        let n = 2 * nu * nv;
         let mut g = GridBuilder {
             bounds,
             nu,
-            nodes: Vec::with_capacity(bounds.len()),
-            prims: Vec::with_capacity(bounds.len()),
+            nodes: Vec::with_capacity(n),
+            prims: Vec::with_capacity(n),
         };
         if nu == 0
             || nv == 0
