@@ -213,7 +213,9 @@ mod tests {
         };
         let lin5 = |v: f64| (v.clamp(0.0, 1.0) * 31.0 + 0.5).floor() as u16;
         let p18 = |v: f64| (v.clamp(0.0, 1.0).powf(1.0 / 1.8) * 255.0 + 0.5).floor() as u16;
-        let cases: [(&dyn Fn(f64) -> u16, &dyn Fn(u16) -> f64, u16); 7] = [
+        type Curve<'a> = &'a dyn Fn(f64) -> u16;
+        type Guess<'a> = &'a dyn Fn(u16) -> f64;
+        let cases: [(Curve, Guess, u16); 7] = [
             (&srgb8, &|k| inv22(k).powf(2.2), 255),
             (&g22, &inv22, 255),
             (&g22, &|k| inv22(k) * 1.03, 255),
