@@ -126,8 +126,16 @@ pub(crate) fn quantise(film: &Film, spec: &OutputSpec, alpha: bool) -> Plane {
             // by alpha), two `powf` each; a table of its steps replaces them on big 8-bit
             // pictures (output::steps).
             let q = |v: f64| (curve.encode(film.linear(v)) * max + 0.5).floor() as u16;
+            // Where q steps to k, roughly: the curves' inverses at k − ½.
+            let guess = |k: u16| {
+                let l = curve.decode((k as f64 - 0.5) / max);
+                match film.gamma {
+                    GammaMode::Corrected(g) if g != 1.0 => l.powf(1.0 / g),
+                    _ => l,
+                }
+            };
             let steps = if bits <= 8 && n >= STEPS_MIN_PIXELS {
-                Steps::new(q, max as u16)
+                Steps::new_near(q, guess, max as u16)
             } else {
                 None
             };

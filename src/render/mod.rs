@@ -22,6 +22,7 @@ mod noise_data;
 mod noise_lattice;
 pub mod normal;
 pub mod pattern;
+mod pattern_wrap;
 mod photon_file;
 mod photon_tree;
 pub mod photons;

@@ -16,6 +16,7 @@ use crate::scene::pattern::{Pattern, PatternKind, Slope, Wave};
 
 use super::fractal::{fractal, fractal2_lanes, magnet_lanes};
 use super::noise;
+use super::pattern_wrap::{fmod, rem_euclid};
 use super::warp;
 
 /// Keeps points that sit exactly on a checker boundary (a plane at y = 0 computed as -1e-17)
@@ -118,8 +119,8 @@ fn shape(pat: &Pattern, v: f64) -> f64 {
         return v;
     }
     let x = v * pat.frequency + pat.phase;
-    // `%` is a software fmod; below WRAP in size it returns x itself, as most values are.
-    let mut v = if x.abs() < WRAP { x } else { x % WRAP };
+    // `%` would be the software fmod (see `pattern_wrap`).
+    let mut v = fmod(x, WRAP);
     if v < 0.0 {
         // Measured: gradient x at x = -0.3 gives 0.7, so negatives wrap by 1, not WRAP.
         v += 1.0;
@@ -174,12 +175,12 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
                 // fmod's exact result here (Sterbenz: v − 1 is exact for v in [1, 2]).
                 v - 1.0
             } else if v > 1.0 {
-                v % 1.0
+                fmod(v, 1.0)
             } else {
                 v
             }
         }
-        PatternKind::Onion => q.length() % 1.0,
+        PatternKind::Onion => fmod(q.length(), 1.0),
         PatternKind::Radial => {
             let a = (-q.z).atan2(q.x) / TAU;
             a - a.floor()
@@ -270,7 +271,7 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
             } else {
                 let v = f.eval(&[q.x, q.y, q.z]);
                 if v > 1.0 {
-                    v % 1.0
+                    fmod(v, 1.0)
                 } else {
                     v
                 }
@@ -410,14 +411,14 @@ fn hexagon(q: DVec3) -> usize {
             best = (d, i, j);
         }
     }
-    (best.2 - best.1).rem_euclid(3.0) as usize
+    rem_euclid(best.2 - best.1, 3.0) as usize
 }
 
 /// Unit squares in the x-z plane: items 0 and 3 alternate along x where floor(z) is even,
 /// 1 and 2 where it is odd (measured).
 fn square(q: DVec3) -> usize {
-    let ix = q.x.floor().rem_euclid(2.0) as usize;
-    let iz = q.z.floor().rem_euclid(2.0) as usize;
+    let ix = rem_euclid(q.x.floor(), 2.0) as usize;
+    let iz = rem_euclid(q.z.floor(), 2.0) as usize;
     [[0, 3], [1, 2]][iz][ix]
 }
 
@@ -430,7 +431,7 @@ fn triangular(q: DVec3) -> usize {
     let w = 2.0 * q.z / s3;
     let (iu, iw) = (u.floor(), w.floor());
     let upper = (u - iu) + (w - iw) > 1.0;
-    let d = (iw - iu).rem_euclid(3.0) as usize;
+    let d = rem_euclid(iw - iu, 3.0) as usize;
     [[0, 3], [2, 1], [4, 5]][d.min(2)][upper as usize]
 }
 
@@ -455,12 +456,12 @@ fn brick(q: DVec3, size: DVec3, mortar: f64) -> usize {
         return 1;
     }
     let row = (q.y / size.y).floor();
-    let odd = row.rem_euclid(2.0) != 0.0;
+    let odd = rem_euclid(row, 2.0) != 0.0;
     let x = if odd { q.x + size.x / 2.0 } else { q.x };
     let z = if odd { q.z } else { q.z + size.z / 2.0 };
-    let xm = x.rem_euclid(size.x);
-    let ym = q.y.rem_euclid(size.y);
-    let zm = z.rem_euclid(size.z);
+    let xm = rem_euclid(x, size.x);
+    let ym = rem_euclid(q.y, size.y);
+    let zm = rem_euclid(z, size.z);
     let in_mortar = xm >= size.x - mortar || ym >= size.y - mortar || zm >= size.z - mortar;
     (!in_mortar) as usize
 }

@@ -5,6 +5,8 @@
 
 use crate::math::DVec3;
 
+use super::pattern_wrap::rem_euclid;
+
 const SQRT3: f64 = 1.732_050_807_568_877_2;
 
 /// The value of `tiling n` at `p` (0 for tilings not in
@@ -37,7 +39,7 @@ fn rhombille(x: f64, z: f64) -> f64 {
         }
     }
     let (rx, rz) = (px - best.1, pz - best.2);
-    let angle = rz.atan2(rx).to_degrees().rem_euclid(360.0);
+    let angle = rem_euclid(rz.atan2(rx).to_degrees(), 360.0);
     let (kind, middle) = if (120.0..=240.0).contains(&angle) {
         (1.0, 180.0_f64)
     } else if angle >= 240.0 {

@@ -5,6 +5,7 @@ use crate::math::DVec3;
 use crate::scene::pattern::{Warp, WarpKind};
 
 use super::noise;
+use super::pattern_wrap::rem_euclid;
 
 pub fn apply(w: &Warp, q: DVec3, generator: u8) -> DVec3 {
     let identity = w.space.is_identity();
@@ -95,7 +96,7 @@ fn repeat(p: DVec3, dir: DVec3, offset: DVec3, flip: DVec3) -> DVec3 {
     let n = (p[axis] / width).floor();
     let mut q = p;
     q[axis] -= n * width;
-    if n.rem_euclid(2.0) == 1.0 {
+    if rem_euclid(n, 2.0) == 1.0 {
         for k in 0..3 {
             if flip[k] != 0.0 {
                 q[k] = if k == axis { width - q[k] } else { -q[k] };
@@ -158,7 +159,7 @@ mod tests {
         ];
         for (sph, orient, exp, p, axis, want) in cases {
             let q = wrap(DVec3::from_array(p), sph, orient, exp);
-            let v = (q[axis] * 0.1).rem_euclid(1.0);
+            let v = rem_euclid(q[axis] * 0.1, 1.0);
             assert!((v - want).abs() < 1e-9, "{p:?}: {v} vs {want}");
         }
     }
