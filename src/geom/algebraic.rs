@@ -7,7 +7,7 @@
 
 use crate::geom::poly::{
     first_root_in, roots_in, roots_in_window, sturm_first_root_in, sturm_roots_in,
-    sturm_roots_in_window, MAX_DEGREE,
+    sturm_roots_in_window, surely_definite_quartic, MAX_DEGREE,
 };
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
@@ -116,6 +116,9 @@ impl Algebraic {
         let Some((hi, len)) = self.along_ray(ray, &mut c) else {
             return;
         };
+        if self.surely_misses(&c, hi) {
+            return;
+        }
         let c = &c[..=self.order];
         let roots = match (self.sturm, window) {
             (true, None) => sturm_roots_in(c, EPSILON * len, hi),
@@ -154,6 +157,15 @@ impl Algebraic {
             .map(|v| (v / c[lead]).abs())
             .fold(0.0, f64::max);
         Some(((1.0 + m).min(FAR), len))
+    }
+
+    /// A quartic along the ray (`c`, searched up to `hi`) that keeps one sign by a clear
+    /// margin: every root finder would find no root (see `surely_definite_quartic`).
+    #[inline(always)]
+    fn surely_misses(&self, c: &[f64; MAX_ORDER + 1], hi: f64) -> bool {
+        self.order == 4
+            && c[4] != 0.0
+            && surely_definite_quartic(&[c[0], c[1], c[2], c[3], c[4]], hi)
     }
 
     /// The polynomial along `origin + t·dir` (ascending coefficients in t).
@@ -314,6 +326,9 @@ impl Shape for Algebraic {
     fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
         let mut c = [0.0; MAX_ORDER + 1];
         let (hi, len) = self.along_ray(ray, &mut c)?;
+        if self.surely_misses(&c, hi) {
+            return None;
+        }
         let keep = |x: f64| x / len > EPSILON;
         if self.sturm {
             return sturm_first_root_in(&c[..=self.order], EPSILON * len, hi, keep)

@@ -16,7 +16,9 @@ use std::ops::Deref;
 
 use crate::geom::bernstein::surely_no_root;
 
+mod definite;
 mod sturm_first;
+pub use definite::surely_definite_quartic;
 pub use sturm_first::{sturm_first_root_in, sturm_roots_in_window};
 
 /// Highest degree handled; higher-degree input yields no roots rather than a panic.
