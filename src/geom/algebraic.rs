@@ -116,7 +116,7 @@ impl Algebraic {
         let Some((hi, len)) = self.along_ray(ray, &mut c) else {
             return;
         };
-        if self.surely_misses(&c, hi) {
+        if self.surely_misses(&c, EPSILON * len, hi) {
             return;
         }
         let c = &c[..=self.order];
@@ -159,13 +159,13 @@ impl Algebraic {
         Some(((1.0 + m).min(FAR), len))
     }
 
-    /// A quartic along the ray (`c`, searched up to `hi`) that keeps one sign by a clear
+    /// A quartic along the ray (`c`, searched over `[lo, hi]`) that keeps one sign by a clear
     /// margin: every root finder would find no root (see `surely_definite_quartic`).
     #[inline(always)]
-    fn surely_misses(&self, c: &[f64; MAX_ORDER + 1], hi: f64) -> bool {
+    fn surely_misses(&self, c: &[f64; MAX_ORDER + 1], lo: f64, hi: f64) -> bool {
         self.order == 4
             && c[4] != 0.0
-            && surely_definite_quartic(&[c[0], c[1], c[2], c[3], c[4]], hi)
+            && surely_definite_quartic(&[c[0], c[1], c[2], c[3], c[4]], lo, hi)
     }
 
     /// The polynomial along `origin + t·dir` (ascending coefficients in t).
@@ -326,7 +326,7 @@ impl Shape for Algebraic {
     fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
         let mut c = [0.0; MAX_ORDER + 1];
         let (hi, len) = self.along_ray(ray, &mut c)?;
-        if self.surely_misses(&c, hi) {
+        if self.surely_misses(&c, EPSILON * len, hi) {
             return None;
         }
         let keep = |x: f64| x / len > EPSILON;
