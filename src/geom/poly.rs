@@ -144,6 +144,45 @@ pub fn roots_in(c: &[f64], lo: f64, hi: f64) -> Roots {
     out
 }
 
+/// [`roots_in`] for a polynomial of degree at most 2 whose interval end `hi` costs something
+/// (Cauchy's bound: a division per coefficient) and is asked only when a root at or above
+/// `lo` must be checked against it: the same roots, bit for bit (`quadratic`'s arithmetic and
+/// `Roots::push`'s merging of equal values), in a two-entry array with their count.
+#[inline]
+pub fn low_roots_in(c: &[f64], lo: f64, hi: impl Fn() -> f64) -> ([f64; 2], usize) {
+    let (mut r, mut n) = ([0.0; 2], 0);
+    match trim(c) {
+        Some([c0, c1]) => {
+            r[0] = -c0 / c1;
+            n = 1;
+        }
+        Some([cc, b, a]) => {
+            let disc = b * b - 4.0 * a * cc;
+            if disc > 0.0 {
+                let q = -0.5 * (b + b.signum() * disc.sqrt());
+                let (r1, r2) = (q / a, if q != 0.0 { cc / q } else { q / a });
+                r = [r1.min(r2), r1.max(r2)];
+                n = if r[1] != r[0] { 2 } else { 1 };
+            } else if disc == 0.0 {
+                r[0] = -0.5 * b / a;
+                n = 1;
+            }
+        }
+        _ => {}
+    }
+    let (mut out, mut m) = ([0.0; 2], 0);
+    let mut end = None;
+    for &x in &r[..n] {
+        // `roots_in` keeps the roots in [lo, hi] when lo <= hi, which x >= lo and x <= hi
+        // imply.
+        if x >= lo && x <= *end.get_or_insert_with(&hi) {
+            out[m] = x;
+            m += 1;
+        }
+    }
+    (out, m)
+}
+
 /// The roots `isolate` reports for `d` on [lo, hi] with critical points `crit` (ascending),
 /// in order, each as its bracket (a, b, sign of d at a) written into `out`; an exact zero
 /// has a == b. Returns how many.
@@ -783,6 +822,35 @@ mod tests {
                 let x = rng.next() * 8.0 - 4.0;
                 assert_eq!(small.sign_changes(x), full.sign_changes(x));
             }
+        }
+    }
+
+    /// `low_roots_in` gives `roots_in`'s roots bit for bit, with the interval end asked only
+    /// when a root reaches it: random quadratics and lines, double and near-double roots.
+    #[test]
+    fn low_roots_are_roots_ins() {
+        let mut rng = crate::geom::test_rng::Lcg(11);
+        for case in 0..50_000 {
+            let mut c = [
+                rng.next() * 8.0 - 4.0,
+                rng.next() * 8.0 - 4.0,
+                rng.next() - 0.5,
+            ];
+            match case % 5 {
+                0 => c[2] = 0.0,
+                1 => c[0] = c[1] * c[1] / (4.0 * c[2]),
+                2 => c[1] = 0.0,
+                _ => {}
+            }
+            let (lo, hi) = (rng.next() - 0.5, rng.next() * 10.0);
+            let want = roots_in(&c, lo, hi);
+            let asked = std::cell::Cell::new(false);
+            let (got, n) = low_roots_in(&c, lo, || {
+                asked.set(true);
+                hi
+            });
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&got[..n]), bits(&want), "{c:?} {lo} {hi}");
         }
     }
 
