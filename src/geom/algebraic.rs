@@ -6,8 +6,8 @@
 //! POV-Ray; `clipped_by` gives them bounds.
 
 use crate::geom::poly::{
-    first_root_in, roots_in, roots_in_window, sturm_first_root_in, sturm_roots_in,
-    sturm_roots_in_window, MAX_DEGREE,
+    first_root_in, low_roots_in, roots_in, roots_in_window, sturm_first_root_in, sturm_roots_in,
+    sturm_roots_in_window, surely_definite_quartic, MAX_DEGREE,
 };
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
@@ -112,10 +112,19 @@ impl Algebraic {
 
     /// Crossings with the ray (its `t`), those outside `window` possibly left out.
     fn crossings(&self, ray: &Ray, window: Option<(f64, f64)>, out: &mut Vec<Hit>) {
+        if self.order <= 2 && !self.sturm && window.is_none() {
+            if let Some((roots, n, len)) = self.low_order_roots(ray) {
+                out.extend(roots[..n].iter().map(|t| Hit::new(t / len)));
+            }
+            return;
+        }
         let mut c = [0.0; MAX_ORDER + 1];
         let Some((hi, len)) = self.along_ray(ray, &mut c) else {
             return;
         };
+        if self.surely_misses(&c, EPSILON * len, hi) {
+            return;
+        }
         let c = &c[..=self.order];
         let roots = match (self.sturm, window) {
             (true, None) => sturm_roots_in(c, EPSILON * len, hi),
@@ -135,25 +144,46 @@ impl Algebraic {
     /// the search interval and the direction's length; None when there is nothing to solve.
     #[inline(always)]
     fn along_ray(&self, ray: &Ray, c: &mut [f64; MAX_ORDER + 1]) -> Option<(f64, f64)> {
+        let (len, lead) = self.along_ray_lead(ray, c)?;
+        Some((cauchy(c, lead), len))
+    }
+
+    /// The polynomial along the ray in units of its unit direction (into `c`), the
+    /// direction's length and the degree (its last nonzero coefficient); None when there is
+    /// nothing to solve.
+    #[inline(always)]
+    fn along_ray_lead(&self, ray: &Ray, c: &mut [f64; MAX_ORDER + 1]) -> Option<(f64, usize)> {
         let len = ray.dir.length();
         if !(len > 0.0 && len.is_finite()) || self.terms.is_empty() {
             return None;
         }
         let u = ray.dir / len;
         self.along(ray.origin, u, c);
-        // Cauchy's bound on the roots keeps the search interval finite.
         let lead = c[..=self.order]
             .iter()
             .rposition(|v| *v != 0.0)
             .unwrap_or(0);
-        if lead == 0 {
-            return None;
-        }
-        let m = c[..lead]
-            .iter()
-            .map(|v| (v / c[lead]).abs())
-            .fold(0.0, f64::max);
-        Some(((1.0 + m).min(FAR), len))
+        (lead != 0).then_some((len, lead))
+    }
+
+    /// A quadric's (or a lower-degree) polynomial along the ray, not `sturm`: its roots as
+    /// `roots_in` gives them on [EPSILON, Cauchy's bound], the bound computed only when a
+    /// root needs it (most rays miss most quadrics of an unbounded scene).
+    #[inline(always)]
+    fn low_order_roots(&self, ray: &Ray) -> Option<([f64; 2], usize, f64)> {
+        let mut c = [0.0; MAX_ORDER + 1];
+        let (len, lead) = self.along_ray_lead(ray, &mut c)?;
+        let (roots, n) = low_roots_in(&c[..=lead], EPSILON * len, || cauchy(&c, lead));
+        Some((roots, n, len))
+    }
+
+    /// A quartic along the ray (`c`, searched over `[lo, hi]`) that keeps one sign by a clear
+    /// margin: every root finder would find no root (see `surely_definite_quartic`).
+    #[inline(always)]
+    fn surely_misses(&self, c: &[f64; MAX_ORDER + 1], lo: f64, hi: f64) -> bool {
+        self.order == 4
+            && c[4] != 0.0
+            && surely_definite_quartic(&[c[0], c[1], c[2], c[3], c[4]], lo, hi)
     }
 
     /// The polynomial along `origin + t·dir` (ascending coefficients in t).
@@ -251,6 +281,21 @@ impl Algebraic {
     }
 }
 
+/// Cauchy's bound on the roots, `1 + max|c_i / c_lead|` (at most `FAR`), which keeps the
+/// search interval finite. The maximum ignores NaN quotients, as `f64::max` does, and does
+/// not depend on the order of the quotients.
+#[inline(always)]
+fn cauchy(c: &[f64; MAX_ORDER + 1], lead: usize) -> f64 {
+    let mut m = 0.0;
+    for v in &c[..lead] {
+        let q = (v / c[lead]).abs();
+        if q > m {
+            m = q;
+        }
+    }
+    (1.0 + m).min(FAR)
+}
+
 /// `Algebraic::powers` for every power below `N`, whatever the order (the rows above the
 /// order are not used): loops of constant length, which the compiler unrolls into registers.
 #[inline(always)]
@@ -312,8 +357,21 @@ impl Shape for Algebraic {
     /// (`first_root_in`); the `t` are increasing in the roots, so the first root whose `t`
     /// passes `EPSILON` gives the nearest crossing.
     fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
+        if self.order <= 2 && !self.sturm {
+            let (roots, n, len) = self.low_order_roots(ray)?;
+            return roots[..n]
+                .iter()
+                .copied()
+                .find(|&x| x / len > EPSILON)
+                .map(|x| x / len)
+                .filter(|&t| t < tmax)
+                .map(Hit::new);
+        }
         let mut c = [0.0; MAX_ORDER + 1];
         let (hi, len) = self.along_ray(ray, &mut c)?;
+        if self.surely_misses(&c, EPSILON * len, hi) {
+            return None;
+        }
         let keep = |x: f64| x / len > EPSILON;
         if self.sturm {
             return sturm_first_root_in(&c[..=self.order], EPSILON * len, hi, keep)

@@ -16,7 +16,9 @@ use std::ops::Deref;
 
 use crate::geom::bernstein::surely_no_root;
 
+mod definite;
 mod sturm_first;
+pub use definite::surely_definite_quartic;
 pub use sturm_first::{sturm_first_root_in, sturm_roots_in_window};
 
 /// Highest degree handled; higher-degree input yields no roots rather than a panic.
@@ -64,15 +66,37 @@ fn trim(c: &[f64]) -> Option<&[f64]> {
     (n <= MAX_DEGREE + 1).then_some(&c[..n])
 }
 
-/// Horner evaluation.
+/// Horner evaluation, from 0: `((0·x + c_n)·x + c_{n-1})…`.
+///
+/// The first step, `0·x + c_n`, is `c_n` itself when `x` is finite and `c_n` nonzero (a
+/// zero's sign and a NaN from an infinite `x` are the only ways it differs), so it is
+/// skipped then: one multiply-add less in the dependent chain, the same bits.
 #[inline]
 pub fn eval(c: &[f64], x: f64) -> f64 {
-    c.iter().rev().fold(0.0, |acc, &ci| acc * x + ci)
+    match c.split_last() {
+        Some((&lead, rest)) if lead != 0.0 && x.is_finite() => {
+            rest.iter().rev().fold(lead, |acc, &ci| acc * x + ci)
+        }
+        _ => c.iter().rev().fold(0.0, |acc, &ci| acc * x + ci),
+    }
 }
 
-/// Value and first derivative in one Horner pass.
+/// Value and first derivative in one Horner pass, from `f = df = 0`. For a finite `x` and a
+/// nonzero leading coefficient the first two steps give `df = c_n` and `f = c_n·x + c_{n-1}`
+/// exactly (`0·x + 0` is `+0`, and `±0 + c_n` is `c_n`), so they are skipped (see [`eval`]).
 #[inline]
 pub fn eval_with_derivative(c: &[f64], x: f64) -> (f64, f64) {
+    if let [rest @ .., c1, lead] = c {
+        if *lead != 0.0 && x.is_finite() {
+            let mut df = *lead;
+            let mut f = lead * x + c1;
+            for &ci in rest.iter().rev() {
+                df = df * x + f;
+                f = f * x + ci;
+            }
+            return (f, df);
+        }
+    }
     let mut f = 0.0;
     let mut df = 0.0;
     for &ci in c.iter().rev() {
@@ -118,6 +142,45 @@ pub fn roots_in(c: &[f64], lo: f64, hi: f64) -> Roots {
         }
     }
     out
+}
+
+/// [`roots_in`] for a polynomial of degree at most 2 whose interval end `hi` costs something
+/// (Cauchy's bound: a division per coefficient) and is asked only when a root at or above
+/// `lo` must be checked against it: the same roots, bit for bit (`quadratic`'s arithmetic and
+/// `Roots::push`'s merging of equal values), in a two-entry array with their count.
+#[inline]
+pub fn low_roots_in(c: &[f64], lo: f64, hi: impl Fn() -> f64) -> ([f64; 2], usize) {
+    let (mut r, mut n) = ([0.0; 2], 0);
+    match trim(c) {
+        Some([c0, c1]) => {
+            r[0] = -c0 / c1;
+            n = 1;
+        }
+        Some([cc, b, a]) => {
+            let disc = b * b - 4.0 * a * cc;
+            if disc > 0.0 {
+                let q = -0.5 * (b + b.signum() * disc.sqrt());
+                let (r1, r2) = (q / a, if q != 0.0 { cc / q } else { q / a });
+                r = [r1.min(r2), r1.max(r2)];
+                n = if r[1] != r[0] { 2 } else { 1 };
+            } else if disc == 0.0 {
+                r[0] = -0.5 * b / a;
+                n = 1;
+            }
+        }
+        _ => {}
+    }
+    let (mut out, mut m) = ([0.0; 2], 0);
+    let mut end = None;
+    for &x in &r[..n] {
+        // `roots_in` keeps the roots in [lo, hi] when lo <= hi, which x >= lo and x <= hi
+        // imply.
+        if x >= lo && x <= *end.get_or_insert_with(&hi) {
+            out[m] = x;
+            m += 1;
+        }
+    }
+    (out, m)
 }
 
 /// The roots `isolate` reports for `d` on [lo, hi] with critical points `crit` (ascending),
@@ -584,188 +647,4 @@ fn numerically_zero(c: &[f64], x: f64) -> bool {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::geom::test_rng::from_roots;
-
-    fn check(found: &[f64], want: &[f64], tol: f64) {
-        assert_eq!(found.len(), want.len(), "found {found:?} want {want:?}");
-        for (f, w) in found.iter().zip(want) {
-            assert!((f - w).abs() < tol, "found {found:?} want {want:?}");
-        }
-    }
-
-    #[test]
-    fn quartic_with_known_roots() {
-        let cases: &[&[f64]] = &[
-            &[-1.0, 0.5, 2.0, 3.0],
-            &[0.1, 0.10001, 0.7, 0.70001],
-            &[-3.0, -2.0, 5.0, 9.0],
-            &[1.0, 2.0, 3.0, 4.0],
-            &[1e-3, 2e-3, 1e3, 2e3],
-        ];
-        for roots in cases {
-            let c = from_roots(roots);
-            check(
-                &roots_in(&c, -10.0, 1e4),
-                roots,
-                1e-9 * roots[3].abs().max(1.0),
-            );
-            check(
-                &sturm_roots_in(&c, -10.0, 1e4),
-                roots,
-                1e-9 * roots[3].abs().max(1.0),
-            );
-        }
-    }
-
-    #[test]
-    fn interval_limits_roots() {
-        let c = from_roots(&[-1.0, 0.5, 2.0, 3.0]);
-        check(&roots_in(&c, 0.0, 2.5), &[0.5, 2.0], 1e-12);
-        check(&sturm_roots_in(&c, 0.0, 2.5), &[0.5, 2.0], 1e-12);
-        assert!(roots_in(&c, 3.5, 2.0).is_empty());
-    }
-
-    #[test]
-    fn no_real_roots() {
-        // (x² + 1)(x² + 4)
-        let c = [4.0, 0.0, 5.0, 0.0, 1.0];
-        assert!(roots_in(&c, -100.0, 100.0).is_empty());
-        assert!(sturm_roots_in(&c, -100.0, 100.0).is_empty());
-    }
-
-    #[test]
-    fn double_root_found_by_sturm() {
-        // (x - 1)² (x + 2)(x - 3): tangent at 1.
-        let c = from_roots(&[1.0, 1.0, -2.0, 3.0]);
-        let s = sturm_roots_in(&c, -5.0, 5.0);
-        check(&s, &[-2.0, 1.0, 3.0], 1e-6);
-        let r = roots_in(&c, -5.0, 5.0);
-        assert!(r.len() >= 2, "{r:?}");
-    }
-
-    #[test]
-    fn low_degrees_and_degenerate_input() {
-        check(&roots_in(&[-2.0, 1.0], -5.0, 5.0), &[2.0], 1e-15);
-        check(&roots_in(&[-4.0, 0.0, 1.0], -5.0, 5.0), &[-2.0, 2.0], 1e-15);
-        check(
-            &roots_in(&[-1.0, -1.0, 0.0, 1.0, 0.0], -5.0, 5.0),
-            &[1.324_717_957_244_746],
-            1e-12,
-        );
-        assert!(roots_in(&[], 0.0, 1.0).is_empty());
-        assert!(roots_in(&[0.0, 0.0], 0.0, 1.0).is_empty());
-        assert!(roots_in(&[3.0], 0.0, 1.0).is_empty());
-        assert!(sturm_roots_in(&[3.0], 0.0, 1.0).is_empty());
-        assert!(roots_in(&[f64::NAN, 1.0, 1.0, 1.0, 1.0], 0.0, 1.0).len() <= 4);
-        assert!(roots_in(&[1.0; 40], 0.0, 1.0).is_empty());
-    }
-
-    /// Roots found with a window are those found without it (bit for bit) inside the window,
-    /// plus maybe some outside, never others: random quartics, quintics and sextics through
-    /// close and far roots, windows anywhere.
-    #[test]
-    fn window_keeps_the_roots_inside_exactly() {
-        let mut seed = 0x2545_f491_4f6c_dd1du64;
-        let mut rnd = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
-        for case in 0..20_000 {
-            let deg = 4 + case % 3;
-            let mut c: Vec<f64> = (0..=deg).map(|_| rnd() * 20.0 - 10.0).collect();
-            if case % 4 == 0 {
-                let roots: Vec<f64> = (0..deg).map(|_| rnd() * 10.0 - 2.0).collect();
-                c = from_roots(&roots);
-            }
-            if case % 4 == 1 {
-                // Roots in pairs, shifted by a hair: grazing crossings near the window.
-                let roots: Vec<f64> = (0..deg).map(|k| (k / 2) as f64 * 3.0 + rnd()).collect();
-                c = from_roots(&roots);
-                c[0] += (rnd() - 0.5) * 1e-9;
-            }
-            let (lo, hi) = (1e-6, 1.0 + 50.0 * rnd());
-            let full = roots_in(&c, lo, hi);
-            let w0 = rnd() * 12.0 - 1.0;
-            let (wlo, whi) = (w0, w0 + rnd() * 3.0);
-            let part = roots_in_window(&c, lo, hi, wlo, whi);
-            crate::geom::test_rng::check_window(&full, &part, (wlo, whi), &format!("{c:?}"));
-            let all = roots_in_window(&c, lo, hi, f64::NEG_INFINITY, f64::INFINITY);
-            assert_eq!(&*all, &*full);
-        }
-    }
-
-    /// The first root kept is `roots_in`'s first root kept, bit for bit: random polynomials
-    /// of degree 1 to 8 with clustered, double and far roots, and thresholds anywhere.
-    #[test]
-    fn first_root_is_roots_ins_first() {
-        let mut rng = crate::geom::test_rng::Lcg(17);
-        for case in 0..20_000 {
-            let deg = 1 + case % 8;
-            let mut roots: Vec<f64> = (0..deg).map(|_| rng.next() * 8.0 - 2.0).collect();
-            if case % 3 == 0 {
-                roots[0] = roots[deg - 1] + 1e-9 * rng.next();
-            }
-            let mut c = from_roots(&roots);
-            if case % 5 == 0 {
-                c[0] += rng.next() - 0.5;
-            }
-            let (lo, hi) = (rng.next() - 0.5, 4.0 + 4.0 * rng.next());
-            let all = roots_in(&c, lo, hi);
-            let first = |cut: f64| first_root_in(&c, lo, hi, |x| x > cut);
-            crate::geom::test_rng::check_first_root(
-                &mut rng,
-                &all,
-                (lo, hi),
-                first,
-                &format!("{c:?}"),
-            );
-        }
-        assert_eq!(
-            first_root_in(&[1.0, 0.0, 0.0, 1.0], f64::NAN, 1.0, |_| true),
-            None
-        );
-    }
-
-    /// A sequence sized for the polynomial holds the same members as the largest one: the
-    /// same counts everywhere, on random polynomials of degree 2 to 8 with double roots.
-    #[test]
-    fn sized_sturm_sequence_is_the_full_one() {
-        let mut rng = crate::geom::test_rng::Lcg(5);
-        for case in 0..3_000 {
-            let deg = 2 + case % 7;
-            let mut roots: Vec<f64> = (0..deg).map(|_| rng.next() * 6.0 - 3.0).collect();
-            if case % 2 == 0 {
-                roots[1] = roots[0];
-            }
-            let c = from_roots(&roots);
-            let small: Sturm<9> = Sturm::new(&c);
-            let full: Sturm<{ MAX_DEGREE + 1 }> = Sturm::new(&c);
-            assert_eq!(small.count, full.count);
-            for k in 0..small.count {
-                assert_eq!(small.lens[k], full.lens[k]);
-                for j in 0..small.lens[k] {
-                    assert_eq!(small.polys[k][j].to_bits(), full.polys[k][j].to_bits());
-                }
-            }
-            if deg <= 4 {
-                let tiny: Sturm<5> = Sturm::new(&c);
-                assert_eq!(tiny.count, full.count);
-            }
-            for _ in 0..8 {
-                let x = rng.next() * 8.0 - 4.0;
-                assert_eq!(small.sign_changes(x), full.sign_changes(x));
-            }
-        }
-    }
-
-    #[test]
-    fn root_on_boundary() {
-        let c = from_roots(&[0.0, 1.0, 2.0, 3.0]);
-        check(&roots_in(&c, 0.0, 3.0), &[0.0, 1.0, 2.0, 3.0], 1e-12);
-        check(&sturm_roots_in(&c, 0.0, 3.0), &[0.0, 1.0, 2.0, 3.0], 1e-12);
-    }
-}
+mod tests;

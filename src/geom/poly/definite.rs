@@ -1,0 +1,207 @@
+//! A certificate that a quartic keeps one sign along the ray's search interval, by a margin above
+//! rounding, so that a ray missing a quartic surface by a clear margin is answered without
+//! isolating any root (most rays near a `quartic` miss it, and their isolation polishes a
+//! critical point from a bracket reaching Cauchy's bound: twenty Newton steps).
+//!
+//! The root finders here decide everything from the signs of Horner evaluations: a change of
+//! sign between two points, or an exact zero. Where every evaluation in the search interval
+//! is nonzero and of one sign, [`roots_in`](super::roots_in) and its variants find
+//! nothing, whatever points they evaluate at; and [`sturm_roots_in`](super::sturm_roots_in)
+//! adds a root only where the polynomial is zero to within its rounding error. So the answer
+//! "no root" is theirs to the bit.
+
+use crate::geom::bernstein::surely_no_root;
+
+/// Relative margin, against the size of the terms, that the polynomial's value must keep
+/// everywhere: Horner's rounding error on a quartic is below `8 · 2^-53` of that size, and
+/// the rounding of the Taylor shift below is of the same order, both far below this.
+const MARGIN: f64 = 1e-11;
+
+/// Whether every Horner evaluation of the quartic `c` (ascending, `c[4] != 0`) at a point of
+/// `[lo, hi]` is nonzero and of one sign (that of `c[4]`, unless the interval ends before
+/// `x0` below and [`surely_no_root`] alone decides).
+///
+/// With `p = ±c` (leading coefficient positive) and `x0 = -p3 / (4 p4)`, where the cubic term
+/// of the shifted quartic nearly vanishes, the whole axis is tried first (see [`shifted`] and
+/// [`positive_for_u_ge_0`], odd terms taken with their worst sign); failing that, and when the
+/// interval starts before `x0`, [`surely_no_root`] on `[lo, x0]` and the quartic shifted to
+/// `x0` on `s >= 0` (odd terms with their own sign); when it starts after `x0`, the quartic
+/// shifted to `lo` on `s >= 0`. Rays that graze a quartic from afar, or have its roots behind
+/// them, pass the half-axis tests.
+pub fn surely_definite_quartic(c: &[f64; 5], lo: f64, hi: f64) -> bool {
+    // No overflow in any evaluation within reach (Horner's partial sums stay below `T`).
+    let reach = lo.abs().max(hi.abs());
+    let t = (((c[4].abs() * reach + c[3].abs()) * reach + c[2].abs()) * reach + c[1].abs()) * reach
+        + c[0].abs();
+    if !(t * 4.0).is_finite() || lo > hi {
+        return false;
+    }
+    let p = if c[4] > 0.0 {
+        *c
+    } else if c[4] < 0.0 {
+        c.map(|v| -v)
+    } else {
+        return false;
+    };
+    let x0 = -p[3] / (4.0 * p[4]);
+    let m = 2.0 * MARGIN;
+    let (center, a, e) = if x0 > lo {
+        let Some((a, e)) = shifted(&p, x0) else {
+            return false;
+        };
+        let whole = positive_for_u_ge_0(
+            a[4] - m * e[4],
+            a[3].abs() + m * e[3],
+            a[2] - m * e[2],
+            a[1].abs() + m * e[1],
+            a[0] - m * e[0],
+        );
+        if whole {
+            return true;
+        }
+        if x0 >= hi {
+            return surely_no_root(c, lo, hi);
+        }
+        if !surely_no_root(c, lo, x0) {
+            return false;
+        }
+        (x0, a, e)
+    } else {
+        let Some((a, e)) = shifted(&p, lo) else {
+            return false;
+        };
+        (lo, a, e)
+    };
+    debug_assert!(center >= lo);
+    // s >= 0 only: an odd term of the right sign only helps, and is dropped.
+    positive_for_u_ge_0(
+        a[4] - m * e[4],
+        (m * e[3] - a[3]).max(0.0),
+        a[2] - m * e[2],
+        (m * e[1] - a[1]).max(0.0),
+        a[0] - m * e[0],
+    )
+}
+
+/// `p(x0 + s) = Σ a_k s^k` and the same shift of `Σ|p_j| y^j` to `|x0|`, `e`: the Horner
+/// error of `c` at `x0 + s` is below a tiny multiple of `Σ e_k |s|^k`, and the rounding of
+/// `a_k` below 2^-50 of `e_k` (`|a_k| <= e_k`). `None` when they overflow.
+fn shifted(p: &[f64; 5], x0: f64) -> Option<([f64; 5], [f64; 5])> {
+    let ax = x0.abs();
+    let mut a = *p;
+    let mut e = p.map(f64::abs);
+    for i in 0..4 {
+        for j in (i..4).rev() {
+            a[j] += x0 * a[j + 1];
+            e[j] += ax * e[j + 1];
+        }
+    }
+    e.iter().all(|v| v.is_finite()).then_some((a, e))
+}
+
+/// Whether `q4 u⁴ - b3 u³ + q2 u² - b1 u + q0 > 0` for every `u >= 0` (`b3, b1 >= 0`), by a
+/// sum of squares: `u³ <= (ε u⁴ + u² / ε) / 2` with `ε = q4 / b3` leaves at least
+/// `r4 u⁴ + r2 u² - b1 u + q0` (`r4 = q4 / 2`, `r2 = q2 - b3² / 2q4`), which is
+/// `r4 (u² - w)² + y u² - b1 u + z` with `y = r2 + 2 r4 w`, `z = q0 - r4 w²` for any `w`
+/// (the best `w` solves `3 r4 w² + r2 w - q0 = 0`), positive when `y, z > 0` and
+/// `b1² < 4 y z`. Each rounded quantity is pushed by 1e-6 of its terms the safe way, far
+/// more than its rounding.
+fn positive_for_u_ge_0(q4: f64, b3: f64, q2: f64, b1: f64, q0: f64) -> bool {
+    const SLACK: f64 = 1e-6;
+    if !(q4 > 0.0 && q0 > 0.0) {
+        return false;
+    }
+    let r4 = 0.5 * q4 * (1.0 - SLACK);
+    let cubic = b3 * b3 / (2.0 * q4) * (1.0 + SLACK);
+    let r2 = q2 - SLACK * q2.abs() - cubic;
+    let w = ((r2 * r2 + 12.0 * r4 * q0).sqrt() - r2) / (6.0 * r4);
+    let (yw, zw) = (2.0 * r4 * w, r4 * w * w);
+    let y = r2 + yw - SLACK * (r2.abs() + yw.abs());
+    let z = q0 - zw - SLACK * (q0 + zw);
+    y > 0.0 && z > 0.0 && b1 * b1 * (1.0 + SLACK) < 4.0 * y * z * (1.0 - SLACK)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::poly::{eval, roots_in_isolated, sturm_roots_in};
+    use crate::geom::test_rng::{from_roots, Lcg};
+
+    /// Where the certificate holds, the root finders find nothing on the interval, and every
+    /// evaluation on a fine grid of it has one sign: random quartics
+    /// with real roots (some behind the interval's start), complex pairs near and far from
+    /// the axis, values grazing zero, on intervals starting anywhere.
+    #[test]
+    fn definite_quartics_have_no_roots() {
+        let mut rng = Lcg(41);
+        let mut certified = 0;
+        for case in 0..60_000 {
+            let re = |r: &mut Lcg| r.next() * 20.0 - 5.0;
+            // ((x - m1)² + w1²)((x - m2)² + w2²), or real roots, or shifted by a hair.
+            let (m1, m2) = (re(&mut rng), re(&mut rng));
+            let w1 = rng.next() * rng.next() * 4.0;
+            let w2 = rng.next() * rng.next() * 4.0;
+            let pair = |m: f64, w: f64| [m * m + w * w, -2.0 * m, 1.0];
+            let (p1, p2) = (pair(m1, w1), pair(m2, w2));
+            let mut c = [0.0; 5];
+            for i in 0..3 {
+                for j in 0..3 {
+                    c[i + j] += p1[i] * p2[j];
+                }
+            }
+            if case % 4 == 1 {
+                let roots = [re(&mut rng), re(&mut rng), re(&mut rng), re(&mut rng)];
+                c = from_roots(&roots).try_into().unwrap();
+            }
+            if case % 4 == 2 {
+                c[0] -= (w1 * w2).powi(2) * (1.0 - 1e-9 * rng.next());
+            }
+            let k = (rng.next() - 0.5) * 10f64.powi((rng.next() * 12.0) as i32 - 6);
+            let c = c.map(|v| v * k);
+            let lo = rng.next() * 24.0 - 8.0;
+            let hi = lo + 10f64.powf(rng.next() * 6.0 - 2.0);
+            if !surely_definite_quartic(&c, lo, hi) {
+                continue;
+            }
+            certified += 1;
+            assert!(roots_in_isolated(&c, lo, hi).is_empty(), "{c:?} {lo} {hi}");
+            assert!(sturm_roots_in(&c, lo, hi).is_empty(), "{c:?} {lo} {hi}");
+            let positive = eval(&c, lo) > 0.0;
+            for i in 0..=400 {
+                let x = lo + (hi - lo) * (i as f64 + rng.next()) / 401.0;
+                let v = eval(&c, x);
+                assert!(v != 0.0 && (v > 0.0) == positive, "{c:?} at {x}: {v}");
+            }
+        }
+        assert!(certified > 20_000, "{certified}");
+    }
+
+    #[test]
+    fn certifies_clear_cases_only() {
+        // (x² + 1)(x² + 4) and its negation hold; a double root, real roots ahead and NaN do
+        // not; real roots behind the interval do.
+        assert!(surely_definite_quartic(
+            &[4.0, 0.0, 5.0, 0.0, 1.0],
+            -1e6,
+            1e6
+        ));
+        assert!(surely_definite_quartic(
+            &[-4.0, 0.0, -5.0, 0.0, -1.0],
+            0.0,
+            1e6
+        ));
+        let square: [f64; 5] = from_roots(&[1.0, 1.0, 2.0, 2.0]).try_into().unwrap();
+        assert!(!surely_definite_quartic(&square, 0.0, 1e6));
+        let real: [f64; 5] = from_roots(&[1.0, 2.0, 3.0, 4.0]).try_into().unwrap();
+        assert!(!surely_definite_quartic(&real, 0.0, 1e6));
+        assert!(surely_definite_quartic(&real, 4.5, 1e6));
+        assert!(!surely_definite_quartic(&real, 3.5, 1e6));
+        let nan = [4.0, 0.0, f64::NAN, 0.0, 1.0];
+        assert!(!surely_definite_quartic(&nan, 0.0, 1e6));
+        assert!(!surely_definite_quartic(
+            &[4.0, 0.0, 5.0, 0.0, 1e300],
+            0.0,
+            1e6
+        ));
+    }
+}
