@@ -97,14 +97,31 @@ pub(super) struct Scale {
     /// and skips the scale (deeper samples reach farther, so the widest scales hold only
     /// them).
     level: u32,
-    pub(super) grid: FxHashMap<(i64, i64, i64), Ids>,
+    /// Cells by `pack`ed coordinates.
+    pub(super) grid: FxHashMap<u64, Ids>,
 }
 
 impl Scale {
-    fn key(&self, p: DVec3) -> (i64, i64, i64) {
+    fn cell_of(&self, p: DVec3) -> (i64, i64, i64) {
         let k = |v: f64| (v / self.cell).floor().clamp(-1e15, 1e15) as i64;
         (k(p.x), k(p.y), k(p.z))
     }
+
+    fn key(&self, p: DVec3) -> u64 {
+        let (x, y, z) = self.cell_of(p);
+        pack(x, y, z)
+    }
+}
+
+/// A cell's key: its coordinates modulo 2^21, in one word (a bucket of 32 bytes instead of
+/// 48, one multiply to hash instead of three). Cells 2^21 apart share a key and so a list;
+/// that only adds samples out of reach, which lookups turn away (`within`), and a sample
+/// filed under two cells of one key is listed once (`file_new`), so lookups meet the same
+/// samples in the same order.
+#[inline(always)]
+fn pack(x: i64, y: i64, z: i64) -> u64 {
+    const M: u64 = (1 << 21) - 1;
+    ((x as u64 & M) << 42) | ((y as u64 & M) << 21) | (z as u64 & M)
 }
 
 impl Cache {
@@ -157,12 +174,16 @@ impl Cache {
             let scale = &mut self.scales[at];
             scale.cell = 2f64.powi(e + shift);
             scale.level = scale.level.min(s.level);
-            let lo = scale.key(s.p - DVec3::splat(rr));
-            let hi = scale.key(s.p + DVec3::splat(rr));
+            let lo = scale.cell_of(s.p - DVec3::splat(rr));
+            let hi = scale.cell_of(s.p + DVec3::splat(rr));
             for x in lo.0..=hi.0 {
                 for y in lo.1..=hi.1 {
                     for z in lo.2..=hi.2 {
-                        scale.grid.entry((x, y, z)).or_default().push(i as u32);
+                        let ids = scale.grid.entry(pack(x, y, z)).or_default();
+                        // Listed already under a cell of the same key.
+                        if ids.last() != Some(&(i as u32)) {
+                            ids.push(i as u32);
+                        }
                     }
                 }
             }
@@ -378,6 +399,17 @@ mod tests {
                 level: 1 + i % 3,
             });
         }
+        // Far apart, in cells of one key (2^21 cells of 0.5 apart at coarser 0, 2^20 at 1),
+        // with reaches spanning several cells.
+        for j in 0..6 {
+            cache.samples.push(Sample {
+                p: DVec3::new(5.2 + f64::from(j) * 1048576.0, 5.1, 4.9),
+                n: DVec3::Z,
+                irr: DVec3::ONE,
+                r: 1.9,
+                level: 1,
+            });
+        }
         for (bound, coarser) in [(0.25, 0), (0.5, 0), (0.25, 2), (0.5, 1)] {
             if coarser != cache.coarser {
                 // A new cell size: the grids are filed from scratch.
@@ -386,11 +418,21 @@ mod tests {
                 cache.coarser = coarser;
             }
             cache.file_new(bound, 0.5);
-            for _ in 0..200 {
-                let p = DVec3::new(rnd(), rnd(), rnd()) * 10.0;
+            for k in 0..200 {
+                let mut p = DVec3::new(rnd(), rnd(), rnd()) * 10.0;
+                if k % 4 == 0 {
+                    p.x += f64::from(k % 3) * 1048576.0;
+                }
                 let from = (rnd() * 100.0) as usize;
                 let mut found = Vec::new();
                 cache.near(p, bound, 3, from, |i, _| found.push(i));
+                let mut seen = Vec::new();
+                cache.near_while(p, bound, 3, |i, _| {
+                    seen.push(i);
+                    true
+                });
+                seen.retain(|&i| i >= from);
+                assert_eq!(seen, found, "near_while lists what near does");
                 let mut want: Vec<usize> = (from..cache.samples.len())
                     .filter(|&i| {
                         let s = &cache.samples[i];

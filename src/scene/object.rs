@@ -6,8 +6,8 @@
 use std::sync::Arc;
 
 use crate::geom::{Hit, Shape};
-use crate::math::{Aabb, DVec3, Ray, Transform};
-use crate::scene::children::ChildIndex;
+use crate::math::{Aabb, DVec3, Ray, Slabs, Transform};
+use crate::scene::children::{union_first_hit, union_scan_first_hit, ChildIndex};
 use crate::scene::desc::{CsgOp, MeshData, Texture};
 use crate::scene::faces::{self, Faces};
 
@@ -306,21 +306,7 @@ impl Object {
                 children,
                 index: None,
                 ..
-            } => {
-                let inv_dir = ray.dir.recip();
-                let mut best: Option<SurfaceHit<'a>> = None;
-                let mut tmax = tmax;
-                for c in children {
-                    if c.bounds.hit(ray.origin, inv_dir, tmax).is_none() {
-                        continue;
-                    }
-                    if let Some(h) = c.first_hit(ray, tmax, s) {
-                        tmax = h.t;
-                        best = Some(h);
-                    }
-                }
-                best
-            }
+            } => union_scan_first_hit(children, ray, tmax, s),
             ObjKind::Csg {
                 op,
                 children,
@@ -377,8 +363,9 @@ impl Object {
         let ray_faces = faces.filter(|_| faces::ray_ok(ray));
         let start = s.surface.len();
         let order_from = s.csg_order.len();
+        let slabs = Slabs::new(ray.origin, inv_dir);
         let gather = |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
-            if c.bounds.hit(ray.origin, inv_dir, tmax).is_none() {
+            if !slabs.hits(&c.bounds, tmax) {
                 return;
             }
             let from = s.surface.len();
@@ -457,8 +444,9 @@ impl Object {
         {
             return true;
         }
+        let slabs = Slabs::new(ray.origin, inv_dir);
         each_member(children, index.as_deref(), ray, tmax, s, |c, _, _| {
-            if c.bounds.hit(ray.origin, inv_dir, tmax).is_some() {
+            if slabs.hits(&c.bounds, tmax) {
                 out.push(c);
             }
         });
@@ -515,12 +503,13 @@ impl Object {
                 let faces = cull.as_ref().and_then(|c| c.faces.as_ref());
                 let ray_faces = faces.filter(|_| faces::ray_ok(ray));
                 let rejecter = std::cell::Cell::new(usize::MAX);
+                let slabs = Slabs::new(ray.origin, inv_dir);
                 // Member `i` is `c`; in a union's index `c` may be a leaf of an opened member
                 // union (its number then does not matter: a union keeps every crossing).
                 let member = |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
                     // A child whose box the ray misses adds no crossings (transparent shadows
                     // through a union of many parts would otherwise test every part).
-                    if c.bounds.hit(ray.origin, inv_dir, tmax).is_none() {
+                    if !slabs.hits(&c.bounds, tmax) {
                         return;
                     }
                     // Each child's crossings are appended, then filtered in place.
@@ -619,11 +608,35 @@ impl Object {
             true,
         ) = (&self.kind, self.clip.is_empty())
         {
-            let inv_dir = ray.dir.recip();
+            let slabs = Slabs::new(ray.origin, ray.dir.recip());
             return ix.any(ray, tmax, |i| {
                 let c = ix.leaf(children, i);
-                c.bounds.hit(ray.origin, inv_dir, tmax).is_some() && c.any_hit(ray, tmax, s)
+                slabs.hits(&c.bounds, tmax) && c.any_hit(ray, tmax, s)
             });
+        }
+        if let (
+            ObjKind::Csg {
+                op: CsgOp::Union,
+                children,
+                index: None,
+                ..
+            },
+            true,
+        ) = (&self.kind, self.clip.is_empty())
+        {
+            // `first_hit` keeps looking for a nearer member after the first one crossed.
+            let slabs = Slabs::new(ray.origin, ray.dir.recip());
+            let mut pairs = children.chunks_exact(2);
+            for pair in &mut pairs {
+                let (ha, hb) = slabs.hits2(&pair[0].bounds, &pair[1].bounds, tmax);
+                if (ha && pair[0].any_hit(ray, tmax, s)) || (hb && pair[1].any_hit(ray, tmax, s)) {
+                    return true;
+                }
+            }
+            return pairs
+                .remainder()
+                .iter()
+                .any(|c| slabs.hits(&c.bounds, tmax) && c.any_hit(ray, tmax, s));
         }
         if let (ObjKind::Shape(shape, _), true) = (&self.kind, self.clip.is_empty()) {
             // `first_hit` of a leaf without clipping is the shape's `intersect_first`.
@@ -761,35 +774,4 @@ impl Object {
         }
         &self.texture
     }
-}
-
-/// A union's nearest crossing through its index, exactly as the scan over its members in order
-/// finds it: the nearest, and of crossings at the same distance the earliest member's (the scan
-/// keeps a crossing only when strictly nearer than the best so far).
-fn union_first_hit<'a>(
-    children: &'a [Object],
-    ix: &ChildIndex,
-    ray: &Ray,
-    tmax: f64,
-    s: &mut Scratch<'a>,
-) -> Option<SurfaceHit<'a>> {
-    let inv_dir = ray.dir.recip();
-    let mut best: Option<(usize, SurfaceHit<'a>)> = None;
-    ix.traverse(ray, tmax, |i, t| {
-        // An earlier member than the best so far also wins at the same distance.
-        let limit = match &best {
-            Some((bi, h)) if i < *bi => h.t.next_up(),
-            Some((_, h)) => h.t,
-            None => tmax,
-        };
-        let c = ix.leaf(children, i);
-        if c.bounds.hit(ray.origin, inv_dir, limit).is_none() {
-            return;
-        }
-        if let Some(h) = c.first_hit(ray, limit, s) {
-            *t = h.t;
-            best = Some((i, h));
-        }
-    });
-    best.map(|(_, h)| h)
 }
