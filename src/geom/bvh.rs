@@ -62,11 +62,12 @@ pub fn ray_recip(ray: &Ray) -> DVec3 {
 }
 
 /// The slab test of two boxes at once, one per SSE lane, for a ray whose slab distances cannot
-/// be NaN except along its `flat` axes (computed apart). Each lane does `Aabb::hit`'s operations in its order; without NaNs the minimum and
-/// maximum instructions give `f64::min`'s and `f64::max`'s values (up to the sign of a zero,
-/// which no comparison sees), so the answers and the entry distances are `Aabb::hit`'s bit for
-/// bit (unit tests `paired_slabs_match_aabb_hit` and `..._for_flat_rays`). `Aabb::hit` spends a third of its work on
-/// the NaN handling of `f64::min`.
+/// be NaN except along its `flat` axes (computed apart). Each lane does `Aabb::hit`'s
+/// operations in its order; without NaNs the minimum and maximum instructions give
+/// `f64::min`'s and `f64::max`'s values (up to the sign of a zero, which no comparison sees),
+/// so the answers and the entry distances are `Aabb::hit`'s bit for bit (unit tests
+/// `paired_slabs_match_aabb_hit` and `..._for_flat_rays`). `Aabb::hit` spends a third of its
+/// work on the NaN handling of `f64::min`.
 #[cfg(target_arch = "x86_64")]
 struct Slabs2 {
     origin: [std::arch::x86_64::__m128d; 3],
