@@ -16,7 +16,7 @@ fn io(e: std::io::Error) -> String {
 pub(crate) fn write_ppm(plane: &Plane, mut out: impl Write) -> Result<(), String> {
     out.write_all(&ppm_header(plane, plane.height))
         .map_err(io)?;
-    out.write_all(&ppm_samples(plane)).map_err(io)?;
+    write_ppm_samples(plane, &mut out).map_err(io)?;
     out.flush().map_err(io)
 }
 
@@ -26,13 +26,22 @@ pub(crate) fn ppm_header(plane: &Plane, height: u32) -> Vec<u8> {
     format!("P6\n{} {}\n{max}\n", plane.width, height).into_bytes()
 }
 
-/// The samples as a PPM stores them: one byte each, or two big-endian above 8 bits.
-pub(crate) fn ppm_samples(plane: &Plane) -> Vec<u8> {
-    if plane.bits > 8 {
-        plane.data.iter().flat_map(|q| q.to_be_bytes()).collect()
-    } else {
-        plane.data.iter().map(|&q| q as u8).collect()
+/// Writes the samples as a PPM stores them: one byte each, or two big-endian above 8 bits.
+/// A piece at a time through one small buffer: a buffer of the whole picture's bytes cost
+/// more in page faults than its conversion.
+pub(crate) fn write_ppm_samples(plane: &Plane, out: &mut impl Write) -> std::io::Result<()> {
+    const PIECE: usize = 16 * 1024;
+    let mut bytes = Vec::with_capacity(2 * PIECE);
+    for piece in plane.data.chunks(PIECE) {
+        bytes.clear();
+        if plane.bits > 8 {
+            bytes.extend(piece.iter().flat_map(|q| q.to_be_bytes()));
+        } else {
+            bytes.extend(piece.iter().map(|&q| q as u8));
+        }
+        out.write_all(&bytes)?;
     }
+    Ok(())
 }
 
 /// One pixel in file order (blue, green, red, then alpha when there is one).

@@ -69,7 +69,7 @@ pub fn write_banded<T>(
             }
             let r = match writer.as_mut().expect("started above") {
                 Writer::Png(w) => w.write_all(&png::sample_bytes(&plane)),
-                Writer::Ppm(w) => w.write_all(&simple::ppm_samples(&plane)),
+                Writer::Ppm(w) => simple::write_ppm_samples(&plane, w),
             };
             r.map_err(|e| e.to_string())
         })?;

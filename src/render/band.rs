@@ -9,7 +9,7 @@
 //! is not banded: callers keep it in memory or refuse.
 
 use super::trace::{Quality, Seen, Tracer};
-use super::{aa1, film_of, first_pass_rows, Film, RenderSettings};
+use super::{aa1, film_of, film_rows, first_pass_rows, Film, RenderSettings};
 use crate::scene::build::Scene;
 
 /// Bytes a pixel costs while a picture is rendered and written whole: the first pass's
@@ -74,11 +74,14 @@ pub fn render_bands(
     while y0 < h {
         let Some(threshold) = s.antialias else {
             let y1 = (y0 + rows).min(h);
-            let pass = first_pass_rows(&tracer, s, y0..y1, progress);
-            let film = film_of(&pass.samples, s, (y1 - y0) as u32, scene.gamma, (0, 0));
-            rays += pass.rays;
-            camera_rays += pass.camera_rays;
-            sink(&film)?;
+            let film = film_rows(&tracer, s, y0..y1, scene.gamma, progress);
+            rays += film.rays;
+            camera_rays += film.camera_rays;
+            sink(&Film {
+                rays: 0,
+                camera_rays: 0,
+                ..film
+            })?;
             y0 = y1;
             continue;
         };

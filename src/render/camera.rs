@@ -30,6 +30,11 @@ pub struct Camera {
     mesh: Option<Arc<MeshCamera>>,
     /// Focal blur: None for a pinhole camera.
     lens: Option<super::focal::Lens>,
+    /// Unit direction, right and up (`normalize_or` of Z, X, Y) and the lengths of right and
+    /// up, for the angular projections: once per camera, not per ray (`with_axes`).
+    unit: [DVec3; 3],
+    right_len: f64,
+    up_len: f64,
 }
 
 impl Camera {
@@ -54,6 +59,21 @@ impl Camera {
             up,
             lens: self.lens.as_ref().map(|l| l.turned(|v| turn * v)),
             ..self.clone()
+        }
+        .with_axes()
+    }
+
+    /// The camera with `unit`, `right_len` and `up_len` made from its vectors.
+    fn with_axes(self) -> Camera {
+        Camera {
+            unit: [
+                self.direction.normalize_or(DVec3::Z),
+                self.right.normalize_or(DVec3::X),
+                self.up.normalize_or(DVec3::Y),
+            ],
+            right_len: self.right.length(),
+            up_len: self.up.length(),
+            ..self
         }
     }
 
@@ -142,7 +162,11 @@ impl Camera {
                     height,
                 ))
             }),
+            unit: [DVec3::Z, DVec3::X, DVec3::Y],
+            right_len: 1.0,
+            up_len: 1.0,
         }
+        .with_axes()
     }
 
     /// The mesh camera, when the scene has one: its pixels take several rays or none.
@@ -201,16 +225,14 @@ impl Camera {
                 self.direction,
             ));
         }
-        let (d, r, u) = (
-            self.direction.normalize_or(DVec3::Z),
-            self.right.normalize_or(DVec3::X),
-            self.up.normalize_or(DVec3::Y),
-        );
+        // The unit axes once per camera: three square roots and divisions a ray were a
+        // twentieth of a small scene's time.
+        let [d, r, u] = self.unit;
         let dir = match self.projection {
             Projection::Perspective => self.direction + self.right * dx + self.up * dy,
             Projection::Fisheye => {
                 // A circle filling the height; the right/up lengths keep it round.
-                let x = 2.0 * dx * self.right.length() / self.up.length().max(1e-12);
+                let x = 2.0 * dx * self.right_len / self.up_len.max(1e-12);
                 let y = 2.0 * dy;
                 let rad = (x * x + y * y).sqrt();
                 if rad > 1.0 {
@@ -221,7 +243,7 @@ impl Camera {
                 d * theta.cos() + (r * phi.cos() + u * phi.sin()) * theta.sin()
             }
             Projection::Omnimax => {
-                let aspect = self.right.length() / self.up.length().max(1e-12);
+                let aspect = self.right_len / self.up_len.max(1e-12);
                 let (x, y) = omnimax_disc(dx, dy, aspect);
                 let rad = (x * x + y * y).sqrt();
                 if rad > 1.0 {
@@ -237,7 +259,7 @@ impl Camera {
                 d * ct + (r * phi.cos() + u * phi.sin()) * st
             }
             Projection::UltraWideAngle => {
-                let v = self.h_angle * self.up.length() / self.right.length().max(1e-12);
+                let v = self.h_angle * self.up_len / self.right_len.max(1e-12);
                 let (xa, ya) = (dx * self.h_angle, dy * v);
                 r * xa.sin() + u * ya.sin() + d * (xa.cos() * ya.cos())
             }

@@ -396,10 +396,14 @@ impl<'a> Tracer<'a> {
             },
         };
         if !s.sky.is_empty() {
-            let d = dir.normalize_or_zero();
+            // A plain colour needs no direction (most skies are one layer of one colour).
+            let mut d = None;
             let mut legacy = LegacySky::new(seen.rgb);
             for layer in &s.sky {
-                let c = pigment::eval(layer, d);
+                let c = match &layer.kind {
+                    crate::scene::desc::PigmentKind::Solid(c) => *c,
+                    _ => pigment::eval(layer, *d.get_or_insert_with(|| dir.normalize_or_zero())),
+                };
                 if s.legacy_sky_filter {
                     legacy.add(&c);
                 }
