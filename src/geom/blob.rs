@@ -277,8 +277,11 @@ impl Blob {
     }
 
     /// The crossings, or with `first_only` only the nearest (`first_root_in`: the roots
-    /// beyond it are not polished), the same bits.
-    fn crossings(&self, ray: &Ray, w: &mut Work, out: &mut Vec<Hit>, first_only: bool) {
+    /// beyond it are not polished), the same bits. With `first_only` the stretches starting
+    /// at or beyond `tmax` are not searched: a root s in [lo, hi] gives t = (s + shift) / len,
+    /// and rounding keeps that order, so t >= tmax for every such root, which
+    /// `intersect_first` drops anyway.
+    fn crossings(&self, ray: &Ray, w: &mut Work, out: &mut Vec<Hit>, first_only: bool, tmax: f64) {
         let len = ray.dir.length();
         if !(len > 0.0 && len.is_finite() && ray.origin.is_finite()) {
             return;
@@ -320,6 +323,9 @@ impl Blob {
         let mut last = f64::NEG_INFINITY;
         for k in 0..w.cuts.len().saturating_sub(1) {
             let (lo, hi) = (w.cuts[k], w.cuts[k + 1]);
+            if first_only && (lo + shift) / len >= tmax {
+                return;
+            }
             let mid = 0.5 * (lo + hi);
             let mut sum = [-self.threshold, 0.0, 0.0, 0.0, 0.0];
             let mut any = false;
@@ -387,17 +393,17 @@ impl Shape for Blob {
 
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
         WORK.with(|w| match w.try_borrow_mut() {
-            Ok(mut w) => self.crossings(ray, &mut w, out, false),
+            Ok(mut w) => self.crossings(ray, &mut w, out, false, f64::INFINITY),
             // Never re-entered in practice; a fresh buffer keeps it correct if it were.
-            Err(_) => self.crossings(ray, &mut Work::default(), out, false),
+            Err(_) => self.crossings(ray, &mut Work::default(), out, false, f64::INFINITY),
         });
     }
 
     fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
         scratch.clear();
         WORK.with(|w| match w.try_borrow_mut() {
-            Ok(mut w) => self.crossings(ray, &mut w, scratch, true),
-            Err(_) => self.crossings(ray, &mut Work::default(), scratch, true),
+            Ok(mut w) => self.crossings(ray, &mut w, scratch, true, tmax),
+            Err(_) => self.crossings(ray, &mut Work::default(), scratch, true, tmax),
         });
         // With `sturm` every crossing is there; without, only the nearest.
         scratch
@@ -531,6 +537,30 @@ mod tests {
         assert!(b.normal(p, &Hit::new(0.0)).x > 0.0);
         // The negative component adds nothing to the bounds.
         assert!(b.bounds().max.x <= 2.0 + 1e-12);
+    }
+
+    #[test]
+    fn first_hit_below_tmax() {
+        // Two separate spheres along the ray: intersect_first agrees with the nearest of
+        // intersect_all below tmax, for a tmax before, between and after the crossings.
+        let b = Blob::new(&BlobData {
+            components: vec![
+                sphere(DVec3::ZERO, 1.0, 1.0),
+                sphere(DVec3::new(0.0, 0.0, 3.0), 1.0, 1.0),
+            ],
+            threshold: 0.25,
+            sturm: false,
+        });
+        let ray = Ray::new(DVec3::new(0.1, 0.0, -5.0), DVec3::new(0.0, 0.0, 0.5));
+        let mut all = Vec::new();
+        b.intersect_all(&ray, &mut all);
+        assert_eq!(all.len(), 4);
+        let mut scratch = Vec::new();
+        for tmax in [1.0, all[0].t, all[1].t + 0.1, all[2].t, 100.0] {
+            let want = all.iter().map(|h| h.t).find(|&t| t < tmax);
+            let got = b.intersect_first(&ray, tmax, &mut scratch).map(|h| h.t);
+            assert_eq!(got, want, "tmax {tmax}");
+        }
     }
 
     #[test]
