@@ -348,7 +348,10 @@ impl Julia {
     fn lift(&self, p: DVec3) -> (Q, [Q; 3]) {
         let (n, d) = self.slice;
         let z = if self.mangled() { p.y } else { p.z };
-        let w = (d - n[0] * p.x - n[1] * p.y - n[2] * z) / n[3];
+        let num = d - n[0] * p.x - n[1] * p.y - n[2] * z;
+        // The default slice's n[3] is 1, and x / 1 is x: the division's latency starts every
+        // orbit's chain, so it is left out where it cannot change a bit.
+        let w = if n[3] == 1.0 { num } else { num / n[3] };
         let mut axes = [
             [1.0, 0.0, 0.0, 0.0],
             [0.0, 1.0, 0.0, 0.0],
