@@ -243,6 +243,8 @@ pub struct Julia {
     /// norms. See `keep_radii`.
     keep: [f64; KEEP],
     keep_sq: [f64; KEEP],
+    /// The slice is w = 0: n = (0, 0, 0, 1) (zeros of either sign) and d = +0 (see `lift`).
+    flat_slice: bool,
 }
 
 /// How many of the last iterations an orbit may leave out (`Julia::keep`).
@@ -335,6 +337,9 @@ impl Julia {
             bail_sq: sqrt_threshold(bailout),
             keep,
             keep_sq,
+            flat_slice: slice.0[..3].iter().all(|&x| x == 0.0)
+                && slice.0[3] == 1.0
+                && slice.1.to_bits() == 0,
         }
     }
 
@@ -348,10 +353,20 @@ impl Julia {
     fn lift(&self, p: DVec3) -> (Q, [Q; 3]) {
         let (n, d) = self.slice;
         let z = if self.mangled() { p.y } else { p.z };
-        let num = d - n[0] * p.x - n[1] * p.y - n[2] * z;
-        // The default slice's n[3] is 1, and x / 1 is x: the division's latency starts every
-        // orbit's chain, so it is left out where it cannot change a bit.
-        let w = if n[3] == 1.0 { num } else { num / n[3] };
+        // w's subtractions and division start every orbit's dependent chain; they are left
+        // out where they cannot change a bit. With the slice's n = (0, 0, 0, 1) and d = +0,
+        // each product is a zero and +0 − (±0) is +0 in every step for finite x, y and z; and
+        // with n[3] = 1, x / 1 is x.
+        let w = if self.flat_slice && p.x.is_finite() && p.y.is_finite() && z.is_finite() {
+            0.0
+        } else {
+            let num = d - n[0] * p.x - n[1] * p.y - n[2] * z;
+            if n[3] == 1.0 {
+                num
+            } else {
+                num / n[3]
+            }
+        };
         let mut axes = [
             [1.0, 0.0, 0.0, 0.0],
             [0.0, 1.0, 0.0, 0.0],

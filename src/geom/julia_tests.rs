@@ -512,3 +512,25 @@ fn kept_orbits_answer_as_full_orbits() {
         assert!(kept > 0, "{c:?}: no inside point");
     }
 }
+
+/// The default slice's lift skips w's arithmetic (`flat_slice`): the same 4-D point to the
+/// bit as the general formula, for points of either sign, zeros and non-finite ones.
+#[test]
+fn flat_slice_lifts_as_the_formula() {
+    let mut rng = crate::geom::test_rng::Lcg(11);
+    for func in [JuliaFn::Sqr, JuliaFn::Sin] {
+        let fast = julia(FRACTAL3, Algebra::Hypercomplex, func, 7, 20.0);
+        assert!(fast.flat_slice);
+        let mut full = fast.clone();
+        full.flat_slice = false;
+        let specials = [0.0, -0.0, f64::INFINITY, f64::NAN, 1e300];
+        for i in 0..2000 {
+            let mut p = rng.vec(4.0);
+            if i < 125 {
+                p = DVec3::new(specials[i % 5], specials[i / 5 % 5], specials[i / 25 % 5]);
+            }
+            let (a, b) = (fast.lift(p).0, full.lift(p).0);
+            assert_eq!(a.map(f64::to_bits), b.map(f64::to_bits), "{p:?}");
+        }
+    }
+}
