@@ -200,7 +200,17 @@ fn march_step(orbit: &Orbit, min_step: f64) -> f64 {
         // above 1 (then (r - 1)² / 2 > 1e-13 r), and rounded division is monotone: when
         // (r - 1) / dr is below the least step, so is the estimate, and the step is the least
         // one, found without the logarithm.
-        Orbit::Outside { r, dr } if r >= 1.0 + 1e-6 && (r - 1.0) / dr < min_step => min_step,
+        //
+        // The division's latency is on the march's chain (each sample waits for its step):
+        // `r - 1 < min_step·dr·(1 − 1e-12)` puts the exact quotient that far below `min_step`
+        // (two roundings move it by ~2e-16), so the rounded one is below it too. Where the
+        // product test fails (or is NaN), the quotient decides as before.
+        Orbit::Outside { r, dr }
+            if r >= 1.0 + 1e-6
+                && ((r - 1.0) < min_step * dr * (1.0 - 1e-12) || (r - 1.0) / dr < min_step) =>
+        {
+            min_step
+        }
         Orbit::Outside { r, dr } => {
             let de = r.ln() / dr;
             if de.is_finite() {
@@ -228,6 +238,44 @@ pub struct Julia {
     /// exactly when `s > bail_sq` (the rounded square root is monotone), so the inside test
     /// needs no square root.
     bail_sq: f64,
+    /// `keep[j]`: a quaternion iterate of norm at most this stays inside the bailout for the
+    /// next `j` iterations (−1 where no radius is sure to); `keep_sq` the same for squared
+    /// norms. See `keep_radii`.
+    keep: [f64; KEEP],
+    keep_sq: [f64; KEEP],
+    /// The slice is w = 0: n = (0, 0, 0, 1) (zeros of either sign) and d = +0 (see `lift`).
+    flat_slice: bool,
+}
+
+/// How many of the last iterations an orbit may leave out (`Julia::keep`).
+const KEEP: usize = 4;
+
+/// The radii under which a quaternion orbit is sure to stay inside for `j` more iterations.
+///
+/// The quaternion norm is multiplicative, so |h^p + c| <= |h|^p + |c|: from |h| <= R_j the
+/// next iterate is within R_{j−1} when R_j^p + |c| <= R_{j−1}, and R_0 is the bailout. Each
+/// radius is shrunk by 1e-9 (relative) and |c| grown by 1e-12, which covers the iteration's
+/// roundings (a few units of 1e-16 of |h|^p + |c|, all below 2 + 8 here) and those of the
+/// computed norm the orbit compares (its square root, or the squared norm against
+/// `keep_sq`), so the computed iterates stay at or below `bail_sq` and the orbit would have
+/// ended `Inside`: leaving those iterations out changes no answer. A radius whose
+/// predecessor is within 1e-6 of |c| is not used.
+fn keep_radii(bailout: f64, c_norm: f64, cube: bool) -> ([f64; KEEP], [f64; KEEP]) {
+    let mut keep = [-1.0; KEEP];
+    let mut keep_sq = [-1.0; KEEP];
+    let c = c_norm * (1.0 + 1e-12);
+    let mut prev = bailout * (1.0 - 1e-9);
+    for j in 1..KEEP {
+        if !(prev.is_finite() && c.is_finite()) || prev - c <= 1e-6 {
+            break;
+        }
+        let room = prev - c;
+        let r = if cube { room.cbrt() } else { room.sqrt() } * (1.0 - 1e-9);
+        keep[j] = r;
+        keep_sq[j] = r * r * (1.0 - 1e-9);
+        prev = r;
+    }
+    (keep, keep_sq)
 }
 
 /// The largest non-negative `s` with `s.sqrt() <= b`, found on the bit patterns (ordered as
@@ -274,6 +322,10 @@ impl Julia {
             Algebra::Quaternion => (1.0 + qnorm(&param)).min(2.0),
             Algebra::Hypercomplex => 4.0,
         };
+        let (keep, keep_sq) = match algebra {
+            Algebra::Quaternion => keep_radii(bailout, qnorm(&param), func == JuliaFn::Cube),
+            Algebra::Hypercomplex => ([-1.0; KEEP], [-1.0; KEEP]),
+        };
         Julia {
             param,
             algebra,
@@ -283,6 +335,11 @@ impl Julia {
             slice,
             bailout,
             bail_sq: sqrt_threshold(bailout),
+            keep,
+            keep_sq,
+            flat_slice: slice.0[..3].iter().all(|&x| x == 0.0)
+                && slice.0[3] == 1.0
+                && slice.1.to_bits() == 0,
         }
     }
 
@@ -296,7 +353,20 @@ impl Julia {
     fn lift(&self, p: DVec3) -> (Q, [Q; 3]) {
         let (n, d) = self.slice;
         let z = if self.mangled() { p.y } else { p.z };
-        let w = (d - n[0] * p.x - n[1] * p.y - n[2] * z) / n[3];
+        // w's subtractions and division start every orbit's dependent chain; they are left
+        // out where they cannot change a bit. With the slice's n = (0, 0, 0, 1) and d = +0,
+        // each product is a zero and +0 − (±0) is +0 in every step for finite x, y and z; and
+        // with n[3] = 1, x / 1 is x.
+        let w = if self.flat_slice && p.x.is_finite() && p.y.is_finite() && z.is_finite() {
+            0.0
+        } else {
+            let num = d - n[0] * p.x - n[1] * p.y - n[2] * z;
+            if n[3] == 1.0 {
+                num
+            } else {
+                num / n[3]
+            }
+        };
         let mut axes = [
             [1.0, 0.0, 0.0, 0.0],
             [0.0, 1.0, 0.0, 0.0],
@@ -347,12 +417,17 @@ impl Julia {
             if qnorm_sq(&h) > bail_sq {
                 return Orbit::Outside { r: 0.0, dr: 0.0 };
             }
-            for _ in 0..steps {
+            for k in 0..steps {
                 let h2 = qmul(&h, &h);
                 let f = if CUBE { qmul(&h, &h2) } else { h2 };
                 h = qadd(&f, &self.param);
-                if qnorm_sq(&h) > bail_sq {
+                let s = qnorm_sq(&h);
+                if s > bail_sq {
                     return Orbit::Outside { r: 0.0, dr: 0.0 };
+                }
+                let left = (steps - 1 - k) as usize;
+                if left < KEEP && s <= self.keep_sq[left] {
+                    return Orbit::Inside;
                 }
             }
             return Orbit::Inside;
@@ -363,7 +438,7 @@ impl Julia {
         if r > bail {
             return Orbit::Outside { r, dr: 1.0 };
         }
-        for _ in 0..steps {
+        for k in 0..steps {
             let h2 = qmul(&h, &h);
             let f = if CUBE { qmul(&h, &h2) } else { h2 };
             h = qadd(&f, &self.param);
@@ -371,6 +446,10 @@ impl Julia {
             r = qnorm(&h);
             if r > bail {
                 return Orbit::Outside { r, dr };
+            }
+            let left = (steps - 1 - k) as usize;
+            if left < KEEP && r <= self.keep[left] {
+                return Orbit::Inside;
             }
         }
         Orbit::Inside

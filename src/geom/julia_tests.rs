@@ -478,3 +478,59 @@ fn early_stops_answer_as_the_whole_march() {
     }
     assert!(hits > 300, "{hits}");
 }
+
+/// Orbits that leave out their last iterations (`keep_radii`) answer as the full orbit: the
+/// same inside-ness, and outside the same `r` and `dr`, to the bit, on points near the
+/// surface (where the orbits run longest) of the sample scenes' quaternion sets.
+#[test]
+fn kept_orbits_answer_as_full_orbits() {
+    let mut rng = crate::geom::test_rng::Lcg(9);
+    for (c, func, n) in [
+        ([-0.083, 0.0, -0.83, -0.025], JuliaFn::Sqr, 8),
+        ([-0.03, 0.5, -0.2, -0.5], JuliaFn::Cube, 8),
+        (FRACTAL3, JuliaFn::Sqr, 7),
+        ([0.2, 0.1, -0.3, 0.0], JuliaFn::Sqr, 12),
+    ] {
+        let fast = julia(c, Algebra::Quaternion, func, n, 20.0);
+        assert!(fast.keep[1] > 0.0, "{c:?}: no radius to test");
+        let mut full = fast.clone();
+        full.keep = [-1.0; KEEP];
+        full.keep_sq = [-1.0; KEEP];
+        let mut kept = 0;
+        for _ in 0..20_000 {
+            let p = rng.vec(3.0);
+            let (a, b) = (fast.orbit(p), full.orbit(p));
+            match (a, b) {
+                (Orbit::Inside, Orbit::Inside) => kept += 1,
+                (Orbit::Outside { r: r1, dr: d1 }, Orbit::Outside { r: r2, dr: d2 }) => {
+                    assert_eq!((r1.to_bits(), d1.to_bits()), (r2.to_bits(), d2.to_bits()))
+                }
+                _ => panic!("{c:?} at {p:?}: inside-ness differs"),
+            }
+            assert_eq!(fast.is_in(p), full.is_in(p), "{c:?} at {p:?}");
+        }
+        assert!(kept > 0, "{c:?}: no inside point");
+    }
+}
+
+/// The default slice's lift skips w's arithmetic (`flat_slice`): the same 4-D point to the
+/// bit as the general formula, for points of either sign, zeros and non-finite ones.
+#[test]
+fn flat_slice_lifts_as_the_formula() {
+    let mut rng = crate::geom::test_rng::Lcg(11);
+    for func in [JuliaFn::Sqr, JuliaFn::Sin] {
+        let fast = julia(FRACTAL3, Algebra::Hypercomplex, func, 7, 20.0);
+        assert!(fast.flat_slice);
+        let mut full = fast.clone();
+        full.flat_slice = false;
+        let specials = [0.0, -0.0, f64::INFINITY, f64::NAN, 1e300];
+        for i in 0..2000 {
+            let mut p = rng.vec(4.0);
+            if i < 125 {
+                p = DVec3::new(specials[i % 5], specials[i / 5 % 5], specials[i / 25 % 5]);
+            }
+            let (a, b) = (fast.lift(p).0, full.lift(p).0);
+            assert_eq!(a.map(f64::to_bits), b.map(f64::to_bits), "{p:?}");
+        }
+    }
+}
