@@ -13,6 +13,7 @@ pub mod focal;
 mod fog;
 mod fractal;
 mod irid;
+mod lighting;
 mod media;
 mod media_beam;
 mod metallic;

@@ -1,0 +1,180 @@
+//! The light a surface point receives and reflects: which lights reach it after shadows
+//! (`gather_lights`, once per hit for all texture layers) and one layer's diffuse, phong and
+//! specular share of them (`layer_light`). Split from trace.rs, which shades the hit.
+
+use crate::color::Rgbft;
+use crate::math::{DVec3, Ray};
+use crate::scene::object::Object;
+
+use super::trace::{grain, point_seed, LitBy, TraceCtx, Tracer};
+
+impl<'a> Tracer<'a> {
+    /// The lights reaching `p` (after shadows) into `ctx.lit`, once per hit for all layers;
+    /// `all` keeps those behind the surface too, `double` lights the surface from behind
+    /// (`double_illuminate`). `gathering`: `p` was met by a radiosity gathering ray.
+    pub(super) fn gather_lights(
+        &self,
+        p: DVec3,
+        nf: DVec3,
+        all: bool,
+        obj: &Object,
+        gathering: bool,
+        ctx: &mut TraceCtx<'a>,
+    ) {
+        let double = obj.double_illuminate;
+        let groups = self.scene.light_sets.len() > 1;
+        let set = &self.scene.light_sets[obj.light_set as usize];
+        let q = self.quality;
+        let mut lit = std::mem::take(&mut ctx.lit);
+        lit.clear();
+        let seed = point_seed(p);
+        for (slot, light) in self.scene.lights.iter().enumerate() {
+            if groups && !set.sees(light.group) {
+                continue;
+            }
+            let Some(inc) = light.incidence(p) else {
+                continue;
+            };
+            let l = inc.l;
+            let spread = light.area.as_ref().is_some_and(|a| a.illumination);
+            if spread && !light.shadowless && q.shadows && self.samples_area(light, gathering) {
+                if let Some(dist) = inc.shadow_dist {
+                    // `area_illumination`: every point of the array lights the surface from
+                    // its own direction, with its share of the light, even where the
+                    // array's centre is below the surface's horizon.
+                    let grain = grain(seed, slot as u32);
+                    self.area_each(p, (slot, light), l, dist, ctx, |dir, d, seen| {
+                        let lc = light.color * (light.fade(d) * inc.beam);
+                        let cos_n = nf.dot(dir);
+                        let back = cos_n <= 0.0 && double;
+                        if (cos_n > 0.0 || all || back) && seen != DVec3::ZERO {
+                            lit.push(LitBy {
+                                color: lc * seen,
+                                l: dir,
+                                cos_n,
+                                shadowless: false,
+                                back,
+                                grain,
+                            });
+                        }
+                    });
+                    continue;
+                }
+            }
+            let cos_n = nf.dot(l);
+
+            let back = cos_n <= 0.0 && double;
+            if cos_n <= 0.0 && !all && !back {
+                continue;
+            }
+            let mut lc = light.color * (light.fade(inc.dist) * inc.beam);
+            if light.projected.is_some() && (light.shadowless || !q.shadows) {
+                let dist = inc.shadow_dist.unwrap_or(f64::INFINITY);
+                if self
+                    .projected_dist(&Ray::new(p, l), dist, slot, ctx)
+                    .is_none()
+                {
+                    continue;
+                }
+            }
+            if !light.shadowless && q.shadows {
+                if let Some(dist) = inc.shadow_dist {
+                    lc *= self.light_seen(p, (slot, light), l, dist, gathering, ctx);
+                    if lc == DVec3::ZERO {
+                        continue;
+                    }
+                }
+            }
+            lit.push(LitBy {
+                color: lc,
+                l,
+                cos_n,
+                shadowless: light.shadowless,
+                back,
+                grain: grain(seed, slot as u32),
+            });
+        }
+        if let Some(map) = self.photons {
+            if let Some(c) = map.caustic(p, nf, obj, seed, &mut ctx.photon_found) {
+                lit.push(c);
+            }
+        }
+        ctx.lit = lit;
+    }
+
+    /// One texture layer's own light: ambient and diffuse weighted by its opacity,
+    /// highlights not. With radiosity, `indirect` (the irradiance there) replaces ambient:
+    /// POV-Ray 3.7 ignores `ambient` then (measured: docs/povray-behaviour.md).
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn layer_light(
+        &self,
+        c: &Rgbft,
+        fin: &crate::scene::desc::Finish,
+        p: DVec3,
+        dir: DVec3,
+        nf: DVec3,
+        mirror: DVec3,
+        indirect: Option<DVec3>,
+        ctx: &TraceCtx<'a>,
+    ) -> DVec3 {
+        let opacity = c.opacity();
+        let specular_exp = 1.0 / fin.roughness.max(1e-6);
+        let ambient = fin.ambient * self.scene.ambient_light;
+        let own = match (indirect, &self.rad) {
+            (Some(e), Some(r)) if r.set.keep_ambient => ambient + e * fin.diffuse,
+            (Some(e), _) => e * fin.diffuse,
+            (None, _) => ambient,
+        };
+        let mut col = (own + fin.emission) * c.rgb * opacity;
+        for lb in &ctx.lit {
+            let (lc, l) = (lb.color, lb.l);
+            // Iridescence scales the light's diffuse and highlight terms alike (measured).
+            let irid_f = match &fin.irid {
+                Some(irid) => super::irid::factor(irid, p, nf.dot(l), -dir.dot(nf)),
+                None => DVec3::ONE,
+            };
+            if fin.diffuse > 0.0 {
+                // The same as lb.cos_n unless the normal was perturbed; a light behind a
+                // double-illuminated surface lights it as if from the front.
+                let cos_n = if lb.back { -nf.dot(l) } else { nf.dot(l) };
+                if cos_n > 0.0 {
+                    let d = if fin.brilliance == 1.0 {
+                        cos_n
+                    } else {
+                        cos_n.powf(fin.brilliance)
+                    };
+                    // crand darkens each light's diffuse term by its own random share
+                    // (measured with povray: independent per light, uniform, ambient untouched).
+                    let grainy = 1.0 - fin.crand * lb.grain;
+                    col += lc * irid_f * c.rgb * (fin.diffuse * d * opacity * grainy);
+                }
+            }
+            // POV-Ray 3.7 gives shadowless lights no highlights (tests/probes/shadowless_*),
+            // nor lights behind a double-illuminated surface (tests/probes/double_illuminate).
+            if lb.shadowless || lb.back {
+                continue;
+            }
+            // Highlights take the surface colour in proportion to `metallic`, less so as the
+            // light grazes the surface (measured: render::metallic).
+            let highlight_tint = if fin.phong > 0.0 || fin.specular > 0.0 {
+                super::metallic::tint(c.rgb, fin.metallic, nf.dot(l))
+            } else {
+                DVec3::ONE
+            };
+            if fin.phong > 0.0 {
+                let cos_r = mirror.dot(l);
+                if cos_r > 0.0 {
+                    col += lc * irid_f * highlight_tint * (fin.phong * cos_r.powf(fin.phong_size));
+                }
+            }
+            if fin.specular > 0.0 {
+                let hv = (l - dir).normalize_or_zero();
+                let cos_h = nf.dot(hv);
+                if cos_h > 0.0 {
+                    col += lc * irid_f * highlight_tint * (fin.specular * cos_h.powf(specular_exp));
+                }
+            }
+        }
+        col
+    }
+}
