@@ -235,30 +235,9 @@ fn film_rows<'a>(
     let n = w * rows.len();
     let mut pixels: Vec<DVec3> = Vec::with_capacity(n);
     let mut alpha: Vec<f64> = Vec::with_capacity(if s.alpha { n } else { 0 });
-    let lit = tracer
-        .rad
-        .as_ref()
-        .and_then(|r| r.cache.first_pass.as_deref());
-    let rays = AtomicU64::new(0);
-    let camera_rays = AtomicU64::new(0);
+    let rt = RowTracer::new(tracer, s, progress);
     let trace_row = |ctx: &mut TraceCtx<'a>, ly: usize, out: &mut dyn FnMut(usize, Seen)| {
-        let y = rows.start + ly;
-        let mut traced = 0;
-        for x in 0..w {
-            let seen = if !s.inside(x, y) {
-                Seen::default()
-            } else {
-                traced += 1;
-                match lit.and_then(|l| l[y * w + x]) {
-                    Some(seen) => seen,
-                    None => tracer.trace_camera_at(x as f64 + 0.5, y as f64 + 0.5, ctx),
-                }
-            };
-            out(x, seen);
-        }
-        camera_rays.fetch_add(traced, Ordering::Relaxed);
-        rays.fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
-        progress(1);
+        rt.row(ctx, rows.start + ly, out)
     };
     if w > 0 {
         let px_rows = pixels.spare_capacity_mut()[..n].par_chunks_mut(w);
@@ -296,8 +275,8 @@ fn film_rows<'a>(
         pixels,
         alpha: s.alpha.then_some(alpha),
         gamma,
-        rays: rays.into_inner(),
-        camera_rays: camera_rays.into_inner(),
+        rays: rt.rays.into_inner(),
+        camera_rays: rt.camera_rays.into_inner(),
     }
 }
 
@@ -315,37 +294,75 @@ fn first_pass_rows(
 ) -> aa::Pass {
     let w = s.width as usize;
     let mut samples = vec![Seen::default(); w * rows.len()];
-    // Radiosity's last completion pass lit some of these very rays (radiosity::pretrace).
-    let lit = tracer
-        .rad
-        .as_ref()
-        .and_then(|r| r.cache.first_pass.as_deref());
-    let rays = AtomicU64::new(0);
-    let camera_rays = AtomicU64::new(0);
+    let rt = RowTracer::new(tracer, s, progress);
     samples
         .par_chunks_mut(w)
         .enumerate()
         .for_each_init(TraceCtx::default, |ctx, (ly, row)| {
-            let y = rows.start + ly;
-            let mut traced = 0;
-            for (x, px) in row.iter_mut().enumerate() {
-                if !s.inside(x, y) {
-                    continue;
-                }
-                *px = match lit.and_then(|l| l[y * w + x]) {
-                    Some(seen) => seen,
-                    None => tracer.trace_camera_at(x as f64 + 0.5, y as f64 + 0.5, ctx),
-                };
-                traced += 1;
-            }
-            camera_rays.fetch_add(traced, Ordering::Relaxed);
-            rays.fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
-            progress(1);
+            rt.row(ctx, rows.start + ly, &mut |x, seen| row[x] = seen);
         });
     aa::Pass {
         samples,
-        rays: rays.into_inner(),
-        camera_rays: camera_rays.into_inner(),
+        rays: rt.rays.into_inner(),
+        camera_rays: rt.camera_rays.into_inner(),
+    }
+}
+
+/// One sample at the centre of each pixel of a row, for `film_rows` and `first_pass_rows`,
+/// with the ray counts of every row traced.
+struct RowTracer<'t, 'a> {
+    tracer: &'t Tracer<'a>,
+    s: &'t RenderSettings,
+    /// Radiosity's last completion pass lit some of these very rays (radiosity::pretrace).
+    lit: Option<&'t [Option<Seen>]>,
+    progress: &'t (dyn Fn(u64) + Sync),
+    rays: AtomicU64,
+    camera_rays: AtomicU64,
+}
+
+impl<'t, 'a> RowTracer<'t, 'a> {
+    fn new(
+        tracer: &'t Tracer<'a>,
+        s: &'t RenderSettings,
+        progress: &'t (dyn Fn(u64) + Sync),
+    ) -> Self {
+        let lit = tracer
+            .rad
+            .as_ref()
+            .and_then(|r| r.cache.first_pass.as_deref());
+        RowTracer {
+            tracer,
+            s,
+            lit,
+            progress,
+            rays: AtomicU64::new(0),
+            camera_rays: AtomicU64::new(0),
+        }
+    }
+
+    /// Picture row `y` into `out(x, seen)`, left to right; pixels outside a partial render's
+    /// window give `Seen::default()` untraced.
+    fn row(&self, ctx: &mut TraceCtx<'a>, y: usize, out: &mut dyn FnMut(usize, Seen)) {
+        let w = self.s.width as usize;
+        let mut traced = 0;
+        for x in 0..w {
+            let seen = if !self.s.inside(x, y) {
+                Seen::default()
+            } else {
+                traced += 1;
+                match self.lit.and_then(|l| l[y * w + x]) {
+                    Some(seen) => seen,
+                    None => self
+                        .tracer
+                        .trace_camera_at(x as f64 + 0.5, y as f64 + 0.5, ctx),
+                }
+            };
+            out(x, seen);
+        }
+        self.camera_rays.fetch_add(traced, Ordering::Relaxed);
+        self.rays
+            .fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
+        (self.progress)(1);
     }
 }
 
