@@ -4,7 +4,9 @@
 //! A generated mesh of a million flat triangles kept 52 bytes a triangle as
 //! `MeshTriangle` structs (the three optional index sets inline), 40 MB of which said
 //! "none": with the optional parts in their own arrays, allocated only when used, it keeps
-//! the 12 bytes of corner indices.
+//! the 12 bytes of corner indices. Generated grids (bicubic patches, parametric surfaces)
+//! index their normals and uvs by the corner indices themselves: while every triangle does,
+//! those arrays are not stored at all (3.1 MB of copies on objects/bezier).
 
 /// One triangle's indices, as readers see them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -20,13 +22,54 @@ pub struct MeshTriangle {
 const NONE: u32 = u32::MAX;
 const NONE3: [u32; 3] = [NONE; 3];
 
-/// The triangles of a `MeshData`. An optional field's array is empty until a triangle has
-/// one; then it holds an entry per triangle, `u32::MAX` meaning none.
+/// An optional index set of every triangle.
+#[derive(Clone, Debug, Default)]
+enum Corners {
+    /// No triangle has one (so far).
+    #[default]
+    Absent,
+    /// Every triangle has one, equal to its corner indices.
+    SameAsV,
+    /// An entry per triangle, `u32::MAX` meaning none.
+    Own(Vec<[u32; 3]>),
+}
+
+impl Corners {
+    /// Appends triangle `len`'s set `x`, its corners being `v` and the earlier ones `vs`.
+    fn push(&mut self, vs: &[[u32; 3]], v: [u32; 3], x: Option<[u32; 3]>) {
+        let x = x.filter(|&x| x != NONE3);
+        match self {
+            Corners::Absent if x.is_none() => {}
+            Corners::Absent if vs.is_empty() && x == Some(v) => *self = Corners::SameAsV,
+            Corners::SameAsV if x == Some(v) => {}
+            Corners::Own(arr) => arr.push(x.unwrap_or(NONE3)),
+            _ => {
+                let mut arr = match self {
+                    Corners::SameAsV => vs.to_vec(),
+                    _ => vec![NONE3; vs.len()],
+                };
+                arr.push(x.unwrap_or(NONE3));
+                *self = Corners::Own(arr);
+            }
+        }
+    }
+
+    fn get(&self, vs: &[[u32; 3]], i: usize) -> Option<[u32; 3]> {
+        match self {
+            Corners::Absent => None,
+            Corners::SameAsV => vs.get(i).copied(),
+            Corners::Own(arr) => get_opt(arr, i, NONE3),
+        }
+    }
+}
+
+/// The triangles of a `MeshData`. The texture array is empty until a triangle has one;
+/// then it holds an entry per triangle, `u32::MAX` meaning none.
 #[derive(Clone, Debug, Default)]
 pub struct Triangles {
     v: Vec<[u32; 3]>,
-    n: Vec<[u32; 3]>,
-    uv: Vec<[u32; 3]>,
+    n: Corners,
+    uv: Corners,
     texture: Vec<u32>,
 }
 
@@ -66,8 +109,8 @@ impl Triangles {
 
     pub fn push(&mut self, t: MeshTriangle) {
         let len = self.v.len();
-        push_opt(&mut self.n, len, t.n, NONE3);
-        push_opt(&mut self.uv, len, t.uv, NONE3);
+        self.n.push(&self.v, t.v, t.n);
+        self.uv.push(&self.v, t.v, t.uv);
         push_opt(&mut self.texture, len, t.texture, NONE);
         self.v.push(t.v);
     }
@@ -81,9 +124,9 @@ impl Triangles {
     pub fn get(&self, i: usize) -> Option<MeshTriangle> {
         Some(MeshTriangle {
             v: *self.v.get(i)?,
-            n: get_opt(&self.n, i, NONE3),
+            n: self.n.get(&self.v, i),
             texture: get_opt(&self.texture, i, NONE),
-            uv: get_opt(&self.uv, i, NONE3),
+            uv: self.uv.get(&self.v, i),
         })
     }
 
@@ -132,12 +175,48 @@ mod tests {
             ..plain(1)
         });
         t.push(plain(2));
-        assert!(t.n.len() == 3 && t.uv.is_empty());
+        assert!(matches!(&t.n, Corners::Own(n) if n.len() == 3));
+        assert!(matches!(t.uv, Corners::Absent));
         assert_eq!(t.get(0), Some(plain(0)));
         assert_eq!(t.get(1).unwrap().n, Some([3, 4, 5]));
         assert_eq!(t.get(1).unwrap().texture, Some(7));
         assert_eq!(t.get(2), Some(plain(2)));
         assert_eq!(t.get(3), None);
         assert_eq!(t.iter().count(), 3);
+    }
+
+    #[test]
+    fn sets_equal_to_the_corners_are_not_stored_until_one_differs() {
+        let grid = |k: u32| MeshTriangle {
+            v: [k, k + 1, k + 2],
+            n: Some([k, k + 1, k + 2]),
+            texture: None,
+            uv: Some([k, k + 1, k + 2]),
+        };
+        let mut t: Triangles = (0..3).map(grid).collect();
+        assert!(matches!(t.n, Corners::SameAsV) && matches!(t.uv, Corners::SameAsV));
+        assert_eq!(t.get(2), Some(grid(2)));
+        // A flat triangle (no normals) among smooth ones: the normals get their own array.
+        t.push(MeshTriangle { n: None, ..grid(3) });
+        t.push(grid(4));
+        assert!(matches!(&t.n, Corners::Own(n) if n.len() == 5));
+        assert!(matches!(t.uv, Corners::SameAsV));
+        let got: Vec<_> = t.iter().collect();
+        let want: Vec<_> = (0..5)
+            .map(|k| {
+                if k == 3 {
+                    MeshTriangle { n: None, ..grid(3) }
+                } else {
+                    grid(k)
+                }
+            })
+            .collect();
+        assert_eq!(got, want);
+        // A first triangle without normals, then one whose normals are its corners.
+        let mut t = Triangles::default();
+        t.push(MeshTriangle { n: None, ..grid(0) });
+        t.push(grid(1));
+        assert_eq!(t.get(0).unwrap().n, None);
+        assert_eq!(t.get(1).unwrap().n, Some([1, 2, 3]));
     }
 }
