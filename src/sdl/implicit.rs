@@ -251,32 +251,15 @@ impl Parser {
             center: DVec3::ZERO,
             radius: 0.0,
         });
-        loop {
-            let Some(t) = self.peek()? else {
-                return Err(self.error_at(open, "this '{' is never closed"));
-            };
-            let k = match &t.tok {
-                Tok::Sym(Sym::RBrace) => {
-                    self.advance();
-                    break;
-                }
-                Tok::Ident(k) => k.clone(),
-                _ => {
-                    return Err(self.unexpected(
-                        &t,
-                        "in the isosurface; expected an isosurface item, a modifier or '}'",
-                    ))
-                }
-            };
-            self.advance();
-            match &*k {
-                "contained_by" => data.container = self.iso_container()?,
-                "threshold" => data.threshold = self.parse_float()?,
+        self.special_items(&mut obj, open, "isosurface", |p, k, span| {
+            match k {
+                "contained_by" => data.container = p.iso_container()?,
+                "threshold" => data.threshold = p.parse_float()?,
                 "accuracy" => {
-                    let v = self.parse_float()?;
+                    let v = p.parse_float()?;
                     if v.is_nan() || v <= 0.0 {
-                        self.warn(
-                            t.span,
+                        p.warn(
+                            span,
                             format!(
                                 "isosurface accuracy must be positive, not {v}; 0.000001 is used"
                             ),
@@ -285,10 +268,10 @@ impl Parser {
                     data.accuracy = v;
                 }
                 "max_gradient" => {
-                    let v = self.parse_float()?;
+                    let v = p.parse_float()?;
                     if v.is_nan() || v <= 0.0 {
-                        self.warn(
-                            t.span,
+                        p.warn(
+                            span,
                             format!(
                                 "isosurface max_gradient must be positive, not {v}; 1.1 is used"
                             ),
@@ -297,35 +280,29 @@ impl Parser {
                     data.max_gradient = v;
                 }
                 "evaluate" => {
-                    let mut p = [0.0; 3];
-                    for (i, v) in p.iter_mut().enumerate() {
+                    let mut e = [0.0; 3];
+                    for (i, v) in e.iter_mut().enumerate() {
                         if i > 0 {
-                            self.skip_optional_comma()?;
+                            p.skip_optional_comma()?;
                         }
-                        *v = self.parse_float()?;
+                        *v = p.parse_float()?;
                     }
-                    data.evaluate = Some(p);
+                    data.evaluate = Some(e);
                 }
-                "open" => data.open = self.optional_bool()?,
+                "open" => data.open = p.optional_bool()?,
                 "max_trace" => {
-                    let v = self.parse_float()?;
+                    let v = p.parse_float()?;
                     data.max_trace = Some(v.clamp(1.0, u32::MAX as f64) as u32);
                 }
                 "all_intersections" => data.max_trace = None,
                 // POV-Ray 3.5's solver choice; 3.7 reads and ignores it.
                 "method" => {
-                    self.parse_float()?;
+                    p.parse_float()?;
                 }
-                _ => {
-                    if !self.object_modifier(&mut obj, &k, t.span)? {
-                        return Err(self.error_at(
-                            t.span,
-                            format!("'{k}' is not an isosurface item or an object modifier"),
-                        ));
-                    }
-                }
+                _ => return Ok(false),
             }
-        }
+            Ok(true)
+        })?;
         let _ = s;
         obj.shape = ShapeDesc::Isosurface(Arc::new(data));
         Ok(obj)
@@ -430,40 +407,17 @@ impl Parser {
             center: DVec3::ZERO,
             radius: 0.0,
         });
-        loop {
-            let Some(t) = self.peek()? else {
-                return Err(self.error_at(open, "this '{' is never closed"));
-            };
-            let k = match &t.tok {
-                Tok::Sym(Sym::RBrace) => {
-                    self.advance();
-                    break;
-                }
-                Tok::Ident(k) => k.clone(),
-                _ => {
-                    return Err(self.unexpected(
-                        &t,
-                        "in the height_field; expected smooth, water_level, a modifier or '}'",
-                    ))
-                }
-            };
-            self.advance();
-            match &*k {
-                "smooth" => data.smooth = self.optional_bool()?,
-                "water_level" => data.water_level = self.parse_float()?,
+        self.special_items(&mut obj, open, "height_field", |p, k, _| {
+            match k {
+                "smooth" => data.smooth = p.optional_bool()?,
+                "water_level" => data.water_level = p.parse_float()?,
                 "hierarchy" => {
-                    self.optional_bool()?;
+                    p.optional_bool()?;
                 }
-                _ => {
-                    if !self.object_modifier(&mut obj, &k, t.span)? {
-                        return Err(self.error_at(
-                            t.span,
-                            format!("'{k}' is not a height_field item or an object modifier"),
-                        ));
-                    }
-                }
+                _ => return Ok(false),
             }
-        }
+            Ok(true)
+        })?;
         // Turned upside down, a height field's solid side (below its surface) faces up, and
         // rays from above meet its surface from inside without crossing a wall. POV-Ray then
         // refracts as a ray entering the glass (it goes by the interiors the ray is in);

@@ -24,6 +24,11 @@ impl Parser {
         what: &str,
         mut item: impl FnMut(&mut Parser, &str, Span) -> PResult<bool>,
     ) -> PResult<()> {
+        let a = if what.starts_with(['a', 'e', 'i', 'o', 'u']) {
+            "an"
+        } else {
+            "a"
+        };
         loop {
             let Some(t) = self.peek()? else {
                 return Err(self.error_at(open, "this '{' is never closed"));
@@ -37,7 +42,7 @@ impl Parser {
                 _ => {
                     return Err(self.unexpected(
                         &t,
-                        &format!("in the {what}; expected a {what} item, a modifier or '}}'"),
+                        &format!("in the {what}; expected {a} {what} item, a modifier or '}}'"),
                     ))
                 }
             };
@@ -45,7 +50,7 @@ impl Parser {
             if !item(self, &k, t.span)? && !self.object_modifier(obj, &k, t.span)? {
                 return Err(self.error_at(
                     t.span,
-                    format!("'{k}' is not a {what} item or an object modifier"),
+                    format!("'{k}' is not {a} {what} item or an object modifier"),
                 ));
             }
         }
