@@ -323,19 +323,9 @@ impl Parser {
                 if self.raw_peek_sym()? == Some(Sym::Dot) {
                     self.advance();
                     let c = self.next_tok()?;
-                    let idx = match &c.tok {
-                        Tok::Ident(n) => match &**n {
-                            "x" | "u" | "red" => Some(0),
-                            "y" | "v" | "green" => Some(1),
-                            "z" | "blue" => Some(2),
-                            "t" | "filter" => Some(3),
-                            "transmit" => Some(4),
-                            _ => None,
-                        },
-                        _ => None,
-                    };
+                    let idx = component_index(&c.tok).filter(|&i| i < 5);
                     if let (Some(i), Some((comp, _))) = (idx, v.components()) {
-                        return Ok(Expr::Const(comp[i]));
+                        return Ok(Expr::Const(comp[i as usize]));
                     }
                     return Err(self.error_at(c.span, format!("unknown component {}", c.tok)));
                 }
@@ -349,18 +339,7 @@ impl Parser {
                 if f.has_components() && self.raw_peek_sym()? == Some(Sym::Dot) {
                     self.advance();
                     let c = self.next_tok()?;
-                    let idx = match &c.tok {
-                        Tok::Ident(n) => match &**n {
-                            "x" | "u" | "red" => Some(0),
-                            "y" | "v" | "green" => Some(1),
-                            "z" | "blue" => Some(2),
-                            "t" | "filter" => Some(3),
-                            "transmit" => Some(4),
-                            "gray" | "grey" => Some(5),
-                            _ => None,
-                        },
-                        _ => None,
-                    };
+                    let idx = component_index(&c.tok);
                     let Some(idx) = idx else {
                         return Err(self.error_at(c.span, format!("unknown component {}", c.tok)));
                     };
@@ -489,5 +468,20 @@ impl Parser {
         })();
         s.locals.pop();
         r
+    }
+}
+
+/// The component `.name` selects in a function body: 0-4 of a vector or colour (x/u/red,
+/// y/v/green, z/blue, t/filter, transmit), 5 the gray of a pigment function's result.
+fn component_index(tok: &Tok) -> Option<u8> {
+    let Tok::Ident(n) = tok else { return None };
+    match &**n {
+        "x" | "u" | "red" => Some(0),
+        "y" | "v" | "green" => Some(1),
+        "z" | "blue" => Some(2),
+        "t" | "filter" => Some(3),
+        "transmit" => Some(4),
+        "gray" | "grey" => Some(5),
+        _ => None,
     }
 }
