@@ -12,7 +12,9 @@
 #
 # usage: scripts/identical_check.sh [-b baseline] [-n new] [-s WxH] [scene ...]
 #   -n: the binary under test (default target/release/lancer; a copy lets you keep building)
-# env:   JOBS (parallel renders per side, default 1), LIMIT (seconds per render, default 120)
+# env:   JOBS (parallel renders per side, default 1), LIMIT (seconds per render, default 120),
+#        OPTS (options replacing the default "-A +FN8": "+A0.3 +FN8" checks the anti-aliased
+#        path, "-A +FN8 +WT2" the threaded one, "-A +FP" the PPM writer)
 # exit:  0 when every picture is byte-identical, 1 otherwise (the differing scenes are listed)
 set -uo pipefail
 export LANCER_NO_CONFIG=1 # lancer reads no povray.ini/povray.conf: results do not depend on the machine
@@ -56,7 +58,7 @@ render() {
   local bin=$1 scene=$2 out=$3 path dir
   case $scene in /*) path=$scene ;; *) path=$tmp/samples/$scene ;; esac
   dir=$(dirname "$path")
-  (cd "$dir" && nice timeout "$limit" "$bin" -D -V +FN8 -A "+W$w" "+H$h" "+L$dir" \
+  (cd "$dir" && nice timeout "$limit" "$bin" -D -V $opts "+W$w" "+H$h" "+L$dir" \
     +L/usr/share/povray-3.7/include "+I$path" "+O$out" -q >/dev/null 2>&1)
 }
 
@@ -86,10 +88,11 @@ check_one() {
 }
 export -f check_one render
 same_png=$PWD/scripts/png_same.py
-export base new w h limit tmp same_png
+opts=${OPTS:--A +FN8}
+export base new w h limit tmp same_png opts
 
 printf '%s\n' "${scenes[@]}" | xargs -P "${JOBS:-1}" -I{} bash -c 'check_one "$1"' _ {} | tee "$tmp/log"
 n=$(grep -c . "$tmp/log")
 bad=$(grep -c '^DIFFER' "$tmp/log")
-echo "$((n - bad)) of $n scenes pixel-identical (or failing alike), $bad differ ($size, -A)"
+echo "$((n - bad)) of $n scenes pixel-identical (or failing alike), $bad differ ($size, $opts)"
 [ "$bad" -eq 0 ]
