@@ -35,6 +35,11 @@ pub struct Camera {
     unit: [DVec3; 3],
     right_len: f64,
     up_len: f64,
+    /// A cylinder camera's (position, sin, cos) of its angle at each pixel centre along the
+    /// axis the angle runs (x for cylinders 1 and 3, y for 2 and 4): rays through a pixel's
+    /// centre take them from here instead of a `sin_cos` each (the same expressions, so the
+    /// same bits); other positions (anti-aliasing's samples) compute their own.
+    turns: Arc<[(f64, f64, f64)]>,
 }
 
 impl Camera {
@@ -165,8 +170,48 @@ impl Camera {
             unit: [DVec3::Z, DVec3::X, DVec3::Y],
             right_len: 1.0,
             up_len: 1.0,
+            turns: Arc::new([]),
         }
         .with_axes()
+        .with_turns(width, height)
+    }
+
+    fn with_turns(self, width: u32, height: u32) -> Camera {
+        let Projection::Cylinder(kind) = self.projection else {
+            return self;
+        };
+        let along_x = kind == 1 || kind == 3;
+        let n = if along_x { width } else { height };
+        let turns = (0..n)
+            .map(|i| {
+                let pos = i as f64 + 0.5;
+                let a = self.cylinder_angle(along_x, pos);
+                (pos, a.sin(), a.cos())
+            })
+            .collect();
+        Camera { turns, ..self }
+    }
+
+    /// A cylinder camera's angle at picture position `pos` along x (`along_x`) or y.
+    #[inline]
+    fn cylinder_angle(&self, along_x: bool, pos: f64) -> f64 {
+        if along_x {
+            (pos / self.width - 0.5) * self.h_angle
+        } else {
+            (0.5 - pos / self.height) * self.h_angle
+        }
+    }
+
+    /// (sin, cos) of a cylinder camera's angle at picture position `pos`.
+    #[inline]
+    fn cylinder_turn(&self, along_x: bool, pos: f64) -> (f64, f64) {
+        match self.turns.get(pos as usize) {
+            Some(&(at, s, c)) if at.to_bits() == pos.to_bits() => (s, c),
+            _ => {
+                let a = self.cylinder_angle(along_x, pos);
+                (a.sin(), a.cos())
+            }
+        }
     }
 
     /// The mesh camera, when the scene has one: its pixels take several rays or none.
@@ -273,12 +318,13 @@ impl Camera {
                 (d * xa.cos() + r * xa.sin()) * ya.cos() + u * ya.sin()
             }
             Projection::Cylinder(kind) => {
-                let (xa, ya) = (dx * self.h_angle, dy * self.h_angle);
+                let along_x = kind == 1 || kind == 3;
+                let (s, c) = self.cylinder_turn(along_x, if along_x { px } else { py });
                 return Some(match kind {
-                    1 => Ray::new(self.location, d * xa.cos() + r * xa.sin() + self.up * dy),
-                    2 => Ray::new(self.location, d * ya.cos() + u * ya.sin() + self.right * dx),
-                    3 => Ray::new(self.location + self.up * dy, d * xa.cos() + r * xa.sin()),
-                    _ => Ray::new(self.location + self.right * dx, d * ya.cos() + u * ya.sin()),
+                    1 => Ray::new(self.location, d * c + r * s + self.up * dy),
+                    2 => Ray::new(self.location, d * c + u * s + self.right * dx),
+                    3 => Ray::new(self.location + self.up * dy, d * c + r * s),
+                    _ => Ray::new(self.location + self.right * dx, d * c + u * s),
                 });
             }
         };
@@ -320,6 +366,37 @@ mod tests {
         let c = Camera::new(&CameraDesc::default(), 4, 3);
         let r = c.ray(2.0, 1.5).unwrap();
         assert!((r.dir - DVec3::Z).length() < 1e-12);
+    }
+
+    /// Rays through pixel centres from the table are the rays computed afresh, bit for bit,
+    /// and positions off the centres (or off the picture) compute their own.
+    #[test]
+    fn cylinder_turns_are_the_computed_ones() {
+        for kind in 1..=4 {
+            let d = CameraDesc {
+                projection: Projection::Cylinder(kind),
+                angle: Some(200.0),
+                location: DVec3::new(8.0, 10.0, 5.0),
+                look_at: Some(DVec3::new(0.0, 10.0, 0.0)),
+                ..CameraDesc::default()
+            };
+            let cam = Camera::new(&d, 37, 23);
+            assert_eq!(cam.turns.len(), if kind % 2 == 1 { 37 } else { 23 });
+            let fresh = Camera {
+                turns: Arc::new([]),
+                ..cam.clone()
+            };
+            let bits = |r: Ray| [r.origin, r.dir].map(|v| v.to_array().map(f64::to_bits));
+            for y in -1..25 {
+                for x in -1..39 {
+                    for (dx, dy) in [(0.5, 0.5), (0.25, 0.5), (0.5, 0.75), (0.0, 0.0)] {
+                        let (px, py) = (x as f64 + dx, y as f64 + dy);
+                        let (a, b) = (cam.ray(px, py).unwrap(), fresh.ray(px, py).unwrap());
+                        assert_eq!(bits(a), bits(b), "cylinder {kind} at ({px}, {py})");
+                    }
+                }
+            }
+        }
     }
 
     #[test]

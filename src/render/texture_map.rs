@@ -126,6 +126,15 @@ fn blend_in(
     }
 }
 
+/// Whether some plain texture `tex` (one layer) can be made of has a reflection.
+pub fn may_reflect(tex: &Texture) -> bool {
+    match tex.pattern.as_deref().map(|tp| &tp.entries) {
+        None => !tex.finish.reflection.is_zero(),
+        Some(TextureEntries::List(items)) => items.iter().any(may_reflect),
+        Some(TextureEntries::Map(map)) => map.iter().any(|(_, t)| may_reflect(t)),
+    }
+}
+
 /// Where a plain texture's pigment is evaluated: its uv point if it is uv-mapped.
 fn pigment_point(tex: &Texture, p: DVec3, uv: Option<DVec3>) -> DVec3 {
     match uv {

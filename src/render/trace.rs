@@ -483,6 +483,16 @@ impl<'a> Tracer<'a> {
         let rad_normal = self.rad.is_some_and(|r| r.set.normal);
         let mut irr: Option<DVec3> = None;
         for tex in top.layers() {
+            // Under an opaque layer a layer's light and colour count nothing (`through` is
+            // zero; transmission, `last` and `conserve` are only read when it is not), only
+            // its reflection does: a layer that cannot reflect is not evaluated. Radiosity's
+            // gathering has effects beyond this point, so it keeps every layer.
+            if through == DVec3::ZERO
+                && self.rad.is_none()
+                && !(q.reflection && texture_map::may_reflect(tex))
+            {
+                continue;
+            }
             // A patterned texture is shaded as the plain textures it is made of here, each
             // weighted (texture_map blends); a plain one is itself with weight 1.
             let mut layer_c = [0.0; 5];
