@@ -3,7 +3,7 @@
 
 use crate::math::{DVec3, Ray};
 use crate::scene::desc::AreaLightDesc;
-use crate::scene::light::Light;
+use crate::scene::light::{AreaGrid, Light};
 
 use super::texture_map;
 use super::trace::{point_seed, TraceCtx, Tracer};
@@ -77,33 +77,6 @@ impl<'a> Tracer<'a> {
         }
     }
 
-    /// Point (i, j) of an area light's array as `p` sees it: its light after shadows, and the
-    /// unit direction to it (None when `p` is on it).
-    fn area_point(
-        &self,
-        p: DVec3,
-        (slot, light): (usize, &Light),
-        a: &AreaLightDesc,
-        (i, j): (u32, u32),
-        (axes, seed): ((DVec3, DVec3), u32),
-        ctx: &mut TraceCtx<'a>,
-    ) -> (DVec3, Option<DVec3>) {
-        let jit = if a.jitter {
-            (
-                super::jitter_hash(i, j, seed),
-                super::jitter_hash(j, i, seed ^ 0x5bd1_e995),
-            )
-        } else {
-            (0.0, 0.0)
-        };
-        let to = light.position + a.point_on(i, j, axes, jit) - p;
-        let d = to.length();
-        if d <= 0.0 {
-            return (DVec3::ONE, None);
-        }
-        (self.shadow(p, to / d, d, slot, ctx), Some(to / d))
-    }
-
     /// `seen` after `media_attenuation`: the atmosphere's media and fog dim the light on its
     /// way (measured: interior/media/hollow1's light, 40000 units bright 800 units away
     /// through fog of distance 80, lights the scene as a light of about 2 would).
@@ -126,13 +99,6 @@ impl<'a> Tracer<'a> {
         a: &AreaLightDesc,
         ctx: &mut TraceCtx<'a>,
     ) -> DVec3 {
-        // The array's axes face the point the same way for all of its samples.
-        let axes = a.axes((p - light.position).normalize_or_zero());
-        let seed = point_seed(p);
-        let sample = |i: u32, j: u32, ctx: &mut TraceCtx<'a>| {
-            self.area_point(p, (slot, light), a, (i, j), (axes, seed), ctx)
-                .0
-        };
         let (n1, n2) = (a.size1, a.size2);
         // The corners of the array, split into quarters where they disagree, the first
         // `adaptive` splits made regardless. Without `adaptive` povray 3.7 samples as with
@@ -141,58 +107,20 @@ impl<'a> Tracer<'a> {
         let mut cache = std::mem::take(&mut ctx.area_samples);
         cache.clear();
         cache.resize((n1 * n2) as usize, None);
-        let mut get = |i: u32, j: u32, ctx: &mut TraceCtx<'a>| {
-            let k = (j * n1 + i) as usize;
-            if let Some(v) = cache[k] {
-                return v;
-            }
-            let v = sample(i, j, ctx);
-            cache[k] = Some(v);
-            v
+        let mut walk = AreaWalk {
+            tracer: self,
+            p,
+            slot,
+            centre: light.position,
+            jitter: a.jitter,
+            // The array's axes face the point the same way for all of its samples.
+            grid: a.grid(a.axes((p - light.position).normalize_or_zero())),
+            seed: point_seed(p),
+            n1,
+            cache,
         };
-        fn quad<'a>(
-            get: &mut dyn FnMut(u32, u32, &mut TraceCtx<'a>) -> DVec3,
-            ctx: &mut TraceCtx<'a>,
-            (i0, i1, j0, j1): (u32, u32, u32, u32),
-            forced: u32,
-        ) -> DVec3 {
-            let c = [
-                get(i0, j0, ctx),
-                get(i1, j0, ctx),
-                get(i0, j1, ctx),
-                get(i1, j1, ctx),
-            ];
-            let mean = (c[0] + c[1] + c[2] + c[3]) / 4.0;
-            let splittable = i1 - i0 > 1 || j1 - j0 > 1;
-            let differ = c
-                .iter()
-                .any(|v| (*v - mean).abs().element_sum() > AREA_SAME);
-            if !splittable || (forced == 0 && !differ) {
-                return mean;
-            }
-            // A side one cell long is not split; an even number of points splits into two
-            // halves that share no point (measured: a 4x4 light whose columns are hidden one
-            // by one gives 3/4, 1/2, 1/4, as 5x5's shared middle gives its fifths' levels).
-            let halves = |a: u32, b: u32| {
-                if b - a > 1 {
-                    ([(a, (a + b) / 2), ((a + b).div_ceil(2), b)], 2)
-                } else {
-                    ([(a, b), (a, b)], 1)
-                }
-            };
-            let next = forced.saturating_sub(1);
-            let (is, ni) = halves(i0, i1);
-            let (js, nj) = halves(j0, j1);
-            let mut sum = DVec3::ZERO;
-            for &(a0, a1) in &is[..ni] {
-                for &(b0, b1) in &js[..nj] {
-                    sum += quad(get, ctx, (a0, a1, b0, b1), next);
-                }
-            }
-            sum / (ni * nj) as f64
-        }
-        let seen = quad(&mut get, ctx, (0, n1 - 1, 0, n2 - 1), levels);
-        ctx.area_samples = cache;
+        let seen = walk.quad(ctx, (0, n1 - 1, 0, n2 - 1), levels);
+        ctx.area_samples = walk.cache;
         seen
     }
 
@@ -242,9 +170,10 @@ impl<'a> Tracer<'a> {
         if ctx.blockers.len() <= slot {
             ctx.blockers.resize(slot + 1, None);
         }
+        let inv = ray.dir.recip();
         let mut tried = None;
         if let Some(b) = ctx.blockers[slot] {
-            if b.bounds.hit(ray.origin, ray.dir.recip(), dist).is_some() {
+            if b.bounds.hit(ray.origin, inv, dist).is_some() {
                 if b.any_hit(&ray, dist, ctx) {
                     return DVec3::ZERO;
                 }
@@ -261,7 +190,6 @@ impl<'a> Tracer<'a> {
             ctx.member_blockers.resize(slot + 1, None);
         }
         if let Some((top, m)) = ctx.member_blockers[slot] {
-            let inv = ray.dir.recip();
             let start = ctx.surface.len();
             if top.bounds.hit(ray.origin, inv, dist).is_some()
                 && m.bounds.hit(ray.origin, inv, dist).is_some()
@@ -428,6 +356,105 @@ impl<'a> Tracer<'a> {
             }
         }
         false
+    }
+}
+
+/// One shaded point's walk over an area light's array (`area_seen`): each point's light
+/// after shadows, shot once and kept in `cache`.
+struct AreaWalk<'t, 'a> {
+    tracer: &'t Tracer<'a>,
+    p: DVec3,
+    slot: usize,
+    /// The light's centre.
+    centre: DVec3,
+    jitter: bool,
+    grid: AreaGrid,
+    seed: u32,
+    n1: u32,
+    cache: Vec<Option<DVec3>>,
+}
+
+impl<'a> AreaWalk<'_, 'a> {
+    /// The shadow ray to array point (i, j): its unit direction and length (the length not
+    /// above zero when `p` is on the point, and then the direction is not used).
+    #[inline(always)]
+    fn ray_to(&self, i: u32, j: u32) -> (DVec3, f64) {
+        let jit = if self.jitter {
+            (
+                super::jitter_hash(i, j, self.seed),
+                super::jitter_hash(j, i, self.seed ^ 0x5bd1_e995),
+            )
+        } else {
+            (0.0, 0.0)
+        };
+        let to = self.centre + self.grid.point(i, j, jit) - self.p;
+        let d = to.length();
+        (to / d, d)
+    }
+
+    /// The corners of the quarter (i0..=i1, j0..=j1), and its light: their mean, or the
+    /// mean of its quarters where the corners disagree or `forced` splits remain.
+    fn quad(
+        &mut self,
+        ctx: &mut TraceCtx<'a>,
+        (i0, i1, j0, j1): (u32, u32, u32, u32),
+        forced: u32,
+    ) -> DVec3 {
+        let corners = [(i0, j0), (i1, j0), (i0, j1), (i1, j1)];
+        // Every corner's ray worked out before any is shot: the square root and divisions
+        // of one no longer wait for the shadow test of the one before.
+        let rays = corners.map(|(i, j)| {
+            if self.cache[(j * self.n1 + i) as usize].is_some() {
+                (DVec3::ZERO, 0.0)
+            } else {
+                self.ray_to(i, j)
+            }
+        });
+        let mut c = [DVec3::ZERO; 4];
+        for (k, &(i, j)) in corners.iter().enumerate() {
+            let at = (j * self.n1 + i) as usize;
+            c[k] = match self.cache[at] {
+                Some(v) => v,
+                None => {
+                    let (dir, d) = rays[k];
+                    let v = if d <= 0.0 {
+                        DVec3::ONE
+                    } else {
+                        self.tracer.shadow(self.p, dir, d, self.slot, ctx)
+                    };
+                    self.cache[at] = Some(v);
+                    v
+                }
+            };
+        }
+        let mean = (c[0] + c[1] + c[2] + c[3]) / 4.0;
+        let splittable = i1 - i0 > 1 || j1 - j0 > 1;
+        let differ = c
+            .iter()
+            .any(|v| (*v - mean).abs().element_sum() > AREA_SAME);
+        if !splittable || (forced == 0 && !differ) {
+            return mean;
+        }
+        // A side one cell long is not split; an even number of points splits into two
+        // halves that share no point (measured: a 4x4 light whose columns are hidden one
+        // by one gives 3/4, 1/2, 1/4, as 5x5's shared middle gives its fifths' levels).
+        let halves = |a: u32, b: u32| {
+            if b - a > 1 {
+                ([(a, (a + b) / 2), ((a + b).div_ceil(2), b)], 2)
+            } else {
+                ([(a, b), (a, b)], 1)
+            }
+        };
+        let next = forced.saturating_sub(1);
+        let (is, ni) = halves(i0, i1);
+        let (js, nj) = halves(j0, j1);
+        let mut sum = DVec3::ZERO;
+        for &(a0, a1) in &is[..ni] {
+            for &(b0, b1) in &js[..nj] {
+                sum += self.quad(ctx, (a0, a1, b0, b1), next);
+            }
+        }
+        sum / (ni * nj) as f64
     }
 }
 

@@ -271,22 +271,53 @@ impl AreaLightDesc {
     }
 
     /// `point` with the axes `axes` gave.
-    pub fn point_on(&self, i: u32, j: u32, (a1, a2): (DVec3, DVec3), jitter: (f64, f64)) -> DVec3 {
-        let frac = |k: u32, n: u32, jit: f64| {
+    pub fn point_on(&self, i: u32, j: u32, axes: (DVec3, DVec3), jitter: (f64, f64)) -> DVec3 {
+        self.grid(axes).point(i, j, jitter)
+    }
+
+    /// The array with the axes `axes` gave, its cell sizes worked out once for all of its
+    /// points (a shaded point asks for up to size1·size2 of them).
+    pub fn grid(&self, axes: (DVec3, DVec3)) -> AreaGrid {
+        let cell = |n: u32| if n <= 1 { 0.0 } else { 1.0 / (n - 1) as f64 };
+        AreaGrid {
+            axes,
+            cells: (cell(self.size1), cell(self.size2)),
+            sizes: (self.size1, self.size2),
+            circular: self.circular,
+        }
+    }
+}
+
+/// An area light's array as one shaded point sees it: `AreaLightDesc::grid`.
+#[derive(Clone, Copy, Debug)]
+pub struct AreaGrid {
+    axes: (DVec3, DVec3),
+    /// 1/(size − 1) along each axis (unused for a size of 1).
+    cells: (f64, f64),
+    sizes: (u32, u32),
+    circular: bool,
+}
+
+impl AreaGrid {
+    /// The array point (i, j) relative to the light's centre; `jitter` is a pair in
+    /// [-0.5, 0.5) moving the point within its cell.
+    #[inline]
+    pub fn point(&self, i: u32, j: u32, jitter: (f64, f64)) -> DVec3 {
+        let frac = |k: u32, n: u32, cell: f64, jit: f64| {
             if n <= 1 {
                 0.0
             } else {
-                let cell = 1.0 / (n - 1) as f64;
                 (k as f64 * cell - 0.5 + jit * cell).clamp(-0.5, 0.5)
             }
         };
-        let mut u = frac(i, self.size1, jitter.0);
-        let mut v = frac(j, self.size2, jitter.1);
+        let mut u = frac(i, self.sizes.0, self.cells.0, jitter.0);
+        let mut v = frac(j, self.sizes.1, self.cells.1, jitter.1);
         if self.circular {
             (u, v) = square_to_disc(u * 2.0, v * 2.0);
             u *= 0.5;
             v *= 0.5;
         }
+        let (a1, a2) = self.axes;
         a1 * u + a2 * v
     }
 }
