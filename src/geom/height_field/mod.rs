@@ -1,0 +1,774 @@
+//! POV-Ray `height_field`: a grid of heights over the unit square, x and z from 0 to 1, each
+//! grid cell split into two triangles.
+//!
+//! Vertex (i, j) sits at x = i/(W−1), z = j/(H−1) (j counts from z = 0; image files have their
+//! top row at z = 1). Heights are 16-bit values over 65536, as POV-Ray keeps them. A cell's
+//! diagonal runs from (i, j+1) to (i+1, j) (measured with povray's `trace`). There are no side
+//! walls; `water_level` removes the surface below that height. Points over the square and below
+//! the surface, however far below, are inside.
+//!
+//! Rays are traced through a min/max pyramid over the cells (each level halves the grid), so a
+//! ray skips every block whose height range it passes above or below and only tests the
+//! triangles of the cells it actually reaches, nearest first.
+//!
+//! `smooth` mixes the four corner normals of the cell bilinearly; the corner normals are made
+//! and kept the way POV-Ray keeps them, as 16-bit integers in grid units, whose rounding tilts
+//! them visibly on steep slopes (see `vertex_normal`).
+
+mod walk;
+
+use crate::geom::{Hit, Shape};
+use crate::math::{Aabb, DVec3, Ray, EPSILON};
+
+/// Heights as POV-Ray stores them: the 16-bit value over 65536.
+const SCALE: f64 = 1.0 / 65536.0;
+
+/// How far below y = 0 the solid reaches. POV-Ray counts every point under the surface as
+/// inside, however deep (measured with `inside()`: CSG keeps a sphere's part below the field);
+/// the bounds, which decide inside tests first, must reach down that far too.
+const SOLID_DEPTH: f64 = 1e4;
+
+/// The grid as read from an image or a function.
+#[derive(Clone, Debug)]
+pub struct HeightData {
+    /// Vertices along x (image columns) and along z (image rows); both at least 2.
+    pub width: usize,
+    pub depth: usize,
+    /// `heights[j * width + i]`, j from z = 0.
+    pub heights: Vec<u16>,
+    pub smooth: bool,
+    pub water_level: f64,
+    /// The min/max pyramid over `heights`, made by the first `HeightField` built on this grid
+    /// and shared by the others: `trace()` and `inside()` in a scene's loops build the object
+    /// anew for every call (advanced/landscape places 256 trees on a 500×500 field). It
+    /// depends only on the grid, which is not changed once a shape uses it.
+    pyramid: std::sync::OnceLock<std::sync::Arc<[Level]>>,
+    /// Every vertex's `vertex_normal` (whole numbers within ±32767, so kept exactly as
+    /// 16-bit integers), made on the first smooth normal asked for: a hit mixes four of them,
+    /// each the sum of four normalised cross products.
+    normals: std::sync::OnceLock<Box<[[i16; 3]]>>,
+}
+
+impl HeightData {
+    pub fn new(width: usize, depth: usize, heights: Vec<u16>) -> HeightData {
+        HeightData {
+            width,
+            depth,
+            heights,
+            smooth: false,
+            water_level: 0.0,
+            pyramid: Default::default(),
+            normals: Default::default(),
+        }
+    }
+
+    fn h(&self, i: usize, j: usize) -> f64 {
+        self.heights[j * self.width + i] as f64 * SCALE
+    }
+}
+
+/// One pyramid level: the smallest and largest height under each block of cells.
+#[derive(Debug)]
+struct Level {
+    nx: usize,
+    nz: usize,
+    /// The block's smallest and largest height in object units, side by side for the walk's
+    /// one load per block: a 16-bit value over 65536 is an f32 exactly, so these are the same
+    /// f64 values as `value as f64 * SCALE`.
+    range: Vec<[f32; 2]>,
+}
+
+impl Level {
+    fn new(nx: usize, nz: usize, min: &[u16], max: &[u16]) -> Level {
+        let range = min
+            .iter()
+            .zip(max)
+            .map(|(&a, &b)| [(a as f64 * SCALE) as f32, (b as f64 * SCALE) as f32])
+            .collect();
+        Level { nx, nz, range }
+    }
+}
+
+#[derive(Debug)]
+pub struct HeightField {
+    data: std::sync::Arc<HeightData>,
+    /// Level 0 has one block per cell; the last level has a single block.
+    levels: std::sync::Arc<[Level]>,
+    bounds: Aabb,
+}
+
+/// A ray in grid space (x and z in cell units, y in object units) and what its walk found.
+struct GridRay<'a> {
+    o: DVec3,
+    d: DVec3,
+    inv: DVec3,
+    /// Only crossings before this; shrinks as crossings are found when `first`.
+    tmax: f64,
+    first: bool,
+    /// The crossings found, from `out[from]` on (what was there before is not this shape's).
+    out: &'a mut Vec<Hit>,
+    from: usize,
+}
+
+/// The min/max pyramid of a grid of at least 2×2 vertices.
+fn pyramid(data: &HeightData) -> std::sync::Arc<[Level]> {
+    let w = data.width;
+    let (nx, nz) = (w - 1, data.depth - 1);
+    let mut min = vec![0u16; nx * nz];
+    let mut max = vec![0u16; nx * nz];
+    for j in 0..nz {
+        for i in 0..nx {
+            let c = [
+                data.heights[j * w + i],
+                data.heights[j * w + i + 1],
+                data.heights[(j + 1) * w + i],
+                data.heights[(j + 1) * w + i + 1],
+            ];
+            min[j * nx + i] = *c.iter().min().unwrap();
+            max[j * nx + i] = *c.iter().max().unwrap();
+        }
+    }
+    let mut levels = vec![Level::new(nx, nz, &min, &max)];
+    let (mut lmin, mut lmax, mut lnx, mut lnz) = (min, max, nx, nz);
+    while lnx > 1 || lnz > 1 {
+        let (px, pz) = (lnx.div_ceil(2), lnz.div_ceil(2));
+        let mut min = vec![u16::MAX; px * pz];
+        let mut max = vec![0u16; px * pz];
+        for j in 0..lnz {
+            for i in 0..lnx {
+                let k = (j / 2) * px + i / 2;
+                min[k] = min[k].min(lmin[j * lnx + i]);
+                max[k] = max[k].max(lmax[j * lnx + i]);
+            }
+        }
+        levels.push(Level::new(px, pz, &min, &max));
+        (lmin, lmax, lnx, lnz) = (min, max, px, pz);
+    }
+    levels.into()
+}
+
+impl HeightField {
+    pub fn new(data: std::sync::Arc<HeightData>) -> HeightField {
+        let (w, h) = (data.width, data.depth);
+        let ok = w >= 2 && h >= 2 && data.heights.len() == w * h;
+        let levels = if ok {
+            data.pyramid.get_or_init(|| pyramid(&data)).clone()
+        } else {
+            std::sync::Arc::from([])
+        };
+        let top = levels.last().map_or(0.0, |l| l.range[0][1] as f64);
+        let bounds = if ok && top >= data.water_level {
+            Aabb::new(
+                DVec3::new(0.0, -SOLID_DEPTH, 0.0),
+                DVec3::new(1.0, top, 1.0),
+            )
+        } else {
+            Aabb::EMPTY
+        };
+        HeightField {
+            data,
+            levels,
+            bounds,
+        }
+    }
+
+    fn cells(&self) -> (f64, f64) {
+        ((self.data.width - 1) as f64, (self.data.depth - 1) as f64)
+    }
+
+    /// The x and z part of the slab test of block (bi, bj) of a level whose blocks are
+    /// `span` cells wide: the entry distance (from 0) and the exit one (without `tmax`), or
+    /// None when the ray runs along x or z outside the block.
+    fn slab_xz(&self, r: &GridRay, span: f64, bi: usize, bj: usize) -> Option<(f64, f64)> {
+        let (cx, cz) = self.cells();
+        let mut t0 = 0.0f64;
+        let mut t1 = f64::INFINITY;
+        for (lo, hi, o, d, inv) in [
+            (
+                bi as f64 * span,
+                ((bi + 1) as f64 * span).min(cx),
+                r.o.x,
+                r.d.x,
+                r.inv.x,
+            ),
+            (
+                bj as f64 * span,
+                ((bj + 1) as f64 * span).min(cz),
+                r.o.z,
+                r.d.z,
+                r.inv.z,
+            ),
+        ] {
+            if d == 0.0 {
+                if o < lo || o > hi {
+                    return None;
+                }
+                continue;
+            }
+            let (u, v) = ((lo - o) * inv, (hi - o) * inv);
+            t0 = t0.max(u.min(v));
+            t1 = t1.min(u.max(v));
+        }
+        Some((t0, t1))
+    }
+
+    /// Whether the ray meets block (bi, bj) of `level` within `r.tmax`, its heights included,
+    /// given the block's `slab_xz`. As `r.tmax` only shrinks, a block that fails here fails
+    /// for the rest of the walk.
+    ///
+    /// `PLAIN` (see `visit`) takes `min` and `max` as single comparisons.
+    #[inline(always)]
+    fn reaches<const PLAIN: bool>(
+        &self,
+        r: &GridRay,
+        l: &Level,
+        bi: usize,
+        bj: usize,
+        xz: (f64, f64),
+    ) -> bool {
+        let [ylo, yhi] = l.range[bj * l.nx + bi].map(f64::from);
+        if yhi < self.data.water_level {
+            return false;
+        }
+        let (mut t0, mut t1) = (xz.0, fmin::<PLAIN>(r.tmax, xz.1));
+        if r.d.y == 0.0 {
+            if r.o.y < ylo || r.o.y > yhi {
+                return false;
+            }
+        } else {
+            let (u, v) = ((ylo - r.o.y) * r.inv.y, (yhi - r.o.y) * r.inv.y);
+            t0 = fmax::<PLAIN>(t0, fmin::<PLAIN>(u, v));
+            t1 = fmin::<PLAIN>(t1, fmax::<PLAIN>(u, v));
+        }
+        slack_ok::<PLAIN>(t0, t1)
+    }
+
+    /// Visits the blocks the ray crosses, nearest first; `tmax` shrinks as hits are found
+    /// when only the first is wanted. The caller has found that the ray `reaches` the block
+    /// with the current `tmax`.
+    ///
+    /// The slab test is split in its x-and-z part and its y part, which are combined with
+    /// `min` and `max` (exact, in any order): the same answers as `slab` over the block's box.
+    ///
+    /// With `PLAIN`, `min` and `max` are single comparisons instead of `f64::min` and
+    /// `f64::max`, whose NaN handling was a quarter of the walk. `trace` asks for it only
+    /// when no NaN can arise: origin, direction and `tmax` are not NaN and every `1 / d` the
+    /// walk multiplies by is finite, so each distance is a finite difference times a finite
+    /// number (infinite at worst, never NaN). Without NaN the two agree except, perhaps, on
+    /// the sign of a zero, which the walk only compares (`<`, `<=`, and `abs`), except in
+    /// the sort key of the children (their entry along x and z, compared with `total_cmp`):
+    /// that key keeps `f64::max` and `f64::min`.
+    fn visit<const PLAIN: bool>(&self, r: &mut GridRay, level: usize, bi: usize, bj: usize) {
+        if level == 0 {
+            self.cell_hits(r, bi, bj);
+            return;
+        }
+        let below = &self.levels[level - 1];
+        let mut kids = [((0.0, 0.0), 0usize, 0usize); 4];
+        let mut n = 0;
+        let s = (1usize << (level - 1)) as f64;
+        // The children's boxes without their heights (`slab_xz` of each): the children share
+        // their faces, so each face's distance is found once. A child that exists lies below
+        // `cx` and `cz`, so its unclamped near face equals the clamped far face of the one
+        // before.
+        let (cx, cz) = self.cells();
+        let axis = |b: usize, o: f64, d: f64, inv: f64, c: f64| {
+            let f = [
+                (b * 2) as f64 * s,
+                fmin::<PLAIN>((b * 2 + 1) as f64 * s, c),
+                fmin::<PLAIN>((b * 2 + 2) as f64 * s, c),
+            ];
+            // Per child: entry and exit along the axis, or None when the ray runs along
+            // the axis outside the child.
+            let one = |k: usize| {
+                if d == 0.0 {
+                    (o >= f[k] && o <= f[k + 1]).then_some((f64::NEG_INFINITY, f64::INFINITY))
+                } else {
+                    let (u, v) = ((f[k] - o) * inv, (f[k + 1] - o) * inv);
+                    // The entry feeds the sort key: `f64::min` (see above).
+                    Some((u.min(v), fmax::<PLAIN>(u, v)))
+                }
+            };
+            [one(0), one(1)]
+        };
+        let xs = axis(bi, r.o.x, r.d.x, r.inv.x, cx);
+        let zs = axis(bj, r.o.z, r.d.z, r.inv.z, cz);
+        for (di, dj) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+            let (ci, cj) = (bi * 2 + di, bj * 2 + dj);
+            if ci < below.nx && cj < below.nz {
+                if let (Some(x), Some(z)) = (xs[di], zs[dj]) {
+                    // As `slab_xz`: an axis the ray runs along adds nothing (max with -inf
+                    // and min with +inf change no value).
+                    let xz = (
+                        0.0f64.max(x.0).max(z.0),
+                        fmin::<PLAIN>(fmin::<PLAIN>(f64::INFINITY, x.1), z.1),
+                    );
+                    // A child the ray does not reach now is left out of the sort, which
+                    // changes nothing: it would not be reached with the same or a smaller
+                    // `tmax` on its turn, the others keep their order, and the loop below
+                    // stops at the first child starting beyond `tmax` no later. A child
+                    // kept is asked again only if `tmax` shrank before its turn.
+                    if self.reaches::<PLAIN>(r, below, ci, cj, xz) {
+                        kids[n] = (xz, ci, cj);
+                        n += 1;
+                    }
+                }
+            }
+        }
+        let kids = &mut kids[..n];
+        if r.first {
+            // Insertion sort: stable, as `sort_by`, without its call for four elements.
+            for i in 1..kids.len() {
+                let mut j = i;
+                while j > 0 && kids[j - 1].0 .0.total_cmp(&kids[j].0 .0).is_gt() {
+                    kids.swap(j - 1, j);
+                    j -= 1;
+                }
+            }
+        }
+        let tmax = r.tmax;
+        for &(xz, ci, cj) in kids.iter() {
+            if r.first && xz.0 > r.tmax {
+                break;
+            }
+            if r.tmax == tmax || self.reaches::<PLAIN>(r, below, ci, cj, xz) {
+                self.visit::<PLAIN>(r, level - 1, ci, cj);
+            }
+        }
+    }
+
+    /// The two triangles of cell (i, j).
+    fn cell_hits(&self, r: &mut GridRay, i: usize, j: usize) {
+        let d = &self.data;
+        let (h00, h10, h01, h11) = (d.h(i, j), d.h(i + 1, j), d.h(i, j + 1), d.h(i + 1, j + 1));
+        // Local cell coordinates u = x - i, v = z - j along the ray.
+        let (ou, ov) = (r.o.x - i as f64, r.o.z - j as f64);
+        const TOL: f64 = 1e-9;
+        for tri in 0..2u32 {
+            // Height as a + b u + c v over the triangle.
+            let (a, b, c) = if tri == 0 {
+                (h00, h10 - h00, h01 - h00)
+            } else {
+                // h11 + (h01 - h11)(1 - u) + (h10 - h11)(1 - v)
+                (h01 + h10 - h11, h11 - h01, h11 - h10)
+            };
+            // r.o.y + t d.y = a + b (ou + t du) + c (ov + t dv)
+            let den = r.d.y - b * r.d.x - c * r.d.z;
+            if den == 0.0 {
+                continue;
+            }
+            let t = (a + b * ou + c * ov - r.o.y) / den;
+            // Not `t >= tmax`: the other triangle of an edge must get its say (see below).
+            if t.is_nan() || t <= EPSILON || t > r.tmax + 1e-12 * t.max(1.0) {
+                continue;
+            }
+            let (u, v) = (ou + t * r.d.x, ov + t * r.d.z);
+            let inside = if tri == 0 {
+                u >= -TOL && v >= -TOL && u + v <= 1.0 + TOL
+            } else {
+                u <= 1.0 + TOL && v <= 1.0 + TOL && u + v >= 1.0 - TOL
+            };
+            if !inside || r.o.y + t * r.d.y < d.water_level {
+                continue;
+            }
+            let cell = (j * (d.width - 1) + i) as u32;
+            let hit = Hit {
+                t,
+                part: cell * 2 + tri,
+                uv: [u.clamp(0.0, 1.0), v.clamp(0.0, 1.0)],
+            };
+            // A crossing on a shared edge is found from both sides: keep one, the second
+            // triangle or the cell further along x or z, as povray's trace answers there.
+            if let Some(h) = r.out[r.from..]
+                .iter_mut()
+                .find(|h| (h.t - t).abs() <= 1e-12 * t.max(1.0))
+            {
+                if hit.part > h.part {
+                    *h = hit;
+                }
+                continue;
+            }
+            r.out.push(hit);
+            if r.first {
+                r.tmax = r.tmax.min(t);
+            }
+        }
+    }
+
+    fn trace(&self, ray: &Ray, tmax: f64, first: bool, out: &mut Vec<Hit>) {
+        if self.bounds.is_empty() {
+            return;
+        }
+        let (cx, cz) = self.cells();
+        let o = DVec3::new(ray.origin.x * cx, ray.origin.y, ray.origin.z * cz);
+        let d = DVec3::new(ray.dir.x * cx, ray.dir.y, ray.dir.z * cz);
+        if !o.is_finite() || !d.is_finite() || d == DVec3::ZERO {
+            return;
+        }
+        let mut r = GridRay {
+            o,
+            d,
+            inv: d.recip(),
+            tmax,
+            first,
+            from: out.len(),
+            out,
+        };
+        let top = self.levels.len() - 1;
+        let Some(xz) = self.slab_xz(&r, (1usize << top) as f64, 0, 0) else {
+            return;
+        };
+        let l = &self.levels[top];
+        // No NaN in the walk (see `visit`): an axis the ray runs along is not divided by.
+        let finite = |d: f64, inv: f64| d == 0.0 || inv.is_finite();
+        if !tmax.is_nan()
+            && finite(r.d.x, r.inv.x)
+            && finite(r.d.y, r.inv.y)
+            && finite(r.d.z, r.inv.z)
+        {
+            if self.reaches::<true>(&r, l, 0, 0, xz) {
+                match walk::Signs::new(&r) {
+                    Some(s) if top > 0 => self.walk_signed(&mut r, &s),
+                    _ => self.visit::<true>(&mut r, top, 0, 0),
+                }
+            }
+        } else if self.reaches::<false>(&r, l, 0, 0, xz) {
+            self.visit::<false>(&mut r, top, 0, 0);
+        }
+    }
+
+    /// The normal at vertex (i, j) as povray keeps it: in grid units (one per grid step, heights
+    /// in 16-bit steps), the sum of the unit normals of the four triangles the vertex makes
+    /// with its neighbours along x and z, normalised and truncated to 16-bit integers. Both
+    /// details show: in those units slopes are large, so the sum weighs gentle sides more (a
+    /// harmonic mean of the slopes), and the y component is a small integer whose truncation
+    /// tilts the normal (measured with `trace`: a ramp rising d per vertex shows the slope
+    /// (W-1) / (2 floor(32767 / d)), a parabola the harmonic mean of the slopes on either side,
+    /// and random grids match to six digits).
+    fn vertex_normal(&self, i: usize, j: usize) -> DVec3 {
+        let d = &self.data;
+        let raw = |i: usize, j: usize| d.heights[j * d.width + i] as f64;
+        // The four triangles the vertex makes with its neighbours along x and z, taken in
+        // turn (+x, +z), (+z, -x), (-x, -z), (-z, +x); at the edges the missing ones drop out.
+        let p = |di: isize, dj: isize| -> Option<DVec3> {
+            let (a, b) = (i as isize + di, j as isize + dj);
+            (a >= 0 && b >= 0 && (a as usize) < d.width && (b as usize) < d.depth).then(|| {
+                DVec3::new(
+                    di as f64,
+                    raw(a as usize, b as usize) - raw(i, j),
+                    dj as f64,
+                )
+            })
+        };
+        let around = [p(1, 0), p(0, 1), p(-1, 0), p(0, -1)];
+        let mut n = DVec3::ZERO;
+        for k in 0..4 {
+            if let (Some(a), Some(b)) = (around[k], around[(k + 1) % 4]) {
+                let c = b.cross(a);
+                n += if c.y < 0.0 { -c } else { c }.normalize();
+            }
+        }
+        (n.normalize_or_zero() * 32767.0).trunc()
+    }
+}
+
+/// Whether a slab test's entry `t0` and exit `t1` overlap, with a little slack so crossings
+/// on block faces are not lost to rounding.
+#[inline(always)]
+fn slack_ok<const PLAIN: bool>(t0: f64, t1: f64) -> bool {
+    t0 <= t1 + 1e-9 * fmax::<PLAIN>(t1.abs(), 1.0)
+}
+
+/// `f64::min`, or with `PLAIN` one comparison: the same for numbers that are not NaN, but
+/// for the sign of a zero (see `HeightField::visit`).
+#[inline(always)]
+fn fmin<const PLAIN: bool>(a: f64, b: f64) -> f64 {
+    if !PLAIN {
+        a.min(b)
+    } else if b < a {
+        b
+    } else {
+        a
+    }
+}
+
+/// `f64::max`, or with `PLAIN` one comparison (as `fmin`).
+#[inline(always)]
+fn fmax<const PLAIN: bool>(a: f64, b: f64) -> f64 {
+    if !PLAIN {
+        a.max(b)
+    } else if b > a {
+        b
+    } else {
+        a
+    }
+}
+
+impl Shape for HeightField {
+    fn bounds(&self) -> Aabb {
+        self.bounds
+    }
+
+    fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
+        self.trace(ray, f64::INFINITY, false, out);
+    }
+
+    fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
+        scratch.clear();
+        self.trace(ray, tmax, true, scratch);
+        scratch
+            .iter()
+            .filter(|h| h.t < tmax)
+            .min_by(|a, b| a.t.total_cmp(&b.t))
+            .copied()
+    }
+
+    fn inside(&self, p: DVec3) -> bool {
+        if self.bounds.is_empty() || !(0.0..=1.0).contains(&p.x) || !(0.0..=1.0).contains(&p.z) {
+            return false;
+        }
+        let (cx, cz) = self.cells();
+        let (gx, gz) = (p.x * cx, p.z * cz);
+        let i = (gx.floor() as usize).min(self.data.width - 2);
+        let j = (gz.floor() as usize).min(self.data.depth - 2);
+        let (u, v) = (gx - i as f64, gz - j as f64);
+        let d = &self.data;
+        let h = if u + v <= 1.0 {
+            d.h(i, j) + (d.h(i + 1, j) - d.h(i, j)) * u + (d.h(i, j + 1) - d.h(i, j)) * v
+        } else {
+            d.h(i + 1, j + 1)
+                + (d.h(i, j + 1) - d.h(i + 1, j + 1)) * (1.0 - u)
+                + (d.h(i + 1, j) - d.h(i + 1, j + 1)) * (1.0 - v)
+        };
+        p.y < h
+    }
+
+    fn normal(&self, _p: DVec3, hit: &Hit) -> DVec3 {
+        let d = &self.data;
+        let cell = (hit.part / 2) as usize;
+        let tri = hit.part % 2;
+        let (i, j) = (cell % (d.width - 1), cell / (d.width - 1));
+        let (cx, cz) = self.cells();
+        if d.smooth {
+            // Each corner's normal taken to object units, then mixed bilinearly over the cell
+            // (not by the triangle's barycentric weights): povray's trace() answers match this
+            // exactly inside cells of a random grid.
+            let [u, v] = hit.uv;
+            let normals = d.normals.get_or_init(|| {
+                (0..d.depth)
+                    .flat_map(|j| (0..d.width).map(move |i| (i, j)))
+                    .map(|(i, j)| self.vertex_normal(i, j).to_array().map(|c| c as i16))
+                    .collect()
+            });
+            let corner = |a: usize, b: usize| {
+                let n = normals[b * d.width + a].map(f64::from);
+                DVec3::new(n[0] * cx, n[1] * 65536.0, n[2] * cz).normalize_or_zero()
+            };
+            let n = corner(i, j) * ((1.0 - u) * (1.0 - v))
+                + corner(i + 1, j) * (u * (1.0 - v))
+                + corner(i, j + 1) * ((1.0 - u) * v)
+                + corner(i + 1, j + 1) * (u * v);
+            if n != DVec3::ZERO {
+                return n;
+            }
+        }
+        let (h00, h10, h01, h11) = (d.h(i, j), d.h(i + 1, j), d.h(i, j + 1), d.h(i + 1, j + 1));
+        // Slopes per grid step, then per object unit.
+        let (du, dv) = if tri == 0 {
+            (h10 - h00, h01 - h00)
+        } else {
+            (h11 - h01, h11 - h10)
+        };
+        DVec3::new(-du * cx, 1.0, -dv * cz)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::sync::Arc;
+
+    /// A W×H grid from a function of the vertex (i, j), as 16-bit heights.
+    fn grid(w: usize, h: usize, f: impl Fn(usize, usize) -> f64, water: f64) -> HeightField {
+        let mut heights = Vec::new();
+        for j in 0..h {
+            for i in 0..w {
+                heights.push((f(i, j) * 65536.0) as u16);
+            }
+        }
+        HeightField::new(Arc::new(HeightData {
+            width: w,
+            depth: h,
+            heights,
+            smooth: false,
+            water_level: water,
+            pyramid: Default::default(),
+            normals: Default::default(),
+        }))
+    }
+
+    fn down(hf: &HeightField, x: f64, z: f64) -> Option<(f64, DVec3)> {
+        let r = Ray::new(DVec3::new(x, 5.0, z), DVec3::NEG_Y);
+        let h = hf.intersect_first(&r, f64::INFINITY, &mut Vec::new())?;
+        Some((5.0 - h.t, hf.normal(r.at(h.t), &h).normalize()))
+    }
+
+    #[test]
+    fn diagonal_and_orientation() {
+        // One cell, corner (0, 1) raised: the diagonal from (0, 1) to (1, 0) splits it into
+        // h = z below it and h = 1 - x above it.
+        let hf = grid(2, 2, |i, j| if (i, j) == (0, 1) { 0.5 } else { 0.0 }, 0.0);
+        let (y, n) = down(&hf, 0.3, 0.3).unwrap();
+        assert!((y - 0.15).abs() < 1e-9, "{y}");
+        assert!(
+            (n - DVec3::new(0.0, 2.0, -1.0).normalize()).length() < 1e-9,
+            "{n}"
+        );
+        let (y, n) = down(&hf, 0.75, 0.5).unwrap();
+        assert!((y - 0.125).abs() < 1e-9, "{y}");
+        assert!(
+            (n - DVec3::new(1.0, 2.0, 0.0).normalize()).length() < 1e-9,
+            "{n}"
+        );
+        // On the diagonal itself the second triangle answers, as in povray.
+        let (_, n) = down(&hf, 0.5, 0.5).unwrap();
+        assert!(n.x > 0.0 && n.z.abs() < 1e-9, "{n}");
+        assert!(hf.inside(DVec3::new(0.3, 0.1, 0.3)) && !hf.inside(DVec3::new(0.3, 0.2, 0.3)));
+        // However deep below, and only over the square.
+        assert!(hf.inside(DVec3::new(0.3, -50.0, 0.3)) && !hf.inside(DVec3::new(1.3, 0.0, 0.3)));
+    }
+
+    #[test]
+    fn large_grid_matches_brute_force() {
+        let f =
+            |i: usize, j: usize| 0.5 + 0.3 * ((i as f64 * 0.37).sin() * (j as f64 * 0.23).cos());
+        let hf = grid(97, 61, f, 0.0);
+        let mut seed = 7u64;
+        let mut rnd = move || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for _ in 0..400 {
+            let o = DVec3::new(rnd() * 3.0 - 1.0, 1.0 + rnd(), rnd() * 3.0 - 1.0);
+            let target = DVec3::new(rnd(), rnd() * 0.8, rnd());
+            let ray = Ray::new(o, target - o);
+            let first = hf.intersect_first(&ray, f64::INFINITY, &mut Vec::new());
+            let mut all = Vec::new();
+            hf.intersect_all(&ray, &mut all);
+            // March along the ray for the first sign change of y - h.
+            let h_at = |p: DVec3| {
+                let (gx, gz) = (p.x * 96.0, p.z * 60.0);
+                if !(0.0..=96.0).contains(&gx) || !(0.0..=60.0).contains(&gz) {
+                    return None;
+                }
+                let (i, j) = ((gx as usize).min(95), (gz as usize).min(59));
+                let (u, v) = (gx - i as f64, gz - j as f64);
+                let g = |a, b| (f(a, b) * 65536.0) as u16 as f64 / 65536.0;
+                Some(if u + v <= 1.0 {
+                    g(i, j) + (g(i + 1, j) - g(i, j)) * u + (g(i, j + 1) - g(i, j)) * v
+                } else {
+                    g(i + 1, j + 1)
+                        + (g(i, j + 1) - g(i + 1, j + 1)) * (1.0 - u)
+                        + (g(i + 1, j) - g(i + 1, j + 1)) * (1.0 - v)
+                })
+            };
+            // The first step across the surface, either way (there are no side walls).
+            let mut want = None;
+            let steps = 20000;
+            let mut last: Option<bool> = None;
+            for k in 1..=steps {
+                let t = k as f64 / steps as f64 * 1.5;
+                let p = ray.at(t);
+                let now = h_at(p).map(|h| p.y < h);
+                if now.is_some() && last.is_some() && now != last {
+                    want = Some(t);
+                    break;
+                }
+                last = now;
+            }
+            match (first, want) {
+                (Some(h), Some(t)) => assert!((h.t - t).abs() < 2e-4, "{} vs {t}", h.t),
+                (None, None) => {}
+                (got, want) => panic!("{got:?} vs {want:?} for {ray:?}"),
+            }
+            assert_eq!(!all.is_empty(), first.is_some());
+            if let Some(h) = first {
+                let min = all.iter().map(|h| h.t).fold(f64::INFINITY, f64::min);
+                assert_eq!(min, h.t);
+            }
+        }
+    }
+
+    #[test]
+    fn water_level_and_degenerate_grids() {
+        let hf = grid(11, 11, |i, _| i as f64 / 10.0 * 0.99, 0.5);
+        assert!(down(&hf, 0.3, 0.5).is_none());
+        let (y, _) = down(&hf, 0.8, 0.5).unwrap();
+        assert!((y - 0.8 * 0.99).abs() < 1e-4);
+        let flat = HeightField::new(Arc::new(HeightData {
+            width: 1,
+            depth: 5,
+            heights: vec![0; 5],
+            smooth: true,
+            water_level: 0.0,
+            pyramid: Default::default(),
+            normals: Default::default(),
+        }));
+        assert!(flat.bounds().is_empty() && down(&flat, 0.5, 0.5).is_none());
+        assert!(!flat.inside(DVec3::splat(0.5)));
+        let hf = grid(3, 3, |_, _| 0.5, 0.0);
+        let mut v = Vec::new();
+        hf.intersect_all(&Ray::new(DVec3::splat(f64::NAN), DVec3::Y), &mut v);
+        hf.intersect_all(&Ray::new(DVec3::ZERO, DVec3::ZERO), &mut v);
+        assert!(v.is_empty());
+    }
+
+    /// The cached corner normals are `vertex_normal`'s, kept exactly.
+    #[test]
+    fn cached_vertex_normals_are_exact() {
+        let f = |i: usize, j: usize| 0.5 + 0.45 * ((i as f64 * 1.7).sin() * (j as f64 * 0.9).cos());
+        let mut hf = grid(23, 17, f, 0.0);
+        Arc::get_mut(&mut hf.data).unwrap().smooth = true;
+        let r = Ray::new(DVec3::new(0.4, 5.0, 0.6), DVec3::NEG_Y);
+        let h = hf
+            .intersect_first(&r, f64::INFINITY, &mut Vec::new())
+            .unwrap();
+        hf.normal(r.at(h.t), &h);
+        let cache = hf.data.normals.get().unwrap();
+        for j in 0..17 {
+            for i in 0..23 {
+                let c = cache[j * 23 + i].map(f64::from);
+                assert_eq!(DVec3::from_array(c), hf.vertex_normal(i, j), "{i} {j}");
+            }
+        }
+    }
+
+    #[test]
+    fn smooth_normals_follow_the_slopes() {
+        let mut heights = Vec::new();
+        for _ in 0..5 {
+            for i in 0..5 {
+                let x = i as f64 / 4.0;
+                heights.push((0.5 * x * x * 65536.0) as u16);
+            }
+        }
+        let hf = HeightField::new(Arc::new(HeightData {
+            width: 5,
+            depth: 5,
+            heights,
+            smooth: true,
+            water_level: 0.0,
+            pyramid: Default::default(),
+            normals: Default::default(),
+        }));
+        // At the middle vertex the central difference is the true slope of 0.5 x² at 0.5.
+        let (_, n) = down(&hf, 0.5 + 1e-9, 0.5).unwrap();
+        assert!((-n.x / n.y - 0.5).abs() < 1e-3, "{n}");
+        // Between vertices the normal turns smoothly.
+        let (_, a) = down(&hf, 0.55, 0.5).unwrap();
+        let (_, b) = down(&hf, 0.7, 0.5).unwrap();
+        assert!(-a.x / a.y > 0.5 && -b.x / b.y > -a.x / a.y);
+    }
+}
