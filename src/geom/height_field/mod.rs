@@ -396,6 +396,12 @@ impl HeightField {
     }
 
     fn trace(&self, ray: &Ray, tmax: f64, first: bool, out: &mut Vec<Hit>) {
+        self.trace_by(ray, tmax, first, out, true);
+    }
+
+    /// `trace`, with `signed` false walking every ray with `visit` (for the tests that show
+    /// `visit_signed` finds the same crossings).
+    fn trace_by(&self, ray: &Ray, tmax: f64, first: bool, out: &mut Vec<Hit>, signed: bool) {
         if self.bounds.is_empty() {
             return;
         }
@@ -428,7 +434,7 @@ impl HeightField {
         {
             if self.reaches::<true>(&r, l, 0, 0, xz) {
                 match walk::Signs::new(&r) {
-                    Some(s) if top > 0 => self.walk_signed(&mut r, &s),
+                    Some(s) if top > 0 && signed => self.walk_signed(&mut r, &s),
                     _ => self.visit::<true>(&mut r, top, 0, 0),
                 }
             }

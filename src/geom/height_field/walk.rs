@@ -167,3 +167,71 @@ fn greater(a: f64, b: f64) -> f64 {
         a
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::HeightData;
+    use super::*;
+    use crate::geom::Hit;
+    use crate::math::{DVec3, Ray};
+    use std::sync::Arc;
+
+    /// The hits as bits: the walks must agree on every crossing exactly, in order.
+    fn bits(hits: &[Hit]) -> Vec<(u64, u32, u64, u64)> {
+        let b = |h: &Hit| (h.t.to_bits(), h.part, h.uv[0].to_bits(), h.uv[1].to_bits());
+        hits.iter().map(b).collect()
+    }
+
+    /// `visit_signed` against `visit` on rays of every slope, from origins anywhere and on
+    /// the grid's faces (whole grid coordinates, where entries are zero), with and without a
+    /// `tmax`, over grids whose sides are not powers of two (clamped faces, missing
+    /// children), with water and with flat stretches (equal heights: edge ties).
+    #[test]
+    fn signed_walk_finds_what_visit_finds() {
+        let mut seed = 11u64;
+        let mut rnd = move || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut checked = 0;
+        for (w, h, water) in [(2, 3, 0.0), (5, 4, 0.0), (37, 23, 0.3), (64, 65, 0.0)] {
+            let mut heights = Vec::new();
+            for j in 0..h {
+                for i in 0..w {
+                    let v = 0.5 + 0.4 * ((i as f64 * 0.7).sin() * (j as f64 * 0.45).cos());
+                    // Flat steps: neighbouring vertices share heights.
+                    heights.push(((v * 8.0).floor() / 8.0 * 65535.0) as u16);
+                }
+            }
+            let mut data = HeightData::new(w, h, heights);
+            data.water_level = water;
+            let hf = HeightField::new(Arc::new(data));
+            let (cx, cz) = ((w - 1) as f64, (h - 1) as f64);
+            for k in 0..4000 {
+                let mut o = DVec3::new(rnd() * 1.6 - 0.3, rnd() * 2.0 - 0.2, rnd() * 1.6 - 0.3);
+                if k % 3 == 0 {
+                    // On grid faces.
+                    o.x = (rnd() * (cx + 1.0)).floor() / cx;
+                    o.z = (rnd() * (cz + 1.0)).floor() / cz;
+                }
+                let target = DVec3::new(rnd(), rnd(), rnd());
+                let ray = Ray::new(o, target - o);
+                let tmax = if k % 2 == 0 {
+                    f64::INFINITY
+                } else {
+                    rnd() * 2.0
+                };
+                for first in [true, false] {
+                    let (mut a, mut b) = (vec![], vec![]);
+                    hf.trace_by(&ray, tmax, first, &mut a, true);
+                    hf.trace_by(&ray, tmax, first, &mut b, false);
+                    assert_eq!(bits(&a), bits(&b), "{ray:?} {tmax} {first}");
+                    checked += a.len();
+                }
+            }
+        }
+        assert!(checked > 1000, "{checked}");
+    }
+}
