@@ -15,6 +15,8 @@
 //! and kept the way POV-Ray keeps them, as 16-bit integers in grid units, whose rounding tilts
 //! them visibly on steep slopes (see `vertex_normal`).
 
+mod walk;
+
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
 
@@ -394,6 +396,12 @@ impl HeightField {
     }
 
     fn trace(&self, ray: &Ray, tmax: f64, first: bool, out: &mut Vec<Hit>) {
+        self.trace_by(ray, tmax, first, out, true);
+    }
+
+    /// `trace`, with `signed` false walking every ray with `visit` (for the tests that show
+    /// `visit_signed` finds the same crossings).
+    fn trace_by(&self, ray: &Ray, tmax: f64, first: bool, out: &mut Vec<Hit>, signed: bool) {
         if self.bounds.is_empty() {
             return;
         }
@@ -425,7 +433,10 @@ impl HeightField {
             && finite(r.d.z, r.inv.z)
         {
             if self.reaches::<true>(&r, l, 0, 0, xz) {
-                self.visit::<true>(&mut r, top, 0, 0);
+                match walk::Signs::new(&r) {
+                    Some(s) if top > 0 && signed => self.walk_signed(&mut r, &s),
+                    _ => self.visit::<true>(&mut r, top, 0, 0),
+                }
             }
         } else if self.reaches::<false>(&r, l, 0, 0, xz) {
             self.visit::<false>(&mut r, top, 0, 0);
