@@ -415,4 +415,46 @@ mod tests {
             DVec3::new(1.0, 0.0, -1.0)
         );
     }
+
+    /// The grid's points are the array points as each was computed on its own before the
+    /// cell sizes were shared (`1/(n − 1)` per point), to the bit.
+    #[test]
+    fn grid_points_match_per_point_arithmetic() {
+        let frac = |k: u32, n: u32, jit: f64| {
+            if n <= 1 {
+                0.0
+            } else {
+                let cell = 1.0 / (n - 1) as f64;
+                (k as f64 * cell - 0.5 + jit * cell).clamp(-0.5, 0.5)
+            }
+        };
+        let axes = (DVec3::new(4.0, 0.1, 0.0), DVec3::new(0.0, 0.3, 7.0));
+        for (n1, n2, circular) in [(10, 10, false), (9, 7, true), (1, 5, false), (3, 1, true)] {
+            let a = AreaLightDesc {
+                axis1: axes.0,
+                axis2: axes.1,
+                size1: n1,
+                size2: n2,
+                circular,
+                ..AreaLightDesc::default()
+            };
+            let grid = a.grid(axes);
+            for i in 0..n1 {
+                for j in 0..n2 {
+                    for jit in [(0.0, 0.0), (0.37, -0.21), (-0.5, 0.49)] {
+                        let (mut u, mut v) = (frac(i, n1, jit.0), frac(j, n2, jit.1));
+                        if circular {
+                            (u, v) = square_to_disc(u * 2.0, v * 2.0);
+                            u *= 0.5;
+                            v *= 0.5;
+                        }
+                        let bits = |p: DVec3| p.to_array().map(f64::to_bits);
+                        let want = bits(axes.0 * u + axes.1 * v);
+                        assert_eq!(bits(grid.point(i, j, jit)), want);
+                        assert_eq!(bits(a.point_on(i, j, axes, jit)), want);
+                    }
+                }
+            }
+        }
+    }
 }
