@@ -80,6 +80,20 @@ impl Shape for Sphere {
         (t > EPSILON && t < tmax).then(|| Hit::new(t))
     }
 
+    /// Shadow rays inside a sky sphere (advanced/quilt1: every area-light sample) skip the
+    /// roots: a segment whose two ends lie well inside crosses nothing, and the margin (the
+    /// ends at most 0.9995 r from the centre, so each root at least 0.0005 r / |dir| beyond
+    /// them) is some 1e11 times the roots' rounding error, so `intersect_first` would find
+    /// no crossing either: the same answer, not an approximation.
+    fn any_hit(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> bool {
+        let inner = self.radius2 * 0.999;
+        let oc = ray.origin - self.center;
+        if oc.length_squared() < inner && (oc + ray.dir * tmax).length_squared() < inner {
+            return false;
+        }
+        self.intersect_first(ray, tmax, scratch).is_some()
+    }
+
     fn inside(&self, p: DVec3) -> bool {
         (p - self.center).length_squared() < self.radius2
     }
@@ -126,6 +140,35 @@ mod tests {
         let r2 = Ray::new(DVec3::ZERO, DVec3::Z * 2.0);
         assert_eq!(all(&s, &r2), vec![1.5, 3.5]);
         assert!(s.intersect_first(&r, 2.9, &mut Vec::new()).is_none());
+    }
+
+    /// `any_hit` answers as `intersect_first` does, for segments inside, leaving, crossing
+    /// and near the surface, on small and huge spheres.
+    #[test]
+    fn any_hit_is_intersect_first() {
+        let mut scratch = Vec::new();
+        let mut seed = 12345u64;
+        let mut rnd = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        for r in [0.5, 1.0, 100000.0] {
+            let s = Sphere::new(DVec3::new(0.25, -0.5, 1.0), r);
+            for _ in 0..20000 {
+                let o = DVec3::new(rnd(), rnd(), rnd()) * r * 1.2 + DVec3::new(0.25, -0.5, 1.0);
+                let d = DVec3::new(rnd(), rnd(), rnd()) * (1.0 + 3.0 * rnd().abs());
+                let tmax = [rnd().abs() * 2.0 * r, f64::INFINITY, 0.0, f64::NAN]
+                    [(rnd().abs() * 3.999) as usize];
+                let ray = Ray::new(o, d);
+                assert_eq!(
+                    s.any_hit(&ray, tmax, &mut scratch),
+                    s.intersect_first(&ray, tmax, &mut scratch).is_some(),
+                    "{o} {d} {tmax}"
+                );
+            }
+        }
     }
 
     #[test]
