@@ -171,8 +171,20 @@ impl Algebraic {
     /// root needs it (most rays miss most quadrics of an unbounded scene).
     #[inline(always)]
     fn low_order_roots(&self, ray: &Ray) -> Option<([f64; 2], usize, f64)> {
-        let mut c = [0.0; MAX_ORDER + 1];
-        let (len, lead) = self.along_ray_lead(ray, &mut c)?;
+        // `along_ray_lead` on three coefficients: the expansion for orders below 3 is
+        // `along_unrolled::<3>`, whatever `along` would copy it into.
+        let len = ray.dir.length();
+        if !(len > 0.0 && len.is_finite()) || self.terms.is_empty() {
+            return None;
+        }
+        let c = self.along_unrolled::<3>(ray.origin, ray.dir / len);
+        let lead = c[..=self.order]
+            .iter()
+            .rposition(|v| *v != 0.0)
+            .unwrap_or(0);
+        if lead == 0 {
+            return None;
+        }
         let (roots, n) = low_roots_in(&c[..=lead], EPSILON * len, || cauchy(&c, lead));
         Some((roots, n, len))
     }
@@ -285,7 +297,7 @@ impl Algebraic {
 /// search interval finite. The maximum ignores NaN quotients, as `f64::max` does, and does
 /// not depend on the order of the quotients.
 #[inline(always)]
-fn cauchy(c: &[f64; MAX_ORDER + 1], lead: usize) -> f64 {
+fn cauchy(c: &[f64], lead: usize) -> f64 {
     let mut m = 0.0;
     for v in &c[..lead] {
         let q = (v / c[lead]).abs();

@@ -22,6 +22,8 @@ const FLAT: f64 = 1e-3;
 pub struct Lathe {
     /// Pieces scaled by `1 / scale`.
     pieces: Vec<Piece>,
+    /// Each piece's squared radius polynomial (`mul(x, x)`), the same for every ray.
+    r2: Vec<[f64; 7]>,
     scale: f64,
     /// Largest |radius| and the height range, scaled.
     radius: f64,
@@ -89,7 +91,7 @@ impl Lathe {
         };
         let k = 1.0 / scale;
         let scaled = |q: P2| [q[0] * k, q[1] * k];
-        let pieces = pieces
+        let pieces: Vec<Piece> = pieces
             .iter()
             .map(|pc| Piece {
                 x: pc.x.map(|c| c * k),
@@ -101,6 +103,7 @@ impl Lathe {
             })
             .collect();
         Lathe {
+            r2: pieces.iter().map(|pc| mul(&pc.x, &pc.x)).collect(),
             pieces,
             scale,
             radius: radius * k,
@@ -135,6 +138,11 @@ impl Lathe {
 
     /// Whether the ray's stretch [t_lo, t_hi] passes through the piece's own cylindrical shell
     /// and height band.
+    ///
+    /// The height band is tried before the shell (its two divisions before a square root and
+    /// two more): each bound only raises `lo` or lowers `hi` (`max` and `min` are exact, and
+    /// ignore NaN in any order), so a stretch already empty after the band stays empty, and
+    /// the answer is the one the whole test gives.
     fn may_cross(pc: &Piece, o: DVec3, [a, b, c]: [f64; 3], dy: f64, t_lo: f64, t_hi: f64) -> bool {
         let r_max = pc.lo[0].abs().max(pc.hi[0].abs());
         let disc = b * b - a * (c - r_max * r_max);
@@ -142,17 +150,20 @@ impl Lathe {
             return false;
         }
         let (mut lo, mut hi) = (t_lo, t_hi);
-        if a > 0.0 {
-            let h = disc.max(0.0).sqrt();
-            lo = lo.max((-b - h) / a);
-            hi = hi.min((-b + h) / a);
-        }
         if dy != 0.0 {
             let (y0, y1) = ((pc.lo[1] - o.y) / dy, (pc.hi[1] - o.y) / dy);
             lo = lo.max(y0.min(y1));
             hi = hi.min(y0.max(y1));
+            if lo > hi + 1e-9 {
+                return false;
+            }
         } else if o.y < pc.lo[1] || o.y > pc.hi[1] {
             return false;
+        }
+        if a > 0.0 {
+            let h = disc.max(0.0).sqrt();
+            lo = lo.max((-b - h) / a);
+            hi = hi.min((-b + h) / a);
         }
         // A degenerate ray leaves NaN bounds: nothing to find.
         !(lo.is_nan() || hi.is_nan() || lo > hi + 1e-9)
@@ -224,7 +235,7 @@ impl Lathe {
         // dy²(c − r²) + 2 b dy (h − oy) + a (h − oy)², zero where the ray meets the surface.
         let mut hh = pc.y;
         hh[0] -= o.y;
-        let (r2, h2) = (mul(&pc.x, &pc.x), mul(&hh, &hh));
+        let (r2, h2) = (&self.r2[i], mul(&hh, &hh));
         let mut f = [0.0; 7];
         for k in 0..7 {
             f[k] = -dy * dy * r2[k] + a * h2[k];
