@@ -5,10 +5,6 @@
 
 pub use glam::{DMat3, DMat4, DVec3};
 
-mod slabs;
-
-pub use slabs::Slabs;
-
 /// Distances below this along a ray are treated as self-intersections.
 pub const EPSILON: f64 = 1e-6;
 
@@ -268,6 +264,104 @@ impl Aabb {
     }
 }
 
+/// One ray's slab tests against many boxes (a union's members): `Aabb::hit(..).is_some()`,
+/// through plain comparisons where no slab distance can be NaN. With a finite origin and
+/// finite, nonzero `inv_dir` components, `(bound - origin) * inv_dir` is never NaN (an
+/// infinite bound gives an infinite distance), and without NaNs a comparison-and-select gives
+/// `f64::min`'s and `f64::max`'s values (up to the sign of a zero, which `<=` does not see),
+/// so the answer is `Aabb::hit`'s; their NaN handling was a third of the test (cornell's room
+/// is a union of six triangles, tested box by box for every shadow and gathering ray).
+#[derive(Clone, Copy)]
+pub struct Slabs {
+    origin: DVec3,
+    inv_dir: DVec3,
+    /// No NaN possible: the plain comparisons apply.
+    clean: bool,
+}
+
+impl Slabs {
+    #[inline]
+    pub fn new(origin: DVec3, inv_dir: DVec3) -> Slabs {
+        let clean = origin.is_finite() && inv_dir.is_finite() && !inv_dir.cmpeq(DVec3::ZERO).any();
+        Slabs {
+            origin,
+            inv_dir,
+            clean,
+        }
+    }
+
+    /// Whether the ray crosses `b` within `[0, tmax]`: `b.hit(origin, inv_dir, tmax).is_some()`.
+    #[inline(always)]
+    pub fn hits(&self, b: &Aabb, tmax: f64) -> bool {
+        if !self.clean {
+            return self.hits_nan(b, tmax);
+        }
+        #[inline(always)]
+        fn lo(a: f64, b: f64) -> f64 {
+            if a < b {
+                a
+            } else {
+                b
+            }
+        }
+        #[inline(always)]
+        fn hi(a: f64, b: f64) -> f64 {
+            if a > b {
+                a
+            } else {
+                b
+            }
+        }
+        let t0 = (b.min - self.origin) * self.inv_dir;
+        let t1 = (b.max - self.origin) * self.inv_dir;
+        let tnear = hi(hi(lo(t0.x, t1.x), hi(lo(t0.y, t1.y), lo(t0.z, t1.z))), 0.0);
+        let far = lo(hi(t0.x, t1.x), lo(hi(t0.y, t1.y), hi(t0.z, t1.z)));
+        // `far.min(tmax)` keeps `far` when `tmax` is NaN; so does this order.
+        let tfar = if tmax < far { tmax } else { far };
+        tnear <= tfar
+    }
+
+    /// `hits` for a ray that may make NaNs (rare: axis-parallel rays), out of the way of the
+    /// inlined plain test.
+    #[cold]
+    #[inline(never)]
+    fn hits_nan(&self, b: &Aabb, tmax: f64) -> bool {
+        b.hit(self.origin, self.inv_dir, tmax).is_some()
+    }
+
+    /// `hits` of two boxes at once, one per SSE lane (each lane the scalar test's operations
+    /// in its order).
+    #[inline(always)]
+    pub fn hits2(&self, a: &Aabb, b: &Aabb, tmax: f64) -> (bool, bool) {
+        #[cfg(target_arch = "x86_64")]
+        if self.clean {
+            use std::arch::x86_64::*;
+            // SAFETY: SSE2 is part of x86_64; the store writes two doubles into a two-double
+            // array.
+            unsafe {
+                let axis = |o: f64, inv: f64, lo_a: f64, lo_b: f64, hi_a: f64, hi_b: f64| {
+                    let (o, inv) = (_mm_set1_pd(o), _mm_set1_pd(inv));
+                    let t0 = _mm_mul_pd(_mm_sub_pd(_mm_set_pd(lo_b, lo_a), o), inv);
+                    let t1 = _mm_mul_pd(_mm_sub_pd(_mm_set_pd(hi_b, hi_a), o), inv);
+                    (_mm_min_pd(t0, t1), _mm_max_pd(t0, t1))
+                };
+                let (o, inv) = (self.origin, self.inv_dir);
+                let (nx, fx) = axis(o.x, inv.x, a.min.x, b.min.x, a.max.x, b.max.x);
+                let (ny, fy) = axis(o.y, inv.y, a.min.y, b.min.y, a.max.y, b.max.y);
+                let (nz, fz) = axis(o.z, inv.z, a.min.z, b.min.z, a.max.z, b.max.z);
+                let near = _mm_max_pd(_mm_max_pd(nx, _mm_max_pd(ny, nz)), _mm_setzero_pd());
+                let far = _mm_min_pd(fx, _mm_min_pd(fy, fz));
+                // `far.min(tmax)`, which keeps `far` when `tmax` is NaN: minpd returns its
+                // second operand when either is NaN.
+                let far = _mm_min_pd(_mm_set1_pd(tmax), far);
+                let mask = _mm_movemask_pd(_mm_cmple_pd(near, far));
+                return (mask & 1 != 0, mask & 2 != 0);
+            }
+        }
+        (self.hits(a, tmax), self.hits(b, tmax))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -279,6 +373,63 @@ mod tests {
         let t = Transform::rotate(DVec3::new(0.0, 90.0, 0.0));
         let p = t.point(DVec3::X);
         assert!((p - DVec3::new(0.0, 0.0, -1.0)).length() < 1e-12, "{p}");
+    }
+
+    /// `Slabs::hits` answers as `Aabb::hit` does, for rays with and without NaN-prone
+    /// directions and for flat, infinite and empty boxes.
+    #[test]
+    fn slabs_match_aabb_hit() {
+        let mut h = 7u64;
+        let mut rnd = || {
+            h = h
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (h >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        let specials = [0.0, -0.0, 1.0, f64::INFINITY, f64::NEG_INFINITY];
+        let mut checked = 0;
+        let mut prev = Aabb::INFINITE;
+        for k in 0..20000 {
+            let mut origin = DVec3::new(rnd(), rnd(), rnd()) * 4.0;
+            let mut dir = DVec3::new(rnd(), rnd(), rnd());
+            if k % 5 == 0 {
+                dir[k / 5 % 3] = 0.0;
+            }
+            if k % 11 == 0 {
+                origin[k / 11 % 3] = 1.0;
+            }
+            let mut b = Aabb::new(
+                DVec3::new(rnd(), rnd(), rnd()) * 3.0,
+                DVec3::new(rnd(), rnd(), rnd()) * 3.0,
+            );
+            match k % 7 {
+                0 => b.max.y = b.min.y,
+                1 => b.min[k % 3] = specials[k / 7 % 5],
+                2 => b = Aabb::INFINITE,
+                3 => b = Aabb::EMPTY,
+                _ => {}
+            }
+            let tmax = match k % 13 {
+                0 => f64::INFINITY,
+                1 => f64::NAN,
+                _ => rnd().abs() * 10.0,
+            };
+            let inv_dir = dir.recip();
+            let want = b.hit(origin, inv_dir, tmax).is_some();
+            let slabs = Slabs::new(origin, inv_dir);
+            assert_eq!(slabs.hits(&b, tmax), want, "{origin} {dir} {b:?} {tmax}");
+            assert_eq!(
+                slabs.hits2(&b, &prev, tmax),
+                (want, prev.hit(origin, inv_dir, tmax).is_some())
+            );
+            assert_eq!(
+                slabs.hits2(&prev, &b, tmax),
+                (prev.hit(origin, inv_dir, tmax).is_some(), want)
+            );
+            prev = b;
+            checked += usize::from(want);
+        }
+        assert!(checked > 2000, "{checked}");
     }
 
     #[test]

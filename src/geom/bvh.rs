@@ -11,7 +11,7 @@ use std::mem::MaybeUninit;
 
 use rayon::prelude::*;
 
-use crate::math::{Aabb, DVec3, Ray, Slabs};
+use crate::math::{Aabb, DVec3, Ray};
 
 const BINS: usize = 16;
 const MAX_LEAF: usize = 4;
@@ -38,7 +38,8 @@ struct Node {
 pub struct Bvh {
     nodes: Vec<Node>,
     prims: Vec<u32>,
-    /// Every node's box is finite: the walk takes the paired slab test (`Slabs::hit2`).
+    /// Every node's box is finite, so a ray with a finite origin and finite, nonzero
+    /// direction components never makes a NaN in the slab test (`Slabs2`).
     finite: bool,
 }
 
@@ -58,6 +59,129 @@ pub fn ray_recip(ray: &Ray) -> DVec3 {
         )
     };
     DVec3::new(1.0 / x, 1.0 / y, 1.0 / z)
+}
+
+/// The slab test of two boxes at once, one per SSE lane, for a ray whose slab distances cannot
+/// be NaN except along its `flat` axes (computed apart). Each lane does `Aabb::hit`'s
+/// operations in its order; without NaNs the minimum and maximum instructions give
+/// `f64::min`'s and `f64::max`'s values (up to the sign of a zero, which no comparison sees),
+/// so the answers and the entry distances are `Aabb::hit`'s bit for bit (unit tests
+/// `paired_slabs_match_aabb_hit` and `..._for_flat_rays`). `Aabb::hit` spends a third of its
+/// work on the NaN handling of `f64::min`.
+#[cfg(target_arch = "x86_64")]
+struct Slabs2 {
+    origin: [std::arch::x86_64::__m128d; 3],
+    inv_dir: [std::arch::x86_64::__m128d; 3],
+    /// Axes whose reciprocal direction is infinite (a direction component of ±0, as every
+    /// ray of an axis-aligned orthographic or cylinder camera has): their slab distances can
+    /// be NaN (0·∞ where the origin lies on a box's face), so they are computed as `Aabb::hit`
+    /// computes them, NaN-aware, one box at a time (`flat_axis`).
+    flat: [bool; 3],
+    origin_s: DVec3,
+    inv_s: DVec3,
+}
+
+#[cfg(target_arch = "x86_64")]
+impl Slabs2 {
+    /// None for a non-finite origin or a NaN direction: such rays take `Aabb::hit`. Axes of
+    /// infinite reciprocal direction are `flat`.
+    #[inline]
+    fn new(origin: DVec3, inv_dir: DVec3) -> Option<Slabs2> {
+        use std::arch::x86_64::_mm_set1_pd;
+        if !origin.is_finite() || inv_dir.is_nan_mask().any() || inv_dir.cmpeq(DVec3::ZERO).any() {
+            return None;
+        }
+        // SAFETY: SSE2 is part of x86_64.
+        unsafe {
+            Some(Slabs2 {
+                origin: [
+                    _mm_set1_pd(origin.x),
+                    _mm_set1_pd(origin.y),
+                    _mm_set1_pd(origin.z),
+                ],
+                inv_dir: [
+                    _mm_set1_pd(inv_dir.x),
+                    _mm_set1_pd(inv_dir.y),
+                    _mm_set1_pd(inv_dir.z),
+                ],
+                flat: [
+                    inv_dir.x.is_infinite(),
+                    inv_dir.y.is_infinite(),
+                    inv_dir.z.is_infinite(),
+                ],
+                origin_s: origin,
+                inv_s: inv_dir,
+            })
+        }
+    }
+
+    /// A flat axis's (near, far) slab distances for one box, as `Aabb::hit` has them: its
+    /// `f64::min` and `f64::max` of the two distances, which ignore a NaN. Both NaN (a box
+    /// flat in this axis with the origin in its plane) gives (−∞, +∞), which the reductions
+    /// that follow treat as `f64::max` and `f64::min` treat the NaNs: as absent.
+    #[inline]
+    fn flat_axis(&self, k: usize, lo: f64, hi: f64) -> (f64, f64) {
+        let (o, inv) = (self.origin_s[k], self.inv_s[k]);
+        let (t0, t1) = ((lo - o) * inv, (hi - o) * inv);
+        let (near, far) = (t0.min(t1), t0.max(t1));
+        if near.is_nan() {
+            (f64::NEG_INFINITY, f64::INFINITY)
+        } else {
+            (near, far)
+        }
+    }
+
+    /// `Aabb::hit` of `a` and of `b` within (0, tmax): the entry distances of those crossed.
+    #[inline]
+    fn hit2(&self, a: &Aabb, b: &Aabb, tmax: f64) -> (Option<f64>, Option<f64>) {
+        use std::arch::x86_64::*;
+        // SAFETY: SSE2 is part of x86_64; the stores write two doubles into a two-double array.
+        unsafe {
+            let axis = |k: usize, lo_a: f64, lo_b: f64, hi_a: f64, hi_b: f64| {
+                if self.flat[k] {
+                    let (na, fa) = self.flat_axis(k, lo_a, hi_a);
+                    let (nb, fb) = self.flat_axis(k, lo_b, hi_b);
+                    return (_mm_set_pd(nb, na), _mm_set_pd(fb, fa));
+                }
+                let t0 = _mm_mul_pd(
+                    _mm_sub_pd(_mm_set_pd(lo_b, lo_a), self.origin[k]),
+                    self.inv_dir[k],
+                );
+                let t1 = _mm_mul_pd(
+                    _mm_sub_pd(_mm_set_pd(hi_b, hi_a), self.origin[k]),
+                    self.inv_dir[k],
+                );
+                (_mm_min_pd(t0, t1), _mm_max_pd(t0, t1))
+            };
+            let (nx, fx) = axis(0, a.min.x, b.min.x, a.max.x, b.max.x);
+            let (ny, fy) = axis(1, a.min.y, b.min.y, a.max.y, b.max.y);
+            let (nz, fz) = axis(2, a.min.z, b.min.z, a.max.z, b.max.z);
+            // max_element is x.max(y.max(z)), then .max(0.0); likewise for the far side.
+            let near = _mm_max_pd(_mm_max_pd(nx, _mm_max_pd(ny, nz)), _mm_setzero_pd());
+            let far = _mm_min_pd(_mm_min_pd(fx, _mm_min_pd(fy, fz)), _mm_set1_pd(tmax));
+            let mask = _mm_movemask_pd(_mm_cmple_pd(near, far));
+            let mut t = [0.0f64; 2];
+            _mm_storeu_pd(t.as_mut_ptr(), near);
+            (
+                (mask & 1 != 0).then_some(t[0]),
+                (mask & 2 != 0).then_some(t[1]),
+            )
+        }
+    }
+}
+
+/// Other targets take `Aabb::hit` for every ray.
+#[cfg(not(target_arch = "x86_64"))]
+struct Slabs2;
+
+#[cfg(not(target_arch = "x86_64"))]
+impl Slabs2 {
+    fn new(_: DVec3, _: DVec3) -> Option<Slabs2> {
+        None
+    }
+    fn hit2(&self, _: &Aabb, _: &Aabb, _: f64) -> (Option<f64>, Option<f64>) {
+        unreachable!()
+    }
 }
 
 mod build;
@@ -132,10 +256,9 @@ impl Bvh {
             return;
         };
         let origin = ray.origin;
-        // A tree of one leaf (a CSG node's few members) has no pair of boxes to test; rays that
-        // may make NaNs other than along flat axes take `Aabb::hit`.
+        // A tree of one leaf (a CSG node's few members) has no pair of boxes to test.
         let slabs = if self.finite && self.nodes.len() > 1 {
-            Some(Slabs::new(origin, inv_dir)).filter(Slabs::paired)
+            Slabs2::new(origin, inv_dir)
         } else {
             None
         };
@@ -337,6 +460,123 @@ mod tests {
             assert_eq!((a.index, a.count), (b.index, b.count));
             assert_eq!((a.bounds.min, a.bounds.max), (b.bounds.min, b.bounds.max));
         }
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn paired_slabs_match_aabb_hit() {
+        let mut rng = Lcg(5);
+        let mut boxes: Vec<Aabb> = (0..64)
+            .map(|_| {
+                let (a, b) = (rng.vec(10.0), rng.vec(10.0));
+                Aabb::new(a.min(b), a.max(b))
+            })
+            .collect();
+        // Flat boxes, a point box, and boxes the rays start on or inside.
+        boxes.push(Aabb::new(
+            DVec3::new(-1.0, 0.0, -1.0),
+            DVec3::new(1.0, 0.0, 1.0),
+        ));
+        boxes.push(Aabb::new(DVec3::splat(0.5), DVec3::splat(0.5)));
+        boxes.push(Aabb::new(DVec3::splat(-20.0), DVec3::splat(20.0)));
+        let bits = |h: Option<(f64, f64)>| h.map(|t| t.0);
+        let mut checked = 0;
+        for k in 0..4000 {
+            let origin = if k % 7 == 0 {
+                DVec3::ZERO
+            } else {
+                rng.vec(15.0)
+            };
+            let dir = rng.vec(2.0);
+            let inv_dir = DVec3::ONE / dir;
+            let Some(s) = Slabs2::new(origin, inv_dir) else {
+                continue;
+            };
+            let tmax = if k % 3 == 0 {
+                f64::INFINITY
+            } else {
+                rng.next() * 30.0
+            };
+            let (a, b) = (&boxes[k % boxes.len()], &boxes[(k * 7 + 3) % boxes.len()]);
+            let (ha, hb) = s.hit2(a, b, tmax);
+            let (ea, eb) = (
+                bits(a.hit(origin, inv_dir, tmax)),
+                bits(b.hit(origin, inv_dir, tmax)),
+            );
+            assert_eq!(ha.map(|t| t == 0.0), ea.map(|t| t == 0.0));
+            assert_eq!(
+                ha.filter(|t| *t != 0.0).map(f64::to_bits),
+                ea.filter(|t| *t != 0.0).map(f64::to_bits)
+            );
+            assert_eq!(hb.map(|t| t == 0.0), eb.map(|t| t == 0.0));
+            assert_eq!(
+                hb.filter(|t| *t != 0.0).map(f64::to_bits),
+                eb.filter(|t| *t != 0.0).map(f64::to_bits)
+            );
+            checked += 1;
+        }
+        assert!(checked > 3000);
+        assert!(Slabs2::new(DVec3::splat(f64::INFINITY), DVec3::ONE).is_none());
+        assert!(Slabs2::new(DVec3::ZERO, DVec3::splat(f64::NAN)).is_none());
+    }
+
+    /// Rays with direction components of ±0 (infinite reciprocals) whose origins lie inside,
+    /// outside and exactly on the boxes' faces, where `Aabb::hit` meets 0·∞ = NaN: the paired
+    /// test gives its answers and entry distances bit for bit.
+    #[test]
+    fn paired_slabs_match_aabb_hit_for_flat_rays() {
+        let mut rng = Lcg(11);
+        // Whole-number corners, so that origins picked on the same grid land on faces.
+        let grid = |rng: &mut Lcg| (rng.next() * 8.0).floor() - 4.0;
+        let mut boxes = Vec::new();
+        for _ in 0..48 {
+            let a = DVec3::new(grid(&mut rng), grid(&mut rng), grid(&mut rng));
+            let b = DVec3::new(grid(&mut rng), grid(&mut rng), grid(&mut rng));
+            boxes.push(Aabb::new(a.min(b), a.max(b)));
+        }
+        let zeros = [0.0, -0.0];
+        let mut checked = 0;
+        for k in 0..20_000usize {
+            let origin = DVec3::new(grid(&mut rng), grid(&mut rng), grid(&mut rng))
+                + if k % 2 == 0 {
+                    DVec3::ZERO
+                } else {
+                    rng.vec(0.5)
+                };
+            let mut dir = rng.vec(2.0);
+            // One or two components zero (of either sign); sometimes a subnormal one, whose
+            // reciprocal overflows to infinity.
+            let z = zeros[k % 2];
+            match k % 7 {
+                0 => dir.x = z,
+                1 => dir.y = z,
+                2 => dir.z = z,
+                3 => (dir.x, dir.y) = (z, -z),
+                4 => (dir.y, dir.z) = (z, z),
+                5 => dir.x = 1e-310,
+                _ => (dir.x, dir.z) = (-z, z),
+            }
+            let inv_dir = DVec3::ONE / dir;
+            let s = Slabs2::new(origin, inv_dir).expect("flat rays take the paired test");
+            let tmax = if k % 3 == 0 {
+                f64::INFINITY
+            } else {
+                rng.next() * 30.0
+            };
+            let (a, b) = (&boxes[k % boxes.len()], &boxes[(k * 7 + 3) % boxes.len()]);
+            let (ha, hb) = s.hit2(a, b, tmax);
+            for (h, bx) in [(ha, a), (hb, b)] {
+                let e = bx.hit(origin, inv_dir, tmax).map(|t| t.0);
+                assert_eq!(h.map(|t| t == 0.0), e.map(|t| t == 0.0), "{k}");
+                assert_eq!(
+                    h.filter(|t| *t != 0.0).map(f64::to_bits),
+                    e.filter(|t| *t != 0.0).map(f64::to_bits),
+                    "{k}"
+                );
+            }
+            checked += 1;
+        }
+        assert_eq!(checked, 20_000);
     }
 
     #[test]
