@@ -4,7 +4,7 @@
 //! code computes them), so lookups answer bit for bit what a `Vec<Rgbft>` would, while the
 //! image takes 1 or 2 bytes a pixel instead of 40 and stays in the caches.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 use crate::color::Rgbft;
 
@@ -55,10 +55,18 @@ impl ImagePixels {
         I: Iterator<Item = K> + Clone,
         F: FnMut(K) -> Rgbft,
     {
-        let mut seen: HashMap<K, u16> = HashMap::new();
+        let mut seen: FxHashMap<K, u16> = FxHashMap::default();
         let mut table = Vec::new();
         let mut idx: Vec<u16> = Vec::with_capacity(n);
+        // Neighbouring pixels are often alike: skip the map for a repeat of the last key.
+        let mut last: Option<(K, u16)> = None;
         for k in keys.clone() {
+            if let Some((lk, li)) = last {
+                if lk == k {
+                    idx.push(li);
+                    continue;
+                }
+            }
             let i = match seen.get(&k) {
                 Some(&i) => i,
                 None => {
@@ -73,6 +81,7 @@ impl ImagePixels {
                     i
                 }
             };
+            last = Some((k, i));
             idx.push(i);
         }
         Self::tabled(table, idx)
@@ -80,7 +89,7 @@ impl ImagePixels {
 
     /// Compacts whole pixels (distinct by their bits).
     pub fn from_vec(v: Vec<Rgbft>) -> ImagePixels {
-        let mut seen: HashMap<[u64; 5], u16> = HashMap::new();
+        let mut seen: FxHashMap<[u64; 5], u16> = FxHashMap::default();
         let mut table = Vec::new();
         let mut idx: Vec<u16> = Vec::with_capacity(v.len());
         for c in &v {
