@@ -195,7 +195,7 @@ mod tests {
         let v: Vec<Rgbft> = (0..1000).map(|i| grey((i % 7) as f64 / 7.0)).collect();
         let p = ImagePixels::from_vec(v.clone());
         assert_eq!(p.len(), 1000);
-        assert!(p.heap_bytes() < 1100);
+        assert_eq!(p.heap_bytes(), 1000 + 7 * 40);
         assert_eq!(p.to_vec(), v);
     }
 
