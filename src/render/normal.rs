@@ -280,7 +280,7 @@ fn bump_map(im: &ImageMap, lp: DVec3, ln: DVec3, amount: f64) -> DVec3 {
     let grey = |x: i64, y: i64| {
         let xi = x.rem_euclid(im.width as i64) as usize;
         let yi = y.rem_euclid(im.height as i64) as usize;
-        let c = im.pixels[yi * im.width as usize + xi];
+        let c = im.pixels.get(yi * im.width as usize + xi);
         0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z
     };
     let (u, v) = (lp.x - lp.x.floor(), lp.y - lp.y.floor());

@@ -196,7 +196,7 @@ pub fn image(im: &ImageMap, lp: DVec3) -> Rgbft {
         let px = |x: f64, y: f64| {
             let xi = (x as i64).rem_euclid(im.width as i64) as usize;
             let yi = (y as i64).rem_euclid(im.height as i64) as usize;
-            im.pixels[yi * im.width as usize + xi]
+            im.pixels.get(yi * im.width as usize + xi)
         };
         let top = px(x0, y0).lerp(px(x0 + 1.0, y0), tx);
         let bottom = px(x0, y0 + 1.0).lerp(px(x0 + 1.0, y0 + 1.0), tx);
@@ -204,7 +204,7 @@ pub fn image(im: &ImageMap, lp: DVec3) -> Rgbft {
     }
     let xi = (fx as usize).min(im.width as usize - 1);
     let yi = (fy as usize).min(im.height as usize - 1);
-    im.pixels[yi * im.width as usize + xi]
+    im.pixels.get(yi * im.width as usize + xi)
 }
 
 /// The pixel (row 0 at the top) a `material_map` reads at `lp`: the image's nearest pixel,

@@ -287,11 +287,11 @@ impl Ctx {
             .or_insert_with(|| {
                 let mut converted = im.clone();
                 if let Some(g) = gamma {
-                    for px in &mut Arc::make_mut(&mut converted).pixels {
-                        px.rgb = px.rgb.powf(1.0 / g);
-                    }
+                    Arc::make_mut(&mut converted)
+                        .pixels
+                        .map_values(|px| px.rgb = px.rgb.powf(1.0 / g));
                 }
-                let transparent = converted.pixels.iter().any(|c| !c.is_opaque());
+                let transparent = converted.pixels.any(|c| !c.is_opaque());
                 (converted, transparent)
             })
             .clone()

@@ -649,7 +649,7 @@ pub struct ImageMap {
     pub width: u32,
     pub height: u32,
     /// Linear-light pixels, row 0 at the top (as stored in the file for an image pattern).
-    pub pixels: Vec<Rgbft>,
+    pub pixels: crate::scene::image_pixels::ImagePixels,
     /// `use_alpha` (image patterns take their value from the alpha channel).
     pub use_alpha: bool,
     /// A bump map's `bump_size`, if it gave one.
@@ -670,7 +670,7 @@ impl ImageMap {
             interpolate: 0,
             width: 0,
             height: 0,
-            pixels: Vec::new(),
+            pixels: Default::default(),
             use_alpha: false,
             bump_size: None,
             use_index,

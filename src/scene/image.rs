@@ -4,6 +4,7 @@ use std::path::Path;
 
 use crate::color::Rgbft;
 use crate::scene::desc::ImageMap;
+use crate::scene::image_pixels::ImagePixels;
 
 /// sRGB transfer function to linear; PNGs without a gAMA chunk are taken as sRGB, as POV-Ray 3.7
 /// does for 8-bit and 16-bit PNG image maps.
@@ -36,13 +37,13 @@ pub fn to_file_values(map: &mut ImageMap) {
     if float {
         return;
     }
-    for p in &mut map.pixels {
+    map.pixels.map_values(|p| {
         p.rgb = crate::math::DVec3::new(
             linear_to_srgb(p.rgb.x),
             linear_to_srgb(p.rgb.y),
             linear_to_srgb(p.rgb.z),
-        );
-    }
+        )
+    });
 }
 
 pub fn load_image_map(path: &Path, map: &mut ImageMap) -> Result<(), String> {
@@ -53,49 +54,53 @@ pub fn load_image_map(path: &Path, map: &mut ImageMap) -> Result<(), String> {
     map.height = img.height();
     // POV-Ray maps alpha to transmit (1 - alpha).
     let transmit = |a: f64| if has_alpha { 1.0 - a } else { 0.0 };
+    let n = img.width() as usize * img.height() as usize;
     map.pixels = match &img {
-        image::DynamicImage::ImageRgb32F(_) | image::DynamicImage::ImageRgba32F(_) => img
-            .to_rgba32f()
-            .pixels()
-            .map(|p| {
-                Rgbft::new(
-                    p.0[0] as f64,
-                    p.0[1] as f64,
-                    p.0[2] as f64,
-                    0.0,
-                    transmit(p.0[3] as f64),
-                )
-            })
-            .collect(),
+        image::DynamicImage::ImageRgb32F(_) | image::DynamicImage::ImageRgba32F(_) => {
+            ImagePixels::from_vec(
+                img.to_rgba32f()
+                    .pixels()
+                    .map(|p| {
+                        Rgbft::new(
+                            p.0[0] as f64,
+                            p.0[1] as f64,
+                            p.0[2] as f64,
+                            0.0,
+                            transmit(p.0[3] as f64),
+                        )
+                    })
+                    .collect(),
+            )
+        }
         _ if img.color().bytes_per_pixel() / img.color().channel_count() == 1 => {
             // 8-bit images: decode through a table instead of a powf per channel.
             let lut: Vec<f64> = (0..256).map(|i| srgb_to_linear(i as f64 / 255.0)).collect();
-            img.to_rgba8()
-                .pixels()
-                .map(|p| {
-                    Rgbft::new(
-                        lut[p.0[0] as usize],
-                        lut[p.0[1] as usize],
-                        lut[p.0[2] as usize],
-                        0.0,
-                        transmit(p.0[3] as f64 / 255.0),
-                    )
-                })
-                .collect()
-        }
-        _ => img
-            .to_rgba32f()
-            .pixels()
-            .map(|p| {
+            let rgba = img.to_rgba8();
+            ImagePixels::from_keys(n, rgba.pixels().map(|p| p.0), |p| {
                 Rgbft::new(
-                    srgb_to_linear(p.0[0] as f64),
-                    srgb_to_linear(p.0[1] as f64),
-                    srgb_to_linear(p.0[2] as f64),
+                    lut[p[0] as usize],
+                    lut[p[1] as usize],
+                    lut[p[2] as usize],
                     0.0,
-                    transmit(p.0[3] as f64),
+                    transmit(p[3] as f64 / 255.0),
                 )
             })
-            .collect(),
+        }
+        _ => {
+            let rgba = img.to_rgba32f();
+            // Keyed by the samples' bits: equal samples decode alike.
+            let keys = rgba.pixels().map(|p| p.0.map(f32::to_bits));
+            ImagePixels::from_keys(n, keys, |k| {
+                let p = k.map(f32::from_bits);
+                Rgbft::new(
+                    srgb_to_linear(p[0] as f64),
+                    srgb_to_linear(p[1] as f64),
+                    srgb_to_linear(p[2] as f64),
+                    0.0,
+                    transmit(p[3] as f64),
+                )
+            })
+        }
     };
     Ok(())
 }

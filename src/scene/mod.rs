@@ -11,6 +11,7 @@ pub mod focal;
 pub mod gif;
 pub mod height_image;
 pub mod image;
+pub mod image_pixels;
 pub mod light;
 pub mod light_group;
 pub mod media;

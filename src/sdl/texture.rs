@@ -384,8 +384,10 @@ impl Parser {
         if !by_index.is_empty() {
             match crate::scene::image::palette_indices(&path) {
                 Some(indices) if indices.len() == map.pixels.len() => {
+                    // By palette index, not by colour: two entries may share a colour.
+                    let mut pixels = map.pixels.to_vec();
                     for (filter, index, v, _) in by_index {
-                        for (px, &i) in map.pixels.iter_mut().zip(&indices) {
+                        for (px, &i) in pixels.iter_mut().zip(&indices) {
                             if i as f64 == index {
                                 if filter {
                                     px.filter = v;
@@ -395,6 +397,7 @@ impl Parser {
                             }
                         }
                     }
+                    map.pixels = crate::scene::image_pixels::ImagePixels::from_vec(pixels);
                 }
                 _ => {
                     let span = by_index[0].3;
@@ -408,10 +411,10 @@ impl Parser {
             }
         }
         if filter_all.is_some() || transmit_all.is_some() {
-            for px in &mut map.pixels {
+            map.pixels.map_values(|px| {
                 px.filter = filter_all.unwrap_or(px.filter);
                 px.transmit = transmit_all.unwrap_or(px.transmit);
-            }
+            });
         }
         map.path = path;
         Ok(map)
