@@ -147,13 +147,8 @@ mod tests {
     #[test]
     fn any_hit_is_intersect_first() {
         let mut scratch = Vec::new();
-        let mut seed = 12345u64;
-        let mut rnd = || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut rng = crate::geom::test_rng::Lcg(12345);
+        let mut rnd = move || rng.next() * 2.0 - 1.0;
         for r in [0.5, 1.0, 100000.0] {
             let s = Sphere::new(DVec3::new(0.25, -0.5, 1.0), r);
             for _ in 0..20000 {

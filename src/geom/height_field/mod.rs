@@ -649,13 +649,8 @@ mod tests {
         let f =
             |i: usize, j: usize| 0.5 + 0.3 * ((i as f64 * 0.37).sin() * (j as f64 * 0.23).cos());
         let hf = grid(97, 61, f, 0.0);
-        let mut seed = 7u64;
-        let mut rnd = move || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rng = crate::geom::test_rng::Lcg(7);
+        let mut rnd = move || rng.next();
         for _ in 0..400 {
             let o = DVec3::new(rnd() * 3.0 - 1.0, 1.0 + rnd(), rnd() * 3.0 - 1.0);
             let target = DVec3::new(rnd(), rnd() * 0.8, rnd());

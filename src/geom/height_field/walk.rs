@@ -188,13 +188,8 @@ mod tests {
     /// children), with water and with flat stretches (equal heights: edge ties).
     #[test]
     fn signed_walk_finds_what_visit_finds() {
-        let mut seed = 11u64;
-        let mut rnd = move || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rng = crate::geom::test_rng::Lcg(11);
+        let mut rnd = move || rng.next();
         let mut checked = 0;
         for (w, h, water) in [(2, 3, 0.0), (5, 4, 0.0), (37, 23, 0.3), (64, 65, 0.0)] {
             let mut heights = Vec::new();

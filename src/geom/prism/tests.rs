@@ -96,10 +96,10 @@ fn frame_with_hole() {
     assert!(hits(&open, &down).is_empty());
 }
 
-#[test]
-fn the_window_drops_no_crossing() {
-    use crate::geom::test_rng::Lcg;
-    let quad: Vec<P2> = vec![
+/// A quadratic-spline 6 x 8 rectangle (with its leading and trailing control points) for
+/// the random-ray tests.
+fn quadratic_frame() -> Vec<P2> {
+    vec![
         [1.0, -1.0],
         [0.0, 0.0],
         [6.0, 0.0],
@@ -107,7 +107,13 @@ fn the_window_drops_no_crossing() {
         [0.0, 8.0],
         [0.0, 0.0],
         [2.0, 0.0],
-    ];
+    ]
+}
+
+#[test]
+fn the_window_drops_no_crossing() {
+    use crate::geom::test_rng::Lcg;
+    let quad = quadratic_frame();
     let mut rng = Lcg(5);
     let pieces = outline(SplineKind::Quadratic, &quad).unwrap().pieces;
     for conic in [false, true] {
@@ -191,20 +197,8 @@ fn conic_sweep_scales_with_height() {
 #[test]
 fn random_rays_match_the_inside_test() {
     use crate::geom::test_rng::Lcg;
-    let quad: Vec<P2> = vec![
-        [1.0, -1.0],
-        [0.0, 0.0],
-        [6.0, 0.0],
-        [6.0, 8.0],
-        [0.0, 8.0],
-        [0.0, 0.0],
-        [2.0, 0.0],
-        [1.0, 1.0],
-        [5.0, 1.0],
-        [5.0, 7.0],
-        [1.0, 7.0],
-        [1.0, 1.0],
-    ];
+    let mut quad = quadratic_frame();
+    quad.extend([[1.0, 1.0], [5.0, 1.0], [5.0, 7.0], [1.0, 7.0], [1.0, 1.0]]);
     let bez: Vec<P2> = vec![
         [0.0, 0.0],
         [4.0, -2.0],
