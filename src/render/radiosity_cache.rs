@@ -9,20 +9,7 @@ use smallvec::SmallVec;
 use crate::math::DVec3;
 
 use super::trace::Seen;
-
-/// One cached irradiance value.
-#[derive(Clone, Copy, Debug)]
-pub struct Sample {
-    pub p: DVec3,
-    pub n: DVec3,
-    /// What the sample gathered, after `gray_threshold`, `max_sample` and `brightness`.
-    pub irr: DVec3,
-    /// Reuse radius: harmonic mean distance to what the rays met, clamped by
-    /// `minimum_reuse` and `maximum_reuse` times the distance from the camera.
-    pub r: f64,
-    /// 1 for samples seen from camera rays, deeper for those of their gathering rays.
-    pub level: u32,
-}
+pub use crate::scene::scratch::RadiositySample as Sample;
 
 impl Sample {
     pub(super) fn footprint(&self) -> Footprint {

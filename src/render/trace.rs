@@ -11,6 +11,7 @@ use crate::math::{DVec3, Ray};
 use crate::scene::build::Scene;
 use crate::scene::desc::Interior;
 use crate::scene::object::{Scratch, SurfaceHit};
+pub use crate::scene::scratch::LitBy;
 
 use super::{normal, pigment, texture_map};
 
@@ -656,18 +657,6 @@ impl<'a> Tracer<'a> {
         }
         Seen { rgb: col, clear }
     }
-}
-
-/// A light reaching the point being shaded, after shadows.
-pub struct LitBy {
-    pub color: DVec3,
-    pub l: DVec3,
-    pub cos_n: f64,
-    pub shadowless: bool,
-    /// Behind the surface, lighting it through `double_illuminate`.
-    pub back: bool,
-    /// Uniform in [0, 1), fixed by the point and the light: `crand`'s random share.
-    pub grain: f64,
 }
 
 /// A reflected colour raised to a reflection `exponent`'s power (per channel, negative

@@ -20,4 +20,5 @@ pub mod mesh_triangles;
 pub mod object;
 pub mod pattern;
 pub mod photon;
+pub mod scratch;
 pub mod shapes;

@@ -10,6 +10,7 @@ use crate::math::{Aabb, DVec3, Ray, Slabs, Transform};
 use crate::scene::children::{union_first_hit, union_scan_first_hit, ChildIndex};
 use crate::scene::desc::{CsgOp, MeshData, Texture};
 use crate::scene::faces::{self, Faces};
+pub use crate::scene::scratch::Scratch;
 
 pub enum ObjKind {
     /// A shape, and for a clipped leaf whose crossings outside a box are all clipped away
@@ -87,54 +88,6 @@ pub struct Object {
     pub photons: u8,
     /// `photons { target Float }`: the spacing multiplier of photons shot at it.
     pub photon_mult: f32,
-}
-
-/// Per-thread buffers for intersection, so no ray allocates: shape crossings, and surface
-/// crossings gathered for CSG filtering and shadow rays.
-#[derive(Default)]
-pub struct Scratch<'a> {
-    pub hits: Vec<Hit>,
-    pub surface: Vec<SurfaceHit<'a>>,
-    /// Rays traced with this scratch (camera, reflected, refracted and shadow rays), for the
-    /// statistics line.
-    pub rays: u64,
-    /// The lights reaching the point being shaded, shared by its texture layers.
-    pub lit: Vec<crate::render::trace::LitBy>,
-    /// Blob components reaching a shaded point, with their field (per-component textures).
-    pub blob_weights: Vec<(usize, f64)>,
-    /// Shadow samples of an area light's array already taken for the point being shaded.
-    pub area_samples: Vec<Option<DVec3>>,
-    /// CSG members a ray may meet, gathered from a node's index (a stack: nested nodes append
-    /// after their parent's and truncate back).
-    pub members: Vec<u32>,
-    /// A CSG node's member crossings for `first_hit`, nearest first: (t, where in `surface`,
-    /// member). A stack like `members`.
-    pub csg_order: Vec<(f64, u32, u32)>,
-    /// Per light, the opaque object that last blocked a shadow ray to it (POV-Ray's shadow
-    /// cache): asked first, since neighbouring points are mostly shadowed by the same object.
-    pub blockers: Vec<Option<&'a Object>>,
-    /// Per light, the member of a transparent union (and that union, a top-level object)
-    /// whose crossing last blocked a shadow ray to it, asked first likewise.
-    pub member_blockers: Vec<Option<(&'a Object, &'a Object)>>,
-    /// The members of a transparent union a shadow ray may cross (render::shadow).
-    pub shadow_members: Vec<&'a Object>,
-    /// Radiosity samples gathered while tracing the current camera sample, not yet in the
-    /// shared cache (which is frozen during a pass, for determinism).
-    pub rad_local: Vec<crate::render::radiosity::Sample>,
-    /// Where a camera ray's radiosity lookups read the cache: (point, normal).
-    pub rad_seen: Vec<(DVec3, DVec3)>,
-    /// Photons found around the point being shaded: (squared distance, index).
-    pub photon_found: Vec<(f32, u32)>,
-    /// The media lists along the ray stretch being sampled (render::media).
-    pub media_lists: Vec<&'a [crate::scene::media::Media]>,
-    /// Where that stretch enters and leaves light beams.
-    pub media_cuts: Vec<f64>,
-    /// The lights that may scatter on that stretch (slot, and the part of the stretch outside
-    /// which the light is dark), and those that may on the piece being sampled (slots).
-    pub media_lights: Vec<(usize, f64, f64)>,
-    pub media_piece: Vec<usize>,
-    /// At one media sample: each scattering media's density, with its scattering.
-    pub media_scatter: Vec<(DVec3, crate::scene::media::Scattering)>,
 }
 
 /// Calls `f(member, i, s)` for every member of a CSG node a ray may cross within `tmax`: all of

@@ -1,0 +1,84 @@
+//! The per-thread scratch a ray's intersection and shading work in (so no ray allocates), and
+//! the plain records the renderer keeps in it: the lights reaching a shaded point and the
+//! radiosity samples gathered but not yet shared. The records are defined here, not in
+//! render, so that the scene layer that owns the scratch does not depend on the renderer;
+//! their behaviour (lighting, the irradiance cache) stays in render.
+
+use crate::geom::Hit;
+use crate::math::DVec3;
+use crate::scene::media::{Media, Scattering};
+use crate::scene::object::{Object, SurfaceHit};
+
+/// Per-thread buffers for intersection, so no ray allocates: shape crossings, and surface
+/// crossings gathered for CSG filtering and shadow rays.
+#[derive(Default)]
+pub struct Scratch<'a> {
+    pub hits: Vec<Hit>,
+    pub surface: Vec<SurfaceHit<'a>>,
+    /// Rays traced with this scratch (camera, reflected, refracted and shadow rays), for the
+    /// statistics line.
+    pub rays: u64,
+    /// The lights reaching the point being shaded, shared by its texture layers.
+    pub lit: Vec<LitBy>,
+    /// Blob components reaching a shaded point, with their field (per-component textures).
+    pub blob_weights: Vec<(usize, f64)>,
+    /// Shadow samples of an area light's array already taken for the point being shaded.
+    pub area_samples: Vec<Option<DVec3>>,
+    /// CSG members a ray may meet, gathered from a node's index (a stack: nested nodes append
+    /// after their parent's and truncate back).
+    pub members: Vec<u32>,
+    /// A CSG node's member crossings for `first_hit`, nearest first: (t, where in `surface`,
+    /// member). A stack like `members`.
+    pub csg_order: Vec<(f64, u32, u32)>,
+    /// Per light, the opaque object that last blocked a shadow ray to it (POV-Ray's shadow
+    /// cache): asked first, since neighbouring points are mostly shadowed by the same object.
+    pub blockers: Vec<Option<&'a Object>>,
+    /// Per light, the member of a transparent union (and that union, a top-level object)
+    /// whose crossing last blocked a shadow ray to it, asked first likewise.
+    pub member_blockers: Vec<Option<(&'a Object, &'a Object)>>,
+    /// The members of a transparent union a shadow ray may cross (render::shadow).
+    pub shadow_members: Vec<&'a Object>,
+    /// Radiosity samples gathered while tracing the current camera sample, not yet in the
+    /// shared cache (which is frozen during a pass, for determinism).
+    pub rad_local: Vec<RadiositySample>,
+    /// Where a camera ray's radiosity lookups read the cache: (point, normal).
+    pub rad_seen: Vec<(DVec3, DVec3)>,
+    /// Photons found around the point being shaded: (squared distance, index).
+    pub photon_found: Vec<(f32, u32)>,
+    /// The media lists along the ray stretch being sampled (render::media).
+    pub media_lists: Vec<&'a [Media]>,
+    /// Where that stretch enters and leaves light beams.
+    pub media_cuts: Vec<f64>,
+    /// The lights that may scatter on that stretch (slot, and the part of the stretch outside
+    /// which the light is dark), and those that may on the piece being sampled (slots).
+    pub media_lights: Vec<(usize, f64, f64)>,
+    pub media_piece: Vec<usize>,
+    /// At one media sample: each scattering media's density, with its scattering.
+    pub media_scatter: Vec<(DVec3, Scattering)>,
+}
+
+/// A light reaching the point being shaded, after shadows.
+pub struct LitBy {
+    pub color: DVec3,
+    pub l: DVec3,
+    pub cos_n: f64,
+    pub shadowless: bool,
+    /// Behind the surface, lighting it through `double_illuminate`.
+    pub back: bool,
+    /// Uniform in [0, 1), fixed by the point and the light: `crand`'s random share.
+    pub grain: f64,
+}
+
+/// One cached irradiance value.
+#[derive(Clone, Copy, Debug)]
+pub struct RadiositySample {
+    pub p: DVec3,
+    pub n: DVec3,
+    /// What the sample gathered, after `gray_threshold`, `max_sample` and `brightness`.
+    pub irr: DVec3,
+    /// Reuse radius: harmonic mean distance to what the rays met, clamped by
+    /// `minimum_reuse` and `maximum_reuse` times the distance from the camera.
+    pub r: f64,
+    /// 1 for samples seen from camera rays, deeper for those of their gathering rays.
+    pub level: u32,
+}
