@@ -426,11 +426,14 @@ impl<'a> Tracer<'a> {
         let n = obj.normal(p, h);
         let entering = n.dot(dir) < 0.0;
         let nf = if entering { n } else { -n };
-        super::pattern::set_surface(Some(super::pattern::Surface {
-            point: p,
-            normal: nf,
-            ray: dir,
-        }));
+        // Only slope and aoi read the surface: without them the thread-local write is skipped.
+        if crate::scene::pattern::surface_patterns_made() {
+            super::pattern::set_surface(Some(super::pattern::Surface {
+                point: p,
+                normal: nf,
+                ray: dir,
+            }));
+        }
         let top = obj.texture_facing(h, !entering);
         let uv = if top.uses_uv() {
             obj.uv_point(p, h)
