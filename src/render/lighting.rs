@@ -118,7 +118,6 @@ impl<'a> Tracer<'a> {
         ctx: &TraceCtx<'a>,
     ) -> DVec3 {
         let opacity = c.opacity();
-        let specular_exp = 1.0 / fin.roughness.max(1e-6);
         let ambient = fin.ambient * self.scene.ambient_light;
         let own = match (indirect, &self.rad) {
             (Some(e), Some(r)) if r.set.keep_ambient => ambient + e * fin.diffuse,
@@ -126,14 +125,29 @@ impl<'a> Tracer<'a> {
             (None, _) => ambient,
         };
         let mut col = (own + fin.emission) * c.rgb * opacity;
+        if ctx.lit.is_empty() {
+            return col;
+        }
+        // Decided once per layer, not per light. A factor that is exactly one (no irid, no
+        // metallic, no crand) is left out rather than multiplied in: x·1 is x to the bit.
+        let diffuse = fin.diffuse > 0.0;
+        let phong = fin.phong > 0.0;
+        let specular = fin.specular > 0.0;
+        let specular_exp = if specular {
+            1.0 / fin.roughness.max(1e-6)
+        } else {
+            0.0
+        };
+        let metallic = fin.metallic != 0.0 && (phong || specular);
+        let cos_view = -dir.dot(nf);
         for lb in &ctx.lit {
             let (lc, l) = (lb.color, lb.l);
             // Iridescence scales the light's diffuse and highlight terms alike (measured).
-            let irid_f = match &fin.irid {
-                Some(irid) => super::irid::factor(irid, p, nf.dot(l), -dir.dot(nf)),
-                None => DVec3::ONE,
+            let lc_irid = match &fin.irid {
+                Some(irid) => lc * super::irid::factor(irid, p, nf.dot(l), cos_view),
+                None => lc,
             };
-            if fin.diffuse > 0.0 {
+            if diffuse {
                 // The same as lb.cos_n unless the normal was perturbed; a light behind a
                 // double-illuminated surface lights it as if from the front.
                 let cos_n = if lb.back { -nf.dot(l) } else { nf.dot(l) };
@@ -145,33 +159,37 @@ impl<'a> Tracer<'a> {
                     };
                     // crand darkens each light's diffuse term by its own random share
                     // (measured with povray: independent per light, uniform, ambient untouched).
-                    let grainy = 1.0 - fin.crand * lb.grain;
-                    col += lc * irid_f * c.rgb * (fin.diffuse * d * opacity * grainy);
+                    let k = if fin.crand != 0.0 {
+                        fin.diffuse * d * opacity * (1.0 - fin.crand * lb.grain)
+                    } else {
+                        fin.diffuse * d * opacity
+                    };
+                    col += lc_irid * c.rgb * k;
                 }
             }
             // POV-Ray 3.7 gives shadowless lights no highlights (tests/probes/shadowless_*),
             // nor lights behind a double-illuminated surface (tests/probes/double_illuminate).
-            if lb.shadowless || lb.back {
+            if lb.shadowless || lb.back || !(phong || specular) {
                 continue;
             }
             // Highlights take the surface colour in proportion to `metallic`, less so as the
             // light grazes the surface (measured: render::metallic).
-            let highlight_tint = if fin.phong > 0.0 || fin.specular > 0.0 {
-                super::metallic::tint(c.rgb, fin.metallic, nf.dot(l))
+            let lc_tint = if metallic {
+                lc_irid * super::metallic::tint(c.rgb, fin.metallic, nf.dot(l))
             } else {
-                DVec3::ONE
+                lc_irid
             };
-            if fin.phong > 0.0 {
+            if phong {
                 let cos_r = mirror.dot(l);
                 if cos_r > 0.0 {
-                    col += lc * irid_f * highlight_tint * (fin.phong * cos_r.powf(fin.phong_size));
+                    col += lc_tint * (fin.phong * cos_r.powf(fin.phong_size));
                 }
             }
-            if fin.specular > 0.0 {
+            if specular {
                 let hv = (l - dir).normalize_or_zero();
                 let cos_h = nf.dot(hv);
                 if cos_h > 0.0 {
-                    col += lc * irid_f * highlight_tint * (fin.specular * cos_h.powf(specular_exp));
+                    col += lc_tint * (fin.specular * cos_h.powf(specular_exp));
                 }
             }
         }

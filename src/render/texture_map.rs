@@ -45,23 +45,7 @@ fn blend_in(
         _ => p,
     };
     let Some(tp) = &tex.pattern else {
-        let c = match tex.pigment.quick {
-            Some(q) if quick => q,
-            _ => match (tex.normal.as_deref(), pattern::surface()) {
-                // Measured: a slope or aoi pigment sees its own texture's perturbed normal.
-                (Some(nd), Some(s))
-                    if pigment::uses_surface(&tex.pigment) && normal::perturbs(Some(nd)) =>
-                {
-                    let pn = normal::perturb_in(nd, space, p, s.normal);
-                    pattern::set_surface(Some(pattern::Surface { normal: pn, ..s }));
-                    let c = pigment::eval(&tex.pigment, pigment_point(tex, p, uv));
-                    pattern::set_surface(Some(s));
-                    c
-                }
-                _ => pigment::eval(&tex.pigment, pigment_point(tex, p, uv)),
-            },
-        };
-        f(c, tex, space, weight);
+        f(plain_colour(tex, p, uv, space, quick), tex, space, weight);
         return;
     };
     // Below a uv-mapped texture the uv point has become the point and goes through the
@@ -124,6 +108,38 @@ fn blend_in(
             blend(&last.1, weight, f)
         }
     }
+}
+
+/// A plain texture's colour at world point `p`, as `blend` hands it on (`space` as there):
+/// what shading calls for a plain layer without going through `blend`'s callback.
+pub fn plain_colour(
+    tex: &Texture,
+    p: DVec3,
+    uv: Option<DVec3>,
+    space: &Transform,
+    quick: bool,
+) -> Rgbft {
+    let p = match uv {
+        Some(uvp) if tex.uv_mapping => uvp,
+        _ => p,
+    };
+    if let (Some(q), true) = (tex.pigment.quick, quick) {
+        return q;
+    }
+    // Measured: a slope or aoi pigment sees its own texture's perturbed normal. The surface
+    // is only read (a thread-local) for such a pigment under such a normal.
+    if let Some(nd) = tex.normal.as_deref() {
+        if pigment::uses_surface(&tex.pigment) && normal::perturbs(Some(nd)) {
+            if let Some(s) = pattern::surface() {
+                let pn = normal::perturb_in(nd, space, p, s.normal);
+                pattern::set_surface(Some(pattern::Surface { normal: pn, ..s }));
+                let c = pigment::eval(&tex.pigment, pigment_point(tex, p, uv));
+                pattern::set_surface(Some(s));
+                return c;
+            }
+        }
+    }
+    pigment::eval(&tex.pigment, pigment_point(tex, p, uv))
 }
 
 /// Whether some plain texture `tex` (one layer) can be made of has a reflection.

@@ -7,9 +7,9 @@
 //! return black.
 
 use crate::color::Rgbft;
-use crate::math::{DVec3, Ray};
+use crate::math::{DVec3, Ray, Transform};
 use crate::scene::build::Scene;
-use crate::scene::desc::Interior;
+use crate::scene::desc::{Interior, Texture};
 use crate::scene::object::{Scratch, SurfaceHit};
 pub use crate::scene::scratch::LitBy;
 
@@ -427,11 +427,14 @@ impl<'a> Tracer<'a> {
         let n = obj.normal(p, h);
         let entering = n.dot(dir) < 0.0;
         let nf = if entering { n } else { -n };
-        super::pattern::set_surface(Some(super::pattern::Surface {
-            point: p,
-            normal: nf,
-            ray: dir,
-        }));
+        // Only slope and aoi read the surface: without them the thread-local write is skipped.
+        if crate::scene::pattern::surface_patterns_made() {
+            super::pattern::set_surface(Some(super::pattern::Surface {
+                point: p,
+                normal: nf,
+                ray: dir,
+            }));
+        }
         let top = obj.texture_facing(h, !entering);
         let uv = if top.uses_uv() {
             obj.uv_point(p, h)
@@ -474,7 +477,8 @@ impl<'a> Tracer<'a> {
         let mut last = Rgbft::BLACK;
         let mut conserve = false;
         // Reflections off perturbed normals go their own ways: (direction, tint·amount).
-        let mut bent: Vec<(DVec3, DVec3)> = Vec::new();
+        // Inline for the few a hit has: a heap Vec cost an allocation per such hit.
+        let mut bent: smallvec::SmallVec<[(DVec3, DVec3); 4]> = smallvec::SmallVec::new();
         // `exponent`: what a reflection brings back is raised to this power first.
         let mut refl_power: Option<f64> = None;
         // The first perturbed normal met decides refraction.
@@ -497,7 +501,7 @@ impl<'a> Tracer<'a> {
             // A patterned texture is shaded as the plain textures it is made of here, each
             // weighted (texture_map blends); a plain one is itself with weight 1.
             let mut layer_c = [0.0; 5];
-            texture_map::blend(tex, p, uv, q.quick_colors, 1.0, &mut |c, part, space, w| {
+            let mut each = |c: Rgbft, part: &Texture, space: &Transform, w: f64| {
                 let fin = &part.finish;
                 let (pn, pmirror, pcos) = match &part.normal {
                     Some(nd) if normal::perturbs(part.normal.as_deref()) => {
@@ -561,7 +565,15 @@ impl<'a> Tracer<'a> {
                     *l += v * w;
                 }
                 conserve = fin.conserve_energy;
-            });
+            };
+            // A plain layer (most are) is its own only part: called directly, not through
+            // `blend`'s dynamic callback, so the body can be inlined for it.
+            if tex.pattern.is_none() {
+                let c = texture_map::plain_colour(tex, p, uv, &Transform::IDENTITY, q.quick_colors);
+                each(c, tex, &Transform::IDENTITY, 1.0);
+            } else {
+                texture_map::blend(tex, p, uv, q.quick_colors, 1.0, &mut each);
+            }
             let c = Rgbft::from_array(layer_c);
             through *= c.transmitted();
             last = c;

@@ -2,11 +2,29 @@
 //! and the modifiers POV-Ray applies around it (turbulence, warps, frequency, phase, wave type,
 //! noise generator). Evaluation is in `render::pattern`; this is plain data the parser builds.
 
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 
 use crate::func::Function;
 use crate::math::{DVec3, Transform};
 use crate::scene::desc::{Pigment, PigmentKind};
+
+/// Whether a pattern that reads the surface being shaded (slope, aoi: the callers of
+/// `render::pattern::surface`; a new one must be noted too) has been made in this process:
+/// until one has, shading need not record the surface (a thread-local write per hit). Set by
+/// the parser where it makes one, never cleared: a scene parsed later, or at the same time on
+/// another thread, can only keep it set, which costs time, not pictures.
+static SURFACE_PATTERNS: AtomicBool = AtomicBool::new(false);
+
+/// Notes that a slope or aoi pattern exists (see `SURFACE_PATTERNS`).
+pub fn note_surface_pattern() {
+    SURFACE_PATTERNS.store(true, Ordering::Relaxed);
+}
+
+/// Whether some slope or aoi pattern may be evaluated (see `SURFACE_PATTERNS`).
+pub fn surface_patterns_made() -> bool {
+    SURFACE_PATTERNS.load(Ordering::Relaxed)
+}
 
 #[derive(Clone, Debug)]
 pub struct Pattern {

@@ -276,8 +276,15 @@ impl Parser {
                 PatternKind::DensityFile(std::sync::Arc::new(d))
             }
             "average" => PatternKind::Average,
-            "aoi" => PatternKind::Aoi,
-            "slope" => PatternKind::Slope(Box::new(self.parse_slope()?)),
+            // Shading records the surface for these only once one exists.
+            "aoi" => {
+                crate::scene::pattern::note_surface_pattern();
+                PatternKind::Aoi
+            }
+            "slope" => {
+                crate::scene::pattern::note_surface_pattern();
+                PatternKind::Slope(Box::new(self.parse_slope()?))
+            }
             "magnet" => {
                 // magnet 1|2 mandel N, or magnet 1|2 julia <c>, N
                 let t = self.parse_float()?;
