@@ -60,7 +60,11 @@ fn cube_at(q: DVec3, base: DVec3, metric: f64, dx: i64, dy: i64, dz: i64) -> (f6
 /// Cube k of the 27 (k = 9(dz + 1) + 3(dy + 1) + dx + 1).
 #[inline(always)]
 fn cube(q: DVec3, base: DVec3, metric: f64, k: usize) -> (f64, DVec3) {
-    let (dx, dy, dz) = ((k % 3) as i64 - 1, ((k / 3) % 3) as i64 - 1, (k / 9) as i64 - 1);
+    let (dx, dy, dz) = (
+        (k % 3) as i64 - 1,
+        ((k / 3) % 3) as i64 - 1,
+        (k / 9) as i64 - 1,
+    );
     cube_at(q, base, metric, dx, dy, dz)
 }
 
@@ -173,9 +177,23 @@ mod tests {
     /// The skipping walk gives the full walk's sums and nearest point bit for bit.
     #[test]
     fn skipping_cubes_is_the_full_walk() {
-        let bits = |(d, p): ([f64; 3], DVec3)| (d.map(f64::to_bits), p.to_array().map(f64::to_bits));
+        let bits =
+            |(d, p): ([f64; 3], DVec3)| (d.map(f64::to_bits), p.to_array().map(f64::to_bits));
         let mut rng = Lcg(7);
-        let metrics = [2.0, 1.0, 2.5, 4.0, 6.0, 0.5, 1.0 / 3.0, 3.0, 1.6, 40.0, 0.0, -1.0];
+        let metrics = [
+            2.0,
+            1.0,
+            2.5,
+            4.0,
+            6.0,
+            0.5,
+            1.0 / 3.0,
+            3.0,
+            1.6,
+            40.0,
+            0.0,
+            -1.0,
+        ];
         let mut points = Vec::new();
         for n in 0..6_000 {
             let scale = [1.0, 10.0, 1e3, 1e6, 1e14, 1e16][n % 6];

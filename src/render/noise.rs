@@ -368,7 +368,8 @@ mod tests {
             for g in [0, 1, 2, 3] {
                 assert_eq!(bits(noise4(ps, g)), bits(ps.map(|p| noise(p, g))));
                 assert_eq!(bits(granite4(ps, g)), bits(ps.map(|p| granite(p, g))));
-                for (oct, om, la) in [(6, 0.5, 2.0), (1, 0.7, 3.0), (10, 0.6, 2.7), (3, 0.45, 1.9)] {
+                for (oct, om, la) in [(6, 0.5, 2.0), (1, 0.7, 3.0), (10, 0.6, 2.7), (3, 0.45, 1.9)]
+                {
                     assert_eq!(
                         bits(turbulence4(ps, oct, om, la, g)),
                         bits(ps.map(|p| turbulence(p, oct, om, la, g)))

@@ -259,7 +259,11 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
         PatternKind::Granite => noise::granite(q, gen),
         PatternKind::Agate { turb } => {
             let t = pat.turbulence.unwrap_or_default();
-            agate(*turb, q, noise::turbulence(q, t.octaves, t.omega, t.lambda, gen))
+            agate(
+                *turb,
+                q,
+                noise::turbulence(q, t.octaves, t.omega, t.lambda, gen),
+            )
         }
         PatternKind::Wrinkles => noise::wrinkles(q, gen),
         PatternKind::Dents => noise::noise(q, gen).powi(3),
