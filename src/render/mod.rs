@@ -8,6 +8,7 @@ mod aa1;
 pub mod band;
 pub mod camera;
 mod cells_data;
+mod crackle;
 mod dispersion;
 pub mod focal;
 mod fog;

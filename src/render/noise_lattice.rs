@@ -115,9 +115,13 @@ pub fn scalar(p: DVec3) -> f64 {
     scalar_many([p])[0]
 }
 
-/// `scalar` at up to 10 points (the octaves of granite, wrinkles and scalar turbulence) into
-/// `out`: every point's hash walk first, then the arithmetic, so that the walks' dependent
-/// table reads overlap instead of each waiting for the one before.
+/// The most points `scalar_into` takes: ten octaves at each of a normal's four samples.
+pub const MAX_POINTS: usize = 40;
+
+/// `scalar` at up to `MAX_POINTS` points (the octaves of granite, wrinkles and scalar
+/// turbulence, at one point or a normal's four) into `out`: every point's hash walk first,
+/// then the arithmetic, so that the walks' dependent table reads overlap instead of each
+/// waiting for the one before.
 #[inline]
 pub fn scalar_into(ps: &[DVec3], out: &mut [f64]) {
     #[cfg(target_arch = "x86_64")]
@@ -130,7 +134,7 @@ pub fn scalar_into(ps: &[DVec3], out: &mut [f64]) {
 
 #[inline(always)]
 fn scalar_into_with(ps: &[DVec3], out: &mut [f64], terms: impl Fn(&Cell) -> f64) {
-    let mut cells = [const { None }; 10];
+    let mut cells = [const { None }; MAX_POINTS];
     for (c, &p) in cells.iter_mut().zip(ps) {
         *c = Some(cell(p));
     }
@@ -143,14 +147,14 @@ fn scalar_into_with(ps: &[DVec3], out: &mut [f64], terms: impl Fn(&Cell) -> f64)
 #[target_feature(enable = "avx")]
 fn scalar_into_avx(ps: &[DVec3], out: &mut [f64]) {
     use std::mem::MaybeUninit;
-    let n = ps.len().min(out.len()).min(10);
+    let n = ps.len().min(out.len()).min(MAX_POINTS);
     if n == 1 {
         // SAFETY: this function only runs with AVX enabled.
         out[0] = unsafe { scalar_avx(&cell(ps[0])) };
         return;
     }
     // Every hash walk first (as `scalar_into_with`), without initialising the unused cells.
-    let mut buf = [const { MaybeUninit::<Cell>::uninit() }; 10];
+    let mut buf = [const { MaybeUninit::<Cell>::uninit() }; MAX_POINTS];
     for (b, &p) in buf.iter_mut().zip(&ps[..n]) {
         b.write(cell(p));
     }
@@ -397,6 +401,52 @@ fn octaves_with(
     sum
 }
 
+/// `octaves_with` at a normal's four samples: all their octaves' hash walks first.
+#[inline(always)]
+fn octaves4_with(
+    ps: [DVec3; 4],
+    octaves: u32,
+    omega: f64,
+    lambda: f64,
+    terms: impl Fn(&Cell) -> [f64; 3],
+) -> [DVec3; 4] {
+    let n = octaves.clamp(1, 10) as usize;
+    let mut cells = [const { None }; MAX_POINTS];
+    for (p, cs) in ps.iter().zip(cells.chunks_mut(n)) {
+        let mut scale = 1.0;
+        for c in cs {
+            *c = Some(cell(*p * scale));
+            scale *= lambda;
+        }
+    }
+    let mut out = [DVec3::ZERO; 4];
+    for (o, cs) in out.iter_mut().zip(cells[..4 * n].chunks(n)) {
+        let mut weight = 1.0;
+        for c in cs.iter().flatten() {
+            *o += weight * DVec3::from_array(terms(c));
+            weight *= omega;
+        }
+    }
+    out
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+fn octaves4_avx(ps: [DVec3; 4], octaves: u32, omega: f64, lambda: f64) -> [DVec3; 4] {
+    // SAFETY: this function only runs with AVX enabled.
+    octaves4_with(ps, octaves, omega, lambda, |c| unsafe { vector_avx(c) })
+}
+
+/// `vector_octaves` at four points (1 to 10 octaves).
+pub fn vector_octaves4(ps: [DVec3; 4], octaves: u32, omega: f64, lambda: f64) -> [DVec3; 4] {
+    #[cfg(target_arch = "x86_64")]
+    if has_avx() {
+        // SAFETY: AVX was detected.
+        return unsafe { octaves4_avx(ps, octaves, omega, lambda) };
+    }
+    octaves4_with(ps, octaves, omega, lambda, vector_lanes)
+}
+
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx")]
 fn octaves_avx(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
@@ -470,13 +520,14 @@ mod tests {
     fn batched_scalar_is_the_scalar_lattice() {
         for n in 0..2_000 {
             let p = DVec3::new(n as f64 * 0.37 - 300.0, (n as f64).sqrt(), -0.01 * n as f64);
-            let ps: [DVec3; 10] = std::array::from_fn(|k| p * (1 << k) as f64);
+            let ps: [DVec3; MAX_POINTS] =
+                std::array::from_fn(|k| p * (1 << (k % 10)) as f64 + DVec3::splat((k / 10) as f64));
             // Every batch size, as the AVX path groups the points by four.
-            for m in 1..=10 {
-                let mut got = [0.0; 10];
+            for m in 1..=MAX_POINTS {
+                let mut got = [0.0; MAX_POINTS];
                 scalar_into(&ps[..m], &mut got[..m]);
                 // The path without AVX too (this machine may take the AVX one above).
-                let mut lanes = [0.0; 10];
+                let mut lanes = [0.0; MAX_POINTS];
                 scalar_into_with(&ps[..m], &mut lanes[..m], scalar_lanes);
                 for (k, (v, l)) in got[..m].iter().zip(&lanes[..m]).enumerate() {
                     let want = reference(ps[k], 0).to_bits();
@@ -502,6 +553,13 @@ mod tests {
             let lanes = octaves_with(p, 10, 0.5, 2.5, vector_lanes);
             let bits = |v: DVec3| v.to_array().map(f64::to_bits);
             assert_eq!((bits(a), bits(lanes)), (bits(b), bits(b)));
+            let ps = [0.0, 0.01, -0.03, 1.5].map(|d| p + DVec3::new(d, d, -d));
+            for oct in [1, 3, 4, 10] {
+                let one = ps.map(|p| bits(vector_octaves(p, oct, 0.5, 2.5)));
+                let four = vector_octaves4(ps, oct, 0.5, 2.5).map(bits);
+                let four_lanes = octaves4_with(ps, oct, 0.5, 2.5, vector_lanes).map(bits);
+                assert_eq!((four, four_lanes), (one, one));
+            }
         }
     }
 }

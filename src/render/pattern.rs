@@ -45,6 +45,13 @@ thread_local! {
     static SURFACE: Cell<Option<Surface>> = const { Cell::new(None) };
 }
 
+thread_local! {
+    /// The last turbulent wood's inputs (the point's and turbulence's bits: the value is a
+    /// function of them alone, whatever pattern asks) and value. The first key matches no
+    /// evaluation (octaves are 32-bit).
+    static LAST_WOOD: Cell<([u64; 8], f64)> = const { Cell::new(([u64::MAX; 8], f64::NAN)) };
+}
+
 /// Sets the surface the next pattern evaluations on this thread are for (None: no surface,
 /// as in functions, where slope and aoi are 0).
 pub fn set_surface(s: Option<Surface>) {
@@ -200,13 +207,29 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
             q.x + t
         }
         PatternKind::Wood => match &pat.turbulence {
-            // Measured: with turbulence a and V the vector turbulence at the point, the rings'
-            // x and y are x + sin(2π a.x (x + V.x)) and y + sin(2π a.y (y + V.y)).
             Some(t) if t.amount != DVec3::ZERO => {
-                let v = noise::turbulence_vec(q, t.octaves, t.omega, t.lambda, gen);
-                let x = q.x + (TAU * t.amount.x * (q.x + v.x)).sin();
-                let y = q.y + (TAU * t.amount.y * (q.y + v.y)).sin();
-                (x * x + y * y).sqrt()
+                // A pigment read through functions (the `_37` woods' gamma correction reads
+                // its pigment three times at each point) asks again for the same rings.
+                let key = [
+                    q.x.to_bits(),
+                    q.y.to_bits(),
+                    q.z.to_bits(),
+                    t.amount.x.to_bits(),
+                    t.amount.y.to_bits(),
+                    t.omega.to_bits(),
+                    t.lambda.to_bits(),
+                    t.octaves as u64,
+                ];
+                LAST_WOOD.with(|last| {
+                    let (k, v) = last.get();
+                    if k.iter().zip(&key).fold(0, |acc, (a, b)| acc | (a ^ b)) == 0 {
+                        return v;
+                    }
+                    let tv = noise::turbulence_vec(q, t.octaves, t.omega, t.lambda, gen);
+                    let v = wood(q, t.amount, tv);
+                    last.set((key, v));
+                    v
+                })
             }
             _ => (q.x * q.x + q.y * q.y).sqrt(),
         },
@@ -235,11 +258,12 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
         PatternKind::Bozo | PatternKind::Spotted => noise::noise(q, gen),
         PatternKind::Granite => noise::granite(q, gen),
         PatternKind::Agate { turb } => {
-            // Measured: (1/2 + sin(2π(1.1 z + 1.3 agate_turb T))/2)^0.77, T the scalar
-            // turbulence with the pattern's octaves, omega and lambda.
             let t = pat.turbulence.unwrap_or_default();
-            let t = noise::turbulence(q, t.octaves, t.omega, t.lambda, gen);
-            (0.5 + 0.5 * (TAU * (1.1 * q.z + 1.3 * (*turb as f32 as f64) * t)).sin()).powf(0.77)
+            agate(
+                *turb,
+                q,
+                noise::turbulence(q, t.octaves, t.omega, t.lambda, gen),
+            )
         }
         PatternKind::Wrinkles => noise::wrinkles(q, gen),
         PatternKind::Dents => noise::noise(q, gen).powi(3),
@@ -249,7 +273,7 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
             metric,
             offset,
             solid,
-        } => crackle(q, *form, *metric, *offset, *solid, gen),
+        } => super::crackle::crackle(q, *form, *metric, *offset, *solid, gen),
         PatternKind::Cells => {
             noise::cell_value(q.x.floor() as i64, q.y.floor() as i64, q.z.floor() as i64)
         }
@@ -347,6 +371,50 @@ fn slope(sl: &Slope, q: DVec3) -> f64 {
     }
 }
 
+/// Wood's rings under turbulence `amount`, v the vector turbulence at q. Measured: the rings'
+/// x and y are x + sin(2π a.x (x + v.x)) and y + sin(2π a.y (y + v.y)).
+fn wood(q: DVec3, amount: DVec3, v: DVec3) -> f64 {
+    let x = q.x + (TAU * amount.x * (q.x + v.x)).sin();
+    let y = q.y + (TAU * amount.y * (q.y + v.y)).sin();
+    (x * x + y * y).sqrt()
+}
+
+/// Agate from the scalar turbulence t at q. Measured: (1/2 + sin(2π(1.1 z + 1.3 agate_turb
+/// t))/2)^0.77, t with the pattern's octaves, omega and lambda.
+fn agate(turb: f64, q: DVec3, t: f64) -> f64 {
+    (0.5 + 0.5 * (TAU * (1.1 * q.z + 1.3 * (turb as f32 as f64) * t)).sin()).powf(0.77)
+}
+
+/// `values_warped4` of the noise patterns, whose samples' lattice walks go together; None
+/// for the others.
+fn noise_values4(pat: &Pattern, qs: [DVec3; 4]) -> Option<[f64; 4]> {
+    let gen = pat.noise_generator;
+    let raw = match &pat.kind {
+        PatternKind::Bozo | PatternKind::Spotted => noise::noise4(qs, gen),
+        PatternKind::Dents => noise::noise4(qs, gen).map(|v| v.powi(3)),
+        PatternKind::Granite => noise::granite4(qs, gen),
+        PatternKind::Agate { turb } => {
+            let t = pat.turbulence.unwrap_or_default();
+            let ts = noise::turbulence4(qs, t.octaves, t.omega, t.lambda, gen);
+            std::array::from_fn(|k| agate(*turb, qs[k], ts[k]))
+        }
+        PatternKind::Wood => match &pat.turbulence {
+            Some(t) if t.amount != DVec3::ZERO => {
+                let vs = noise::turbulence_vec4(qs, t.octaves, t.omega, t.lambda);
+                std::array::from_fn(|k| wood(qs[k], t.amount, vs[k]))
+            }
+            _ => return None,
+        },
+        PatternKind::Marble => {
+            let t = pat.turbulence?;
+            let ts = noise::turbulence4(qs, t.octaves, t.omega, t.lambda, gen);
+            std::array::from_fn(|k| qs[k].x + t.amount.x * ts[k])
+        }
+        _ => return None,
+    };
+    Some(raw.map(|v| shape(pat, v)))
+}
+
 /// A triangle wave of period 1 from 0 (at integers) to 1 (at half-integers).
 fn tri(v: f64) -> f64 {
     let f = v - v.floor();
@@ -373,6 +441,9 @@ pub fn values_warped4(pat: &Pattern, qs: [DVec3; 4]) -> [f64; 4] {
             };
             return raw.map(|v| shape(pat, v));
         }
+    }
+    if let Some(vs) = noise_values4(pat, qs) {
+        return vs;
     }
     qs.map(|q| value_warped(pat, q))
 }
@@ -509,61 +580,6 @@ pub fn wave_count(pat: &Pattern) -> usize {
     }
 }
 
-/// Crackle: `form` weighs the distances to the nearest three of one random point per unit
-/// cube (POV-Ray's points, measured: see docs/noise.md), the result clipped to [0, 1];
-/// `offset` enters each distance as (Σ|d|^metric + offset^metric)^(1/metric). `solid` gives
-/// each cell the noise value at its point. All measured with `function { pattern { crackle
-/// ... } }`.
-fn crackle(q: DVec3, form: DVec3, metric: f64, offset: f64, solid: bool, gen: u8) -> f64 {
-    let base = q.floor();
-    // Sums of |d|^metric: the same order as the distances, rooted only for the nearest three.
-    let mut d = [f64::INFINITY; 3];
-    let mut nearest = DVec3::ZERO;
-    for dz in -1..=1 {
-        for dy in -1..=1 {
-            for dx in -1..=1 {
-                let (cx, cy, cz) = (base.x as i64 + dx, base.y as i64 + dy, base.z as i64 + dz);
-                let pt = noise::cell_point(cx, cy, cz);
-                let v = (pt - q).abs();
-                let sum = if metric == 2.0 {
-                    v.length_squared()
-                } else if metric == 1.0 {
-                    v.x + v.y + v.z
-                } else {
-                    v.x.powf(metric) + v.y.powf(metric) + v.z.powf(metric)
-                };
-                if sum < d[0] {
-                    d = [sum, d[0], d[1]];
-                    nearest = pt;
-                } else if sum < d[1] {
-                    d = [d[0], sum, d[1]];
-                } else if sum < d[2] {
-                    d[2] = sum;
-                }
-            }
-        }
-    }
-    if solid {
-        return noise::noise(nearest, gen);
-    }
-    let off = if offset == 0.0 {
-        0.0
-    } else {
-        offset.abs().powf(metric)
-    };
-    let root = |s: f64| {
-        if metric == 2.0 {
-            (s + off).sqrt()
-        } else if metric == 1.0 {
-            s + off
-        } else {
-            (s + off).powf(1.0 / metric)
-        }
-    };
-    let v = form.x * root(d[0]) + form.y * root(d[1]) + form.z * root(d[2]);
-    v.clamp(0.0, 1.0)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -655,6 +671,43 @@ mod tests {
                 "{p}: {}",
                 value(&ramp, p)
             );
+        }
+    }
+
+    /// The noise patterns' four samples together are their values one at a time.
+    #[test]
+    fn noise_samples_together_are_the_values() {
+        use crate::scene::pattern::Turbulence;
+        let turb = Turbulence {
+            amount: DVec3::new(0.7, 0.2, 0.1),
+            ..Default::default()
+        };
+        let kinds = [
+            PatternKind::Bozo,
+            PatternKind::Spotted,
+            PatternKind::Dents,
+            PatternKind::Granite,
+            PatternKind::Agate { turb: 1.6 },
+            PatternKind::Marble,
+            PatternKind::Wood,
+        ];
+        for kind in kinds {
+            for (gen, turbulence, wave) in [
+                (2, None, Wave::Ramp),
+                (1, Some(turb), Wave::Sine),
+                (3, Some(turb), Wave::Triangle),
+            ] {
+                let mut p = pat(kind.clone());
+                (p.noise_generator, p.turbulence, p.wave) = (gen, turbulence, wave);
+                p.frequency = 1.3;
+                for n in 0..500 {
+                    let t = n as f64 * 0.71;
+                    let c = DVec3::new(t.sin() * 3.0, t * 0.01, t.cos() - 2.0);
+                    let qs = [0.0, 0.003, -0.004, 0.2].map(|d| c + DVec3::new(d, 2.0 * d, -d));
+                    let want = qs.map(|q| value_warped(&p, q).to_bits());
+                    assert_eq!(values_warped4(&p, qs).map(f64::to_bits), want, "{kind:?}");
+                }
+            }
         }
     }
 
