@@ -65,6 +65,8 @@ struct Prepared {
     axis: DVec3,
     len: f64,
     r2: f64,
+    /// `1 / r2`, the same quotient `push` formed for every stretch.
+    inv_r2: f64,
     strength: f64,
     /// None when the component has no transform of its own.
     transform: Option<Transform>,
@@ -161,7 +163,7 @@ impl Prepared {
             return;
         }
         // strength · (1 - d2/r²)², with w = 1 - d2/r² a quadratic.
-        let k = 1.0 / self.r2;
+        let k = self.inv_r2;
         let w = [1.0 - c * k, -b * k, -a * k];
         let s = self.strength;
         out.push(Piece {
@@ -321,6 +323,7 @@ impl Blob {
                 axis,
                 len,
                 r2: r * r,
+                inv_r2: 1.0 / (r * r),
                 strength: c.strength,
                 transform: tf,
                 index,
