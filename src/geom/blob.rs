@@ -17,7 +17,7 @@
 use std::cell::RefCell;
 
 use crate::geom::bvh::Bvh;
-use crate::geom::poly::{first_root_in, roots_in, sturm_roots_in};
+use crate::geom::poly::{first_root_in, first_root_with, roots_in, sturm_roots_in, Candidate};
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, Transform, EPSILON};
 
@@ -65,6 +65,8 @@ struct Prepared {
     axis: DVec3,
     len: f64,
     r2: f64,
+    /// `1 / r2`, the same quotient `push` formed for every stretch.
+    inv_r2: f64,
     strength: f64,
     /// None when the component has no transform of its own.
     transform: Option<Transform>,
@@ -161,7 +163,7 @@ impl Prepared {
             return;
         }
         // strength · (1 - d2/r²)², with w = 1 - d2/r² a quadratic.
-        let k = 1.0 / self.r2;
+        let k = self.inv_r2;
         let w = [1.0 - c * k, -b * k, -a * k];
         let s = self.strength;
         out.push(Piece {
@@ -186,10 +188,95 @@ struct Piece {
     c: [f64; 5],
 }
 
+/// Work of `crossings` (nearest crossing only) left undone because its roots all map to
+/// `t <= EPSILON`, where `keep` rejects them whatever their bits: only their effect on the
+/// deduplication's `last` is unknown, and that matters only when a later root lies within
+/// the deduplication tolerance of them (see `Backlog::settle`).
+#[derive(Clone, Copy, Debug)]
+enum Deferred {
+    /// A whole stretch: `first_root_in` on it, every root rejected.
+    Stretch { c: [f64; 5], lo: f64, hi: f64 },
+    /// One root's bracket, unpolished: `c[..n]` is the polynomial `Candidate::c`.
+    Root {
+        c: [f64; 5],
+        n: usize,
+        a: f64,
+        b: f64,
+        neg_at_a: bool,
+    },
+}
+
 #[derive(Default)]
 struct Work {
     pieces: Vec<Piece>,
     cuts: Vec<f64>,
+    deferred: Vec<Deferred>,
+}
+
+/// `crossings`' test of a root `s` against the previous one it took, `last`: a root on a cut
+/// is found from both sides. Updates `last` for a root it takes; true when its `t` counts.
+#[inline]
+fn keep_root(s: f64, last: &mut f64, shift: f64, len: f64) -> bool {
+    if s - *last <= 1e-12 * (1.0 + s.abs()) {
+        return false;
+    }
+    *last = s;
+    (s + shift) / len > EPSILON
+}
+
+/// The deferred work since `last` was last known for sure, and the largest root it can
+/// hold (every root of a stretch lies in it, a polished root in its bracket).
+struct Backlog<'a> {
+    items: &'a mut Vec<Deferred>,
+    bound: f64,
+}
+
+impl Backlog<'_> {
+    fn defer(&mut self, item: Deferred, bound: f64) {
+        self.items.push(item);
+        self.bound = self.bound.max(bound);
+    }
+
+    /// Brings `last` up to date before the root `x` is tested against it. The deferred work
+    /// leaves `last` either as it was or at one of its roots, all at most `bound`; when `x`
+    /// passes the test against both (`x - y` only grows as `y` falls, in rounded arithmetic
+    /// too), `x` is taken and replaces `last` whichever it was, so the work is dropped.
+    /// Otherwise it is done now, in order, exactly as it would have been.
+    fn settle(&mut self, x: f64, last: &mut f64, shift: f64, len: f64) {
+        if self.items.is_empty() {
+            return;
+        }
+        let tol = 1e-12 * (1.0 + x.abs());
+        if x - self.bound <= tol || x - *last <= tol {
+            for item in self.items.iter() {
+                match *item {
+                    Deferred::Stretch { c, lo, hi } => {
+                        let found = first_root_in(&c, lo, hi, |s| keep_root(s, last, shift, len));
+                        debug_assert!(found.is_none());
+                    }
+                    Deferred::Root {
+                        c,
+                        n,
+                        a,
+                        b,
+                        neg_at_a,
+                    } => {
+                        let s = Candidate {
+                            c: &c[..n],
+                            a,
+                            b,
+                            neg_at_a,
+                        }
+                        .root();
+                        let kept = keep_root(s, last, shift, len);
+                        debug_assert!(!kept);
+                    }
+                }
+            }
+        }
+        self.items.clear();
+        self.bound = f64::NEG_INFINITY;
+    }
 }
 
 thread_local! {
@@ -236,6 +323,7 @@ impl Blob {
                 axis,
                 len,
                 r2: r * r,
+                inv_r2: 1.0 / (r * r),
                 strength: c.strength,
                 transform: tf,
                 index,
@@ -320,16 +408,26 @@ impl Blob {
         }
         w.cuts.sort_by(f64::total_cmp);
         w.cuts.dedup();
+        let Work {
+            pieces,
+            cuts,
+            deferred,
+        } = w;
+        deferred.clear();
+        let mut backlog = Backlog {
+            items: deferred,
+            bound: f64::NEG_INFINITY,
+        };
         let mut last = f64::NEG_INFINITY;
-        for k in 0..w.cuts.len().saturating_sub(1) {
-            let (lo, hi) = (w.cuts[k], w.cuts[k + 1]);
+        for k in 0..cuts.len().saturating_sub(1) {
+            let (lo, hi) = (cuts[k], cuts[k + 1]);
             if first_only && (lo + shift) / len >= tmax {
                 return;
             }
             let mid = 0.5 * (lo + hi);
             let mut sum = [-self.threshold, 0.0, 0.0, 0.0, 0.0];
             let mut any = false;
-            for p in w.pieces.iter().filter(|p| p.lo <= mid && mid < p.hi) {
+            for p in pieces.iter().filter(|p| p.lo <= mid && mid < p.hi) {
                 for (s, c) in sum.iter_mut().zip(p.c) {
                     *s += c;
                 }
@@ -339,15 +437,34 @@ impl Blob {
                 continue;
             }
             if first_only && !self.sturm {
-                // `keep` takes the roots as the loop below does, `last` included.
-                let keep = |s: f64| {
-                    if s - last <= 1e-12 * (1.0 + s.abs()) {
-                        return false;
+                // Roots at or below `hi` (a polished root lies in its bracket) give
+                // `t <= EPSILON` when `hi` does (rounding keeps the order), and `keep_root`
+                // rejects them: such a stretch or bracket (shadow rays leaving the surface)
+                // is deferred rather than searched or polished, see `Backlog::settle`.
+                let behind = |s: f64| (s + shift) / len <= EPSILON;
+                if behind(hi) {
+                    backlog.defer(Deferred::Stretch { c: sum, lo, hi }, hi);
+                    continue;
+                }
+                let take = |cand: Candidate| {
+                    if behind(cand.b) {
+                        let mut c = [0.0; 5];
+                        c[..cand.c.len()].copy_from_slice(cand.c);
+                        let item = Deferred::Root {
+                            c,
+                            n: cand.c.len(),
+                            a: cand.a,
+                            b: cand.b,
+                            neg_at_a: cand.neg_at_a,
+                        };
+                        backlog.defer(item, cand.b);
+                        return None;
                     }
-                    last = s;
-                    (s + shift) / len > EPSILON
+                    let s = cand.root();
+                    backlog.settle(s, &mut last, shift, len);
+                    keep_root(s, &mut last, shift, len).then_some(s)
                 };
-                if let Some(s) = first_root_in(&sum, lo, hi, keep) {
+                if let Some(s) = first_root_with(&sum, lo, hi, take) {
                     out.push(Hit::with_part((s + shift) / len, PART_BLENDED));
                     return;
                 }
@@ -442,6 +559,7 @@ impl Shape for Blob {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geom::test_rng::Lcg;
 
     fn sphere(c: DVec3, r: f64, s: f64) -> Component {
         Component {
@@ -561,6 +679,61 @@ mod tests {
             let got = b.intersect_first(&ray, tmax, &mut scratch).map(|h| h.t);
             assert_eq!(got, want, "tmax {tmax}");
         }
+    }
+
+    #[test]
+    fn first_hit_leaving_the_surface() {
+        // Rays from crossings of the surface (shadow rays) and from points near it: the
+        // nearest crossing, whose roots at t <= EPSILON are deferred rather than polished,
+        // is intersect_all's nearest bit for bit, with and without a tmax.
+        let mut arm = Component {
+            kind: ComponentKind::Cylinder {
+                a: DVec3::new(-1.5, 0.0, 0.0),
+                b: DVec3::new(1.5, 0.2, 0.0),
+            },
+            radius: 1.2,
+            strength: 1.0,
+            transform: Transform::IDENTITY,
+        };
+        let mut other = arm;
+        other.kind = ComponentKind::Cylinder {
+            a: DVec3::new(0.0, 0.0, -1.5),
+            b: DVec3::new(0.0, 0.3, 1.5),
+        };
+        arm.transform = Transform::scale(DVec3::new(1.0, 0.7, 1.3));
+        let b = Blob::new(&BlobData {
+            components: vec![
+                arm,
+                other,
+                sphere(DVec3::new(0.0, 0.8, 0.0), 1.0, -1.5),
+                sphere(DVec3::new(0.9, 0.0, 0.9), 0.8, 1.0),
+            ],
+            threshold: 0.4,
+            sturm: false,
+        });
+        let mut rng = Lcg(7);
+        let (mut all, mut scratch, mut from_surface) = (Vec::new(), Vec::new(), 0);
+        for _ in 0..3000 {
+            let o = rng.vec(8.0);
+            let d = rng.vec(2.0) - o * 0.2;
+            all.clear();
+            b.intersect_all(&Ray::new(o, d), &mut all);
+            let starts = all.iter().map(|h| o + d * h.t).chain([o + rng.vec(0.1)]);
+            for p in starts.collect::<Vec<_>>() {
+                for _ in 0..4 {
+                    let ray = Ray::new(p, rng.vec(3.0));
+                    let mut hits = Vec::new();
+                    b.intersect_all(&ray, &mut hits);
+                    from_surface += 1;
+                    for tmax in [f64::INFINITY, 0.5 + rng.next()] {
+                        let want = hits.iter().map(|h| h.t).find(|&t| t < tmax);
+                        let got = b.intersect_first(&ray, tmax, &mut scratch).map(|h| h.t);
+                        assert_eq!(got.map(f64::to_bits), want.map(f64::to_bits), "{ray:?}");
+                    }
+                }
+            }
+        }
+        assert!(from_surface > 10000);
     }
 
     #[test]

@@ -249,16 +249,67 @@ fn isolate(c: &[f64], lo: f64, hi: f64, out: &mut Roots, breakpoints: bool) {
     }
 }
 
+/// A root of [`first_root_with`]'s walk before it is polished: the bracket `[a, b]` of a
+/// sign change (the sign at `a` negative when `neg_at_a`), or an exact root with `a == b`.
+/// [`Candidate::root`] gives the root bit for bit as [`roots_in`] gives it, and it lies in
+/// `[a, b]` (every step of `polish` stays inside its shrinking bracket), so a caller that
+/// would discard every value there can leave it unpolished.
+#[derive(Clone, Copy, Debug)]
+pub struct Candidate<'a> {
+    pub c: &'a [f64],
+    pub a: f64,
+    pub b: f64,
+    pub neg_at_a: bool,
+}
+
+impl Candidate<'_> {
+    /// An exact root (nothing to polish).
+    fn exact(x: f64) -> Candidate<'static> {
+        Candidate {
+            c: &[],
+            a: x,
+            b: x,
+            neg_at_a: false,
+        }
+    }
+
+    /// The root, polished when it is a bracket.
+    #[inline]
+    pub fn root(&self) -> f64 {
+        if self.a == self.b {
+            self.a
+        } else {
+            polish(self.c, self.a, self.b, self.neg_at_a)
+        }
+    }
+}
+
 /// The first of [`roots_in`]'s roots (in increasing order) for which `keep` holds, bit for bit
 /// as [`roots_in`] gives it, for a caller that wants only the nearest crossing: the roots and
 /// critical points beyond it are not polished. The pieces are walked as `isolate` walks them,
 /// each critical point polished only when the walk reaches it (see [`critical_in_window`]
 /// for the brackets), so every piece reached has the same ends as in [`roots_in`].
+#[inline]
 pub fn first_root_in(
     c: &[f64],
     lo: f64,
     hi: f64,
     mut keep: impl FnMut(f64) -> bool,
+) -> Option<f64> {
+    first_root_with(c, lo, hi, |cand| {
+        let x = cand.root();
+        keep(x).then_some(x)
+    })
+}
+
+/// [`first_root_in`] for a caller that sees each root as its [`Candidate`] (in increasing
+/// order) and answers with the root it keeps, or `None` to walk on: a caller may decide from
+/// the bracket alone, without the root's polishing.
+pub fn first_root_with(
+    c: &[f64],
+    lo: f64,
+    hi: f64,
+    mut take: impl FnMut(Candidate) -> Option<f64>,
 ) -> Option<f64> {
     let c = trim(c)?;
     let n = c.len().saturating_sub(1);
@@ -268,7 +319,7 @@ pub fn first_root_in(
     if n <= 2 {
         let mut out = Roots::new();
         isolate(c, lo, hi, &mut out, false);
-        return out.iter().copied().find(|&x| keep(x));
+        return out.iter().find_map(|&x| take(Candidate::exact(x)));
     }
     let mut d = [0.0; MAX_DEGREE];
     for i in 1..=n {
@@ -296,6 +347,7 @@ pub fn first_root_in(
         isolate(&dd[..n - 1], lo, hi, &mut crit2, true);
         m = brackets(d, crit2.iter().copied(), lo, hi, &mut cands);
     }
+    let piece = |a: f64, b: f64, neg_at_a: bool| Candidate { c, a, b, neg_at_a };
     // `isolate`'s loop over the pieces. The critical points are deduplicated and capped as
     // `Roots::push` does when `isolate` collects them.
     let mut a = lo;
@@ -318,12 +370,11 @@ pub fn first_root_in(
         };
         let fb = eval(c, b);
         if fa == 0.0 {
-            if keep(a) {
-                return Some(a);
+            if let Some(x) = take(Candidate::exact(a)) {
+                return Some(x);
             }
         } else if (fa < 0.0) != (fb < 0.0) && fb != 0.0 {
-            let x = polish(c, a, b, fa < 0.0);
-            if keep(x) {
+            if let Some(x) = take(piece(a, b, fa < 0.0)) {
                 return Some(x);
             }
         }
@@ -332,16 +383,19 @@ pub fn first_root_in(
     }
     let fb = eval(c, hi);
     if fa == 0.0 {
-        if keep(a) {
-            return Some(a);
+        if let Some(x) = take(Candidate::exact(a)) {
+            return Some(x);
         }
     } else if (fa < 0.0) != (fb < 0.0) && fb != 0.0 {
-        let x = polish(c, a, hi, fa < 0.0);
-        if keep(x) {
+        if let Some(x) = take(piece(a, hi, fa < 0.0)) {
             return Some(x);
         }
     }
-    (fb == 0.0 && keep(hi)).then_some(hi)
+    if fb == 0.0 {
+        take(Candidate::exact(hi))
+    } else {
+        None
+    }
 }
 
 /// [`roots_in`] without the [`surely_no_root`] shortcut, for the tests of that shortcut.
