@@ -1,0 +1,319 @@
+//! The CSG searches: which member crossings lie on a node's surface (`csg_keeps`), and the
+//! nearest such crossing of an intersection, difference, merge or clipped object found without
+//! testing every crossing (`first_hit`, `any_hit`). `Object::all_hits` lists them all.
+
+use std::cell::Cell;
+
+use crate::geom::Hit;
+use crate::math::{Aabb, DVec3, Ray, Slabs, EPSILON};
+use crate::scene::children::ChildIndex;
+use crate::scene::desc::CsgOp;
+use crate::scene::faces::{self, Faces};
+use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
+
+/// Calls `f(member, i, s)` for every member of a CSG node a ray may cross within `tmax`: all of
+/// them in member order without an index, else the index's candidates (a leaf of an opened
+/// member union, numbered as the index numbers it).
+pub(super) fn each_member<'a>(
+    children: &'a [Object],
+    index: Option<&ChildIndex>,
+    ray: &Ray,
+    tmax: f64,
+    s: &mut Scratch<'a>,
+    mut f: impl FnMut(&'a Object, usize, &mut Scratch<'a>),
+) {
+    match index {
+        None => children.iter().enumerate().for_each(|(i, c)| f(c, i, s)),
+        Some(ix) => {
+            let from = s.members.len();
+            ix.candidates(ray, tmax, &mut s.members);
+            for k in from..s.members.len() {
+                let i = s.members[k] as usize;
+                f(ix.leaf(children, i), i, s);
+            }
+            s.members.truncate(from);
+        }
+    }
+}
+
+/// Whether a crossing at `p` of CSG member `i` is on the result's surface: every other member
+/// must contain `p` (intersection), not contain it (union-like merge), or, for a difference,
+/// the first member must and the subtracted ones must not.
+pub(super) fn csg_keeps(
+    op: CsgOp,
+    i: usize,
+    children: &[Object],
+    index: Option<&ChildIndex>,
+    faces: Option<&Faces>,
+    p: DVec3,
+    rejecter: &std::cell::Cell<usize>,
+) -> bool {
+    // With an index only the members whose boxes hold `p` are asked: outside its box a member
+    // without `inverse` is not inside (members with `inverse` have infinite boxes).
+    match (op, index) {
+        (CsgOp::Union, _) => return true,
+        (CsgOp::Merge, Some(ix)) => return !ix.any_at(p, |j| j != i && children[j].inside(p)),
+        (CsgOp::Difference, Some(ix)) => {
+            return (i == 0 || children[0].inside(p))
+                && !ix.any_at(p, |j| j != i && j != 0 && children[j].inside(p));
+        }
+        _ => {}
+    }
+    // Faces answer `inside` as the member would (`scene::faces`), points far out excepted.
+    let faces = faces.filter(|_| faces::point_ok(p));
+    let wants = |j: usize, o: &Object| {
+        let want_inside = match op {
+            CsgOp::Intersection => true,
+            CsgOp::Difference => j == 0,
+            CsgOp::Union | CsgOp::Merge => false,
+        };
+        let inside = match faces.and_then(|f| f.get(j)) {
+            // `Object::inside` of a leaf, with the face's test for its shape's.
+            Some(f) if o.bounds.contains(p) => f.inside(p) != o.inverse,
+            Some(_) => o.inverse,
+            None => o.inside(p),
+        };
+        inside == want_inside
+    };
+    // The member that turned the last crossing of this node away is asked first: crossings
+    // outside a polyhedron are mostly turned away by the same face. `inside` has no side
+    // effects, so the order of the questions cannot change the answer.
+    let r = rejecter.get();
+    if r != i && r < children.len() && !wants(r, &children[r]) {
+        return false;
+    }
+    for (j, o) in children.iter().enumerate() {
+        if j != i && j != r && !wants(j, o) {
+            rejecter.set(j);
+            return false;
+        }
+    }
+    true
+}
+
+/// `c.all_hits(ray, tmax, s)` of CSG member `c`, through its face when it has one (`ray` then
+/// within `faces::ray_ok`): a plane leaf without clipping has at most one crossing.
+#[inline]
+pub(super) fn member_hits<'a>(
+    c: &'a Object,
+    face: Option<&faces::Face>,
+    ray: &Ray,
+    tmax: f64,
+    s: &mut Scratch<'a>,
+) {
+    match face {
+        Some(f) => {
+            if let Some(t) = f.hit(ray).filter(|&t| t < tmax) {
+                s.surface.push(SurfaceHit {
+                    t,
+                    obj: c,
+                    hit: Hit::new(t),
+                    flip: c.inverse,
+                });
+            }
+        }
+        None => c.all_hits(ray, tmax, s),
+    }
+}
+
+/// Crossings gathered for a search are tagged with their member `i`, and for the leaves of a
+/// member folded in (`folded`) with the leaf's number plus one above this shift.
+const LEAF_SHIFT: u32 = 16;
+
+/// The leaves, tight box and faces of member `c` when the search may test its crossings itself
+/// instead of through `c.all_hits`: an intersection without `clipped_by`, `inverse` or an index,
+/// whose `all_hits` is the leaves' crossings, in leaf order, that every other leaf contains.
+fn folded(c: &Object) -> Option<(&[Object], Option<&Aabb>, Option<&Faces>)> {
+    match &c.kind {
+        ObjKind::Csg {
+            op: CsgOp::Intersection,
+            children,
+            index: None,
+            cull,
+        } if c.clip.is_empty() && !c.inverse && children.len() < (1 << LEAF_SHIFT) - 1 => Some((
+            children,
+            cull.as_ref().and_then(|c| c.aabb.as_ref()),
+            cull.as_ref().and_then(|c| c.faces.as_ref()),
+        )),
+        _ => None,
+    }
+}
+
+/// Member `i` as `each_member` offers it.
+fn member_at<'a>(children: &'a [Object], index: Option<&ChildIndex>, i: usize) -> &'a Object {
+    index.map_or(&children[i], |ix| ix.leaf(children, i))
+}
+
+impl Object {
+    /// `first_hit` of an intersection, difference or merge, with or without `clipped_by`: the
+    /// nearest of the crossings `all_hits` would keep (and `first_hit` take: t > EPSILON when
+    /// clipped), found by testing the members' crossings nearest first and stopping at the
+    /// first one kept. `all_hits` tests every crossing (for a polyhedron of n planes, n
+    /// crossings each asking up to n - 1 members), and the nearest kept one is usually among the
+    /// first few. With `nearest` false, any kept crossing, unsorted (`any_hit`).
+    ///
+    /// The same crossings are gathered in the same order: a member that is a plain
+    /// intersection (`folded`) gives its leaves' crossings unfiltered, each then kept only if
+    /// that intersection's own `csg_keeps` keeps it too, and its kept crossings keep their
+    /// relative order (`all_hits` filters them in place). Every test (`csg_keeps`, the clip's
+    /// `inside`) has no side effect on the answer, and ties in `t` go to the earlier in that
+    /// order, as `min_by` over `all_hits` does: the answer is the same crossing, bit for bit.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn csg_first_hit<'a>(
+        &'a self,
+        op: CsgOp,
+        children: &'a [Object],
+        index: Option<&ChildIndex>,
+        (cull, faces): (Option<&Aabb>, Option<&Faces>),
+        ray: &Ray,
+        tmax: f64,
+        s: &mut Scratch<'a>,
+        nearest: bool,
+    ) -> Option<SurfaceHit<'a>> {
+        let inv_dir = ray.dir.recip();
+        if cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none()) {
+            return None;
+        }
+        let ray_faces = faces.filter(|_| faces::ray_ok(ray));
+        let start = s.surface.len();
+        let order_from = s.csg_order.len();
+        let slabs = Slabs::new(ray.origin, inv_dir);
+        let fold = children.len() <= 1 << LEAF_SHIFT;
+        let gather = |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
+            if !slabs.hits(&c.bounds, tmax) {
+                return;
+            }
+            if let Some((leaves, leaf_cull, leaf_faces)) = folded(c).filter(|_| fold) {
+                // `c.all_hits`'s own tests, in its order.
+                if leaf_cull.is_some_and(|b| b.hit(ray.origin, inv_dir, tmax).is_none()) {
+                    return;
+                }
+                let leaf_faces = leaf_faces.filter(|_| faces::ray_ok(ray));
+                for (k, g) in leaves.iter().enumerate() {
+                    if !slabs.hits(&g.bounds, tmax) {
+                        continue;
+                    }
+                    let from = s.surface.len();
+                    member_hits(g, leaf_faces.and_then(|f| f.get(k)), ray, tmax, s);
+                    let tag = i as u32 | (k as u32 + 1) << LEAF_SHIFT;
+                    for j in from..s.surface.len() {
+                        s.csg_order.push((s.surface[j].t, j as u32, tag));
+                    }
+                }
+                return;
+            }
+            let from = s.surface.len();
+            member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
+            for j in from..s.surface.len() {
+                s.csg_order.push((s.surface[j].t, j as u32, i as u32));
+            }
+        };
+        each_member(children, index, ray, tmax, s, gather);
+        let order = &mut s.csg_order[order_from..];
+        if nearest {
+            order.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        }
+        let rejecter = Cell::new(usize::MAX);
+        let leaf_rejecter = Cell::new(usize::MAX);
+        let clip = &self.clip[..];
+        let best = order.iter().find_map(|&(t, j, tag)| {
+            let i = (tag & ((1 << LEAF_SHIFT) - 1)) as usize;
+            let p = ray.at(t);
+            let leaf_kept = || match (tag >> LEAF_SHIFT) as usize {
+                0 => true,
+                k => {
+                    let (leaves, _, leaf_faces) = folded(member_at(children, index, i))
+                        .expect("tagged crossings come from folded members");
+                    csg_keeps(
+                        CsgOp::Intersection,
+                        k - 1,
+                        leaves,
+                        None,
+                        leaf_faces,
+                        p,
+                        &leaf_rejecter,
+                    )
+                }
+            };
+            let clip_kept = || clip.is_empty() || (t > EPSILON && clip.iter().all(|c| c.inside(p)));
+            (leaf_kept() && csg_keeps(op, i, children, index, faces, p, &rejecter) && clip_kept())
+                .then(|| {
+                    let mut h = s.surface[j as usize];
+                    h.flip ^= op == CsgOp::Difference && i > 0;
+                    h.flip ^= self.inverse;
+                    h
+                })
+        });
+        s.csg_order.truncate(order_from);
+        s.surface.truncate(start);
+        best
+    }
+
+    /// `first_hit` of a leaf or union with `clipped_by`: the nearest of its crossings with
+    /// t > EPSILON inside every clipping object, found by asking the clip about crossings
+    /// nearest first (ties to the earlier in `all_hits`'s order, as `min_by` over it). With
+    /// `nearest` false, any such crossing (`any_hit`): a union's members are then asked one
+    /// at a time, stopping at the first crossing the clip keeps.
+    pub(super) fn clipped_first_hit<'a>(
+        &'a self,
+        ray: &Ray,
+        tmax: f64,
+        s: &mut Scratch<'a>,
+        nearest: bool,
+    ) -> Option<SurfaceHit<'a>> {
+        let start = s.surface.len();
+        let kept = |h: &SurfaceHit| {
+            h.t > EPSILON && self.clip.iter().all(|c| c.inside(ray.at(h.t)))
+        };
+        if let ObjKind::Csg {
+            op: CsgOp::Union,
+            children,
+            index,
+            cull,
+        } = &self.kind
+        {
+            if !nearest {
+                // `all_hits_unclipped`'s tests of a union, member by member.
+                let inv_dir = ray.dir.recip();
+                if cull
+                    .as_ref()
+                    .and_then(|c| c.aabb.as_ref())
+                    .is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none())
+                {
+                    return None;
+                }
+                let slabs = Slabs::new(ray.origin, inv_dir);
+                let mut found = None;
+                each_member(children, index.as_deref(), ray, tmax, s, |c, _, s| {
+                    if found.is_some() || !slabs.hits(&c.bounds, tmax) {
+                        return;
+                    }
+                    let from = s.surface.len();
+                    c.all_hits(ray, tmax, s);
+                    found = s.surface[from..].iter().find(|h| kept(h)).copied();
+                    s.surface.truncate(from);
+                });
+                return found;
+            }
+        }
+        self.all_hits_unclipped(ray, tmax, s);
+        let best = if nearest {
+            let order_from = s.csg_order.len();
+            for j in start..s.surface.len() {
+                s.csg_order.push((s.surface[j].t, j as u32, 0));
+            }
+            let order = &mut s.csg_order[order_from..];
+            order.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+            let best = order
+                .iter()
+                .map(|&(_, j, _)| s.surface[j as usize])
+                .find(|h| kept(h));
+            s.csg_order.truncate(order_from);
+            best
+        } else {
+            s.surface[start..].iter().find(|h| kept(h)).copied()
+        };
+        s.surface.truncate(start);
+        best
+    }
+}
