@@ -150,7 +150,7 @@ impl Object {
     /// clipped), found by testing the members' crossings nearest first and stopping at the
     /// first one kept. `all_hits` tests every crossing (for a polyhedron of n planes, n
     /// crossings each asking up to n - 1 members), and the nearest kept one is usually among the
-    /// first few. With `nearest` false, any kept crossing, unsorted (`any_hit`).
+    /// first few.
     ///
     /// The same crossings are gathered in the same order: a member that is a plain
     /// intersection (`folded`) gives its leaves' crossings unfiltered, each then kept only if
@@ -168,7 +168,6 @@ impl Object {
         ray: &Ray,
         tmax: f64,
         s: &mut Scratch<'a>,
-        nearest: bool,
     ) -> Option<SurfaceHit<'a>> {
         let inv_dir = ray.dir.recip();
         if cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none()) {
@@ -210,9 +209,7 @@ impl Object {
         };
         each_member(children, index, ray, tmax, s, gather);
         let order = &mut s.csg_order[order_from..];
-        if nearest {
-            order.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-        }
+        order.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
         let rejecter = Cell::new(usize::MAX);
         let leaf_rejecter = Cell::new(usize::MAX);
         let clip = &self.clip[..];
@@ -250,8 +247,8 @@ impl Object {
     }
 
     /// `first_hit` of a leaf or union with `clipped_by`: the nearest of its crossings with
-    /// t > EPSILON inside every clipping object, found by asking the clip about crossings
-    /// nearest first (ties to the earlier in `all_hits`'s order, as `min_by` over it). With
+    /// t > EPSILON inside every clipping object (ties to the earlier in `all_hits`'s order, as
+    /// `min_by` over it), asking the clip only about crossings that would be nearer. With
     /// `nearest` false, any such crossing (`any_hit`): a union's members are then asked one
     /// at a time, stopping at the first crossing the clip keeps.
     pub(super) fn clipped_first_hit<'a>(
@@ -298,22 +295,99 @@ impl Object {
         }
         self.all_hits_unclipped(ray, tmax, s);
         let best = if nearest {
-            let order_from = s.csg_order.len();
-            for j in start..s.surface.len() {
-                s.csg_order.push((s.surface[j].t, j as u32, 0));
+            // A running minimum that asks the clip only about crossings nearer than the best
+            // so far: one that is not cannot become the minimum, kept or not, and the strict
+            // comparison keeps the earliest of equal ones.
+            let mut best: Option<SurfaceHit<'a>> = None;
+            for h in &s.surface[start..] {
+                if best.is_none_or(|b| h.t.total_cmp(&b.t).is_lt()) && kept(h) {
+                    best = Some(*h);
+                }
             }
-            let order = &mut s.csg_order[order_from..];
-            order.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-            let best = order
-                .iter()
-                .map(|&(_, j, _)| s.surface[j as usize])
-                .find(|h| kept(h));
-            s.csg_order.truncate(order_from);
             best
         } else {
             s.surface[start..].iter().find(|h| kept(h)).copied()
         };
         s.surface.truncate(start);
         best
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::geom::test_rng::Lcg;
+    use crate::math::{DVec3, Ray, EPSILON};
+    use crate::scene::object::{Object, Scratch, SurfaceHit};
+    use crate::sdl::{ParseOptions, Parser};
+
+    /// `first_hit` as `all_hits` defines it: the nearest crossing (t > EPSILON when clipped),
+    /// the earliest listed of equal ones.
+    fn reference<'a>(o: &'a Object, ray: &Ray, tmax: f64, s: &mut Scratch<'a>) -> Option<SurfaceHit<'a>> {
+        s.surface.clear();
+        o.all_hits(ray, tmax, s);
+        let best = s
+            .surface
+            .iter()
+            .filter(|h| o.clip.is_empty() || h.t > EPSILON)
+            .min_by(|a, b| a.t.total_cmp(&b.t))
+            .copied();
+        s.surface.clear();
+        best
+    }
+
+    /// The searches answer as `all_hits` does, bit for bit and with the same surface and
+    /// side: nested intersections (folded, and not: inverse, clipped), clipped differences,
+    /// unions and leaves, with rays from inside and outside and along the members' faces.
+    #[test]
+    fn searches_match_all_hits() {
+        const SCENE: &str = r#"
+            #declare Disk_X = cylinder { x, -x, 1 }
+            #declare Disk_Y = cylinder { y, -y, 1 }
+            #declare Disk_Z = cylinder { z, -z, 1 }
+            intersection { intersection { box { -1, 1 scale <1, 1, 0.95> } object { Disk_X scale 1.15 } }
+                           object { Disk_Y scale 1.15 } rotate <10, 20, 30> }
+            intersection { sphere { 0, 1.2 } intersection { box { -1, 1 } plane { x + y, 0.5 } } }
+            difference { box { -1, 1 } intersection { sphere { x, 1 } sphere { -x, 1.5 } } sphere { y, 0.7 } }
+            intersection { intersection { box { -1, 1 } sphere { 0, 1.3 } inverse } sphere { 0, 1.6 } }
+            intersection { intersection { box { -1, 1 } sphere { 0, 1.3 } clipped_by { plane { y, 0.2 } } } sphere { 0, 1.6 } }
+            merge { intersection { box { -1, 1 } sphere { 0, 1.3 } } sphere { x, 0.8 } }
+            difference { box { -1, 1 } object { Disk_Z scale <0.85, 0.75, 1.5> } object { Disk_X scale <1.15, 0.7, 0.7> }
+                         clipped_by { plane { -y, 0 } } scale <1, 2, 1> }
+            union { plane { z, 0 } plane { y, 0 inverse }
+                    cylinder { <-3, 1, -1>, <3, 1, -1>, 1 clipped_by { box { <-2, 0, -1>, <2, 1, 0> } } }
+                    clipped_by { box { <-1.9, -0.1, -100>, <2.1, 100, 1> } } rotate -y * 2 }
+            sphere { 0, 1 clipped_by { plane { y, 0.25 } } translate x }
+            sphere { 0, 1 clipped_by { plane { y, 0.25 } plane { x, 0.1 } } inverse }
+        "#;
+        let mut p = Parser::new(ParseOptions::default());
+        p.parse_str("t.pov", SCENE)
+            .map_err(|e| e.message.clone())
+            .unwrap();
+        let scene = crate::scene::build::build(&p.scene, 64, 48).scene;
+        let mut rng = Lcg(11);
+        let (mut sa, mut sb) = (Scratch::default(), Scratch::default());
+        for (n, o) in scene.objects.iter().enumerate() {
+            let mut hits = 0;
+            for k in 0..6000 {
+                // Every third ray runs along an axis through a point on a face of the box.
+                let ray = if k % 3 == 0 {
+                    let mut q = rng.vec(2.0);
+                    q[k % 2] = [1.0, -1.0, 0.0][k % 3];
+                    Ray::new(q, [DVec3::X, DVec3::Y, DVec3::Z, rng.vec(1.0)][k % 4])
+                } else {
+                    Ray::new(rng.vec(5.0), rng.vec(2.0))
+                };
+                let tmax = if rng.next() < 0.3 { 2.5 } else { f64::INFINITY };
+                let key = |h: Option<SurfaceHit>| {
+                    h.map(|h| (h.t.to_bits(), h.flip, h.obj as *const Object, h.hit.part))
+                };
+                let want = key(reference(o, &ray, tmax, &mut sb));
+                assert_eq!(key(o.first_hit(&ray, tmax, &mut sa)), want, "object {n}, ray {k}");
+                assert_eq!(o.any_hit(&ray, tmax, &mut sa), want.is_some(), "object {n}, ray {k}");
+                assert!(sa.surface.is_empty() && sa.csg_order.is_empty());
+                hits += want.is_some() as usize;
+            }
+            assert!(hits > 300, "object {n}: {hits}");
+        }
     }
 }

@@ -197,7 +197,6 @@ impl Object {
                     ray,
                     tmax,
                     s,
-                    nearest,
                 ),
                 _ => self.clipped_first_hit(ray, tmax, s, nearest),
             };
@@ -243,7 +242,6 @@ impl Object {
                 ray,
                 tmax,
                 s,
-                nearest,
             ),
             ObjKind::Csg { .. } => {
                 let start = s.surface.len();
