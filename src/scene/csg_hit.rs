@@ -1,0 +1,302 @@
+//! The CSG searches: which member crossings lie on a node's surface (`csg_keeps`), and the
+//! nearest such crossing of an intersection, difference, merge or clipped object found without
+//! testing every crossing (`first_hit`, `any_hit`). `Object::all_hits` lists them all.
+
+use std::cell::Cell;
+
+use crate::math::{Aabb, Ray, Slabs, EPSILON};
+use crate::scene::children::ChildIndex;
+use crate::scene::desc::CsgOp;
+use crate::scene::faces::{self, Faces};
+use crate::scene::object::{
+    csg_keeps, each_member, member_hits, ObjKind, Object, Scratch, SurfaceHit,
+};
+
+/// Crossings gathered for a search are tagged with their member `i`, and for the leaves of a
+/// member folded in (`folded`) with the leaf's number plus one above this shift.
+const LEAF_SHIFT: u32 = 16;
+
+/// The leaves, tight box and faces of member `c` when the search may test its crossings itself
+/// instead of through `c.all_hits`: an intersection without `clipped_by`, `inverse` or an index,
+/// whose `all_hits` is the leaves' crossings, in leaf order, that every other leaf contains.
+pub(super) fn folded(c: &Object) -> Option<(&[Object], Option<&Aabb>, Option<&Faces>)> {
+    match &c.kind {
+        ObjKind::Csg {
+            op: CsgOp::Intersection,
+            children,
+            index: None,
+            cull,
+        } if c.clip.is_empty() && !c.inverse && children.len() < (1 << LEAF_SHIFT) - 1 => Some((
+            children,
+            cull.as_ref().and_then(|c| c.aabb.as_ref()),
+            cull.as_ref().and_then(|c| c.faces.as_ref()),
+        )),
+        _ => None,
+    }
+}
+
+/// Member `i` as `each_member` offers it.
+fn member_at<'a>(children: &'a [Object], index: Option<&ChildIndex>, i: usize) -> &'a Object {
+    index.map_or(&children[i], |ix| ix.leaf(children, i))
+}
+
+impl Object {
+    /// `first_hit` of an intersection, difference or merge, with or without `clipped_by`: the
+    /// nearest of the crossings `all_hits` would keep (and `first_hit` take: t > EPSILON when
+    /// clipped), found by testing the members' crossings nearest first and stopping at the
+    /// first one kept. `all_hits` tests every crossing (for a polyhedron of n planes, n
+    /// crossings each asking up to n - 1 members), and the nearest kept one is usually among the
+    /// first few.
+    ///
+    /// The same crossings are gathered in the same order: a member that is a plain
+    /// intersection (`folded`) gives its leaves' crossings unfiltered, each then kept only if
+    /// that intersection's own `csg_keeps` keeps it too, and its kept crossings keep their
+    /// relative order (`all_hits` filters them in place). Every test (`csg_keeps`, the clip's
+    /// `inside`) has no side effect on the answer, and ties in `t` go to the earlier in that
+    /// order, as `min_by` over `all_hits` does: the answer is the same crossing, bit for bit.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(never)]
+    pub(super) fn csg_first_hit<'a>(
+        &'a self,
+        op: CsgOp,
+        children: &'a [Object],
+        index: Option<&ChildIndex>,
+        (cull, faces): (Option<&Aabb>, Option<&Faces>),
+        ray: &Ray,
+        tmax: f64,
+        s: &mut Scratch<'a>,
+    ) -> Option<SurfaceHit<'a>> {
+        let inv_dir = ray.dir.recip();
+        if cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none()) {
+            return None;
+        }
+        let ray_faces = faces.filter(|_| faces::ray_ok(ray));
+        let start = s.surface.len();
+        let order_from = s.csg_order.len();
+        let slabs = Slabs::new(ray.origin, inv_dir);
+        let fold = index.is_none() && children.len() <= 1 << LEAF_SHIFT;
+        let gather = |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
+            if !slabs.hits(&c.bounds, tmax) {
+                return;
+            }
+            if let Some((leaves, leaf_cull, leaf_faces)) = folded(c).filter(|_| fold) {
+                // `c.all_hits`'s own tests, in its order.
+                if leaf_cull.is_some_and(|b| b.hit(ray.origin, inv_dir, tmax).is_none()) {
+                    return;
+                }
+                let leaf_faces = leaf_faces.filter(|_| faces::ray_ok(ray));
+                for (k, g) in leaves.iter().enumerate() {
+                    if !slabs.hits(&g.bounds, tmax) {
+                        continue;
+                    }
+                    let from = s.surface.len();
+                    member_hits(g, leaf_faces.and_then(|f| f.get(k)), ray, tmax, s);
+                    let tag = i as u32 | (k as u32 + 1) << LEAF_SHIFT;
+                    for j in from..s.surface.len() {
+                        s.csg_order.push((s.surface[j].t, j as u32, tag));
+                    }
+                }
+                return;
+            }
+            let from = s.surface.len();
+            member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
+            for j in from..s.surface.len() {
+                s.csg_order.push((s.surface[j].t, j as u32, i as u32));
+            }
+        };
+        each_member(children, index, ray, tmax, s, gather);
+        let order = &mut s.csg_order[order_from..];
+        order.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        let rejecter = Cell::new(usize::MAX);
+        let leaf_rejecter = Cell::new(usize::MAX);
+        let clip = &self.clip[..];
+        let best = order.iter().find_map(|&(t, j, tag)| {
+            let i = (tag & ((1 << LEAF_SHIFT) - 1)) as usize;
+            let p = ray.at(t);
+            let leaf_kept = || match (tag >> LEAF_SHIFT) as usize {
+                0 => true,
+                k => {
+                    let (leaves, _, leaf_faces) = folded(member_at(children, index, i))
+                        .expect("tagged crossings come from folded members");
+                    csg_keeps(
+                        CsgOp::Intersection,
+                        k - 1,
+                        leaves,
+                        None,
+                        leaf_faces,
+                        p,
+                        &leaf_rejecter,
+                    )
+                }
+            };
+            let clip_kept = || clip.is_empty() || (t > EPSILON && clip.iter().all(|c| c.inside(p)));
+            (leaf_kept() && csg_keeps(op, i, children, index, faces, p, &rejecter) && clip_kept())
+                .then(|| {
+                    let mut h = s.surface[j as usize];
+                    h.flip ^= op == CsgOp::Difference && i > 0;
+                    h.flip ^= self.inverse;
+                    h
+                })
+        });
+        s.csg_order.truncate(order_from);
+        s.surface.truncate(start);
+        best
+    }
+
+    /// `first_hit` of a leaf or union with `clipped_by`: the nearest of its crossings with
+    /// t > EPSILON inside every clipping object (ties to the earlier in `all_hits`'s order, as
+    /// `min_by` over it), asking the clip only about crossings that would be nearer. With
+    /// `nearest` false, any such crossing (`any_hit`): a union's members are then asked one
+    /// at a time, stopping at the first crossing the clip keeps.
+    pub(super) fn clipped_first_hit<'a>(
+        &'a self,
+        ray: &Ray,
+        tmax: f64,
+        s: &mut Scratch<'a>,
+        nearest: bool,
+    ) -> Option<SurfaceHit<'a>> {
+        let start = s.surface.len();
+        let kept =
+            |h: &SurfaceHit| h.t > EPSILON && self.clip.iter().all(|c| c.inside(ray.at(h.t)));
+        if let ObjKind::Csg {
+            op: CsgOp::Union,
+            children,
+            index,
+            cull,
+        } = &self.kind
+        {
+            if !nearest {
+                // `all_hits_unclipped`'s tests of a union, member by member.
+                let inv_dir = ray.dir.recip();
+                if cull
+                    .as_ref()
+                    .and_then(|c| c.aabb.as_ref())
+                    .is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none())
+                {
+                    return None;
+                }
+                let slabs = Slabs::new(ray.origin, inv_dir);
+                let mut found = None;
+                each_member(children, index.as_deref(), ray, tmax, s, |c, _, s| {
+                    if found.is_some() || !slabs.hits(&c.bounds, tmax) {
+                        return;
+                    }
+                    let from = s.surface.len();
+                    c.all_hits(ray, tmax, s);
+                    found = s.surface[from..].iter().find(|h| kept(h)).copied();
+                    s.surface.truncate(from);
+                });
+                return found;
+            }
+        }
+        self.all_hits_unclipped(ray, tmax, s);
+        let best = if nearest {
+            // A running minimum that asks the clip only about crossings nearer than the best
+            // so far: one that is not cannot become the minimum, kept or not, and the strict
+            // comparison keeps the earliest of equal ones.
+            let mut best: Option<SurfaceHit<'a>> = None;
+            for h in &s.surface[start..] {
+                if best.is_none_or(|b| h.t.total_cmp(&b.t).is_lt()) && kept(h) {
+                    best = Some(*h);
+                }
+            }
+            best
+        } else {
+            s.surface[start..].iter().find(|h| kept(h)).copied()
+        };
+        s.surface.truncate(start);
+        best
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::geom::test_rng::Lcg;
+    use crate::math::{DVec3, Ray, EPSILON};
+    use crate::scene::object::{Object, Scratch, SurfaceHit};
+    use crate::sdl::{ParseOptions, Parser};
+
+    /// `first_hit` as `all_hits` defines it: the nearest crossing (t > EPSILON when clipped),
+    /// the earliest listed of equal ones.
+    fn reference<'a>(
+        o: &'a Object,
+        ray: &Ray,
+        tmax: f64,
+        s: &mut Scratch<'a>,
+    ) -> Option<SurfaceHit<'a>> {
+        s.surface.clear();
+        o.all_hits(ray, tmax, s);
+        let best = s
+            .surface
+            .iter()
+            .filter(|h| o.clip.is_empty() || h.t > EPSILON)
+            .min_by(|a, b| a.t.total_cmp(&b.t))
+            .copied();
+        s.surface.clear();
+        best
+    }
+
+    /// The searches answer as `all_hits` does, bit for bit and with the same surface and
+    /// side: nested intersections (folded, and not: inverse, clipped), clipped differences,
+    /// unions and leaves, with rays from inside and outside and along the members' faces.
+    #[test]
+    fn searches_match_all_hits() {
+        const SCENE: &str = r#"
+            #declare Disk_X = cylinder { x, -x, 1 }
+            #declare Disk_Y = cylinder { y, -y, 1 }
+            #declare Disk_Z = cylinder { z, -z, 1 }
+            intersection { intersection { box { -1, 1 scale <1, 1, 0.95> } object { Disk_X scale 1.15 } }
+                           object { Disk_Y scale 1.15 } rotate <10, 20, 30> }
+            intersection { sphere { 0, 1.2 } intersection { box { -1, 1 } plane { x + y, 0.5 } } }
+            difference { box { -1, 1 } intersection { sphere { x, 1 } sphere { -x, 1.5 } } sphere { y, 0.7 } }
+            intersection { intersection { box { -1, 1 } sphere { 0, 1.3 } inverse } sphere { 0, 1.6 } }
+            intersection { intersection { box { -1, 1 } sphere { 0, 1.3 } clipped_by { plane { y, 0.2 } } } sphere { 0, 1.6 } }
+            merge { intersection { box { -1, 1 } sphere { 0, 1.3 } } sphere { x, 0.8 } }
+            difference { box { -1, 1 } object { Disk_Z scale <0.85, 0.75, 1.5> } object { Disk_X scale <1.15, 0.7, 0.7> }
+                         clipped_by { plane { -y, 0 } } scale <1, 2, 1> }
+            union { plane { z, 0 } plane { y, 0 inverse }
+                    cylinder { <-3, 1, -1>, <3, 1, -1>, 1 clipped_by { box { <-2, 0, -1>, <2, 1, 0> } } }
+                    clipped_by { box { <-1.9, -0.1, -100>, <2.1, 100, 1> } } rotate -y * 2 }
+            sphere { 0, 1 clipped_by { plane { y, 0.25 } } translate x }
+            sphere { 0, 1 clipped_by { plane { y, 0.25 } plane { x, 0.1 } } inverse }
+        "#;
+        let mut p = Parser::new(ParseOptions::default());
+        p.parse_str("t.pov", SCENE)
+            .map_err(|e| e.message.clone())
+            .unwrap();
+        let scene = crate::scene::build::build(&p.scene, 64, 48).scene;
+        let mut rng = Lcg(11);
+        let (mut sa, mut sb) = (Scratch::default(), Scratch::default());
+        for (n, o) in scene.objects.iter().enumerate() {
+            let mut hits = 0;
+            for k in 0..6000 {
+                // Every third ray runs along an axis through a point on a face of the box.
+                let ray = if k % 3 == 0 {
+                    let mut q = rng.vec(2.0);
+                    q[k % 2] = [1.0, -1.0, 0.0][k % 3];
+                    Ray::new(q, [DVec3::X, DVec3::Y, DVec3::Z, rng.vec(1.0)][k % 4])
+                } else {
+                    Ray::new(rng.vec(5.0), rng.vec(2.0))
+                };
+                let tmax = if rng.next() < 0.3 { 2.5 } else { f64::INFINITY };
+                let key = |h: Option<SurfaceHit>| {
+                    h.map(|h| (h.t.to_bits(), h.flip, h.obj as *const Object, h.hit.part))
+                };
+                let want = key(reference(o, &ray, tmax, &mut sb));
+                assert_eq!(
+                    key(o.first_hit(&ray, tmax, &mut sa)),
+                    want,
+                    "object {n}, ray {k}"
+                );
+                assert_eq!(
+                    o.any_hit(&ray, tmax, &mut sa),
+                    want.is_some(),
+                    "object {n}, ray {k}"
+                );
+                assert!(sa.surface.is_empty() && sa.csg_order.is_empty());
+                hits += want.is_some() as usize;
+            }
+            assert!(hits > 100, "object {n}: {hits}");
+        }
+    }
+}
