@@ -458,6 +458,13 @@ mod tests {
                         (p - s.p).length_squared() < (s.r * bound) * (s.r * bound)
                     })
                     .collect();
+                // A lookup of level 1 reads the cells' level-1 lists: the level-1 samples of
+                // the full ones, in the same order.
+                let mut ones = Vec::new();
+                cache.near(p, bound, 1, from, |i, _| ones.push(i));
+                let mut all = found.clone();
+                all.retain(|&i| cache.samples[i].level == 1);
+                assert_eq!(ones, all, "level-1 lists at {p}");
                 found.sort_unstable();
                 want.sort_unstable();
                 assert_eq!(found, want, "bound {bound} coarser {coarser} at {p}");
