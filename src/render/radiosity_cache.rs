@@ -86,6 +86,11 @@ pub(super) struct Scale {
     level: u32,
     /// Cells by `pack`ed coordinates.
     pub(super) grid: FxHashMap<u64, Ids>,
+    /// The same cells listing only the samples of level 1, for the lookups of level 1 (camera
+    /// rays), which take no deeper sample: in `grid` they met them (deeper samples are a third
+    /// to half of all, filed at their own reach's scale beside those of level 1) and turned
+    /// each away. The level-1 samples of a cell keep their order, so the blend's sums do.
+    grid1: FxHashMap<u64, Ids>,
 }
 
 impl Scale {
@@ -134,6 +139,7 @@ impl Cache {
         if bound != self.filed_bound {
             for scale in &mut self.scales {
                 scale.grid.clear();
+                scale.grid1.clear();
             }
             self.filed = 0;
             self.filed_bound = bound;
@@ -154,6 +160,7 @@ impl Cache {
                         cell: 0.0,
                         level: u32::MAX,
                         grid: FxHashMap::default(),
+                        grid1: FxHashMap::default(),
                     });
                     self.scales.len() - 1
                 }
@@ -166,10 +173,17 @@ impl Cache {
             for x in lo.0..=hi.0 {
                 for y in lo.1..=hi.1 {
                     for z in lo.2..=hi.2 {
-                        let ids = scale.grid.entry(pack(x, y, z)).or_default();
+                        let key = pack(x, y, z);
+                        let ids = scale.grid.entry(key).or_default();
                         // Listed already under a cell of the same key.
                         if ids.last() != Some(&(i as u32)) {
                             ids.push(i as u32);
+                        }
+                        if s.level == 1 {
+                            let ids = scale.grid1.entry(key).or_default();
+                            if ids.last() != Some(&(i as u32)) {
+                                ids.push(i as u32);
+                            }
                         }
                     }
                 }
@@ -251,7 +265,12 @@ impl Cache {
             if scale.level > level {
                 continue;
             }
-            if let Some(ids) = scale.grid.get(&scale.key(p)) {
+            let grid = if level == 1 {
+                &scale.grid1
+            } else {
+                &scale.grid
+            };
+            if let Some(ids) = grid.get(&scale.key(p)) {
                 prefetch(ids.as_ptr());
                 *found = ids.as_slice();
             }
@@ -426,6 +445,13 @@ mod tests {
                         (p - s.p).length_squared() < (s.r * bound) * (s.r * bound)
                     })
                     .collect();
+                // A lookup of level 1 reads the cells' level-1 lists: the level-1 samples of
+                // the full ones, in the same order.
+                let mut ones = Vec::new();
+                cache.near(p, bound, 1, from, |i, _| ones.push(i));
+                let mut all = found.clone();
+                all.retain(|&i| cache.samples[i].level == 1);
+                assert_eq!(ones, all, "level-1 lists at {p}");
                 found.sort_unstable();
                 want.sort_unstable();
                 assert_eq!(found, want, "bound {bound} coarser {coarser} at {p}");
