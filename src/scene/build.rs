@@ -9,7 +9,7 @@ use crate::color::Rgbft;
 use crate::geom::bvh::Bvh;
 use crate::geom::text::TextData;
 use crate::geom::Shape;
-use crate::math::{Aabb, DVec3, Ray, Transform};
+use crate::math::{Aabb, DVec3, Transform};
 use crate::render::camera::Camera;
 use crate::scene::desc::{
     FogDesc, ImageMap, Interior, MeshData, ObjectDesc, Pigment, PigmentKind, RadiositySettings,
@@ -17,10 +17,12 @@ use crate::scene::desc::{
 };
 use crate::scene::light_group::LightSet;
 use crate::scene::media::Media;
-use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
+use crate::scene::object::{ObjKind, Object};
 use crate::scene::shapes::make_shape;
 
 pub use super::light::Light;
+
+mod query;
 
 /// How working values become file values.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -694,123 +696,6 @@ fn csg_bounds(op: crate::scene::desc::CsgOp, kids: &[Object]) -> Aabb {
             .iter()
             .fold(Aabb::INFINITE, |a, k| a.intersection(&k.bounds)),
         Difference => kids[0].bounds,
-    }
-}
-
-impl Scene {
-    /// Nearest crossing along the ray closer than `tmax`.
-    pub fn first_hit<'a>(
-        &'a self,
-        ray: &Ray,
-        tmax: f64,
-        scratch: &mut Scratch<'a>,
-    ) -> Option<SurfaceHit<'a>> {
-        let mut best: Option<SurfaceHit<'a>> = None;
-        let mut tmax = tmax;
-        let inv_dir = crate::geom::bvh::ray_recip(ray);
-        for (&i, cull) in self.unbounded.iter().zip(&self.unbounded_cull) {
-            if cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none()) {
-                continue;
-            }
-            if let Some(h) = self.objects[i].first_hit(ray, tmax, scratch) {
-                tmax = h.t;
-                best = Some(h);
-            }
-        }
-        self.bvh.traverse_inv(ray, inv_dir, tmax, |prim, tmax| {
-            if let Some(h) = self.objects[self.bounded[prim]].first_hit(ray, *tmax, scratch) {
-                *tmax = h.t;
-                best = Some(h);
-            }
-            false
-        });
-        best
-    }
-
-    /// Calls `f` for every object whose bounds the segment (0, tmax) may cross; `f` returns
-    /// true to stop (an opaque blocker was found).
-    pub fn for_each_candidate<'a>(
-        &'a self,
-        ray: &Ray,
-        tmax: f64,
-        mut f: impl FnMut(&'a Object) -> bool,
-    ) {
-        let inv_dir = crate::geom::bvh::ray_recip(ray);
-        for (&i, cull) in self.unbounded.iter().zip(&self.unbounded_cull) {
-            // An object the ray misses adds nothing, opaque or not.
-            let missed = cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none());
-            if !missed && f(&self.objects[i]) {
-                return;
-            }
-        }
-        self.bvh.traverse_inv(ray, inv_dir, tmax, |prim, _| {
-            f(&self.objects[self.bounded[prim]])
-        });
-    }
-
-    /// Whether any top-level object that may hold `p` (the unbounded ones past their cull
-    /// boxes, the bounded ones by the BVH's point query) satisfies `test`.
-    fn any_object_at(&self, p: DVec3, test: impl Fn(&Object) -> bool) -> bool {
-        if self
-            .unbounded
-            .iter()
-            .zip(&self.unbounded_cull)
-            .any(|(&i, cull)| cull.is_none_or(|c| c.contains(p)) && test(&self.objects[i]))
-        {
-            return true;
-        }
-        let mut found = false;
-        self.bvh.visit_point(p, |k| {
-            found = test(&self.objects[self.bounded[k]]);
-            found
-        });
-        found
-    }
-
-    /// Calls `f` with every top-level object whose bounds hold `p` (it decides itself
-    /// whether `p` is inside).
-    pub fn each_object_at<'s>(&'s self, p: DVec3, mut f: impl FnMut(&'s Object)) {
-        for (&i, cull) in self.unbounded.iter().zip(&self.unbounded_cull) {
-            if cull.is_none_or(|c| c.contains(p)) {
-                f(&self.objects[i]);
-            }
-        }
-        self.bvh.visit_point(p, |k| {
-            f(&self.objects[self.bounded[k]]);
-            false
-        });
-    }
-
-    /// Whether `p` is inside an object that is not `hollow`, where POV-Ray computes no
-    /// atmosphere.
-    pub fn inside_solid(&self, p: DVec3) -> bool {
-        self.any_object_at(p, |o| o.solid_at(p))
-    }
-
-    /// Whether `p` is inside any object other than `leaf` (CSG nodes holding `leaf` are
-    /// judged by their other members): `Object::inside_without` over every object, with the
-    /// tree holding `leaf` found through the parent table and the others through the BVH.
-    pub fn inside_other(&self, p: DVec3, leaf: &Object) -> bool {
-        // `leaf` and its nodes up to the top-level object holding it.
-        let mut chain = vec![leaf as *const Object as usize];
-        loop {
-            let at = *chain.last().unwrap_or(&0);
-            match self.parents.binary_search_by(|e| e.0.cmp(&at)) {
-                Ok(k) => chain.push(self.parents[k].1),
-                Err(_) => break,
-            }
-        }
-        let root = *chain.last().unwrap_or(&0);
-        let is_root = |o: &Object| o as *const Object as usize == root;
-        // Outside the tree holding `leaf`, inside_without is inside; it is false outside a
-        // bounded object's box, so the BVH's point query finds every object that can say yes.
-        if self.any_object_at(p, |o| !is_root(o) && o.inside(p)) {
-            return true;
-        }
-        match self.objects.iter().find(|o| is_root(o)) {
-            Some(o) => o.inside_without_chain(p, &chain),
-            None => false,
-        }
     }
 }
 
