@@ -52,7 +52,12 @@ fn metric_sum(v: DVec3, metric: f64) -> f64 {
 /// The point of the cube at offset (dx, dy, dz) from q's and the point's sum.
 #[inline(always)]
 fn cube_at(q: DVec3, base: DVec3, metric: f64, dx: i64, dy: i64, dz: i64) -> (f64, DVec3) {
-    let (cx, cy, cz) = (base.x as i64 + dx, base.y as i64 + dy, base.z as i64 + dz);
+    // Wrapping as release builds do (huge coordinates saturate the casts), not a debug panic.
+    let (cx, cy, cz) = (
+        (base.x as i64).wrapping_add(dx),
+        (base.y as i64).wrapping_add(dy),
+        (base.z as i64).wrapping_add(dz),
+    );
     let pt = noise::cell_point(cx, cy, cz);
     (metric_sum((pt - q).abs(), metric), pt)
 }
