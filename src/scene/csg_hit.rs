@@ -54,9 +54,12 @@ impl Object {
     /// relative order (`all_hits` filters them in place). Every test (`csg_keeps`, the clip's
     /// `inside`) has no side effect on the answer, and ties in `t` go to the earlier in that
     /// order, as `min_by` over `all_hits` does: the answer is the same crossing, bit for bit.
+    ///
+    /// `FOLD` false: no member is folded, for nodes that have none to fold (the common case),
+    /// so that their search pays nothing for the folding.
     #[allow(clippy::too_many_arguments)]
     #[inline(never)]
-    pub(super) fn csg_first_hit<'a>(
+    pub(super) fn csg_first_hit<'a, const FOLD: bool>(
         &'a self,
         op: CsgOp,
         children: &'a [Object],
@@ -74,12 +77,12 @@ impl Object {
         let start = s.surface.len();
         let order_from = s.csg_order.len();
         let slabs = Slabs::new(ray.origin, inv_dir);
-        let fold = index.is_none() && children.len() <= 1 << LEAF_SHIFT;
+        let fold = FOLD && index.is_none() && children.len() <= 1 << LEAF_SHIFT;
         let gather = |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
             if !slabs.hits(&c.bounds, tmax) {
                 return;
             }
-            if let Some((leaves, leaf_cull, leaf_faces)) = folded(c).filter(|_| fold) {
+            if let Some((leaves, leaf_cull, leaf_faces)) = fold.then(|| folded(c)).flatten() {
                 // `c.all_hits`'s own tests, in its order.
                 if leaf_cull.is_some_and(|b| b.hit(ray.origin, inv_dir, tmax).is_none()) {
                     return;
@@ -111,9 +114,19 @@ impl Object {
         let leaf_rejecter = Cell::new(usize::MAX);
         let clip = &self.clip[..];
         let best = order.iter().find_map(|&(t, j, tag)| {
-            let i = (tag & ((1 << LEAF_SHIFT) - 1)) as usize;
+            // Without folding, tags are plain member numbers (a node may have more than
+            // the tag's low bits hold).
+            let i = if FOLD {
+                tag & ((1 << LEAF_SHIFT) - 1)
+            } else {
+                tag
+            } as usize;
             let p = ray.at(t);
-            let leaf_kept = || match (tag >> LEAF_SHIFT) as usize {
+            let leaf_kept = || match if FOLD {
+                (tag >> LEAF_SHIFT) as usize
+            } else {
+                0
+            } {
                 0 => true,
                 k => {
                     let (leaves, _, leaf_faces) = folded(member_at(children, index, i))

@@ -234,7 +234,7 @@ impl Object {
                 children,
                 index,
                 cull,
-            } if *op != CsgOp::Union => self.csg_first_hit(
+            } if *op != CsgOp::Union => self.csg_first_hit::<true>(
                 *op,
                 children,
                 index.as_deref(),
@@ -298,9 +298,11 @@ impl Object {
                 // Members that are plain intersections are searched through (`csg_hit`).
                 let index = index.as_deref();
                 if index.is_none() && children.iter().any(|c| csg_hit::folded(c).is_some()) {
-                    self.csg_first_hit(*op, children, index, culls, ray, tmax, s)
+                    self.csg_first_hit::<true>(*op, children, index, culls, ray, tmax, s)
                 } else {
-                    self.csg_nearest_hit(*op, children, index, culls, ray, tmax, s)
+                    // Without members to fold: the search's folding compiled out (through it,
+                    // objects/csg/intee1 and cliptst2 cost 2-3 % more instructions).
+                    self.csg_first_hit::<false>(*op, children, index, culls, ray, tmax, s)
                 }
             }
             ObjKind::Csg { .. } => {
@@ -314,57 +316,6 @@ impl Object {
                 best
             }
         }
-    }
-
-    /// `csg_first_hit` (`scene::csg_hit`, which says why it is `first_hit`) for a node without
-    /// `clipped_by` or members to fold: the common case, kept apart so that the extra tests
-    /// of the general search cost it nothing (measured: 2-3 % more instructions on
-    /// objects/csg/intee1 and cliptst2 through the general one).
-    #[allow(clippy::too_many_arguments)]
-    fn csg_nearest_hit<'a>(
-        &'a self,
-        op: CsgOp,
-        children: &'a [Object],
-        index: Option<&ChildIndex>,
-        (cull, faces): (Option<&Aabb>, Option<&Faces>),
-        ray: &Ray,
-        tmax: f64,
-        s: &mut Scratch<'a>,
-    ) -> Option<SurfaceHit<'a>> {
-        let inv_dir = ray.dir.recip();
-        if cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none()) {
-            return None;
-        }
-        let ray_faces = faces.filter(|_| faces::ray_ok(ray));
-        let start = s.surface.len();
-        let order_from = s.csg_order.len();
-        let slabs = Slabs::new(ray.origin, inv_dir);
-        let gather = |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
-            if !slabs.hits(&c.bounds, tmax) {
-                return;
-            }
-            let from = s.surface.len();
-            member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
-            for j in from..s.surface.len() {
-                s.csg_order.push((s.surface[j].t, j as u32, i as u32));
-            }
-        };
-        each_member(children, index, ray, tmax, s, gather);
-        let order = &mut s.csg_order[order_from..];
-        order.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-        let rejecter = std::cell::Cell::new(usize::MAX);
-        let best = order.iter().find_map(|&(t, j, i)| {
-            let i = i as usize;
-            csg_keeps(op, i, children, index, faces, ray.at(t), &rejecter).then(|| {
-                let mut h = s.surface[j as usize];
-                h.flip ^= op == CsgOp::Difference && i > 0;
-                h.flip ^= self.inverse;
-                h
-            })
-        });
-        s.csg_order.truncate(order_from);
-        s.surface.truncate(start);
-        best
     }
 
     /// Appends every crossing with t in (EPSILON, tmax), in no particular order, to

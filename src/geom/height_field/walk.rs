@@ -9,7 +9,7 @@
 //! `min` and `max`; here they are picked by index, and the x and z faces of the four children
 //! (three distances per axis) are found once.
 
-use super::{GridRay, HeightField};
+use super::{fmax, fmin, GridRay, HeightField};
 
 /// What the walk keeps of a ray besides `GridRay`: the entry face along each axis.
 pub(super) struct Signs {
@@ -56,8 +56,8 @@ impl HeightField {
         let (u, v) = ((ylo - r.o.y) * r.inv.y, (yhi - r.o.y) * r.inv.y);
         let (ye, yx) = if s.up { (u, v) } else { (v, u) };
         let t0 = if ye > k.key { ye } else { k.key };
-        let t1 = lesser(lesser(r.tmax, k.exit), yx);
-        t0 <= t1 + 1e-9 * greater(t1.abs(), 1.0)
+        let t1 = fmin::<true>(fmin::<true>(r.tmax, k.exit), yx);
+        t0 <= t1 + 1e-9 * fmax::<true>(t1.abs(), 1.0)
     }
 
     /// `visit::<true>` for a ray with `Signs` (see the module's comment for why the answers
@@ -79,8 +79,8 @@ impl HeightField {
         // The middle faces as `visit` finds them: whole numbers, exact either way, clamped
         // to the grid. (A child that exists starts below the grid's edge, so its near face
         // needs no clamp: the outer faces are the block's own, `ux` and `uz`.)
-        let mx = lesser(((bi * 2 + 1) << sh) as i64 as f64, cx);
-        let mz = lesser(((bj * 2 + 1) << sh) as i64 as f64, cz);
+        let mx = fmin::<true>(((bi * 2 + 1) << sh) as i64 as f64, cx);
+        let mz = fmin::<true>(((bj * 2 + 1) << sh) as i64 as f64, cz);
         let ux = [ux[0], (mx - r.o.x) * r.inv.x, ux[1]];
         let uz = [uz[0], (mz - r.o.z) * r.inv.z, uz[1]];
         let mut kids = [Kid::default(); 4];
@@ -95,7 +95,7 @@ impl HeightField {
                 let k = if xe > 0.0 { xe } else { 0.0 };
                 let kid = Kid {
                     key: if ze > k { ze } else { k },
-                    exit: lesser(xx, zx),
+                    exit: fmin::<true>(xx, zx),
                     i: ci,
                     j: cj,
                 };
@@ -141,30 +141,10 @@ impl HeightField {
         let top = self.levels.len() - 1;
         let (cx, cz) = self.cells();
         // The root's faces as `visit` finds them for its children.
-        let far = |c: f64| lesser(((2usize) << (top - 1)) as i64 as f64, c);
+        let far = |c: f64| fmin::<true>(((2usize) << (top - 1)) as i64 as f64, c);
         let ux = [(0.0 - r.o.x) * r.inv.x, (far(cx) - r.o.x) * r.inv.x];
         let uz = [(0.0 - r.o.z) * r.inv.z, (far(cz) - r.o.z) * r.inv.z];
         self.visit_signed(r, s, top, (0, 0), ux, uz);
-    }
-}
-
-/// The smaller of two numbers that are not NaN (`fmin::<true>`).
-#[inline(always)]
-fn lesser(a: f64, b: f64) -> f64 {
-    if b < a {
-        b
-    } else {
-        a
-    }
-}
-
-/// The larger of two numbers that are not NaN (`fmax::<true>`).
-#[inline(always)]
-fn greater(a: f64, b: f64) -> f64 {
-    if b > a {
-        b
-    } else {
-        a
     }
 }
 
