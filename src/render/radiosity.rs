@@ -20,7 +20,9 @@ use crate::scene::build::Scene;
 use crate::scene::desc::RadiositySettings;
 use crate::scene::object::Scratch;
 
-use super::radiosity_cache::{weight, Blend};
+use smallvec::SmallVec;
+
+use super::radiosity_cache::Blend;
 pub use super::radiosity_cache::{Cache, Sample};
 use super::trace::{point_seed, Path, Seen, Tracer};
 use super::RenderSettings;
@@ -263,7 +265,10 @@ fn halving(start: f64, end: f64, width: u32, height: u32) -> Vec<f64> {
 
 /// What a pass traced at one position: the samples it gathered, the colour (when lit) and
 /// where its lookups read the cache.
-type Traced = (Vec<Sample>, Seen, Vec<(DVec3, DVec3)>);
+/// Inline for the one point (or none) most positions look the cache up at: a `Vec` each cost
+/// an allocation per lit pixel and kept its 192 bytes until the fold check.
+type Traced = (Vec<Sample>, Seen, Looked);
+type Looked = SmallVec<[(DVec3, DVec3); 1]>;
 
 /// The order of a pass's four interleaved phases: (column, row) parity of the block.
 const PHASES: [(usize, usize); 4] = [(0, 0), (1, 1), (1, 0), (0, 1)];
@@ -304,7 +309,7 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
     let mut first: Vec<Option<Seen>> = Vec::new();
     // The colours the last pass lit: (pixel, colour, where its lookups read the cache, how
     // many samples the cache held when its phase began).
-    type Lit = (usize, Seen, Vec<(DVec3, DVec3)>, usize);
+    type Lit = (usize, Seen, Looked, usize);
     let mut lit_colours: Vec<Lit> = Vec::new();
     let rays = AtomicU64::new(0);
     // The pretrace's samples are filed for its own error bound where its gathering rays look
@@ -372,10 +377,12 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
                         let ray = scene.camera.ray(x, y);
                         let seen = tracer.trace_pretrace(ray, ctx);
                         rays.fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
+                        // Copied out, so the scratch keeps its buffers: most positions gather
+                        // nothing, and an empty `Vec` costs no allocation.
                         (
-                            std::mem::take(&mut ctx.rad_local),
+                            ctx.rad_local.to_vec(),
                             seen,
-                            std::mem::take(&mut ctx.rad_seen),
+                            Looked::from_slice(&ctx.rad_seen),
                         )
                     })
                     .collect()
@@ -446,13 +453,9 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
     if fold {
         first = vec![None; s.width as usize * s.height as usize];
         for (at, seen, looked, before) in lit_colours {
-            let unchanged = looked.iter().all(|&(p, n)| {
-                let mut valid = false;
-                cache.near(p, set.error_bound, 1, before, |_, smp| {
-                    valid |= weight(smp, p, n, 1, set.error_bound).is_some();
-                });
-                !valid
-            });
+            let unchanged = looked
+                .iter()
+                .all(|&(p, n)| !cache.any_valid(p, n, set.error_bound, before));
             if unchanged {
                 first[at] = Some(seen);
             }

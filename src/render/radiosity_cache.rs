@@ -277,6 +277,23 @@ impl Cache {
         }
     }
 
+    /// Whether some sample from number `from` on is valid at (p, n) for a lookup of level 1
+    /// at error bound `bound` (the fold check in `pretrace`). The few samples a last pass
+    /// adds (none at all in most small scenes) are tested directly, not through the grids:
+    /// which of them are asked, and in what order, does not change whether one is valid.
+    pub(super) fn any_valid(&self, p: DVec3, n: DVec3, bound: f64, from: usize) -> bool {
+        if self.foot.len() - from.min(self.foot.len()) <= FEW_NEW {
+            return self.foot[from.min(self.foot.len())..]
+                .iter()
+                .any(|s| weight(s, p, n, 1, bound).is_some());
+        }
+        let mut valid = false;
+        self.near(p, bound, 1, from, |_, s| {
+            valid |= weight(s, p, n, 1, bound).is_some();
+        });
+        valid
+    }
+
     pub fn len(&self) -> usize {
         self.samples.len()
     }
@@ -285,6 +302,10 @@ impl Cache {
         self.samples.is_empty()
     }
 }
+
+/// Up to this many new samples `any_valid` tests one by one rather than through the grids
+/// (a hash probe per scale each).
+const FEW_NEW: usize = 32;
 
 /// Scales whose cells a lookup finds before reading any.
 const GROUP: usize = 24;
