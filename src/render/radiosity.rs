@@ -306,11 +306,15 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
         && scene.camera.mesh().is_none()
         && scene.camera.lens().is_none()
         && !(s.antialias.is_some() && s.sampling_method == 2);
-    let mut first: Vec<Option<Seen>> = Vec::new();
-    // The colours the last pass lit: (pixel, colour, where its lookups read the cache, how
-    // many samples the cache held when its phase began).
-    type Lit = (usize, Seen, Looked, usize);
-    let mut lit_colours: Vec<Lit> = Vec::new();
+    let mut first: Vec<Option<Seen>> = if fold {
+        vec![None; s.width as usize * s.height as usize]
+    } else {
+        Vec::new()
+    };
+    // The pixels the last pass lit that looked the cache up, to be checked once it is
+    // complete: (pixel, where its lookups read the cache, how many samples the cache held
+    // when its phase began). Their colours wait in `first`.
+    let mut to_check: Vec<(usize, Looked, usize)> = Vec::new();
     let rays = AtomicU64::new(0);
     // The pretrace's samples are filed for its own error bound where its gathering rays look
     // them up (`count` lookups per sample, and a third of the samples read per lookup), and
@@ -391,7 +395,11 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
             for (&(ix, iy), (v, seen, looked)) in positions.iter().zip(new) {
                 // A pixel that gathered samples of its own is traced again by the final trace.
                 if lit && v.is_empty() {
-                    lit_colours.push((iy * s.width as usize + ix, seen, looked, before));
+                    let at = iy * s.width as usize + ix;
+                    first[at] = Some(seen);
+                    if !looked.is_empty() {
+                        to_check.push((at, looked, before));
+                    }
                 }
                 cache.samples.extend(v);
             }
@@ -451,13 +459,12 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
     // on is valid where its lookups read the cache: they then saw the final cache's valid
     // samples, in its order.
     if fold {
-        first = vec![None; s.width as usize * s.height as usize];
-        for (at, seen, looked, before) in lit_colours {
+        for (at, looked, before) in to_check {
             let unchanged = looked
                 .iter()
                 .all(|&(p, n)| !cache.any_valid(p, n, set.error_bound, before));
-            if unchanged {
-                first[at] = Some(seen);
+            if !unchanged {
+                first[at] = None;
             }
         }
     }
