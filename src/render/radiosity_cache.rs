@@ -479,4 +479,39 @@ mod tests {
             }
         }
     }
+
+    /// The fold check's `any_valid` answers as testing every sample from `from` on would,
+    /// whether it tests the few new samples directly or reads the grids.
+    #[test]
+    fn any_valid_tests_every_new_sample() {
+        let mut cache = Cache::with_pool(Vec::new(), 1);
+        let mut h = 7u64;
+        let mut rnd = || {
+            h = mix(h);
+            (h >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for i in 0..300 {
+            let p = DVec3::new(rnd(), rnd(), rnd()) * 4.0;
+            let n = DVec3::new(rnd() - 0.5, rnd() - 0.5, 1.0).normalize();
+            cache.samples.push(Sample {
+                p,
+                n,
+                irr: DVec3::ONE,
+                r: 0.05 + rnd(),
+                level: 1 + i % 2,
+            });
+        }
+        let bound = 0.5;
+        cache.file_new(bound, bound);
+        for k in 0..400 {
+            let p = DVec3::new(rnd(), rnd(), rnd()) * 4.0;
+            let n = DVec3::new(rnd() - 0.5, rnd() - 0.5, 1.0).normalize();
+            // Both sides of FEW_NEW, and past the end.
+            let from = [0, 100, 280, 290, 299, 300, 400][k % 7];
+            let want = cache.samples[from.min(300)..]
+                .iter()
+                .any(|s| weight(&s.footprint(), p, n, 1, bound).is_some());
+            assert_eq!(cache.any_valid(p, n, bound, from), want, "{p} from {from}");
+        }
+    }
 }
