@@ -59,16 +59,47 @@ fn extinction_at(media: &[&[Media]], p: DVec3) -> DVec3 {
             k += s.color * s.extinction;
         }
         if k != DVec3::ZERO {
-            sum += k * density(m, p);
+            let rho = density(m, p);
+            // A ±0 density adds ±0 to a sum that starts at +0: nothing (k is finite where
+            // `density` answers ZERO early, `DensityPlan`).
+            if !m.plan.cut_on_zero || rho != DVec3::ZERO {
+                sum += k * rho;
+            }
         }
     }
     sum
 }
 
+/// The product of the media's densities at `p`. Where the plan allows (`DensityPlan`), a
+/// factor zero in every channel answers ZERO at once: the whole product would be ±0 in every
+/// channel, which every caller treats as ZERO (with finite coefficients ±0 adds nothing), so
+/// the costly factors are skipped where a cheap one is zero.
 fn density(m: &Media, p: DVec3) -> DVec3 {
-    m.density
-        .iter()
-        .fold(DVec3::ONE, |a, d| a * pigment::eval(d, p).rgb)
+    let plan = m.plan;
+    if !plan.cut_on_zero {
+        return m
+            .density
+            .iter()
+            .fold(DVec3::ONE, |a, d| a * pigment::eval(d, p).rgb);
+    }
+    let first = pigment::eval(&m.density[plan.first], p).rgb;
+    if first == DVec3::ZERO {
+        return DVec3::ZERO;
+    }
+    // The product in the written order, as without the plan (1·x is x, so starting from the
+    // first factor's value is the same fold).
+    let mut a = DVec3::ONE;
+    for (i, d) in m.density.iter().enumerate() {
+        a *= if i == plan.first {
+            first
+        } else {
+            pigment::eval(d, p).rgb
+        };
+        if a == DVec3::ZERO {
+            return DVec3::ZERO;
+        }
+    }
+    a
 }
 
 /// The media whose sampling settings the whole stretch follows: the first one (measured:
@@ -126,7 +157,17 @@ pub fn transmittance(media: &[&[Media]], ray: &Ray, t0: f64, t1: f64) -> DVec3 {
             }
         }
     }
-    (-depth * (span * len / (3.0 * n as f64))).exp()
+    exp3(-depth * (span * len / (3.0 * n as f64)))
+}
+
+/// `v.exp()`, with one `exp` where the channels are equal (grey media): the same argument
+/// gives the same bits (±0 both give 1; NaN is never equal, so takes the three).
+fn exp3(v: DVec3) -> DVec3 {
+    if v.x == v.y && v.y == v.z {
+        DVec3::splat(v.x.exp())
+    } else {
+        v.exp()
+    }
 }
 
 impl<'a> Tracer<'a> {
@@ -258,7 +299,7 @@ impl<'a> Tracer<'a> {
                     // asked once for it (the same argument gives the same bits).
                     let arg = -step.sigma * weight;
                     if arg != dimmed.0 {
-                        dimmed = (arg, arg.exp());
+                        dimmed = (arg, exp3(arg));
                     }
                     acc.kept *= dimmed.1;
                     left = right;
