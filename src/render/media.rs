@@ -59,12 +59,9 @@ fn extinction_at(media: &[&[Media]], p: DVec3) -> DVec3 {
             k += s.color * s.extinction;
         }
         if k != DVec3::ZERO {
-            let rho = density(m, p);
-            // A ±0 density adds ±0 to a sum that starts at +0: nothing (k is finite where
-            // `density` answers ZERO early, `DensityPlan`).
-            if !m.plan.cut_on_zero || rho != DVec3::ZERO {
-                sum += k * rho;
-            }
+            // Where `density` answers ZERO early, k is finite and the product it stands for
+            // ±0: k·(±0) is ±0, and adding ±0 to a sum that starts at +0 changes nothing.
+            sum += k * density(m, p);
         }
     }
     sum
@@ -74,14 +71,24 @@ fn extinction_at(media: &[&[Media]], p: DVec3) -> DVec3 {
 /// factor zero in every channel answers ZERO at once: the whole product would be ±0 in every
 /// channel, which every caller treats as ZERO (with finite coefficients ±0 adds nothing), so
 /// the costly factors are skipped where a cheap one is zero.
+#[inline]
 fn density(m: &Media, p: DVec3) -> DVec3 {
-    let plan = m.plan;
-    if !plan.cut_on_zero {
+    if m.density.is_empty() {
+        return DVec3::ONE;
+    }
+    if !m.plan.cut_on_zero {
         return m
             .density
             .iter()
             .fold(DVec3::ONE, |a, d| a * pigment::eval(d, p).rgb);
     }
+    density_cut(m, p)
+}
+
+/// `density` under a plan that may stop at a zero factor.
+#[inline(never)]
+fn density_cut(m: &Media, p: DVec3) -> DVec3 {
+    let plan = m.plan;
     let first = pigment::eval(&m.density[plan.first], p).rgb;
     if first == DVec3::ZERO {
         return DVec3::ZERO;
@@ -256,6 +263,9 @@ impl<'a> Tracer<'a> {
                 let mut sigma = DVec3::ZERO;
                 let mut glow = DVec3::ZERO;
                 // Each density is evaluated once here, also for the lights' scattering below.
+                // The first scattering media stays out of the list (most samples meet one):
+                // no copy of its settings per sample.
+                let mut first: Option<(DVec3, &Scattering)> = None;
                 let mut scatter = std::mem::take(&mut ctx.media_scatter);
                 scatter.clear();
                 for m in media.iter().flat_map(|l| l.iter()) {
@@ -268,12 +278,16 @@ impl<'a> Tracer<'a> {
                     if let Some(sc) = &m.scattering {
                         sigma += sc.color * sc.extinction * rho;
                         if sc.color != DVec3::ZERO {
-                            scatter.push((rho, *sc));
+                            if first.is_none() {
+                                first = Some((rho, sc));
+                            } else {
+                                scatter.push((rho, *sc));
+                            }
                         }
                     }
                 }
-                if !scatter.is_empty() {
-                    glow += self.in_scattered(&scatter, &piece, p, dir, ctx);
+                if let Some(first) = first {
+                    glow += self.in_scattered(first, &scatter, &piece, p, dir, ctx);
                 }
                 ctx.media_scatter = scatter;
                 Sample { sigma, glow }
@@ -322,7 +336,8 @@ impl<'a> Tracer<'a> {
     /// scattering media's phase function, colour and density (`scatter`).
     fn in_scattered(
         &self,
-        scatter: &[(DVec3, Scattering)],
+        first: (DVec3, &Scattering),
+        rest: &[(DVec3, Scattering)],
         lights: &[usize],
         p: DVec3,
         dir: DVec3,
@@ -345,7 +360,9 @@ impl<'a> Tracer<'a> {
             }
             // The light travels along −l; the viewer lies along −dir.
             let cos = inc.l.dot(dir);
-            for (rho, s) in scatter {
+            let (rho, s) = first;
+            out += lc * s.color * rho * s.phase(cos);
+            for (rho, s) in rest {
                 out += lc * s.color * *rho * s.phase(cos);
             }
         }
