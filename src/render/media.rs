@@ -450,3 +450,110 @@ fn refine<'a, F: FnMut(f64, &mut TraceCtx<'a>) -> Sample>(
         glow: (x.glow + y.glow) * 0.5,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::color::Rgbft;
+    use crate::scene::desc::{Pigment, PigmentKind};
+    use crate::scene::media::DensityPlan;
+    use crate::scene::pattern::{Pattern, PatternKind};
+
+    fn mapped(kind: PatternKind, map: &[(f64, f64)]) -> Pigment {
+        let mut p = Pigment::solid(Rgbft::BLACK);
+        p.kind = PigmentKind::Mapped {
+            pattern: Box::new(Pattern::new(kind)),
+            map: map
+                .iter()
+                .map(|&(v, c)| (v, Rgbft::rgb(DVec3::new(c, 0.5 * c, -c))))
+                .collect(),
+        };
+        p.take_generator(2);
+        p
+    }
+
+    fn media(density: Vec<Pigment>) -> Media {
+        let mut m = Media {
+            absorption: DVec3::new(0.3, 0.2, 0.1),
+            density,
+            ..Media::default()
+        };
+        m.ready();
+        m
+    }
+
+    /// The plan's early ZERO stands only where the written product is ±0 in every channel,
+    /// and elsewhere gives the same bits; extinction sums are the same bits either way.
+    #[test]
+    fn density_cut_matches_the_full_product() {
+        let m = media(vec![
+            mapped(
+                PatternKind::Wrinkles,
+                &[(0.0, 0.0), (0.4, 0.0), (0.6, 1.0), (1.0, 2.0)],
+            ),
+            mapped(
+                PatternKind::Spherical,
+                &[(0.0, 0.0), (0.4, 1.0), (1.0, 1.0)],
+            ),
+            mapped(PatternKind::Bozo, &[(0.0, -1.0), (1.0, 1.0)]),
+        ]);
+        assert_eq!(
+            m.plan,
+            DensityPlan {
+                cut_on_zero: true,
+                first: 1
+            }
+        );
+        let mut plain = m.clone();
+        plain.plan = DensityPlan::default();
+        let mut cut = 0;
+        for i in 0..20_000u32 {
+            let f = |k: u32| ((i.wrapping_mul(k) % 1000) as f64 / 1000.0 - 0.5) * 3.0;
+            let p = DVec3::new(f(7919), f(104_729), f(15_485_863));
+            let (a, b) = (density(&m, p), density(&plain, p));
+            if a == DVec3::ZERO {
+                assert_eq!(b, DVec3::ZERO, "at {p}");
+                cut += 1;
+            } else {
+                assert_eq!(
+                    a.to_array().map(f64::to_bits),
+                    b.to_array().map(f64::to_bits)
+                );
+            }
+            let (x, y) = (
+                extinction_at(&[&[m.clone()]], p),
+                extinction_at(&[&[plain.clone()]], p),
+            );
+            assert_eq!(
+                x.to_array().map(f64::to_bits),
+                y.to_array().map(f64::to_bits)
+            );
+        }
+        assert!(cut > 1000, "{cut}");
+    }
+
+    /// A factor that may not be finite (a NaN or huge entry, an image) keeps the full product.
+    #[test]
+    fn density_plan_needs_finite_factors() {
+        let sphere = || mapped(PatternKind::Spherical, &[(0.0, 0.0), (1.0, 1.0)]);
+        for bad in [f64::NAN, 1e301, f64::INFINITY] {
+            let m = media(vec![
+                mapped(PatternKind::Bozo, &[(0.0, bad), (1.0, 1.0)]),
+                sphere(),
+            ]);
+            assert!(!m.plan.cut_on_zero);
+            let m = media(vec![
+                mapped(PatternKind::Bozo, &[(bad, 0.0), (1.0, 1.0)]),
+                sphere(),
+            ]);
+            assert!(!m.plan.cut_on_zero);
+        }
+        let mut m = media(vec![sphere(), sphere()]);
+        assert!(m.plan.cut_on_zero);
+        m.absorption = DVec3::new(f64::INFINITY, 0.0, 0.0);
+        m.ready();
+        assert!(!m.plan.cut_on_zero);
+        // One density alone has nothing to skip.
+        assert!(!media(vec![sphere()]).plan.cut_on_zero);
+    }
+}

@@ -7,8 +7,8 @@
 
 use std::sync::{Arc, LazyLock};
 
-use crate::math::{DVec3, Transform};
 use crate::color::Rgbft;
+use crate::math::{DVec3, Transform};
 use crate::scene::desc::{Pigment, PigmentKind};
 use crate::scene::pattern::PatternKind;
 
