@@ -521,8 +521,8 @@ mod tests {
                 );
             }
             let (x, y) = (
-                extinction_at(&[&[m.clone()]], p),
-                extinction_at(&[&[plain.clone()]], p),
+                extinction_at(&[std::slice::from_ref(&m)], p),
+                extinction_at(&[std::slice::from_ref(&plain)], p),
             );
             assert_eq!(
                 x.to_array().map(f64::to_bits),
