@@ -34,7 +34,7 @@ pub fn apply(fogs: &[FogDesc], ray: &Ray, t: f64, mut seen: Seen) -> Seen {
             None => f.color,
         };
         let optical = stirred(f, ray.origin, dir, d, depth_along(f, ray.origin, dir, d));
-        let a = (-optical / f.distance).exp().max(color.transmit);
+        let a = fade(-optical / f.distance).max(color.transmit);
         let fc = color.rgb;
         let mut filter = DVec3::splat(1.0 - color.filter) + fc * color.filter;
         if f.rainbow.is_some() {
@@ -63,9 +63,20 @@ pub fn kept(fogs: &[FogDesc], ray: &Ray, d: f64) -> f64 {
                 d,
                 depth_along(f, ray.origin, ray.dir, d),
             );
-            (-optical / f.distance).exp().max(f.color.transmit)
+            fade(-optical / f.distance).max(f.color.transmit)
         })
         .product()
+}
+
+/// `x.exp()`, without the call where it is exactly 0: every ray to the background of a
+/// fog thinner than FAR/746 (below −745.14 the exponential is under half the least
+/// subnormal and rounds to 0).
+fn fade(x: f64) -> f64 {
+    if x < -746.0 {
+        0.0
+    } else {
+        x.exp()
+    }
 }
 
 /// The fog a ray `d` long meets, before turbulence: its length, or for ground fog its

@@ -59,16 +59,54 @@ fn extinction_at(media: &[&[Media]], p: DVec3) -> DVec3 {
             k += s.color * s.extinction;
         }
         if k != DVec3::ZERO {
+            // Where `density` answers ZERO early, k is finite and the product it stands for
+            // ±0: k·(±0) is ±0, and adding ±0 to a sum that starts at +0 changes nothing.
             sum += k * density(m, p);
         }
     }
     sum
 }
 
+/// The product of the media's densities at `p`. Where the plan allows (`DensityPlan`), a
+/// factor zero in every channel answers ZERO at once: the whole product would be ±0 in every
+/// channel, which every caller treats as ZERO (with finite coefficients ±0 adds nothing), so
+/// the costly factors are skipped where a cheap one is zero.
+#[inline]
 fn density(m: &Media, p: DVec3) -> DVec3 {
-    m.density
-        .iter()
-        .fold(DVec3::ONE, |a, d| a * pigment::eval(d, p).rgb)
+    if m.density.is_empty() {
+        return DVec3::ONE;
+    }
+    if !m.plan.cut_on_zero {
+        return m
+            .density
+            .iter()
+            .fold(DVec3::ONE, |a, d| a * pigment::eval(d, p).rgb);
+    }
+    density_cut(m, p)
+}
+
+/// `density` under a plan that may stop at a zero factor.
+#[inline(never)]
+fn density_cut(m: &Media, p: DVec3) -> DVec3 {
+    let plan = m.plan;
+    let first = pigment::eval(&m.density[plan.first], p).rgb;
+    if first == DVec3::ZERO {
+        return DVec3::ZERO;
+    }
+    // The product in the written order, as without the plan (1·x is x, so starting from the
+    // first factor's value is the same fold).
+    let mut a = DVec3::ONE;
+    for (i, d) in m.density.iter().enumerate() {
+        a *= if i == plan.first {
+            first
+        } else {
+            pigment::eval(d, p).rgb
+        };
+        if a == DVec3::ZERO {
+            return DVec3::ZERO;
+        }
+    }
+    a
 }
 
 /// The media whose sampling settings the whole stretch follows: the first one (measured:
@@ -126,7 +164,17 @@ pub fn transmittance(media: &[&[Media]], ray: &Ray, t0: f64, t1: f64) -> DVec3 {
             }
         }
     }
-    (-depth * (span * len / (3.0 * n as f64))).exp()
+    exp3(-depth * (span * len / (3.0 * n as f64)))
+}
+
+/// `v.exp()`, with one `exp` where the channels are equal (grey media): the same argument
+/// gives the same bits (±0 both give 1; NaN is never equal, so takes the three).
+fn exp3(v: DVec3) -> DVec3 {
+    if v.x == v.y && v.y == v.z {
+        DVec3::splat(v.x.exp())
+    } else {
+        v.exp()
+    }
 }
 
 impl<'a> Tracer<'a> {
@@ -215,6 +263,9 @@ impl<'a> Tracer<'a> {
                 let mut sigma = DVec3::ZERO;
                 let mut glow = DVec3::ZERO;
                 // Each density is evaluated once here, also for the lights' scattering below.
+                // The first scattering media stays out of the list (most samples meet one):
+                // no copy of its settings per sample.
+                let mut first: Option<(DVec3, &Scattering)> = None;
                 let mut scatter = std::mem::take(&mut ctx.media_scatter);
                 scatter.clear();
                 for m in media.iter().flat_map(|l| l.iter()) {
@@ -227,12 +278,16 @@ impl<'a> Tracer<'a> {
                     if let Some(sc) = &m.scattering {
                         sigma += sc.color * sc.extinction * rho;
                         if sc.color != DVec3::ZERO {
-                            scatter.push((rho, *sc));
+                            if first.is_none() {
+                                first = Some((rho, sc));
+                            } else {
+                                scatter.push((rho, *sc));
+                            }
                         }
                     }
                 }
-                if !scatter.is_empty() {
-                    glow += self.in_scattered(&scatter, &piece, p, dir, ctx);
+                if let Some(first) = first {
+                    glow += self.in_scattered(first, &scatter, &piece, p, dir, ctx);
                 }
                 ctx.media_scatter = scatter;
                 Sample { sigma, glow }
@@ -258,7 +313,7 @@ impl<'a> Tracer<'a> {
                     // asked once for it (the same argument gives the same bits).
                     let arg = -step.sigma * weight;
                     if arg != dimmed.0 {
-                        dimmed = (arg, arg.exp());
+                        dimmed = (arg, exp3(arg));
                     }
                     acc.kept *= dimmed.1;
                     left = right;
@@ -281,7 +336,8 @@ impl<'a> Tracer<'a> {
     /// scattering media's phase function, colour and density (`scatter`).
     fn in_scattered(
         &self,
-        scatter: &[(DVec3, Scattering)],
+        first: (DVec3, &Scattering),
+        rest: &[(DVec3, Scattering)],
         lights: &[usize],
         p: DVec3,
         dir: DVec3,
@@ -304,7 +360,9 @@ impl<'a> Tracer<'a> {
             }
             // The light travels along −l; the viewer lies along −dir.
             let cos = inc.l.dot(dir);
-            for (rho, s) in scatter {
+            let (rho, s) = first;
+            out += lc * s.color * rho * s.phase(cos);
+            for (rho, s) in rest {
                 out += lc * s.color * *rho * s.phase(cos);
             }
         }
@@ -390,5 +448,112 @@ fn refine<'a, F: FnMut(f64, &mut TraceCtx<'a>) -> Sample>(
     Sample {
         sigma: (x.sigma + y.sigma) * 0.5,
         glow: (x.glow + y.glow) * 0.5,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::color::Rgbft;
+    use crate::scene::desc::{Pigment, PigmentKind};
+    use crate::scene::media::DensityPlan;
+    use crate::scene::pattern::{Pattern, PatternKind};
+
+    fn mapped(kind: PatternKind, map: &[(f64, f64)]) -> Pigment {
+        let mut p = Pigment::solid(Rgbft::BLACK);
+        p.kind = PigmentKind::Mapped {
+            pattern: Box::new(Pattern::new(kind)),
+            map: map
+                .iter()
+                .map(|&(v, c)| (v, Rgbft::rgb(DVec3::new(c, 0.5 * c, -c))))
+                .collect(),
+        };
+        p.take_generator(2);
+        p
+    }
+
+    fn media(density: Vec<Pigment>) -> Media {
+        let mut m = Media {
+            absorption: DVec3::new(0.3, 0.2, 0.1),
+            density,
+            ..Media::default()
+        };
+        m.ready();
+        m
+    }
+
+    /// The plan's early ZERO stands only where the written product is ±0 in every channel,
+    /// and elsewhere gives the same bits; extinction sums are the same bits either way.
+    #[test]
+    fn density_cut_matches_the_full_product() {
+        let m = media(vec![
+            mapped(
+                PatternKind::Wrinkles,
+                &[(0.0, 0.0), (0.4, 0.0), (0.6, 1.0), (1.0, 2.0)],
+            ),
+            mapped(
+                PatternKind::Spherical,
+                &[(0.0, 0.0), (0.4, 1.0), (1.0, 1.0)],
+            ),
+            mapped(PatternKind::Bozo, &[(0.0, -1.0), (1.0, 1.0)]),
+        ]);
+        assert_eq!(
+            m.plan,
+            DensityPlan {
+                cut_on_zero: true,
+                first: 1
+            }
+        );
+        let mut plain = m.clone();
+        plain.plan = DensityPlan::default();
+        let mut cut = 0;
+        for i in 0..20_000u32 {
+            let f = |k: u32| ((i.wrapping_mul(k) % 1000) as f64 / 1000.0 - 0.5) * 3.0;
+            let p = DVec3::new(f(7919), f(104_729), f(15_485_863));
+            let (a, b) = (density(&m, p), density(&plain, p));
+            if a == DVec3::ZERO {
+                assert_eq!(b, DVec3::ZERO, "at {p}");
+                cut += 1;
+            } else {
+                assert_eq!(
+                    a.to_array().map(f64::to_bits),
+                    b.to_array().map(f64::to_bits)
+                );
+            }
+            let (x, y) = (
+                extinction_at(&[std::slice::from_ref(&m)], p),
+                extinction_at(&[std::slice::from_ref(&plain)], p),
+            );
+            assert_eq!(
+                x.to_array().map(f64::to_bits),
+                y.to_array().map(f64::to_bits)
+            );
+        }
+        assert!(cut > 1000, "{cut}");
+    }
+
+    /// A factor that may not be finite (a NaN or huge entry, an image) keeps the full product.
+    #[test]
+    fn density_plan_needs_finite_factors() {
+        let sphere = || mapped(PatternKind::Spherical, &[(0.0, 0.0), (1.0, 1.0)]);
+        for bad in [f64::NAN, 1e301, f64::INFINITY] {
+            let m = media(vec![
+                mapped(PatternKind::Bozo, &[(0.0, bad), (1.0, 1.0)]),
+                sphere(),
+            ]);
+            assert!(!m.plan.cut_on_zero);
+            let m = media(vec![
+                mapped(PatternKind::Bozo, &[(bad, 0.0), (1.0, 1.0)]),
+                sphere(),
+            ]);
+            assert!(!m.plan.cut_on_zero);
+        }
+        let mut m = media(vec![sphere(), sphere()]);
+        assert!(m.plan.cut_on_zero);
+        m.absorption = DVec3::new(f64::INFINITY, 0.0, 0.0);
+        m.ready();
+        assert!(!m.plan.cut_on_zero);
+        // One density alone has nothing to skip.
+        assert!(!media(vec![sphere()]).plan.cut_on_zero);
     }
 }

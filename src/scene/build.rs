@@ -325,8 +325,11 @@ impl Ctx {
 
     /// Media densities readied like any pigment (the scene's noise generator, images).
     fn ready_media(&mut self, media: &mut [Media]) {
-        for d in media.iter_mut().flat_map(|m| m.density.iter_mut()) {
-            self.pigment(d);
+        for m in media.iter_mut() {
+            for d in m.density.iter_mut() {
+                self.pigment(d);
+            }
+            m.ready();
         }
     }
 

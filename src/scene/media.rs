@@ -7,8 +7,10 @@
 
 use std::sync::{Arc, LazyLock};
 
+use crate::color::Rgbft;
 use crate::math::{DVec3, Transform};
-use crate::scene::desc::Pigment;
+use crate::scene::desc::{Pigment, PigmentKind};
+use crate::scene::pattern::PatternKind;
 
 #[derive(Clone, Debug)]
 pub struct Media {
@@ -24,6 +26,20 @@ pub struct Media {
     pub scattering: Option<Scattering>,
     /// `density { }` blocks, multiplied together; none is density 1 everywhere.
     pub density: Vec<Pigment>,
+    /// How the densities' product may be cut short (`Media::ready`).
+    pub plan: DensityPlan,
+}
+
+/// Where a density product may stop early: once one factor is zero in every channel, the
+/// product is ±0 in every channel when the other factors are finite, and ±0 densities add
+/// nothing anywhere they are used (render::media skips them, with finite coefficients).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct DensityPlan {
+    /// Every factor is provably finite and the media's coefficients are finite, so a zero
+    /// factor ends the product.
+    pub cut_on_zero: bool,
+    /// The factor looked at first (a cheap one; the product itself keeps the written order).
+    pub first: usize,
 }
 
 impl Default for Media {
@@ -41,6 +57,7 @@ impl Default for Media {
             emission: DVec3::ZERO,
             scattering: None,
             density: Vec::new(),
+            plan: DensityPlan::default(),
         }
     }
 }
@@ -84,6 +101,23 @@ impl Media {
         }
     }
 
+    /// Plans the density product once the densities are final (scene build).
+    pub fn ready(&mut self) {
+        let coefficients = [self.absorption, self.emission]
+            .into_iter()
+            .chain(self.scattering.map(|s| s.color * s.extinction))
+            .all(|v| v.is_finite());
+        let cut_on_zero =
+            self.density.len() > 1 && coefficients && self.density.iter().all(bounded);
+        // A factor cheaper than the first is looked at first where there is one.
+        let first = if cut_on_zero {
+            self.density.iter().position(cheap).unwrap_or(0)
+        } else {
+            0
+        };
+        self.plan = DensityPlan { cut_on_zero, first };
+    }
+
     /// Whether light crossing this media is dimmed (emission alone never is).
     pub fn extinguishes(&self) -> bool {
         self.absorption != DVec3::ZERO
@@ -96,6 +130,45 @@ impl Media {
     /// constant media, `samples` S behaves as S/2 + 1 equal steps (at least 2).
     pub fn steps(&self) -> u32 {
         self.samples.0.max(2) / 2 + 1
+    }
+}
+
+/// Whether a density's colour is finite wherever it is evaluated: a finite solid colour, or a
+/// colour map of finite entries, whose lookups are the entries or a blend a + (b − a)·t of
+/// two neighbours with t in [0, 1] (entries far from overflow, so b − a stays finite).
+fn bounded(p: &Pigment) -> bool {
+    const LIMIT: f64 = 1e300;
+    // Written so that NaN fails every test.
+    let small = |x: f64| x.abs() < LIMIT;
+    let colour = |c: &Rgbft| {
+        small(c.rgb.x) && small(c.rgb.y) && small(c.rgb.z) && small(c.filter) && small(c.transmit)
+    };
+    match &p.kind {
+        PigmentKind::Solid(c) => colour(c),
+        // Finite entry values too: the blend's t is (v − a)/(b − a).
+        PigmentKind::Mapped { map, .. } => map.iter().all(|(v, c)| small(*v) && colour(c)),
+        _ => false,
+    }
+}
+
+/// Whether a density's pattern costs a few arithmetic operations (no noise, no turbulence).
+fn cheap(p: &Pigment) -> bool {
+    match &p.kind {
+        PigmentKind::Solid(_) => true,
+        PigmentKind::Mapped { pattern, .. } => {
+            pattern.turbulence.is_none()
+                && pattern.warps.is_empty()
+                && matches!(
+                    pattern.kind,
+                    PatternKind::Gradient(..)
+                        | PatternKind::Onion
+                        | PatternKind::Spherical
+                        | PatternKind::Cylindrical
+                        | PatternKind::Boxed
+                        | PatternKind::Planar
+                )
+        }
+        _ => false,
     }
 }
 
