@@ -192,6 +192,11 @@ impl<'a> Tracer<'a> {
     /// mesh camera's rays averaged (none: black).
     pub fn trace_camera_at(&self, px: f64, py: f64, ctx: &mut TraceCtx<'a>) -> Seen {
         let cam = &self.scene.camera;
+        if cam.plain() && cam.mesh().is_none() && cam.lens().is_none() {
+            ctx.rad_local.clear();
+            let ray = cam.plain_ray(px, py);
+            return self.trace_seen(&ray, Path::CAMERA, ctx);
+        }
         let Some(mesh) = cam.mesh() else {
             if let Some(lens) = cam.lens() {
                 return super::focal::trace(self, cam, lens, px, py, ctx);
