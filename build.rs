@@ -5,5 +5,7 @@
 //! compiled position-independent), so are the pictures; only the command's load address is
 //! no longer randomised. The Python module (a shared library) is not affected.
 fn main() {
+    // Only this file decides the link flags: no rerun (and relink) when other files change.
+    println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rustc-link-arg-bin=lancer=-no-pie");
 }
