@@ -2,5 +2,5 @@
 //! error, 2 usage error. The work is `lancer::app::run`, shared with the Python module.
 
 fn main() -> std::process::ExitCode {
-    lancer::app::run(std::env::args().collect())
+    lancer::app::run_main(std::env::args().collect())
 }

@@ -15,6 +15,16 @@ mod render_cmd;
 
 /// Runs the `lancer` command with `args` (the program name first) and returns its exit code:
 /// 0 success, 1 scene or output error, 2 usage error.
+/// Set by `main`: the process is the `lancer` command, which exits after one `run`.
+static OWN_PROCESS: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// `run` as the `lancer` command's whole life: what it sets up for one render need not be
+/// undone for the next (see `render_cmd::render`).
+pub fn run_main(args: Vec<String>) -> ExitCode {
+    OWN_PROCESS.store(true, std::sync::atomic::Ordering::Relaxed);
+    run(args)
+}
+
 pub fn run(args: Vec<String>) -> ExitCode {
     // INI files on the command line become the switches they hold, where they stand.
     let mut ini_warnings = Vec::new();

@@ -18,6 +18,21 @@ pub fn render(job: Job, feed: Option<Feed>) -> ExitCode {
     for w in &job.warnings {
         eprintln!("warning: {w}");
     }
+    if job.threads == Some(1) && super::OWN_PROCESS.load(std::sync::atomic::Ordering::Relaxed) {
+        // One thread: this thread is the pool's only worker, so no thread is started and none
+        // spins waiting while the scene is parsed and written (a tenth of a one-pixel
+        // render's CPU time). The pool is left behind at exit (rayon cannot take a current
+        // thread back out of a pool), which is why only the `lancer` command does this, not
+        // the Python module that calls `run` again; any other thread (the +D window) still
+        // finds rayon's global pool.
+        if let Ok(pool) = rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .use_current_thread()
+            .build()
+        {
+            return pool.install(|| render_frames(job, feed));
+        }
+    }
     if let Some(n) = job.threads {
         if let Err(e) = rayon::ThreadPoolBuilder::new()
             .num_threads(n.max(1))
@@ -26,6 +41,11 @@ pub fn render(job: Job, feed: Option<Feed>) -> ExitCode {
             eprintln!("warning: cannot set the thread count: {e}");
         }
     }
+    render_frames(job, feed)
+}
+
+/// `render`'s frames, in whichever thread pool it chose.
+fn render_frames(job: Job, feed: Option<Feed>) -> ExitCode {
     let frames = match job.animation.frames(&job.output) {
         Ok(f) => f,
         Err(e) => {

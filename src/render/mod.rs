@@ -237,9 +237,7 @@ fn film_rows<'a>(
     let mut pixels: Vec<DVec3> = Vec::with_capacity(n);
     let mut alpha: Vec<f64> = Vec::with_capacity(if s.alpha { n } else { 0 });
     let rt = RowTracer::new(tracer, s, progress);
-    let trace_row = |ctx: &mut TraceCtx<'a>, ly: usize, out: &mut dyn FnMut(usize, Seen)| {
-        rt.row(ctx, rows.start + ly, out)
-    };
+    let y0 = rows.start;
     if w > 0 {
         let px_rows = pixels.spare_capacity_mut()[..n].par_chunks_mut(w);
         if s.alpha {
@@ -247,7 +245,7 @@ fn film_rows<'a>(
                 .zip(alpha.spare_capacity_mut()[..n].par_chunks_mut(w))
                 .enumerate()
                 .for_each_init(TraceCtx::default, |ctx, (ly, (prow, arow))| {
-                    trace_row(ctx, ly, &mut |x, seen| {
+                    rt.row(ctx, y0 + ly, |x, seen| {
                         prow[x].write(seen.rgb);
                         arow[x].write(1.0 - seen.clear);
                     });
@@ -256,13 +254,13 @@ fn film_rows<'a>(
             px_rows
                 .enumerate()
                 .for_each_init(TraceCtx::default, |ctx, (ly, prow)| {
-                    trace_row(ctx, ly, &mut |x, seen| {
+                    rt.row(ctx, y0 + ly, |x, seen| {
                         prow[x].write(seen.rgb);
                     });
                 });
         }
     }
-    // SAFETY: every row chunk of the first `n` elements was handed to `trace_row`, which
+    // SAFETY: every row chunk of the first `n` elements was handed to `RowTracer::row`, which
     // writes each of its `w` pixels (and alpha values, when kept) exactly once.
     unsafe {
         pixels.set_len(n);
@@ -300,7 +298,7 @@ fn first_pass_rows(
         .par_chunks_mut(w)
         .enumerate()
         .for_each_init(TraceCtx::default, |ctx, (ly, row)| {
-            rt.row(ctx, rows.start + ly, &mut |x, seen| row[x] = seen);
+            rt.row(ctx, rows.start + ly, |x, seen| row[x] = seen);
         });
     aa::Pass {
         samples,
@@ -343,7 +341,9 @@ impl<'t, 'a> RowTracer<'t, 'a> {
 
     /// Picture row `y` into `out(x, seen)`, left to right; pixels outside a partial render's
     /// window give `Seen::default()` untraced.
-    fn row(&self, ctx: &mut TraceCtx<'a>, y: usize, out: &mut dyn FnMut(usize, Seen)) {
+    /// Generic in `out`: a `dyn` call per pixel, and the film's store behind it, were a
+    /// few percent of a small scene.
+    fn row(&self, ctx: &mut TraceCtx<'a>, y: usize, mut out: impl FnMut(usize, Seen)) {
         let w = self.s.width as usize;
         let mut traced = 0;
         for x in 0..w {

@@ -135,6 +135,13 @@ fn grey(c: DVec3) -> f64 {
     0.297 * c.x + 0.589 * c.y + 0.114 * c.z
 }
 
+/// The sky's direction of a ray. Not inlined: inlined, the compiler computed its square root
+/// and division for every ray before looking at the layers, plain colours too (most skies).
+#[inline(never)]
+fn unit_sky(dir: DVec3) -> DVec3 {
+    dir.normalize_or_zero()
+}
+
 /// The direction a ray going `dir` takes through a surface with normal `nf` (facing the ray,
 /// `cos_i` = −dir·nf) from ior n1 into n2; None on total internal reflection.
 pub(super) fn refract(dir: DVec3, nf: DVec3, cos_i: f64, n1: f64, n2: f64) -> Option<DVec3> {
@@ -192,6 +199,11 @@ impl<'a> Tracer<'a> {
     /// mesh camera's rays averaged (none: black).
     pub fn trace_camera_at(&self, px: f64, py: f64, ctx: &mut TraceCtx<'a>) -> Seen {
         let cam = &self.scene.camera;
+        if cam.plain() && cam.mesh().is_none() && cam.lens().is_none() {
+            ctx.rad_local.clear();
+            let ray = cam.plain_ray(px, py);
+            return self.trace_seen(&ray, Path::CAMERA, ctx);
+        }
         let Some(mesh) = cam.mesh() else {
             if let Some(lens) = cam.lens() {
                 return super::focal::trace(self, cam, lens, px, py, ctx);
@@ -403,7 +415,7 @@ impl<'a> Tracer<'a> {
             for layer in &s.sky {
                 let c = match &layer.kind {
                     crate::scene::desc::PigmentKind::Solid(c) => *c,
-                    _ => pigment::eval(layer, *d.get_or_insert_with(|| dir.normalize_or_zero())),
+                    _ => pigment::eval(layer, *d.get_or_insert_with(|| unit_sky(dir))),
                 };
                 if s.legacy_sky_filter {
                     legacy.add(&c);

@@ -175,7 +175,7 @@ impl Parser {
         let file = if &*mode == "read" {
             let bytes = std::fs::read(&path)
                 .map_err(|e| self.error_at(span, format!("cannot read {}: {e}", path.display())))?;
-            let text = String::from_utf8_lossy(&bytes).into_owned();
+            let text = super::parser::utf8_text(bytes);
             let sid = self.sources.add(path.display().to_string(), text);
             let tokens = lex(self.sources.text(sid), sid).map_err(|e| {
                 let s = Span {

@@ -165,7 +165,7 @@ pub struct Parser {
     /// Warnings raised while reading a declaration, held back until the identifier is used: an
     /// include file declaring something lancer cannot render yet (shapes.inc's quadrics) must
     /// not warn in every scene that includes it. Interior mutability because `lookup` is `&self`.
-    deferred: RefCell<HashMap<Rc<str>, Vec<Diagnostic>>>,
+    deferred: RefCell<FxHashMap<Rc<str>, Vec<Diagnostic>>>,
     /// Deferred warnings whose identifier has been used, waiting to join `warnings`.
     released: RefCell<Vec<Diagnostic>>,
     /// Inside `( )`, where comparisons, logic and `? :` are read (see `parse_binary`).
@@ -383,7 +383,7 @@ impl Parser {
         })?;
         // Old scenes carry Latin-1 in comments; replacement characters outside comments and
         // strings are reported by the lexer as not being scene text.
-        let text = String::from_utf8_lossy(&bytes).into_owned();
+        let text = utf8_text(bytes);
         let id = self.sources.add(path.display().to_string(), text);
         let tokens = self.lex_file(id)?;
         self.file_cache.insert(
@@ -998,4 +998,10 @@ impl Parser {
         }
         Ok(())
     }
+}
+
+/// A file's bytes as text: valid UTF-8 as it is (no copy), anything else through
+/// `from_utf8_lossy`. Every include file took the lossy path's slower scan and a copy.
+pub(super) fn utf8_text(bytes: Vec<u8>) -> String {
+    String::from_utf8(bytes).unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned())
 }

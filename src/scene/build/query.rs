@@ -15,6 +15,11 @@ impl Scene {
         tmax: f64,
         scratch: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
+        // Nothing to hit (a scene of sky, background or fog only): no reciprocal of the
+        // direction, whose three divisions were a tenth of such a scene's time.
+        if self.unbounded.is_empty() && self.bounded.is_empty() {
+            return None;
+        }
         let mut best: Option<SurfaceHit<'a>> = None;
         let mut tmax = tmax;
         let inv_dir = crate::geom::bvh::ray_recip(ray);
