@@ -158,13 +158,14 @@ for entry in "${training[@]}"; do
   fi
 done
 echo "   $n renders in $((SECONDS - start)) s, $failed failed" >&2
-ls "$raw"/*.profraw >/dev/null 2>&1 || {
+ls "$raw"/lancer-*.profraw >/dev/null 2>&1 || {
   echo "build_pgo.sh: the training wrote no profiles" >&2
   exit 1
 }
 
 echo "== 3/4 merge ($profdata)" >&2
-"$profdata" merge -o "$merged" "$raw"/*.profraw
+# Only the renders: the build scripts and proc-macros of the instrumented build leave theirs too.
+"$profdata" merge -o "$merged" "$raw"/lancer-*.profraw
 
 echo "== 4/4 optimised build (target/pgo)" >&2
 cargo build --profile pgo --config "$(flags "\"-Cprofile-use=$merged\"")" >&2
