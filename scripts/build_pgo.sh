@@ -27,7 +27,8 @@ profdata=
 for c in "${LLVM_PROFDATA:-}" "llvm-profdata-$llvm_major" "/usr/lib/llvm-$llvm_major/bin/llvm-profdata" llvm-profdata; do
   [ -n "$c" ] && command -v "$c" >/dev/null 2>&1 || continue
   # The raw profile format changes between LLVM major versions: the tool must match rustc's.
-  v=$("$c" --version 2>/dev/null | sed -n 's/.*LLVM version \([0-9]*\).*/\1/p' | head -1)
+  # (Old versions have no top-level --version and fail it: no version, not this one.)
+  v=$({ "$c" --version 2>/dev/null || true; } | sed -n 's/.*LLVM version \([0-9]*\).*/\1/p' | head -1)
   if [ "$v" = "$llvm_major" ]; then
     profdata=$(command -v "$c")
     break
