@@ -8,33 +8,43 @@ use crate::scene::object::{Object, Scratch, SurfaceHit};
 use super::Scene;
 
 impl Scene {
-    /// Nearest crossing along the ray closer than `tmax`.
+    /// Nearest crossing along the ray closer than `tmax`; of crossings at the same distance,
+    /// the one of the object earliest in scene order (the lowest index in `objects`), so the
+    /// answer does not depend on the order in which the BVH offers objects.
     pub fn first_hit<'a>(
         &'a self,
         ray: &Ray,
         tmax: f64,
         scratch: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
-        let mut best: Option<SurfaceHit<'a>> = None;
+        let mut best: Option<(usize, SurfaceHit<'a>)> = None;
         let mut tmax = tmax;
         let inv_dir = crate::geom::bvh::ray_recip(ray);
+        // An object earlier than the best so far is asked up to the best distance inclusive
+        // (`next_up`: `first_hit` keeps crossings strictly below its limit), a later one
+        // strictly below it; the walk's limit stays the best distance, and it offers every
+        // box that starts at or before it.
+        let mut ask = |i: usize, tmax: &mut f64, best: &mut Option<(usize, SurfaceHit<'a>)>| {
+            let limit = match best {
+                Some((bi, _)) if i < *bi => tmax.next_up(),
+                _ => *tmax,
+            };
+            if let Some(h) = self.objects[i].first_hit(ray, limit, scratch) {
+                *tmax = h.t;
+                *best = Some((i, h));
+            }
+        };
         for (&i, cull) in self.unbounded.iter().zip(&self.unbounded_cull) {
             if cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none()) {
                 continue;
             }
-            if let Some(h) = self.objects[i].first_hit(ray, tmax, scratch) {
-                tmax = h.t;
-                best = Some(h);
-            }
+            ask(i, &mut tmax, &mut best);
         }
         self.bvh.traverse_inv(ray, inv_dir, tmax, |prim, tmax| {
-            if let Some(h) = self.objects[self.bounded[prim]].first_hit(ray, *tmax, scratch) {
-                *tmax = h.t;
-                best = Some(h);
-            }
+            ask(self.bounded[prim], tmax, &mut best);
             false
         });
-        best
+        best.map(|(_, h)| h)
     }
 
     /// Calls `f` for every object whose bounds the segment (0, tmax) may cross; `f` returns
