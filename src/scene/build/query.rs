@@ -40,7 +40,8 @@ impl Scene {
             }
             ask(i, &mut tmax, &mut best);
         }
-        self.bvh.traverse_inv(ray, inv_dir, tmax, |prim, tmax| {
+        // The tie rule makes the order irrelevant, so the wide tree's walk serves.
+        self.bvh.traverse_any_order(ray, inv_dir, tmax, |prim, tmax| {
             ask(self.bounded[prim], tmax, &mut best);
             false
         });
