@@ -250,10 +250,11 @@ impl ChildIndex {
             return true;
         }
         let mut found = false;
-        self.bvh.traverse_any_order(ray, ray_recip(ray), tmax, |i, _| {
-            found = f(i);
-            found
-        });
+        self.bvh
+            .traverse_any_order(ray, ray_recip(ray), tmax, |i, _| {
+                found = f(i);
+                found
+            });
         found
     }
 
@@ -262,10 +263,11 @@ impl ChildIndex {
     pub fn candidates(&self, ray: &Ray, tmax: f64, out: &mut Vec<u32>) {
         let start = out.len();
         out.extend_from_slice(&self.others);
-        self.bvh.traverse_any_order(ray, ray_recip(ray), tmax, |i, _| {
-            out.push(i as u32);
-            false
-        });
+        self.bvh
+            .traverse_any_order(ray, ray_recip(ray), tmax, |i, _| {
+                out.push(i as u32);
+                false
+            });
         out[start..].sort_unstable();
     }
 

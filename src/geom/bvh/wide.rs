@@ -154,26 +154,40 @@ impl Wide {
     #[inline]
     fn ray(&self, origin: DVec3, inv: DVec3) -> Option<WRay> {
         use std::arch::x86_64::_mm_set1_ps;
-        let fits = |o: f64, i: f64| {
-            o.abs() <= REACH && i.is_finite() && i.abs() >= TINY_INV && i.abs() <= REACH
-        };
-        if !(fits(origin.x, inv.x) && fits(origin.y, inv.y) && fits(origin.z, inv.z)) {
+        let a = inv.abs();
+        let fits = origin.abs().max_element() <= REACH
+            && a.min_element() >= TINY_INV
+            && a.max_element() <= REACH;
+        // NaN fails every comparison above but max_element/min_element skip it; `a` is checked
+        // for NaN (and so `inv` for NaN) here.
+        if !fits || a.is_nan_mask().any() || origin.is_nan_mask().any() {
             return None;
         }
         // The rounding of a face and of the origin to f32 (each within 2^-23 of its
         // magnitude) moves a slab distance by up to their sum times |inv|; twice more for the
         // relative errors this term adds to, and a floor for subnormal faces and products.
-        let slack = |k: usize| {
-            let s = (self.reach[k] + origin[k].abs() + 1e-30) * inv[k].abs() * (1.0 / (1u64 << 20) as f64) + 1e-30;
-            up32(s)
-        };
+        // The f64 value is at most 2e30 · 2^-20, so its f32 rounding needs a relative step up
+        // (next_up would do, but a multiplication keeps this straight-line code).
+        let reach = DVec3::from_array(self.reach);
+        let s = ((reach + origin.abs() + DVec3::splat(1e-30))
+            * inv.abs()
+            * (1.0 / (1u64 << 20) as f64)
+            + DVec3::splat(1e-30))
+            * (1.0 + 1e-6);
+        let o = origin.as_vec3();
+        let i = inv.as_vec3();
+        let s = s.as_vec3();
         // SAFETY: SSE is part of x86_64.
         unsafe {
             Some(WRay {
-                origin: [0, 1, 2].map(|k| _mm_set1_ps(origin[k] as f32)),
-                inv: [0, 1, 2].map(|k| _mm_set1_ps(inv[k] as f32)),
-                slack: [0, 1, 2].map(|k| _mm_set1_ps(slack(k))),
-                near: [0, 1, 2].map(|k| (inv[k] < 0.0) as usize),
+                origin: [_mm_set1_ps(o.x), _mm_set1_ps(o.y), _mm_set1_ps(o.z)],
+                inv: [_mm_set1_ps(i.x), _mm_set1_ps(i.y), _mm_set1_ps(i.z)],
+                slack: [_mm_set1_ps(s.x), _mm_set1_ps(s.y), _mm_set1_ps(s.z)],
+                near: [
+                    (inv.x < 0.0) as usize,
+                    (inv.y < 0.0) as usize,
+                    (inv.z < 0.0) as usize,
+                ],
             })
         }
     }
