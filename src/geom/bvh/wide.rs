@@ -226,6 +226,9 @@ impl Wide {
     /// perhaps a few more), nearer children first; `f` as for `Bvh::traverse`. False when the
     /// ray does not fit the f32 bound and nothing was visited.
     #[inline]
+    // The lane number picks from three arrays and the mask bit; an iterator over one of them
+    // says less.
+    #[allow(clippy::needless_range_loop)]
     pub(super) fn walk(
         &self,
         prims: &[u32],
