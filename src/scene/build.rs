@@ -138,7 +138,8 @@ fn build_from<O: std::borrow::Borrow<ObjectDesc>>(
         .iter()
         .map(|&i| crate::scene::cull::object_cull(&objects[i]))
         .collect();
-    let bvh = Bvh::build(&boxes);
+    let mut bvh = Bvh::build(&boxes);
+    bvh.widen();
     let mut sky = desc.sky_sphere.clone().unwrap_or_default();
     for p in &mut sky {
         ctx.pigment(p);

@@ -417,6 +417,7 @@ impl Bvh {
             nodes: g.nodes,
             prims: g.prims,
             finite,
+            wide: None,
         }
     }
 }
