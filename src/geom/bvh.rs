@@ -41,8 +41,6 @@ pub struct Bvh {
     /// Every node's box is finite, so a ray with a finite origin and finite, nonzero
     /// direction components never makes a NaN in the slab test (`Slabs2`).
     finite: bool,
-    /// The 4-wide f32 copy of the tree (`widen`), for the queries that take any order.
-    wide: Option<Box<wide::Wide>>,
 }
 
 /// `1.0 / ray.dir`, each component read on its own. Callers have usually just written the ray
@@ -187,7 +185,6 @@ impl Slabs2 {
 }
 
 mod build;
-mod wide;
 
 use build::{centroid, clamp_box, Builder};
 
@@ -231,41 +228,7 @@ impl Bvh {
             nodes,
             prims,
             finite,
-            wide: None,
         }
-    }
-
-    /// Adds the 4-wide f32 tree `traverse_any_order` walks (not on targets without SSE, and
-    /// not for a tree of one leaf or with infinite or huge boxes, which keep the binary walk).
-    pub fn widen(&mut self) {
-        if cfg!(target_arch = "x86_64") && self.finite && self.nodes.len() > 1 {
-            self.wide = wide::Wide::build(&self.nodes).map(Box::new);
-        }
-    }
-
-    /// Bytes held by the wide tree, if any.
-    pub fn wide_memory(&self) -> usize {
-        self.wide.as_ref().map_or(0, |w| w.memory())
-    }
-
-    /// Like `traverse_inv`, for callers whose answer does not depend on the order primitives
-    /// are offered in: with a wide tree (`widen`), its walk, which offers every primitive the
-    /// binary walk offers (the f32 boxes and distances are conservative), perhaps a few more,
-    /// in another order. Other rays and trees take the binary walk.
-    #[inline]
-    pub fn traverse_any_order(
-        &self,
-        ray: &Ray,
-        inv_dir: DVec3,
-        tmax: f64,
-        mut f: impl FnMut(usize, &mut f64) -> bool,
-    ) {
-        if let Some(w) = &self.wide {
-            if w.walk(&self.prims, ray.origin, inv_dir, tmax, &mut f) {
-                return;
-            }
-        }
-        self.traverse_inv(ray, inv_dir, tmax, f);
     }
 
     pub fn bounds(&self) -> Aabb {

@@ -138,8 +138,7 @@ fn build_from<O: std::borrow::Borrow<ObjectDesc>>(
         .iter()
         .map(|&i| crate::scene::cull::object_cull(&objects[i]))
         .collect();
-    let mut bvh = Bvh::build(&boxes);
-    bvh.widen();
+    let bvh = Bvh::build(&boxes);
     let mut sky = desc.sky_sphere.clone().unwrap_or_default();
     for p in &mut sky {
         ctx.pigment(p);

@@ -9,7 +9,7 @@
 //! Also here: a union's nearest crossing through its index, and the in-order scan of a small
 //! union's members that has none.
 
-use crate::geom::bvh::{ray_recip, Bvh};
+use crate::geom::bvh::Bvh;
 use crate::math::{Aabb, DVec3, Ray, Slabs};
 use crate::scene::desc::CsgOp;
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
@@ -193,11 +193,7 @@ impl ChildIndex {
             }
         }
         Some(Box::new(ChildIndex {
-            bvh: {
-                let mut bvh = Bvh::build(&boxes);
-                bvh.widen();
-                bvh
-            },
+            bvh: Bvh::build(&boxes),
             others,
             steps,
             starts,
@@ -236,9 +232,7 @@ impl ChildIndex {
         for &i in &self.others {
             f(i as usize, &mut t);
         }
-        // Every query here answers alike in any order (ties go to the earlier leaf, lists
-        // are sorted), so the wide tree's walk serves.
-        self.bvh.traverse_any_order(ray, ray_recip(ray), t, |i, t| {
+        self.bvh.traverse(ray, t, |i, t| {
             f(i, t);
             false
         });
@@ -250,11 +244,10 @@ impl ChildIndex {
             return true;
         }
         let mut found = false;
-        self.bvh
-            .traverse_any_order(ray, ray_recip(ray), tmax, |i, _| {
-                found = f(i);
-                found
-            });
+        self.bvh.traverse(ray, tmax, |i, _| {
+            found = f(i);
+            found
+        });
         found
     }
 
@@ -263,11 +256,10 @@ impl ChildIndex {
     pub fn candidates(&self, ray: &Ray, tmax: f64, out: &mut Vec<u32>) {
         let start = out.len();
         out.extend_from_slice(&self.others);
-        self.bvh
-            .traverse_any_order(ray, ray_recip(ray), tmax, |i, _| {
-                out.push(i as u32);
-                false
-            });
+        self.bvh.traverse(ray, tmax, |i, _| {
+            out.push(i as u32);
+            false
+        });
         out[start..].sort_unstable();
     }
 

@@ -417,7 +417,6 @@ impl Bvh {
             nodes: g.nodes,
             prims: g.prims,
             finite,
-            wide: None,
         }
     }
 }

@@ -8,13 +8,7 @@ use crate::scene::object::{Object, Scratch, SurfaceHit};
 use super::Scene;
 
 impl Scene {
-    /// Nearest crossing along the ray closer than `tmax`. Of crossings at the same distance,
-    /// an unbounded object's wins over a bounded one's (they are asked first, as they always
-    /// were), and within each kind the object earliest in scene order wins (the lowest index
-    /// in `objects`), so the answer does not depend on the order in which the BVH offers
-    /// objects. Measured against POV-Ray's pictures (docs/performance.md, bvh11): ties to the
-    /// later object lowered the SSIM of 13 sample scenes, ties to the earlier one whatever
-    /// its kind lowered objectmods/double_illuminate's (its boxes stand on the plane).
+    /// Nearest crossing along the ray closer than `tmax`.
     pub fn first_hit<'a>(
         &'a self,
         ray: &Ray,
@@ -26,40 +20,26 @@ impl Scene {
         if self.unbounded.is_empty() && self.bounded.is_empty() {
             return None;
         }
-        // (rank, hit): unbounded objects rank by their index, bounded ones after all of them.
-        let mut best: Option<(usize, SurfaceHit<'a>)> = None;
+        let mut best: Option<SurfaceHit<'a>> = None;
         let mut tmax = tmax;
         let inv_dir = crate::geom::bvh::ray_recip(ray);
-        // An object ranked before the best so far is asked up to the best distance inclusive
-        // (`next_up`: `first_hit` keeps crossings strictly below its limit), a later one
-        // strictly below it; the walk's limit stays the best distance, and it offers every
-        // box that starts at or before it.
-        let mut ask =
-            |i: usize, rank: usize, tmax: &mut f64, best: &mut Option<(usize, SurfaceHit<'a>)>| {
-                let limit = match best {
-                    Some((br, _)) if rank < *br => tmax.next_up(),
-                    _ => *tmax,
-                };
-                if let Some(h) = self.objects[i].first_hit(ray, limit, scratch) {
-                    *tmax = h.t;
-                    *best = Some((rank, h));
-                }
-            };
         for (&i, cull) in self.unbounded.iter().zip(&self.unbounded_cull) {
             if cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none()) {
                 continue;
             }
-            ask(i, i, &mut tmax, &mut best);
+            if let Some(h) = self.objects[i].first_hit(ray, tmax, scratch) {
+                tmax = h.t;
+                best = Some(h);
+            }
         }
-        let after = self.objects.len();
-        // The tie rule makes the order irrelevant, so the wide tree's walk serves.
-        self.bvh
-            .traverse_any_order(ray, inv_dir, tmax, |prim, tmax| {
-                let i = self.bounded[prim];
-                ask(i, after + i, tmax, &mut best);
-                false
-            });
-        best.map(|(_, h)| h)
+        self.bvh.traverse_inv(ray, inv_dir, tmax, |prim, tmax| {
+            if let Some(h) = self.objects[self.bounded[prim]].first_hit(ray, *tmax, scratch) {
+                *tmax = h.t;
+                best = Some(h);
+            }
+            false
+        });
+        best
     }
 
     /// Calls `f` for every object whose bounds the segment (0, tmax) may cross; `f` returns
