@@ -346,6 +346,9 @@ fn saving_the_scene_renders_it_again() {
     assert!(err.contains("scene.pov:4:"), "{err}");
     let green = SCENE.replace("<0.9, 0.3, 0.2>", "<0.1, 0.8, 0.2>");
     save(&green);
+    // The kept picture may report "refined" once more after the error: wait for the new
+    // parse first, or ctrl+s can land while it is still running (seen once on CI).
+    p.wait_for("lancer preview: a scene file changed");
     p.wait_for("lancer preview: refined");
     p.key("ctrl+s");
     p.wait_for("lancer preview: saved");
