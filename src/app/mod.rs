@@ -13,8 +13,6 @@ mod commands;
 pub mod povray_msgs;
 mod render_cmd;
 
-/// Runs the `lancer` command with `args` (the program name first) and returns its exit code:
-/// 0 success, 1 scene or output error, 2 usage error.
 /// Set by `main`: the process is the `lancer` command, which exits after one `run`.
 static OWN_PROCESS: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
 
@@ -25,6 +23,8 @@ pub fn run_main(args: Vec<String>) -> ExitCode {
     run(args)
 }
 
+/// Runs the `lancer` command with `args` (the program name first) and returns its exit code:
+/// 0 success, 1 scene or output error, 2 usage error.
 pub fn run(args: Vec<String>) -> ExitCode {
     // INI files on the command line become the switches they hold, where they stand.
     let mut ini_warnings = Vec::new();

@@ -282,10 +282,9 @@ impl Cache {
     /// adds (none at all in most small scenes) are tested directly, not through the grids:
     /// which of them are asked, and in what order, does not change whether one is valid.
     pub(super) fn any_valid(&self, p: DVec3, n: DVec3, bound: f64, from: usize) -> bool {
-        if self.foot.len() - from.min(self.foot.len()) <= FEW_NEW {
-            return self.foot[from.min(self.foot.len())..]
-                .iter()
-                .any(|s| weight(s, p, n, 1, bound).is_some());
+        let new = &self.foot[from.min(self.foot.len())..];
+        if new.len() <= FEW_NEW {
+            return new.iter().any(|s| weight(s, p, n, 1, bound).is_some());
         }
         let mut valid = false;
         self.near(p, bound, 1, from, |_, s| {
@@ -406,16 +405,21 @@ mod tests {
     use super::*;
     use crate::render::radiosity::mix;
 
+    /// Numbers in [0, 1) from `mix` chained from `seed`.
+    fn unit_rng(seed: u64) -> impl FnMut() -> f64 {
+        let mut h = seed;
+        move || {
+            h = mix(h);
+            (h >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
     /// The grids filed for a lowered bound, and filed again for the final one, list every
     /// sample whose reach covers a point, each once.
     #[test]
     fn near_finds_every_sample_in_reach() {
         let mut cache = Cache::default();
-        let mut h = 1u64;
-        let mut rnd = || {
-            h = mix(h);
-            (h >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rnd = unit_rng(1);
         for i in 0..400 {
             let p = DVec3::new(rnd(), rnd(), rnd()) * 10.0;
             cache.samples.push(Sample {
@@ -485,11 +489,7 @@ mod tests {
     #[test]
     fn any_valid_tests_every_new_sample() {
         let mut cache = Cache::with_pool(Vec::new(), 1);
-        let mut h = 7u64;
-        let mut rnd = || {
-            h = mix(h);
-            (h >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rnd = unit_rng(7);
         for i in 0..300 {
             let p = DVec3::new(rnd(), rnd(), rnd()) * 4.0;
             let n = DVec3::new(rnd() - 0.5, rnd() - 0.5, 1.0).normalize();

@@ -200,6 +200,7 @@ impl<'a> Tracer<'a> {
     pub fn trace_camera_at(&self, px: f64, py: f64, ctx: &mut TraceCtx<'a>) -> Seen {
         let cam = &self.scene.camera;
         if cam.plain() && cam.mesh().is_none() && cam.lens().is_none() {
+            // `trace_camera` without its `Option<Ray>`: see `Camera::plain_ray`.
             ctx.rad_local.clear();
             let ray = cam.plain_ray(px, py);
             return self.trace_seen(&ray, Path::CAMERA, ctx);
