@@ -48,18 +48,26 @@ impl Feed {
     /// batch render's.
     pub fn render(&self, scene: &Scene, s: &RenderSettings) -> Film {
         let photons = shoot_photons(scene);
-        with_view(scene, s, &Switches::of(s), photons.as_ref(), |view| {
-            let mut p = view.start();
-            for b in levels(16) {
-                view.level(&mut p, b, &|| false);
-                if b > 1 {
-                    self.show(view.preview_rgb8(&p), s.width, s.height);
+        let camera = crate::render::camera::Camera::of_scene(scene);
+        with_view(
+            scene,
+            &camera,
+            s,
+            &Switches::of(s),
+            photons.as_ref(),
+            |view| {
+                let mut p = view.start();
+                for b in levels(16) {
+                    view.level(&mut p, b, &|| false);
+                    if b > 1 {
+                        self.show(view.preview_rgb8(&p), s.width, s.height);
+                    }
                 }
-            }
-            let film = view.finish(p);
-            self.show(crate::output::to_rgb8(&film), s.width, s.height);
-            film
-        })
+                let film = view.finish(p);
+                self.show(crate::output::to_rgb8(&film), s.width, s.height);
+                film
+            },
+        )
     }
 }
 

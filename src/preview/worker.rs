@@ -175,7 +175,7 @@ pub fn run(job: Arc<Job>, shared: Arc<Shared>, repaint: Arc<dyn Fn() + Send + Sy
             // The size changed but the scene failed to load at it: show the old size.
             continue;
         }
-        l.scene.camera = match &wanted.pose {
+        let camera = match &wanted.pose {
             Some(p) => p.apply(&l.camera),
             None => l.camera.clone(),
         };
@@ -212,7 +212,7 @@ pub fn run(job: Arc<Job>, shared: Arc<Shared>, repaint: Arc<dyn Fn() + Send + Sy
             repaint();
         };
         let mut work = || {
-            progressive::with_view(scene, s, &wanted.switches, photons, |view| {
+            progressive::with_view(scene, &camera, s, &wanted.switches, photons, |view| {
                 let mut p = view.start();
                 for (i, b) in progressive::levels(first).enumerate() {
                     let t = Instant::now();
@@ -300,7 +300,7 @@ fn load(
     Ok((
         Loaded {
             key,
-            camera: scene.camera.clone(),
+            camera: Camera::of_scene(&scene),
             max_trace_level: scene.max_trace_level,
             scene,
             photons,

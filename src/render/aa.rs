@@ -294,6 +294,7 @@ fn mean(q: [Seen; 4]) -> Seen {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::render::camera::Camera;
     use crate::render::trace::Quality;
     use crate::render::Window;
     use crate::scene::build::{build, Scene};
@@ -332,13 +333,15 @@ mod tests {
     }
 
     fn run(scene: &Scene, s: &RenderSettings, threshold: f64) -> Pass {
-        let tracer = Tracer::new(scene, s.alpha, Quality::level(9));
+        let camera = Camera::of_scene(scene);
+        let tracer = Tracer::new(scene, &camera, s.alpha, Quality::level(9));
         method2(&tracer, s, threshold, &|_| {})
     }
 
     fn trace(scene: &Scene, sx: f64, sy: f64) -> Seen {
-        let tracer = Tracer::new(scene, false, Quality::level(9));
-        tracer.trace_camera(scene.camera.ray(sx, sy), &mut TraceCtx::default())
+        let camera = Camera::of_scene(scene);
+        let tracer = Tracer::new(scene, &camera, false, Quality::level(9));
+        tracer.trace_camera(camera.ray(sx, sy), &mut TraceCtx::default())
     }
 
     fn close(a: Seen, b: Seen) -> bool {
@@ -436,7 +439,8 @@ mod tests {
     #[test]
     fn alpha_counts_in_the_difference_only_with_alpha_on() {
         let flat = scene("background { rgb 0 }");
-        let tracer = Tracer::new(&flat, false, Quality::level(9));
+        let camera = Camera::of_scene(&flat);
+        let tracer = Tracer::new(&flat, &camera, false, Quality::level(9));
         let mut s = settings(3, 0.0);
         let clear = |c| Seen {
             rgb: DVec3::ZERO,

@@ -266,7 +266,8 @@ mod tests {
             aa_block: block,
             ..RenderSettings::default()
         };
-        let tracer = Tracer::new(scene, false, Quality::level(9));
+        let camera = crate::render::camera::Camera::of_scene(scene);
+        let tracer = Tracer::new(scene, &camera, false, Quality::level(9));
         let mut samples: Vec<Seen> = (0..32 * 32)
             .map(|i| {
                 let (x, y) = ((i % 32) as f64 + 0.5, (i / 32) as f64 + 0.5);

@@ -54,9 +54,10 @@ pub fn render_bands(
         "method 2 anti-aliasing is not rendered in bands"
     );
     let map = super::photons::PhotonMap::shoot(scene);
+    let camera = super::camera::Camera::of_scene(scene);
     let base = Tracer {
         photons: map.as_ref(),
-        ..Tracer::new(scene, s.alpha, Quality::level(s.quality))
+        ..Tracer::new(scene, &camera, s.alpha, Quality::level(s.quality))
     };
     let cache = super::radiosity::pretrace(scene, s, &base);
     let tracer = super::with_radiosity(&base, cache.as_ref());

@@ -82,6 +82,11 @@ impl Camera {
         }
     }
 
+    /// The camera of a built scene, for the picture size it was built for.
+    pub fn of_scene(scene: &crate::scene::build::Scene) -> Camera {
+        Camera::new(&scene.camera, scene.size.0, scene.size.1)
+    }
+
     pub fn new(d: &CameraDesc, width: u32, height: u32) -> Camera {
         let mut dir = d.direction;
         let mut right = d.right;

@@ -162,9 +162,10 @@ pub(crate) fn jitter_hash(x: u32, y: u32, i: u32) -> f64 {
 /// Renders the scene; `progress` is called once per finished row (from any thread).
 pub fn render(scene: &Scene, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)) -> Film {
     let map = photons::PhotonMap::shoot(scene);
+    let camera = camera::Camera::of_scene(scene);
     let base = Tracer {
         photons: map.as_ref(),
-        ..Tracer::new(scene, s.alpha, Quality::level(s.quality))
+        ..Tracer::new(scene, &camera, s.alpha, Quality::level(s.quality))
     };
     let cache = radiosity::pretrace(scene, s, &base);
     let tracer = with_radiosity(&base, cache.as_ref());

@@ -10,6 +10,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 
 use rayon::prelude::*;
 
+use super::camera::Camera;
 use super::photons::PhotonMap;
 use super::trace::{Quality, Seen, TraceCtx, Tracer};
 use super::{aa, aa1, film_of, radiosity, with_radiosity, Film, RenderSettings};
@@ -48,10 +49,11 @@ pub fn shoot_photons(scene: &Scene) -> Option<PhotonMap> {
     PhotonMap::shoot(scene)
 }
 
-/// Runs `f` on the view of `scene` (whose camera is the one to render) with `s` and `sw`;
-/// radiosity's pretrace, which depends on the camera, runs first when switched on.
+/// Runs `f` on the view of `scene` through `camera` with `s` and `sw`; radiosity's pretrace,
+/// which depends on the camera, runs first when switched on.
 pub fn with_view<R>(
     scene: &Scene,
+    camera: &Camera,
     s: &RenderSettings,
     sw: &Switches,
     photons: Option<&PhotonMap>,
@@ -59,7 +61,7 @@ pub fn with_view<R>(
 ) -> R {
     let base = Tracer {
         photons: photons.filter(|_| sw.photons),
-        ..Tracer::new(scene, s.alpha, sw.quality)
+        ..Tracer::new(scene, camera, s.alpha, sw.quality)
     };
     let cache = if sw.radiosity {
         radiosity::pretrace(scene, s, &base)
@@ -249,13 +251,20 @@ mod tests {
             };
             let sc = scene(text, s.width, s.height);
             let batch = crate::render::render(&sc, &s, &|_| {});
-            let film = with_view(&sc, &s, &Switches::of(&s), None, |v| {
-                let mut p = v.start();
-                for b in levels(8) {
-                    assert!(v.level(&mut p, b, &|| false));
-                }
-                v.finish(p)
-            });
+            let film = with_view(
+                &sc,
+                &Camera::of_scene(&sc),
+                &s,
+                &Switches::of(&s),
+                None,
+                |v| {
+                    let mut p = v.start();
+                    for b in levels(8) {
+                        assert!(v.level(&mut p, b, &|| false));
+                    }
+                    v.finish(p)
+                },
+            );
             assert_eq!(film.pixels, batch.pixels);
             assert_eq!(film.rays, batch.rays);
         }
@@ -275,31 +284,45 @@ mod tests {
             s.width,
             s.height,
         );
-        with_view(&sc, &s, &Switches::of(&s), None, |v| {
-            let mut p = v.start();
-            assert!(v.level(&mut p, 4, &|| false));
-            let coarse = v.preview_rgb8(&p);
-            for b in [2, 1] {
-                assert!(v.level(&mut p, b, &|| false));
-            }
-            let fine = v.preview_rgb8(&p);
-            for y in 0..11 {
-                for x in 0..21 {
-                    let (i, c) = ((y * 21 + x) * 3, ((y - y % 4) * 21 + x - x % 4) * 3);
-                    assert_eq!(coarse[i..i + 3], fine[c..c + 3], "pixel {x},{y}");
+        with_view(
+            &sc,
+            &Camera::of_scene(&sc),
+            &s,
+            &Switches::of(&s),
+            None,
+            |v| {
+                let mut p = v.start();
+                assert!(v.level(&mut p, 4, &|| false));
+                let coarse = v.preview_rgb8(&p);
+                for b in [2, 1] {
+                    assert!(v.level(&mut p, b, &|| false));
                 }
-            }
-        });
+                let fine = v.preview_rgb8(&p);
+                for y in 0..11 {
+                    for x in 0..21 {
+                        let (i, c) = ((y * 21 + x) * 3, ((y - y % 4) * 21 + x - x % 4) * 3);
+                        assert_eq!(coarse[i..i + 3], fine[c..c + 3], "pixel {x},{y}");
+                    }
+                }
+            },
+        );
     }
 
     #[test]
     fn cancelled_level_reports_it() {
         let s = RenderSettings::default();
         let sc = scene("sphere { 0, 1 pigment { rgb 1 } }", s.width, s.height);
-        with_view(&sc, &s, &Switches::of(&s), None, |v| {
-            let mut p = v.start();
-            assert!(!v.level(&mut p, 4, &|| true));
-            assert_eq!(p.block(), None);
-        });
+        with_view(
+            &sc,
+            &Camera::of_scene(&sc),
+            &s,
+            &Switches::of(&s),
+            None,
+            |v| {
+                let mut p = v.start();
+                assert!(!v.level(&mut p, 4, &|| true));
+                assert_eq!(p.block(), None);
+            },
+        );
     }
 }

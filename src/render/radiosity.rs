@@ -303,8 +303,8 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
     // trace's, which then need not trace it again (the same bytes). AA method 2 has no first
     // pass.
     let fold = finishing.last() == Some(&1.0)
-        && scene.camera.mesh().is_none()
-        && scene.camera.lens().is_none()
+        && base.camera.mesh().is_none()
+        && base.camera.lens().is_none()
         && !(s.antialias.is_some() && s.sampling_method == 2);
     let mut first: Vec<Option<Seen>> = if fold {
         vec![None; s.width as usize * s.height as usize]
@@ -359,7 +359,7 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
                         probe: !lit,
                         record: lit,
                         pool: &cache.pool,
-                        eye: scene.camera.location,
+                        eye: base.camera.location,
                     }),
                     ..base.clone()
                 };
@@ -378,7 +378,7 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
                         }
                         ctx.rad_local.clear();
                         ctx.rad_seen.clear();
-                        let ray = scene.camera.ray(x, y);
+                        let ray = base.camera.ray(x, y);
                         let seen = tracer.trace_pretrace(ray, ctx);
                         rays.fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
                         // Copied out, so the scratch keeps its buffers: most positions gather
@@ -487,7 +487,7 @@ pub fn final_tracer<'a>(
             probe: false,
             record: false,
             pool: &cache.pool,
-            eye: base.scene.camera.location,
+            eye: base.camera.location,
         }),
         ..base.clone()
     }

@@ -13,6 +13,7 @@ use crate::scene::desc::{Interior, Texture};
 use crate::scene::object::{Scratch, SurfaceHit};
 pub use crate::scene::scratch::LitBy;
 
+use super::camera::Camera;
 use super::{normal, pigment, texture_map};
 
 /// Per-thread scratch buffers so tracing allocates nothing per ray.
@@ -21,6 +22,7 @@ pub type TraceCtx<'a> = Scratch<'a>;
 #[derive(Clone)]
 pub struct Tracer<'a> {
     pub scene: &'a Scene,
+    pub camera: &'a Camera,
     /// Radiosity's cache and settings for this pass; None without radiosity.
     pub rad: Option<super::radiosity::RadTrace<'a>>,
     /// `+UA`: the output keeps the background's share of each pixel in an alpha channel.
@@ -168,9 +170,10 @@ pub fn fresnel(cos_i: f64, n1: f64, n2: f64) -> f64 {
 }
 
 impl<'a> Tracer<'a> {
-    pub fn new(scene: &'a Scene, alpha: bool, quality: Quality) -> Tracer<'a> {
+    pub fn new(scene: &'a Scene, camera: &'a Camera, alpha: bool, quality: Quality) -> Tracer<'a> {
         Tracer {
             scene,
+            camera,
             rad: None,
             alpha,
             quality,
@@ -198,7 +201,7 @@ impl<'a> Tracer<'a> {
     /// What the camera sees at image position (px, py): one ray through the projection, or a
     /// mesh camera's rays averaged (none: black).
     pub fn trace_camera_at(&self, px: f64, py: f64, ctx: &mut TraceCtx<'a>) -> Seen {
-        let cam = &self.scene.camera;
+        let cam = self.camera;
         if cam.plain() && cam.mesh().is_none() && cam.lens().is_none() {
             // `trace_camera` without its `Option<Ray>`: see `Camera::plain_ray`.
             ctx.rad_local.clear();

@@ -10,10 +10,9 @@ use crate::geom::bvh::Bvh;
 use crate::geom::text::TextData;
 use crate::geom::Shape;
 use crate::math::{Aabb, DVec3, Transform};
-use crate::render::camera::Camera;
 use crate::scene::desc::{
-    FogDesc, ImageMap, Interior, MeshData, ObjectDesc, Pigment, PigmentKind, RadiositySettings,
-    SceneDesc, ShapeDesc, Texture, TextureEntries,
+    CameraDesc, FogDesc, ImageMap, Interior, MeshData, ObjectDesc, Pigment, PigmentKind,
+    RadiositySettings, SceneDesc, ShapeDesc, Texture, TextureEntries,
 };
 use crate::scene::light_group::LightSet;
 use crate::scene::media::Media;
@@ -34,7 +33,11 @@ pub enum GammaMode {
 }
 
 pub struct Scene {
-    pub camera: Camera,
+    /// The camera as the scene describes it, for a picture of `size` pixels: the renderer
+    /// makes its rays (`render::camera::Camera::of_scene`), since a camera `normal` and a
+    /// focal-blur bokeh are patterns only the renderer evaluates.
+    pub camera: CameraDesc,
+    pub size: (u32, u32),
     pub lights: Vec<Light>,
     /// Which lights light which objects (`Object::light_set`); one entry when the scene has
     /// no `light_group`.
@@ -147,7 +150,8 @@ fn build_from<O: std::borrow::Borrow<ObjectDesc>>(
     ctx.ready_media(&mut media);
     let object_media = objects.iter().any(has_media);
     let mut scene = Scene {
-        camera: Camera::new(&desc.camera, width, height),
+        camera: desc.camera.clone(),
+        size: (width, height),
         lights: ctx.lights,
         light_sets: ctx.light_sets,
         objects,
