@@ -36,19 +36,19 @@ impl Diagonal {
         let c1 = (2.0 * ax + l0) * dir.x + (2.0 * ay + l1) * dir.y + (2.0 * az + l2) * dir.z;
         let c0 = (ax + l0) * origin.x + (ay + l1) * origin.y + (az + l2) * origin.z + self.k;
         let disc = c1 * c1 - 4.0 * c2 * c0;
-        // Most quadric tests that fail here are hits: the bounds only when it can pass.
-        if !(disc < 0.0) {
-            return false;
+        // Most quadric tests that fail here are hits: the bounds only when it can pass (NaN
+        // fails too).
+        disc < 0.0 && {
+            let (ax, ay, az) = (ax.abs(), ay.abs(), az.abs());
+            let (l0, l1, l2) = (l0.abs(), l1.abs(), l2.abs());
+            let (o, d) = (origin.abs(), dir.abs());
+            let m2 = a0.abs() * d.x * d.x + a1.abs() * d.y * d.y + a2.abs() * d.z * d.z;
+            let m1 = (2.0 * ax + l0) * d.x + (2.0 * ay + l1) * d.y + (2.0 * az + l2) * d.z;
+            let m0 = (ax + l0) * o.x + (ay + l1) * o.y + (az + l2) * o.z + self.k.abs();
+            let scale = m1 * m1 + 4.0 * m2 * m0;
+            let len2 = dir.length_squared();
+            disc < -1e-12 * scale && scale > 1e-150 && scale < 1e150 && len2 > 1e-50 && len2 < 1e50
         }
-        let (ax, ay, az) = (ax.abs(), ay.abs(), az.abs());
-        let (l0, l1, l2) = (l0.abs(), l1.abs(), l2.abs());
-        let (o, d) = (origin.abs(), dir.abs());
-        let m2 = a0.abs() * d.x * d.x + a1.abs() * d.y * d.y + a2.abs() * d.z * d.z;
-        let m1 = (2.0 * ax + l0) * d.x + (2.0 * ay + l1) * d.y + (2.0 * az + l2) * d.z;
-        let m0 = (ax + l0) * o.x + (ay + l1) * o.y + (az + l2) * o.z + self.k.abs();
-        let scale = m1 * m1 + 4.0 * m2 * m0;
-        let len2 = dir.length_squared();
-        disc < -1e-12 * scale && scale > 1e-150 && scale < 1e150 && len2 > 1e-50 && len2 < 1e50
     }
 }
 
