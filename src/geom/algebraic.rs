@@ -12,6 +12,9 @@ use crate::geom::poly::{
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
 
+mod quadric;
+use quadric::Diagonal;
+
 /// Highest order accepted (POV-Ray allows 35; the root finder handles this many).
 pub const MAX_ORDER: usize = MAX_DEGREE;
 
@@ -24,6 +27,8 @@ pub struct Algebraic {
     /// (powers of x, y, z; coefficient), zero coefficients left out.
     terms: Vec<([u8; 3], f64)>,
     sturm: bool,
+    /// The diagonal form of a quadric without cross terms, for its certified misses.
+    diagonal: Option<Diagonal>,
 }
 
 /// The terms of an order-`order` polynomial in POV-Ray's coefficient order: powers of x
@@ -78,11 +83,19 @@ impl Algebraic {
             .max()
             .unwrap_or(0)
             .max(order.min(MAX_ORDER));
-        Algebraic {
+        let mut a = Algebraic {
             order,
             terms,
             sturm,
-        }
+            diagonal: None,
+        };
+        // Each power once, so that the diagonal form holds every term.
+        let distinct = (1..a.terms.len()).all(|i| a.terms[..i].iter().all(|t| t.0 != a.terms[i].0));
+        a.diagonal = a
+            .diagonal_quadric()
+            .filter(|_| distinct && !a.sturm)
+            .map(|(sq, lin, k)| Diagonal { sq, lin, k });
+        a
     }
 
     pub fn value(&self, p: DVec3) -> f64 {
@@ -173,6 +186,17 @@ impl Algebraic {
     fn low_order_roots(&self, ray: &Ray) -> Option<([f64; 2], usize, f64)> {
         // `along_ray_lead` on three coefficients: the expansion for orders below 3 is
         // `along_unrolled::<3>`, whatever `along` would copy it into.
+        if let Some(q) = &self.diagonal {
+            if q.surely_misses(ray.origin, ray.dir) {
+                return None;
+            }
+        }
+        self.low_order_solved(ray)
+    }
+
+    /// `low_order_roots` without the certificate.
+    #[inline(always)]
+    fn low_order_solved(&self, ray: &Ray) -> Option<([f64; 2], usize, f64)> {
         let len = ray.dir.length();
         if !(len > 0.0 && len.is_finite()) || self.terms.is_empty() {
             return None;
