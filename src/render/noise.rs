@@ -115,6 +115,24 @@ pub fn dnoise(p: DVec3, _generator: u8) -> DVec3 {
     noise_lattice::vector(p)
 }
 
+/// `dnoise` at up to ten points, their lattice hash walks together (the same values).
+pub fn dnoise_many<const N: usize>(ps: &[DVec3; N], out: &mut [DVec3; N]) {
+    noise_lattice::vector_many(ps, out)
+}
+
+/// `noise(p, generator)` and `dnoise(p, generator)` from one lattice walk: for generators 1
+/// and 2 the scalar noise is the vector noise's first component, bit for bit (both sum the
+/// same corner terms in the same order).
+pub fn noise_and_dnoise(p: DVec3, generator: u8) -> (f64, DVec3) {
+    let d = noise_lattice::vector(p);
+    let v = match generator {
+        3 => return (noise(p, 3), d),
+        1 => (0.5 + d.x).clamp(0.0, 1.0),
+        _ => (GEN2_A + GEN2_B * (0.5 + d.x)).clamp(0.0, 1.0),
+    };
+    (v, d)
+}
+
 /// The displacement of turbulence: octaves of vector noise, each `lambda` times finer and
 /// `omega` times weaker than the one before. POV-Ray keeps lambda and omega in single
 /// precision (measured: vturbulence(2.7, 0.6, ...) matches only with both rounded to f32).
@@ -375,6 +393,22 @@ mod tests {
                         bits(ps.map(|p| turbulence(p, oct, om, la, g)))
                     );
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn noise_and_dnoise_together_are_each() {
+        for n in 0..5_000 {
+            let t = n as f64 * 0.173;
+            let p = DVec3::new(t.cos() * 90.0, t * 0.07 - 3.0, (t * 0.4).sin() * 15.0);
+            for g in [0, 1, 2, 3] {
+                let (v, d) = noise_and_dnoise(p, g);
+                assert_eq!(v.to_bits(), noise(p, g).to_bits());
+                assert_eq!(
+                    d.to_array().map(f64::to_bits),
+                    dnoise(p, g).to_array().map(f64::to_bits)
+                );
             }
         }
     }

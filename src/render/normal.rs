@@ -189,21 +189,26 @@ pub fn slope_height(map: &[(f64, f64, f64)], v: f64) -> f64 {
 /// Equals povray's normals to one 16-bit step for all three noise generators.
 fn dents(pat: &Pattern, lp: DVec3, ln: DVec3, amount: f64) -> DVec3 {
     let q = pattern::warped(pat, lp);
-    let gen = pat.noise_generator;
-    let v = noise::noise(q, gen);
-    ln + noise::dnoise(q, gen) * (amount * v * v * v)
+    let (v, d) = noise::noise_and_dnoise(q, pat.noise_generator);
+    ln + d * (amount * v * v * v)
 }
 
 /// Wrinkles: ten octaves of vector noise, each twice as fine and half as strong (equal to
 /// povray's normals to one 16-bit step, probe `normal_noise`).
 fn wrinkles(pat: &Pattern, lp: DVec3, ln: DVec3, amount: f64) -> DVec3 {
     let q = pattern::warped(pat, lp);
-    let gen = pat.noise_generator;
+    // The ten octaves' lattice walks together; the sum in the same order.
+    let mut scales = [1.0; 10];
+    let mut qs = [q; 10];
+    for k in 1..10 {
+        scales[k] = scales[k - 1] * 2.0;
+        qs[k] = q * scales[k];
+    }
+    let mut ds = [DVec3::ZERO; 10];
+    noise::dnoise_many(&qs, &mut ds);
     let mut sum = DVec3::ZERO;
-    let mut scale = 1.0;
-    for _ in 0..10 {
-        sum += noise::dnoise(q * scale, gen).abs() / scale;
-        scale *= 2.0;
+    for k in 0..10 {
+        sum += ds[k].abs() / scales[k];
     }
     ln + sum * amount
 }

@@ -151,6 +151,23 @@ pub fn may_reflect(tex: &Texture) -> bool {
     }
 }
 
+/// Whether any layer or part of `tex` takes light from light sources: a finish with diffuse,
+/// phong or specular not zero (`Tracer::layer_light` adds nothing per light otherwise). A
+/// sky dome's `finish { ambient 1 diffuse 0 }` does not, so its hits need no shadow rays.
+pub fn lit_by_lights(tex: &Texture) -> bool {
+    tex.layers().any(|t| {
+        let f = &t.finish;
+        f.diffuse != 0.0
+            || f.phong != 0.0
+            || f.specular != 0.0
+            || match t.pattern.as_deref().map(|tp| &tp.entries) {
+                None => false,
+                Some(TextureEntries::List(items)) => items.iter().any(lit_by_lights),
+                Some(TextureEntries::Map(map)) => map.iter().any(|(_, t)| lit_by_lights(t)),
+            }
+    })
+}
+
 /// Where a plain texture's pigment is evaluated: its uv point if it is uv-mapped.
 fn pigment_point(tex: &Texture, p: DVec3, uv: Option<DVec3>) -> DVec3 {
     match uv {

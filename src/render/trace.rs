@@ -472,6 +472,10 @@ impl<'a> Tracer<'a> {
             // A radiosity pretrace pass keeps the samples its camera rays gather, not their
             // colour: the lights of what they meet do not matter.
             ctx.lit.clear();
+        } else if !texture_map::lit_by_lights(top) {
+            // No layer would add anything per light (a sky dome's `diffuse 0`): no shadow
+            // rays. Nothing but `layer_light` reads the gathered lights.
+            ctx.lit.clear();
         } else {
             self.gather_lights(p, nf, bumpy, obj, path.rad_level > 0, ctx);
         }
