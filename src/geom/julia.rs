@@ -562,15 +562,28 @@ impl Julia {
                         }
                     }
                     let (mut a, mut c) = (tp, t);
+                    // Halving by halving, each midpoint's answer deciding the next bracket;
+                    // two midpoints are tested at once (`is_in2`): this one and the next one
+                    // should this answer keep the far end. That one counts only then, and
+                    // only where the loop would have gone on to it.
                     while c - a > BISECT_TOL {
                         let m = 0.5 * (a + c);
                         if m <= a || m >= c {
                             break;
                         }
-                        if self.is_in(o + u * m) == was_in {
-                            a = m;
-                        } else {
+                        let m2 = 0.5 * (m + c);
+                        let [in_m, in_m2] = self.is_in2([o + u * m, o + u * m2]);
+                        if in_m != was_in {
                             c = m;
+                            continue;
+                        }
+                        a = m;
+                        if c - a > BISECT_TOL && m2 > a && m2 < c {
+                            if in_m2 == was_in {
+                                a = m2;
+                            } else {
+                                c = m2;
+                            }
                         }
                     }
                     let hit = 0.5 * (a + c);
@@ -666,6 +679,9 @@ impl Shape for Julia {
         }
     }
 }
+
+#[path = "julia_pair.rs"]
+mod pair;
 
 #[cfg(test)]
 #[path = "julia_tests.rs"]
