@@ -546,8 +546,22 @@ impl Julia {
             prev = Some((t, false));
             t += step(&self.orbit(o + u * t));
         }
+        // After a least step the next one is likely least too (the march is near the
+        // surface), so the sample after this one is taken with it (`orbit2`) and kept for
+        // when the march arrives there: `t + min_step` is what `t += step` then gives.
+        let mut ahead: Option<(f64, Orbit)> = None;
+        let mut least = false;
         while t <= exit {
-            let orbit = self.orbit(o + u * t);
+            let orbit = match ahead.take() {
+                Some((ta, orbit)) if ta.to_bits() == t.to_bits() => orbit,
+                _ if least => {
+                    let tn = t + min_step;
+                    let [now, next] = self.orbit2([o + u * t, o + u * tn]);
+                    ahead = Some((tn, next));
+                    now
+                }
+                _ => self.orbit(o + u * t),
+            };
             let inside = matches!(orbit, Orbit::Inside);
             if let Some((tp, was_in)) = prev {
                 if was_in != inside {
@@ -596,7 +610,9 @@ impl Julia {
                 }
             }
             prev = Some((t, inside));
-            t += step(&orbit);
+            let st = step(&orbit);
+            least = st == min_step;
+            t += st;
         }
     }
 

@@ -187,7 +187,7 @@ impl Superellipsoid {
         u: DVec3,
         lo: f64,
         hi: f64,
-        out: &mut Vec<f64>,
+        out: &mut impl FnMut(f64),
         mut bracket: impl FnMut(f64, f64) -> Bracket,
         last: impl Fn(f64) -> bool,
     ) -> Option<bool> {
@@ -248,7 +248,7 @@ impl Superellipsoid {
                         Bracket::Refine => {
                             let (v0, v1) = (exact(s0, f0), exact(s1, f1));
                             let root = refine(&f, s0, v0, s1, v1);
-                            out.push(root);
+                            out(root);
                             if last(root) {
                                 return None;
                             }
@@ -305,14 +305,18 @@ impl Superellipsoid {
         // Increasing in `s` (a sum and a division by a positive number, each rounded
         // monotonically), so a root in `[s0, s1]` has its `t` in `[to_t(s0), to_t(s1)]`.
         let to_t = |s: f64| (s + lo) / len;
-        let mut s = Vec::new();
         let first_only = !matches!(want, Want::All);
-        let answer = self.crossings(
+        self.crossings(
             o,
             u,
             0.0,
             hi - lo,
-            &mut s,
+            &mut |s| {
+                let t = to_t(s);
+                if t > EPSILON {
+                    out.push(Hit::new(t));
+                }
+            },
             |s0, s1| match want {
                 Want::All => Bracket::Refine,
                 // The first root past EPSILON is the one asked for; beyond `tmax` it is none.
@@ -338,14 +342,7 @@ impl Superellipsoid {
                 }
             },
             |s| first_only && to_t(s) > EPSILON,
-        );
-        out.extend(
-            s.into_iter()
-                .map(to_t)
-                .filter(|&t| t > EPSILON)
-                .map(Hit::new),
-        );
-        answer
+        )
     }
 }
 
@@ -634,6 +631,36 @@ mod tests {
                 assert_eq!(want, got.map(|h| h.t.to_bits()), "{e} {n} {ray:?}");
             }
         }
+    }
+
+    /// `any_hit` answers as `intersect_first` does, also for rays leaving the surface (shadow
+    /// rays) and for `tmax` within a sample step of the crossing.
+    #[test]
+    fn any_hit_is_whether_there_is_a_first() {
+        let mut rng = crate::geom::test_rng::Lcg(7);
+        let mut hits = 0;
+        for (e, n) in [(0.3, 0.3), (1.0, 0.1), (1.0, 0.5), (2.0, 0.5), (3.0, 3.0), (1.0, 1.0)] {
+            let s = Superellipsoid::new(e, n);
+            for i in 0..3000 {
+                let o = rng.vec(3.0);
+                let d = rng.vec(1.0).normalize() * 1.3 - o * 0.2 * rng.next();
+                let mut ray = Ray::new(o, d);
+                // Every other ray starts on the surface, as a shadow ray does.
+                if i % 2 == 1 {
+                    if let Some(h) = s.intersect_first(&ray, f64::INFINITY, &mut Vec::new()) {
+                        ray = Ray::new(ray.at(h.t), rng.vec(1.0));
+                    }
+                }
+                let first = s.intersect_first(&ray, f64::INFINITY, &mut Vec::new());
+                let near = first.map_or(1.0, |h| h.t);
+                for tmax in [f64::INFINITY, near, near * (1.0 + 1e-9), near * 0.999, 0.5, 3.0] {
+                    let want = s.intersect_first(&ray, tmax, &mut Vec::new()).is_some();
+                    assert_eq!(s.any_hit(&ray, tmax, &mut Vec::new()), want, "{e} {n} {ray:?}");
+                    hits += want as usize;
+                }
+            }
+        }
+        assert!(hits > 5000, "{hits}");
     }
 
     #[test]
