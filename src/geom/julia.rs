@@ -183,6 +183,7 @@ struct Stop {
 }
 
 /// What the iteration says about a point.
+#[derive(Clone, Copy)]
 enum Orbit {
     Inside,
     /// Outside, with |h_n| and |h_n'|: the distance estimate is ln|h_n| / |h_n'| (`ln r / 1`
@@ -547,8 +548,9 @@ impl Julia {
             t += step(&self.orbit(o + u * t));
         }
         // After a least step the next one is likely least too (the march is near the
-        // surface), so the sample after this one is taken with it (`orbit2`) and kept for
-        // when the march arrives there: `t + min_step` is what `t += step` then gives.
+        // surface), so the sample after this one is taken with it (`orbit_n`) and kept for
+        // when the march arrives there: `t + min_step` is what `t += step` then gives. (Three
+        // samples ahead measured the same as one: fractal1 170.9/169.7 ms against 170.1/169.1.)
         let mut ahead: Option<(f64, Orbit)> = None;
         let mut least = false;
         while t <= exit {
@@ -556,7 +558,7 @@ impl Julia {
                 Some((ta, orbit)) if ta.to_bits() == t.to_bits() => orbit,
                 _ if least => {
                     let tn = t + min_step;
-                    let [now, next] = self.orbit2([o + u * t, o + u * tn]);
+                    let [now, next] = self.orbit_n([o + u * t, o + u * tn]);
                     ahead = Some((tn, next));
                     now
                 }
@@ -576,28 +578,35 @@ impl Julia {
                         }
                     }
                     let (mut a, mut c) = (tp, t);
-                    // Halving by halving, each midpoint's answer deciding the next bracket;
-                    // two midpoints are tested at once (`is_in2`): this one and the next one
-                    // should this answer keep the far end. That one counts only then, and
-                    // only where the loop would have gone on to it.
+                    // Halving by halving, each midpoint's answer deciding the next bracket.
+                    // Midpoints are tested four at a time (`is_in_n`): this one, both
+                    // midpoints that can follow it, and the one after the right one; a
+                    // midpoint found among them takes its answer from there.
+                    let mut known = [(0.0f64, false); 4];
+                    let mut n_known = 0;
                     while c - a > BISECT_TOL {
                         let m = 0.5 * (a + c);
                         if m <= a || m >= c {
                             break;
                         }
-                        let m2 = 0.5 * (m + c);
-                        let [in_m, in_m2] = self.is_in2([o + u * m, o + u * m2]);
-                        if in_m != was_in {
-                            c = m;
-                            continue;
-                        }
-                        a = m;
-                        if c - a > BISECT_TOL && m2 > a && m2 < c {
-                            if in_m2 == was_in {
-                                a = m2;
-                            } else {
-                                c = m2;
+                        let inside = match known[..n_known]
+                            .iter()
+                            .find(|k| k.0.to_bits() == m.to_bits())
+                        {
+                            Some(k) => k.1,
+                            None => {
+                                let mr = 0.5 * (m + c);
+                                let ts = [m, 0.5 * (a + m), mr, 0.5 * (mr + c)];
+                                let ins = self.is_in_n(ts.map(|s| o + u * s));
+                                known = std::array::from_fn(|i| (ts[i], ins[i]));
+                                n_known = 4;
+                                ins[0]
                             }
+                        };
+                        if inside == was_in {
+                            a = m;
+                        } else {
+                            c = m;
                         }
                     }
                     let hit = 0.5 * (a + c);

@@ -1,54 +1,62 @@
-//! Two quaternion orbits at once, for the julia bisection and march.
+//! Quaternion orbits side by side, for the julia bisection (four midpoints at a time) and
+//! march (a sample and the one after a least step).
 //!
 //! A quaternion orbit is one dependent chain (each iterate waits for the last), so a lone
-//! orbit leaves most of the floating-point units idle. Two orbits run side by side here, each
-//! lane doing exactly the operations of `Julia::quaternion_orbit` in the same order (the same
+//! orbit leaves most of the floating-point units idle. Here `N` orbits run in lanes, each lane
+//! doing exactly the operations of `Julia::quaternion_orbit` in the same order (the same
 //! products and sums, no fused multiply-add, no reassociation), so each lane's answer is the
-//! lone orbit's to the bit. The lanes run in lockstep until both have decided.
+//! lone orbit's to the bit. The lanes run in lockstep until all have decided; a lane that has
+//! decided goes on iterating unread (an escaped one may overflow, harmlessly).
 
-use super::{qnorm, qnorm_sq, Julia, JuliaFn, Orbit, Q, KEEP};
+use super::{qnorm, qnorm_sq, Julia, JuliaFn, Orbit, KEEP, Q};
 use crate::math::DVec3;
 
-/// Two numbers, one per lane; the element-wise operations vectorise to SSE2.
+/// One number per lane; the element-wise operations vectorise to SSE2.
 #[derive(Clone, Copy)]
-struct V2([f64; 2]);
+struct V<const N: usize>([f64; N]);
 
-impl std::ops::Add for V2 {
-    type Output = V2;
+impl<const N: usize> V<N> {
     #[inline(always)]
-    fn add(self, o: V2) -> V2 {
-        V2([self.0[0] + o.0[0], self.0[1] + o.0[1]])
+    fn sqrt(self) -> Self {
+        V(self.0.map(f64::sqrt))
+    }
+
+    #[inline(always)]
+    fn splat(x: f64) -> Self {
+        V([x; N])
     }
 }
 
-impl V2 {
+impl<const N: usize> std::ops::Add for V<N> {
+    type Output = Self;
     #[inline(always)]
-    fn sqrt(self) -> V2 {
-        V2([self.0[0].sqrt(), self.0[1].sqrt()])
+    fn add(self, o: Self) -> Self {
+        V(std::array::from_fn(|i| self.0[i] + o.0[i]))
     }
 }
 
-impl std::ops::Sub for V2 {
-    type Output = V2;
+impl<const N: usize> std::ops::Sub for V<N> {
+    type Output = Self;
     #[inline(always)]
-    fn sub(self, o: V2) -> V2 {
-        V2([self.0[0] - o.0[0], self.0[1] - o.0[1]])
+    fn sub(self, o: Self) -> Self {
+        V(std::array::from_fn(|i| self.0[i] - o.0[i]))
     }
 }
 
-impl std::ops::Mul for V2 {
-    type Output = V2;
+impl<const N: usize> std::ops::Mul for V<N> {
+    type Output = Self;
     #[inline(always)]
-    fn mul(self, o: V2) -> V2 {
-        V2([self.0[0] * o.0[0], self.0[1] * o.0[1]])
+    fn mul(self, o: Self) -> Self {
+        V(std::array::from_fn(|i| self.0[i] * o.0[i]))
     }
 }
 
-type Q2 = [V2; 4];
+/// A quaternion per lane.
+type QN<const N: usize> = [V<N>; 4];
 
 /// `qmul` lane by lane, with its association.
 #[inline(always)]
-fn qmul2(p: &Q2, q: &Q2) -> Q2 {
+fn qmul_n<const N: usize>(p: &QN<N>, q: &QN<N>) -> QN<N> {
     [
         p[0] * q[0] - p[1] * q[1] - p[2] * q[2] - p[3] * q[3],
         p[0] * q[1] + p[1] * q[0] + p[2] * q[3] - p[3] * q[2],
@@ -59,66 +67,70 @@ fn qmul2(p: &Q2, q: &Q2) -> Q2 {
 
 /// `qnorm_sq` lane by lane.
 #[inline(always)]
-fn qnorm_sq2(h: &Q2) -> V2 {
+fn qnorm_sq_n<const N: usize>(h: &QN<N>) -> V<N> {
     h[0] * h[0] + h[1] * h[1] + h[2] * h[2] + h[3] * h[3]
 }
 
+/// Lane bits of a lane-wise test.
+#[inline(always)]
+fn bits<const N: usize>(b: [bool; N]) -> u32 {
+    b.iter()
+        .enumerate()
+        .fold(0, |m, (i, &x)| m | (x as u32) << i)
+}
+
 impl Julia {
-    /// `[self.is_in(p[0]), self.is_in(p[1])]`, the two orbits run side by side where they are
-    /// quaternion ones.
-    pub(super) fn is_in2(&self, p: [DVec3; 2]) -> [bool; 2] {
+    /// `p.map(|p| self.is_in(p))`, the orbits run side by side where they are quaternion
+    /// ones.
+    pub(super) fn is_in_n<const N: usize>(&self, p: [DVec3; N]) -> [bool; N] {
         match self.algebra {
             super::Algebra::Quaternion if self.func == JuliaFn::Cube => {
-                self.inside2::<true>([self.lift(p[0]).0, self.lift(p[1]).0])
+                self.inside_n::<N, true>(p.map(|p| self.lift(p).0))
             }
-            super::Algebra::Quaternion => {
-                self.inside2::<false>([self.lift(p[0]).0, self.lift(p[1]).0])
-            }
-            super::Algebra::Hypercomplex => [self.is_in(p[0]), self.is_in(p[1])],
+            super::Algebra::Quaternion => self.inside_n::<N, false>(p.map(|p| self.lift(p).0)),
+            super::Algebra::Hypercomplex => p.map(|p| self.is_in(p)),
         }
     }
 
-    /// `[self.orbit(p[0]), self.orbit(p[1])]`, the two orbits run side by side where they
-    /// are quaternion ones.
-    pub(super) fn orbit2(&self, p: [DVec3; 2]) -> [Orbit; 2] {
+    /// `p.map(|p| self.orbit(p))`, the orbits run side by side where they are quaternion
+    /// ones.
+    pub(super) fn orbit_n<const N: usize>(&self, p: [DVec3; N]) -> [Orbit; N] {
         match self.algebra {
             super::Algebra::Quaternion if self.func == JuliaFn::Cube => {
-                self.orbits2::<true>([self.lift(p[0]).0, self.lift(p[1]).0])
+                self.orbits_n::<N, true>(p.map(|p| self.lift(p).0))
             }
-            super::Algebra::Quaternion => {
-                self.orbits2::<false>([self.lift(p[0]).0, self.lift(p[1]).0])
-            }
-            super::Algebra::Hypercomplex => [self.orbit(p[0]), self.orbit(p[1])],
+            super::Algebra::Quaternion => self.orbits_n::<N, false>(p.map(|p| self.lift(p).0)),
+            super::Algebra::Hypercomplex => p.map(|p| self.orbit(p)),
         }
     }
 
-    /// `quaternion_orbit::<CUBE, true>` of two points.
+    /// `quaternion_orbit::<CUBE, true>` of `N` points.
     #[inline(always)]
-    fn orbits2<const CUBE: bool>(&self, h: [Q; 2]) -> [Orbit; 2] {
+    fn orbits_n<const N: usize, const CUBE: bool>(&self, h: [Q; N]) -> [Orbit; N] {
         let steps = self.max_iteration.saturating_sub(1);
         let bail = self.bailout;
-        let bits = |b: [bool; 2]| b[0] as u32 | (b[1] as u32) << 1;
-        let mut r = V2([qnorm(&h[0]), qnorm(&h[1])]);
-        let mut dr = V2([1.0, 1.0]);
+        let all = (1u32 << N) - 1;
+        let mut r = V(h.map(|h| qnorm(&h)));
+        let mut dr = V::<N>::splat(1.0);
         // Per lane, the `r` and `dr` of its escape (`out`'s bits) once `decided`.
-        let mut found = [(r.0[0], 1.0), (r.0[1], 1.0)];
-        let mut out = bits([r.0[0] > bail, r.0[1] > bail]);
+        let mut found = r.0.map(|r| (r, 1.0));
+        let mut out = bits(r.0.map(|r| r > bail));
         let mut decided = out;
-        if decided != 3 {
-            let mut h: Q2 = std::array::from_fn(|i| V2([h[0][i], h[1][i]]));
-            let c: Q2 = self.param.map(|x| V2([x, x]));
-            let (two, three) = (V2([2.0, 2.0]), V2([3.0, 3.0]));
+        if decided != all {
+            let mut h: QN<N> = std::array::from_fn(|i| V(h.map(|h| h[i])));
+            let c: QN<N> = self.param.map(V::splat);
+            let (two, three) = (V::splat(2.0), V::splat(3.0));
             for k in 0..steps {
-                let h2 = qmul2(&h, &h);
-                let f = if CUBE { qmul2(&h, &h2) } else { h2 };
+                let h2 = qmul_n(&h, &h);
+                let f = if CUBE { qmul_n(&h, &h2) } else { h2 };
                 h = std::array::from_fn(|i| f[i] + c[i]);
                 dr = dr * if CUBE { three * r * r } else { two * r };
-                r = qnorm_sq2(&h).sqrt();
-                let esc = bits([r.0[0] > bail, r.0[1] > bail]);
+                r = qnorm_sq_n(&h).sqrt();
+                let esc = bits(r.0.map(|r| r > bail));
                 let left = (steps - 1 - k) as usize;
                 let kept = if left < KEEP {
                     let q = self.keep[left];
-                    bits([r.0[0] <= q, r.0[1] <= q])
+                    bits(r.0.map(|r| r <= q))
                 } else {
                     0
                 };
@@ -132,7 +144,7 @@ impl Julia {
                     out |= new;
                 }
                 decided |= esc | kept;
-                if decided == 3 {
+                if decided == all {
                     break;
                 }
             }
@@ -149,39 +161,39 @@ impl Julia {
         })
     }
 
-    /// `quaternion_orbit::<CUBE, false>` of two points, as inside-ness.
+    /// `quaternion_orbit::<CUBE, false>` of `N` points, as inside-ness.
     #[inline(always)]
-    fn inside2<const CUBE: bool>(&self, h: [Q; 2]) -> [bool; 2] {
+    fn inside_n<const N: usize, const CUBE: bool>(&self, h: [Q; N]) -> [bool; N] {
         let steps = self.max_iteration.saturating_sub(1);
         let bail_sq = self.bail_sq;
+        let all = (1u32 << N) - 1;
         // Lane bits: `decided` once a lane's lone orbit would have returned, `out` where it
         // returned outside (an escape; the kept radius answers inside).
-        let bits = |b: [bool; 2]| b[0] as u32 | (b[1] as u32) << 1;
-        let mut out = bits([qnorm_sq(&h[0]) > bail_sq, qnorm_sq(&h[1]) > bail_sq]);
+        let mut out = bits(h.map(|h| qnorm_sq(&h) > bail_sq));
         let mut decided = out;
-        if decided != 3 {
-            let mut h: Q2 = std::array::from_fn(|i| V2([h[0][i], h[1][i]]));
-            let c: Q2 = self.param.map(|x| V2([x, x]));
+        if decided != all {
+            let mut h: QN<N> = std::array::from_fn(|i| V(h.map(|h| h[i])));
+            let c: QN<N> = self.param.map(V::splat);
             for k in 0..steps {
-                let h2 = qmul2(&h, &h);
-                let f = if CUBE { qmul2(&h, &h2) } else { h2 };
+                let h2 = qmul_n(&h, &h);
+                let f = if CUBE { qmul_n(&h, &h2) } else { h2 };
                 h = std::array::from_fn(|i| f[i] + c[i]);
-                let s = qnorm_sq2(&h).0;
-                let esc = bits([s[0] > bail_sq, s[1] > bail_sq]);
+                let s = qnorm_sq_n(&h).0;
+                let esc = bits(s.map(|s| s > bail_sq));
                 let left = (steps - 1 - k) as usize;
                 let kept = if left < KEEP {
                     let r = self.keep_sq[left];
-                    bits([s[0] <= r, s[1] <= r])
+                    bits(s.map(|s| s <= r))
                 } else {
                     0
                 };
                 out |= esc & !decided;
                 decided |= esc | kept;
-                if decided == 3 {
+                if decided == all {
                     break;
                 }
             }
         }
-        [out & 1 == 0, out & 2 == 0]
+        std::array::from_fn(|i| out >> i & 1 == 0)
     }
 }

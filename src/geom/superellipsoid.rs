@@ -639,7 +639,14 @@ mod tests {
     fn any_hit_is_whether_there_is_a_first() {
         let mut rng = crate::geom::test_rng::Lcg(7);
         let mut hits = 0;
-        for (e, n) in [(0.3, 0.3), (1.0, 0.1), (1.0, 0.5), (2.0, 0.5), (3.0, 3.0), (1.0, 1.0)] {
+        for (e, n) in [
+            (0.3, 0.3),
+            (1.0, 0.1),
+            (1.0, 0.5),
+            (2.0, 0.5),
+            (3.0, 3.0),
+            (1.0, 1.0),
+        ] {
             let s = Superellipsoid::new(e, n);
             for i in 0..3000 {
                 let o = rng.vec(3.0);
@@ -653,9 +660,20 @@ mod tests {
                 }
                 let first = s.intersect_first(&ray, f64::INFINITY, &mut Vec::new());
                 let near = first.map_or(1.0, |h| h.t);
-                for tmax in [f64::INFINITY, near, near * (1.0 + 1e-9), near * 0.999, 0.5, 3.0] {
+                for tmax in [
+                    f64::INFINITY,
+                    near,
+                    near * (1.0 + 1e-9),
+                    near * 0.999,
+                    0.5,
+                    3.0,
+                ] {
                     let want = s.intersect_first(&ray, tmax, &mut Vec::new()).is_some();
-                    assert_eq!(s.any_hit(&ray, tmax, &mut Vec::new()), want, "{e} {n} {ray:?}");
+                    assert_eq!(
+                        s.any_hit(&ray, tmax, &mut Vec::new()),
+                        want,
+                        "{e} {n} {ray:?}"
+                    );
                     hits += want as usize;
                 }
             }
