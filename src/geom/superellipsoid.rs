@@ -177,7 +177,7 @@ impl Superellipsoid {
         Field::Value(xy + zc - 1.0)
     }
 
-    /// Crossings as distances along the unit direction `u` from `o`, within `[lo, hi]`,
+    /// Crossings as distances along the unit direction `u` from `o`, within `[0, hi]`,
     /// increasing. Each change of sign between samples `s0 < s1` is first put to `bracket`
     /// (the root lies in `[s0, s1]`): refined, passed over, or the end of the search with
     /// its answer; the search also stops after the first root `last` accepts.
@@ -185,12 +185,12 @@ impl Superellipsoid {
         &self,
         o: DVec3,
         u: DVec3,
-        lo: f64,
         hi: f64,
         out: &mut impl FnMut(f64),
         mut bracket: impl FnMut(f64, f64) -> Bracket,
         last: impl Fn(f64) -> bool,
     ) -> Option<bool> {
+        let lo = 0.0;
         // Breakpoints: where the ray meets each plane n·p = 0.
         const PLANES: [[f64; 3]; 9] = [
             [1.0, 0.0, 0.0],
@@ -309,7 +309,6 @@ impl Superellipsoid {
         self.crossings(
             o,
             u,
-            0.0,
             hi - lo,
             &mut |s| {
                 let t = to_t(s);
