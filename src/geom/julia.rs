@@ -183,6 +183,7 @@ struct Stop {
 }
 
 /// What the iteration says about a point.
+#[derive(Clone, Copy)]
 enum Orbit {
     Inside,
     /// Outside, with |h_n| and |h_n'|: the distance estimate is ln|h_n| / |h_n'| (`ln r / 1`
@@ -546,8 +547,23 @@ impl Julia {
             prev = Some((t, false));
             t += step(&self.orbit(o + u * t));
         }
+        // After a least step the next one is likely least too (the march is near the
+        // surface), so the sample after this one is taken with it (`orbit_n`) and kept for
+        // when the march arrives there: `t + min_step` is what `t += step` then gives. (Three
+        // samples ahead measured the same as one: fractal1 170.9/169.7 ms against 170.1/169.1.)
+        let mut ahead: Option<(f64, Orbit)> = None;
+        let mut least = false;
         while t <= exit {
-            let orbit = self.orbit(o + u * t);
+            let orbit = match ahead.take() {
+                Some((ta, orbit)) if ta.to_bits() == t.to_bits() => orbit,
+                _ if least => {
+                    let tn = t + min_step;
+                    let [now, next] = self.orbit_n([o + u * t, o + u * tn]);
+                    ahead = Some((tn, next));
+                    now
+                }
+                _ => self.orbit(o + u * t),
+            };
             let inside = matches!(orbit, Orbit::Inside);
             if let Some((tp, was_in)) = prev {
                 if was_in != inside {
@@ -562,12 +578,32 @@ impl Julia {
                         }
                     }
                     let (mut a, mut c) = (tp, t);
+                    // Halving by halving, each midpoint's answer deciding the next bracket.
+                    // Midpoints are tested four at a time (`is_in_n`): this one, both
+                    // midpoints that can follow it, and the one after the right one; a
+                    // midpoint found among them takes its answer from there.
+                    let mut known = [(0.0f64, false); 4];
+                    let mut n_known = 0;
                     while c - a > BISECT_TOL {
                         let m = 0.5 * (a + c);
                         if m <= a || m >= c {
                             break;
                         }
-                        if self.is_in(o + u * m) == was_in {
+                        let inside = match known[..n_known]
+                            .iter()
+                            .find(|k| k.0.to_bits() == m.to_bits())
+                        {
+                            Some(k) => k.1,
+                            None => {
+                                let mr = 0.5 * (m + c);
+                                let ts = [m, 0.5 * (a + m), mr, 0.5 * (mr + c)];
+                                let ins = self.is_in_n(ts.map(|s| o + u * s));
+                                known = std::array::from_fn(|i| (ts[i], ins[i]));
+                                n_known = 4;
+                                ins[0]
+                            }
+                        };
+                        if inside == was_in {
                             a = m;
                         } else {
                             c = m;
@@ -583,7 +619,9 @@ impl Julia {
                 }
             }
             prev = Some((t, inside));
-            t += step(&orbit);
+            let st = step(&orbit);
+            least = st == min_step;
+            t += st;
         }
     }
 
@@ -666,6 +704,9 @@ impl Shape for Julia {
         }
     }
 }
+
+#[path = "julia_pair.rs"]
+mod pair;
 
 #[cfg(test)]
 #[path = "julia_tests.rs"]

@@ -534,3 +534,64 @@ fn flat_slice_lifts_as_the_formula() {
         }
     }
 }
+
+/// Two orbits side by side (`is_in_n`, `orbit_n`) answer lane by lane as the lone ones, to the
+/// bit, near the surface (long orbits, late escapes) and away from it, for quaternion sqr
+/// and cube and for a hypercomplex set (run one by one).
+#[test]
+fn paired_orbits_answer_as_lone_ones() {
+    let mut rng = crate::geom::test_rng::Lcg(13);
+    for (c, algebra, func, n) in [
+        (
+            [-0.083, 0.0, -0.83, -0.025],
+            Algebra::Quaternion,
+            JuliaFn::Sqr,
+            8,
+        ),
+        (
+            [-0.03, 0.5, -0.2, -0.5],
+            Algebra::Quaternion,
+            JuliaFn::Cube,
+            8,
+        ),
+        (FRACTAL3, Algebra::Quaternion, JuliaFn::Sqr, 7),
+        ([0.2, 0.1, -0.3, 0.0], Algebra::Quaternion, JuliaFn::Sqr, 12),
+        ([0.4, 0.2, 0.1, 0.0], Algebra::Hypercomplex, JuliaFn::Sqr, 6),
+    ] {
+        let j = julia(c, algebra, func, n, 20.0);
+        let bits = |o: &Orbit| match *o {
+            Orbit::Inside => None,
+            Orbit::Outside { r, dr } => Some((r.to_bits(), dr.to_bits())),
+        };
+        let mut inside = 0;
+        for i in 0..20_000 {
+            let mut p = [rng.vec(2.5), rng.vec(2.5)];
+            // Pull most pairs onto the surface: bisect along the line to the origin.
+            if i % 4 != 0 {
+                for q in p.iter_mut() {
+                    let (mut lo, mut hi) = (0.0, 1.0);
+                    for _ in 0..40 {
+                        let m = 0.5 * (lo + hi);
+                        if j.is_in(*q * m) {
+                            lo = m;
+                        } else {
+                            hi = m;
+                        }
+                    }
+                    *q *= if i % 2 == 0 { lo } else { hi };
+                }
+            }
+            let pair = j.is_in_n(p);
+            let four = j.is_in_n([p[0], p[1], p[1], p[0]]);
+            assert_eq!(four, [pair[0], pair[1], pair[1], pair[0]]);
+            assert_eq!(pair, [j.is_in(p[0]), j.is_in(p[1])], "{c:?} at {p:?}");
+            let [a, b] = j.orbit_n(p);
+            let [c4, ..] = j.orbit_n([p[1], p[0], p[1], p[0]]);
+            assert_eq!(bits(&c4), bits(&b));
+            assert_eq!(bits(&a), bits(&j.orbit(p[0])), "{c:?} at {p:?}");
+            assert_eq!(bits(&b), bits(&j.orbit(p[1])), "{c:?} at {p:?}");
+            inside += pair[0] as usize;
+        }
+        assert!(inside > 1000, "{c:?}: {inside}");
+    }
+}

@@ -177,17 +177,20 @@ impl Superellipsoid {
         Field::Value(xy + zc - 1.0)
     }
 
-    /// Crossings as distances along the unit direction `u` from `o`, within `[lo, hi]`,
-    /// increasing; the search stops after the first crossing `last` accepts.
+    /// Crossings as distances along the unit direction `u` from `o`, within `[0, hi]`,
+    /// increasing. Each change of sign between samples `s0 < s1` is first put to `bracket`
+    /// (the root lies in `[s0, s1]`): refined, passed over, or the end of the search with
+    /// its answer; the search also stops after the first root `last` accepts.
     fn crossings(
         &self,
         o: DVec3,
         u: DVec3,
-        lo: f64,
         hi: f64,
-        out: &mut Vec<f64>,
+        out: &mut impl FnMut(f64),
+        mut bracket: impl FnMut(f64, f64) -> Bracket,
         last: impl Fn(f64) -> bool,
-    ) {
+    ) -> Option<bool> {
+        let lo = 0.0;
         // Breakpoints: where the ray meets each plane n·p = 0.
         const PLANES: [[f64; 3]; 9] = [
             [1.0, 0.0, 0.0],
@@ -241,48 +244,104 @@ impl Superellipsoid {
                 };
                 let mut f1 = self.field(o + u * s1);
                 if f0.negative() != f1.negative() {
-                    let (v0, v1) = (exact(s0, f0), exact(s1, f1));
-                    let root = refine(&f, s0, v0, s1, v1);
-                    out.push(root);
-                    if last(root) {
-                        return;
+                    match bracket(s0, s1) {
+                        Bracket::Refine => {
+                            let (v0, v1) = (exact(s0, f0), exact(s1, f1));
+                            let root = refine(&f, s0, v0, s1, v1);
+                            out(root);
+                            if last(root) {
+                                return None;
+                            }
+                            f1 = Field::Value(v1);
+                        }
+                        Bracket::Pass => {}
+                        Bracket::Answer(hit) => return Some(hit),
                     }
-                    f1 = Field::Value(v1);
                 }
                 (s0, f0) = (s1, f1);
             }
         }
+        None
     }
 }
 
+/// What `crossings` does with a change of sign.
+enum Bracket {
+    /// Refine the root.
+    Refine,
+    /// Go on without it (its root cannot count).
+    Pass,
+    /// Stop the search: whether a crossing counting as a hit is there is already known.
+    Answer(bool),
+}
+
+/// Which crossings `hits` is asked for.
+#[derive(Clone, Copy)]
+enum Want {
+    All,
+    /// The nearest with `EPSILON < t < tmax`.
+    First(f64),
+    /// Only whether there is one with `EPSILON < t < tmax` (shadow rays): a change of sign
+    /// whose whole bracket maps inside or beyond that range answers without its root.
+    Any(f64),
+}
+
 impl Superellipsoid {
-    /// The crossings with `t > EPSILON`, increasing; with `first_only` only the first.
-    fn hits(&self, ray: &Ray, out: &mut Vec<Hit>, first_only: bool) {
+    /// The crossings with `t > EPSILON`, increasing (`Want::All`), or the nearest; for
+    /// `Want::Any` the answer when it is known without a root, else as for `First`.
+    fn hits(&self, ray: &Ray, out: &mut Vec<Hit>, want: Want) -> Option<bool> {
         let len = ray.dir.length();
         if !(len > 0.0 && len.is_finite()) {
-            return;
+            return None;
         }
         let u = ray.dir / len;
-        let Some((lo, hi)) = box_interval(ray.origin, u, 1.0 + MARGIN) else {
-            return;
-        };
+        let (lo, hi) = box_interval(ray.origin, u, 1.0 + MARGIN)?;
         let lo = lo.max(EPSILON * len);
         if lo >= hi || lo.is_nan() || hi.is_nan() {
-            return;
+            return None;
         }
         // Distances are measured from the box entry so the samples keep their digits.
         let o = ray.origin + u * lo;
+        // Increasing in `s` (a sum and a division by a positive number, each rounded
+        // monotonically), so a root in `[s0, s1]` has its `t` in `[to_t(s0), to_t(s1)]`.
         let to_t = |s: f64| (s + lo) / len;
-        let mut s = Vec::new();
-        self.crossings(o, u, 0.0, hi - lo, &mut s, |s| {
-            first_only && to_t(s) > EPSILON
-        });
-        out.extend(
-            s.into_iter()
-                .map(to_t)
-                .filter(|&t| t > EPSILON)
-                .map(Hit::new),
-        );
+        let first_only = !matches!(want, Want::All);
+        self.crossings(
+            o,
+            u,
+            hi - lo,
+            &mut |s| {
+                let t = to_t(s);
+                if t > EPSILON {
+                    out.push(Hit::new(t));
+                }
+            },
+            |s0, s1| match want {
+                Want::All => Bracket::Refine,
+                // The first root past EPSILON is the one asked for; beyond `tmax` it is none.
+                Want::First(tmax) => {
+                    let t0 = to_t(s0);
+                    if t0 > EPSILON && t0 >= tmax {
+                        Bracket::Answer(false)
+                    } else {
+                        Bracket::Refine
+                    }
+                }
+                Want::Any(tmax) => {
+                    let (t0, t1) = (to_t(s0), to_t(s1));
+                    if t1 <= EPSILON {
+                        Bracket::Pass
+                    } else if t0 > EPSILON && t1 < tmax {
+                        Bracket::Answer(true)
+                    } else if t0 > EPSILON && t0 >= tmax {
+                        Bracket::Answer(false)
+                    } else {
+                        Bracket::Refine
+                    }
+                }
+            },
+            |s| first_only && to_t(s) > EPSILON,
+        )
     }
 }
 
@@ -349,15 +408,25 @@ impl Shape for Superellipsoid {
     }
 
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
-        self.hits(ray, out, false)
+        self.hits(ray, out, Want::All);
     }
 
     /// Only the first crossing is refined: the `t` are increasing in the crossings, so the
     /// first whose `t` passes `EPSILON` is the nearest.
     fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
         scratch.clear();
-        self.hits(ray, scratch, true);
+        if self.hits(ray, scratch, Want::First(tmax)) == Some(false) {
+            return None;
+        }
         scratch.first().filter(|h| h.t < tmax).copied()
+    }
+
+    fn any_hit(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> bool {
+        scratch.clear();
+        match self.hits(ray, scratch, Want::Any(tmax)) {
+            Some(hit) => hit,
+            None => scratch.first().is_some_and(|h| h.t < tmax),
+        }
     }
 
     fn inside(&self, p: DVec3) -> bool {
@@ -561,6 +630,54 @@ mod tests {
                 assert_eq!(want, got.map(|h| h.t.to_bits()), "{e} {n} {ray:?}");
             }
         }
+    }
+
+    /// `any_hit` answers as `intersect_first` does, also for rays leaving the surface (shadow
+    /// rays) and for `tmax` within a sample step of the crossing.
+    #[test]
+    fn any_hit_is_whether_there_is_a_first() {
+        let mut rng = crate::geom::test_rng::Lcg(7);
+        let mut hits = 0;
+        for (e, n) in [
+            (0.3, 0.3),
+            (1.0, 0.1),
+            (1.0, 0.5),
+            (2.0, 0.5),
+            (3.0, 3.0),
+            (1.0, 1.0),
+        ] {
+            let s = Superellipsoid::new(e, n);
+            for i in 0..3000 {
+                let o = rng.vec(3.0);
+                let d = rng.vec(1.0).normalize() * 1.3 - o * 0.2 * rng.next();
+                let mut ray = Ray::new(o, d);
+                // Every other ray starts on the surface, as a shadow ray does.
+                if i % 2 == 1 {
+                    if let Some(h) = s.intersect_first(&ray, f64::INFINITY, &mut Vec::new()) {
+                        ray = Ray::new(ray.at(h.t), rng.vec(1.0));
+                    }
+                }
+                let first = s.intersect_first(&ray, f64::INFINITY, &mut Vec::new());
+                let near = first.map_or(1.0, |h| h.t);
+                for tmax in [
+                    f64::INFINITY,
+                    near,
+                    near * (1.0 + 1e-9),
+                    near * 0.999,
+                    0.5,
+                    3.0,
+                ] {
+                    let want = s.intersect_first(&ray, tmax, &mut Vec::new()).is_some();
+                    assert_eq!(
+                        s.any_hit(&ray, tmax, &mut Vec::new()),
+                        want,
+                        "{e} {n} {ray:?}"
+                    );
+                    hits += want as usize;
+                }
+            }
+        }
+        assert!(hits > 5000, "{hits}");
     }
 
     #[test]
