@@ -351,10 +351,8 @@ mod tests {
         let has: Vec<bool> = with.objects.iter().map(faces).collect();
         assert_eq!(has, [true, true, true, false]);
         for o in &mut without.objects {
-            if let ObjKind::Csg { cull, .. } = &mut o.kind {
-                if let Some(c) = cull {
-                    c.faces = None;
-                }
+            if let ObjKind::Csg { cull: Some(c), .. } = &mut o.kind {
+                c.faces = None;
             }
         }
         let mut rng = Lcg(5);
