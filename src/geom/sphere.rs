@@ -29,6 +29,13 @@ impl Sphere {
     /// Both crossings (t0 <= t1) of the full line, or None.
     #[inline]
     fn roots(&self, ray: &Ray) -> Option<(f64, f64)> {
+        self.quadratic(ray).map(|q| q.roots())
+    }
+
+    /// The crossing equation's parts, or None when the line misses (or the sphere or the
+    /// direction is empty).
+    #[inline(always)]
+    fn quadratic(&self, ray: &Ray) -> Option<Quadratic> {
         if self.radius == 0.0 {
             return None;
         }
@@ -43,13 +50,53 @@ impl Sphere {
             return None;
         }
         let c = oc.length_squared() - self.radius2;
+        Some(Quadratic { a, b, c, disc })
+    }
+}
+
+/// `a t² + 2 b t + c = 0` of a line and a sphere, and its discriminant `b² - a c` (worked out
+/// through the line's closest approach, not from that formula).
+#[derive(Clone, Copy)]
+struct Quadratic {
+    a: f64,
+    b: f64,
+    c: f64,
+    disc: f64,
+}
+
+impl Quadratic {
+    #[inline(always)]
+    fn roots(self) -> (f64, f64) {
+        let Quadratic { a, b, c, disc } = self;
         let q = -(b + b.signum() * disc.sqrt());
         if q == 0.0 {
-            return Some((0.0, 0.0));
+            return (0.0, 0.0);
         }
         // Citardauq form: the root that would need -b + sqrt(disc) comes from c / q instead.
         let (r1, r2) = (q / a, c / q);
-        Some((r1.min(r2), r1.max(r2)))
+        (r1.min(r2), r1.max(r2))
+    }
+
+    /// Whether `intersect_first` would surely find a crossing in (EPSILON, tmax), told without
+    /// the square root and the two divisions of the roots: a shadow ray meeting a blocker
+    /// (advanced/quilt1's mirror sphere, under an area light) needs only that answer. False
+    /// means "not sure", never "no crossing".
+    ///
+    /// For a ray heading towards the centre (`b < 0`) from outside (`c > 0`) with
+    /// `0 <= disc <= b²`: `roots` computes `q = |b| + √disc`, between `|b|` and `2|b|`
+    /// (each rounding within 2^-52 of that), and the roots `q / a >= |b| / a` and `c / q`,
+    /// between `c / 2|b|` and `c / |b|`. So `c > 4 ε |b|`, `|b| > 2 ε a` and
+    /// `c < |b| tmax (1 - 1e-12)` put both roots above ε and the lesser below `tmax`, margins
+    /// far wider than the few roundings between: `intersect_first` takes the lesser and
+    /// returns it. Anything else (NaN included) fails a comparison and is not sure.
+    #[inline(always)]
+    fn surely_crossed(self, tmax: f64) -> bool {
+        let Quadratic { a, b, c, disc } = self;
+        b < 0.0
+            && disc <= b * b
+            && c > 4.0 * EPSILON * -b
+            && -b > 2.0 * EPSILON * a
+            && c < -b * tmax * (1.0 - 1e-12)
     }
 }
 
@@ -85,13 +132,22 @@ impl Shape for Sphere {
     /// ends at most 0.9995 r from the centre, so each root at least 0.0005 r / |dir| beyond
     /// them) is some 1e11 times the roots' rounding error, so `intersect_first` would find
     /// no crossing either: the same answer, not an approximation.
-    fn any_hit(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> bool {
+    fn any_hit(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> bool {
         let inner = self.radius2 * 0.999;
         let oc = ray.origin - self.center;
         if oc.length_squared() < inner && (oc + ray.dir * tmax).length_squared() < inner {
             return false;
         }
-        self.intersect_first(ray, tmax, scratch).is_some()
+        // `intersect_first(..).is_some()`, from one working of the equation.
+        let Some(q) = self.quadratic(ray) else {
+            return false;
+        };
+        if q.surely_crossed(tmax) {
+            return true;
+        }
+        let (t0, t1) = q.roots();
+        let t = if t0 > EPSILON { t0 } else { t1 };
+        t > EPSILON && t < tmax
     }
 
     fn inside(&self, p: DVec3) -> bool {
@@ -164,6 +220,46 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// `any_hit` answers as `intersect_first` for rays aimed at a sphere from just outside
+    /// its surface to far away, with `tmax` near either crossing (where the short cut of
+    /// `surely_crossed` has to give way), and the short cut is taken.
+    #[test]
+    fn any_hit_is_intersect_first_for_aimed_rays() {
+        let mut scratch = Vec::new();
+        let mut rng = crate::geom::test_rng::Lcg(777);
+        let mut sure = 0;
+        for r in [1e-3, 0.5, 2.0, 1e5] {
+            let centre = DVec3::new(-2.0, 1.5, 0.25) * r;
+            let s = Sphere::new(centre, r);
+            for k in 0..30000 {
+                let dir =
+                    (rng.vec(1.0) + DVec3::splat(1e-3)).normalize() * (0.1 + rng.next() * 3.0);
+                let gap = r * [1e-9, 1e-7, 1e-5, 1e-3, 0.1, 1.0, 30.0][k % 7] * rng.next();
+                // Aimed at a point inside (or near) the sphere.
+                let target = centre + rng.vec(1.0) * r * 1.1;
+                let from = target - dir.normalize() * (r * 2.5 + gap);
+                let o = centre + (from - centre).normalize() * (r + gap);
+                let d = (target - o).normalize() * dir.length();
+                let ray = Ray::new(o, d);
+                let want = s.intersect_first(&ray, f64::INFINITY, &mut scratch);
+                let tmax = match (want, k % 5) {
+                    (_, 0) => f64::INFINITY,
+                    (Some(h), 1) => h.t,
+                    (Some(h), 2) => h.t * (1.0 + 1e-15),
+                    (Some(h), 3) => h.t * (1.0 + rng.next()),
+                    _ => rng.next() * 4.0 * r,
+                };
+                let first = s.intersect_first(&ray, tmax, &mut scratch).is_some();
+                assert_eq!(s.any_hit(&ray, tmax, &mut scratch), first, "{o} {d} {tmax}");
+                if s.quadratic(&ray).is_some_and(|q| q.surely_crossed(tmax)) {
+                    assert!(first);
+                    sure += 1;
+                }
+            }
+        }
+        assert!(sure > 10000, "{sure}");
     }
 
     #[test]

@@ -89,10 +89,10 @@ fn set_culls(o: &mut Object) {
     {
         children.iter_mut().for_each(set_culls);
         let aabb = crate::scene::cull::cull_box(*op, children, &o.bounds);
-        // Unions keep every crossing and ask no member whether it holds a point.
-        let faces = (*op != CsgOp::Union)
-            .then(|| crate::scene::faces::Faces::of(children))
-            .flatten();
+        // A union asks no member whether it holds a point, but its plane members' crossings
+        // come cheaper through their faces (advanced/quilt1's clipped floor and wall). A union
+        // given an index below drops them: the index numbers its leaves, not its members.
+        let faces = crate::scene::faces::Faces::of(children);
         *cull = (aabb.is_some() || faces.is_some())
             .then(|| Box::new(crate::scene::object::Cull { aabb, faces }));
     }
@@ -117,7 +117,7 @@ fn attach_indexes(o: &mut Object, opened: bool) {
         op,
         children,
         index,
-        ..
+        cull,
     } = &mut o.kind
     else {
         return;
@@ -128,6 +128,14 @@ fn attach_indexes(o: &mut Object, opened: bool) {
         ChildIndex::build(*op, children)
     };
     let opening = *op == CsgOp::Union && (opened || mine.is_some());
+    if *op == CsgOp::Union && mine.is_some() {
+        if let Some(c) = cull {
+            c.faces = None;
+        }
+        if cull.as_ref().is_some_and(|c| c.aabb.is_none()) {
+            *cull = None;
+        }
+    }
     for c in children.iter_mut() {
         let open = opening && opens(c);
         attach_indexes(c, open);

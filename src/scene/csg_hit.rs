@@ -189,13 +189,16 @@ impl Object {
                     return None;
                 }
                 let slabs = Slabs::new(ray.origin, inv_dir);
+                // Plane members through their faces, as `all_hits_unclipped` asks them.
+                let faces = cull.as_ref().and_then(|c| c.faces.as_ref());
+                let ray_faces = faces.filter(|_| faces::ray_ok(ray));
                 let mut found = None;
-                each_member(children, index.as_deref(), ray, tmax, s, |c, _, s| {
+                each_member(children, index.as_deref(), ray, tmax, s, |c, i, s| {
                     if found.is_some() || !slabs.hits(&c.bounds, tmax) {
                         return;
                     }
                     let from = s.surface.len();
-                    c.all_hits(ray, tmax, s);
+                    member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
                     found = s.surface[from..].iter().find(|h| kept(h)).copied();
                     s.surface.truncate(from);
                 });
@@ -226,7 +229,7 @@ impl Object {
 mod tests {
     use crate::geom::test_rng::Lcg;
     use crate::math::{DVec3, Ray, EPSILON};
-    use crate::scene::object::{Object, Scratch, SurfaceHit};
+    use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
     use crate::sdl::{ParseOptions, Parser};
 
     /// `first_hit` as `all_hits` defines it: the nearest crossing (t > EPSILON when clipped),
@@ -308,6 +311,89 @@ mod tests {
                 );
                 assert!(sa.surface.is_empty() && sa.csg_order.is_empty());
                 hits += want.is_some() as usize;
+            }
+            assert!(hits > 100, "object {n}: {hits}");
+        }
+    }
+
+    /// Unions ask their plane members through their faces (`scene::faces`) and answer as
+    /// without them, bit for bit: quilt1's clipped floor and wall, rotated; a plain union of
+    /// planes and a sphere; and a union big enough for an index, which keeps no faces (its
+    /// index numbers leaves, not members).
+    #[test]
+    fn unions_answer_through_faces_as_without() {
+        const SCENE: &str = r#"
+            union { plane { z, 0 hollow on } plane { y, 0 inverse }
+                    cylinder { <-200, 1, -1>, <200, 1, -1>, 1 clipped_by { box { <-100, 0, -1>, <100, 1, 0> } } }
+                    clipped_by { box { <-99.9, -0.1, -10000>, <100.1, 1000, 1> } } rotate -y * 2 }
+            union { plane { x, 0.5 rotate <10, 20, 30> } plane { -y, 0.25 scale 2 } sphere { 0, 1 } }
+            union { plane { x, 0.5 rotate <10, 20, 30> } plane { -y, 0.25 } sphere { 0, 1 }
+                    clipped_by { sphere { 0, 2 } } inverse }
+            union {
+              #local I = 0;
+              #while (I < 14)
+                sphere { <I, 0, 0>, 0.4 }
+                #local I = I + 1;
+              #end
+              plane { z, 1 } plane { y, -1 rotate x * 5 }
+            }
+        "#;
+        let mut p = Parser::new(ParseOptions::default());
+        p.parse_str("t.pov", SCENE)
+            .map_err(|e| e.message.clone())
+            .unwrap();
+        let with = crate::scene::build::build(&p.scene, 64, 48).scene;
+        let mut without = crate::scene::build::build(&p.scene, 64, 48).scene;
+        let faces = |o: &Object| match &o.kind {
+            ObjKind::Csg { cull, .. } => cull.as_ref().is_some_and(|c| c.faces.is_some()),
+            ObjKind::Shape(..) => false,
+        };
+        let has: Vec<bool> = with.objects.iter().map(faces).collect();
+        assert_eq!(has, [true, true, true, false]);
+        for o in &mut without.objects {
+            if let ObjKind::Csg { cull: Some(c), .. } = &mut o.kind {
+                c.faces = None;
+            }
+        }
+        let mut rng = Lcg(5);
+        let (mut sa, mut sb) = (Scratch::default(), Scratch::default());
+        for (n, (a, b)) in with.objects.iter().zip(&without.objects).enumerate() {
+            let mut hits = 0;
+            for k in 0..4000 {
+                let ray = if k % 4 == 0 {
+                    Ray::new(rng.vec(3.0).round(), [DVec3::X, DVec3::Y, DVec3::Z][k % 3])
+                } else {
+                    Ray::new(rng.vec(6.0), rng.vec(2.0))
+                };
+                let tmax = if rng.next() < 0.3 { 2.5 } else { f64::INFINITY };
+                let ha = a.first_hit(&ray, tmax, &mut sa);
+                let hb = b.first_hit(&ray, tmax, &mut sb);
+                assert_eq!(
+                    ha.map(|h| (h.t.to_bits(), h.flip, h.hit.part)),
+                    hb.map(|h| (h.t.to_bits(), h.flip, h.hit.part)),
+                    "object {n}, ray {k}"
+                );
+                assert_eq!(
+                    a.any_hit(&ray, tmax, &mut sa),
+                    hb.is_some(),
+                    "object {n}, ray {k}"
+                );
+                a.all_hits(&ray, tmax, &mut sa);
+                b.all_hits(&ray, tmax, &mut sb);
+                let la: Vec<_> = sa
+                    .surface
+                    .iter()
+                    .map(|h| (h.t.to_bits(), h.flip, h.hit.part))
+                    .collect();
+                let lb: Vec<_> = sb
+                    .surface
+                    .iter()
+                    .map(|h| (h.t.to_bits(), h.flip, h.hit.part))
+                    .collect();
+                assert_eq!(la, lb, "object {n}, ray {k}");
+                sa.surface.clear();
+                sb.surface.clear();
+                hits += hb.is_some() as usize;
             }
             assert!(hits > 100, "object {n}: {hits}");
         }
