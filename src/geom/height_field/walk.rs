@@ -178,7 +178,8 @@ impl HeightField {
         }
     }
 
-    /// `visit_signed` from the root block of a pyramid of more than one level.
+    /// `visit_signed` from the root block of a pyramid of more than one level, if the ray
+    /// reaches that block.
     pub(super) fn walk_signed(&self, r: &mut GridRay, s: &Signs) {
         let top = self.levels.len() - 1;
         let (cx, cz) = self.cells();
@@ -186,8 +187,8 @@ impl HeightField {
         let far = |c: f64| fmin::<true>(((2usize) << (top - 1)) as i64 as f64, c);
         let ux = [(0.0 - r.o.x) * r.inv.x, (far(cx) - r.o.x) * r.inv.x];
         let uz = [(0.0 - r.o.z) * r.inv.z, (far(cz) - r.o.z) * r.inv.z];
-        // The root's own test (passed in `trace`, with the same numbers but for the sign of
-        // a zero) for its bounds.
+        // The root's test as `trace` makes it for `visit` (with the same numbers but for
+        // the sign of a zero): the first bounds.
         let root = Kid {
             key: fmax::<true>(
                 fmax::<true>(0.0, fmin::<true>(ux[0], ux[1])),
@@ -196,9 +197,9 @@ impl HeightField {
             exit: fmin::<true>(fmax::<true>(ux[0], ux[1]), fmax::<true>(uz[0], uz[1])),
             ..Kid::default()
         };
-        let t = self
-            .reaches_signed(r, s, self.levels[top].range[0], &root)
-            .unwrap_or((f64::NEG_INFINITY, f64::INFINITY));
+        let Some(t) = self.reaches_signed(r, s, self.levels[top].range[0], &root) else {
+            return;
+        };
         self.visit_signed(r, s, top, (0, 0), t, ux, uz);
     }
 }
