@@ -91,6 +91,7 @@ impl HeightField {
     /// beyond that face, at most `m` for those before it. As `slack` is monotone, a side
     /// with `m > slack(hi)` (beyond) or `lo > slack(m)` (before) holds no child that passes
     /// its test: it is left out untested, which leaves the same children, in the same order.
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn visit_signed(
         &self,
         r: &mut GridRay,
@@ -114,6 +115,9 @@ impl HeightField {
         // Which sides of the middle faces may hold a child that passes: bit `di` of `sx_ok`
         // for the children at `bi * 2 + di` (the near one is `di == s.sx`).
         let shi = slack(hi);
+        // Negated comparisons: a NaN (from `slack` of an infinite distance) must leave the
+        // side in.
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
         let side = |m: f64, near: usize| -> u32 {
             let far_ok = !(m > shi) as u32;
             let near_ok = !(lo > slack(m)) as u32;
