@@ -421,22 +421,26 @@ impl HeightField {
             out,
         };
         let top = self.levels.len() - 1;
+        // No NaN in the walk (see `visit`): an axis the ray runs along is not divided by.
+        let finite = |d: f64, inv: f64| d == 0.0 || inv.is_finite();
+        let plain = !tmax.is_nan()
+            && finite(r.d.x, r.inv.x)
+            && finite(r.d.y, r.inv.y)
+            && finite(r.d.z, r.inv.z);
+        if plain && top > 0 && signed {
+            if let Some(s) = walk::Signs::new(&r) {
+                // Makes the root's test itself.
+                self.walk_signed(&mut r, &s);
+                return;
+            }
+        }
         let Some(xz) = self.slab_xz(&r, (1usize << top) as f64, 0, 0) else {
             return;
         };
         let l = &self.levels[top];
-        // No NaN in the walk (see `visit`): an axis the ray runs along is not divided by.
-        let finite = |d: f64, inv: f64| d == 0.0 || inv.is_finite();
-        if !tmax.is_nan()
-            && finite(r.d.x, r.inv.x)
-            && finite(r.d.y, r.inv.y)
-            && finite(r.d.z, r.inv.z)
-        {
+        if plain {
             if self.reaches::<true>(&r, l, 0, 0, xz) {
-                match walk::Signs::new(&r) {
-                    Some(s) if top > 0 && signed => self.walk_signed(&mut r, &s),
-                    _ => self.visit::<true>(&mut r, top, 0, 0),
-                }
+                self.visit::<true>(&mut r, top, 0, 0);
             }
         } else if self.reaches::<false>(&r, l, 0, 0, xz) {
             self.visit::<false>(&mut r, top, 0, 0);

@@ -42,34 +42,63 @@ struct Kid {
     exit: f64,
     i: usize,
     j: usize,
+    /// The entry and exit of its test, bounds for its children's (see `visit_signed`).
+    t: (f64, f64),
+}
+
+/// The right side of the walk's slab test (`slack_ok::<true>`): a block whose entry is above
+/// this function of its exit is missed. Monotone in the exit: each operation is, and below
+/// -1 the sum still grows (the step in `t` outweighs the one in `1e-9 |t|`).
+#[inline(always)]
+fn slack(t1: f64) -> f64 {
+    t1 + 1e-9 * fmax::<true>(t1.abs(), 1.0)
 }
 
 impl HeightField {
     /// `reaches::<true>` for a ray with `Signs`: the block's heights give its entry and exit
-    /// along y by the sign of `d.y` rather than by `min` and `max` (the same values).
+    /// along y by the sign of `d.y` rather than by `min` and `max` (the same values). Also
+    /// gives the test's entry `t0` and exit `t1`, which bound those of every block inside
+    /// this one (see `visit_signed`).
     #[inline(always)]
-    fn reaches_signed(&self, r: &GridRay, s: &Signs, range: [f32; 2], k: &Kid) -> bool {
+    fn reaches_signed(
+        &self,
+        r: &GridRay,
+        s: &Signs,
+        range: [f32; 2],
+        k: &Kid,
+    ) -> Option<(f64, f64)> {
         let [ylo, yhi] = range.map(f64::from);
         if yhi < self.data.water_level {
-            return false;
+            return None;
         }
         let (u, v) = ((ylo - r.o.y) * r.inv.y, (yhi - r.o.y) * r.inv.y);
         let (ye, yx) = if s.up { (u, v) } else { (v, u) };
         let t0 = if ye > k.key { ye } else { k.key };
         let t1 = fmin::<true>(fmin::<true>(r.tmax, k.exit), yx);
-        t0 <= t1 + 1e-9 * fmax::<true>(t1.abs(), 1.0)
+        (t0 <= slack(t1)).then_some((t0, t1))
     }
 
     /// `visit::<true>` for a ray with `Signs` (see the module's comment for why the answers
-    /// are the same). The caller has found that the ray reaches block (bi, bj) of `level`;
-    /// `ux` and `uz` are the distances to the block's near and far faces along x and z (by
-    /// index, not by the ray's direction), which are its outer children's faces too.
+    /// are the same). The caller has found that the ray reaches block (bi, bj) of `level`,
+    /// with the entry and exit `t` (`lo`, `hi`) of that test, taken with the current `tmax`
+    /// or a larger one; `ux` and `uz` are the distances to the block's near and far faces
+    /// along x and z (by index, not by the ray's direction), which are its outer children's
+    /// faces too.
+    ///
+    /// A child's entry is at least `lo` and its exit at most `hi` (its faces lie within the
+    /// block's, `(f - o) · inv` is monotone in `f`, its height range lies within the block's,
+    /// and `tmax` only shrinks), and at least the middle face's distance `m` for the children
+    /// beyond that face, at most `m` for those before it. As `slack` is monotone, a side
+    /// with `m > slack(hi)` (beyond) or `lo > slack(m)` (before) holds no child that passes
+    /// its test: it is left out untested, which leaves the same children, in the same order.
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn visit_signed(
         &self,
         r: &mut GridRay,
         s: &Signs,
         level: usize,
         (bi, bj): (usize, usize),
+        (lo, hi): (f64, f64),
         ux: [f64; 2],
         uz: [f64; 2],
     ) {
@@ -83,23 +112,37 @@ impl HeightField {
         let mz = fmin::<true>(((bj * 2 + 1) << sh) as i64 as f64, cz);
         let ux = [ux[0], (mx - r.o.x) * r.inv.x, ux[1]];
         let uz = [uz[0], (mz - r.o.z) * r.inv.z, uz[1]];
+        // Which sides of the middle faces may hold a child that passes: bit `di` of `sx_ok`
+        // for the children at `bi * 2 + di` (the near one is `di == s.sx`).
+        let shi = slack(hi);
+        // Negated comparisons: a NaN (from `slack` of an infinite distance) must leave the
+        // side in.
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
+        let side = |m: f64, near: usize| -> u32 {
+            let far_ok = !(m > shi) as u32;
+            let near_ok = !(lo > slack(m)) as u32;
+            (near_ok << near) | (far_ok << (1 - near))
+        };
+        let (okx, okz) = (side(ux[1], s.sx), side(uz[1], s.sz));
         let mut kids = [Kid::default(); 4];
         let mut n = 0;
         for (di, dj) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
             let (ci, cj) = (bi * 2 + di, bj * 2 + dj);
-            if ci < below.nx && cj < below.nz {
+            if ci < below.nx && cj < below.nz && (okx >> di) & (okz >> dj) & 1 != 0 {
                 let (xe, xx) = (ux[di + s.sx], ux[di + 1 - s.sx]);
                 let (ze, zx) = (uz[dj + s.sz], uz[dj + 1 - s.sz]);
                 // `0.0f64.max(xe).max(ze)` of `visit`, whose sort key it is; comparisons give
                 // +0 for a -0 entry, as `f64::max` with a constant 0 does on x86.
                 let k = if xe > 0.0 { xe } else { 0.0 };
-                let kid = Kid {
+                let mut kid = Kid {
                     key: if ze > k { ze } else { k },
                     exit: fmin::<true>(xx, zx),
                     i: ci,
                     j: cj,
+                    t: (0.0, 0.0),
                 };
-                if self.reaches_signed(r, s, below.range[cj * below.nx + ci], &kid) {
+                if let Some(t) = self.reaches_signed(r, s, below.range[cj * below.nx + ci], &kid) {
+                    kid.t = t;
                     kids[n] = kid;
                     n += 1;
                 }
@@ -122,21 +165,25 @@ impl HeightField {
             if r.first && kid.key > r.tmax {
                 break;
             }
-            if r.tmax == tmax
-                || self.reaches_signed(r, s, below.range[kid.j * below.nx + kid.i], kid)
-            {
+            let t = if r.tmax == tmax {
+                Some(kid.t)
+            } else {
+                self.reaches_signed(r, s, below.range[kid.j * below.nx + kid.i], kid)
+            };
+            if let Some(t) = t {
                 if level == 1 {
                     self.cell_hits(r, kid.i, kid.j);
                 } else {
                     let (di, dj) = (kid.i & 1, kid.j & 1);
                     let (kx, kz) = ([ux[di], ux[di + 1]], [uz[dj], uz[dj + 1]]);
-                    self.visit_signed(r, s, level - 1, (kid.i, kid.j), kx, kz);
+                    self.visit_signed(r, s, level - 1, (kid.i, kid.j), t, kx, kz);
                 }
             }
         }
     }
 
-    /// `visit_signed` from the root block of a pyramid of more than one level.
+    /// `visit_signed` from the root block of a pyramid of more than one level, if the ray
+    /// reaches that block.
     pub(super) fn walk_signed(&self, r: &mut GridRay, s: &Signs) {
         let top = self.levels.len() - 1;
         let (cx, cz) = self.cells();
@@ -144,7 +191,20 @@ impl HeightField {
         let far = |c: f64| fmin::<true>(((2usize) << (top - 1)) as i64 as f64, c);
         let ux = [(0.0 - r.o.x) * r.inv.x, (far(cx) - r.o.x) * r.inv.x];
         let uz = [(0.0 - r.o.z) * r.inv.z, (far(cz) - r.o.z) * r.inv.z];
-        self.visit_signed(r, s, top, (0, 0), ux, uz);
+        // The root's test as `trace` makes it for `visit` (with the same numbers but for
+        // the sign of a zero): the first bounds.
+        let root = Kid {
+            key: fmax::<true>(
+                fmax::<true>(0.0, fmin::<true>(ux[0], ux[1])),
+                fmin::<true>(uz[0], uz[1]),
+            ),
+            exit: fmin::<true>(fmax::<true>(ux[0], ux[1]), fmax::<true>(uz[0], uz[1])),
+            ..Kid::default()
+        };
+        let Some(t) = self.reaches_signed(r, s, self.levels[top].range[0], &root) else {
+            return;
+        };
+        self.visit_signed(r, s, top, (0, 0), t, ux, uz);
     }
 }
 
