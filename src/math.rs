@@ -362,6 +362,18 @@ impl Slabs {
     }
 }
 
+/// Numbers in [0, 1) from a xorshift generator started at `seed`: the random inputs of tests
+/// that compare two computations over many cases.
+#[cfg(test)]
+pub(crate) fn xorshift_unit(mut seed: u64) -> impl FnMut() -> f64 {
+    move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

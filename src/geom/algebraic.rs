@@ -662,13 +662,8 @@ mod tests {
     /// The unrolled expansions and the power tables give the bits of the loops they replace.
     #[test]
     fn unrolled_expansion_matches_the_loops() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-        let mut rnd = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64 * 8.0 - 4.0
-        };
+        let mut unit = crate::math::xorshift_unit(0x9e37_79b9_7f4a_7c15u64);
+        let mut rnd = move || unit() * 8.0 - 4.0;
         for order in [2usize, 3, 4] {
             for _ in 0..200 {
                 let terms: Vec<([u8; 3], f64)> = pov_term_order(order)

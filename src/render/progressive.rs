@@ -231,6 +231,11 @@ mod tests {
         crate::scene::build::build(&parser.scene, w, h).scene
     }
 
+    /// `with_view` through the scene's own camera, without photons.
+    fn view_of<R>(sc: &Scene, s: &RenderSettings, f: impl FnOnce(&View) -> R) -> R {
+        with_view(sc, &Camera::of_scene(sc), s, &Switches::of(s), None, f)
+    }
+
     /// The refined picture must be the batch render's, sample for sample (exactly: the same
     /// rays through the same code), with and without anti-aliasing, at a size that is not a
     /// multiple of the coarsest block.
@@ -251,20 +256,13 @@ mod tests {
             };
             let sc = scene(text, s.width, s.height);
             let batch = crate::render::render(&sc, &s, &|_| {});
-            let film = with_view(
-                &sc,
-                &Camera::of_scene(&sc),
-                &s,
-                &Switches::of(&s),
-                None,
-                |v| {
-                    let mut p = v.start();
-                    for b in levels(8) {
-                        assert!(v.level(&mut p, b, &|| false));
-                    }
-                    v.finish(p)
-                },
-            );
+            let film = view_of(&sc, &s, |v| {
+                let mut p = v.start();
+                for b in levels(8) {
+                    assert!(v.level(&mut p, b, &|| false));
+                }
+                v.finish(p)
+            });
             assert_eq!(film.pixels, batch.pixels);
             assert_eq!(film.rays, batch.rays);
         }
@@ -284,45 +282,31 @@ mod tests {
             s.width,
             s.height,
         );
-        with_view(
-            &sc,
-            &Camera::of_scene(&sc),
-            &s,
-            &Switches::of(&s),
-            None,
-            |v| {
-                let mut p = v.start();
-                assert!(v.level(&mut p, 4, &|| false));
-                let coarse = v.preview_rgb8(&p);
-                for b in [2, 1] {
-                    assert!(v.level(&mut p, b, &|| false));
+        view_of(&sc, &s, |v| {
+            let mut p = v.start();
+            assert!(v.level(&mut p, 4, &|| false));
+            let coarse = v.preview_rgb8(&p);
+            for b in [2, 1] {
+                assert!(v.level(&mut p, b, &|| false));
+            }
+            let fine = v.preview_rgb8(&p);
+            for y in 0..11 {
+                for x in 0..21 {
+                    let (i, c) = ((y * 21 + x) * 3, ((y - y % 4) * 21 + x - x % 4) * 3);
+                    assert_eq!(coarse[i..i + 3], fine[c..c + 3], "pixel {x},{y}");
                 }
-                let fine = v.preview_rgb8(&p);
-                for y in 0..11 {
-                    for x in 0..21 {
-                        let (i, c) = ((y * 21 + x) * 3, ((y - y % 4) * 21 + x - x % 4) * 3);
-                        assert_eq!(coarse[i..i + 3], fine[c..c + 3], "pixel {x},{y}");
-                    }
-                }
-            },
-        );
+            }
+        });
     }
 
     #[test]
     fn cancelled_level_reports_it() {
         let s = RenderSettings::default();
         let sc = scene("sphere { 0, 1 pigment { rgb 1 } }", s.width, s.height);
-        with_view(
-            &sc,
-            &Camera::of_scene(&sc),
-            &s,
-            &Switches::of(&s),
-            None,
-            |v| {
-                let mut p = v.start();
-                assert!(!v.level(&mut p, 4, &|| true));
-                assert_eq!(p.block(), None);
-            },
-        );
+        view_of(&sc, &s, |v| {
+            let mut p = v.start();
+            assert!(!v.level(&mut p, 4, &|| true));
+            assert_eq!(p.block(), None);
+        });
     }
 }

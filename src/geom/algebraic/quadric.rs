@@ -61,13 +61,7 @@ mod tests {
     /// root, for quadrics of shapes.inc's kinds at many scales and rays grazing them.
     #[test]
     fn certified_misses_have_no_root() {
-        let mut seed = 0x2545_f491_4f6c_dd1du64;
-        let mut rnd = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rnd = crate::math::xorshift_unit(0x2545_f491_4f6c_dd1du64);
         let (mut certified, mut total) = (0, 0);
         for case in 0..40_000 {
             let pick = |r: f64| [-1.0, 0.0, 1.0, 0.5, -3.0][(r * 5.0) as usize];

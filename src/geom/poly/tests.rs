@@ -83,13 +83,7 @@ fn low_degrees_and_degenerate_input() {
 /// close and far roots, windows anywhere.
 #[test]
 fn window_keeps_the_roots_inside_exactly() {
-    let mut seed = 0x2545_f491_4f6c_dd1du64;
-    let mut rnd = move || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rnd = crate::math::xorshift_unit(0x2545_f491_4f6c_dd1du64);
     for case in 0..20_000 {
         let deg = 4 + case % 3;
         let mut c: Vec<f64> = (0..=deg).map(|_| rnd() * 20.0 - 10.0).collect();

@@ -287,13 +287,7 @@ fn curved_outline_round_trip() {
 /// included, for both sweeps and every spline kind, rays from inside and outside.
 #[test]
 fn nearest_crossing_is_the_defaults() {
-    let mut seed = 0x1234_5678_9abc_def1u64;
-    let mut unit = move || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut unit = crate::math::xorshift_unit(0x1234_5678_9abc_def1u64);
     let star: Vec<P2> = (0..11)
         .map(|k| {
             let a = k as f64 * std::f64::consts::TAU / 10.0;
