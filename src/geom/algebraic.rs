@@ -184,8 +184,6 @@ impl Algebraic {
     /// root needs it (most rays miss most quadrics of an unbounded scene).
     #[inline(always)]
     fn low_order_roots(&self, ray: &Ray) -> Option<([f64; 2], usize, f64)> {
-        // `along_ray_lead` on three coefficients: the expansion for orders below 3 is
-        // `along_unrolled::<3>`, whatever `along` would copy it into.
         if let Some(q) = &self.diagonal {
             if q.surely_misses(ray.origin, ray.dir) {
                 return None;
@@ -197,6 +195,8 @@ impl Algebraic {
     /// `low_order_roots` without the certificate.
     #[inline(always)]
     fn low_order_solved(&self, ray: &Ray) -> Option<([f64; 2], usize, f64)> {
+        // `along_ray_lead` on three coefficients: the expansion for orders below 3 is
+        // `along_unrolled::<3>`, whatever `along` would copy it into.
         let len = ray.dir.length();
         if !(len > 0.0 && len.is_finite()) || self.terms.is_empty() {
             return None;

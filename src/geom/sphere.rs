@@ -77,6 +77,14 @@ impl Quadratic {
         (r1.min(r2), r1.max(r2))
     }
 
+    /// The nearest crossing in (EPSILON, tmax).
+    #[inline(always)]
+    fn first(self, tmax: f64) -> Option<f64> {
+        let (t0, t1) = self.roots();
+        let t = if t0 > EPSILON { t0 } else { t1 };
+        (t > EPSILON && t < tmax).then_some(t)
+    }
+
     /// Whether `intersect_first` would surely find a crossing in (EPSILON, tmax), told without
     /// the square root and the two divisions of the roots: a shadow ray meeting a blocker
     /// (advanced/quilt1's mirror sphere, under an area light) needs only that answer. False
@@ -122,9 +130,7 @@ impl Shape for Sphere {
     }
 
     fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
-        let (t0, t1) = self.roots(ray)?;
-        let t = if t0 > EPSILON { t0 } else { t1 };
-        (t > EPSILON && t < tmax).then(|| Hit::new(t))
+        self.quadratic(ray)?.first(tmax).map(Hit::new)
     }
 
     /// Shadow rays inside a sky sphere (advanced/quilt1: every area-light sample) skip the
@@ -142,12 +148,7 @@ impl Shape for Sphere {
         let Some(q) = self.quadratic(ray) else {
             return false;
         };
-        if q.surely_crossed(tmax) {
-            return true;
-        }
-        let (t0, t1) = q.roots();
-        let t = if t0 > EPSILON { t0 } else { t1 };
-        t > EPSILON && t < tmax
+        q.surely_crossed(tmax) || q.first(tmax).is_some()
     }
 
     fn inside(&self, p: DVec3) -> bool {

@@ -102,8 +102,16 @@ pub fn unit(h: u32) -> f64 {
 pub fn noise(p: DVec3, generator: u8) -> f64 {
     match generator {
         3 => gradient_noise(p).clamp(0.0, 1.0),
-        1 => (0.5 + noise_lattice::scalar(p)).clamp(0.0, 1.0),
-        _ => (GEN2_A + GEN2_B * (0.5 + noise_lattice::scalar(p))).clamp(0.0, 1.0),
+        _ => lattice_value(noise_lattice::scalar(p), generator),
+    }
+}
+
+/// Generator 1's or 2's noise value from the lattice's sum at the point.
+#[inline(always)]
+fn lattice_value(sum: f64, generator: u8) -> f64 {
+    match generator {
+        1 => (0.5 + sum).clamp(0.0, 1.0),
+        _ => (GEN2_A + GEN2_B * (0.5 + sum)).clamp(0.0, 1.0),
     }
 }
 
@@ -126,9 +134,8 @@ pub fn dnoise_many<const N: usize>(ps: &[DVec3; N], out: &mut [DVec3; N]) {
 pub fn noise_and_dnoise(p: DVec3, generator: u8) -> (f64, DVec3) {
     let d = noise_lattice::vector(p);
     let v = match generator {
-        3 => return (noise(p, 3), d),
-        1 => (0.5 + d.x).clamp(0.0, 1.0),
-        _ => (GEN2_A + GEN2_B * (0.5 + d.x)).clamp(0.0, 1.0),
+        3 => noise(p, 3),
+        _ => lattice_value(d.x, generator),
     };
     (v, d)
 }

@@ -232,6 +232,20 @@ mod tests {
     use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
     use crate::sdl::{ParseOptions, Parser};
 
+    /// The built scene of `text`.
+    fn built(text: &str) -> crate::scene::build::Scene {
+        let mut p = Parser::new(ParseOptions::default());
+        p.parse_str("t.pov", text)
+            .map_err(|e| e.message.clone())
+            .unwrap();
+        crate::scene::build::build(&p.scene, 64, 48).scene
+    }
+
+    /// What two crossings must share bit for bit.
+    fn key(h: &SurfaceHit) -> (u64, bool, u32) {
+        (h.t.to_bits(), h.flip, h.hit.part)
+    }
+
     /// `first_hit` as `all_hits` defines it: the nearest crossing (t > EPSILON when clipped),
     /// the earliest listed of equal ones.
     fn reference<'a>(
@@ -276,11 +290,7 @@ mod tests {
             sphere { 0, 1 clipped_by { plane { y, 0.25 } } translate x }
             sphere { 0, 1 clipped_by { plane { y, 0.25 } plane { x, 0.1 } } inverse }
         "#;
-        let mut p = Parser::new(ParseOptions::default());
-        p.parse_str("t.pov", SCENE)
-            .map_err(|e| e.message.clone())
-            .unwrap();
-        let scene = crate::scene::build::build(&p.scene, 64, 48).scene;
+        let scene = built(SCENE);
         let mut rng = Lcg(11);
         let (mut sa, mut sb) = (Scratch::default(), Scratch::default());
         for (n, o) in scene.objects.iter().enumerate() {
@@ -338,12 +348,7 @@ mod tests {
               plane { z, 1 } plane { y, -1 rotate x * 5 }
             }
         "#;
-        let mut p = Parser::new(ParseOptions::default());
-        p.parse_str("t.pov", SCENE)
-            .map_err(|e| e.message.clone())
-            .unwrap();
-        let with = crate::scene::build::build(&p.scene, 64, 48).scene;
-        let mut without = crate::scene::build::build(&p.scene, 64, 48).scene;
+        let (with, mut without) = (built(SCENE), built(SCENE));
         let faces = |o: &Object| match &o.kind {
             ObjKind::Csg { cull, .. } => cull.as_ref().is_some_and(|c| c.faces.is_some()),
             ObjKind::Shape(..) => false,
@@ -369,8 +374,8 @@ mod tests {
                 let ha = a.first_hit(&ray, tmax, &mut sa);
                 let hb = b.first_hit(&ray, tmax, &mut sb);
                 assert_eq!(
-                    ha.map(|h| (h.t.to_bits(), h.flip, h.hit.part)),
-                    hb.map(|h| (h.t.to_bits(), h.flip, h.hit.part)),
+                    ha.as_ref().map(key),
+                    hb.as_ref().map(key),
                     "object {n}, ray {k}"
                 );
                 assert_eq!(
@@ -380,17 +385,8 @@ mod tests {
                 );
                 a.all_hits(&ray, tmax, &mut sa);
                 b.all_hits(&ray, tmax, &mut sb);
-                let la: Vec<_> = sa
-                    .surface
-                    .iter()
-                    .map(|h| (h.t.to_bits(), h.flip, h.hit.part))
-                    .collect();
-                let lb: Vec<_> = sb
-                    .surface
-                    .iter()
-                    .map(|h| (h.t.to_bits(), h.flip, h.hit.part))
-                    .collect();
-                assert_eq!(la, lb, "object {n}, ray {k}");
+                let list = |s: &Scratch| -> Vec<_> { s.surface.iter().map(key).collect() };
+                assert_eq!(list(&sa), list(&sb), "object {n}, ray {k}");
                 sa.surface.clear();
                 sb.surface.clear();
                 hits += hb.is_some() as usize;
