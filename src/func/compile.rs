@@ -10,6 +10,8 @@ struct Emitter {
     callees: Vec<Arc<Function>>,
     depth: usize,
     max_depth: usize,
+    /// Ops before this index may not be fused with the next one: a jump lands at or after it.
+    label: usize,
 }
 
 impl Emitter {
@@ -17,6 +19,57 @@ impl Emitter {
         self.ops.push(op);
         self.depth = (self.depth as isize + delta).max(0) as usize;
         self.max_depth = self.max_depth.max(self.depth);
+    }
+
+    /// A jump will land at the next op: it must stay an op of its own.
+    fn mark_label(&mut self) -> u32 {
+        self.label = self.ops.len();
+        self.ops.len() as u32
+    }
+
+    /// An arithmetic operator, fused with the `Load` or `Const` just before it when that op
+    /// is no jump target: the same operation on the same operands, one dispatch fewer.
+    fn arith(&mut self, op: BinOp) {
+        let last = if self.ops.len() > self.label {
+            self.ops.last()
+        } else {
+            None
+        };
+        let fused = match (last, op) {
+            (Some(Op::Load(s)), BinOp::Add) => Some(Op::AddS(*s)),
+            (Some(Op::Load(s)), BinOp::Sub) => Some(Op::SubS(*s)),
+            (Some(Op::Load(s)), BinOp::Mul) => Some(Op::MulS(*s)),
+            (Some(Op::Load(s)), BinOp::Div) => Some(Op::DivS(*s)),
+            (Some(Op::Const(c)), BinOp::Add) => Some(Op::AddC(*c)),
+            (Some(Op::Const(c)), BinOp::Sub) => Some(Op::SubC(*c)),
+            (Some(Op::Const(c)), BinOp::Mul) => Some(Op::MulC(*c)),
+            (Some(Op::Const(c)), BinOp::Div) => Some(Op::DivC(*c)),
+            _ => None,
+        };
+        if let Some(f) = fused {
+            // The operand's push and the operator's pop cancel: the depth is the one before
+            // the operand, and the deepest point so far is unchanged.
+            self.ops.pop();
+            self.depth -= 1;
+            // `Load(a)` just before as well (the left operand): one op pushes the product.
+            let n = self.ops.len();
+            if let (Op::MulS(b), true) = (&f, n > self.label) {
+                if let Some(&Op::Load(a)) = self.ops.last() {
+                    self.ops[n - 1] = Op::MulSS(a, *b);
+                    return;
+                }
+            }
+            self.ops.push(f);
+            return;
+        }
+        let plain = match op {
+            BinOp::Add => Op::Add,
+            BinOp::Sub => Op::Sub,
+            BinOp::Mul => Op::Mul,
+            BinOp::Div => Op::Div,
+            _ => Op::Bin(op),
+        };
+        self.push(plain, -1);
     }
 
     fn expr(&mut self, e: &Expr) {
@@ -36,13 +89,34 @@ impl Emitter {
                 self.push(Op::Not, 0);
             }
             Expr::Bin(op, a, b) => {
+                // `c + b` and `c * b` are `b + c` and `b * c` to the bit (IEEE sums and products
+                // commute; with one operand a number, a NaN result is the other's NaN either
+                // way), and a constant reads no slot that `b` could change: emitted as `b`
+                // then `AddC`/`MulC`.
+                if let (BinOp::Add | BinOp::Mul, Some(c)) = (op, fold(a)) {
+                    if !c.is_nan() {
+                        self.expr(b);
+                        self.push(Op::Const(c), 1);
+                        self.arith(*op);
+                        return;
+                    }
+                }
                 self.expr(a);
                 self.expr(b);
-                self.push(Op::Bin(*op), -1);
+                self.arith(*op);
             }
             Expr::Math1(f, a) => {
                 self.expr(a);
-                self.push(Op::F1(*f), 0);
+                // A pointer that only looks different (another copy of the same function)
+                // still calls the same function through `F1`.
+                let op = if std::ptr::fn_addr_eq(*f, f64::sqrt as fn(f64) -> f64) {
+                    Op::Sqrt
+                } else if std::ptr::fn_addr_eq(*f, f64::abs as fn(f64) -> f64) {
+                    Op::Abs
+                } else {
+                    Op::F1(*f)
+                };
+                self.push(op, 0);
             }
             Expr::Math2(f, a, b) => {
                 self.expr(a);
@@ -99,7 +173,7 @@ impl Emitter {
                 self.push(Op::Store(var), -1);
                 self.expr(to);
                 self.push(Op::Const(if *product { 1.0 } else { 0.0 }), 1);
-                let top = self.ops.len() as u32;
+                let top = self.mark_label();
                 self.push(Op::Pick(1), 1);
                 self.push(Op::Load(var), 1);
                 self.push(Op::Bin(BinOp::Ge), -1);
@@ -107,13 +181,13 @@ impl Emitter {
                 self.push(Op::JumpIfZero(0), -1);
                 self.expr(body);
                 let step = if *product { BinOp::Mul } else { BinOp::Add };
-                self.push(Op::Bin(step), -1);
+                self.arith(step);
                 self.push(Op::Load(var), 1);
                 self.push(Op::Const(1.0), 1);
-                self.push(Op::Bin(BinOp::Add), -1);
+                self.arith(BinOp::Add);
                 self.push(Op::Store(var), -1);
                 self.push(Op::Jump(top), 0);
-                let exit = self.ops.len() as u32;
+                let exit = self.mark_label();
                 self.ops[jump_at] = Op::JumpIfZero(exit);
                 self.push(Op::Nip, -1);
             }
@@ -161,6 +235,7 @@ pub fn compile(body: &Expr, slots: usize) -> Code {
         callees: Vec::new(),
         depth: 0,
         max_depth: 0,
+        label: 0,
     };
     e.expr(body);
     Code {
@@ -168,5 +243,152 @@ pub fn compile(body: &Expr, slots: usize) -> Code {
         callees: e.callees,
         slots,
         max_stack: e.max_depth + 1,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The expression's value by walking its tree, the order of operations the bytecode
+    /// (fused or not) must keep.
+    fn walk(e: &Expr, slots: &mut [f64]) -> f64 {
+        match e {
+            Expr::Const(c) => *c,
+            Expr::Slot(s) => slots[*s],
+            Expr::Neg(a) => -walk(a, slots),
+            Expr::Not(a) => truth(walk(a, slots) == 0.0),
+            Expr::Bin(op, a, b) => {
+                let a = walk(a, slots);
+                op.apply(a, walk(b, slots))
+            }
+            Expr::Math1(f, a) => f(walk(a, slots)),
+            Expr::Math2(f, a, b) => {
+                let a = walk(a, slots);
+                f(a, walk(b, slots))
+            }
+            Expr::Loop {
+                product,
+                var,
+                from,
+                to,
+                body,
+            } => {
+                slots[*var] = walk(from, slots);
+                let end = walk(to, slots);
+                let mut acc = if *product { 1.0 } else { 0.0 };
+                while end >= slots[*var] {
+                    let b = walk(body, slots);
+                    acc = if *product { acc * b } else { acc + b };
+                    slots[*var] += 1.0;
+                }
+                acc
+            }
+            _ => unreachable!("not used here"),
+        }
+    }
+
+    fn bin(op: BinOp, a: Expr, b: Expr) -> Expr {
+        Expr::Bin(op, Box::new(a), Box::new(b))
+    }
+
+    #[test]
+    fn fused_operators_give_the_tree_walks_bits() {
+        use BinOp::*;
+        use Expr::{Const as K, Slot as S};
+        let (x, y, z) = (|| S(0), || S(1), || S(2));
+        let sqrt = |a: Expr| Expr::Math1(f64::sqrt, Box::new(a));
+        let bodies = [
+            // y - sin(x*4*pi)*0.1
+            bin(
+                Sub,
+                y(),
+                bin(
+                    Mul,
+                    Expr::Math1(
+                        f64::sin,
+                        Box::new(bin(Mul, bin(Mul, x(), K(4.0)), K(std::f64::consts::PI))),
+                    ),
+                    K(0.1),
+                ),
+            ),
+            // sqrt(x*x + y*y + z*z) - 0.9 + abs(z / y) - 3 / x
+            bin(
+                Sub,
+                bin(
+                    Add,
+                    bin(
+                        Sub,
+                        sqrt(bin(
+                            Add,
+                            bin(Add, bin(Mul, x(), x()), bin(Mul, y(), y())),
+                            bin(Mul, z(), z()),
+                        )),
+                        K(0.9),
+                    ),
+                    Expr::Math1(f64::abs, Box::new(bin(Div, z(), y()))),
+                ),
+                bin(Div, K(3.0), x()),
+            ),
+            // sum(i, 1, 4, i * x) + prod(j, 2, 3, y / j) - z  (slots 3 and 4 are i and j)
+            bin(
+                Sub,
+                bin(
+                    Add,
+                    Expr::Loop {
+                        product: false,
+                        var: 3,
+                        from: Box::new(K(1.0)),
+                        to: Box::new(K(4.0)),
+                        body: Box::new(bin(Mul, S(3), x())),
+                    },
+                    Expr::Loop {
+                        product: true,
+                        var: 4,
+                        from: Box::new(K(2.0)),
+                        to: Box::new(K(3.0)),
+                        body: Box::new(bin(Div, y(), S(4))),
+                    },
+                ),
+                z(),
+            ),
+            // 12*atan2(x, z) + (0.5 + x*y) * -0.0: constants on the left of commuting ops
+            bin(
+                Add,
+                bin(
+                    Mul,
+                    K(12.0),
+                    Expr::Math2(f64::atan2, Box::new(x()), Box::new(z())),
+                ),
+                bin(Mul, bin(Add, K(0.5), bin(Mul, x(), y())), K(-0.0)),
+            ),
+            // a loop whose body is one slot: the step's add follows the body's load
+            Expr::Loop {
+                product: false,
+                var: 3,
+                from: Box::new(x()),
+                to: Box::new(y()),
+                body: Box::new(S(3)),
+            },
+        ];
+        let mut rnd = crate::math::xorshift_unit(7);
+        for body in &bodies {
+            let code = compile(body, 5);
+            let special = [
+                [0.0, -0.0, 0.0],
+                [f64::NAN, 1.0, -0.0],
+                [f64::INFINITY, -0.5, f64::NEG_INFINITY],
+            ];
+            for k in 0..200 {
+                let args = special
+                    .get(k)
+                    .copied()
+                    .unwrap_or_else(|| [rnd() * 8.0 - 4.0, rnd() * 8.0 - 4.0, rnd() * 8.0 - 4.0]);
+                let mut slots = [args[0], args[1], args[2], 0.0, 0.0];
+                let want = walk(body, &mut slots);
+                let got = code.eval(&args);
+                assert_eq!(got.to_bits(), want.to_bits(), "{body:?} at {args:?}");
+            }
+        }
     }
 }

@@ -22,7 +22,27 @@ pub enum Op {
     Store(u32),
     Neg,
     Not,
+    /// Comparisons and logic; the four arithmetic operators have their own ops below.
     Bin(BinOp),
+    Add,
+    Sub,
+    Mul,
+    Div,
+    /// `top = top <op> slots[s]`: a `Load(s)` and the operator in one dispatch.
+    AddS(u32),
+    SubS(u32),
+    MulS(u32),
+    DivS(u32),
+    /// `top = top <op> c`: a `Const(c)` and the operator in one dispatch.
+    AddC(f64),
+    SubC(f64),
+    MulC(f64),
+    DivC(f64),
+    /// Pushes `slots[a] * slots[b]` (`x*x`): two `Load`s and the product in one dispatch.
+    MulSS(u32, u32),
+    /// `f64::sqrt` and `f64::abs` as instructions rather than calls through a pointer.
+    Sqrt,
+    Abs,
     F1(fn(f64) -> f64),
     F2(fn(f64, f64) -> f64),
     /// Minimum or maximum of the top `n` values.
@@ -71,7 +91,15 @@ impl Code {
     fn run(&self, args: &[f64], buf: &mut [f64]) -> f64 {
         let (slots, stack) = buf.split_at_mut(self.slots);
         let n = args.len().min(slots.len());
-        slots[..n].copy_from_slice(&args[..n]);
+        // Three arguments (x, y, z) are the common case; `copy_from_slice` of an unknown
+        // length was a call to memmove, 2 % of an isosurface render.
+        if n == 3 {
+            slots[0] = args[0];
+            slots[1] = args[1];
+            slots[2] = args[2];
+        } else {
+            slots[..n].copy_from_slice(&args[..n]);
+        }
         let mut sp = 0usize;
         let mut pc = 0usize;
         macro_rules! bin {
@@ -100,6 +128,24 @@ impl Code {
                 Op::Neg => stack[sp - 1] = -stack[sp - 1],
                 Op::Not => stack[sp - 1] = truth(stack[sp - 1] == 0.0),
                 Op::Bin(o) => bin!(|a, b| o.apply(a, b)),
+                Op::Add => bin!(|a, b| a + b),
+                Op::Sub => bin!(|a, b| a - b),
+                Op::Mul => bin!(|a, b| a * b),
+                Op::Div => bin!(|a, b| a / b),
+                Op::AddS(s) => stack[sp - 1] += slots[*s as usize],
+                Op::SubS(s) => stack[sp - 1] -= slots[*s as usize],
+                Op::MulS(s) => stack[sp - 1] *= slots[*s as usize],
+                Op::DivS(s) => stack[sp - 1] /= slots[*s as usize],
+                Op::AddC(c) => stack[sp - 1] += *c,
+                Op::SubC(c) => stack[sp - 1] -= *c,
+                Op::MulC(c) => stack[sp - 1] *= *c,
+                Op::DivC(c) => stack[sp - 1] /= *c,
+                Op::MulSS(a, b) => {
+                    stack[sp] = slots[*a as usize] * slots[*b as usize];
+                    sp += 1;
+                }
+                Op::Sqrt => stack[sp - 1] = stack[sp - 1].sqrt(),
+                Op::Abs => stack[sp - 1] = stack[sp - 1].abs(),
                 Op::F1(f) => stack[sp - 1] = f(stack[sp - 1]),
                 Op::F2(f) => bin!(f),
                 Op::Min(n) | Op::Max(n) => {

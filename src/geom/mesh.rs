@@ -39,14 +39,24 @@ impl Mesh {
             let v = c.map(|i| data.vertices.get(i as usize).copied());
             TriGeom::new([v[0]?, v[1]?, v[2]?])
         };
+        let valid_at = |c: [u32; 3]| {
+            let v = c.map(|i| data.vertices.get(i as usize).copied());
+            match v {
+                [Some(p0), Some(p1), Some(p2)] if surely_valid([p0, p1, p2]) => true,
+                _ => geom(c).is_some(),
+            }
+        };
         let n = data.triangles.len();
         let grid = grid_cells(&data);
         let mut valid = Vec::with_capacity(n);
         let mut boxes = Vec::with_capacity(if grid.is_some() { 0 } else { n });
         for i in 0..n {
-            let g = geom(data.triangles.corners(i));
-            valid.push(g.is_some());
-            if grid.is_none() {
+            let c = data.triangles.corners(i);
+            if grid.is_some() {
+                valid.push(valid_at(c));
+            } else {
+                let g = geom(c);
+                valid.push(g.is_some());
                 boxes.push(g.map_or(Aabb::EMPTY, |g| g.bounds()));
             }
         }
@@ -170,6 +180,17 @@ impl Shape for Mesh {
     }
 }
 
+/// True only where `TriGeom::new` gives a triangle, decided without its three square roots:
+/// the squared test with a factor 4 of margin (2 on the lengths, against a few roundings of
+/// 1e-16 each), on squares far from overflow and underflow. Anything else (false) is left to
+/// `TriGeom::new` itself.
+fn surely_valid(p: [DVec3; 3]) -> bool {
+    let (e1, e2) = (p[1] - p[0], p[2] - p[0]);
+    let n2 = e1.cross(e2).length_squared();
+    let l = e1.length_squared() * e2.length_squared();
+    p[0].is_finite() && l > 1e-250 && l < 1e250 && n2 > 4e-28 * l
+}
+
 /// `(nu, nv)` when the triangles are exactly `grid_mesh`'s for an `nu` × `nv` grid (corner
 /// indices only: normals and uvs do not shape the hierarchy), so `Bvh::build_grid` can build
 /// the hierarchy from the layout.
@@ -221,6 +242,26 @@ pub fn grid_mesh(
         }
     }
     let idx = |i: usize, j: usize| (j * (nu + 1) + i) as u32;
+    // Where every point is finite and every normal nonzero, every cell gives both triangles,
+    // smooth: their normal and uv indices are their corners, stored once for all.
+    if vertices.iter().all(|p| p.is_finite()) && normals.iter().all(|&n| n != DVec3::ZERO) {
+        let mut corners = Vec::with_capacity(nu * nv * 2);
+        for j in 0..nv {
+            for i in 0..nu {
+                let (a, b, c, d) = (idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
+                corners.push([a, b, c]);
+                corners.push([a, c, d]);
+            }
+        }
+        return MeshData {
+            vertices,
+            normals,
+            triangles: Triangles::same_as_corners(corners),
+            uvs,
+            textures: Vec::new(),
+            inside_vector: None,
+        };
+    }
     // Pushed as they come rather than collected and converted: a patch's list of
     // `MeshTriangle`s was 7 MB of fresh pages written once and read once.
     let mut triangles = Triangles::with_capacity(nu * nv * 2);

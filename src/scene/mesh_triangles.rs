@@ -99,6 +99,24 @@ impl Triangles {
         }
     }
 
+    /// Triangles whose normal and uv indices are their corner indices, as every triangle of
+    /// a generated grid without poles has them: what pushing each with `n` and `uv` equal
+    /// to `v` gives, without the per-triangle bookkeeping (1.5 ms of objects/bezier's
+    /// 131,072 triangles).
+    pub fn same_as_corners(v: Vec<[u32; 3]>) -> Triangles {
+        let same = if v.is_empty() {
+            Corners::Absent
+        } else {
+            Corners::SameAsV
+        };
+        Triangles {
+            v,
+            n: same.clone(),
+            uv: same,
+            texture: Vec::new(),
+        }
+    }
+
     pub fn len(&self) -> usize {
         self.v.len()
     }
@@ -218,5 +236,28 @@ mod tests {
         t.push(grid(1));
         assert_eq!(t.get(0).unwrap().n, None);
         assert_eq!(t.get(1).unwrap().n, Some([1, 2, 3]));
+    }
+
+    #[test]
+    fn same_as_corners_is_pushing_each() {
+        for k in [0u32, 1, 5] {
+            let v: Vec<[u32; 3]> = (0..k).map(|i| [i, i + 2, i + 1]).collect();
+            let pushed: Triangles = v
+                .iter()
+                .map(|&v| MeshTriangle {
+                    v,
+                    n: Some(v),
+                    texture: None,
+                    uv: Some(v),
+                })
+                .collect();
+            let built = Triangles::same_as_corners(v);
+            assert_eq!(built.len(), pushed.len());
+            assert_eq!(
+                built.iter().collect::<Vec<_>>(),
+                pushed.iter().collect::<Vec<_>>()
+            );
+            assert_eq!(format!("{built:?}"), format!("{pushed:?}"));
+        }
     }
 }
