@@ -122,7 +122,15 @@ impl<'a> Tracer<'a> {
                 return b.sum / b.weight;
             }
         }
+        // The point's own lights (`ctx.lit`, from `gather_lights`) are read by its layers
+        // once this returns; the gathering rays light their own hits in a list of their own.
+        // (They replaced the point's: a point that gathered was lit as the last gathering
+        // ray's hit, from that hit's lights and without its own shadows.)
+        let spare = ctx.lit_spare.pop().unwrap_or_default();
+        let own = std::mem::replace(&mut ctx.lit, spare);
         let s = self.gather(rad, p, n, level, path, ctx);
+        let spare = std::mem::replace(&mut ctx.lit, own);
+        ctx.lit_spare.push(spare);
         ctx.rad_local.push(s);
         s.irr
     }
