@@ -122,7 +122,15 @@ impl<'a> Tracer<'a> {
                 return b.sum / b.weight;
             }
         }
+        // The point's own lights (`ctx.lit`, from `gather_lights`) are read by its layers
+        // once this returns; the gathering rays light their own hits in a list of their own.
+        // (They replaced the point's: a point that gathered was lit as the last gathering
+        // ray's hit, from that hit's lights and without its own shadows.)
+        let spare = ctx.lit_spare.pop().unwrap_or_default();
+        let own = std::mem::replace(&mut ctx.lit, spare);
         let s = self.gather(rad, p, n, level, path, ctx);
+        let spare = std::mem::replace(&mut ctx.lit, own);
+        ctx.lit_spare.push(spare);
         ctx.rad_local.push(s);
         s.irr
     }
@@ -513,5 +521,46 @@ mod tests {
     fn pretrace_blocks_halve_to_the_end() {
         let set = RadiositySettings::default();
         assert_eq!(pretrace_blocks(&set, 160, 120), vec![12.8, 6.4]);
+    }
+
+    /// A point whose lookup misses gathers a sample, and the gathering rays shade hits of their
+    /// own: the point is still lit by its own lights. (They replaced its list: a point that
+    /// gathered was lit as the last gathering ray's hit saw the lights.) With `brightness 0`
+    /// and no ambient, every pixel is then what the scene gives without radiosity, to the bit.
+    #[test]
+    fn a_point_that_gathers_keeps_its_own_lights() {
+        let text = "#version 3.7;
+            global_settings { assumed_gamma 1 radiosity { count 20 brightness 0 } }
+            camera { location <0, 2, -4> look_at <0, 0, 0> }
+            light_source { <3, 20, -2> rgb 1 }
+            sphere { 0, 1000 hollow no_shadow pigment { rgb <0.3, 0.5, 1> }
+                     finish { ambient 0 diffuse 0 emission 1 } }
+            plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 0.8 } }
+            box { <-1, 1, -1>, <1, 1.2, 1> pigment { rgb <1, 0.5, 0.2> }
+                  finish { ambient 0 diffuse 0.8 } }";
+        let mut parser = crate::sdl::Parser::new(crate::sdl::ParseOptions::default());
+        parser.parse_str("gathers.pov", text).expect("parses");
+        let scene = crate::scene::build::build(&parser.scene, 24, 18).scene;
+        let camera = crate::render::camera::Camera::of_scene(&scene);
+        let plain = Tracer::new(
+            &scene,
+            &camera,
+            false,
+            crate::render::trace::Quality::level(9),
+        );
+        let set = scene.radiosity.as_ref().expect("radiosity");
+        // An empty cache: every lookup misses, so every lit point gathers.
+        let mut cache = Cache::with_pool(direction_pool(set.count), 2);
+        cache.file_new(set.error_bound, set.error_bound);
+        let gathering = final_tracer(&plain, set, &cache);
+        let mut ctx = Scratch::default();
+        for y in 0..18 {
+            for x in 0..24 {
+                let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);
+                let want = plain.trace_camera_at(px, py, &mut ctx).rgb;
+                let got = gathering.trace_camera_at(px, py, &mut ctx).rgb;
+                assert_eq!(got.to_array(), want.to_array(), "pixel ({x}, {y})");
+            }
+        }
     }
 }

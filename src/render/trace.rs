@@ -472,12 +472,10 @@ impl<'a> Tracer<'a> {
             // A radiosity pretrace pass keeps the samples its camera rays gather, not their
             // colour: the lights of what they meet do not matter.
             ctx.lit.clear();
-        } else if path.rad_level == 0 && !texture_map::lit_by_lights(top) {
+        } else if !texture_map::lit_by_lights(top) {
             // No layer would add anything per light (a sky dome's `diffuse 0`): no shadow
-            // rays. Nothing but `layer_light` reads the gathered lights. Not for radiosity's
-            // gathering rays: skipping there moved 206 pixels of radiosity/radiosity2 at
-            // +A0.3 (by 1-8 levels), so something the shadow rays leave behind in `ctx` is
-            // read by a later sample; not yet found (docs/performance.md, twelfth pass).
+            // rays. Nothing but `layer_light` reads the gathered lights, this hit's layers
+            // only (`irradiance` keeps them from the gathering rays' hits).
             ctx.lit.clear();
         } else {
             self.gather_lights(p, nf, bumpy, obj, path.rad_level > 0, ctx);

@@ -20,6 +20,9 @@ pub struct Scratch<'a> {
     pub rays: u64,
     /// The lights reaching the point being shaded, shared by its texture layers.
     pub lit: Vec<LitBy>,
+    /// Lists for `lit` while a radiosity sample is gathered below a shaded point: its
+    /// gathering rays shade hits of their own, and the point's layers read its own list after.
+    pub lit_spare: Vec<Vec<LitBy>>,
     /// Blob components reaching a shaded point, with their field (per-component textures).
     pub blob_weights: Vec<(usize, f64)>,
     /// Shadow samples of an area light's array already taken for the point being shaded.
