@@ -126,11 +126,17 @@ impl<'a> Tracer<'a> {
         // once this returns; the gathering rays light their own hits in a list of their own.
         // (They replaced the point's: a point that gathered was lit as the last gathering
         // ray's hit, from that hit's lights and without its own shadows.)
+        // The same holds for the surface `slope` and `aoi` patterns read (a thread-local set
+        // by each hit's `shade`): a later layer or part of the point's texture reads it.
+        let surface = crate::scene::pattern::surface_patterns_made().then(super::pattern::surface);
         let spare = ctx.lit_spare.pop().unwrap_or_default();
         let own = std::mem::replace(&mut ctx.lit, spare);
         let s = self.gather(rad, p, n, level, path, ctx);
         let spare = std::mem::replace(&mut ctx.lit, own);
         ctx.lit_spare.push(spare);
+        if let Some(surface) = surface {
+            super::pattern::set_surface(surface);
+        }
         ctx.rad_local.push(s);
         s.irr
     }
