@@ -37,11 +37,14 @@ impl Plane {
             return None;
         }
         let num = self.distance - self.normal.dot(ray.origin);
-        // A quotient's sign is the xor of its operands' signs: unless both are nonzero with
-        // the same sign, `t` is at most zero (or NaN) and fails `t > EPSILON` anyway. The
-        // division is skipped for the rays that leave the plane behind (every sky ray over a
-        // floor), the same answer.
-        if !((num > 0.0 && denom > 0.0) || (num < 0.0 && denom < 0.0)) {
+        // A quotient's sign is the xor of its operands' signs: where they differ, `t` is at
+        // most zero and fails `t > EPSILON` anyway, so the division is skipped for the rays
+        // that leave the plane behind (every sky ray over a floor), the same answer. Not for
+        // origins within EPSILON of the plane (shadow and reflected rays leaving it), where
+        // the numerator's sign is rounding noise: a branch on it mispredicted half the time
+        // (templates/Basic_Scenes/Checkered_plane 1.4 % slower), and the division's answer
+        // is as predictable.
+        if (num < -EPSILON && denom > 0.0) || (num > EPSILON && denom < 0.0) {
             return None;
         }
         let t = num / denom;
