@@ -36,7 +36,18 @@ impl Plane {
         if denom == 0.0 {
             return None;
         }
-        let t = (self.distance - self.normal.dot(ray.origin)) / denom;
+        let num = self.distance - self.normal.dot(ray.origin);
+        // A quotient's sign is the xor of its operands' signs: where they differ, `t` is at
+        // most zero and fails `t > EPSILON` anyway, so the division is skipped for the rays
+        // that leave the plane behind (every sky ray over a floor), the same answer. Not for
+        // origins within EPSILON of the plane (shadow and reflected rays leaving it), where
+        // the numerator's sign is rounding noise: a branch on it mispredicted half the time
+        // (templates/Basic_Scenes/Checkered_plane 1.4 % slower), and the division's answer
+        // is as predictable.
+        if (num < -EPSILON && denom > 0.0) || (num > EPSILON && denom < 0.0) {
+            return None;
+        }
+        let t = num / denom;
         (t > EPSILON && t.is_finite()).then_some(t)
     }
 }
@@ -95,6 +106,27 @@ mod tests {
         p.intersect_all(&Ray::new(DVec3::ZERO, DVec3::new(0.0, 0.5, 0.0)), &mut v);
         assert_eq!(v.len(), 1);
         assert_eq!(v[0].t, 4.0);
+    }
+
+    /// Skipping the division by signs answers as the division does, t bit for bit: rays
+    /// towards, away from, along and on planes, with zero, tiny and huge components.
+    #[test]
+    fn sign_test_is_the_division() {
+        let mut rng = crate::geom::test_rng::Lcg(4242);
+        let mut rnd = move || rng.next() * 2.0 - 1.0;
+        let pick = |v: f64, k: usize| [v, 0.0, -0.0, v * 1e-300, v * 1e300][k % 5];
+        for k in 0..50000 {
+            let n = DVec3::new(rnd(), pick(rnd(), k / 5), rnd());
+            let p = Plane::new(n, [0.0, rnd(), 1e10 * rnd()][k % 3]);
+            let o = DVec3::new(pick(rnd(), k / 25), rnd(), rnd()) * [1.0, 1e-8, 1e8][k % 3];
+            let d = DVec3::new(rnd(), pick(rnd(), k), pick(rnd(), k / 7));
+            let ray = Ray::new(o, d);
+            let denom = p.normal.dot(ray.dir);
+            let full = (denom != 0.0)
+                .then(|| (p.distance - p.normal.dot(ray.origin)) / denom)
+                .filter(|&t| t > EPSILON && t.is_finite());
+            assert_eq!(p.hit_t(&ray).map(f64::to_bits), full.map(f64::to_bits));
+        }
     }
 
     #[test]
