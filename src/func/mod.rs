@@ -50,8 +50,12 @@ pub enum FnKind {
     Internal(internal::Internal),
     /// `function { transform { ... } }`: a vector function of a point.
     Transform(Transform),
-    /// `function { pigment {...} }`: a colour function of a point.
-    Pigment(Box<crate::scene::desc::Pigment>),
+    /// `function { pigment {...} }`: a colour function of a point, with its key to the
+    /// renderer's memo of the last value (read once per colour component at a point).
+    Pigment(
+        Box<crate::scene::desc::Pigment>,
+        crate::render::pigment::Memo,
+    ),
     /// `function { pattern {...} }`: the pattern's value (a block pattern's item number),
     /// kept as the pigment it was read as, for its transform.
     Pattern(Box<crate::scene::desc::Pigment>),
@@ -184,9 +188,10 @@ impl Function {
     }
 
     pub fn pigment(p: crate::scene::desc::Pigment) -> Function {
+        let memo = crate::render::pigment::Memo::for_pigment(&p);
         Function {
             params: vec!["x".into(), "y".into(), "z".into()],
-            kind: FnKind::Pigment(Box::new(p)),
+            kind: FnKind::Pigment(Box::new(p), memo),
             unsupported: None,
         }
     }
@@ -212,7 +217,7 @@ impl Function {
     pub fn has_components(&self) -> bool {
         matches!(
             self.kind,
-            FnKind::Transform(_) | FnKind::Pigment(_) | FnKind::Spline(_)
+            FnKind::Transform(_) | FnKind::Pigment(..) | FnKind::Spline(_)
         )
     }
 
@@ -266,8 +271,8 @@ impl Function {
                 }
             }
             FnKind::Component(f, i) => match (&f.kind, *i) {
-                (FnKind::Pigment(p), i) => {
-                    let c = crate::render::pigment::eval(p, point(args));
+                (FnKind::Pigment(p, memo), i) => {
+                    let c = crate::render::pigment::eval_memo(p, *memo, point(args));
                     match i {
                         0..=2 => c.rgb[i as usize],
                         3 => c.filter,
@@ -279,7 +284,7 @@ impl Function {
                 (FnKind::Spline(s), i) if i < 5 => s.eval(first(args), s.kind)[i as usize],
                 _ => f64::NAN,
             },
-            FnKind::Transform(_) | FnKind::Pigment(_) | FnKind::Spline(_) => f64::NAN,
+            FnKind::Transform(_) | FnKind::Pigment(..) | FnKind::Spline(_) => f64::NAN,
         }
     }
 
@@ -287,7 +292,9 @@ impl Function {
     pub fn call(&self, args: &[f64]) -> FnValue {
         match &self.kind {
             FnKind::Transform(t) => FnValue::Vector(t.point(point(args))),
-            FnKind::Pigment(p) => FnValue::Vector(crate::render::pigment::eval(p, point(args)).rgb),
+            FnKind::Pigment(p, memo) => {
+                FnValue::Vector(crate::render::pigment::eval_memo(p, *memo, point(args)).rgb)
+            }
             FnKind::Spline(s) => FnValue::Components(s.eval(first(args), s.kind), s.dim.max(2)),
             _ => FnValue::Float(self.eval(args)),
         }

@@ -1,12 +1,14 @@
 //! Evaluating pigments at a world point: colour maps, pigment lists, pigment maps and image
 //! maps over the pattern values of `render::pattern`.
 
+use std::cell::Cell;
 use std::f64::consts::PI;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 use crate::color::Rgbft;
 use crate::math::DVec3;
 use crate::scene::desc::{ColorMap, ImageMap, Pigment, PigmentKind};
-use crate::scene::pattern::PatternKind;
+use crate::scene::pattern::{Pattern, PatternKind};
 
 use super::pattern;
 
@@ -43,6 +45,81 @@ pub fn eval(p: &Pigment, world: DVec3) -> Rgbft {
         PigmentKind::ImageMap(im, Some(pat)) => image(im, pattern::warped(pat, lp)),
         PigmentKind::ImageMap(im, None) => image(im, lp),
     }
+}
+
+/// A pigment function's key to the per-thread memo of its last value, or `NONE` when the
+/// pigment's colour is not a function of the point alone.
+///
+/// `Correct_Pigment_Gamma` (cantelop, blkhole, warp2, the `_37` woods) reads one pigment
+/// function three times at the same point, once per colour component; the memo makes the
+/// second and third reads a compare. Keys are numbered once per process, so a key never
+/// names another pigment (an animation's later frame may put a new pigment at an old one's
+/// address).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Memo(u64);
+
+impl Memo {
+    pub const NONE: Memo = Memo(0);
+
+    /// A fresh key for `p` if its colour depends on the point alone: no slope or aoi (which
+    /// read the surface being shaded, a thread-local), and no function or object pattern
+    /// (checking what a function calls is not worth it for a memo).
+    pub fn for_pigment(p: &Pigment) -> Memo {
+        static NEXT: AtomicU64 = AtomicU64::new(1);
+        if point_alone(p) {
+            Memo(NEXT.fetch_add(1, Ordering::Relaxed))
+        } else {
+            Memo::NONE
+        }
+    }
+}
+
+/// Whether `p`'s colour is a function of the point alone (see [`Memo::for_pigment`]).
+fn point_alone(p: &Pigment) -> bool {
+    let pattern_alone = |pat: &Pattern| match &pat.kind {
+        PatternKind::Slope(_)
+        | PatternKind::Aoi
+        | PatternKind::Function(_)
+        | PatternKind::Object(_) => false,
+        PatternKind::PigmentPattern(inner) => point_alone(inner),
+        _ => true,
+    };
+    match &p.kind {
+        PigmentKind::Solid(_) | PigmentKind::ImageMap(_, None) => true,
+        PigmentKind::ImageMap(_, Some(pat)) | PigmentKind::Mapped { pattern: pat, .. } => {
+            pattern_alone(pat)
+        }
+        PigmentKind::List {
+            pattern: pat,
+            items,
+        } => pattern_alone(pat) && items.iter().all(point_alone),
+        PigmentKind::PigmentMap { pattern: pat, map } => {
+            pattern_alone(pat) && map.iter().all(|(_, p)| point_alone(p))
+        }
+    }
+}
+
+thread_local! {
+    /// The last memoised pigment function's key, point bits and colour.
+    static LAST: Cell<(u64, [u64; 3], Rgbft)> = const {
+        Cell::new((0, [0; 3], Rgbft::BLACK))
+    };
+}
+
+/// `eval(p, world)`, remembered per thread under `memo` (the key of `p`, or `Memo::NONE`).
+pub fn eval_memo(p: &Pigment, memo: Memo, world: DVec3) -> Rgbft {
+    if memo == Memo::NONE {
+        return eval(p, world);
+    }
+    let bits = world.to_array().map(f64::to_bits);
+    let (k, b, c) = LAST.with(|l| l.get());
+    if k == memo.0 && b == bits {
+        return c;
+    }
+    // Evaluated before the store: a pigment function read inside `p` stores its own entry.
+    let c = eval(p, world);
+    LAST.with(|l| l.set((memo.0, bits, c)));
+    c
 }
 
 /// Whether the pigment's own pattern reads the surface normal (slope, aoi), so the caller
@@ -292,6 +369,50 @@ mod tests {
             }
         }
         map[map.len() - 1].1
+    }
+
+    fn mapped(kind: PatternKind, map: ColorMap) -> Pigment {
+        Pigment {
+            kind: PigmentKind::Mapped {
+                pattern: Box::new(Pattern::new(kind)),
+                map,
+            },
+            ..Pigment::solid(Rgbft::BLACK)
+        }
+    }
+
+    #[test]
+    fn remembered_colours_are_the_pigments() {
+        let bits = |c: Rgbft| c.to_array().map(f64::to_bits);
+        let ramp = |a: f64, b: f64| {
+            vec![
+                (0.0, Rgbft::rgb(DVec3::new(a, 0.0, 1.0))),
+                (1.0, Rgbft::rgb(DVec3::new(b, 1.0, 0.5))),
+            ]
+        };
+        let onion = mapped(PatternKind::Onion, ramp(0.1, 0.9));
+        let bozo = mapped(PatternKind::Bozo, ramp(0.7, 0.2));
+        let (m1, m2) = (Memo::for_pigment(&onion), Memo::for_pigment(&bozo));
+        assert!(m1 != Memo::NONE && m2 != Memo::NONE && m1 != m2);
+        // Reads that repeat a point, alternate the pigments and differ in one bit (-0.0).
+        let mut points: Vec<DVec3> = (0..50)
+            .map(|i| DVec3::new(i as f64 * 0.137, -0.3 * i as f64, 1.0 / (i + 1) as f64))
+            .collect();
+        points.extend([DVec3::ZERO, DVec3::new(-0.0, 0.0, 0.0), DVec3::ZERO]);
+        for &p in &points {
+            for (pig, memo) in [(&onion, m1), (&onion, m1), (&bozo, m2), (&onion, m1)] {
+                assert_eq!(bits(eval_memo(pig, memo, p)), bits(eval(pig, p)), "{p}");
+            }
+        }
+        // A pigment that reads the surface being shaded is never remembered.
+        let aoi = mapped(PatternKind::Aoi, ramp(0.0, 1.0));
+        assert_eq!(Memo::for_pigment(&aoi), Memo::NONE);
+        let mut nested = mapped(PatternKind::Onion, ramp(0.0, 1.0));
+        nested.kind = PigmentKind::List {
+            pattern: Box::new(Pattern::new(PatternKind::Checker)),
+            items: vec![onion.clone(), aoi],
+        };
+        assert_eq!(Memo::for_pigment(&nested), Memo::NONE);
     }
 
     #[test]

@@ -520,7 +520,7 @@ impl Parser {
         }
         // Measured (trace() onto `function 8, 8 { pigment { rgb C } }`): a pigment function's
         // height is its grey, 0.297 r + 0.589 g + 0.114 b; filter and transmit do not count.
-        let f = if matches!(f.kind, FnKind::Pigment(_)) {
+        let f = if matches!(f.kind, FnKind::Pigment(..)) {
             Arc::new(Function::component(f, 5))
         } else {
             f
