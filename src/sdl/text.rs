@@ -80,14 +80,9 @@ impl Parser {
                 .flatten()
         });
         let Some(path) = path else {
-            let searched: Vec<String> = self
-                .search_dirs()
-                .iter()
-                .map(|d| d.display().to_string())
-                .collect();
             let d = self.error_at(span, format!("cannot find font file \"{name}\""));
             return Err(Box::new(
-                d.with_note(format!("searched: {}", searched.join(", ")))
+                d.with_note(self.searched_note())
                     .with_note("POV-Ray's fonts (timrom.ttf, cyrvetic.ttf, crystal.ttf, povlogo.ttf) come with Debian's povray-includes package; other directories can be added with +L<dir>"),
             ));
         };

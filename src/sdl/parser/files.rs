@@ -47,17 +47,12 @@ impl Parser {
     /// `Include_Header`: the file is read as if the scene's first line included it.
     pub(super) fn include_header(&mut self, name: &str) -> PResult<()> {
         let Some(path) = self.find_file(name) else {
-            let searched: Vec<String> = self
-                .search_dirs()
-                .iter()
-                .map(|d| d.display().to_string())
-                .collect();
             return Err(Box::new(
                 Diagnostic::error(
                     format!("cannot find the Include_Header file \"{name}\" (+HI option)"),
                     None,
                 )
-                .with_note(format!("searched: {}", searched.join(", "))),
+                .with_note(self.searched_note()),
             ));
         };
         let (_, tokens) = self.load(&path, None)?;
@@ -198,16 +193,21 @@ impl Parser {
             .collect()
     }
 
+    /// The "searched: a, b, c" note of a file not found, listing `search_dirs` in order.
+    pub(in crate::sdl) fn searched_note(&self) -> String {
+        let dirs: Vec<String> = self
+            .search_dirs()
+            .iter()
+            .map(|d| d.display().to_string())
+            .collect();
+        format!("searched: {}", dirs.join(", "))
+    }
+
     pub(in crate::sdl) fn include(&mut self, name: &str, site: Span) -> PResult<()> {
         let Some(path) = self.find_file(name) else {
-            let searched: Vec<String> = self
-                .search_dirs()
-                .iter()
-                .map(|d| d.display().to_string())
-                .collect();
             let d = self.error_at(site, format!("cannot find include file \"{name}\""));
             return Err(Box::new(
-                d.with_note(format!("searched: {}", searched.join(", ")))
+                d.with_note(self.searched_note())
                     .with_note("POV-Ray's standard include files come with Debian's povray-includes package (apt-get install povray-includes); other directories can be added with +L<dir>"),
             ));
         };
