@@ -207,17 +207,29 @@ fn grid_cells(data: &MeshData) -> Option<(usize, usize)> {
     if data.vertices.len() != (nu + 1) * (nv + 1) {
         return None;
     }
+    let mut k = 0;
+    let same = each_grid_triangle(nu, nv, |t| {
+        k += 1;
+        tris.corners(k - 1) == t
+    });
+    same.then_some((nu, nv))
+}
+
+/// Calls `f` with the corner indices of `grid_mesh`'s triangles for an `nu` × `nv` grid, in
+/// its order (row by row, two triangles a cell), until `f` says stop; whether it went
+/// through. A loop rather than an iterator: a nested `flat_map` made objects/bezier's
+/// start-up 2-5 ms slower.
+fn each_grid_triangle(nu: usize, nv: usize, mut f: impl FnMut([u32; 3]) -> bool) -> bool {
     let idx = |i: usize, j: usize| (j * (nu + 1) + i) as u32;
     for j in 0..nv {
         for i in 0..nu {
             let (a, b, c, d) = (idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
-            let k = 2 * (j * nu + i);
-            if tris.corners(k) != [a, b, c] || tris.corners(k + 1) != [a, c, d] {
-                return None;
+            if !f([a, b, c]) || !f([a, c, d]) {
+                return false;
             }
         }
     }
-    Some((nu, nv))
+    true
 }
 
 /// A surface sampled on a regular grid of `nu` × `nv` cells as smooth triangles (bicubic
@@ -241,47 +253,34 @@ pub fn grid_mesh(
             uvs.push(uv);
         }
     }
-    let idx = |i: usize, j: usize| (j * (nu + 1) + i) as u32;
     // Where every point is finite and every normal nonzero, every cell gives both triangles,
     // smooth: their normal and uv indices are their corners, stored once for all.
-    if vertices.iter().all(|p| p.is_finite()) && normals.iter().all(|&n| n != DVec3::ZERO) {
-        let mut corners = Vec::with_capacity(nu * nv * 2);
-        for j in 0..nv {
-            for i in 0..nu {
-                let (a, b, c, d) = (idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
-                corners.push([a, b, c]);
-                corners.push([a, c, d]);
-            }
-        }
-        return MeshData {
-            vertices,
-            normals,
-            triangles: Triangles::same_as_corners(corners),
-            uvs,
-            textures: Vec::new(),
-            inside_vector: None,
-        };
-    }
-    // Pushed as they come rather than collected and converted: a patch's list of
-    // `MeshTriangle`s was 7 MB of fresh pages written once and read once.
-    let mut triangles = Triangles::with_capacity(nu * nv * 2);
-    for j in 0..nv {
-        for i in 0..nu {
-            let (a, b, c, d) = (idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
-            for t in [[a, b, c], [a, c, d]] {
-                if !t.iter().all(|&k| vertices[k as usize].is_finite()) {
-                    continue;
+    let triangles =
+        if vertices.iter().all(|p| p.is_finite()) && normals.iter().all(|&n| n != DVec3::ZERO) {
+            let mut corners = Vec::with_capacity(nu * nv * 2);
+            each_grid_triangle(nu, nv, |t| {
+                corners.push(t);
+                true
+            });
+            Triangles::same_as_corners(corners)
+        } else {
+            // Pushed as they come rather than collected and converted: a patch's list of
+            // `MeshTriangle`s was 7 MB of fresh pages written once and read once.
+            let mut triangles = Triangles::with_capacity(nu * nv * 2);
+            each_grid_triangle(nu, nv, |t| {
+                if t.iter().all(|&k| vertices[k as usize].is_finite()) {
+                    let smooth = t.iter().all(|&k| normals[k as usize] != DVec3::ZERO);
+                    triangles.push(MeshTriangle {
+                        v: t,
+                        n: smooth.then_some(t),
+                        texture: None,
+                        uv: Some(t),
+                    });
                 }
-                let smooth = t.iter().all(|&k| normals[k as usize] != DVec3::ZERO);
-                triangles.push(MeshTriangle {
-                    v: t,
-                    n: smooth.then_some(t),
-                    texture: None,
-                    uv: Some(t),
-                });
-            }
-        }
-    }
+                true
+            });
+            triangles
+        };
     MeshData {
         vertices,
         normals,
