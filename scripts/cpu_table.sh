@@ -31,8 +31,9 @@ lancer_ms() { # binary scene-path
   local dir best=""
   dir=$(dirname "$2")
   for _ in $(seq "$reps"); do
-    perf stat -x, -e task-clock -o "$tmp/stat" "$1" -A +W320 +H240 +WT1 +FP "+L$dir" "+L$inc" \
-      "+I$2" "+O$tmp/l.ppm" -q >/dev/null 2>&1
+    # In the scratch directory: scenes that write files (#fopen) write them there.
+    (cd "$tmp" && perf stat -x, -e task-clock -o "$tmp/stat" "$1" -A +W320 +H240 +WT1 +FP "+L$dir" "+L$inc" \
+      "+I$2" "+O$tmp/l.ppm" -q >/dev/null 2>&1)
     grep task-clock "$tmp/stat" | cut -d, -f1
   done | sort -g | head -1 | awk '{printf "%.0f", $1}'
 }
