@@ -526,7 +526,11 @@ mod tests {
                     _ => {}
                 }
                 let ray = Ray::new(origin, dir);
-                let tmax = if k % 3 == 0 { f64::INFINITY } else { 4.0 + rng.next() * 20.0 };
+                let tmax = if k % 3 == 0 {
+                    f64::INFINITY
+                } else {
+                    4.0 + rng.next() * 20.0
+                };
                 want.clear();
                 got.clear();
                 walk_binary(&bin, &prims, &ray, tmax, &mut want);
@@ -555,7 +559,11 @@ mod tests {
                     }
                     if b.count > 0 {
                         let first = b.index as usize;
-                        by_list.extend(prims[first..first + b.count as usize].iter().map(|&q| q as usize));
+                        by_list.extend(
+                            prims[first..first + b.count as usize]
+                                .iter()
+                                .map(|&q| q as usize),
+                        );
                     } else {
                         st.push(b.index as usize);
                         st.push(i + 1);

@@ -16,16 +16,8 @@ pub(super) struct Pair {
 impl Pair {
     pub(super) fn of(a: &Aabb, b: &Aabb) -> Pair {
         Pair {
-            lo: [
-                [a.min.x, b.min.x],
-                [a.min.y, b.min.y],
-                [a.min.z, b.min.z],
-            ],
-            hi: [
-                [a.max.x, b.max.x],
-                [a.max.y, b.max.y],
-                [a.max.z, b.max.z],
-            ],
+            lo: [[a.min.x, b.min.x], [a.min.y, b.min.y], [a.min.z, b.min.z]],
+            hi: [[a.max.x, b.max.x], [a.max.y, b.max.y], [a.max.z, b.max.z]],
         }
     }
 
@@ -142,9 +134,12 @@ impl Slabs2 {
             let (nx, fx) = axis(0);
             let (ny, fy) = axis(1);
             let (nz, fz) = axis(2);
-            // max_element is x.max(y.max(z)), then .max(0.0); likewise for the far side.
-            let near = _mm_max_pd(_mm_max_pd(nx, _mm_max_pd(ny, nz)), _mm_setzero_pd());
-            let far = _mm_min_pd(_mm_min_pd(fx, _mm_min_pd(fy, fz)), _mm_set1_pd(tmax));
+            // max_element is x.max(y.max(z)), then .max(0.0); likewise for the far side. With
+            // no NaN in them maxima and minima may be taken in any grouping (the value is the
+            // same up to the sign of a zero, which no comparison sees): pairs first, for a
+            // chain of two operations instead of three before the comparison.
+            let near = _mm_max_pd(_mm_max_pd(nx, _mm_setzero_pd()), _mm_max_pd(ny, nz));
+            let far = _mm_min_pd(_mm_min_pd(fx, _mm_set1_pd(tmax)), _mm_min_pd(fy, fz));
             let mask = _mm_movemask_pd(_mm_cmple_pd(near, far));
             let mut t = [0.0f64; 2];
             _mm_storeu_pd(t.as_mut_ptr(), near);
