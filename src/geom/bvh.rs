@@ -433,7 +433,7 @@ mod tests {
             out.push(p);
             // Every third primitive "hits" at its place along the ray, pruning as a
             // nearest-hit query does.
-            if p % 3 == 0 {
+            if p.is_multiple_of(3) {
                 *tmax = tmax.min(1.0 + p as f64 * 0.01);
             }
         };
@@ -536,7 +536,7 @@ mod tests {
                 walk_binary(&bin, &prims, &ray, tmax, &mut want);
                 bvh.traverse(&ray, tmax, |p, t| {
                     got.push(p as u32);
-                    if p % 3 == 0 {
+                    if p.is_multiple_of(3) {
                         *t = t.min(1.0 + p as f64 * 0.01);
                     }
                     false
