@@ -25,8 +25,9 @@ const BIG: f64 = 1e30;
 /// Cost of visiting an interior node relative to testing one primitive.
 const TRAVERSAL_COST: f64 = 1.0;
 
+/// A node as the builders lay it out: its own box, the first child right after it.
 #[derive(Clone, Copy, Debug)]
-struct Node {
+struct BinNode {
     bounds: Aabb,
     /// Leaf: first entry in `Bvh::prims`. Interior: index of the second child.
     index: u32,
@@ -34,13 +35,49 @@ struct Node {
     count: u32,
 }
 
-#[derive(Clone, Debug, Default)]
+/// A child as its parent refers to it: an interior node (`count` 0, `index` into
+/// `Bvh::nodes`) or a leaf (`count` primitives from `Bvh::prims[index]`).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct Ref {
+    index: u32,
+    count: u32,
+}
+
+/// An interior node as the walk reads it: both children's boxes side by side (one aligned
+/// load per axis and side for the paired slab test, where the builders' layout needed two
+/// scalar loads and a shuffle from two nodes apart), then the children themselves. 112
+/// bytes; half as many nodes as the builders' layout, so the same memory.
+#[derive(Clone, Copy, Debug)]
+#[repr(C)]
+struct Node {
+    boxes: Pair,
+    child: [Ref; 2],
+}
+
+#[derive(Clone, Debug)]
 pub struct Bvh {
+    /// Interior nodes in depth-first order (the first child's subtree right after its
+    /// parent); empty when the root is a leaf.
     nodes: Vec<Node>,
     prims: Vec<u32>,
+    /// The root's box and the root itself (a leaf of no primitives when there are none).
+    root_box: Aabb,
+    root: Ref,
     /// Every node's box is finite, so a ray with a finite origin and finite, nonzero
     /// direction components never makes a NaN in the slab test (`Slabs2`).
     finite: bool,
+}
+
+impl Default for Bvh {
+    fn default() -> Bvh {
+        Bvh {
+            nodes: Vec::new(),
+            prims: Vec::new(),
+            root_box: Aabb::EMPTY,
+            root: Ref::default(),
+            finite: false,
+        }
+    }
 }
 
 /// `1.0 / ray.dir`, each component read on its own. Callers have usually just written the ray
@@ -61,132 +98,11 @@ pub fn ray_recip(ray: &Ray) -> DVec3 {
     DVec3::new(1.0 / x, 1.0 / y, 1.0 / z)
 }
 
-/// The slab test of two boxes at once, one per SSE lane, for a ray whose slab distances cannot
-/// be NaN except along its `flat` axes (computed apart). Each lane does `Aabb::hit`'s
-/// operations in its order; without NaNs the minimum and maximum instructions give
-/// `f64::min`'s and `f64::max`'s values (up to the sign of a zero, which no comparison sees),
-/// so the answers and the entry distances are `Aabb::hit`'s bit for bit (unit tests
-/// `paired_slabs_match_aabb_hit` and `..._for_flat_rays`). `Aabb::hit` spends a third of its
-/// work on the NaN handling of `f64::min`.
-#[cfg(target_arch = "x86_64")]
-struct Slabs2 {
-    origin: [std::arch::x86_64::__m128d; 3],
-    inv_dir: [std::arch::x86_64::__m128d; 3],
-    /// Axes whose reciprocal direction is infinite (a direction component of ±0, as every
-    /// ray of an axis-aligned orthographic or cylinder camera has): their slab distances can
-    /// be NaN (0·∞ where the origin lies on a box's face), so they are computed as `Aabb::hit`
-    /// computes them, NaN-aware, one box at a time (`flat_axis`).
-    flat: [bool; 3],
-    origin_s: DVec3,
-    inv_s: DVec3,
-}
-
-#[cfg(target_arch = "x86_64")]
-impl Slabs2 {
-    /// None for a non-finite origin or a NaN direction: such rays take `Aabb::hit`. Axes of
-    /// infinite reciprocal direction are `flat`.
-    #[inline]
-    fn new(origin: DVec3, inv_dir: DVec3) -> Option<Slabs2> {
-        use std::arch::x86_64::_mm_set1_pd;
-        if !origin.is_finite() || inv_dir.is_nan_mask().any() || inv_dir.cmpeq(DVec3::ZERO).any() {
-            return None;
-        }
-        // SAFETY: SSE2 is part of x86_64.
-        unsafe {
-            Some(Slabs2 {
-                origin: [
-                    _mm_set1_pd(origin.x),
-                    _mm_set1_pd(origin.y),
-                    _mm_set1_pd(origin.z),
-                ],
-                inv_dir: [
-                    _mm_set1_pd(inv_dir.x),
-                    _mm_set1_pd(inv_dir.y),
-                    _mm_set1_pd(inv_dir.z),
-                ],
-                flat: [
-                    inv_dir.x.is_infinite(),
-                    inv_dir.y.is_infinite(),
-                    inv_dir.z.is_infinite(),
-                ],
-                origin_s: origin,
-                inv_s: inv_dir,
-            })
-        }
-    }
-
-    /// A flat axis's (near, far) slab distances for one box, as `Aabb::hit` has them: its
-    /// `f64::min` and `f64::max` of the two distances, which ignore a NaN. Both NaN (a box
-    /// flat in this axis with the origin in its plane) gives (−∞, +∞), which the reductions
-    /// that follow treat as `f64::max` and `f64::min` treat the NaNs: as absent.
-    #[inline]
-    fn flat_axis(&self, k: usize, lo: f64, hi: f64) -> (f64, f64) {
-        let (o, inv) = (self.origin_s[k], self.inv_s[k]);
-        let (t0, t1) = ((lo - o) * inv, (hi - o) * inv);
-        let (near, far) = (t0.min(t1), t0.max(t1));
-        if near.is_nan() {
-            (f64::NEG_INFINITY, f64::INFINITY)
-        } else {
-            (near, far)
-        }
-    }
-
-    /// `Aabb::hit` of `a` and of `b` within (0, tmax): the entry distances of those crossed.
-    #[inline]
-    fn hit2(&self, a: &Aabb, b: &Aabb, tmax: f64) -> (Option<f64>, Option<f64>) {
-        use std::arch::x86_64::*;
-        // SAFETY: SSE2 is part of x86_64; the stores write two doubles into a two-double array.
-        unsafe {
-            let axis = |k: usize, lo_a: f64, lo_b: f64, hi_a: f64, hi_b: f64| {
-                if self.flat[k] {
-                    let (na, fa) = self.flat_axis(k, lo_a, hi_a);
-                    let (nb, fb) = self.flat_axis(k, lo_b, hi_b);
-                    return (_mm_set_pd(nb, na), _mm_set_pd(fb, fa));
-                }
-                let t0 = _mm_mul_pd(
-                    _mm_sub_pd(_mm_set_pd(lo_b, lo_a), self.origin[k]),
-                    self.inv_dir[k],
-                );
-                let t1 = _mm_mul_pd(
-                    _mm_sub_pd(_mm_set_pd(hi_b, hi_a), self.origin[k]),
-                    self.inv_dir[k],
-                );
-                (_mm_min_pd(t0, t1), _mm_max_pd(t0, t1))
-            };
-            let (nx, fx) = axis(0, a.min.x, b.min.x, a.max.x, b.max.x);
-            let (ny, fy) = axis(1, a.min.y, b.min.y, a.max.y, b.max.y);
-            let (nz, fz) = axis(2, a.min.z, b.min.z, a.max.z, b.max.z);
-            // max_element is x.max(y.max(z)), then .max(0.0); likewise for the far side.
-            let near = _mm_max_pd(_mm_max_pd(nx, _mm_max_pd(ny, nz)), _mm_setzero_pd());
-            let far = _mm_min_pd(_mm_min_pd(fx, _mm_min_pd(fy, fz)), _mm_set1_pd(tmax));
-            let mask = _mm_movemask_pd(_mm_cmple_pd(near, far));
-            let mut t = [0.0f64; 2];
-            _mm_storeu_pd(t.as_mut_ptr(), near);
-            (
-                (mask & 1 != 0).then_some(t[0]),
-                (mask & 2 != 0).then_some(t[1]),
-            )
-        }
-    }
-}
-
-/// Other targets take `Aabb::hit` for every ray.
-#[cfg(not(target_arch = "x86_64"))]
-struct Slabs2;
-
-#[cfg(not(target_arch = "x86_64"))]
-impl Slabs2 {
-    fn new(_: DVec3, _: DVec3) -> Option<Slabs2> {
-        None
-    }
-    fn hit2(&self, _: &Aabb, _: &Aabb, _: f64) -> (Option<f64>, Option<f64>) {
-        unreachable!()
-    }
-}
-
 mod build;
+mod slabs;
 
 use build::{centroid, clamp_box, Builder};
+use slabs::{Pair, Slabs2};
 
 impl Bvh {
     /// Binned SAH (16 bins), leaves of at most 4 primitives; `bounds[i]` is primitive i's box.
@@ -223,16 +139,52 @@ impl Bvh {
         // grows (the pages never written cost no memory).
         let mut nodes = Vec::with_capacity(2 * prims.len());
         builder.subtree(&mut prims, 0, 0, &mut nodes);
-        let finite = nodes.iter().all(|n| n.bounds.is_finite());
+        Bvh::from_binary(&nodes, prims)
+    }
+
+    /// The walk's layout of a tree the builders laid out as `bin` (non-empty) over `prims`.
+    fn from_binary(bin: &[BinNode], prims: Vec<u32>) -> Bvh {
+        // Interior nodes in `bin`'s order, so the walk meets them in the same order of
+        // memory; a node's slot is taken before its children's.
+        fn pack(bin: &[BinNode], i: usize, out: &mut Vec<Node>) -> Ref {
+            let n = &bin[i];
+            if n.count > 0 {
+                return Ref {
+                    index: n.index,
+                    count: n.count,
+                };
+            }
+            let (a, b) = (i + 1, n.index as usize);
+            let slot = out.len();
+            out.push(Node {
+                boxes: Pair::of(&bin[a].bounds, &bin[b].bounds),
+                child: [Ref::default(); 2],
+            });
+            let ra = pack(bin, a, out);
+            let rb = pack(bin, b, out);
+            out[slot].child = [ra, rb];
+            Ref {
+                index: slot as u32,
+                count: 0,
+            }
+        }
+        let mut nodes = Vec::with_capacity(bin.len() / 2);
+        let root = pack(bin, 0, &mut nodes);
         Bvh {
             nodes,
             prims,
-            finite,
+            root_box: bin[0].bounds,
+            root,
+            finite: bin.iter().all(|n| n.bounds.is_finite()),
         }
     }
 
     pub fn bounds(&self) -> Aabb {
-        self.nodes.first().map_or(Aabb::EMPTY, |n| n.bounds)
+        if self.prims.is_empty() {
+            Aabb::EMPTY
+        } else {
+            self.root_box
+        }
     }
 
     /// Visits primitives whose box the ray crosses within (0, tmax), nearest child first. The
@@ -252,12 +204,12 @@ impl Bvh {
         mut tmax: f64,
         mut f: impl FnMut(usize, &mut f64) -> bool,
     ) {
-        let Some(root) = self.nodes.first() else {
+        if self.prims.is_empty() {
             return;
-        };
+        }
         let origin = ray.origin;
         // A tree of one leaf (a CSG node's few members) has no pair of boxes to test.
-        let slabs = if self.finite && self.nodes.len() > 1 {
+        let slabs = if self.finite && !self.nodes.is_empty() {
             Slabs2::new(origin, inv_dir)
         } else {
             None
@@ -266,8 +218,8 @@ impl Bvh {
         // few objects, `Aabb::hit`'s NaN-aware minima and maxima at the root were a
         // twentieth of a small scene's time.
         let root_missed = match &slabs {
-            Some(s) => s.hit2(&root.bounds, &root.bounds, tmax).0.is_none(),
-            None => root.bounds.hit(origin, inv_dir, tmax).is_none(),
+            Some(s) => s.hit2(&self.root_box, &self.root_box, tmax).0.is_none(),
+            None => self.root_box.hit(origin, inv_dir, tmax).is_none(),
         };
         if root_missed {
             return;
@@ -275,43 +227,46 @@ impl Bvh {
         // Far children waiting, with their entry distance so they can be skipped once a
         // closer hit has lowered tmax. Left uninitialised: zeroing 2 KB on every traversal
         // (every camera, shadow and mesh ray) cost about a tenth of the render.
-        let mut stack = [const { MaybeUninit::<(u32, f64)>::uninit() }; STACK];
+        let mut stack = [const { MaybeUninit::<(Ref, f64)>::uninit() }; STACK];
         let mut sp = 0;
-        let mut node = 0usize;
+        let mut at = self.root;
         loop {
-            let n = &self.nodes[node];
-            if n.count > 0 {
-                let first = n.index as usize;
-                for &p in &self.prims[first..first + n.count as usize] {
+            if at.count > 0 {
+                let first = at.index as usize;
+                for &p in &self.prims[first..first + at.count as usize] {
                     if f(p as usize, &mut tmax) {
                         return;
                     }
                 }
             } else {
-                let (a, b) = (node + 1, n.index as usize);
+                let n = &self.nodes[at.index as usize];
                 let (ha, hb) = match &slabs {
-                    Some(s) => s.hit2(&self.nodes[a].bounds, &self.nodes[b].bounds, tmax),
+                    Some(s) => s.hit_pair(&n.boxes, tmax),
                     None => (
-                        self.nodes[a].bounds.hit(origin, inv_dir, tmax).map(|t| t.0),
-                        self.nodes[b].bounds.hit(origin, inv_dir, tmax).map(|t| t.0),
+                        n.boxes.get(0).hit(origin, inv_dir, tmax).map(|t| t.0),
+                        n.boxes.get(1).hit(origin, inv_dir, tmax).map(|t| t.0),
                     ),
                 };
                 match (ha, hb) {
                     (Some(ta), Some(tb)) => {
-                        let (near, far, tfar) = if ta <= tb { (a, b, tb) } else { (b, a, ta) };
+                        let (near, far, tfar) = if ta <= tb {
+                            (n.child[0], n.child[1], tb)
+                        } else {
+                            (n.child[1], n.child[0], ta)
+                        };
                         if sp < STACK {
-                            stack[sp].write((far as u32, tfar));
+                            stack[sp].write((far, tfar));
                             sp += 1;
                         }
-                        node = near;
+                        at = near;
                         continue;
                     }
                     (Some(_), None) => {
-                        node = a;
+                        at = n.child[0];
                         continue;
                     }
                     (None, Some(_)) => {
-                        node = b;
+                        at = n.child[1];
                         continue;
                     }
                     (None, None) => {}
@@ -326,7 +281,7 @@ impl Bvh {
                 // counts down over them.
                 let (next, tnear) = unsafe { stack[sp].assume_init() };
                 if tnear <= tmax {
-                    node = next as usize;
+                    at = next;
                     break;
                 }
             }
@@ -336,28 +291,30 @@ impl Bvh {
     /// Visits primitives whose box contains `p`, in no particular order; `f` returns `true` to
     /// stop. For point-in-solid queries over many objects.
     pub fn visit_point(&self, p: DVec3, mut f: impl FnMut(usize) -> bool) {
-        if self.nodes.is_empty() {
+        if self.prims.is_empty() || !self.root_box.contains(p) {
             return;
         }
-        let mut stack = [0u32; STACK];
+        // Depth first, the first child's subtree before the second's.
+        let mut stack = [Ref::default(); STACK];
         let mut sp = 0;
-        let mut node = 0usize;
+        let mut at = self.root;
         loop {
-            let n = &self.nodes[node];
-            if n.bounds.contains(p) {
-                if n.count > 0 {
-                    let first = n.index as usize;
-                    for &i in &self.prims[first..first + n.count as usize] {
-                        if f(i as usize) {
-                            return;
-                        }
+            if at.count > 0 {
+                let first = at.index as usize;
+                for &i in &self.prims[first..first + at.count as usize] {
+                    if f(i as usize) {
+                        return;
                     }
-                } else {
-                    if sp < STACK {
-                        stack[sp] = n.index;
-                        sp += 1;
-                    }
-                    node += 1;
+                }
+            } else {
+                let n = &self.nodes[at.index as usize];
+                let (ina, inb) = (n.boxes.get(0).contains(p), n.boxes.get(1).contains(p));
+                if inb && sp < STACK {
+                    stack[sp] = n.child[1];
+                    sp += 1;
+                }
+                if ina {
+                    at = n.child[0];
                     continue;
                 }
             }
@@ -365,24 +322,24 @@ impl Bvh {
                 return;
             }
             sp -= 1;
-            node = stack[sp] as usize;
+            at = stack[sp];
         }
     }
 
     /// Depth of the tree (1 for a single leaf); for tests and statistics.
     pub fn depth(&self) -> usize {
-        fn rec(nodes: &[Node], i: usize) -> usize {
-            let n = &nodes[i];
-            if n.count > 0 {
+        fn rec(nodes: &[Node], r: Ref) -> usize {
+            if r.count > 0 {
                 1
             } else {
-                1 + rec(nodes, i + 1).max(rec(nodes, n.index as usize))
+                let n = &nodes[r.index as usize];
+                1 + rec(nodes, n.child[0]).max(rec(nodes, n.child[1]))
             }
         }
-        if self.nodes.is_empty() {
+        if self.prims.is_empty() {
             0
         } else {
-            rec(&self.nodes, 0)
+            rec(&self.nodes, self.root)
         }
     }
 }
@@ -455,10 +412,165 @@ mod tests {
         let mut serial = Vec::new();
         builder.node(&mut prims, 0, 0, &mut serial);
         assert_eq!(prims, bvh.prims);
-        assert_eq!(serial.len(), bvh.nodes.len());
-        for (a, b) in serial.iter().zip(&bvh.nodes) {
-            assert_eq!((a.index, a.count), (b.index, b.count));
-            assert_eq!((a.bounds.min, a.bounds.max), (b.bounds.min, b.bounds.max));
+        let serial = Bvh::from_binary(&serial, prims);
+        assert_eq!(serial.root, bvh.root);
+        assert_eq!(serial.nodes.len(), bvh.nodes.len());
+        for (a, b) in serial.nodes.iter().zip(&bvh.nodes) {
+            assert_eq!(a.child, b.child);
+            for k in 0..2 {
+                let (x, y) = (a.boxes.get(k), b.boxes.get(k));
+                assert_eq!((x.min, x.max), (y.min, y.max));
+            }
+        }
+    }
+
+    /// The walk over the builders' layout, one node's box at a time by `Aabb::hit`, as it
+    /// was before nodes held their children's boxes: the reference for the visiting order.
+    fn walk_binary(bin: &[BinNode], prims: &[u32], ray: &Ray, tmax: f64, out: &mut Vec<u32>) {
+        let inv = ray_recip(ray);
+        let mut tmax = tmax;
+        let mut lower = |p: u32, tmax: &mut f64| {
+            out.push(p);
+            // Every third primitive "hits" at its place along the ray, pruning as a
+            // nearest-hit query does.
+            if p.is_multiple_of(3) {
+                *tmax = tmax.min(1.0 + p as f64 * 0.01);
+            }
+        };
+        if bin[0].bounds.hit(ray.origin, inv, tmax).is_none() {
+            return;
+        }
+        let mut stack = Vec::new();
+        let mut node = 0usize;
+        loop {
+            let n = &bin[node];
+            if n.count > 0 {
+                let first = n.index as usize;
+                for &p in &prims[first..first + n.count as usize] {
+                    lower(p, &mut tmax);
+                }
+            } else {
+                let (a, b) = (node + 1, n.index as usize);
+                let ha = bin[a].bounds.hit(ray.origin, inv, tmax).map(|t| t.0);
+                let hb = bin[b].bounds.hit(ray.origin, inv, tmax).map(|t| t.0);
+                match (ha, hb) {
+                    (Some(ta), Some(tb)) => {
+                        let (near, far, tfar) = if ta <= tb { (a, b, tb) } else { (b, a, ta) };
+                        stack.push((far, tfar));
+                        node = near;
+                        continue;
+                    }
+                    (Some(_), None) => {
+                        node = a;
+                        continue;
+                    }
+                    (None, Some(_)) => {
+                        node = b;
+                        continue;
+                    }
+                    (None, None) => {}
+                }
+            }
+            loop {
+                let Some((next, tnear)) = stack.pop() else {
+                    return;
+                };
+                if tnear <= tmax {
+                    node = next;
+                    break;
+                }
+            }
+        }
+    }
+
+    /// The walk over nodes holding their children's boxes offers the same primitives in the
+    /// same order as the walk over the builders' layout, with the caller lowering `tmax`:
+    /// ordinary, axis-parallel (±0 direction components) and grazing rays, rays from box
+    /// corners, and a tree of one leaf.
+    #[test]
+    fn packed_walk_keeps_the_binary_order() {
+        let mut rng = Lcg(23);
+        let grid = |rng: &mut Lcg| (rng.next() * 16.0).floor() - 8.0;
+        for n in [1usize, 2, 3, 5, 40, 700] {
+            let boxes: Vec<Aabb> = (0..n)
+                .map(|k| {
+                    if k % 4 == 0 {
+                        let a = DVec3::new(grid(&mut rng), grid(&mut rng), grid(&mut rng));
+                        Aabb::new(a, a + DVec3::new(1.0, 0.0, 2.0))
+                    } else {
+                        Sphere::new(rng.vec(8.0), 0.1 + rng.next()).bounds()
+                    }
+                })
+                .collect();
+            let mut prims: Vec<u32> = (0..n as u32).collect();
+            let builder = Builder {
+                bounds: &boxes,
+                clamped: Cow::Owned(boxes.iter().map(clamp_box).collect()),
+                centroids: boxes.iter().map(clamp_box).map(|b| centroid(&b)).collect(),
+            };
+            let mut bin = Vec::new();
+            builder.node(&mut prims, 0, 0, &mut bin);
+            let bvh = Bvh::from_binary(&bin, prims.clone());
+            let (mut want, mut got) = (Vec::new(), Vec::new());
+            for k in 0..4000usize {
+                let origin = if k % 5 == 0 {
+                    DVec3::new(grid(&mut rng), grid(&mut rng), grid(&mut rng))
+                } else {
+                    rng.vec(12.0)
+                };
+                let mut dir = rng.vec(2.0);
+                match k % 6 {
+                    0 => dir.x = 0.0,
+                    1 => (dir.y, dir.z) = (-0.0, 0.0),
+                    2 => dir = DVec3::new(0.0, 0.0, -1.0),
+                    _ => {}
+                }
+                let ray = Ray::new(origin, dir);
+                let tmax = if k % 3 == 0 {
+                    f64::INFINITY
+                } else {
+                    4.0 + rng.next() * 20.0
+                };
+                want.clear();
+                got.clear();
+                walk_binary(&bin, &prims, &ray, tmax, &mut want);
+                bvh.traverse(&ray, tmax, |p, t| {
+                    got.push(p as u32);
+                    if p.is_multiple_of(3) {
+                        *t = t.min(1.0 + p as f64 * 0.01);
+                    }
+                    false
+                });
+                assert_eq!(want, got, "n={n} k={k}");
+                // The point query: the same primitives in the same order as a depth-first
+                // walk of the builders' nodes.
+                let p = origin + dir * 0.5;
+                let mut by_tree = Vec::new();
+                bvh.visit_point(p, |i| {
+                    by_tree.push(i);
+                    false
+                });
+                let mut by_list = Vec::new();
+                let mut st = vec![0usize];
+                while let Some(i) = st.pop() {
+                    let b = &bin[i];
+                    if !b.bounds.contains(p) {
+                        continue;
+                    }
+                    if b.count > 0 {
+                        let first = b.index as usize;
+                        by_list.extend(
+                            prims[first..first + b.count as usize]
+                                .iter()
+                                .map(|&q| q as usize),
+                        );
+                    } else {
+                        st.push(b.index as usize);
+                        st.push(i + 1);
+                    }
+                }
+                assert_eq!(by_tree, by_list, "n={n} k={k}");
+            }
         }
     }
 

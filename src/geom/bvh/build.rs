@@ -61,11 +61,11 @@ pub(super) fn centroid(b: &Aabb) -> DVec3 {
 }
 
 impl Builder<'_> {
-    fn leaf_or_pending(&self, prims: &[u32], first: usize) -> Node {
+    fn leaf_or_pending(&self, prims: &[u32], first: usize) -> BinNode {
         let bounds = prims
             .iter()
             .fold(Aabb::EMPTY, |b, &p| b.union(&self.bounds[p as usize]));
-        Node {
+        BinNode {
             bounds,
             index: first as u32,
             count: prims.len() as u32,
@@ -79,7 +79,7 @@ impl Builder<'_> {
         prims: &mut [u32],
         first: usize,
         depth: u32,
-        nodes: &mut Vec<Node>,
+        nodes: &mut Vec<BinNode>,
     ) -> u32 {
         let idx = nodes.len();
         nodes.push(self.leaf_or_pending(prims, first));
@@ -102,7 +102,7 @@ impl Builder<'_> {
         prims: &mut [u32],
         first: usize,
         depth: u32,
-        nodes: &mut Vec<Node>,
+        nodes: &mut Vec<BinNode>,
     ) {
         if prims.len() < PARALLEL_MIN {
             self.node(prims, first, depth, nodes);
@@ -309,7 +309,7 @@ impl Cells {
 struct GridBuilder<F> {
     bounds: F,
     nu: usize,
-    nodes: Vec<Node>,
+    nodes: Vec<BinNode>,
     prims: Vec<u32>,
 }
 
@@ -338,7 +338,7 @@ impl<F: Fn(usize) -> Aabb> GridBuilder<F> {
             if count == 0 {
                 return None;
             }
-            self.nodes.push(Node {
+            self.nodes.push(BinNode {
                 bounds: b,
                 index: first as u32,
                 count: count as u32,
@@ -347,7 +347,7 @@ impl<F: Fn(usize) -> Aabb> GridBuilder<F> {
         }
         let (a, c) = cells.halves();
         let idx = self.nodes.len();
-        self.nodes.push(Node {
+        self.nodes.push(BinNode {
             bounds: Aabb::EMPTY,
             index: 0,
             count: 0,
@@ -358,7 +358,7 @@ impl<F: Fn(usize) -> Aabb> GridBuilder<F> {
         match (ba, bc) {
             (Some(ba), Some(bc)) => {
                 let b = ba.union(&bc);
-                self.nodes[idx] = Node {
+                self.nodes[idx] = BinNode {
                     bounds: b,
                     index: second as u32,
                     count: 0,
@@ -412,11 +412,6 @@ impl Bvh {
         {
             return Bvh::default();
         }
-        let finite = g.nodes.iter().all(|n| n.bounds.is_finite());
-        Bvh {
-            nodes: g.nodes,
-            prims: g.prims,
-            finite,
-        }
+        Bvh::from_binary(&g.nodes, g.prims)
     }
 }

@@ -1,0 +1,169 @@
+//! The BVH's ray-box test: two boxes at once, one per SSE lane, read from a node that stores
+//! its two children's boxes side by side (`Pair`), so each axis's faces are one aligned
+//! 16-byte load instead of two scalar loads and a shuffle.
+
+use crate::math::{Aabb, DVec3};
+
+/// Two boxes, lane 0 and lane 1, each coordinate's pair adjacent: `lo[k]` holds both boxes'
+/// minimum along axis k, `hi[k]` their maximum. 16-byte aligned for the loads.
+#[derive(Clone, Copy, Debug)]
+#[repr(C, align(16))]
+pub(super) struct Pair {
+    pub(super) lo: [[f64; 2]; 3],
+    pub(super) hi: [[f64; 2]; 3],
+}
+
+impl Pair {
+    pub(super) fn of(a: &Aabb, b: &Aabb) -> Pair {
+        Pair {
+            lo: [[a.min.x, b.min.x], [a.min.y, b.min.y], [a.min.z, b.min.z]],
+            hi: [[a.max.x, b.max.x], [a.max.y, b.max.y], [a.max.z, b.max.z]],
+        }
+    }
+
+    /// Box `k` (0 or 1), bit for bit as it was stored.
+    #[inline]
+    pub(super) fn get(&self, k: usize) -> Aabb {
+        Aabb::new(
+            DVec3::new(self.lo[0][k], self.lo[1][k], self.lo[2][k]),
+            DVec3::new(self.hi[0][k], self.hi[1][k], self.hi[2][k]),
+        )
+    }
+}
+
+/// The slab test of two boxes at once, one per SSE lane, for a ray whose slab distances cannot
+/// be NaN except along its `flat` axes (computed apart). Each lane does `Aabb::hit`'s
+/// operations in its order; without NaNs the minimum and maximum instructions give
+/// `f64::min`'s and `f64::max`'s values (up to the sign of a zero, which no comparison sees),
+/// so the answers and the entry distances are `Aabb::hit`'s bit for bit (unit tests
+/// `paired_slabs_match_aabb_hit` and `..._for_flat_rays`). `Aabb::hit` spends a third of its
+/// work on the NaN handling of `f64::min`.
+#[cfg(target_arch = "x86_64")]
+pub(super) struct Slabs2 {
+    origin: [std::arch::x86_64::__m128d; 3],
+    inv_dir: [std::arch::x86_64::__m128d; 3],
+    /// Axes whose reciprocal direction is infinite (a direction component of ±0, as every
+    /// ray of an axis-aligned orthographic or cylinder camera has): their slab distances can
+    /// be NaN (0·∞ where the origin lies on a box's face), so they are computed as `Aabb::hit`
+    /// computes them, NaN-aware, one box at a time (`flat_axis`).
+    flat: [bool; 3],
+    origin_s: DVec3,
+    inv_s: DVec3,
+}
+
+#[cfg(target_arch = "x86_64")]
+impl Slabs2 {
+    /// None for a non-finite origin or a NaN direction: such rays take `Aabb::hit`. Axes of
+    /// infinite reciprocal direction are `flat`.
+    #[inline]
+    pub(super) fn new(origin: DVec3, inv_dir: DVec3) -> Option<Slabs2> {
+        use std::arch::x86_64::_mm_set1_pd;
+        if !origin.is_finite() || inv_dir.is_nan_mask().any() || inv_dir.cmpeq(DVec3::ZERO).any() {
+            return None;
+        }
+        // SAFETY: SSE2 is part of x86_64.
+        unsafe {
+            Some(Slabs2 {
+                origin: [
+                    _mm_set1_pd(origin.x),
+                    _mm_set1_pd(origin.y),
+                    _mm_set1_pd(origin.z),
+                ],
+                inv_dir: [
+                    _mm_set1_pd(inv_dir.x),
+                    _mm_set1_pd(inv_dir.y),
+                    _mm_set1_pd(inv_dir.z),
+                ],
+                flat: [
+                    inv_dir.x.is_infinite(),
+                    inv_dir.y.is_infinite(),
+                    inv_dir.z.is_infinite(),
+                ],
+                origin_s: origin,
+                inv_s: inv_dir,
+            })
+        }
+    }
+
+    /// A flat axis's (near, far) slab distances for one box, as `Aabb::hit` has them: its
+    /// `f64::min` and `f64::max` of the two distances, which ignore a NaN. Both NaN (a box
+    /// flat in this axis with the origin in its plane) gives (−∞, +∞), which the reductions
+    /// that follow treat as `f64::max` and `f64::min` treat the NaNs: as absent.
+    #[inline]
+    fn flat_axis(&self, k: usize, lo: f64, hi: f64) -> (f64, f64) {
+        let (o, inv) = (self.origin_s[k], self.inv_s[k]);
+        let (t0, t1) = ((lo - o) * inv, (hi - o) * inv);
+        let (near, far) = (t0.min(t1), t0.max(t1));
+        if near.is_nan() {
+            (f64::NEG_INFINITY, f64::INFINITY)
+        } else {
+            (near, far)
+        }
+    }
+
+    /// `Aabb::hit` of `a` and of `b` within (0, tmax): the entry distances of those crossed.
+    #[inline]
+    pub(super) fn hit2(&self, a: &Aabb, b: &Aabb, tmax: f64) -> (Option<f64>, Option<f64>) {
+        self.hit_pair(&Pair::of(a, b), tmax)
+    }
+
+    /// `Aabb::hit` of both boxes of `p` within (0, tmax): the entry distances of those crossed.
+    #[inline]
+    pub(super) fn hit_pair(&self, p: &Pair, tmax: f64) -> (Option<f64>, Option<f64>) {
+        use std::arch::x86_64::*;
+        // SAFETY: SSE2 is part of x86_64; `Pair` is 16-byte aligned and each `[f64; 2]` row
+        // sits at a multiple of 16 bytes in it, as `_mm_load_pd` needs; the store writes two
+        // doubles into a two-double array.
+        unsafe {
+            let axis = |k: usize| {
+                if self.flat[k] {
+                    let (na, fa) = self.flat_axis(k, p.lo[k][0], p.hi[k][0]);
+                    let (nb, fb) = self.flat_axis(k, p.lo[k][1], p.hi[k][1]);
+                    return (_mm_set_pd(nb, na), _mm_set_pd(fb, fa));
+                }
+                let t0 = _mm_mul_pd(
+                    _mm_sub_pd(_mm_load_pd(p.lo[k].as_ptr()), self.origin[k]),
+                    self.inv_dir[k],
+                );
+                let t1 = _mm_mul_pd(
+                    _mm_sub_pd(_mm_load_pd(p.hi[k].as_ptr()), self.origin[k]),
+                    self.inv_dir[k],
+                );
+                (_mm_min_pd(t0, t1), _mm_max_pd(t0, t1))
+            };
+            let (nx, fx) = axis(0);
+            let (ny, fy) = axis(1);
+            let (nz, fz) = axis(2);
+            // max_element is x.max(y.max(z)), then .max(0.0); likewise for the far side. With
+            // no NaN in them maxima and minima may be taken in any grouping (the value is the
+            // same up to the sign of a zero, which no comparison sees): pairs first, for a
+            // chain of two operations instead of three before the comparison.
+            let near = _mm_max_pd(_mm_max_pd(nx, _mm_setzero_pd()), _mm_max_pd(ny, nz));
+            let far = _mm_min_pd(_mm_min_pd(fx, _mm_set1_pd(tmax)), _mm_min_pd(fy, fz));
+            let mask = _mm_movemask_pd(_mm_cmple_pd(near, far));
+            let mut t = [0.0f64; 2];
+            _mm_storeu_pd(t.as_mut_ptr(), near);
+            (
+                (mask & 1 != 0).then_some(t[0]),
+                (mask & 2 != 0).then_some(t[1]),
+            )
+        }
+    }
+}
+
+/// Other targets take `Aabb::hit` for every ray.
+#[cfg(not(target_arch = "x86_64"))]
+pub(super) struct Slabs2;
+
+#[cfg(not(target_arch = "x86_64"))]
+impl Slabs2 {
+    pub(super) fn new(_: DVec3, _: DVec3) -> Option<Slabs2> {
+        None
+    }
+    pub(super) fn hit2(&self, _: &Aabb, _: &Aabb, _: f64) -> (Option<f64>, Option<f64>) {
+        unreachable!()
+    }
+    pub(super) fn hit_pair(&self, _: &Pair, _: f64) -> (Option<f64>, Option<f64>) {
+        unreachable!()
+    }
+}
