@@ -694,12 +694,12 @@ mod tests {
             -1e300,
         ];
         let mut x = 0x9E37_79B9_7F4A_7C15u64;
-        for k in 0..4_000 {
+        for k in 0..4_000i32 {
             x ^= x << 13;
             x ^= x >> 7;
             x ^= x << 17;
             let m = (x >> 11) as f64 / (1u64 << 53) as f64;
-            let e = (k % 80) as i32 - 40;
+            let e = k % 80 - 40;
             let v = m * 2f64.powi(e) * if x & 1 == 0 { 1.0 } else { -1.0 };
             vals.push(v);
             let n = (v * 7.0).round();
