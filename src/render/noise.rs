@@ -172,6 +172,13 @@ pub fn turbulence_vec(p: DVec3, octaves: u32, omega: f64, lambda: f64, _generato
     })
 }
 
+/// `turbulence_vec` without its per-thread cache (the same value), for callers whose points
+/// rarely repeat, where the cache's key compare and store are pure cost.
+pub fn turbulence_vec_uncached(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
+    let (omega, lambda) = (omega as f32 as f64, lambda as f32 as f64);
+    noise_lattice::vector_octaves(p, octaves.clamp(1, 10), omega, lambda)
+}
+
 /// `turbulence_vec` at a normal's four samples, all their octaves' lattice walks together
 /// (the per-thread last result is neither read nor changed).
 pub fn turbulence_vec4(ps: [DVec3; 4], octaves: u32, omega: f64, lambda: f64) -> [DVec3; 4] {

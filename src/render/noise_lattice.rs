@@ -110,6 +110,77 @@ fn cell(p: DVec3) -> Cell {
     }
 }
 
+/// `cell` with the three coordinates in the lanes of one AVX register: one rounding, one
+/// conversion and one s-curve for the three axes instead of three scalar ones (each scalar
+/// `as i64` is a conversion plus its saturation and NaN checks). The same operations per
+/// lane, so the same bits; coordinates whose floor is outside the i32 range (and NaN) take
+/// `cell`, whose saturating conversion they need.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn cell_avx(p: DVec3) -> Cell {
+    use std::arch::x86_64::*;
+    // SAFETY: the caller guarantees AVX.
+    unsafe {
+        let v = _mm256_setr_pd(p.x, p.y, p.z, 0.0);
+        let f = _mm256_round_pd::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(v);
+        let abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), f);
+        let inside = _mm256_cmp_pd::<_CMP_LT_OQ>(abs, _mm256_set1_pd(2147483648.0));
+        if _mm256_movemask_pd(inside) != 0b1111 {
+            return cell(p);
+        }
+        let t = _mm256_sub_pd(v, f);
+        let s = _mm256_mul_pd(
+            _mm256_mul_pd(t, t),
+            _mm256_sub_pd(_mm256_set1_pd(3.0), _mm256_mul_pd(_mm256_set1_pd(2.0), t)),
+        );
+        let o = _mm256_sub_pd(_mm256_set1_pd(1.0), s);
+        // wx in lanes (1 - sx, sx, 1 - sx, sx), wy in (1 - sy, 1 - sy, sy, sy): their
+        // lane-wise product is the four wx·wy of `cell` in its order.
+        let xo = _mm256_unpacklo_pd(o, s);
+        let wx = _mm256_permute2f128_pd::<0x00>(xo, xo);
+        let wy = _mm256_permute2f128_pd::<0x20>(_mm256_unpackhi_pd(o, o), _mm256_unpackhi_pd(s, s));
+        let mut wxy = [0.0; 4];
+        _mm256_storeu_pd(wxy.as_mut_ptr(), _mm256_mul_pd(wx, wy));
+        let (mut ta, mut sa, mut oa) = ([0.0; 4], [0.0; 4], [0.0; 4]);
+        _mm256_storeu_pd(ta.as_mut_ptr(), t);
+        _mm256_storeu_pd(sa.as_mut_ptr(), s);
+        _mm256_storeu_pd(oa.as_mut_ptr(), o);
+        // The floors are integers inside the i32 range: converted exactly, and the hash's
+        // wrapping add and 12-bit mask see the same low bits as in i64.
+        let m0 = _mm_add_epi32(_mm256_cvttpd_epi32(f), _mm_set1_epi32(HASH_OFFSET as i32));
+        let m1 = _mm_add_epi32(m0, _mm_set1_epi32(1));
+        let mask = _mm_set1_epi32(4095);
+        let (mut a0, mut a1) = ([0u32; 4], [0u32; 4]);
+        _mm_storeu_si128(a0.as_mut_ptr() as *mut __m128i, _mm_and_si128(m0, mask));
+        _mm_storeu_si128(a1.as_mut_ptr() as *mut __m128i, _mm_and_si128(m1, mask));
+        let hx = [
+            HASH_X[a0[0] as usize & 4095] as usize,
+            HASH_X[a1[0] as usize & 4095] as usize,
+        ];
+        let (my, mz) = (
+            [a0[1] as usize, a1[1] as usize],
+            [a0[2] as usize, a1[2] as usize],
+        );
+        let mut hxy = [0usize; 4];
+        for (k, h) in hxy.iter_mut().enumerate() {
+            *h = HASH_Y[(hx[k & 1] ^ my[k >> 1]) & 4095] as usize;
+        }
+        let mut entry = [0u32; 8];
+        for (c, e) in entry.iter_mut().enumerate() {
+            *e = u32::from(HASH_Z[(hxy[c & 3] ^ mz[c >> 2]) & 4095]);
+        }
+        Cell {
+            t: [ta[0], ta[1], ta[2]],
+            wxy,
+            wz: [oa[2], sa[2]],
+            entry,
+        }
+    }
+}
+
 /// The lattice noise of component 0 (the scalar noise), in about [-0.5, 0.5]; 0.5 plus it
 /// is generator 1's unclipped value.
 #[inline]
@@ -152,13 +223,14 @@ fn scalar_into_avx(ps: &[DVec3], out: &mut [f64]) {
     let n = ps.len().min(out.len()).min(MAX_POINTS);
     if n == 1 {
         // SAFETY: this function only runs with AVX enabled.
-        out[0] = unsafe { scalar_avx(&cell(ps[0])) };
+        out[0] = unsafe { scalar_avx(&cell_avx(ps[0])) };
         return;
     }
     // Every hash walk first (as `scalar_into_with`), without initialising the unused cells.
     let mut buf = [const { MaybeUninit::<Cell>::uninit() }; MAX_POINTS];
     for (b, &p) in buf.iter_mut().zip(&ps[..n]) {
-        b.write(cell(p));
+        // SAFETY: this function only runs with AVX enabled.
+        b.write(unsafe { cell_avx(p) });
     }
     // SAFETY: the first n cells were written just above; Cell is Copy (nothing to drop).
     let cells = unsafe { std::slice::from_raw_parts(buf.as_ptr() as *const Cell, n) };
@@ -383,7 +455,7 @@ pub fn vector(p: DVec3) -> DVec3 {
 #[target_feature(enable = "avx")]
 fn vector_avx_fn(p: DVec3) -> DVec3 {
     // SAFETY: this function only runs with AVX enabled.
-    DVec3::from_array(unsafe { vector_avx(&cell(p)) })
+    DVec3::from_array(unsafe { vector_avx(&cell_avx(p)) })
 }
 
 /// `vector` at up to ten points (the wrinkles normal's octaves): every hash walk first, as in
@@ -396,13 +468,14 @@ pub fn vector_many<const N: usize>(ps: &[DVec3; N], out: &mut [DVec3; N]) {
         // SAFETY: AVX was detected.
         return unsafe { vector_many_avx(ps, out) };
     }
-    vector_many_with(ps, out, vector_lanes)
+    vector_many_with(ps, out, cell, vector_lanes)
 }
 
 #[inline(always)]
 fn vector_many_with<const N: usize>(
     ps: &[DVec3; N],
     out: &mut [DVec3; N],
+    cell: impl Fn(DVec3) -> Cell,
     terms: impl Fn(&Cell) -> [f64; 3],
 ) {
     let mut cells = [const { None }; N];
@@ -418,7 +491,12 @@ fn vector_many_with<const N: usize>(
 #[target_feature(enable = "avx")]
 fn vector_many_avx<const N: usize>(ps: &[DVec3; N], out: &mut [DVec3; N]) {
     // SAFETY: this function only runs with AVX enabled.
-    vector_many_with(ps, out, |c| unsafe { vector_avx(c) })
+    vector_many_with(
+        ps,
+        out,
+        |p| unsafe { cell_avx(p) },
+        |c| unsafe { vector_avx(c) },
+    )
 }
 
 /// Octaves of vector noise, each `lambda` times finer and `omega` times weaker than the one
@@ -430,6 +508,7 @@ fn octaves_with(
     octaves: u32,
     omega: f64,
     lambda: f64,
+    cell: impl Fn(DVec3) -> Cell,
     terms: impl Fn(&Cell) -> [f64; 3],
 ) -> DVec3 {
     let n = octaves.min(10) as usize;
@@ -455,6 +534,7 @@ fn octaves4_with(
     octaves: u32,
     omega: f64,
     lambda: f64,
+    cell: impl Fn(DVec3) -> Cell,
     terms: impl Fn(&Cell) -> [f64; 3],
 ) -> [DVec3; 4] {
     let n = octaves.clamp(1, 10) as usize;
@@ -481,7 +561,14 @@ fn octaves4_with(
 #[target_feature(enable = "avx")]
 fn octaves4_avx(ps: [DVec3; 4], octaves: u32, omega: f64, lambda: f64) -> [DVec3; 4] {
     // SAFETY: this function only runs with AVX enabled.
-    octaves4_with(ps, octaves, omega, lambda, |c| unsafe { vector_avx(c) })
+    octaves4_with(
+        ps,
+        octaves,
+        omega,
+        lambda,
+        |p| unsafe { cell_avx(p) },
+        |c| unsafe { vector_avx(c) },
+    )
 }
 
 /// `vector_octaves` at four points (1 to 10 octaves).
@@ -491,14 +578,21 @@ pub fn vector_octaves4(ps: [DVec3; 4], octaves: u32, omega: f64, lambda: f64) ->
         // SAFETY: AVX was detected.
         return unsafe { octaves4_avx(ps, octaves, omega, lambda) };
     }
-    octaves4_with(ps, octaves, omega, lambda, vector_lanes)
+    octaves4_with(ps, octaves, omega, lambda, cell, vector_lanes)
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx")]
 fn octaves_avx(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
     // SAFETY: this function only runs with AVX enabled.
-    octaves_with(p, octaves, omega, lambda, |c| unsafe { vector_avx(c) })
+    octaves_with(
+        p,
+        octaves,
+        omega,
+        lambda,
+        |p| unsafe { cell_avx(p) },
+        |c| unsafe { vector_avx(c) },
+    )
 }
 
 /// `octaves` octaves (at most 10) of vector noise from `p`.
@@ -508,7 +602,7 @@ pub fn vector_octaves(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 
         // SAFETY: AVX was detected.
         return unsafe { octaves_avx(p, octaves, omega, lambda) };
     }
-    octaves_with(p, octaves, omega, lambda, vector_lanes)
+    octaves_with(p, octaves, omega, lambda, cell, vector_lanes)
 }
 
 #[cfg(test)]
@@ -563,6 +657,76 @@ mod tests {
         }
     }
 
+    /// `cell_avx` is `cell` field for field, bit for bit: every magnitude from tiny to past
+    /// the i32 range (where it hands over to `cell`), both signs, integers and their
+    /// neighbours, signed zeros, infinities and NaN.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn avx_cell_is_the_cell() {
+        if !has_avx() {
+            return;
+        }
+        let bits = |c: &Cell| {
+            (
+                c.t.map(f64::to_bits),
+                c.wxy.map(f64::to_bits),
+                c.wz.map(f64::to_bits),
+                c.entry,
+            )
+        };
+        let mut vals = vec![
+            0.0,
+            -0.0,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            f64::MIN_POSITIVE,
+            -f64::MIN_POSITIVE,
+            2147483647.0,
+            2147483647.5,
+            2147483648.0,
+            -2147483648.0,
+            -2147483648.5,
+            -2147483649.0,
+            4503599627370496.0,
+            -4503599627370497.0,
+            1e300,
+            -1e300,
+        ];
+        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        for k in 0..4_000i32 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let m = (x >> 11) as f64 / (1u64 << 53) as f64;
+            let e = k % 80 - 40;
+            let v = m * 2f64.powi(e) * if x & 1 == 0 { 1.0 } else { -1.0 };
+            vals.push(v);
+            let n = (v * 7.0).round();
+            vals.extend([
+                n,
+                f64::from_bits(n.to_bits() + 1),
+                n.next_down(),
+                n.next_up(),
+            ]);
+        }
+        for (i, &a) in vals.iter().enumerate() {
+            let (b, c) = (
+                vals[(i * 7 + 3) % vals.len()],
+                vals[(i * 13 + 5) % vals.len()],
+            );
+            for p in [
+                DVec3::new(a, b, c),
+                DVec3::new(c, a, b),
+                DVec3::new(b, c, a),
+            ] {
+                // SAFETY: AVX was detected above.
+                let got = unsafe { cell_avx(p) };
+                assert_eq!(bits(&got), bits(&cell(p)), "{p:?}");
+            }
+        }
+    }
+
     #[test]
     fn vectors_together_are_one_at_a_time() {
         for n in 0..2_000 {
@@ -574,7 +738,7 @@ mod tests {
             let mut got = [DVec3::ZERO; 10];
             vector_many(&ps, &mut got);
             assert_eq!(got.map(bits), want);
-            vector_many_with(&ps, &mut got, vector_lanes);
+            vector_many_with(&ps, &mut got, cell, vector_lanes);
             assert_eq!(got.map(bits), want);
             // Component 0 of the vector noise is the scalar noise, bit for bit (dents reads
             // both at one point from one walk).
@@ -616,14 +780,14 @@ mod tests {
                 scale *= 2.5;
                 weight *= 0.5;
             }
-            let lanes = octaves_with(p, 10, 0.5, 2.5, vector_lanes);
+            let lanes = octaves_with(p, 10, 0.5, 2.5, cell, vector_lanes);
             let bits = |v: DVec3| v.to_array().map(f64::to_bits);
             assert_eq!((bits(a), bits(lanes)), (bits(b), bits(b)));
             let ps = [0.0, 0.01, -0.03, 1.5].map(|d| p + DVec3::new(d, d, -d));
             for oct in [1, 3, 4, 10] {
                 let one = ps.map(|p| bits(vector_octaves(p, oct, 0.5, 2.5)));
                 let four = vector_octaves4(ps, oct, 0.5, 2.5).map(bits);
-                let four_lanes = octaves4_with(ps, oct, 0.5, 2.5, vector_lanes).map(bits);
+                let four_lanes = octaves4_with(ps, oct, 0.5, 2.5, cell, vector_lanes).map(bits);
                 assert_eq!((four, four_lanes), (one, one));
             }
         }

@@ -45,13 +45,6 @@ thread_local! {
     static SURFACE: Cell<Option<Surface>> = const { Cell::new(None) };
 }
 
-thread_local! {
-    /// The last turbulent wood's inputs (the point's and turbulence's bits: the value is a
-    /// function of them alone, whatever pattern asks) and value. The first key matches no
-    /// evaluation (octaves are 32-bit).
-    static LAST_WOOD: Cell<([u64; 8], f64)> = const { Cell::new(([u64::MAX; 8], f64::NAN)) };
-}
-
 /// Sets the surface the next pattern evaluations on this thread are for (None: no surface,
 /// as in functions, where slope and aoi are 0).
 pub fn set_surface(s: Option<Surface>) {
@@ -208,28 +201,11 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
         }
         PatternKind::Wood => match &pat.turbulence {
             Some(t) if t.amount != DVec3::ZERO => {
-                // A pigment read through functions (the `_37` woods' gamma correction reads
-                // its pigment three times at each point) asks again for the same rings.
-                let key = [
-                    q.x.to_bits(),
-                    q.y.to_bits(),
-                    q.z.to_bits(),
-                    t.amount.x.to_bits(),
-                    t.amount.y.to_bits(),
-                    t.omega.to_bits(),
-                    t.lambda.to_bits(),
-                    t.octaves as u64,
-                ];
-                LAST_WOOD.with(|last| {
-                    let (k, v) = last.get();
-                    if k.iter().zip(&key).fold(0, |acc, (a, b)| acc | (a ^ b)) == 0 {
-                        return v;
-                    }
-                    let tv = noise::turbulence_vec(q, t.octaves, t.omega, t.lambda, gen);
-                    let v = wood(q, t.amount, tv);
-                    last.set((key, v));
-                    v
-                })
+                // Not through turbulence_vec's per-thread cache, which a wood's point almost
+                // never hits (a pigment read three times through functions, as the `_37`
+                // woods' gamma correction does, is remembered whole by `pigment::eval_memo`).
+                let tv = noise::turbulence_vec_uncached(q, t.octaves, t.omega, t.lambda);
+                wood(q, t.amount, tv)
             }
             _ => (q.x * q.x + q.y * q.y).sqrt(),
         },
