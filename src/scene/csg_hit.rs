@@ -4,10 +4,11 @@
 
 use std::cell::Cell;
 
+use crate::geom::Hit;
 use crate::math::{Aabb, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
 use crate::scene::desc::CsgOp;
-use crate::scene::faces::{self, Faces};
+use crate::scene::faces::{self, Face, Faces, MAX_ALL};
 use crate::scene::object::{
     csg_keeps, each_member, member_hits, ObjKind, Object, Scratch, SurfaceHit,
 };
@@ -154,6 +155,83 @@ impl Object {
         s.csg_order.truncate(order_from);
         s.surface.truncate(start);
         best
+    }
+
+    /// `csg_first_hit::<false>` of a node without `clipped_by` or index whose members are all
+    /// faces (`Faces::all`: shapes2.inc's polyhedra, textures/pigments/dodec2's twelve planes
+    /// five times over), for a ray within `faces::ray_ok`: the same search without the
+    /// general one's lists. The same crossings in the same order: a face has at most one
+    /// crossing, so the gather's order is member order, and the insertion below sorts by
+    /// (t, member) as `csg_first_hit` sorts by (t, place in the gather). The members'
+    /// slab tests are left out: an unbounded box fails them only for `tmax < 0`, when no
+    /// crossing (t > EPSILON, t < tmax) is left either, and the ray (finite, no NaN) makes no
+    /// NaN against infinite bounds. Each crossing is kept by the faces' inside tests exactly as
+    /// `csg_keeps` asks them (unbounded bounds hold every finite point; points beyond
+    /// `faces::point_ok` go to `csg_keeps` itself). `inside` has no side effects, so the order
+    /// of the questions cannot change the answer: the same crossing, bit for bit.
+    #[inline(never)]
+    pub(super) fn faces_first_hit<'a>(
+        &'a self,
+        op: CsgOp,
+        children: &'a [Object],
+        (cull, faces, all): (Option<&Aabb>, &Faces, &[Option<Face>]),
+        ray: &Ray,
+        tmax: f64,
+    ) -> Option<SurfaceHit<'a>> {
+        if cull.is_some_and(|c| c.hit(ray.origin, ray.dir.recip(), tmax).is_none()) {
+            return None;
+        }
+        let mut order = [(0.0f64, 0u32); MAX_ALL];
+        let mut n = 0;
+        for (k, f) in all.iter().enumerate().take(MAX_ALL) {
+            if let Some(t) = f.as_ref().and_then(|f| f.hit(ray)).filter(|&t| t < tmax) {
+                // Later members go after equal `t`s: ties in member order.
+                let mut m = n;
+                while m > 0 && order[m - 1].0.total_cmp(&t).is_gt() {
+                    order[m] = order[m - 1];
+                    m -= 1;
+                }
+                order[m] = (t, k as u32);
+                n += 1;
+            }
+        }
+        let want_inside = |j: usize| match op {
+            CsgOp::Intersection => true,
+            CsgOp::Difference => j == 0,
+            CsgOp::Union | CsgOp::Merge => false,
+        };
+        let mut rejecter = usize::MAX;
+        let kept_cell = Cell::new(usize::MAX);
+        let &(t, i) = order[..n].iter().find(|&&(t, i)| {
+            let i = i as usize;
+            let p = ray.at(t);
+            if !faces::point_ok(p) {
+                return csg_keeps(op, i, children, None, Some(faces), p, &kept_cell);
+            }
+            let wants = |j: usize| {
+                all[j]
+                    .as_ref()
+                    .is_some_and(|f| (f.inside(p) != children[j].inverse) == want_inside(j))
+            };
+            // The face that turned the last crossing away first, as `csg_keeps` does.
+            if rejecter != i && rejecter < all.len() && !wants(rejecter) {
+                return false;
+            }
+            for j in 0..all.len() {
+                if j != i && j != rejecter && !wants(j) {
+                    rejecter = j;
+                    return false;
+                }
+            }
+            true
+        })?;
+        let c = &children[i as usize];
+        Some(SurfaceHit {
+            t,
+            obj: c,
+            hit: Hit::new(t),
+            flip: c.inverse ^ (op == CsgOp::Difference && i > 0) ^ self.inverse,
+        })
     }
 
     /// `first_hit` of a leaf or union with `clipped_by`: the nearest of its crossings with
@@ -324,6 +402,153 @@ mod tests {
             }
             assert!(hits > 100, "object {n}: {hits}");
         }
+    }
+
+    /// Nodes whose members are all faces (`faces_first_hit`) answer as the general search
+    /// (`csg_first_hit`) and as `all_hits` do, bit for bit: polyhedra rotated, scaled from
+    /// 1e-4 to 1e5 and moved far out; members inverted, coincident and duplicated faces; a
+    /// difference, a merge and an inverted node. Rays at random, along axes through lattice
+    /// points (in and grazing the cube's faces and edges), through vertices, starting on the
+    /// surface (at a crossing of an earlier ray), and far out (points beyond `point_ok`).
+    #[test]
+    fn polyhedra_match_the_general_search() {
+        const DODECAHEDRON: &str = r#"
+            plane { -z, 1 rotate <-26.56505117708, 0, 0> }
+            plane { -z, 1 rotate <-26.56505117708, -72, 0> }
+            plane { -z, 1 rotate <-26.56505117708, -144, 0> }
+            plane { -z, 1 rotate <-26.56505117708, -216, 0> }
+            plane { -z, 1 rotate <-26.56505117708, -288, 0> }
+            plane { -z, 1 rotate <26.56505117708, -36, 0> }
+            plane { -z, 1 rotate <26.56505117708, -108, 0> }
+            plane { -z, 1 rotate <26.56505117708, -180, 0> }
+            plane { -z, 1 rotate <26.56505117708, -252, 0> }
+            plane { -z, 1 rotate <26.56505117708, -324, 0> }
+            plane { y, 1 } plane { -y, 1 }
+        "#;
+        const CUBE: &str = "plane { x, 1 } plane { -x, 1 } plane { y, 1 } plane { -y, 1 } \
+                            plane { z, 1 } plane { -z, 1 }";
+        let scene_text = format!(
+            r#"
+            intersection {{ {DODECAHEDRON} translate y * 1.8 rotate x * 72 rotate z * 144 }}
+            intersection {{ {DODECAHEDRON} scale 1e-4 translate <1e-4, 0, 0> }}
+            intersection {{ {DODECAHEDRON} scale 1e5 rotate <10, 20, 30> translate 1e6 }}
+            intersection {{ {CUBE} }}
+            intersection {{ {CUBE} scale <1, 1e-3, 1e3> }}
+            intersection {{ {CUBE} plane {{ y, 1 }} plane {{ y, 1 rotate z * 45 }} rotate y * 45 }}
+            intersection {{ {CUBE} plane {{ y, 0 inverse }} rotate <0, 0, 30> }}
+            intersection {{ {CUBE} inverse }}
+            difference {{ plane {{ y, 1 }} plane {{ y, 0.5 inverse }} plane {{ -x, 0.3 inverse rotate z * 45 }} }}
+            merge {{ plane {{ y, 0 }} plane {{ x, 0 }} plane {{ -z, 1 rotate x * 30 }} }}
+            intersection {{ plane {{ y, 1 }} plane {{ -y, -1 }} plane {{ x, 1 }} }}
+        "#
+        );
+        let scene = built(&scene_text);
+        let big = if cfg!(debug_assertions) {
+            4_000
+        } else {
+            150_000
+        };
+        let mut rng = Lcg(29);
+        let (mut sa, mut sb) = (Scratch::default(), Scratch::default());
+        let key = |h: Option<SurfaceHit>| {
+            h.map(|h| (h.t.to_bits(), h.flip, h.obj as *const Object, h.hit.part))
+        };
+        let mut indexed = 0;
+        for (n, o) in scene.objects.iter().enumerate() {
+            let ObjKind::Csg {
+                op,
+                children,
+                index,
+                cull: Some(cull),
+            } = &o.kind
+            else {
+                panic!("object {n} is not a node with faces");
+            };
+            assert!(
+                cull.faces.as_ref().is_some_and(|f| f.all().is_some()),
+                "object {n}"
+            );
+            indexed += index.is_some() as usize;
+            // The object's scale and place, for rays that reach it.
+            let b = cull.aabb.unwrap_or(o.bounds);
+            let finite = b.min.is_finite() && b.max.is_finite();
+            let (lo, hi) = if finite {
+                (b.min, b.max)
+            } else {
+                (DVec3::splat(-3.0), DVec3::splat(3.0))
+            };
+            let (centre, size) = ((lo + hi) * 0.5, (hi - lo).max_element().max(1e-4));
+            let mut on_surface = None;
+            let (mut hits, mut surface_starts) = (0, 0);
+            for k in 0..big {
+                let axis = [
+                    DVec3::X,
+                    DVec3::Y,
+                    DVec3::Z,
+                    -DVec3::X,
+                    -DVec3::Y,
+                    -DVec3::Z,
+                ];
+                let ray = match k % 6 {
+                    // Along an axis from a lattice point of the cube's faces (-1, 0, 1).
+                    0 => Ray::new(
+                        (rng.vec(6.0))
+                            .round()
+                            .clamp(DVec3::splat(-1.0), DVec3::splat(1.0))
+                            * [1.0, 1.5, 3.0][k % 3],
+                        axis[(k / 6) % 6],
+                    ),
+                    // From a crossing of an earlier ray.
+                    1 if on_surface.is_some() => {
+                        surface_starts += 1;
+                        Ray::new(on_surface.unwrap(), rng.vec(2.0))
+                    }
+                    // Through a point at random on the object's scale, from far or near.
+                    2 | 3 => {
+                        let target = centre + rng.vec(size * 1.2);
+                        let from = centre + rng.vec(size * [3.0, 40.0][k % 2]);
+                        Ray::new(from, (target - from) * [1.0, 1e-3, 1e3][k % 3])
+                    }
+                    // Far out, where points leave the faces' limits.
+                    4 if k % 60 == 4 => Ray::new(rng.vec(2e150), rng.vec(1e10)),
+                    _ => Ray::new(rng.vec(8.0), rng.vec(2.0)),
+                };
+                let tmax = match k % 7 {
+                    0 => 2.5,
+                    1 => -1.0,
+                    _ => f64::INFINITY,
+                };
+                let want = key(reference(o, &ray, tmax, &mut sb));
+                let general = o.csg_first_hit::<false>(
+                    *op,
+                    children,
+                    index.as_deref(),
+                    (cull.aabb.as_ref(), cull.faces.as_ref()),
+                    &ray,
+                    tmax,
+                    &mut sb,
+                );
+                assert_eq!(key(general), want, "object {n}, ray {k}");
+                let got = o.first_hit(&ray, tmax, &mut sa);
+                assert_eq!(key(got), want, "object {n}, ray {k}");
+                assert_eq!(
+                    o.any_hit(&ray, tmax, &mut sa),
+                    want.is_some(),
+                    "object {n}, ray {k}"
+                );
+                assert!(sa.surface.is_empty() && sa.csg_order.is_empty());
+                if let Some(h) = got {
+                    hits += 1;
+                    on_surface = Some(ray.at(h.t)).filter(|p| p.abs().max_element() < 1e140);
+                }
+            }
+            assert!(
+                hits > big / 100 && surface_starts > big / 100,
+                "object {n}: {hits}"
+            );
+        }
+        // The dodecahedra (twelve members) and the cubes with two more faces have an index.
+        assert_eq!(indexed, 4);
     }
 
     /// Unions ask their plane members through their faces (`scene::faces`) and answer as

@@ -34,19 +34,38 @@ pub struct Face {
 
 /// The faces of a CSG node's members, by member index (None for other members).
 #[derive(Clone, Debug)]
-pub struct Faces(Box<[Option<Face>]>);
+pub struct Faces {
+    faces: Box<[Option<Face>]>,
+    /// Every member is a face with unbounded bounds, and there are at most `MAX_ALL` of them
+    /// (`csg_hit`'s search of polyhedra).
+    all: bool,
+}
+
+/// The most members a node whose members are all faces may have for `Faces::all`.
+pub const MAX_ALL: usize = 32;
 
 impl Faces {
     /// The faces of `children`, when at least two members are such planes.
     pub fn of(children: &[Object]) -> Option<Faces> {
         let faces: Box<[Option<Face>]> = children.iter().map(face_of).collect();
-        (faces.iter().flatten().count() >= 2).then_some(Faces(faces))
+        let all = children.len() <= MAX_ALL
+            && faces.iter().all(Option::is_some)
+            && children
+                .iter()
+                .all(|c| c.bounds == crate::math::Aabb::INFINITE);
+        (faces.iter().flatten().count() >= 2).then_some(Faces { faces, all })
     }
 
     /// Member `i`'s face, when it is one.
     #[inline]
     pub fn get(&self, i: usize) -> Option<&Face> {
-        self.0.get(i).and_then(Option::as_ref)
+        self.faces.get(i).and_then(Option::as_ref)
+    }
+
+    /// The faces, when every member is one with unbounded bounds (at most `MAX_ALL`).
+    #[inline]
+    pub fn all(&self) -> Option<&[Option<Face>]> {
+        self.all.then_some(&self.faces[..])
     }
 }
 

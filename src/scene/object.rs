@@ -295,6 +295,15 @@ impl Object {
                     cull.as_ref().and_then(|c| c.aabb.as_ref()),
                     cull.as_ref().and_then(|c| c.faces.as_ref()),
                 );
+                // Polyhedra: members that are all faces. An index, if any, changes nothing
+                // for them: a plane's leaf box is never finite (one half-space), so the index
+                // offers every member to every ray, in member order (`ChildIndex::others`),
+                // and asks every member in `csg_keeps` (`any_at`).
+                if let Some(f) = culls.1 {
+                    if let Some(all) = f.all().filter(|_| faces::ray_ok(ray)) {
+                        return self.faces_first_hit(*op, children, (culls.0, f, all), ray, tmax);
+                    }
+                }
                 // Members that are plain intersections are searched through (`csg_hit`).
                 let index = index.as_deref();
                 if index.is_none() && children.iter().any(|c| csg_hit::folded(c).is_some()) {
