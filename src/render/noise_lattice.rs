@@ -91,8 +91,11 @@ fn cell(p: DVec3) -> Cell {
     // Each corner's position in ENTRY: a three-stage hash of its coordinates, the first
     // stages shared between corners (14 table reads instead of 24).
     let m = |c: i64| (c.wrapping_add(HASH_OFFSET) & 4095) as usize;
-    let hx = [HASH_X[m(ix)] as usize, HASH_X[m(ix + 1)] as usize];
-    let (my, mz) = ([m(iy), m(iy + 1)], [m(iz), m(iz + 1)]);
+    // Wrapping: a coordinate beyond i64 saturates to i64::MAX, whose neighbour wraps (as a
+    // release build always did; a debug build stopped on the overflow).
+    let next = |c: i64| m(c.wrapping_add(1));
+    let hx = [HASH_X[m(ix)] as usize, HASH_X[next(ix)] as usize];
+    let (my, mz) = ([m(iy), next(iy)], [m(iz), next(iz)]);
     let mut hxy = [0usize; 4];
     for (k, h) in hxy.iter_mut().enumerate() {
         // The mask changes nothing (both sides are below 4096) but spares a bounds check.
