@@ -66,8 +66,11 @@ pub fn roots_in_window(c: &[f64], lo: f64, hi: f64, wlo: f64, whi: f64) -> Roots
     let mut a_val = Some(lo);
     let mut a_br = (lo, lo, false);
     let mut ended = false;
-    for k in 0..=np {
-        let b_br = if k < np { pts[k] } else { (hi, hi, false) };
+    for b_br in pts[..np]
+        .iter()
+        .copied()
+        .chain(std::iter::once((hi, hi, false)))
+    {
         // Wholly below the window (`b` is at most its bracket's end).
         if b_br.1 < wlo {
             a_val = None;
