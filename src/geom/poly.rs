@@ -18,8 +18,10 @@ use crate::geom::bernstein::surely_no_root;
 
 mod definite;
 mod sturm_first;
+mod window;
 pub use definite::surely_definite_quartic;
 pub use sturm_first::{sturm_first_root_in, sturm_roots_in_window};
+pub use window::roots_in_window;
 
 /// Highest degree handled; higher-degree input yields no roots rather than a panic.
 pub const MAX_DEGREE: usize = 16;
@@ -287,7 +289,7 @@ impl Candidate<'_> {
 /// The first of [`roots_in`]'s roots (in increasing order) for which `keep` holds, bit for bit
 /// as [`roots_in`] gives it, for a caller that wants only the nearest crossing: the roots and
 /// critical points beyond it are not polished. The pieces are walked as `isolate` walks them,
-/// each critical point polished only when the walk reaches it (see [`critical_in_window`]
+/// each critical point polished only when the walk reaches it (see `window::critical_brackets`
 /// for the brackets), so every piece reached has the same ends as in [`roots_in`].
 #[inline]
 pub fn first_root_in(
@@ -328,7 +330,7 @@ pub fn first_root_with(
     let d = &d[..n];
     // The critical points as brackets still to polish (an exact point has equal ends): a
     // cubic's are a quadratic's, found at once; otherwise the brackets are those
-    // `critical_in_window` finds.
+    // `window::critical_brackets` finds.
     let mut cands = [(0.0, 0.0, false); MAX_DEGREE + 2];
     let mut m = 0;
     if n == 3 {
@@ -406,89 +408,6 @@ pub(crate) fn roots_in_isolated(c: &[f64], lo: f64, hi: f64) -> Roots {
         if lo <= hi {
             isolate(c, lo, hi, &mut out, false);
         }
-    }
-    out
-}
-
-/// [`roots_in`] for a caller that needs only the roots in `[wlo, whi]` (a clipped shape's
-/// crossings inside its clipping box): roots outside may be left out, and those inside come out
-/// bit for bit as [`roots_in`] gives them. Only the polishing is saved: a root is polished
-/// only in a piece reaching into the window, and a critical point only when it bounds such a
-/// piece, so each piece reaching into the window has the same ends as in [`roots_in`].
-pub fn roots_in_window(c: &[f64], lo: f64, hi: f64, wlo: f64, whi: f64) -> Roots {
-    let mut out = Roots::new();
-    let Some(c) = trim(c) else {
-        return out;
-    };
-    let n = c.len().saturating_sub(1);
-    if lo > hi {
-        return out;
-    }
-    if n <= 2 || wlo.is_nan() || whi.is_nan() {
-        isolate(c, lo, hi, &mut out, false);
-        return out;
-    }
-    // No root inside the window. Without a change of sign in the window `roots_in` may
-    // still polish a root from a bracket reaching into it, but only where the polynomial is
-    // within a few rounding errors of zero (a Newton step of a few ulps, or a collapsed
-    // bracket next to a negative end), and `surely_no_root` asks for values far above that.
-    let (wl, wh) = (lo.max(wlo), hi.min(whi));
-    if wl > wh || surely_no_root(c, wl, wh) {
-        return out;
-    }
-    let mut d = [0.0; MAX_DEGREE];
-    for i in 1..=n {
-        d[i - 1] = c[i] * i as f64;
-    }
-    let crit = critical_in_window(&d[..n], lo, hi, wlo, whi);
-    // `isolate`'s loop over the pieces, polishing only those reaching into the window.
-    let mut a = lo;
-    let mut fa = eval(c, a);
-    for &b in crit.iter().chain(std::iter::once(&hi)) {
-        let fb = eval(c, b);
-        if fa == 0.0 {
-            out.push(a);
-        } else if (fa < 0.0) != (fb < 0.0) && fb != 0.0 && b >= wlo && a <= whi {
-            out.push(polish(c, a, b, fa < 0.0));
-        }
-        a = b;
-        fa = fb;
-    }
-    if fa == 0.0 {
-        out.push(a);
-    }
-    out
-}
-
-/// What `isolate(d, lo, hi, _, true)` gives (the critical points of the polynomial whose
-/// derivative is `d`), less the points that bound only pieces lying wholly outside
-/// `[wlo, whi]`: a root is left out when the next root's bracket ends below `wlo` or the
-/// previous root's starts above `whi`. The nearest point below the window and the nearest
-/// above are always kept (the next root of the one below lies in or above the window), so the
-/// pieces reaching into the window are bounded as without a window.
-fn critical_in_window(d: &[f64], lo: f64, hi: f64, wlo: f64, whi: f64) -> Roots {
-    let mut out = Roots::new();
-    let n = d.len().saturating_sub(1);
-    if n <= 2 {
-        isolate(d, lo, hi, &mut out, true);
-        return out;
-    }
-    let mut dd = [0.0; MAX_DEGREE];
-    for i in 1..=n {
-        dd[i - 1] = d[i] * i as f64;
-    }
-    let mut crit = Roots::new();
-    isolate(&dd[..n], lo, hi, &mut crit, true);
-    // The roots `isolate` would report, in order, each as its bracket (a, b, sign at a); an
-    // exact zero has a == b.
-    let mut cands = [(0.0, 0.0, false); MAX_DEGREE + 2];
-    let m = brackets(d, crit.iter().copied(), lo, hi, &mut cands);
-    for k in 0..m {
-        if (k + 1 < m && cands[k + 1].1 < wlo) || (k > 0 && cands[k - 1].0 > whi) {
-            continue;
-        }
-        let (a, b, neg) = cands[k];
-        out.push(if a == b { a } else { polish(d, a, b, neg) });
     }
     out
 }

@@ -113,6 +113,7 @@ fn attach_indexes(o: &mut Object, opened: bool) {
         }
         return;
     }
+    let bounds = o.bounds;
     let ObjKind::Csg {
         op,
         children,
@@ -139,6 +140,27 @@ fn attach_indexes(o: &mut Object, opened: bool) {
     for c in children.iter_mut() {
         let open = opening && opens(c);
         attach_indexes(c, open);
+    }
+    // An intersection keeps only crossings in its tight box (`all_hits_unclipped` tests it
+    // first), so a member that can save work there (a quartic: `roots_in_window` leaves the
+    // pieces reaching Cauchy's bound unpolished) is asked only for those; the window is padded
+    // against rounding where it is used. objects/quartic/trough 141 -> 106 ms, monkey 81 -> 59.
+    if *op == CsgOp::Intersection {
+        // Its bounds hold every crossing it keeps (the walk skips a ray that misses them;
+        // `bounded_by` is not read), and its cull box, when it has one, is tighter.
+        let tight = cull.as_ref().and_then(|c| c.aabb).unwrap_or(bounds);
+        if let Some(bx) = Some(tight).filter(|b| b.is_finite() && !b.is_empty()) {
+            for c in children.iter_mut() {
+                if !c.clip.is_empty() || c.inverse {
+                    continue;
+                }
+                if let ObjKind::Shape(shape, w) = &mut c.kind {
+                    if w.is_none() && shape.windowed() {
+                        *w = Some(Box::new(bx));
+                    }
+                }
+            }
+        }
     }
     *index = mine;
 }

@@ -108,6 +108,42 @@ fn window_keeps_the_roots_inside_exactly() {
     }
 }
 
+/// As `window_keeps_the_roots_inside_exactly`, with the window's edges right at a root or a
+/// critical point (within 1e-15 to 1e-6 of it, either side): where the sign test beside the
+/// edge decides whether a piece is polished at all.
+#[test]
+fn window_edges_beside_roots_keep_them_exactly() {
+    let mut rnd = crate::math::xorshift_unit(0x9e37_79b9_7f4a_7c15u64);
+    for case in 0..30_000 {
+        let deg = 4 + case % 3;
+        let roots: Vec<f64> = (0..deg).map(|_| rnd() * 10.0 - 1.0).collect();
+        let mut c = from_roots(&roots);
+        if case % 3 == 1 {
+            c[0] += (rnd() - 0.5) * 1e-6;
+        }
+        if case % 5 == 0 {
+            c = c.iter().map(|x| x * 1e-7).collect();
+        }
+        let (lo, hi) = (1e-6, 40.0 + 400.0 * rnd());
+        let full = roots_in(&c, lo, hi);
+        let near = |rnd: &mut dyn FnMut() -> f64, x: f64| {
+            let e = 10f64.powf(-15.0 + 9.0 * rnd());
+            x + if rnd() < 0.5 { -e } else { e } * (x.abs() + 1.0)
+        };
+        let pick = |rnd: &mut dyn FnMut() -> f64| {
+            if !full.is_empty() && rnd() < 0.7 {
+                full[(rnd() * full.len() as f64) as usize % full.len()]
+            } else {
+                rnd() * 10.0 - 1.0
+            }
+        };
+        let (x0, x1) = (pick(&mut rnd), pick(&mut rnd));
+        let (wlo, whi) = (near(&mut rnd, x0.min(x1)), near(&mut rnd, x0.max(x1)));
+        let part = roots_in_window(&c, lo, hi, wlo, whi);
+        crate::geom::test_rng::check_window(&full, &part, (wlo, whi), &format!("{c:?}"));
+    }
+}
+
 /// The first root kept is `roots_in`'s first root kept, bit for bit: random polynomials
 /// of degree 1 to 8 with clustered, double and far roots, and thresholds anywhere.
 #[test]
