@@ -68,24 +68,21 @@ impl Texture {
     }
 
     pub fn apply_transform(&mut self, t: &Transform) {
-        self.pigment.apply_transform(t);
-        if let Some(tp) = &mut self.pattern {
-            tp.transform = tp.transform.then(t);
-        }
-        if let Some(n) = &mut self.normal {
-            n.apply_transform(t);
-        }
-        if let Some(u) = &mut self.under {
-            u.apply_transform(t);
-        }
+        self.transform_layers(t, false);
     }
 
     /// The object's own transform, which moves its texture with it except where the texture
     /// is uv-mapped: uv coordinates travel with the surface already, and povray leaves a
     /// uv-mapped pattern unmoved by the object's transforms (measured: tests/probes/uv_*).
     pub fn apply_object_transform(&mut self, t: &Transform) {
-        if !self.uv_mapping {
-            if !self.pigment.uv_mapping {
+        self.transform_layers(t, true);
+    }
+
+    /// Every layer's pigment, texture pattern and normal moved by `t`; with `keep_uv`, the
+    /// uv-mapped ones stay.
+    fn transform_layers(&mut self, t: &Transform, keep_uv: bool) {
+        if !(keep_uv && self.uv_mapping) {
+            if !(keep_uv && self.pigment.uv_mapping) {
                 self.pigment.apply_transform(t);
             }
             if let Some(tp) = &mut self.pattern {
@@ -96,7 +93,7 @@ impl Texture {
             }
         }
         if let Some(u) = &mut self.under {
-            u.apply_object_transform(t);
+            u.transform_layers(t, keep_uv);
         }
     }
 
