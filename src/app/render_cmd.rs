@@ -260,7 +260,10 @@ fn render_frame(
                     &progress,
                     samples,
                     q.channels,
-                    |seen, px| q.put(seen.rgb, 1.0 - seen.clear, px),
+                    |seen, px| {
+                        let c = seen.rgb;
+                        q.put(c.x, c.y, c.z, 1.0 - seen.clear, px)
+                    },
                 );
                 let render_time = trace_start.elapsed().as_secs_f64();
                 let written = pic.write(&f.output, &job.output_spec);
