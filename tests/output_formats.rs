@@ -553,11 +553,14 @@ fn animation_frames_keep_every_extension() {
 /// without a film (`output::Quantised`): its files must hold the bytes `write` makes of the
 /// film, in every integer type, at several depths, with and without alpha, and at a size
 /// where quantisation goes through its table of steps (16,384 pixels and more).
+/// A scene, the file's extension, lancer's options and the picture's size.
+type Case<'a> = (&'a Path, &'a str, &'a [&'a str], (u32, u32));
+
 #[test]
 fn files_rendered_without_a_film_are_the_films_files() {
     let ramp = scene("ramp.pov", RAMP);
     let alpha_scene = scene("alpha.pov", ALPHA);
-    let cases: &[(&Path, &str, &[&str], (u32, u32))] = &[
+    let cases: &[Case] = &[
         (&ramp, "png", &["+FN8"], (W, H)),
         (&ramp, "png", &["+FN16"], (W, H)),
         (&ramp, "png", &["+FN5"], (W, H)),
