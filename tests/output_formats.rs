@@ -548,3 +548,67 @@ fn animation_frames_keep_every_extension() {
         );
     }
 }
+
+/// The command quantises a render without anti-aliasing pixel by pixel as it is traced,
+/// without a film (`output::Quantised`): its files must hold the bytes `write` makes of the
+/// film, in every integer type, at several depths, with and without alpha, and at a size
+/// where quantisation goes through its table of steps (16,384 pixels and more).
+/// A scene, the file's extension, lancer's options and the picture's size.
+type Case<'a> = (&'a Path, &'a str, &'a [&'a str], (u32, u32));
+
+#[test]
+fn files_rendered_without_a_film_are_the_films_files() {
+    let ramp = scene("ramp.pov", RAMP);
+    let alpha_scene = scene("alpha.pov", ALPHA);
+    let cases: &[Case] = &[
+        (&ramp, "png", &["+FN8"], (W, H)),
+        (&ramp, "png", &["+FN16"], (W, H)),
+        (&ramp, "png", &["+FN5"], (W, H)),
+        (&ramp, "png", &["+FN8"], (160, 120)),
+        (&ramp, "ppm", &["+FP"], (160, 120)),
+        (&ramp, "ppm", &["+FP12"], (W, H)),
+        (&ramp, "png", &["+FN8", "File_Gamma=2.2"], (160, 120)),
+        (&ramp, "tga", &["+FT"], (W, H)),
+        (&ramp, "tga", &["+FC"], (W, H)),
+        (&ramp, "bmp", &["+FB"], (W, H)),
+        (&ramp, "jpg", &["+FJ"], (W, H)),
+        (&alpha_scene, "png", &["+FN8", "+UA"], (W, H)),
+        (&alpha_scene, "png", &["+FN16", "+UA"], (160, 120)),
+        (&alpha_scene, "tga", &["+FT", "+UA"], (W, H)),
+        (&alpha_scene, "bmp", &["+FB", "+UA"], (W, H)),
+        (&alpha_scene, "ppm", &["+FP", "+UA"], (W, H)),
+        (&alpha_scene, "png", &["+FN8", "+UA"], (160, 120)),
+    ];
+    for (i, &(pov, ext, opts, (w, h))) in cases.iter().enumerate() {
+        let alpha = opts.contains(&"+UA");
+        let s = RenderSettings {
+            width: w,
+            height: h,
+            antialias: None,
+            alpha,
+            ..RenderSettings::default()
+        };
+        let film = lancer::api::render_file(pov, &[], &s).unwrap();
+        let whole = ours(&film, &format!("film{i}.{ext}"), &lancer_spec(opts));
+        let direct = scratch().join(format!("direct{i}.{ext}"));
+        let size = [format!("+W{w}"), format!("+H{h}")];
+        let status = Command::new(env!("CARGO_BIN_EXE_lancer"))
+            .args([pov.to_str().unwrap(), "-A", "-q", &size[0], &size[1]])
+            .args(opts)
+            .arg(format!("+O{}", direct.display()))
+            .env("LANCER_NO_CONFIG", "1")
+            .status()
+            .unwrap();
+        assert!(status.success(), "{opts:?}");
+        if ext == "tga" {
+            // The extension area holds the date.
+            assert!(tga_body(&whole) == tga_body(&direct), "{opts:?} {w}x{h}");
+        } else {
+            let (a, b) = (
+                std::fs::read(&whole).unwrap(),
+                std::fs::read(&direct).unwrap(),
+            );
+            assert!(a == b, "{opts:?} {w}x{h}");
+        }
+    }
+}

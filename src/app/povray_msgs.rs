@@ -68,13 +68,15 @@ pub fn render_failed() {
 }
 
 /// What a user abort prints; the process then exits with 2.
-pub fn aborted(signal: &str) {
+pub fn aborted_text(signal: &str) -> String {
     if on() {
-        eprintln!("povray: received signal {signal}; requested render cancel");
-        eprintln!("Fatal error in renderer: Frontend halted render.");
-        eprintln!("Render cancelled by user");
+        format!(
+            "povray: received signal {signal}; requested render cancel\n\
+             Fatal error in renderer: Frontend halted render.\n\
+             Render cancelled by user\n"
+        )
     } else {
-        eprintln!("lancer: interrupted ({signal}); nothing written");
+        format!("lancer: interrupted ({signal}); nothing written\n")
     }
 }
 

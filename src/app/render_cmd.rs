@@ -239,26 +239,60 @@ fn render_frame(
     let trace_start = Instant::now();
     let (rays, camera_rays, timing) = match plan {
         Plan::Whole => {
-            let film = match feed {
-                Some(feed) => feed.render(&built.scene, &job.settings),
-                None => crate::render::render(&built.scene, &job.settings, &progress),
+            // Without anti-aliasing, a display or a float file, each pixel is quantised as it
+            // is traced: no film to fill and read back.
+            let direct = (feed.is_none() && job.write_output && job.settings.antialias.is_none())
+                .then(|| {
+                    crate::output::Quantised::new(
+                        &job.output_spec,
+                        built.scene.gamma,
+                        w,
+                        h,
+                        job.settings.alpha,
+                    )
+                })
+                .flatten();
+            let (rays, camera_rays, render_time, written) = if let Some(mut pic) = direct {
+                let (samples, q) = pic.samples();
+                let (rays, camera_rays) = crate::render::render_into(
+                    &built.scene,
+                    &job.settings,
+                    &progress,
+                    samples,
+                    q.channels,
+                    |seen, px| {
+                        let c = seen.rgb;
+                        q.put(c.x, c.y, c.z, 1.0 - seen.clear, px)
+                    },
+                );
+                let render_time = trace_start.elapsed().as_secs_f64();
+                let written = pic.write(&f.output, &job.output_spec);
+                (rays, camera_rays, render_time, written)
+            } else {
+                let film = match feed {
+                    Some(feed) => feed.render(&built.scene, &job.settings),
+                    None => crate::render::render(&built.scene, &job.settings, &progress),
+                };
+                let render_time = trace_start.elapsed().as_secs_f64();
+                let written = if job.write_output {
+                    crate::output::write(&film, &f.output, &job.output_spec)
+                } else {
+                    Ok(())
+                };
+                (film.rays, film.camera_rays, render_time, written)
             };
-            let render_time = trace_start.elapsed().as_secs_f64();
-            let write_start = Instant::now();
-            if job.write_output {
-                if let Err(e) = crate::output::write(&film, &f.output, &job.output_spec) {
-                    eprintln!("lancer: {e}");
-                    povray_msgs::render_failed();
-                    return ExitCode::from(1);
-                }
+            if let Err(e) = written {
+                eprintln!("lancer: {e}");
+                povray_msgs::render_failed();
+                return ExitCode::from(1);
             }
             let timing = if job.write_output {
-                let write = write_start.elapsed().as_secs_f64();
+                let write = trace_start.elapsed().as_secs_f64() - render_time;
                 format!("render {render_time:.3}s, write {write:.3}s")
             } else {
                 format!("render {render_time:.3}s")
             };
-            (film.rays, film.camera_rays, timing)
+            (rays, camera_rays, timing)
         }
         Plan::Banded(rows) => {
             use crate::render::band::render_bands;

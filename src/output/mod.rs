@@ -18,6 +18,7 @@ mod stream;
 use std::path::{Path, PathBuf};
 
 use crate::render::Film;
+use crate::scene::build::GammaMode;
 
 pub use dither::DitherMethod;
 pub use stream::{why_not_streamable, write_banded};
@@ -273,13 +274,25 @@ pub fn samples8(film: &Film, spec: &OutputSpec, alpha: bool) -> (Vec<u8>, usize)
 /// Writes the picture to `path`, or to standard output when `path` is `-` (POV-Ray's `+O-`,
 /// for piping into another program).
 pub fn write(film: &Film, path: &Path, spec: &OutputSpec) -> Result<(), String> {
-    if path == Path::new("-") {
-        return write_stdout(film, spec);
-    }
-    write_atomic(path, |tmp| write_to(film, tmp, spec))
+    write_by(path, spec, |tmp| write_to(film, tmp, spec))
 }
 
-fn write_stdout(film: &Film, spec: &OutputSpec) -> Result<(), String> {
+/// Writes to `path` (or standard output for `-`) what `write_to` writes to a file.
+fn write_by(
+    path: &Path,
+    spec: &OutputSpec,
+    write_to: impl FnOnce(&Path) -> Result<(), String>,
+) -> Result<(), String> {
+    if path == Path::new("-") {
+        return write_stdout(spec, write_to);
+    }
+    write_atomic(path, write_to)
+}
+
+fn write_stdout(
+    spec: &OutputSpec,
+    write_to: impl FnOnce(&Path) -> Result<(), String>,
+) -> Result<(), String> {
     use std::io::Write;
     // The encoders write files; the finished file is copied out whole, so a failed render
     // sends nothing down the pipe.
@@ -288,7 +301,7 @@ fn write_stdout(film: &Film, spec: &OutputSpec) -> Result<(), String> {
         std::process::id(),
         spec.file_type.extension()
     ));
-    let r = write_to(film, &tmp, spec).and_then(|()| {
+    let r = write_to(&tmp).and_then(|()| {
         let bytes = std::fs::read(&tmp).map_err(|e| e.to_string())?;
         let mut out = std::io::stdout().lock();
         out.write_all(&bytes)
@@ -298,6 +311,55 @@ fn write_stdout(film: &Film, spec: &OutputSpec) -> Result<(), String> {
     let _ = std::fs::remove_file(&tmp);
     r.map_err(|e| format!("cannot write the picture to standard output: {e}"))
 }
+
+/// A picture quantised pixel by pixel while it is rendered, for files of integer samples
+/// written whole: the render needs no film (24 bytes a pixel, a few hundred page faults at
+/// 320x240, and the quantisation's pass reading it back) and the file gets the same bytes
+/// as `write` of the film would give it.
+pub(crate) struct Quantised {
+    pub(crate) plane: pixels::Plane,
+    pub(crate) q: pixels::Quantiser,
+    gamma: GammaMode,
+}
+
+impl Quantised {
+    /// For a `width`×`height` picture of `gamma` written as `spec` says, the film keeping
+    /// alpha when `alpha` (`+UA`); None for types written from the film (HDR, EXR) and for
+    /// dithering.
+    pub(crate) fn new(
+        spec: &OutputSpec,
+        gamma: GammaMode,
+        width: u32,
+        height: u32,
+        alpha: bool,
+    ) -> Option<Quantised> {
+        if !spec.file_type.is_integer() {
+            return None;
+        }
+        let alpha = alpha && spec.file_type.has_alpha();
+        let n = width as usize * height as usize;
+        let q = pixels::Quantiser::new(gamma, spec, alpha, n)?;
+        Some(Quantised {
+            plane: q.plane(width, height),
+            q,
+            gamma,
+        })
+    }
+
+    /// The samples, row-major, `channels()` a pixel, for `put` to fill.
+    pub(crate) fn samples(&mut self) -> (&mut [u16], &Quantiser) {
+        (&mut self.plane.data, &self.q)
+    }
+
+    /// Writes the finished picture as `write` writes a film.
+    pub(crate) fn write(&self, path: &Path, spec: &OutputSpec) -> Result<(), String> {
+        write_by(path, spec, |tmp| {
+            write_plane_to(&self.plane, self.gamma, tmp, spec)
+        })
+    }
+}
+
+pub(crate) use pixels::Quantiser;
 
 /// Writes `path` under a temporary name beside it, then renames: whoever sees the name sees
 /// a finished file (frames skipped by `+C`, cache records, reports). `write` gets the
@@ -334,29 +396,37 @@ fn temp_name(path: &Path) -> PathBuf {
 
 fn write_to(film: &Film, tmp: &Path, spec: &OutputSpec) -> Result<(), String> {
     let alpha = film.alpha.is_some() && spec.file_type.has_alpha();
-    let create = || {
-        std::fs::File::create(tmp)
-            .map(std::io::BufWriter::new)
-            .map_err(|e| e.to_string())
-    };
     match spec.file_type {
         FileType::Exr => codecs::write_exr(film, alpha, tmp),
-        FileType::Hdr => codecs::write_hdr(film, create()?),
-        FileType::Jpeg => {
-            let plane = pixels::quantise(film, spec, false);
-            codecs::write_jpeg(&plane, spec.jpeg_quality, create()?)
-        }
-        FileType::Png => {
-            let plane = pixels::quantise(film, spec, alpha);
-            png::write(&plane, pixels::png_gamma(film, spec), create()?)
-        }
-        FileType::Ppm => simple::write_ppm(&pixels::quantise(film, spec, false), create()?),
+        FileType::Hdr => codecs::write_hdr(film, create(tmp)?),
+        // JPEG and PPM have no alpha (`has_alpha`): the colour over black.
+        _ => write_plane_to(&pixels::quantise(film, spec, alpha), film.gamma, tmp, spec),
+    }
+}
+
+fn create(tmp: &Path) -> Result<std::io::BufWriter<std::fs::File>, String> {
+    std::fs::File::create(tmp)
+        .map(std::io::BufWriter::new)
+        .map_err(|e| e.to_string())
+}
+
+/// Writes the samples of an integer file type; `gamma` is the picture's.
+fn write_plane_to(
+    plane: &pixels::Plane,
+    gamma: GammaMode,
+    tmp: &Path,
+    spec: &OutputSpec,
+) -> Result<(), String> {
+    match spec.file_type {
+        FileType::Exr | FileType::Hdr => Err("HDR and EXR files are written from the film".into()),
+        FileType::Jpeg => codecs::write_jpeg(plane, spec.jpeg_quality, create(tmp)?),
+        FileType::Png => png::write(plane, pixels::png_gamma(gamma, spec), create(tmp)?),
+        FileType::Ppm => simple::write_ppm(plane, create(tmp)?),
         FileType::Tga | FileType::TgaRle => {
-            let plane = pixels::quantise(film, spec, alpha);
             let rle = spec.file_type == FileType::TgaRle;
-            simple::write_tga(&plane, rle, pixels::display_gamma(film, spec), create()?)
+            simple::write_tga(plane, rle, pixels::display_gamma(gamma, spec), create(tmp)?)
         }
-        FileType::Bmp => simple::write_bmp(&pixels::quantise(film, spec, alpha), create()?),
+        FileType::Bmp => simple::write_bmp(plane, create(tmp)?),
     }
 }
 

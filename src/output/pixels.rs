@@ -41,8 +41,8 @@ impl Curve {
         }
     }
 
-    fn of(film: &Film, spec: &OutputSpec) -> Curve {
-        match (film.gamma, spec.file_gamma) {
+    fn of(gamma: GammaMode, spec: &OutputSpec) -> Curve {
+        match (gamma, spec.file_gamma) {
             (GammaMode::None, _) => Curve::Identity,
             (_, FileGamma::Srgb) => Curve::Srgb,
             (_, FileGamma::Power(g)) => Curve::Power(g),
@@ -88,103 +88,178 @@ pub(crate) fn linear_rgb(film: &Film, i: usize, straight: bool) -> [f64; 3] {
 /// of the curve would cost more than it saves.
 const STEPS_MIN_PIXELS: usize = 16 * 1024;
 
-/// `linear_rgb` before the channels' transfer to linear light: what `Steps` takes. Where
-/// nothing is opaque, zero (which every curve takes to linear zero, as `linear_rgb` gives).
-fn film_value(film: &Film, i: usize, straight: bool) -> DVec3 {
-    let v = film.pixels[i];
-    if straight {
-        if let Some(alpha) = &film.alpha {
-            let a = alpha[i];
-            if a <= 0.0 {
-                return DVec3::ZERO;
+/// Linear light of one working-space channel in a picture of `gamma` (`Film::linear`).
+fn linear_of(gamma: GammaMode, v: f64) -> f64 {
+    match gamma {
+        GammaMode::Corrected(g) if g != 1.0 => v.max(0.0).powf(g),
+        GammaMode::Corrected(_) => v.max(0.0),
+        GammaMode::None => v,
+    }
+}
+
+/// How the samples of one picture are made from its pixels, one pixel at a time and in any
+/// order: what `quantise` does without dithering, and what a render without anti-aliasing
+/// does as each pixel is traced (`render::render_quantised`), so that picture needs no film.
+pub(crate) struct Quantiser {
+    gamma: GammaMode,
+    curve: Curve,
+    max: f64,
+    bits: u32,
+    /// 4 with alpha (straight colour, alpha last), else 3 (the colour over black).
+    pub channels: usize,
+    /// The table of a colour channel's steps (output::steps), on big 8-bit pictures.
+    steps: Option<Steps>,
+}
+
+impl Quantiser {
+    /// For a `pixels`-pixel picture of `gamma` written as `spec` says, with an alpha channel
+    /// when `alpha`; None when `spec` dithers (that needs the whole picture).
+    pub fn new(gamma: GammaMode, spec: &OutputSpec, alpha: bool, pixels: usize) -> Option<Self> {
+        if spec.effective_dither().is_some() {
+            return None;
+        }
+        let bits = spec.effective_bits();
+        let max = ((1u32 << bits) - 1) as f64;
+        let curve = Curve::of(gamma, spec);
+        // A colour channel's sample as a function of its film value (after the division
+        // by alpha), two `powf` each; a table of its steps replaces them on big 8-bit
+        // pictures (output::steps).
+        let q = |v: f64| (curve.encode(linear_of(gamma, v)) * max + 0.5).floor() as u16;
+        // Where q steps to k, roughly: the curves' inverses at k − ½.
+        let guess = |k: u16| {
+            let l = curve.decode((k as f64 - 0.5) / max);
+            match gamma {
+                GammaMode::Corrected(g) if g != 1.0 => l.powf(1.0 / g),
+                _ => l,
             }
-            return v / a;
+        };
+        let steps = if bits <= 8 && pixels >= STEPS_MIN_PIXELS {
+            Steps::new_near(q, guess, max as u16)
+        } else {
+            None
+        };
+        Some(Quantiser {
+            gamma,
+            curve,
+            max,
+            bits,
+            channels: if alpha { 4 } else { 3 },
+            steps,
+        })
+    }
+
+    /// An empty plane of `width`×`height` pixels for `put` to fill.
+    pub fn plane(&self, width: u32, height: u32) -> Plane {
+        Plane {
+            width,
+            height,
+            channels: self.channels,
+            bits: self.bits,
+            data: vec![0u16; width as usize * height as usize * self.channels],
         }
     }
-    v
+
+    /// The samples of one pixel, `r`, `g`, `b` its film colour and `coverage` its opacity
+    /// (read only with alpha), into `px` (`channels` long).
+    /// The colour comes as three numbers, not a `DVec3`: passed in memory, its `y` and `z`
+    /// were read with one 16-byte load from the tracer's two 8-byte stores just made, a
+    /// store-forwarding stall on every pixel (a third of this function's time).
+    #[inline]
+    pub fn put(&self, r: f64, g: f64, b: f64, coverage: f64, px: &mut [u16]) {
+        let rgb = DVec3::new(r, g, b);
+        let alpha = self.channels == 4;
+        let max = self.max;
+        if let Some(steps) = &self.steps {
+            // `linear_rgb` before the channels' transfer to linear light: what `Steps` takes.
+            // Where nothing is opaque, zero (which every curve takes to linear zero, as
+            // `linear_rgb` gives).
+            let v = if !alpha {
+                rgb
+            } else if coverage <= 0.0 {
+                DVec3::ZERO
+            } else {
+                rgb / coverage
+            };
+            px[0] = steps.q(v.x);
+            px[1] = steps.q(v.y);
+            px[2] = steps.q(v.z);
+        } else {
+            let [r, g, b] = self.linear_rgb(rgb, coverage);
+            for (c, l) in [r, g, b].into_iter().enumerate() {
+                px[c] = (self.curve.encode(l) * max + 0.5).floor() as u16;
+            }
+        }
+        if alpha {
+            // Alpha is stored as it is, not through the colour's curve.
+            let a = Curve::Identity.encode(coverage);
+            px[3] = (a * max + 0.5).floor() as u16;
+        }
+    }
+
+    /// Linear light of a pixel: straight (divided by its alpha; black where nothing is
+    /// opaque) with alpha, else the colour over black.
+    fn linear_rgb(&self, mut v: DVec3, coverage: f64) -> [f64; 3] {
+        if self.channels == 4 {
+            if coverage <= 0.0 {
+                return [0.0; 3];
+            }
+            v /= coverage;
+        }
+        let g = self.gamma;
+        [linear_of(g, v.x), linear_of(g, v.y), linear_of(g, v.z)]
+    }
 }
 
 /// The samples of `film` for `spec`, with an alpha channel when `alpha` (straight colour).
 pub(crate) fn quantise(film: &Film, spec: &OutputSpec, alpha: bool) -> Plane {
     let alpha = alpha && film.alpha.is_some();
+    let n = film.pixels.len();
+    let coverage = |i: usize| film.alpha.as_ref().map_or(1.0, |a| a[i]);
+    // Each pixel on its own, straight into the file's samples: the two whole-picture
+    // buffers in between cost more in page faults than the arithmetic (a 512x512
+    // picture: 10 MB).
+    if let Some(q) = Quantiser::new(film.gamma, spec, alpha, n) {
+        let mut plane = q.plane(film.width, film.height);
+        let row = film.width as usize * q.channels;
+        plane
+            .data
+            .par_chunks_mut(row.max(1))
+            .enumerate()
+            .for_each(|(y, out)| {
+                for (x, px) in out.chunks_exact_mut(q.channels).enumerate() {
+                    let i = y * film.width as usize + x;
+                    let v = film.pixels[i];
+                    q.put(v.x, v.y, v.z, coverage(i), px);
+                }
+            });
+        return plane;
+    }
     let bits = spec.effective_bits();
     let max = ((1u32 << bits) - 1) as f64;
-    let curve = Curve::of(film, spec);
-    let n = film.pixels.len();
+    let curve = Curve::of(film.gamma, spec);
     let channels = if alpha { 4 } else { 3 };
-    let coverage = |i: usize| film.alpha.as_ref().map_or(1.0, |a| a[i]);
     // Alpha is stored as it is, not through the colour's curve.
     let curves = [curve, curve, curve, Curve::Identity];
-    let data = match spec.effective_dither() {
-        // Each pixel on its own, straight into the file's samples: the two whole-picture
-        // buffers in between cost more in page faults than the arithmetic (a 512x512
-        // picture: 10 MB).
-        None => {
-            let row = film.width as usize * channels;
-            let mut data = vec![0u16; n * channels];
-            // A colour channel's sample as a function of its film value (after the division
-            // by alpha), two `powf` each; a table of its steps replaces them on big 8-bit
-            // pictures (output::steps).
-            let q = |v: f64| (curve.encode(film.linear(v)) * max + 0.5).floor() as u16;
-            // Where q steps to k, roughly: the curves' inverses at k − ½.
-            let guess = |k: u16| {
-                let l = curve.decode((k as f64 - 0.5) / max);
-                match film.gamma {
-                    GammaMode::Corrected(g) if g != 1.0 => l.powf(1.0 / g),
-                    _ => l,
-                }
-            };
-            let steps = if bits <= 8 && n >= STEPS_MIN_PIXELS {
-                Steps::new_near(q, guess, max as u16)
-            } else {
-                None
-            };
-            data.par_chunks_mut(row.max(1))
-                .enumerate()
-                .for_each(|(y, out)| {
-                    for (x, px) in out.chunks_exact_mut(channels).enumerate() {
-                        let i = y * film.width as usize + x;
-                        if let Some(steps) = &steps {
-                            let v = film_value(film, i, alpha);
-                            px[0] = steps.q(v.x);
-                            px[1] = steps.q(v.y);
-                            px[2] = steps.q(v.z);
-                        } else {
-                            let [r, g, b] = linear_rgb(film, i, alpha);
-                            for (c, l) in [r, g, b].into_iter().enumerate() {
-                                px[c] = (curve.encode(l) * max + 0.5).floor() as u16;
-                            }
-                        }
-                        if channels == 4 {
-                            // Alpha is stored as it is, not through the colour's curve.
-                            let a = Curve::Identity.encode(coverage(i));
-                            px[3] = (a * max + 0.5).floor() as u16;
-                        }
-                    }
-                });
-            data
-        }
-        Some(m) => {
-            let lin: Vec<dither::Px> = (0..n)
-                .into_par_iter()
-                .map(|i| {
-                    let [r, g, b] = linear_rgb(film, i, alpha);
-                    [r, g, b, coverage(i)]
-                })
-                .collect();
-            let samples = dither::quantise(&lin, film.width as usize, max, curves, m);
-            samples
-                .iter()
-                .flat_map(|px| px[..channels].iter().copied())
-                .collect()
-        }
-    };
+    let m = spec
+        .effective_dither()
+        .expect("Quantiser::new declines only dithering");
+    let lin: Vec<dither::Px> = (0..n)
+        .into_par_iter()
+        .map(|i| {
+            let [r, g, b] = linear_rgb(film, i, alpha);
+            [r, g, b, coverage(i)]
+        })
+        .collect();
+    let samples = dither::quantise(&lin, film.width as usize, max, curves, m);
     Plane {
         width: film.width,
         height: film.height,
         channels,
         bits,
-        data,
+        data: samples
+            .iter()
+            .flat_map(|px| px[..channels].iter().copied())
+            .collect(),
     }
 }
 
@@ -197,8 +272,8 @@ pub(crate) struct PngGamma {
     pub srgb: bool,
 }
 
-pub(crate) fn png_gamma(film: &Film, spec: &OutputSpec) -> PngGamma {
-    match Curve::of(film, spec) {
+pub(crate) fn png_gamma(gamma: GammaMode, spec: &OutputSpec) -> PngGamma {
+    match Curve::of(gamma, spec) {
         Curve::Power(g) => PngGamma {
             gama: (100000.0 / g).round() as u32,
             srgb: false,
@@ -211,8 +286,8 @@ pub(crate) fn png_gamma(film: &Film, spec: &OutputSpec) -> PngGamma {
 }
 
 /// The display gamma a Targa file records: 2.2 stands for sRGB, as in POV-Ray's files.
-pub(crate) fn display_gamma(film: &Film, spec: &OutputSpec) -> f64 {
-    match Curve::of(film, spec) {
+pub(crate) fn display_gamma(gamma: GammaMode, spec: &OutputSpec) -> f64 {
+    match Curve::of(gamma, spec) {
         Curve::Power(g) => g,
         _ => 2.2,
     }
@@ -282,11 +357,11 @@ mod tests {
             ..OutputSpec::default()
         };
         assert_eq!(quantise(&f, &spec, false).data[0], 51);
-        assert_eq!(png_gamma(&f, &spec).gama, 100000);
+        assert_eq!(png_gamma(f.gamma, &spec).gama, 100000);
         spec.file_gamma = FileGamma::Power(1.8);
-        assert_eq!(png_gamma(&f, &spec).gama, 55556);
+        assert_eq!(png_gamma(f.gamma, &spec).gama, 55556);
         f.gamma = GammaMode::None;
-        let g = png_gamma(&f, &spec);
+        let g = png_gamma(f.gamma, &spec);
         assert!(g.srgb && g.gama == 45455);
         assert_eq!(quantise(&f, &spec, false).data[0], 51);
     }

@@ -55,7 +55,7 @@ pub fn write_banded<T>(
                 let out = out.take().expect("one output");
                 writer = Some(match spec.file_type {
                     FileType::Png => {
-                        let gamma = pixels::png_gamma(band, spec);
+                        let gamma = pixels::png_gamma(band.gamma, spec);
                         let w = png::header(&plane, height, gamma, out)?;
                         Writer::Png(Box::new(w.into_stream_writer().map_err(|e| e.to_string())?))
                     }

@@ -161,6 +161,74 @@ pub(crate) fn jitter_hash(x: u32, y: u32, i: u32) -> f64 {
 
 /// Renders the scene; `progress` is called once per finished row (from any thread).
 pub fn render(scene: &Scene, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)) -> Film {
+    with_tracer(scene, s, |tracer, pretrace_rays| {
+        let pass = match s.antialias {
+            // Method 2 never looks at a pixel's centre, so the first pass would be wasted.
+            Some(threshold) if s.sampling_method == 2 => {
+                aa::method2(tracer, s, threshold, progress)
+            }
+            Some(threshold) => {
+                let mut pass = first_pass(tracer, s, progress);
+                let (rays, camera_rays) = aa1::method1(tracer, &mut pass.samples, s, threshold);
+                pass.rays += rays;
+                pass.camera_rays += camera_rays;
+                pass
+            }
+            None => {
+                let mut film = film_rows(tracer, s, 0..s.height as usize, scene.gamma, progress);
+                film.rays += pretrace_rays;
+                return film;
+            }
+        };
+        let (rays, camera) = (pass.rays + pretrace_rays, pass.camera_rays);
+        film_of(&pass.samples, s, s.height, scene.gamma, (rays, camera))
+    })
+}
+
+/// `render` without anti-aliasing (`s.antialias` must be None) into no film: each pixel, as
+/// it is traced, goes to `put(seen, samples)` with its `per_pixel` samples of `out` (the
+/// whole picture, row-major), the output's quantisation say. The same pixels as `render`'s
+/// film, traced in the same order. Returns the rays traced and, of those, the camera rays.
+pub fn render_into<T: Send>(
+    scene: &Scene,
+    s: &RenderSettings,
+    progress: &(dyn Fn(u64) + Sync),
+    out: &mut [T],
+    per_pixel: usize,
+    put: impl Fn(Seen, &mut [T]) + Sync,
+) -> (u64, u64) {
+    assert!(
+        s.antialias.is_none(),
+        "render_into traces one sample a pixel"
+    );
+    let row = s.width as usize * per_pixel;
+    assert_eq!(out.len(), row * s.height as usize);
+    with_tracer(scene, s, |tracer, pretrace_rays| {
+        let rt = RowTracer::new(tracer, s, progress);
+        if row > 0 {
+            out.par_chunks_mut(row).enumerate().for_each_init(
+                TraceCtx::default,
+                |ctx, (y, samples)| {
+                    rt.row(ctx, y, |x, seen| {
+                        put(seen, &mut samples[x * per_pixel..(x + 1) * per_pixel]);
+                    });
+                },
+            );
+        }
+        (
+            rt.rays.into_inner() + pretrace_rays,
+            rt.camera_rays.into_inner(),
+        )
+    })
+}
+
+/// `f(tracer, rays)` with the final trace's tracer of the scene (photons shot, radiosity's
+/// pretrace done, `rays` the pretrace's rays).
+fn with_tracer<R>(
+    scene: &Scene,
+    s: &RenderSettings,
+    f: impl for<'t> FnOnce(&Tracer<'t>, u64) -> R,
+) -> R {
     let map = photons::PhotonMap::shoot(scene);
     let camera = camera::Camera::of_scene(scene);
     let base = Tracer {
@@ -170,24 +238,7 @@ pub fn render(scene: &Scene, s: &RenderSettings, progress: &(dyn Fn(u64) + Sync)
     let cache = radiosity::pretrace(scene, s, &base);
     let tracer = with_radiosity(&base, cache.as_ref());
     let pretrace_rays = cache.as_ref().map_or(0, |c| c.rays);
-    let pass = match s.antialias {
-        // Method 2 never looks at a pixel's centre, so the first pass would be wasted.
-        Some(threshold) if s.sampling_method == 2 => aa::method2(&tracer, s, threshold, progress),
-        Some(threshold) => {
-            let mut pass = first_pass(&tracer, s, progress);
-            let (rays, camera_rays) = aa1::method1(&tracer, &mut pass.samples, s, threshold);
-            pass.rays += rays;
-            pass.camera_rays += camera_rays;
-            pass
-        }
-        None => {
-            let mut film = film_rows(&tracer, s, 0..s.height as usize, scene.gamma, progress);
-            film.rays += pretrace_rays;
-            return film;
-        }
-    };
-    let (rays, camera) = (pass.rays + pretrace_rays, pass.camera_rays);
-    film_of(&pass.samples, s, s.height, scene.gamma, (rays, camera))
+    f(&tracer, pretrace_rays)
 }
 
 /// The final trace's tracer: `base`, reading the radiosity cache when there is one.

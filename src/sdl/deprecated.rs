@@ -1,8 +1,9 @@
 //! `#declare deprecated [once] ["message"] Name = ...`: the identifier works as usual, and
 //! each use of it warns (only the first use with `once`), as POV-Ray 3.7 does.
 
-use std::collections::{HashMap, HashSet};
 use std::rc::Rc;
+
+use rustc_hash::{FxHashMap, FxHashSet};
 
 use super::lexer::Tok;
 use super::parser::{PResult, Parser};
@@ -10,11 +11,14 @@ use super::source::Span;
 
 #[derive(Default)]
 pub struct Deprecations {
-    /// Name → (message, warn only once).
-    names: HashMap<Rc<str>, (Rc<str>, bool)>,
+    /// Name → (message, warn only once). Once a file has declared a deprecated name, every
+    /// identifier of the rest of the parse is looked up here (glass.inc's glass_old.inc
+    /// declares fourteen): Fx, not SipHash (`hash_one` and `sip::Hasher::write`, 1.4 % of
+    /// incdemo/glasses/samp_demo's 1x1 render).
+    names: FxHashMap<Rc<str>, (Rc<str>, bool)>,
     /// Places already warned about (the parser peeks a token more than once).
-    warned_at: HashSet<Span>,
-    warned_once: HashSet<Rc<str>>,
+    warned_at: FxHashSet<Span>,
+    warned_once: FxHashSet<Rc<str>>,
 }
 
 impl Parser {
