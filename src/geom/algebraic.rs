@@ -94,11 +94,16 @@ impl Algebraic {
         a.diagonal = a
             .diagonal_quadric()
             .filter(|_| distinct && !a.sturm)
-            .map(|(sq, lin, k)| Diagonal { sq, lin, k });
+            .map(|(sq, lin, k)| Diagonal::new(sq, lin, k, &a.terms));
         a
     }
 
     pub fn value(&self, p: DVec3) -> f64 {
+        // A quadric without cross terms: the same sum without the tables and the loop over
+        // powers (`Diagonal::value`).
+        if let Some(q) = &self.diagonal {
+            return q.value(p);
+        }
         // Tables as small as the order allows: they live in registers or on the stack.
         match self.order {
             0..=2 => self.value_n::<3>(p),
@@ -201,7 +206,12 @@ impl Algebraic {
         if !(len > 0.0 && len.is_finite()) || self.terms.is_empty() {
             return None;
         }
-        let c = self.along_unrolled::<3>(ray.origin, ray.dir / len);
+        let u = ray.dir / len;
+        let c = match &self.diagonal {
+            // The same coefficients, bit for bit, written for the diagonal terms.
+            Some(q) => q.along(ray.origin, u),
+            None => self.along_unrolled::<3>(ray.origin, u),
+        };
         let lead = c[..=self.order]
             .iter()
             .rposition(|v| *v != 0.0)

@@ -157,6 +157,53 @@ impl Object {
         best
     }
 
+    /// `any_hit` of an intersection, difference or merge, with or without `clipped_by`: whether
+    /// `csg_first_hit` finds a crossing, that is whether any crossing `all_hits` lists is kept.
+    /// Each member's crossings are tested as soon as they are gathered, and the search stops at
+    /// the first one kept: a blocked shadow ray does not pay for the other members'
+    /// intersections or for the sort. The same crossings meet the same tests: each member's
+    /// are `member_hits` (through `all_hits` for a plain intersection, which gives what
+    /// `csg_first_hit`'s folding gives: its leaves' crossings kept by its own `csg_keeps`),
+    /// after the same culls and slab tests, and each is kept by `csg_keeps` and the clip
+    /// exactly as there. No test has a side effect on an answer (the rejecter only orders the
+    /// questions), so the order of the crossings cannot change whether one is kept.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(never)]
+    pub(super) fn csg_any_hit<'a>(
+        &'a self,
+        op: CsgOp,
+        children: &'a [Object],
+        index: Option<&ChildIndex>,
+        (cull, faces): (Option<&Aabb>, Option<&Faces>),
+        ray: &Ray,
+        tmax: f64,
+        s: &mut Scratch<'a>,
+    ) -> bool {
+        let inv_dir = ray.dir.recip();
+        if cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none()) {
+            return false;
+        }
+        let ray_faces = faces.filter(|_| faces::ray_ok(ray));
+        let slabs = Slabs::new(ray.origin, inv_dir);
+        let rejecter = Cell::new(usize::MAX);
+        let clip = &self.clip[..];
+        let mut found = false;
+        each_member(children, index, ray, tmax, s, |c, i, s| {
+            if found || !slabs.hits(&c.bounds, tmax) {
+                return;
+            }
+            let from = s.surface.len();
+            member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
+            found = s.surface[from..].iter().any(|h| {
+                let p = ray.at(h.t);
+                csg_keeps(op, i, children, index, faces, p, &rejecter)
+                    && (clip.is_empty() || (h.t > EPSILON && clip.iter().all(|c| c.inside(p))))
+            });
+            s.surface.truncate(from);
+        });
+        found
+    }
+
     /// `csg_first_hit::<false>` of a node without `clipped_by` or index whose members are all
     /// faces (`Faces::all`: shapes2.inc's polyhedra, textures/pigments/dodec2's twelve planes
     /// five times over), for a ray within `faces::ray_ok`: the same search without the
@@ -367,6 +414,12 @@ mod tests {
                     clipped_by { box { <-1.9, -0.1, -100>, <2.1, 100, 1> } } rotate -y * 2 }
             sphere { 0, 1 clipped_by { plane { y, 0.25 } } translate x }
             sphere { 0, 1 clipped_by { plane { y, 0.25 } plane { x, 0.1 } } inverse }
+            intersection { quadric { <0, 1, 1>, 0, 0, -1 } quadric { <1, 0, 1>, 0, 0, -1 }
+                           quadric { <0, 1, 1>, 0, 0, -1 inverse scale <1, 0.5, 0.5> }
+                           quadric { <1, 0, 1>, 0, 0, -1 inverse scale <0.5, 1, 0.5> } rotate y * 45 }
+            difference { box { -1, 1 } #for (i, 0, 9) sphere { <i / 5 - 0.9, 0.5, 0.3>, 0.3 } #end
+                         clipped_by { sphere { 0, 1.5 } } }
+            intersection { #for (i, 0, 9) sphere { <i / 20, 0, 0>, 1.2 } #end }
         "#;
         let scene = built(SCENE);
         let mut rng = Lcg(11);

@@ -234,18 +234,19 @@ impl Object {
                 children,
                 index,
                 cull,
-            } if *op != CsgOp::Union => self.csg_first_hit::<true>(
-                *op,
-                children,
-                index.as_deref(),
-                (
+            } if *op != CsgOp::Union => {
+                let culls = (
                     cull.as_ref().and_then(|c| c.aabb.as_ref()),
                     cull.as_ref().and_then(|c| c.faces.as_ref()),
-                ),
-                ray,
-                tmax,
-                s,
-            ),
+                );
+                let index = index.as_deref();
+                // As `first_hit` chooses: the folding compiled out when nothing would fold.
+                if index.is_none() && children.iter().any(|c| csg_hit::folded(c).is_some()) {
+                    self.csg_first_hit::<true>(*op, children, index, culls, ray, tmax, s)
+                } else {
+                    self.csg_first_hit::<false>(*op, children, index, culls, ray, tmax, s)
+                }
+            }
             _ => self.clipped_first_hit(ray, tmax, s, nearest),
         }
     }
@@ -580,6 +581,29 @@ impl Object {
             // `first_hit` of a leaf without clipping is the shape's `intersect_first`.
             let mut local = None;
             return shape.any_hit(self.local_ray(ray, &mut local), tmax, &mut s.hits);
+        }
+        if let ObjKind::Csg {
+            op,
+            children,
+            index,
+            cull,
+        } = &self.kind
+        {
+            if *op != CsgOp::Union {
+                let culls = (
+                    cull.as_ref().and_then(|c| c.aabb.as_ref()),
+                    cull.as_ref().and_then(|c| c.faces.as_ref()),
+                );
+                // Polyhedra keep their own search (`first_hit`'s first case).
+                if let (Some(f), true) = (culls.1, self.clip.is_empty()) {
+                    if let Some(all) = f.all().filter(|_| faces::ray_ok(ray)) {
+                        return self
+                            .faces_first_hit(*op, children, (culls.0, f, all), ray, tmax)
+                            .is_some();
+                    }
+                }
+                return self.csg_any_hit(*op, children, index.as_deref(), culls, ray, tmax, s);
+            }
         }
         if !self.clip.is_empty() {
             return self.clipped_hit(ray, tmax, s, false).is_some();

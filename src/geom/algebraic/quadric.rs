@@ -11,9 +11,111 @@ pub(super) struct Diagonal {
     pub sq: [f64; 3],
     pub lin: [f64; 3],
     pub k: f64,
+    /// The terms in the shape's order (sums depend on it): which power (`SQ + axis`,
+    /// `LIN + axis`, `CONST`) and its coefficient; `n` of them.
+    pub terms: [(u8, f64); 7],
+    pub n: usize,
 }
 
+/// Kinds of a diagonal term.
+pub(super) const SQ: u8 = 0;
+pub(super) const LIN: u8 = 3;
+pub(super) const CONST: u8 = 6;
+
 impl Diagonal {
+    /// The diagonal form of `terms` (powers distinct, at most order 2, no cross terms).
+    pub fn new(sq: [f64; 3], lin: [f64; 3], k: f64, terms: &[([u8; 3], f64)]) -> Diagonal {
+        let mut d = Diagonal {
+            sq,
+            lin,
+            k,
+            terms: [(CONST, 0.0); 7],
+            n: 0,
+        };
+        for (p, c) in terms.iter().take(7) {
+            let kind = match *p {
+                [2, 0, 0] => SQ,
+                [0, 2, 0] => SQ + 1,
+                [0, 0, 2] => SQ + 2,
+                [1, 0, 0] => LIN,
+                [0, 1, 0] => LIN + 1,
+                [0, 0, 1] => LIN + 2,
+                [0, 0, 0] => CONST,
+                _ => unreachable!("a cross term in a diagonal quadric"),
+            };
+            d.terms[d.n] = (kind, *c);
+            d.n += 1;
+        }
+        d
+    }
+
+    /// `Algebraic::along_unrolled::<3>` for these terms, with the same operations in the same
+    /// order left after its multiplications by the constant 1 (exact): the powers of each
+    /// axis as `powers_unrolled` sums them from zero, then each term added to the
+    /// coefficients in the shape's order, the x and y terms skipping zero powers as
+    /// `add_term` skips a zero `xy`, the z terms and the constant not (their `xy` is 1).
+    #[inline(always)]
+    pub fn along(&self, o: DVec3, d: DVec3) -> [f64; 3] {
+        let p1 = |o: f64, d: f64| [0.0 + o, 0.0 + d];
+        let p2 = |q: [f64; 2], o: f64, d: f64| {
+            [0.0 + q[0] * o, (0.0 + q[0] * d) + q[1] * o, 0.0 + q[1] * d]
+        };
+        let (x1, y1, z1) = (p1(o.x, d.x), p1(o.y, d.y), p1(o.z, d.z));
+        let (x2, y2, z2) = (p2(x1, o.x, d.x), p2(y1, o.y, d.y), p2(z1, o.z, d.z));
+        let mut acc = [0.0f64; 3];
+        for &(kind, c) in &self.terms[..self.n] {
+            match kind {
+                0 | 1 => {
+                    let p = if kind == 0 { x2 } else { y2 };
+                    for a in 0..3 {
+                        let v = 0.0 + p[a];
+                        if v != 0.0 {
+                            acc[a] += c * v;
+                        }
+                    }
+                }
+                2 => {
+                    for b in 0..3 {
+                        acc[b] += c * z2[b];
+                    }
+                }
+                3 | 4 => {
+                    let p = if kind == 3 { x1 } else { y1 };
+                    for a in 0..2 {
+                        let v = 0.0 + p[a];
+                        if v != 0.0 {
+                            acc[a] += c * v;
+                        }
+                    }
+                }
+                5 => {
+                    for b in 0..2 {
+                        acc[b] += c * z1[b];
+                    }
+                }
+                _ => acc[0] += c,
+            }
+        }
+        acc
+    }
+
+    /// `Algebraic::value` for these terms: each term `c·x^i·y^j·z^k` with powers from
+    /// `powi_table` (1, v, v·v) is `c` times its one power (the products by 1 are exact),
+    /// summed in the shape's order by the same `sum`.
+    #[inline(always)]
+    pub fn value(&self, p: DVec3) -> f64 {
+        let sq = [p.x * p.x, p.y * p.y, p.z * p.z];
+        let lin = [p.x, p.y, p.z];
+        self.terms[..self.n]
+            .iter()
+            .map(|&(kind, c)| match kind {
+                0..=2 => c * sq[kind as usize],
+                3..=5 => c * lin[kind as usize - 3],
+                _ => c,
+            })
+            .sum()
+    }
+
     /// Whether the quadratic along `origin + t·dir` surely has a negative discriminant as
     /// `low_roots_in` computes it from the polynomial in the unit direction (so it finds no
     /// root, and the quadric no crossing).
@@ -56,6 +158,68 @@ impl Diagonal {
 mod tests {
     use super::super::Algebraic;
     use crate::math::{DVec3, Ray};
+
+    /// The diagonal form's expansion along a ray and its value equal the general ones bit
+    /// for bit: terms in every order, coefficients and coordinates with zeros of both signs,
+    /// tiny, huge, infinite and NaN values.
+    #[test]
+    fn diagonal_along_and_value_match_the_general_ones() {
+        let mut rnd = crate::math::xorshift_unit(0x9e37_79b9_7f4a_7c15u64);
+        let special = [
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            0.5,
+            1e-300,
+            -1e300,
+            f64::INFINITY,
+            f64::NAN,
+        ];
+        let mut pick = move || -> f64 {
+            if rnd() < 0.3 {
+                special[(rnd() * special.len() as f64) as usize % special.len()]
+            } else {
+                (rnd() - 0.5) * 10f64.powi((rnd() * 12.0) as i32 - 6)
+            }
+        };
+        let powers: [[u8; 3]; 7] = [
+            [2, 0, 0],
+            [0, 2, 0],
+            [0, 0, 2],
+            [1, 0, 0],
+            [0, 1, 0],
+            [0, 0, 1],
+            [0, 0, 0],
+        ];
+        let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
+        let mut checked = 0;
+        for case in 0..200_000usize {
+            // A random subset of the powers in a random order, with random coefficients.
+            let mut terms: Vec<([u8; 3], f64)> = powers.iter().map(|p| (*p, 0.0)).collect();
+            for i in (1..terms.len()).rev() {
+                let j = (pick().abs() * 1e6) as usize % (i + 1);
+                terms.swap(i, j);
+            }
+            terms.truncate(1 + case % 7);
+            for t in terms.iter_mut() {
+                t.1 = pick();
+            }
+            let q = Algebraic::new(2, &terms, false);
+            let Some(diag) = q.diagonal else {
+                continue;
+            };
+            let o = DVec3::new(pick(), pick(), pick());
+            let d = DVec3::new(pick(), pick(), pick());
+            let (a, b) = (diag.along(o, d), q.along_unrolled::<3>(o, d));
+            for k in 0..3 {
+                assert!(same(a[k], b[k]), "{terms:?} {o:?} {d:?}: {a:?} {b:?}");
+            }
+            assert!(same(diag.value(o), q.value_n::<3>(o)), "{terms:?} {o:?}");
+            checked += 1;
+        }
+        assert!(checked > 100_000, "{checked}");
+    }
 
     /// Where the certificate holds, the quadratic formula in the unit direction finds no
     /// root, for quadrics of shapes.inc's kinds at many scales and rays grazing them.
