@@ -12,8 +12,11 @@
 //! field is therefore evaluated as `m^(2/n) · (1 + (min/max)^(2/e))^(e/n)` with `m` the larger
 //! of |x| and |y|, and the gradient in logarithms.
 
+mod near;
+
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
+use near::Series;
 
 /// Widening of the box searched, so a crossing on the box's faces (e or n near zero) is kept.
 const MARGIN: f64 = 1e-6;
@@ -38,6 +41,10 @@ pub struct Superellipsoid {
     pow_c: [f64; STEPS + 1],
     /// `(1 + r^a)^b` at `r = i / STEPS`, increasing in `r` like `pow_c`.
     pow_ab: [f64; STEPS + 1],
+    /// The binomial series of `a`, `b` and `c`, for values near a known one (`near`).
+    sa: Series,
+    sb: Series,
+    sc: Series,
 }
 
 /// A fixed exponent. `powf` with exponent 1, 2 or 1/2 gives exactly `x`, `x * x` and
@@ -124,6 +131,9 @@ impl Superellipsoid {
             top: 2f64.powf(e / n),
             pow_c: std::array::from_fn(|i| c.of(at(i))),
             pow_ab: std::array::from_fn(|i| b.of(1.0 + a.of(at(i)))),
+            sa: Series::new(a.exponent()),
+            sb: Series::new(b.exponent()),
+            sc: Series::new(c.exponent()),
         }
     }
 
@@ -247,7 +257,7 @@ impl Superellipsoid {
                     match bracket(s0, s1) {
                         Bracket::Refine => {
                             let (v0, v1) = (exact(s0, f0), exact(s1, f1));
-                            let root = refine(&f, s0, v0, s1, v1);
+                            let root = near::refine(self, o, u, s0, v0, s1, v1);
                             out(root);
                             if last(root) {
                                 return None;
@@ -343,48 +353,6 @@ impl Superellipsoid {
             |s| first_only && to_t(s) > EPSILON,
         )
     }
-}
-
-/// A root of `f` between `a` and `b`, where `f` is negative at exactly one end: regula falsi
-/// (Illinois variant), bisecting when the end values are too lopsided for it to make progress.
-pub(crate) fn refine(f: &impl Fn(f64) -> f64, a: f64, fa: f64, b: f64, fb: f64) -> f64 {
-    let (mut a, mut fa, mut b, mut fb) = (a, fa, b, fb);
-    let tol = 1e-13 * a.abs().max(b.abs()).max(1.0);
-    let mut side = 0i8;
-    for _ in 0..200 {
-        if (b - a).abs() <= tol {
-            break;
-        }
-        let ratio = (fa / fb).abs();
-        let m = if fa.is_finite() && fb.is_finite() && (1e-3..=1e3).contains(&ratio) {
-            let m = b - fb * (b - a) / (fb - fa);
-            if m > a.min(b) && m < a.max(b) {
-                m
-            } else {
-                0.5 * (a + b)
-            }
-        } else {
-            0.5 * (a + b)
-        };
-        let fm = f(m);
-        if fm.is_nan() {
-            return m;
-        }
-        if (fm < 0.0) == (fa < 0.0) {
-            (a, fa) = (m, fm);
-            if side == -1 {
-                fb *= 0.5;
-            }
-            side = -1;
-        } else {
-            (b, fb) = (m, fm);
-            if side == 1 {
-                fa *= 0.5;
-            }
-            side = 1;
-        }
-    }
-    0.5 * (a + b)
 }
 
 /// The stretch of the ray `o + s u` inside the box |x|, |y|, |z| <= r, or None.

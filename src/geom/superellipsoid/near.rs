@@ -1,0 +1,459 @@
+//! The refinement of a superellipsoid crossing with most field values left unevaluated.
+//!
+//! The regula falsi (`refine`) asks the field at ~35 points per crossing, four glibc `pow` each
+//! (the superellipsoid scenes' largest cost). Most of those points are bisection midpoints,
+//! whose values only decide which end they replace (their sign) and whether the next step may
+//! be a regula falsi step (the ratio of the two end values lying in [1e-3, 1e3]). Near a point
+//! whose powers are known exactly (glibc's bits), a nearby point's powers follow from a short
+//! binomial series with a proven error bound; where that bound settles the sign, and the ratio
+//! test either way, the exact value is never needed. An end whose value is needed later (a
+//! regula falsi step, an unsure ratio) is then evaluated exactly, with the halvings the Illinois
+//! rule applied since, in the same order. Every decision is therefore the one the plain
+//! refinement makes from exact values, and the root is its root to the bit (unit test
+//! `lazy_refine_is_the_plain_one`).
+
+use super::{Power, Superellipsoid};
+use crate::math::DVec3;
+
+/// The powers `value` computes at a point (glibc's bits) and the reciprocals of their bases.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Powers {
+    m: f64,
+    inv_m: f64,
+    mc: f64,
+    r: f64,
+    inv_r: f64,
+    ra: f64,
+    base: f64,
+    inv_base: f64,
+    g: f64,
+    z: f64,
+    inv_z: f64,
+    zc: f64,
+}
+
+/// The binomial series of `(1 + d)^k` to `d^5`, with what its remainder bound needs.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Series {
+    /// C(k, 1) .. C(k, 5).
+    coef: [f64; 5],
+    /// The remainder bounds' factors: 2.02·|C(k, 3)| after two terms, 2.02·|C(k, 6)| after
+    /// five (see `lim`; 2.02 also covers their rounding).
+    c3: f64,
+    c6: f64,
+    /// |k| + 5, for the roundings of the coefficients and of `d`.
+    kk: f64,
+    /// The largest |d| the series is used for: the terms' ratios |C(k, j+1) / C(k, j)| |d| are
+    /// at most (|k| + 1) |d| <= 1/2 beyond the third, so the remainder is at most twice the
+    /// first term left out.
+    lim: f64,
+}
+
+impl Series {
+    pub(super) fn new(k: f64) -> Series {
+        let mut coef = [0.0; 5];
+        let mut c = 1.0;
+        for (j, slot) in coef.iter_mut().enumerate() {
+            c = c * (k - j as f64) / (j + 1) as f64;
+            *slot = c;
+        }
+        Series {
+            coef,
+            c3: coef[2].abs() * 2.02,
+            c6: (c * (k - 5.0) / 6.0).abs() * 2.02,
+            kk: k.abs() + 5.0,
+            lim: (0.5 / (k.abs() + 1.0)).min(1e-2),
+        }
+    }
+}
+
+/// `x^k` as `power.of(x)` gives it, from the same power `p0` of a nearby `x0` (`inv0` its
+/// reciprocal), and a bound on the difference; None where the series is not used.
+///
+/// Bound: the remainder (at most twice the first term left out, times `p0`: `Series::lim`) plus relative
+/// `3e-15 + (|k| + 5)·|d|·1e-15`, which covers glibc's error at both points (under one unit in
+/// the last place each), the roundings of `d` (two) carried through the series (`|k||d|` times
+/// them), those of the rounded coefficients, of the Horner steps (about five units of 1e-16 of
+/// a value near 1) and of the product with `p0`: all of these are units of 1e-16.
+#[inline(always)]
+// Negated comparisons: a NaN must take the exact path.
+#[allow(clippy::neg_cmp_op_on_partial_ord)]
+fn near_power(power: Power, s: &Series, x: f64, x0: f64, inv0: f64, p0: f64) -> Option<(f64, f64)> {
+    match power {
+        Power::One => Some((x, 0.0)),
+        Power::Two => Some((x * x, 0.0)),
+        Power::Half => Some((x.sqrt(), 0.0)),
+        Power::Other(_) => {
+            // The same argument gives the same bits; `powf(0, k)` is 0 for k > 0.
+            if x == x0 {
+                return Some((p0, 0.0));
+            }
+            if x == 0.0 {
+                return Some((0.0, 0.0));
+            }
+            if !p0.is_normal() {
+                return None;
+            }
+            // x − x0 is exact (Sterbenz: |d| <= 1e-2).
+            let d = (x - x0) * inv0;
+            if !(d.abs() <= s.lim) {
+                return None;
+            }
+            // Most points are within 1e-6 of the reference: two terms do there.
+            let c = &s.coef;
+            let da = d.abs();
+            let d2 = d * d;
+            let (t, tail) = if da <= 1e-6 {
+                (1.0 + d * (c[0] + d * c[1]), s.c3 * (d2 * da))
+            } else {
+                let t = 1.0 + d * (c[0] + d * (c[1] + d * (c[2] + d * (c[3] + d * c[4]))));
+                (t, s.c6 * (d2 * d2 * d2))
+            };
+            let p = p0 * t;
+            let err = p * (3e-15 + s.kk * da * 1e-15) + p0 * tail;
+            Some((p, err))
+        }
+    }
+}
+
+impl Superellipsoid {
+    /// `value` (the same operations, so the same bits) and the powers it computed.
+    // Negated comparisons: a NaN must take the exact path.
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
+    pub(super) fn value_powers(&self, p: DVec3) -> (f64, Option<Powers>) {
+        let (x, y, z) = (p.x.abs(), p.y.abs(), p.z.abs());
+        let m = x.max(y);
+        if !(m > 0.0) {
+            return (self.value(p), None);
+        }
+        let r = x.min(y) / m;
+        let mc = self.c.of(m);
+        let ra = self.a.of(r);
+        let base = 1.0 + ra;
+        let g = self.b.of(base);
+        let xy = mc * g;
+        let zc = self.c.of(z);
+        let powers = Powers {
+            m,
+            inv_m: 1.0 / m,
+            mc,
+            r,
+            inv_r: 1.0 / r,
+            ra,
+            base,
+            inv_base: 1.0 / base,
+            g,
+            z,
+            inv_z: 1.0 / z,
+            zc,
+        };
+        (xy + zc - 1.0, Some(powers))
+    }
+
+    /// `value(p)` within a bound, from the powers at a nearby point; None where a series is
+    /// not used. The bound adds up each power's, carried through the sum and products
+    /// (first order, plus the product of two errors), and the roundings of those operations,
+    /// which both computations make (a few units of 1e-16 of values at most 2^b + 1); the
+    /// whole is then grown by half.
+    // Negated comparisons: a NaN must take the exact path.
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
+    pub(super) fn near(&self, pw: &Powers, p: DVec3) -> Option<(f64, f64)> {
+        let (x, y, z) = (p.x.abs(), p.y.abs(), p.z.abs());
+        let m = x.max(y);
+        if !(m > 0.0) {
+            return None;
+        }
+        let r = x.min(y) / m;
+        let (mc, emc) = near_power(self.c, &self.sc, m, pw.m, pw.inv_m, pw.mc)?;
+        let (ra, era) = near_power(self.a, &self.sa, r, pw.r, pw.inv_r, pw.ra)?;
+        let base = 1.0 + ra;
+        // Against the exact path's base: `ra`'s error and the two sums' roundings (base <= 2).
+        let ebase = era + 4.5e-16;
+        let bk = self.b.exponent().abs();
+        if !(bk * ebase <= 1e-6) {
+            return None;
+        }
+        let (g, eg0) = near_power(self.b, &self.sb, base, pw.base, pw.inv_base, pw.g)?;
+        // base >= 1, so base^b moves by at most b·ebase relative (1.01: the second order).
+        let eg = eg0 + g * (bk * ebase * 1.01);
+        let (zc, ezc) = near_power(self.c, &self.sc, z, pw.z, pw.inv_z, pw.zc)?;
+        let xy = mc * g;
+        let exy = mc * eg + g * emc + emc * eg + xy * 4.5e-16;
+        let sum = xy + zc;
+        let v = sum - 1.0;
+        let err = (exy + ezc + (sum.abs() + 1.0) * 4.5e-16) * 1.5;
+        (v.is_finite() && err.is_finite()).then_some((v, err))
+    }
+}
+
+/// One end of the bracket: its value, exact when `err` is 0, else within `err` of the exact
+/// value after `halvings` Illinois halvings.
+#[derive(Clone, Copy)]
+struct End {
+    s: f64,
+    v: f64,
+    err: f64,
+    halvings: u32,
+}
+
+impl End {
+    fn halve(&mut self) {
+        self.v *= 0.5;
+        self.err *= 0.5;
+        self.halvings += 1;
+    }
+}
+
+/// A root of the field along `o + s·u` between `a` and `b` (the exact values `fa` and `fb`,
+/// negative at exactly one end): regula falsi (Illinois variant), bisecting when the end
+/// values are too lopsided for it to make progress. The steps and the root are those of the
+/// plain refinement from exact values at every point (module doc).
+pub(super) fn refine(
+    se: &Superellipsoid,
+    o: DVec3,
+    u: DVec3,
+    a: f64,
+    fa: f64,
+    b: f64,
+    fb: f64,
+) -> f64 {
+    let mut ea = End {
+        s: a,
+        v: fa,
+        err: 0.0,
+        halvings: 0,
+    };
+    let mut eb = End { s: b, v: fb, ..ea };
+    let tol = 1e-13 * a.abs().max(b.abs()).max(1.0);
+    let mut side = 0i8;
+    // The last point evaluated exactly, whose powers the series start from.
+    let mut reference: Option<Powers> = None;
+    let exact = |end: &mut End, reference: &mut Option<Powers>| {
+        if end.err != 0.0 {
+            let (mut v, pw) = se.value_powers(o + u * end.s);
+            for _ in 0..end.halvings {
+                v *= 0.5;
+            }
+            (end.v, end.err) = (v, 0.0);
+            if pw.is_some() {
+                *reference = pw;
+            }
+        }
+    };
+    for _ in 0..200 {
+        let (a, b) = (ea.s, eb.s);
+        if (b - a).abs() <= tol {
+            break;
+        }
+        // Bisect when the exact ratio is surely outside [1e-3, 1e3] (an approximate value is
+        // finite, nonzero and below 1e300, and so is the exact one); exact values otherwise.
+        let lopsided = (ea.err != 0.0 || eb.err != 0.0) && {
+            let (va, vb) = (ea.v.abs(), eb.v.abs());
+            let lo = (va - ea.err) / (vb + eb.err) * (1.0 - 1e-14);
+            let hi = (va + ea.err) / (vb - eb.err) * (1.0 + 1e-14);
+            hi < 1e-3 || lo > 1e3
+        };
+        let m = if lopsided {
+            0.5 * (a + b)
+        } else {
+            exact(&mut ea, &mut reference);
+            exact(&mut eb, &mut reference);
+            let (fa, fb) = (ea.v, eb.v);
+            let ratio = (fa / fb).abs();
+            if fa.is_finite() && fb.is_finite() && (1e-3..=1e3).contains(&ratio) {
+                let m = b - fb * (b - a) / (fb - fa);
+                if m > a.min(b) && m < a.max(b) {
+                    m
+                } else {
+                    0.5 * (a + b)
+                }
+            } else {
+                0.5 * (a + b)
+            }
+        };
+        let p = o + u * m;
+        let em = match reference.as_ref().and_then(|pw| se.near(pw, p)) {
+            Some((v, err)) if v.abs() > err && v.abs() < 1e300 => End {
+                s: m,
+                v,
+                err,
+                halvings: 0,
+            },
+            _ => {
+                let (fm, pw) = se.value_powers(p);
+                if fm.is_nan() {
+                    return m;
+                }
+                if pw.is_some() {
+                    reference = pw;
+                }
+                End {
+                    s: m,
+                    v: fm,
+                    err: 0.0,
+                    halvings: 0,
+                }
+            }
+        };
+        // An approximate value's sign is the exact one's (|v| > err).
+        if (em.v < 0.0) == (ea.v < 0.0) {
+            ea = em;
+            if side == -1 {
+                eb.halve();
+            }
+            side = -1;
+        } else {
+            eb = em;
+            if side == 1 {
+                ea.halve();
+            }
+            side = 1;
+        }
+    }
+    0.5 * (ea.s + eb.s)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The plain refinement (exact values at every point), which `near::refine` must match
+    /// to the bit.
+    fn refine(f: &impl Fn(f64) -> f64, a: f64, fa: f64, b: f64, fb: f64) -> f64 {
+        let (mut a, mut fa, mut b, mut fb) = (a, fa, b, fb);
+        let tol = 1e-13 * a.abs().max(b.abs()).max(1.0);
+        let mut side = 0i8;
+        for _ in 0..200 {
+            if (b - a).abs() <= tol {
+                break;
+            }
+            let ratio = (fa / fb).abs();
+            let m = if fa.is_finite() && fb.is_finite() && (1e-3..=1e3).contains(&ratio) {
+                let m = b - fb * (b - a) / (fb - fa);
+                if m > a.min(b) && m < a.max(b) {
+                    m
+                } else {
+                    0.5 * (a + b)
+                }
+            } else {
+                0.5 * (a + b)
+            };
+            let fm = f(m);
+            if fm.is_nan() {
+                return m;
+            }
+            if (fm < 0.0) == (fa < 0.0) {
+                (a, fa) = (m, fm);
+                if side == -1 {
+                    fb *= 0.5;
+                }
+                side = -1;
+            } else {
+                (b, fb) = (m, fm);
+                if side == 1 {
+                    fa *= 0.5;
+                }
+                side = 1;
+            }
+        }
+        0.5 * (a + b)
+    }
+
+    fn rng(seed: u64) -> impl FnMut() -> f64 {
+        let mut state = seed;
+        move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            f64::from_bits((state >> 12) | 0x3ff0_0000_0000_0000) - 1.0
+        }
+    }
+
+    const SHAPES: [(f64, f64); 10] = [
+        (0.1, 0.1),
+        (0.3, 0.3),
+        (0.5, 0.5),
+        (0.9, 0.9),
+        (1.0, 0.3),
+        (1.0, 0.1),
+        (0.3, 2.0),
+        (0.5, 3.0),
+        (3.0, 0.5),
+        (1.0, 1.0),
+    ];
+
+    /// A point of the surface near the direction `p` (bisection on the ray from the centre).
+    fn on_surface(s: &Superellipsoid, p: DVec3) -> DVec3 {
+        let (mut lo, mut hi) = (0.0, 2.0);
+        for _ in 0..60 {
+            let mid = 0.5 * (lo + hi);
+            if s.value(p * mid) < 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        p * lo
+    }
+
+    /// `value_powers` is `value` to the bit, and `near` is within its bound of it, from
+    /// references on and off the surface and offsets from 1e-14 to 1e-2.
+    #[test]
+    fn near_values_are_within_their_bound() {
+        let mut next = rng(0x2545_f491_4f6c_dd1d);
+        let (mut used, mut worst) = (0, 0.0f64);
+        for (e, n) in SHAPES {
+            let s = Superellipsoid::new(e, n);
+            for i in 0..20_000 {
+                let dir = DVec3::new(next(), next(), next()) * 2.0 - DVec3::ONE;
+                let p0 = if i % 4 == 0 { dir } else { on_surface(&s, dir) };
+                let (v0, pw) = s.value_powers(p0);
+                assert_eq!(v0.to_bits(), s.value(p0).to_bits(), "{e} {n} {p0}");
+                let Some(pw) = pw else { continue };
+                let step = 10f64.powf(-2.0 - 12.0 * next());
+                let off = (DVec3::new(next(), next(), next()) * 2.0 - DVec3::ONE) * step;
+                let p = p0 + off;
+                let exact = s.value(p);
+                if let Some((v, err)) = s.near(&pw, p) {
+                    used += 1;
+                    let miss = (v - exact).abs();
+                    assert!(miss <= err, "{e} {n} {p0} {p}: {v} {exact} {err}");
+                    worst = worst.max(miss / err);
+                }
+            }
+        }
+        assert!(used > 100_000, "{used}");
+        assert!(worst < 0.5, "{worst}");
+    }
+
+    /// The lazy refinement gives the plain one's root to the bit, on brackets of the
+    /// samples' kind along rays through the surface.
+    #[test]
+    fn lazy_refine_is_the_plain_one() {
+        let mut next = rng(0x9e37_79b9_7f4a_7c15);
+        let mut roots = 0;
+        for (e, n) in SHAPES {
+            let s = Superellipsoid::new(e, n);
+            for _ in 0..3000 {
+                let o = DVec3::new(next(), next(), next()) * 4.0 - DVec3::splat(2.0);
+                let target = DVec3::new(next(), next(), next()) * 1.6 - DVec3::splat(0.8);
+                let u = (target - o).normalize();
+                let f = |t: f64| s.value(o + u * t);
+                let step = 0.01 + 0.1 * next();
+                let (mut t0, mut f0) = (0.0, f(0.0));
+                for k in 1..200 {
+                    let t1 = k as f64 * step;
+                    let f1 = f(t1);
+                    if (f0 < 0.0) != (f1 < 0.0) {
+                        let plain = refine(&f, t0, f0, t1, f1);
+                        let lazy = super::refine(&s, o, u, t0, f0, t1, f1);
+                        assert_eq!(plain.to_bits(), lazy.to_bits(), "{e} {n} {o} {u} {t0}");
+                        roots += 1;
+                    }
+                    (t0, f0) = (t1, f1);
+                }
+            }
+        }
+        assert!(roots > 20_000, "{roots}");
+    }
+}
