@@ -8,7 +8,7 @@
 //! intersection lies on one member and inside all the others, so inside every half-space), and
 //! it leaves `bounds`, and so the scene's BVH, as they were.
 
-use crate::math::{Aabb, DMat4, DVec3};
+use crate::math::{Aabb, DMat4, DVec3, Ray};
 use crate::scene::desc::CsgOp;
 use crate::scene::object::{ObjKind, Object};
 
@@ -16,6 +16,9 @@ use crate::scene::object::{ObjKind, Object};
 const FAR: f64 = 1e9;
 /// More half-spaces than this and the vertex search (cubic in their number) is not tried.
 const MAX_PLANES: usize = 48;
+/// More half-spaces than this and a window is kept as a box (each plane costs a division per
+/// ray).
+const MAX_WINDOW_PLANES: usize = 12;
 
 /// A box holding every crossing of a top-level object whose `bounds` are not finite, from its
 /// own planes and slabs and its clipping objects' (a crossing must lie inside all of them);
@@ -37,6 +40,129 @@ pub fn object_cull(o: &Object) -> Option<Aabb> {
     }
     let b = b.intersection(&o.bounds);
     (b != Aabb::INFINITE && (b.is_finite() || b.min.is_finite() || b.max.is_finite())).then_some(b)
+}
+
+/// Where a windowed shape's crossings can survive its clipping (`ObjKind::Shape`'s window): a
+/// box, or when its clipping gives no box with a finite corner (a slab of two planes, turned)
+/// the clipping's half-spaces themselves, each padded as `polyhedron_box` pads its box.
+#[derive(Clone)]
+pub enum Window {
+    Box(Aabb),
+    Planes(Vec<(DVec3, f64)>),
+}
+
+impl Window {
+    /// The window of a clipped shape, when its clipping gives one: the half-spaces when some
+    /// is turned off the axes (their box would be looser), else the box.
+    pub fn of(o: &Object) -> Option<Window> {
+        let boxed = object_cull(o);
+        if o.inverse {
+            return boxed.map(Window::Box);
+        }
+        let mut planes = Vec::new();
+        half_spaces(o, &mut planes);
+        for c in &o.clip {
+            half_spaces(c, &mut planes);
+        }
+        Window::choose(boxed, &planes)
+    }
+
+    /// The window of an `intersection`'s member: every crossing the node keeps lies inside all
+    /// its members, so inside their half-spaces, and inside the node's box `bx`.
+    pub fn within(children: &[Object], bx: Aabb) -> Option<Window> {
+        let mut planes = Vec::new();
+        for c in children {
+            half_spaces(c, &mut planes);
+        }
+        Window::choose(Some(bx), &planes)
+    }
+
+    /// The half-spaces (normalised and padded as `polyhedron_box` pads its box: by 1e-6 of the
+    /// largest offset, far above the rounding of the inside tests and of a ray's distances to
+    /// the planes) when the box is missing or some plane is turned, else the box.
+    fn choose(boxed: Option<Aabb>, planes: &[(DVec3, f64)]) -> Option<Window> {
+        let planes: Vec<(DVec3, f64)> = planes
+            .iter()
+            .map(|&(n, d)| {
+                let l = n.length();
+                (n / l, d / l)
+            })
+            .filter(|(n, d)| n.is_finite() && d.is_finite())
+            .collect();
+        let turned = planes
+            .iter()
+            .any(|(n, _)| n.to_array().iter().filter(|v| **v != 0.0).count() > 1);
+        if planes.is_empty() || planes.len() > MAX_WINDOW_PLANES || (boxed.is_some() && !turned) {
+            return boxed.map(Window::Box);
+        }
+        let scale = planes.iter().map(|h| h.1.abs()).fold(1.0, f64::max);
+        let pad = 1e-6 * scale;
+        Some(Window::Planes(
+            planes.iter().map(|&(n, d)| (n, d + pad)).collect(),
+        ))
+    }
+
+    /// The stretch of `origin + t·dir` (the `t` of the world ray, which a shape's own ray
+    /// shares) holding every crossing the clipping keeps, padded against rounding.
+    #[inline]
+    pub fn range(&self, ray: &Ray) -> Range {
+        let (lo, hi) = match self {
+            Window::Box(b) => {
+                let inv = ray.dir.recip();
+                let (t0, t1) = ((b.min - ray.origin) * inv, (b.max - ray.origin) * inv);
+                let lo = t0.min(t1).max_element();
+                let hi = t0.max(t1).min_element();
+                let pad = 1e-7 * (lo.abs().max(hi.abs()) + 1.0);
+                // NaN (a ray in a face's plane) asks for everything: the shape's window
+                // search takes a NaN edge as none.
+                return if lo <= hi || lo.is_nan() || hi.is_nan() {
+                    Range::Within(lo - pad, hi + pad)
+                } else {
+                    Range::Empty
+                };
+            }
+            Window::Planes(planes) => {
+                let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+                for &(n, d) in planes {
+                    // n·(o + t·dir) <= d; a ray parallel to a plane is left unbounded by it.
+                    let (nd, no) = (n.dot(ray.dir), n.dot(ray.origin));
+                    let t = (d - no) / nd;
+                    if nd > 0.0 {
+                        hi = hi.min(t);
+                    } else if nd < 0.0 {
+                        lo = lo.max(t);
+                    } else if nd.is_nan() {
+                        return Range::All;
+                    }
+                    if t.is_nan() && nd != 0.0 {
+                        return Range::All;
+                    }
+                }
+                (lo, hi)
+            }
+        };
+        let reach = match (lo.is_finite(), hi.is_finite()) {
+            (true, true) => lo.abs().max(hi.abs()),
+            (true, false) => lo.abs(),
+            (false, true) => hi.abs(),
+            (false, false) => return Range::All,
+        };
+        if lo > hi {
+            return Range::Empty;
+        }
+        let pad = 1e-7 * (reach + 1.0);
+        Range::Within(lo - pad, hi + pad)
+    }
+}
+
+/// What a [`Window`] leaves of a ray.
+pub enum Range {
+    /// Every crossing (the window says nothing for this ray).
+    All,
+    /// No crossing survives the clipping.
+    Empty,
+    /// Only crossings with `t` in `[lo, hi]` may survive (NaN ends: every crossing).
+    Within(f64, f64),
 }
 
 /// A finite box holding an object's solid and crossings: its bounds, or when they are not
@@ -285,6 +411,39 @@ fn polyhedron_box(planes: &[(DVec3, f64)]) -> Option<Aabb> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A window of turned half-spaces holds the `t` of every point of the ray inside them,
+    /// and says `Empty` only when the ray has no such point.
+    #[test]
+    fn plane_window_holds_the_points_inside() {
+        let mut unit = crate::math::xorshift_unit(0x2545_f491_4f6c_dd1d);
+        let mut rnd = move || unit() * 2.0 - 1.0;
+        for case in 0..2000 {
+            let n = DVec3::new(rnd(), rnd(), rnd()).normalize();
+            let m = DVec3::new(rnd(), rnd(), rnd()).normalize();
+            let planes = [(n, 0.5), (-n, 0.5), (m, 2.0 + rnd()), (-m * 3.0, 3.0)];
+            let Some(w) = Window::choose(None, &planes) else {
+                panic!("no window");
+            };
+            let scale = if case % 2 == 0 { 1.0 } else { 1e-9 };
+            let ray = Ray::new(
+                DVec3::new(rnd(), rnd(), rnd()) * 5.0,
+                DVec3::new(rnd(), rnd(), rnd()) * scale,
+            );
+            let range = w.range(&ray);
+            for k in 0..=200 {
+                let t = (k as f64 - 100.0) * 0.1 / scale;
+                let p = ray.at(t);
+                if planes.iter().all(|&(n, d)| n.dot(p) <= d) {
+                    match range {
+                        Range::All => {}
+                        Range::Empty => panic!("empty, but {t} is inside"),
+                        Range::Within(lo, hi) => assert!(lo <= t && t <= hi, "{t} {lo} {hi}"),
+                    }
+                }
+            }
+        }
+    }
 
     #[test]
     fn boxes_through_maps() {
