@@ -26,10 +26,6 @@ pub struct Algebraic {
     order: usize,
     /// (powers of x, y, z; coefficient), zero coefficients left out.
     terms: Vec<([u8; 3], f64)>,
-    /// For orders up to 4, each term's place in `pov_term_order` (of order 2 up to order 2,
-    /// else 4), in the order of `terms`: `along_unrolled`'s dispatch is then a jump on a
-    /// small integer, not a search over the powers.
-    slots: Vec<u8>,
     sturm: bool,
     /// The diagonal form of a quadric without cross terms, for its certified misses.
     diagonal: Option<Diagonal>,
@@ -87,19 +83,9 @@ impl Algebraic {
             .max()
             .unwrap_or(0)
             .max(order.min(MAX_ORDER));
-        let slot_order = pov_term_order(if order <= 2 { 2 } else { 4 });
-        let slots = if order <= 4 {
-            terms
-                .iter()
-                .map(|(p, _)| slot_order.iter().position(|q| q == p).unwrap_or(0) as u8)
-                .collect()
-        } else {
-            Vec::new()
-        };
         let mut a = Algebraic {
             order,
             terms,
-            slots,
             sturm,
             diagonal: None,
         };
@@ -280,62 +266,27 @@ impl Algebraic {
     fn along_unrolled<const N: usize>(&self, origin: DVec3, dir: DVec3) -> [f64; N] {
         let pw = powers_unrolled::<N>(origin, dir);
         let mut acc = [0.0f64; N];
-        // `slots` numbers the powers in `pov_term_order`'s order (for N = 3 that of order 2).
-        for (slot, (_, c)) in self.slots.iter().zip(&self.terms) {
-            acc = if N == 3 {
-                match *slot {
-                    0 => add_term::<N, 2, 0, 0>(*c, &pw, acc),
-                    1 => add_term::<N, 1, 1, 0>(*c, &pw, acc),
-                    2 => add_term::<N, 1, 0, 1>(*c, &pw, acc),
-                    3 => add_term::<N, 1, 0, 0>(*c, &pw, acc),
-                    4 => add_term::<N, 0, 2, 0>(*c, &pw, acc),
-                    5 => add_term::<N, 0, 1, 1>(*c, &pw, acc),
-                    6 => add_term::<N, 0, 1, 0>(*c, &pw, acc),
-                    7 => add_term::<N, 0, 0, 2>(*c, &pw, acc),
-                    8 => add_term::<N, 0, 0, 1>(*c, &pw, acc),
-                    9 => add_term::<N, 0, 0, 0>(*c, &pw, acc),
-                    _ => unreachable!("a term above the order"),
-                }
-            } else {
-                match *slot {
-                    0 => add_term::<N, 4, 0, 0>(*c, &pw, acc),
-                    1 => add_term::<N, 3, 1, 0>(*c, &pw, acc),
-                    2 => add_term::<N, 3, 0, 1>(*c, &pw, acc),
-                    3 => add_term::<N, 3, 0, 0>(*c, &pw, acc),
-                    4 => add_term::<N, 2, 2, 0>(*c, &pw, acc),
-                    5 => add_term::<N, 2, 1, 1>(*c, &pw, acc),
-                    6 => add_term::<N, 2, 1, 0>(*c, &pw, acc),
-                    7 => add_term::<N, 2, 0, 2>(*c, &pw, acc),
-                    8 => add_term::<N, 2, 0, 1>(*c, &pw, acc),
-                    9 => add_term::<N, 2, 0, 0>(*c, &pw, acc),
-                    10 => add_term::<N, 1, 3, 0>(*c, &pw, acc),
-                    11 => add_term::<N, 1, 2, 1>(*c, &pw, acc),
-                    12 => add_term::<N, 1, 2, 0>(*c, &pw, acc),
-                    13 => add_term::<N, 1, 1, 2>(*c, &pw, acc),
-                    14 => add_term::<N, 1, 1, 1>(*c, &pw, acc),
-                    15 => add_term::<N, 1, 1, 0>(*c, &pw, acc),
-                    16 => add_term::<N, 1, 0, 3>(*c, &pw, acc),
-                    17 => add_term::<N, 1, 0, 2>(*c, &pw, acc),
-                    18 => add_term::<N, 1, 0, 1>(*c, &pw, acc),
-                    19 => add_term::<N, 1, 0, 0>(*c, &pw, acc),
-                    20 => add_term::<N, 0, 4, 0>(*c, &pw, acc),
-                    21 => add_term::<N, 0, 3, 1>(*c, &pw, acc),
-                    22 => add_term::<N, 0, 3, 0>(*c, &pw, acc),
-                    23 => add_term::<N, 0, 2, 2>(*c, &pw, acc),
-                    24 => add_term::<N, 0, 2, 1>(*c, &pw, acc),
-                    25 => add_term::<N, 0, 2, 0>(*c, &pw, acc),
-                    26 => add_term::<N, 0, 1, 3>(*c, &pw, acc),
-                    27 => add_term::<N, 0, 1, 2>(*c, &pw, acc),
-                    28 => add_term::<N, 0, 1, 1>(*c, &pw, acc),
-                    29 => add_term::<N, 0, 1, 0>(*c, &pw, acc),
-                    30 => add_term::<N, 0, 0, 4>(*c, &pw, acc),
-                    31 => add_term::<N, 0, 0, 3>(*c, &pw, acc),
-                    32 => add_term::<N, 0, 0, 2>(*c, &pw, acc),
-                    33 => add_term::<N, 0, 0, 1>(*c, &pw, acc),
-                    34 => add_term::<N, 0, 0, 0>(*c, &pw, acc),
+        macro_rules! dispatch {
+            ($p:expr, $c:expr; $(($i:literal, $j:literal, $k:literal)),*) => {
+                match $p {
+                    $([$i, $j, $k] => add_term::<N, $i, $j, $k>($c, &pw, &mut acc),)*
                     _ => unreachable!("a term above the order"),
                 }
             };
+        }
+        for (p, c) in &self.terms {
+            if N == 3 {
+                dispatch!(*p, *c;
+                    (2, 0, 0), (1, 1, 0), (1, 0, 1), (1, 0, 0), (0, 2, 0), (0, 1, 1), (0, 1, 0),
+                    (0, 0, 2), (0, 0, 1), (0, 0, 0))
+            } else {
+                dispatch!(*p, *c;
+                    (4, 0, 0), (3, 1, 0), (3, 0, 1), (3, 0, 0), (2, 2, 0), (2, 1, 1), (2, 1, 0),
+                    (2, 0, 2), (2, 0, 1), (2, 0, 0), (1, 3, 0), (1, 2, 1), (1, 2, 0), (1, 1, 2),
+                    (1, 1, 1), (1, 1, 0), (1, 0, 3), (1, 0, 2), (1, 0, 1), (1, 0, 0), (0, 4, 0),
+                    (0, 3, 1), (0, 3, 0), (0, 2, 2), (0, 2, 1), (0, 2, 0), (0, 1, 3), (0, 1, 2),
+                    (0, 1, 1), (0, 1, 0), (0, 0, 4), (0, 0, 3), (0, 0, 2), (0, 0, 1), (0, 0, 0))
+            }
         }
         acc
     }
@@ -390,18 +341,12 @@ fn powers_unrolled<const N: usize>(origin: DVec3, dir: DVec3) -> [[[f64; N]; N];
         .into_iter()
         .enumerate()
     {
-        // `Algebraic::powers`' sums start from +0.0: `0 + v` is `v` but for a zero's sign
-        // (-0.0 becomes +0.0), so each entry here is that entry but for a zero's sign. That
-        // sign never reaches the expansion: entries only enter products summed into
-        // accumulators that start from +0.0 (`add_term`'s `xy` and `out`), where a zero adds
-        // nothing and a sum starting from +0.0 is never -0.0, whatever the zeros' signs.
         pw[axis][0][0] = 1.0;
         for e in 1..N {
-            pw[axis][e][0] = pw[axis][e - 1][0] * o;
-            for k in 1..e {
-                pw[axis][e][k] = pw[axis][e - 1][k - 1] * d + pw[axis][e - 1][k] * o;
+            for k in 0..e {
+                pw[axis][e][k] += pw[axis][e - 1][k] * o;
+                pw[axis][e][k + 1] += pw[axis][e - 1][k] * d;
             }
-            pw[axis][e][e] = pw[axis][e - 1][e - 1] * d;
         }
     }
     pw
@@ -413,11 +358,8 @@ fn powers_unrolled<const N: usize>(origin: DVec3, dir: DVec3) -> [[[f64; N]; N];
 fn add_term<const N: usize, const I: usize, const J: usize, const K: usize>(
     c: f64,
     pw: &[[[f64; N]; N]; 3],
-    mut out: [f64; N],
-) -> [f64; N] {
-    if I > N - 1 || J > N - 1 || K > N - 1 {
-        unreachable!("a term above the order");
-    }
+    out: &mut [f64; N],
+) {
     let mut xy = [0.0f64; N];
     for a in 0..=I {
         for b in 0..=J {
@@ -432,7 +374,6 @@ fn add_term<const N: usize, const I: usize, const J: usize, const K: usize>(
             out[a + b] += c * xy[a] * pw[2][K][b];
         }
     }
-    out
 }
 
 impl Shape for Algebraic {
@@ -725,7 +666,7 @@ mod tests {
         let mut rnd = move || unit() * 8.0 - 4.0;
         for order in [2usize, 3, 4] {
             for case in 0..400 {
-                // Every other case a sparse polynomial (zero terms left out, so other slots).
+                // Every other case a sparse polynomial (zero terms left out).
                 let terms: Vec<([u8; 3], f64)> = pov_term_order(order)
                     .into_iter()
                     .map(|p| (p, rnd()))
