@@ -674,9 +674,15 @@ mod tests {
                     .collect();
                 let a = Algebraic::new(order, &terms, false);
                 let (o, d) = if case % 4 < 2 {
-                    (DVec3::new(rnd(), rnd(), -0.0), DVec3::new(rnd(), 0.0, rnd()))
+                    (
+                        DVec3::new(rnd(), rnd(), -0.0),
+                        DVec3::new(rnd(), 0.0, rnd()),
+                    )
                 } else {
-                    (DVec3::new(0.0, rnd(), rnd()), DVec3::new(-0.0, rnd(), -rnd().abs()))
+                    (
+                        DVec3::new(0.0, rnd(), rnd()),
+                        DVec3::new(-0.0, rnd(), -rnd().abs()),
+                    )
                 };
                 let mut x = [0.0; MAX_ORDER + 1];
                 a.along(o, d, &mut x);

@@ -7,6 +7,10 @@
 //! point must pass before the usual work: it never changes an answer (a crossing of an
 //! intersection lies on one member and inside all the others, so inside every half-space), and
 //! it leaves `bounds`, and so the scene's BVH, as they were.
+//!
+//! The same half-spaces (and a sphere member's ball) give windowed shapes (quartics) their
+//! [`Window`]: the stretch of each ray where their crossings can survive the clipping or the
+//! intersection, so the root finder polishes nothing outside it.
 
 use crate::math::{Aabb, DMat4, DVec3, Ray};
 use crate::scene::desc::CsgOp;
@@ -532,7 +536,8 @@ mod tests {
             let far = if case % 2 == 0 { 3.0 } else { 300.0 };
             let o = centre + DVec3::new(rnd(), rnd(), rnd()) * r * far;
             // Aim at a point near the sphere's surface (grazing) or inside it.
-            let aim = centre + DVec3::new(rnd(), rnd(), rnd()).normalize() * r * (1.0 + 1e-9 * rnd());
+            let aim =
+                centre + DVec3::new(rnd(), rnd(), rnd()).normalize() * r * (1.0 + 1e-9 * rnd());
             let ray = Ray::new(o, (aim - o) * (0.5 + rnd().abs()));
             let chord = ball.chord(&ray);
             for k in 0..=4000 {

@@ -403,9 +403,7 @@ impl Object {
                     // Crossings outside the box are clipped away: the shape may leave them
                     // out. The range is over the whole line, padded against rounding.
                     Some(w) => match w.range(ray) {
-                        Range::Within(lo, hi) => {
-                            shape.intersect_all_within(r, lo, hi, &mut s.hits)
-                        }
+                        Range::Within(lo, hi) => shape.intersect_all_within(r, lo, hi, &mut s.hits),
                         Range::Empty => {}
                         Range::All => shape.intersect_all(r, &mut s.hits),
                     },

@@ -295,7 +295,11 @@ fn certified_intervals_need_no_sturm_search() {
         certified += 1;
         assert!(roots_in_isolated(&c, lo, hi).is_empty(), "{c:?}");
         let searched = sturm_search::<7>(&c, lo, hi, Roots::new());
-        assert!(searched.is_empty(), "{c:?} on [{lo}, {hi}]: {:?}", &*searched);
+        assert!(
+            searched.is_empty(),
+            "{c:?} on [{lo}, {hi}]: {:?}",
+            &*searched
+        );
         assert!(sturm_roots_in(&c, lo, hi).is_empty());
     }
     assert!(certified > 1000, "{certified}");
