@@ -241,18 +241,19 @@ impl Ball {
         let oc = o - self.centre;
         let r2 = self.radius * self.radius;
         let a = d.length_squared();
-        if !(a > 0.0 && a.is_finite()) || !(oc.length_squared() < 1e10 * r2) {
+        // False for NaN too: the whole line then.
+        let near = a > 0.0 && a.is_finite() && oc.length_squared() < 1e10 * r2;
+        if !near {
             return Some((f64::NEG_INFINITY, f64::INFINITY));
         }
         let tm = -oc.dot(d) / a;
         let h = oc + d * tm;
         let gap = r2 - h.length_squared();
-        if !(gap >= 0.0) {
-            return if gap < 0.0 {
-                None
-            } else {
-                Some((f64::NEG_INFINITY, f64::INFINITY))
-            };
+        if gap < 0.0 {
+            return None;
+        }
+        if gap.is_nan() {
+            return Some((f64::NEG_INFINITY, f64::INFINITY));
         }
         let half = (gap / a).sqrt();
         let (b0, b1) = (tm - half, tm + half);
