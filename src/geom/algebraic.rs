@@ -675,14 +675,25 @@ mod tests {
         let mut unit = crate::math::xorshift_unit(0x9e37_79b9_7f4a_7c15u64);
         let mut rnd = move || unit() * 8.0 - 4.0;
         for order in [2usize, 3, 4] {
-            for _ in 0..200 {
+            for case in 0..400 {
+                // Every other case a sparse polynomial (zero terms left out).
                 let terms: Vec<([u8; 3], f64)> = pov_term_order(order)
                     .into_iter()
                     .map(|p| (p, rnd()))
+                    .map(|(p, c)| (p, if case % 2 == 1 && c < 0.0 { 0.0 } else { c }))
                     .collect();
                 let a = Algebraic::new(order, &terms, false);
-                let o = DVec3::new(rnd(), rnd(), -0.0);
-                let d = DVec3::new(rnd(), 0.0, rnd());
+                let (o, d) = if case % 4 < 2 {
+                    (
+                        DVec3::new(rnd(), rnd(), -0.0),
+                        DVec3::new(rnd(), 0.0, rnd()),
+                    )
+                } else {
+                    (
+                        DVec3::new(0.0, rnd(), rnd()),
+                        DVec3::new(-0.0, rnd(), -rnd().abs()),
+                    )
+                };
                 let mut x = [0.0; MAX_ORDER + 1];
                 a.along(o, d, &mut x);
                 let y = a.along_in::<{ MAX_ORDER + 1 }>(o, d);

@@ -74,6 +74,11 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
     fn half_space(&self) -> Option<(DVec3, f64)> {
         None
     }
+    /// A ball `(centre, radius)` holding the solid, for shapes that are one (spheres): an
+    /// intersection's other members are asked only for crossings on the ray's chord of it.
+    fn ball(&self) -> Option<(DVec3, f64)> {
+        None
+    }
     /// Bounds of the solid on the axes where it has them (infinite on the others), for
     /// unbounded shapes that are bounded across some axes (a quadric cylinder): clipping by
     /// them gives finite boxes. Only used to skip work, never as `bounds`.

@@ -543,11 +543,20 @@ impl<const N: usize> Sturm<N> {
 /// So the sign-change roots always come from [`roots_in`], and a root the Sturm search adds
 /// is kept only where the polynomial is zero to within its rounding error.
 pub fn sturm_roots_in(c: &[f64], lo: f64, hi: f64) -> Roots {
-    let base = roots_in(c, lo, hi);
     let c = match trim(c) {
         Some(c) if c.len() >= 3 && lo <= hi => c,
-        _ => return base,
+        _ => return roots_in(c, lo, hi),
     };
+    // No root at all, as `roots_in` finds: and the Sturm search could add one only at a
+    // point where `numerically_zero` holds, i.e. where the polynomial is within
+    // `8·len·2^-53·Σ|c_i||x|^i` of zero, while `surely_no_root`'s certificate puts it above
+    // 1e-11 of that sum (over the interval's reach, which bounds |x|) everywhere in
+    // `[lo, hi]`, where every point the search tries lies. So the sequence need not be built.
+    if surely_no_root(c, lo, hi) {
+        return Roots::new();
+    }
+    let mut base = Roots::new();
+    isolate(c, lo, hi, &mut base, false);
     match c.len() {
         3..=5 => sturm_search::<5>(c, lo, hi, base),
         6..=9 => sturm_search::<9>(c, lo, hi, base),

@@ -180,6 +180,10 @@ impl Shape for Sphere {
         (p - self.center).length_squared() < self.radius2
     }
 
+    fn ball(&self) -> Option<(DVec3, f64)> {
+        Some((self.center, self.radius))
+    }
+
     fn normal(&self, p: DVec3, _hit: &Hit) -> DVec3 {
         (p - self.center) / self.radius.max(f64::MIN_POSITIVE)
     }

@@ -106,7 +106,7 @@ fn attach_indexes(o: &mut Object, opened: bool) {
         // A clipped shape whose crossings outside a box are all clipped away (a clipped
         // quartic) is asked only for crossings in that box.
         let window = (!o.clip.is_empty() && shape.windowed())
-            .then(|| crate::scene::cull::object_cull(o))
+            .then(|| crate::scene::cull::Window::of(o))
             .flatten();
         if let ObjKind::Shape(_, w) = &mut o.kind {
             *w = window.map(Box::new);
@@ -150,13 +150,14 @@ fn attach_indexes(o: &mut Object, opened: bool) {
         // `bounded_by` is not read), and its cull box, when it has one, is tighter.
         let tight = cull.as_ref().and_then(|c| c.aabb).unwrap_or(bounds);
         if let Some(bx) = Some(tight).filter(|b| b.is_finite() && !b.is_empty()) {
+            let window = crate::scene::cull::Window::within(children, bx);
             for c in children.iter_mut() {
                 if !c.clip.is_empty() || c.inverse {
                     continue;
                 }
                 if let ObjKind::Shape(shape, w) = &mut c.kind {
                     if w.is_none() && shape.windowed() {
-                        *w = Some(Box::new(bx));
+                        *w = window.clone().map(Box::new);
                     }
                 }
             }

@@ -7,8 +7,12 @@
 //! point must pass before the usual work: it never changes an answer (a crossing of an
 //! intersection lies on one member and inside all the others, so inside every half-space), and
 //! it leaves `bounds`, and so the scene's BVH, as they were.
+//!
+//! The same half-spaces (and a sphere member's ball) give windowed shapes (quartics) their
+//! [`Window`]: the stretch of each ray where their crossings can survive the clipping or the
+//! intersection, so the root finder polishes nothing outside it.
 
-use crate::math::{Aabb, DMat4, DVec3};
+use crate::math::{Aabb, DMat4, DVec3, Ray};
 use crate::scene::desc::CsgOp;
 use crate::scene::object::{ObjKind, Object};
 
@@ -16,6 +20,9 @@ use crate::scene::object::{ObjKind, Object};
 const FAR: f64 = 1e9;
 /// More half-spaces than this and the vertex search (cubic in their number) is not tried.
 const MAX_PLANES: usize = 48;
+/// More half-spaces than this and a window is kept as a box (each plane costs a division per
+/// ray).
+const MAX_WINDOW_PLANES: usize = 12;
 
 /// A box holding every crossing of a top-level object whose `bounds` are not finite, from its
 /// own planes and slabs and its clipping objects' (a crossing must lie inside all of them);
@@ -37,6 +44,233 @@ pub fn object_cull(o: &Object) -> Option<Aabb> {
     }
     let b = b.intersection(&o.bounds);
     (b != Aabb::INFINITE && (b.is_finite() || b.min.is_finite() || b.max.is_finite())).then_some(b)
+}
+
+/// Where a windowed shape's crossings can survive its clipping (`ObjKind::Shape`'s window): a
+/// box, or when its clipping gives no box with a finite corner (a slab of two planes, turned)
+/// the clipping's half-spaces themselves, each padded as `polyhedron_box` pads its box.
+#[derive(Clone)]
+pub struct Window {
+    edges: Edges,
+    /// A ball holding the solid of a member or clipping object (a sphere), in its own space.
+    ball: Option<Ball>,
+}
+
+#[derive(Clone)]
+enum Edges {
+    Box(Aabb),
+    Planes(Vec<(DVec3, f64)>),
+}
+
+#[derive(Clone)]
+struct Ball {
+    /// World to the sphere's space (`None`: the same).
+    inv: Option<DMat4>,
+    centre: DVec3,
+    /// The radius, padded by 1e-6 of itself.
+    radius: f64,
+}
+
+impl Window {
+    /// The window of a clipped shape, when its clipping gives one: the half-spaces when some
+    /// is turned off the axes (their box would be looser), else the box.
+    pub fn of(o: &Object) -> Option<Window> {
+        let boxed = object_cull(o);
+        if o.inverse {
+            return boxed.map(|b| Window {
+                edges: Edges::Box(b),
+                ball: None,
+            });
+        }
+        let mut planes = Vec::new();
+        half_spaces(o, &mut planes);
+        for c in &o.clip {
+            half_spaces(c, &mut planes);
+        }
+        let ball = o.clip.iter().find_map(ball_of);
+        Window::choose(boxed, &planes).map(|w| w.with_ball(ball))
+    }
+
+    /// The window of an `intersection`'s member: every crossing the node keeps lies inside all
+    /// its members, so inside their half-spaces, and inside the node's box `bx`.
+    pub fn within(children: &[Object], bx: Aabb) -> Option<Window> {
+        let mut planes = Vec::new();
+        for c in children {
+            half_spaces(c, &mut planes);
+        }
+        let ball = children.iter().find_map(ball_of);
+        Window::choose(Some(bx), &planes).map(|w| w.with_ball(ball))
+    }
+
+    fn with_ball(self, ball: Option<Ball>) -> Window {
+        Window { ball, ..self }
+    }
+
+    /// The half-spaces (normalised and padded as `polyhedron_box` pads its box: by 1e-6 of the
+    /// largest offset, far above the rounding of the inside tests and of a ray's distances to
+    /// the planes) when the box is missing or some plane is turned, else the box.
+    fn choose(boxed: Option<Aabb>, planes: &[(DVec3, f64)]) -> Option<Window> {
+        let planes: Vec<(DVec3, f64)> = planes
+            .iter()
+            .map(|&(n, d)| {
+                let l = n.length();
+                (n / l, d / l)
+            })
+            .filter(|(n, d)| n.is_finite() && d.is_finite())
+            .collect();
+        let turned = planes
+            .iter()
+            .any(|(n, _)| n.to_array().iter().filter(|v| **v != 0.0).count() > 1);
+        let edges = if planes.is_empty()
+            || planes.len() > MAX_WINDOW_PLANES
+            || (boxed.is_some() && !turned)
+        {
+            Edges::Box(boxed?)
+        } else {
+            let scale = planes.iter().map(|h| h.1.abs()).fold(1.0, f64::max);
+            let pad = 1e-6 * scale;
+            Edges::Planes(planes.iter().map(|&(n, d)| (n, d + pad)).collect())
+        };
+        Some(Window { edges, ball: None })
+    }
+
+    /// The stretch of `origin + t·dir` (the `t` of the world ray, which a shape's own ray
+    /// shares) holding every crossing the clipping keeps, padded against rounding.
+    #[inline]
+    pub fn range(&self, ray: &Ray) -> Range {
+        let range = self.edge_range(ray);
+        match (&self.ball, range) {
+            (Some(ball), Range::Within(lo, hi)) if !lo.is_nan() && !hi.is_nan() => {
+                match ball.chord(ray) {
+                    Some((b0, b1)) => {
+                        let (lo, hi) = (lo.max(b0), hi.min(b1));
+                        if lo <= hi {
+                            Range::Within(lo, hi)
+                        } else {
+                            Range::Empty
+                        }
+                    }
+                    None => Range::Empty,
+                }
+            }
+            _ => range,
+        }
+    }
+
+    /// `range` from the box or the planes alone.
+    #[inline]
+    fn edge_range(&self, ray: &Ray) -> Range {
+        let (lo, hi) = match &self.edges {
+            Edges::Box(b) => {
+                let inv = ray.dir.recip();
+                let (t0, t1) = ((b.min - ray.origin) * inv, (b.max - ray.origin) * inv);
+                let lo = t0.min(t1).max_element();
+                let hi = t0.max(t1).min_element();
+                let pad = 1e-7 * (lo.abs().max(hi.abs()) + 1.0);
+                // NaN (a ray in a face's plane) asks for everything: the shape's window
+                // search takes a NaN edge as none.
+                return if lo <= hi || lo.is_nan() || hi.is_nan() {
+                    Range::Within(lo - pad, hi + pad)
+                } else {
+                    Range::Empty
+                };
+            }
+            Edges::Planes(planes) => {
+                let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+                for &(n, d) in planes {
+                    // n·(o + t·dir) <= d; a ray parallel to a plane is left unbounded by it.
+                    let (nd, no) = (n.dot(ray.dir), n.dot(ray.origin));
+                    let t = (d - no) / nd;
+                    if nd > 0.0 {
+                        hi = hi.min(t);
+                    } else if nd < 0.0 {
+                        lo = lo.max(t);
+                    } else if nd.is_nan() {
+                        return Range::All;
+                    }
+                    if t.is_nan() && nd != 0.0 {
+                        return Range::All;
+                    }
+                }
+                (lo, hi)
+            }
+        };
+        let reach = match (lo.is_finite(), hi.is_finite()) {
+            (true, true) => lo.abs().max(hi.abs()),
+            (true, false) => lo.abs(),
+            (false, true) => hi.abs(),
+            (false, false) => return Range::All,
+        };
+        if lo > hi {
+            return Range::Empty;
+        }
+        let pad = 1e-7 * (reach + 1.0);
+        Range::Within(lo - pad, hi + pad)
+    }
+}
+
+/// The ball of a member or clipping object that is a sphere (not inverted), padded.
+fn ball_of(o: &Object) -> Option<Ball> {
+    let ObjKind::Shape(s, _) = &o.kind else {
+        return None;
+    };
+    if o.inverse {
+        return None;
+    }
+    let (centre, r) = s.ball()?;
+    (r > 0.0 && r.is_finite() && centre.is_finite()).then(|| Ball {
+        inv: o.transform.as_ref().map(|t| t.inv),
+        centre,
+        radius: r * (1.0 + 1e-6),
+    })
+}
+
+impl Ball {
+    /// The stretch of the ray (world `t`) inside the padded ball, itself padded by 1e-7 of
+    /// its ends as boxes are; `None` when the ray misses it. From the point of the line
+    /// nearest the centre (no cancellation between `b²` and `4ac`): every rounding here is a
+    /// few ulps of the distances involved, and the padding (1e-6 of the radius) is far above
+    /// them as long as the ray starts within 1e5 radii of the centre; farther away the ball
+    /// says nothing (the whole line).
+    #[inline]
+    fn chord(&self, ray: &Ray) -> Option<(f64, f64)> {
+        let (o, d) = match &self.inv {
+            Some(m) => (m.transform_point3(ray.origin), m.transform_vector3(ray.dir)),
+            None => (ray.origin, ray.dir),
+        };
+        let oc = o - self.centre;
+        let r2 = self.radius * self.radius;
+        let a = d.length_squared();
+        // False for NaN too: the whole line then.
+        let near = a > 0.0 && a.is_finite() && oc.length_squared() < 1e10 * r2;
+        if !near {
+            return Some((f64::NEG_INFINITY, f64::INFINITY));
+        }
+        let tm = -oc.dot(d) / a;
+        let h = oc + d * tm;
+        let gap = r2 - h.length_squared();
+        if gap < 0.0 {
+            return None;
+        }
+        if gap.is_nan() {
+            return Some((f64::NEG_INFINITY, f64::INFINITY));
+        }
+        let half = (gap / a).sqrt();
+        let (b0, b1) = (tm - half, tm + half);
+        let pad = 1e-7 * (b0.abs().max(b1.abs()) + 1.0);
+        Some((b0 - pad, b1 + pad))
+    }
+}
+
+/// What a [`Window`] leaves of a ray.
+#[derive(Clone, Copy, Debug)]
+pub enum Range {
+    /// Every crossing (the window says nothing for this ray).
+    All,
+    /// No crossing survives the clipping.
+    Empty,
+    /// Only crossings with `t` in `[lo, hi]` may survive (NaN ends: every crossing).
+    Within(f64, f64),
 }
 
 /// A finite box holding an object's solid and crossings: its bounds, or when they are not
@@ -285,6 +519,71 @@ fn polyhedron_box(planes: &[(DVec3, f64)]) -> Option<Aabb> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A ball's chord holds the `t` of every point of the ray inside the ball, and is missing
+    /// only when no point is inside: rays from near and far, grazing and through.
+    #[test]
+    fn ball_chord_holds_the_points_inside() {
+        let mut unit = crate::math::xorshift_unit(0x9e37_79b9_7f4a_7c15);
+        let mut rnd = move || unit() * 2.0 - 1.0;
+        for case in 0..4000 {
+            let r = 0.5 + rnd().abs() * 10.0;
+            let centre = DVec3::new(rnd(), rnd(), rnd()) * 20.0;
+            let ball = Ball {
+                inv: None,
+                centre,
+                radius: r * (1.0 + 1e-6),
+            };
+            let far = if case % 2 == 0 { 3.0 } else { 300.0 };
+            let o = centre + DVec3::new(rnd(), rnd(), rnd()) * r * far;
+            // Aim at a point near the sphere's surface (grazing) or inside it.
+            let aim =
+                centre + DVec3::new(rnd(), rnd(), rnd()).normalize() * r * (1.0 + 1e-9 * rnd());
+            let ray = Ray::new(o, (aim - o) * (0.5 + rnd().abs()));
+            let chord = ball.chord(&ray);
+            for k in 0..=4000 {
+                let t = k as f64 * 0.001;
+                let p = ray.at(t);
+                if (p - centre).length_squared() < r * r {
+                    let (b0, b1) = chord.expect("a point inside, but no chord");
+                    assert!(b0 <= t && t <= b1, "{t} {b0} {b1}");
+                }
+            }
+        }
+    }
+
+    /// A window of turned half-spaces holds the `t` of every point of the ray inside them,
+    /// and says `Empty` only when the ray has no such point.
+    #[test]
+    fn plane_window_holds_the_points_inside() {
+        let mut unit = crate::math::xorshift_unit(0x2545_f491_4f6c_dd1d);
+        let mut rnd = move || unit() * 2.0 - 1.0;
+        for case in 0..2000 {
+            let n = DVec3::new(rnd(), rnd(), rnd()).normalize();
+            let m = DVec3::new(rnd(), rnd(), rnd()).normalize();
+            let planes = [(n, 0.5), (-n, 0.5), (m, 2.0 + rnd()), (-m * 3.0, 3.0)];
+            let Some(w) = Window::choose(None, &planes) else {
+                panic!("no window");
+            };
+            let scale = if case % 2 == 0 { 1.0 } else { 1e-9 };
+            let ray = Ray::new(
+                DVec3::new(rnd(), rnd(), rnd()) * 5.0,
+                DVec3::new(rnd(), rnd(), rnd()) * scale,
+            );
+            let range = w.range(&ray);
+            for k in 0..=200 {
+                let t = (k as f64 - 100.0) * 0.1 / scale;
+                let p = ray.at(t);
+                if planes.iter().all(|&(n, d)| n.dot(p) <= d) {
+                    match range {
+                        Range::All => {}
+                        Range::Empty => panic!("empty, but {t} is inside"),
+                        Range::Within(lo, hi) => assert!(lo <= t && t <= hi, "{t} {lo} {hi}"),
+                    }
+                }
+            }
+        }
+    }
 
     #[test]
     fn boxes_through_maps() {

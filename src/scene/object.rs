@@ -9,14 +9,16 @@ use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, Slabs, Transform};
 use crate::scene::children::{union_first_hit, union_scan_first_hit, ChildIndex};
 use crate::scene::csg_hit;
+use crate::scene::cull::{Range, Window};
 use crate::scene::desc::{CsgOp, MeshData, Texture};
 use crate::scene::faces::{self, Faces};
 pub use crate::scene::scratch::Scratch;
 
 pub enum ObjKind {
-    /// A shape, and for a clipped leaf whose crossings outside a box are all clipped away
-    /// (`scene::cull::object_cull`), that box: the shape is asked only for crossings in it.
-    Shape(Arc<dyn Shape>, Option<Box<Aabb>>),
+    /// A shape, and for a clipped leaf whose crossings outside a box (`scene::cull::object_cull`)
+    /// or its clipping's half-spaces are all clipped away, that window: the shape is asked only
+    /// for crossings in it.
+    Shape(Arc<dyn Shape>, Option<Box<Window>>),
     Csg {
         op: CsgOp,
         children: Vec<Object>,
@@ -401,17 +403,11 @@ impl Object {
                 match window {
                     // Crossings outside the box are clipped away: the shape may leave them
                     // out. The range is over the whole line, padded against rounding.
-                    Some(b) => {
-                        let inv = ray.dir.recip();
-                        let (t0, t1) = ((b.min - ray.origin) * inv, (b.max - ray.origin) * inv);
-                        let lo = t0.min(t1).max_element();
-                        let hi = t0.max(t1).min_element();
-                        let pad = 1e-7 * (lo.abs().max(hi.abs()) + 1.0);
-                        // NaN (a ray in a face's plane) asks for everything.
-                        if lo <= hi || lo.is_nan() || hi.is_nan() {
-                            shape.intersect_all_within(r, lo - pad, hi + pad, &mut s.hits);
-                        }
-                    }
+                    Some(w) => match w.range(ray) {
+                        Range::Within(lo, hi) => shape.intersect_all_within(r, lo, hi, &mut s.hits),
+                        Range::Empty => {}
+                        Range::All => shape.intersect_all(r, &mut s.hits),
+                    },
                     None => shape.intersect_all(r, &mut s.hits),
                 }
                 s.surface

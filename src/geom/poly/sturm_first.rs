@@ -23,9 +23,13 @@ pub fn sturm_first_root_in(
         sturm_roots_in(c, lo, hi).iter().copied().find(|&x| keep(x))
     };
     let ct = match trim(c) {
-        Some(ct) if ct.len() >= 4 && lo <= hi && !surely_no_root(ct, lo, hi) => ct,
+        Some(ct) if ct.len() >= 4 && lo <= hi => ct,
         _ => return full(&mut keep),
     };
+    // `sturm_roots_in` finds nothing then (see there).
+    if surely_no_root(ct, lo, hi) {
+        return None;
+    }
     let n = ct.len() - 1;
     // `isolate`'s top level: the critical points, then the pieces as brackets (an exact zero
     // has equal ends), which `brackets` lists in `isolate`'s order.
@@ -69,11 +73,19 @@ pub fn sturm_first_root_in(
 /// only in a piece reaching into the window; the others are counted for the Sturm test.
 pub fn sturm_roots_in_window(c: &[f64], lo: f64, hi: f64, wlo: f64, whi: f64) -> Roots {
     let ct = match trim(c) {
-        Some(ct) if ct.len() >= 4 && lo <= hi && !surely_no_root(ct, lo, hi) => ct,
+        Some(ct) if ct.len() >= 4 && lo <= hi => ct,
         _ => return sturm_roots_in(c, lo, hi),
     };
     if wlo.is_nan() || whi.is_nan() {
         return sturm_roots_in(c, lo, hi);
+    }
+    // No root inside the window, of either kind: `roots_in`'s (as in `roots_in_window`) or
+    // the Sturm search's, which adds only points where the polynomial is within a few
+    // rounding errors of zero (`numerically_zero`), far below `surely_no_root`'s margin over
+    // the window. Neither the critical points nor the sequence are needed.
+    let (wl, wh) = (lo.max(wlo), hi.min(whi));
+    if wl > wh || surely_no_root(ct, wl, wh) {
+        return Roots::new();
     }
     let n = ct.len() - 1;
     let mut d = [0.0; MAX_DEGREE];

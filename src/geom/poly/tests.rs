@@ -271,3 +271,36 @@ fn root_on_boundary() {
     check(&roots_in(&c, 0.0, 3.0), &[0.0, 1.0, 2.0, 3.0], 1e-12);
     check(&sturm_roots_in(&c, 0.0, 3.0), &[0.0, 1.0, 2.0, 3.0], 1e-12);
 }
+
+/// Where `surely_no_root` certifies an interval, the Sturm search over it adds nothing to
+/// `roots_in`'s (empty) answer, so `sturm_roots_in` may answer without the sequence: random
+/// quartics to sextics, near-double roots and roots just outside the interval.
+#[test]
+fn certified_intervals_need_no_sturm_search() {
+    let mut rng = crate::geom::test_rng::Lcg(41);
+    let mut certified = 0;
+    for case in 0..20_000 {
+        let deg = 4 + case % 3;
+        let mut roots: Vec<f64> = (0..deg).map(|_| rng.next() * 8.0 - 2.0).collect();
+        if case % 3 == 0 {
+            roots[1] = roots[0] + 1e-9 * rng.next();
+        }
+        let mut c = from_roots(&roots);
+        // Lift some so the near-double roots leave the axis (a tangent ray just missing).
+        c[0] += (rng.next() - 0.3) * if case % 2 == 0 { 1e-6 } else { 1.0 };
+        let (lo, hi) = (rng.next() * 4.0 - 2.0, 2.0 + 6.0 * rng.next());
+        if lo > hi || !surely_no_root(&c, lo, hi) {
+            continue;
+        }
+        certified += 1;
+        assert!(roots_in_isolated(&c, lo, hi).is_empty(), "{c:?}");
+        let searched = sturm_search::<7>(&c, lo, hi, Roots::new());
+        assert!(
+            searched.is_empty(),
+            "{c:?} on [{lo}, {hi}]: {:?}",
+            &*searched
+        );
+        assert!(sturm_roots_in(&c, lo, hi).is_empty());
+    }
+    assert!(certified > 1000, "{certified}");
+}
