@@ -258,18 +258,7 @@ pub(super) fn refine(
         } else {
             exact(&mut ea, &mut reference);
             exact(&mut eb, &mut reference);
-            let (fa, fb) = (ea.v, eb.v);
-            let ratio = (fa / fb).abs();
-            if fa.is_finite() && fb.is_finite() && (1e-3..=1e3).contains(&ratio) {
-                let m = b - fb * (b - a) / (fb - fa);
-                if m > a.min(b) && m < a.max(b) {
-                    m
-                } else {
-                    0.5 * (a + b)
-                }
-            } else {
-                0.5 * (a + b)
-            }
+            false_position(a, ea.v, b, eb.v)
         };
         let p = o + u * m;
         let em = match reference.as_ref().and_then(|pw| se.near(pw, p)) {
@@ -313,6 +302,20 @@ pub(super) fn refine(
     0.5 * (ea.s + eb.s)
 }
 
+/// The refinement's next point: the false-position step between (a, fa) and (b, fb) when the
+/// two values are finite and within a factor of 1000 of each other and the step lands strictly
+/// between them, else the midpoint.
+fn false_position(a: f64, fa: f64, b: f64, fb: f64) -> f64 {
+    let ratio = (fa / fb).abs();
+    if fa.is_finite() && fb.is_finite() && (1e-3..=1e3).contains(&ratio) {
+        let m = b - fb * (b - a) / (fb - fa);
+        if m > a.min(b) && m < a.max(b) {
+            return m;
+        }
+    }
+    0.5 * (a + b)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -327,17 +330,7 @@ mod tests {
             if (b - a).abs() <= tol {
                 break;
             }
-            let ratio = (fa / fb).abs();
-            let m = if fa.is_finite() && fb.is_finite() && (1e-3..=1e3).contains(&ratio) {
-                let m = b - fb * (b - a) / (fb - fa);
-                if m > a.min(b) && m < a.max(b) {
-                    m
-                } else {
-                    0.5 * (a + b)
-                }
-            } else {
-                0.5 * (a + b)
-            };
+            let m = false_position(a, fa, b, fb);
             let fm = f(m);
             if fm.is_nan() {
                 return m;
