@@ -83,9 +83,9 @@ impl Window {
             });
         }
         let mut planes = Vec::new();
-        half_spaces(o, &mut planes);
+        window_half_spaces(o, &mut planes);
         for c in &o.clip {
-            half_spaces(c, &mut planes);
+            window_half_spaces(c, &mut planes);
         }
         let ball = o.clip.iter().find_map(ball_of);
         Window::choose(boxed, &planes).map(|w| w.with_ball(ball))
@@ -96,7 +96,7 @@ impl Window {
     pub fn within(children: &[Object], bx: Aabb) -> Option<Window> {
         let mut planes = Vec::new();
         for c in children {
-            half_spaces(c, &mut planes);
+            window_half_spaces(c, &mut planes);
         }
         let ball = children.iter().find_map(ball_of);
         Window::choose(Some(bx), &planes).map(|w| w.with_ball(ball))
@@ -436,6 +436,37 @@ fn half_spaces(o: &Object, out: &mut Vec<(DVec3, f64)>) {
     }
 }
 
+/// `half_spaces` for a window: a bounded shape turned off the axes gives the faces of its own
+/// box turned into world planes rather than its world bounds' faces (the box of the turned box,
+/// up to 1.7 times wider on each axis). objects/quartic/trough's saddle inside its rotated
+/// `UnitBox` is then solved only where the box is, not across the corners of its world box.
+/// Not shared with the culls' `half_spaces`: their vertex search wants few, axis planes.
+fn window_half_spaces(o: &Object, out: &mut Vec<(DVec3, f64)>) {
+    if let (ObjKind::Shape(s, _), Some(t)) = (&o.kind, &o.transform) {
+        let turned = (0..3).any(|c| (0..3).any(|r| r != c && t.m.col(c)[r] != 0.0));
+        let local = s.bounds();
+        if turned
+            && !o.inverse
+            && o.bounds.is_finite()
+            && !o.bounds.is_empty()
+            && local.is_finite()
+            && !local.is_empty()
+        {
+            // Each face n·q <= d of the local box, with q = inv(p): (invᵀn)·p <= d − n·inv(0).
+            for (axis, n) in [DVec3::X, DVec3::Y, DVec3::Z].into_iter().enumerate() {
+                for (n, d) in [(n, local.max[axis]), (-n, -local.min[axis])] {
+                    let (n, d) = (t.normal(n), d - n.dot(t.inv_point(DVec3::ZERO)));
+                    if n.is_finite() && d.is_finite() && n != DVec3::ZERO {
+                        out.push((n, d));
+                    }
+                }
+            }
+            return;
+        }
+    }
+    half_spaces(o, out)
+}
+
 /// The half-space n·p <= d holding what a subtracted member leaves, when the member's solid is
 /// itself a half-space (a plane, not clipped): a plane's inside is n·p < d (`geom::plane`),
 /// so what lies outside it is n·p >= d, and the padded box holds that closed side.
@@ -721,3 +752,7 @@ mod tests {
         assert!(b.min.abs().max_element() < 1e-5);
     }
 }
+
+#[cfg(test)]
+#[path = "cull_window_tests.rs"]
+mod window_tests;

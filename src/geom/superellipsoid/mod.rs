@@ -12,10 +12,12 @@
 //! field is therefore evaluated as `m^(2/n) · (1 + (min/max)^(2/e))^(e/n)` with `m` the larger
 //! of |x| and |y|, and the gradient in logarithms.
 
+mod linear;
 mod near;
 
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
+use linear::LinConsts;
 use near::Series;
 
 /// Widening of the box searched, so a crossing on the box's faces (e or n near zero) is kept.
@@ -45,6 +47,8 @@ pub struct Superellipsoid {
     sa: Series,
     sb: Series,
     sc: Series,
+    /// The first-order model's bound constants (`linear`).
+    lin: LinConsts,
 }
 
 /// A fixed exponent. `powf` with exponent 1, 2 or 1/2 gives exactly `x`, `x * x` and
@@ -134,6 +138,7 @@ impl Superellipsoid {
             sa: Series::new(a.exponent()),
             sb: Series::new(b.exponent()),
             sc: Series::new(c.exponent()),
+            lin: LinConsts::new(a.exponent(), b.exponent(), c.exponent()),
         }
     }
 

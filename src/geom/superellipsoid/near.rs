@@ -12,6 +12,7 @@
 //! refinement makes from exact values, and the root is its root to the bit (unit test
 //! `lazy_refine_is_the_plain_one`).
 
+use super::linear::Lin;
 use super::{Power, Superellipsoid};
 use crate::math::DVec3;
 
@@ -30,6 +31,23 @@ pub(super) struct Powers {
     z: f64,
     inv_z: f64,
     zc: f64,
+    /// The smaller of |x| and |y|, and the value, for the first-order model.
+    n: f64,
+    v: f64,
+}
+
+impl Powers {
+    /// The first-order model of the field at this point (`linear`).
+    pub(super) fn lin(&self, se: &Superellipsoid) -> Lin {
+        Lin::new(
+            se,
+            (self.m, self.inv_m),
+            self.n,
+            (self.z, self.inv_z),
+            (self.mc, self.ra, self.g, self.zc),
+            self.v,
+        )
+    }
 }
 
 /// The binomial series of `(1 + d)^k` to `d^5`, with what its remainder bound needs.
@@ -126,13 +144,15 @@ impl Superellipsoid {
         if !(m > 0.0) {
             return (self.value(p), None);
         }
-        let r = x.min(y) / m;
+        let n = x.min(y);
+        let r = n / m;
         let mc = self.c.of(m);
         let ra = self.a.of(r);
         let base = 1.0 + ra;
         let g = self.b.of(base);
         let xy = mc * g;
         let zc = self.c.of(z);
+        let v = xy + zc - 1.0;
         let powers = Powers {
             m,
             inv_m: 1.0 / m,
@@ -146,8 +166,10 @@ impl Superellipsoid {
             z,
             inv_z: 1.0 / z,
             zc,
+            n,
+            v,
         };
-        (xy + zc - 1.0, Some(powers))
+        (v, Some(powers))
     }
 
     /// `value(p)` within a bound, from the powers at a nearby point; None where a series is
@@ -226,17 +248,18 @@ pub(super) fn refine(
     let mut eb = End { s: b, v: fb, ..ea };
     let tol = 1e-13 * a.abs().max(b.abs()).max(1.0);
     let mut side = 0i8;
-    // The last point evaluated exactly, whose powers the series start from.
-    let mut reference: Option<Powers> = None;
-    let exact = |end: &mut End, reference: &mut Option<Powers>| {
+    // The last point evaluated exactly, whose powers the series start from, and the
+    // first-order model there (asked first: cheaper, and enough for most midpoints).
+    let mut reference: Option<(Powers, Lin)> = None;
+    let exact = |end: &mut End, reference: &mut Option<(Powers, Lin)>| {
         if end.err != 0.0 {
             let (mut v, pw) = se.value_powers(o + u * end.s);
             for _ in 0..end.halvings {
                 v *= 0.5;
             }
             (end.v, end.err) = (v, 0.0);
-            if pw.is_some() {
-                *reference = pw;
+            if let Some(pw) = pw {
+                *reference = Some((pw, pw.lin(se)));
             }
         }
     };
@@ -261,7 +284,10 @@ pub(super) fn refine(
             false_position(a, ea.v, b, eb.v)
         };
         let p = o + u * m;
-        let em = match reference.as_ref().and_then(|pw| se.near(pw, p)) {
+        let estimate = reference
+            .as_ref()
+            .and_then(|(pw, lin)| lin.at(p).or_else(|| se.near(pw, p)));
+        let em = match estimate {
             Some((v, err)) if v.abs() > err && v.abs() < 1e300 => End {
                 s: m,
                 v,
@@ -273,8 +299,8 @@ pub(super) fn refine(
                 if fm.is_nan() {
                     return m;
                 }
-                if pw.is_some() {
-                    reference = pw;
+                if let Some(pw) = pw {
+                    reference = Some((pw, pw.lin(se)));
                 }
                 End {
                     s: m,
@@ -317,7 +343,7 @@ fn false_position(a: f64, fa: f64, b: f64, fb: f64) -> f64 {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
 
     /// The plain refinement (exact values at every point), which `near::refine` must match
@@ -352,7 +378,7 @@ mod tests {
         0.5 * (a + b)
     }
 
-    fn rng(seed: u64) -> impl FnMut() -> f64 {
+    pub(in crate::geom::superellipsoid) fn rng(seed: u64) -> impl FnMut() -> f64 {
         let mut state = seed;
         move || {
             state ^= state << 13;
@@ -362,7 +388,7 @@ mod tests {
         }
     }
 
-    const SHAPES: [(f64, f64); 10] = [
+    pub(in crate::geom::superellipsoid) const SHAPES: [(f64, f64); 10] = [
         (0.1, 0.1),
         (0.3, 0.3),
         (0.5, 0.5),
@@ -376,7 +402,7 @@ mod tests {
     ];
 
     /// A point of the surface near the direction `p` (bisection on the ray from the centre).
-    fn on_surface(s: &Superellipsoid, p: DVec3) -> DVec3 {
+    pub(in crate::geom::superellipsoid) fn on_surface(s: &Superellipsoid, p: DVec3) -> DVec3 {
         let (mut lo, mut hi) = (0.0, 2.0);
         for _ in 0..60 {
             let mid = 0.5 * (lo + hi);

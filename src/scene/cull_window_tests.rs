@@ -1,0 +1,85 @@
+//! Quartics windowed by turned members and clipping objects answer every query as they do
+//! without a window, bit for bit (the window only leaves out crossings the node drops).
+
+use crate::geom::test_rng::Lcg;
+use crate::math::Ray;
+use crate::scene::object::{ObjKind, Object, Scratch};
+use crate::sdl::{ParseOptions, Parser};
+
+/// trough's and monkey's saddles in turned boxes (moved, scaled unevenly, two boxes at once),
+/// and clipped by a turned box and by a squashed turned sphere beside a plane.
+const SCENE: &str = r#"
+    #declare Saddle = quartic { < 0, 0, 0, 0, 0, 0, 0, 4, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+      0, 0, 0, 0, 0, 0, 0, 0, 0, -1, 0, 0, 0, 0, 0 > }
+    #declare Monkey = quartic { < 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, -3, 0, 0, 0, 0, 0, 0, 0,
+      0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, -1, 0 > }
+    intersection { object { Saddle } box { -1, 1 } scale 2 rotate -10*y rotate -60*x translate 4*z }
+    intersection { object { Monkey } box { -1, 1 scale 2 } rotate 20*y rotate -30*x }
+    intersection { object { Saddle } box { <-1, -0.5, -2>, <1.5, 1, 1> rotate <10, 20, 30> }
+      box { -1, 1 rotate 45*z } scale <1, 2, 0.5> translate <0.5, -0.25, 1> }
+    object { Monkey clipped_by { box { -1.5, 1.5 rotate <30, 0, 20> } } }
+    object { Saddle rotate 40*x clipped_by { sphere { 0, 2 scale <1, 0.5, 1> rotate 30*z } plane { y, 0.2 rotate 10*x } } }
+"#;
+
+fn scene() -> crate::scene::build::Scene {
+    let mut p = Parser::new(ParseOptions::default());
+    p.parse_str("t.pov", SCENE)
+        .map_err(|e| e.message.clone())
+        .unwrap();
+    crate::scene::build::build(&p.scene, 64, 48).scene
+}
+
+/// Drops every window below `o`; counts those it dropped.
+fn unwindow(o: &mut Object) -> usize {
+    let mut n = 0;
+    for c in &mut o.clip {
+        n += unwindow(c);
+    }
+    match &mut o.kind {
+        ObjKind::Shape(_, w) => n += w.take().is_some() as usize,
+        ObjKind::Csg { children, .. } => n += children.iter_mut().map(unwindow).sum::<usize>(),
+    }
+    n
+}
+
+#[test]
+fn turned_windows_keep_every_crossing() {
+    let windowed = scene();
+    let mut bare = scene();
+    let dropped: usize = bare.objects.iter_mut().map(unwindow).sum();
+    assert_eq!(dropped, 5);
+    let mut rng = Lcg(11);
+    let (mut sa, mut sb) = (Scratch::default(), Scratch::default());
+    for (a, b) in windowed.objects.iter().zip(&bare.objects) {
+        let mut hits = 0;
+        for k in 0..6000 {
+            // Rays from around the object, aimed near its middle, some along the axes.
+            let o = rng.vec(8.0);
+            let dir = if k % 5 == 0 {
+                [
+                    crate::math::DVec3::X,
+                    crate::math::DVec3::Y,
+                    crate::math::DVec3::Z,
+                ][k % 3]
+            } else {
+                rng.vec(1.5) - o * 0.125
+            };
+            let ray = Ray::new(o, dir);
+            let tmax = if rng.next() < 0.3 { 6.0 } else { f64::INFINITY };
+            let (ha, hb) = (
+                a.first_hit(&ray, tmax, &mut sa),
+                b.first_hit(&ray, tmax, &mut sb),
+            );
+            assert_eq!(ha.map(|h| h.t.to_bits()), hb.map(|h| h.t.to_bits()));
+            hits += ha.is_some() as usize;
+            a.all_hits(&ray, tmax, &mut sa);
+            b.all_hits(&ray, tmax, &mut sb);
+            let la: Vec<_> = sa.surface.iter().map(|h| (h.t.to_bits(), h.flip)).collect();
+            let lb: Vec<_> = sb.surface.iter().map(|h| (h.t.to_bits(), h.flip)).collect();
+            assert_eq!(la, lb);
+            sa.surface.clear();
+            sb.surface.clear();
+        }
+        assert!(hits > 100, "{hits}");
+    }
+}
