@@ -46,6 +46,8 @@ impl HeightField {
     /// z part of its slab test (`key`, its entry from 0, and `exit`, without `tmax`): the
     /// block's heights give its entry and exit along y by the sign of `d.y` rather than by
     /// `min` and `max` (the same values). No branch: the walk tests four blocks at once.
+    // Negated: a NaN `water_level` leaves every block in, as `visit`'s early return does.
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
     #[inline(always)]
     fn reaches_signed(&self, r: &GridRay, s: &Signs, range: [f32; 2], key: f64, exit: f64) -> bool {
         let [ylo, yhi] = range.map(f64::from);
