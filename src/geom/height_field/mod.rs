@@ -72,20 +72,39 @@ impl HeightData {
 struct Level {
     nx: usize,
     nz: usize,
-    /// The block's smallest and largest height in object units, side by side for the walk's
-    /// one load per block: a 16-bit value over 65536 is an f32 exactly, so these are the same
-    /// f64 values as `value as f64 * SCALE`.
-    range: Vec<[f32; 2]>,
+    /// Blocks along x of the level above (`nx` halved, rounded up): the width of `quads`.
+    px: usize,
+    /// The blocks' ranges by fours: the children of block (pi, pj) of the level above, in the
+    /// order (0, 0), (1, 0), (0, 1), (1, 1), at `quads[pj * px + pi]`, so the walk's visit
+    /// finds all four in one aligned 32 bytes. Children beyond the grid's edge are padding,
+    /// never read as blocks.
+    quads: Vec<Quad>,
 }
+
+/// Four blocks' smallest and largest heights in object units: a 16-bit value over 65536 is
+/// an f32 exactly, so these are the same f64 values as `value as f64 * SCALE`.
+#[derive(Clone, Copy, Debug)]
+#[repr(C, align(32))]
+struct Quad([[f32; 2]; 4]);
 
 impl Level {
     fn new(nx: usize, nz: usize, min: &[u16], max: &[u16]) -> Level {
-        let range = min
-            .iter()
-            .zip(max)
-            .map(|(&a, &b)| [(a as f64 * SCALE) as f32, (b as f64 * SCALE) as f32])
-            .collect();
-        Level { nx, nz, range }
+        let (px, pz) = (nx.div_ceil(2), nz.div_ceil(2));
+        let mut quads = vec![Quad([[0.0; 2]; 4]); px * pz];
+        for j in 0..nz {
+            for i in 0..nx {
+                let k = j * nx + i;
+                let range = [min[k], max[k]].map(|v| (v as f64 * SCALE) as f32);
+                quads[(j / 2) * px + i / 2].0[(j % 2) * 2 + i % 2] = range;
+            }
+        }
+        Level { nx, nz, px, quads }
+    }
+
+    /// The range of block (i, j), which lies within the level.
+    #[inline(always)]
+    fn range(&self, i: usize, j: usize) -> [f32; 2] {
+        self.quads[(j / 2) * self.px + i / 2].0[(j % 2) * 2 + i % 2]
     }
 }
 
@@ -156,7 +175,7 @@ impl HeightField {
         } else {
             std::sync::Arc::from([])
         };
-        let top = levels.last().map_or(0.0, |l| l.range[0][1] as f64);
+        let top = levels.last().map_or(0.0, |l| l.range(0, 0)[1] as f64);
         let bounds = if ok && top >= data.water_level {
             Aabb::new(
                 DVec3::new(0.0, -SOLID_DEPTH, 0.0),
@@ -226,7 +245,7 @@ impl HeightField {
         bj: usize,
         xz: (f64, f64),
     ) -> bool {
-        let [ylo, yhi] = l.range[bj * l.nx + bi].map(f64::from);
+        let [ylo, yhi] = l.range(bi, bj).map(f64::from);
         if yhi < self.data.water_level {
             return false;
         }

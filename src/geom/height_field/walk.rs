@@ -34,71 +34,46 @@ impl Signs {
     }
 }
 
-/// A child block that passed its test: its entry along x and z (from 0: the sort key) and its
-/// exit along them (without `tmax`), and its place in the level below.
-#[derive(Clone, Copy, Default)]
-struct Kid {
-    key: f64,
-    exit: f64,
-    i: usize,
-    j: usize,
-    /// The entry and exit of its test, bounds for its children's (see `visit_signed`).
-    t: (f64, f64),
-}
-
 /// The right side of the walk's slab test (`slack_ok::<true>`): a block whose entry is above
-/// this function of its exit is missed. Monotone in the exit: each operation is, and below
-/// -1 the sum still grows (the step in `t` outweighs the one in `1e-9 |t|`).
+/// this function of its exit is missed.
 #[inline(always)]
 fn slack(t1: f64) -> f64 {
     t1 + 1e-9 * fmax::<true>(t1.abs(), 1.0)
 }
 
 impl HeightField {
-    /// `reaches::<true>` for a ray with `Signs`: the block's heights give its entry and exit
-    /// along y by the sign of `d.y` rather than by `min` and `max` (the same values). Also
-    /// gives the test's entry `t0` and exit `t1`, which bound those of every block inside
-    /// this one (see `visit_signed`).
+    /// `reaches::<true>` for a ray with `Signs`, given the block's height range and the x and
+    /// z part of its slab test (`key`, its entry from 0, and `exit`, without `tmax`): the
+    /// block's heights give its entry and exit along y by the sign of `d.y` rather than by
+    /// `min` and `max` (the same values). No branch: the walk tests four blocks at once.
+    // Negated: a NaN `water_level` leaves every block in, as `visit`'s early return does.
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
     #[inline(always)]
-    fn reaches_signed(
-        &self,
-        r: &GridRay,
-        s: &Signs,
-        range: [f32; 2],
-        k: &Kid,
-    ) -> Option<(f64, f64)> {
+    fn reaches_signed(&self, r: &GridRay, s: &Signs, range: [f32; 2], key: f64, exit: f64) -> bool {
         let [ylo, yhi] = range.map(f64::from);
-        if yhi < self.data.water_level {
-            return None;
-        }
         let (u, v) = ((ylo - r.o.y) * r.inv.y, (yhi - r.o.y) * r.inv.y);
         let (ye, yx) = if s.up { (u, v) } else { (v, u) };
-        let t0 = if ye > k.key { ye } else { k.key };
-        let t1 = fmin::<true>(fmin::<true>(r.tmax, k.exit), yx);
-        (t0 <= slack(t1)).then_some((t0, t1))
+        let t0 = if ye > key { ye } else { key };
+        let t1 = fmin::<true>(fmin::<true>(r.tmax, exit), yx);
+        !(yhi < self.data.water_level) & (t0 <= slack(t1))
     }
 
     /// `visit::<true>` for a ray with `Signs` (see the module's comment for why the answers
-    /// are the same). The caller has found that the ray reaches block (bi, bj) of `level`,
-    /// with the entry and exit `t` (`lo`, `hi`) of that test, taken with the current `tmax`
-    /// or a larger one; `ux` and `uz` are the distances to the block's near and far faces
-    /// along x and z (by index, not by the ray's direction), which are its outer children's
-    /// faces too.
+    /// are the same). The caller has found that the ray reaches block (bi, bj) of `level`;
+    /// `ux` and `uz` are the distances to the block's low and high faces along x and z (by
+    /// coordinate, not by the ray's direction), which are its outer children's faces too.
     ///
-    /// A child's entry is at least `lo` and its exit at most `hi` (its faces lie within the
-    /// block's, `(f - o) · inv` is monotone in `f`, its height range lies within the block's,
-    /// and `tmax` only shrinks), and at least the middle face's distance `m` for the children
-    /// beyond that face, at most `m` for those before it. As `slack` is monotone, a side
-    /// with `m > slack(hi)` (beyond) or `lo > slack(m)` (before) holds no child that passes
-    /// its test: it is left out untested, which leaves the same children, in the same order.
-    #[allow(clippy::too_many_arguments)]
+    /// The four children are tested together, without a branch per child (their ranges are
+    /// one `Quad`), and a bit mask keeps those that exist and pass; they are then visited
+    /// as `visit` visits them: sorted by their entry (stable, in the order (0, 0), (1, 0),
+    /// (0, 1), (1, 1)) when only the first crossing is wanted, and asked again if `tmax`
+    /// shrank before their turn.
     pub(super) fn visit_signed(
         &self,
         r: &mut GridRay,
         s: &Signs,
         level: usize,
         (bi, bj): (usize, usize),
-        (lo, hi): (f64, f64),
         ux: [f64; 2],
         uz: [f64; 2],
     ) {
@@ -112,72 +87,73 @@ impl HeightField {
         let mz = fmin::<true>(((bj * 2 + 1) << sh) as i64 as f64, cz);
         let ux = [ux[0], (mx - r.o.x) * r.inv.x, ux[1]];
         let uz = [uz[0], (mz - r.o.z) * r.inv.z, uz[1]];
-        // Which sides of the middle faces may hold a child that passes: bit `di` of `sx_ok`
-        // for the children at `bi * 2 + di` (the near one is `di == s.sx`).
-        let shi = slack(hi);
-        // Negated comparisons: a NaN (from `slack` of an infinite distance) must leave the
-        // side in.
-        #[allow(clippy::neg_cmp_op_on_partial_ord)]
-        let side = |m: f64, near: usize| -> u32 {
-            let far_ok = !(m > shi) as u32;
-            let near_ok = !(lo > slack(m)) as u32;
-            (near_ok << near) | (far_ok << (1 - near))
+        // Each child's entry and exit along x (z), by its index `di` (`dj`): the ray enters
+        // by the low face when it runs towards larger x.
+        let (xe, xx) = if s.sx == 0 {
+            ([ux[0], ux[1]], [ux[1], ux[2]])
+        } else {
+            ([ux[1], ux[2]], [ux[0], ux[1]])
         };
-        let (okx, okz) = (side(ux[1], s.sx), side(uz[1], s.sz));
-        let mut kids = [Kid::default(); 4];
-        let mut n = 0;
-        for (di, dj) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
-            let (ci, cj) = (bi * 2 + di, bj * 2 + dj);
-            if ci < below.nx && cj < below.nz && (okx >> di) & (okz >> dj) & 1 != 0 {
-                let (xe, xx) = (ux[di + s.sx], ux[di + 1 - s.sx]);
-                let (ze, zx) = (uz[dj + s.sz], uz[dj + 1 - s.sz]);
-                // `0.0f64.max(xe).max(ze)` of `visit`, whose sort key it is; comparisons give
-                // +0 for a -0 entry, as `f64::max` with a constant 0 does on x86.
-                let k = if xe > 0.0 { xe } else { 0.0 };
-                let mut kid = Kid {
-                    key: if ze > k { ze } else { k },
-                    exit: fmin::<true>(xx, zx),
-                    i: ci,
-                    j: cj,
-                    t: (0.0, 0.0),
-                };
-                if let Some(t) = self.reaches_signed(r, s, below.range[cj * below.nx + ci], &kid) {
-                    kid.t = t;
-                    kids[n] = kid;
-                    n += 1;
-                }
-            }
+        let (ze, zx) = if s.sz == 0 {
+            ([uz[0], uz[1]], [uz[1], uz[2]])
+        } else {
+            ([uz[1], uz[2]], [uz[0], uz[1]])
+        };
+        let quad = &below.quads[bj * below.px + bi].0;
+        // The children beyond the grid's edge (only the high ones can be).
+        let hx = bi * 2 + 1 < below.nx;
+        let hz = bj * 2 + 1 < below.nz;
+        let exists = [true, hx, hz, hx & hz];
+        let mut key = [0.0f64; 4];
+        let mut exit = [0.0f64; 4];
+        let mut mask = 0u32;
+        for g in 0..4 {
+            let (di, dj) = (g & 1, g >> 1);
+            // `0.0f64.max(xe).max(ze)` of `visit`, whose sort key it is; comparisons give
+            // +0 for a -0 entry, as `f64::max` with a constant 0 does on x86.
+            let k = if xe[di] > 0.0 { xe[di] } else { 0.0 };
+            key[g] = if ze[dj] > k { ze[dj] } else { k };
+            exit[g] = fmin::<true>(xx[di], zx[dj]);
+            let ok = self.reaches_signed(r, s, quad[g], key[g], exit[g]);
+            mask |= ((ok & exists[g]) as u32) << g;
         }
-        let kids = &mut kids[..n];
+        if mask == 0 {
+            return;
+        }
+        let mut order = [0usize; 4];
+        let mut n = 0;
+        while mask != 0 {
+            order[n] = mask.trailing_zeros() as usize;
+            n += 1;
+            mask &= mask - 1;
+        }
+        let order = &mut order[..n];
         if r.first {
             // Stable, as `visit`'s: the keys are never NaN nor -0, so `>` orders them as
             // `total_cmp` does.
-            for i in 1..kids.len() {
+            for i in 1..order.len() {
                 let mut j = i;
-                while j > 0 && kids[j - 1].key > kids[j].key {
-                    kids.swap(j - 1, j);
+                while j > 0 && key[order[j - 1]] > key[order[j]] {
+                    order.swap(j - 1, j);
                     j -= 1;
                 }
             }
         }
         let tmax = r.tmax;
-        for kid in kids.iter() {
-            if r.first && kid.key > r.tmax {
+        for &g in order.iter() {
+            if r.first && key[g] > r.tmax {
                 break;
             }
-            let t = if r.tmax == tmax {
-                Some(kid.t)
+            if r.tmax != tmax && !self.reaches_signed(r, s, quad[g], key[g], exit[g]) {
+                continue;
+            }
+            let (di, dj) = (g & 1, g >> 1);
+            let (ci, cj) = (bi * 2 + di, bj * 2 + dj);
+            if level == 1 {
+                self.cell_hits(r, ci, cj);
             } else {
-                self.reaches_signed(r, s, below.range[kid.j * below.nx + kid.i], kid)
-            };
-            if let Some(t) = t {
-                if level == 1 {
-                    self.cell_hits(r, kid.i, kid.j);
-                } else {
-                    let (di, dj) = (kid.i & 1, kid.j & 1);
-                    let (kx, kz) = ([ux[di], ux[di + 1]], [uz[dj], uz[dj + 1]]);
-                    self.visit_signed(r, s, level - 1, (kid.i, kid.j), t, kx, kz);
-                }
+                let (kx, kz) = ([ux[di], ux[di + 1]], [uz[dj], uz[dj + 1]]);
+                self.visit_signed(r, s, level - 1, (ci, cj), kx, kz);
             }
         }
     }
@@ -192,19 +168,15 @@ impl HeightField {
         let ux = [(0.0 - r.o.x) * r.inv.x, (far(cx) - r.o.x) * r.inv.x];
         let uz = [(0.0 - r.o.z) * r.inv.z, (far(cz) - r.o.z) * r.inv.z];
         // The root's test as `trace` makes it for `visit` (with the same numbers but for
-        // the sign of a zero): the first bounds.
-        let root = Kid {
-            key: fmax::<true>(
-                fmax::<true>(0.0, fmin::<true>(ux[0], ux[1])),
-                fmin::<true>(uz[0], uz[1]),
-            ),
-            exit: fmin::<true>(fmax::<true>(ux[0], ux[1]), fmax::<true>(uz[0], uz[1])),
-            ..Kid::default()
-        };
-        let Some(t) = self.reaches_signed(r, s, self.levels[top].range[0], &root) else {
-            return;
-        };
-        self.visit_signed(r, s, top, (0, 0), t, ux, uz);
+        // the sign of a zero).
+        let key = fmax::<true>(
+            fmax::<true>(0.0, fmin::<true>(ux[0], ux[1])),
+            fmin::<true>(uz[0], uz[1]),
+        );
+        let exit = fmin::<true>(fmax::<true>(ux[0], ux[1]), fmax::<true>(uz[0], uz[1]));
+        if self.reaches_signed(r, s, self.levels[top].range(0, 0), key, exit) {
+            self.visit_signed(r, s, top, (0, 0), ux, uz);
+        }
     }
 }
 
