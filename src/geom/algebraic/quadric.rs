@@ -3,7 +3,7 @@
 //! cylinders, and the certificate skips the square root, the divisions and the expansion in
 //! the unit direction that [`super::Algebraic`]'s quadratic formula would run to find no root.
 
-use crate::math::DVec3;
+use crate::math::{DVec3, Ray};
 
 /// `Σ sq_i x_i² + Σ lin_i x_i + k`, the quadric's diagonal form.
 #[derive(Clone, Copy, Debug)]
@@ -15,12 +15,118 @@ pub(super) struct Diagonal {
     /// `LIN + axis`, `CONST`) and its coefficient; `n` of them.
     pub terms: [(u8, f64); 7],
     pub n: usize,
+    /// Whether the terms come in kind order (x², y², z², x, y, z, constant: a `quadric`'s
+    /// order, zero coefficients left out), and then each kind's coefficient and whether the
+    /// shape has it: `along` and `value` are then written out in that order, without the
+    /// loop over the terms and its dispatch on their kinds.
+    pub in_order: bool,
+    pub coef: [f64; 7],
+    pub has: [bool; 7],
+    /// The coefficients' absolute values, for `Along::inside`'s rounding margin.
+    pub abs: AbsForm,
+}
+
+/// The absolute values of a diagonal form's square, linear and constant coefficients.
+#[derive(Clone, Copy, Debug)]
+pub struct AbsForm {
+    sq: [f64; 3],
+    lin: [f64; 3],
+    k: f64,
+}
+
+/// A diagonal quadric's form along a ray as `Algebraic::intersect_all_along` found it:
+/// `c[2]·t² + c[1]·t + c[0]` in the ray's own `t` (the object-space ray, whose `t` is the
+/// world ray's). It answers the shape's inside test at a point of the world ray wherever the
+/// form is clearly away from zero (`inside`), so a CSG search need not transform the point
+/// and evaluate the form again.
+#[derive(Clone, Copy, Debug)]
+pub struct Along<'a> {
+    c: [f64; 3],
+    abs: &'a AbsForm,
+}
+
+/// `Along::inside`'s margin, relative to the scale of the form's terms: the two computations
+/// it stands between differ by under 2^-47 of that scale.
+const SIGN_MARGIN: f64 = 1.0 / (1u64 << 30) as f64;
+
+impl Along<'_> {
+    /// The shape's `inside` (`value < 0`) at `ray.at(t)` taken into object space by `inv`
+    /// (the object's inverse transform, `None` for none), when the form along the ray
+    /// decides it with a margin; `None` near the surface or for values too large or small.
+    ///
+    /// Why the margin keeps the bits: both `value(inv·ray.at(t))` (the inside test) and
+    /// `(c₂t + c₁)t + c₀` (here) approximate the exact `F(t) = Q(L(o + t·d) + T)` (with `L`,
+    /// `T` the stored inverse transform, `o`, `d` the world ray, `Q` the form). Let
+    /// `X_k = Σ_i |L_ki|(|o_i| + |t||d_i|) + |T_k|`, which bounds the object-space point's
+    /// coordinate `k` and the sums that compute it, and `S = Σ_k |a_k|X_k² + |l_k|X_k + |k|`.
+    /// With `u = 2^-53`: the world point's rounding (`o + d·t`, two roundings) and the
+    /// transform's (`transform_point3`, four) move coordinate `k` by at most `6.1u·X_k`; the
+    /// form then moves by at most `12.3u·S`, and its evaluation in the shape's order rounds
+    /// by at most `9.1u·S` (seven terms of products): `|value − F| ≤ 22u·S`. Here the
+    /// object-space origin and direction carry `4u` and `3u` of the same sums, moving the
+    /// form by at most `8.1u·S`; the coefficients' products and sums (`misses_along`) and
+    /// the evaluation round by at most `6.1u·S` and `4.1u·S`: `|here − F| ≤ 19u·S`. So the
+    /// two differ by under `41u·S < 2^-47·S`, and where `|here| > 2^-30·S` (computed here
+    /// with rounding far below the gap) both have the same sign. `S` is kept within
+    /// (1e-150, 1e150), so nothing overflows and underflow's absolute errors are negligible
+    /// beside the margin; NaN fails every comparison and decides nothing.
+    #[inline(always)]
+    pub fn inside(&self, inv: Option<&crate::math::DMat4>, ray: &Ray, t: f64) -> Option<bool> {
+        let at = t.abs();
+        let q = ray.origin.abs() + ray.dir.abs() * at;
+        let x = match inv {
+            Some(m) => {
+                m.x_axis.truncate().abs() * q.x
+                    + m.y_axis.truncate().abs() * q.y
+                    + m.z_axis.truncate().abs() * q.z
+                    + m.w_axis.truncate().abs()
+            }
+            None => q,
+        };
+        let a = self.abs;
+        let scale = (a.sq[0] * x.x + a.lin[0]) * x.x
+            + (a.sq[1] * x.y + a.lin[1]) * x.y
+            + (a.sq[2] * x.z + a.lin[2]) * x.z
+            + a.k;
+        if !(scale > 1e-150 && scale < 1e150) {
+            return None;
+        }
+        let [c0, c1, c2] = self.c;
+        let f = (c2 * t + c1) * t + c0;
+        let margin = SIGN_MARGIN * scale;
+        if f < -margin {
+            Some(true)
+        } else if f > margin {
+            Some(false)
+        } else {
+            None
+        }
+    }
 }
 
 /// Kinds of a diagonal term.
 pub(super) const SQ: u8 = 0;
 pub(super) const LIN: u8 = 3;
 pub(super) const CONST: u8 = 6;
+
+/// `acc[a] += c·p[a]` for the nonzero `p[a]`, as `Diagonal::along` adds an x or y term.
+#[inline(always)]
+fn add_nonzero<const N: usize>(acc: &mut [f64; 3], c: f64, p: [f64; N]) {
+    for a in 0..N {
+        let v = 0.0 + p[a];
+        if v != 0.0 {
+            acc[a] += c * v;
+        }
+    }
+}
+
+/// `acc[b] += c·p[b]` for every `p[b]`, as `Diagonal::along` adds a z term.
+#[inline(always)]
+fn add_all<const N: usize>(acc: &mut [f64; 3], c: f64, p: [f64; N]) {
+    for b in 0..N {
+        acc[b] += c * p[b];
+    }
+}
 
 impl Diagonal {
     /// The diagonal form of `terms` (powers distinct, at most order 2, no cross terms).
@@ -31,6 +137,14 @@ impl Diagonal {
             k,
             terms: [(CONST, 0.0); 7],
             n: 0,
+            in_order: true,
+            coef: [0.0; 7],
+            has: [false; 7],
+            abs: AbsForm {
+                sq: sq.map(f64::abs),
+                lin: lin.map(f64::abs),
+                k: k.abs(),
+            },
         };
         for (p, c) in terms.iter().take(7) {
             let kind = match *p {
@@ -45,6 +159,11 @@ impl Diagonal {
             };
             d.terms[d.n] = (kind, *c);
             d.n += 1;
+        }
+        for (k, &(kind, c)) in d.terms[..d.n].iter().enumerate() {
+            d.in_order &= k == 0 || d.terms[k - 1].0 < kind;
+            d.coef[kind as usize] = c;
+            d.has[kind as usize] = true;
         }
         d
     }
@@ -63,6 +182,32 @@ impl Diagonal {
         let (x1, y1, z1) = (p1(o.x, d.x), p1(o.y, d.y), p1(o.z, d.z));
         let (x2, y2, z2) = (p2(x1, o.x, d.x), p2(y1, o.y, d.y), p2(z1, o.z, d.z));
         let mut acc = [0.0f64; 3];
+        if self.in_order {
+            // The loop below for terms in kind order: the same additions in the same order.
+            let (c, has) = (&self.coef, &self.has);
+            if has[0] {
+                add_nonzero(&mut acc, c[0], x2);
+            }
+            if has[1] {
+                add_nonzero(&mut acc, c[1], y2);
+            }
+            if has[2] {
+                add_all(&mut acc, c[2], z2);
+            }
+            if has[3] {
+                add_nonzero(&mut acc, c[3], x1);
+            }
+            if has[4] {
+                add_nonzero(&mut acc, c[4], y1);
+            }
+            if has[5] {
+                add_all(&mut acc, c[5], z1);
+            }
+            if has[6] {
+                acc[0] += c[6];
+            }
+            return acc;
+        }
         for &(kind, c) in &self.terms[..self.n] {
             match kind {
                 0 | 1 => {
@@ -106,6 +251,24 @@ impl Diagonal {
     pub fn value(&self, p: DVec3) -> f64 {
         let sq = [p.x * p.x, p.y * p.y, p.z * p.z];
         let lin = [p.x, p.y, p.z];
+        if self.in_order {
+            // The sum below for terms in kind order, from the same neutral element (`sum`'s
+            // own, whose sign decides a lone term's zero).
+            let (c, has) = (&self.coef, &self.has);
+            let mut s: f64 = std::iter::empty::<f64>().sum();
+            for (k, v) in [sq[0], sq[1], sq[2], lin[0], lin[1], lin[2]]
+                .into_iter()
+                .enumerate()
+            {
+                if has[k] {
+                    s += c[k] * v;
+                }
+            }
+            if has[6] {
+                s += c[6];
+            }
+            return s;
+        }
         self.terms[..self.n]
             .iter()
             .map(|&(kind, c)| match kind {
@@ -132,6 +295,12 @@ impl Diagonal {
     /// input fails the comparisons and certifies nothing.
     #[inline(always)]
     pub fn surely_misses(&self, origin: DVec3, dir: DVec3) -> bool {
+        self.misses_along(origin, dir).0
+    }
+
+    /// `surely_misses`, and the form along `origin + t·dir` it computed, `[c₀, c₁, c₂]`.
+    #[inline(always)]
+    pub fn misses_along(&self, origin: DVec3, dir: DVec3) -> (bool, [f64; 3]) {
         let ([a0, a1, a2], [l0, l1, l2]) = (self.sq, self.lin);
         let (ax, ay, az) = (a0 * origin.x, a1 * origin.y, a2 * origin.z);
         let c2 = a0 * dir.x * dir.x + a1 * dir.y * dir.y + a2 * dir.z * dir.z;
@@ -140,7 +309,7 @@ impl Diagonal {
         let disc = c1 * c1 - 4.0 * c2 * c0;
         // Most quadric tests that fail here are hits: the bounds only when it can pass (NaN
         // fails too).
-        disc < 0.0 && {
+        let misses = disc < 0.0 && {
             let (ax, ay, az) = (ax.abs(), ay.abs(), az.abs());
             let (l0, l1, l2) = (l0.abs(), l1.abs(), l2.abs());
             let (o, d) = (origin.abs(), dir.abs());
@@ -150,7 +319,14 @@ impl Diagonal {
             let scale = m1 * m1 + 4.0 * m2 * m0;
             let len2 = dir.length_squared();
             disc < -1e-12 * scale && scale > 1e-150 && scale < 1e150 && len2 > 1e-50 && len2 < 1e50
-        }
+        };
+        (misses, [c0, c1, c2])
+    }
+
+    /// The form along `origin + t·dir` from `misses_along`'s coefficients.
+    #[inline(always)]
+    pub fn along_ray(&self, c: [f64; 3]) -> Along<'_> {
+        Along { c, abs: &self.abs }
     }
 }
 
@@ -193,7 +369,7 @@ mod tests {
             [0, 0, 0],
         ];
         let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
-        let mut checked = 0;
+        let (mut checked, mut in_order) = (0, 0);
         for case in 0..200_000usize {
             // A random subset of the powers in a random order, with random coefficients.
             let mut terms: Vec<([u8; 3], f64)> = powers.iter().map(|p| (*p, 0.0)).collect();
@@ -202,6 +378,10 @@ mod tests {
                 terms.swap(i, j);
             }
             terms.truncate(1 + case % 7);
+            if case % 3 == 0 {
+                // A `quadric`'s order (kind order), which takes the written-out sums.
+                terms.sort_by_key(|t| powers.iter().position(|p| *p == t.0));
+            }
             for t in terms.iter_mut() {
                 t.1 = pick();
             }
@@ -217,8 +397,86 @@ mod tests {
             }
             assert!(same(diag.value(o), q.value_n::<3>(o)), "{terms:?} {o:?}");
             checked += 1;
+            in_order += diag.in_order as usize;
         }
         assert!(checked > 100_000, "{checked}");
+        assert!(
+            in_order > 60_000 && in_order < checked - 60_000,
+            "{in_order}"
+        );
+    }
+
+    /// Where the form along the ray decides the inside test, it answers as the inside test
+    /// of the world point taken into object space: quadrics of shapes.inc's kinds (and
+    /// anisotropic ones), scaled, rotated and moved far, at random points of the ray, at
+    /// their own crossings and just beside them, and at another quadric's crossings.
+    #[test]
+    fn form_along_the_ray_answers_as_inside() {
+        use crate::geom::Shape;
+        use crate::math::Transform;
+        let mut rnd = crate::math::xorshift_unit(0x8f1b_bcdc_b7a5_6a3du64);
+        let (mut decided, mut asked) = (0usize, 0usize);
+        for case in 0..20_000 {
+            let pick = |r: f64| [-1.0, 0.0, 1.0, 0.25, -3.0, 4.0][(r * 6.0) as usize % 6];
+            let sq = [pick(rnd()), pick(rnd()), pick(rnd())];
+            let lin = [pick(rnd()) * (rnd() < 0.3) as u8 as f64, 0.0, pick(rnd())];
+            let k = pick(rnd()) * 10f64.powi((rnd() * 4.0) as i32 - 2);
+            let mut terms = vec![];
+            for (i, p) in [[2, 0, 0], [0, 2, 0], [0, 0, 2]].into_iter().enumerate() {
+                terms.push((p, sq[i]));
+            }
+            for (i, p) in [[1, 0, 0], [0, 1, 0], [0, 0, 1]].into_iter().enumerate() {
+                terms.push((p, lin[i]));
+            }
+            terms.push(([0, 0, 0], k));
+            if case % 2 == 1 {
+                terms.reverse();
+            }
+            let q = Algebraic::new(2, &terms, false);
+            let other = Algebraic::new(
+                2,
+                &[([2, 0, 0], 1.0), ([0, 0, 2], 1.0), ([0, 0, 0], -1.0)],
+                false,
+            );
+            if q.diagonal.is_none() {
+                continue;
+            }
+            let mut v = |s: f64| DVec3::new(rnd() - 0.5, rnd() - 0.5, rnd() - 0.5) * s;
+            let scale = 10f64.powi((case % 5) as i32 - 2);
+            let tr = Transform::scale(DVec3::new(1.0, 0.5, 2.0) * scale)
+                .then(&Transform::rotate(v(360.0)))
+                .then(&Transform::translate(v(if case % 3 == 0 {
+                    1e4
+                } else {
+                    10.0
+                } * scale)));
+            let inv = (case % 7 != 0).then_some(&tr.inv);
+            let origin = v(40.0 * scale) + inv.map_or(DVec3::ZERO, |_| tr.m.w_axis.truncate());
+            let ray = Ray::new(origin, v(10f64.powi((case % 4) as i32 - 1)));
+            let local = |r: &Ray| inv.map_or(*r, |_| tr.inv_ray(r));
+            let (mut hits, mut other_hits) = (vec![], vec![]);
+            let Some(along) = q.intersect_all_along(&local(&ray), &mut hits) else {
+                panic!("a diagonal quadric gives its form");
+            };
+            other.intersect_all(&local(&ray), &mut other_hits);
+            let mut ts: Vec<f64> = (0..8).map(|_| rnd() * 100.0 * scale).collect();
+            for h in hits.iter().chain(&other_hits) {
+                ts.push(h.t);
+                ts.push(h.t * (1.0 + 1e-9));
+                ts.push(h.t * (1.0 - 1e-6));
+                ts.push(f64::from_bits(h.t.to_bits() + 1));
+            }
+            for t in ts {
+                let p = ray.at(t);
+                let lp = inv.map_or(p, |m| m.transform_point3(p));
+                asked += 1;
+                if let Some(inside) = along.inside(inv, &ray, t) {
+                    decided += 1;
+                    assert_eq!(inside, q.inside(lp), "{terms:?} {ray:?} {t}");
+                }
+            }
+        }
+        assert!(decided > asked * 3 / 4, "{decided} of {asked}");
     }
 
     /// Where the certificate holds, the quadratic formula in the unit direction finds no
