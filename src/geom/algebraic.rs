@@ -13,7 +13,6 @@ use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
 
 mod quadric;
-pub use quadric::Along;
 use quadric::Diagonal;
 
 /// Highest order accepted (POV-Ray allows 35; the root finder handles this many).
@@ -398,26 +397,6 @@ impl Shape for Algebraic {
 
     fn intersect_all_within(&self, ray: &Ray, lo: f64, hi: f64, out: &mut Vec<Hit>) {
         self.crossings(ray, Some((lo, hi)), out)
-    }
-
-    /// A diagonal quadric's crossings as `crossings` finds them (`low_order_roots`), and
-    /// the form along the ray that its certificate computed on the way.
-    fn intersect_all_along(&self, ray: &Ray, out: &mut Vec<Hit>) -> Option<Along<'_>> {
-        match &self.diagonal {
-            Some(q) if self.order <= 2 && !self.sturm => {
-                let (misses, c) = q.misses_along(ray.origin, ray.dir);
-                if !misses {
-                    if let Some((roots, n, len)) = self.low_order_solved(ray) {
-                        out.extend(roots[..n].iter().map(|t| Hit::new(t / len)));
-                    }
-                }
-                Some(q.along_ray(c))
-            }
-            _ => {
-                self.crossings(ray, None, out);
-                None
-            }
-        }
     }
 
     /// The nearest of `intersect_all`'s crossings without polishing the roots beyond it

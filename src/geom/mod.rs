@@ -60,13 +60,6 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
     fn intersect_all_within(&self, ray: &Ray, _lo: f64, _hi: f64, out: &mut Vec<Hit>) {
         self.intersect_all(ray, out)
     }
-    /// `intersect_all`, and for a shape whose `inside` is the sign of a quadratic form (a
-    /// quadric without cross terms) that form along the ray, which answers `inside` at most
-    /// points of the ray without evaluating the form there again (CSG searches).
-    fn intersect_all_along(&self, ray: &Ray, out: &mut Vec<Hit>) -> Option<algebraic::Along<'_>> {
-        self.intersect_all(ray, out);
-        None
-    }
     /// Whether `intersect_all_within` saves work (the scene then finds the boxes for it).
     fn windowed(&self) -> bool {
         false

@@ -4,14 +4,13 @@
 
 use std::cell::Cell;
 
-use crate::geom::algebraic::Along;
 use crate::geom::Hit;
-use crate::math::{Aabb, DVec3, Ray, Slabs, EPSILON};
+use crate::math::{Aabb, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
 use crate::scene::desc::CsgOp;
 use crate::scene::faces::{self, Face, Faces, MAX_ALL};
 use crate::scene::object::{
-    csg_keeps, csg_keeps_with, each_member, member_hits, ObjKind, Object, Scratch, SurfaceHit,
+    csg_keeps, each_member, member_hits, ObjKind, Object, Scratch, SurfaceHit,
 };
 
 /// Crossings gathered for a search are tagged with their member `i`, and for the leaves of a
@@ -35,86 +34,6 @@ pub(super) fn folded(c: &Object) -> Option<(&[Object], Option<&Aabb>, Option<&Fa
         )),
         _ => None,
     }
-}
-
-/// Nodes with at most this many members (and no index) keep their leaves' forms along the
-/// ray (`Along`) for their inside tests.
-const MAX_ALONG: usize = 8;
-
-/// `member_hits`, and for a leaf member without face, window or `clipped_by` whose shape has
-/// one (`Shape::intersect_all_along`: a quadric without cross terms), its form along the ray.
-/// The crossings are `all_hits_unclipped`'s for such a leaf, in its order.
-#[inline(always)]
-fn member_hits_along<'a>(
-    c: &'a Object,
-    face: Option<&Face>,
-    ray: &Ray,
-    tmax: f64,
-    s: &mut Scratch<'a>,
-) -> Option<Along<'a>> {
-    match &c.kind {
-        ObjKind::Shape(shape, None) if face.is_none() && c.clip.is_empty() => {
-            let mut local = None;
-            let r = c.local_ray(ray, &mut local);
-            s.hits.clear();
-            let along = shape.intersect_all_along(r, &mut s.hits);
-            s.surface
-                .extend(s.hits.iter().filter(|h| h.t < tmax).map(|&hit| SurfaceHit {
-                    t: hit.t,
-                    obj: c,
-                    hit,
-                    flip: c.inverse,
-                }));
-            along
-        }
-        _ => {
-            member_hits(c, face, ray, tmax, s);
-            None
-        }
-    }
-}
-
-/// `o.inside(p)` for a leaf member `o` without `clipped_by` whose form along `ray` is `q`,
-/// `p` being `ray.at(t)`: `Object::inside`'s bounds test, then the shape's test answered by
-/// the form where it decides it (`Along::inside`), else asked of the shape.
-#[inline(always)]
-fn inside_along(o: &Object, q: &Along, ray: &Ray, t: f64, p: DVec3) -> bool {
-    if !o.bounds.contains(p) {
-        return o.inverse;
-    }
-    match q.inside(o.transform.as_deref().map(|tr| &tr.inv), ray, t) {
-        Some(inside) => inside != o.inverse,
-        None => o.inside(p),
-    }
-}
-
-/// `csg_keeps` of a node without index for the crossing at `p = ray.at(t)`, members with a
-/// form along the ray (`along`, by member) asked through it: the same answers, so the same
-/// crossing is kept.
-#[allow(clippy::too_many_arguments)]
-#[inline(never)]
-fn csg_keeps_along(
-    op: CsgOp,
-    i: usize,
-    children: &[Object],
-    faces: Option<&Faces>,
-    (ray, t, p): (&Ray, f64, DVec3),
-    along: &[Option<Along>],
-    rejecter: &Cell<usize>,
-) -> bool {
-    csg_keeps_with(
-        op,
-        i,
-        children,
-        None,
-        faces,
-        p,
-        rejecter,
-        |j, o| match &along[j] {
-            Some(q) => inside_along(o, q, ray, t, p),
-            None => o.inside(p),
-        },
-    )
 }
 
 /// An integer that orders crossings' `t` as `f64::total_cmp` does (its own mapping of the
@@ -147,10 +66,6 @@ impl Object {
     ///
     /// `FOLD` false: no member is folded, for nodes that have none to fold (the common case),
     /// so that their search pays nothing for the folding.
-    ///
-    /// Leaf members that are quadrics without cross terms leave their form along the ray
-    /// (`member_hits_along`), which answers most of the inside tests asked of them
-    /// (`csg_keeps_along`) without taking the point into object space: the same answers.
     #[allow(clippy::too_many_arguments)]
     #[inline(never)]
     pub(super) fn csg_first_hit<'a, const FOLD: bool>(
@@ -172,10 +87,6 @@ impl Object {
         let order_from = s.csg_order.len();
         let slabs = Slabs::new(ray.origin, inv_dir);
         let fold = FOLD && index.is_none() && children.len() <= 1 << LEAF_SHIFT;
-        // The leaves' forms along the ray, which answer most inside tests (`csg_keeps_along`).
-        let use_along = index.is_none() && children.len() <= MAX_ALONG;
-        let mut along: [Option<Along<'a>>; MAX_ALONG] = [None; MAX_ALONG];
-        let mut any_along = false;
         let gather = |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
             if !slabs.hits(&c.bounds, tmax) {
                 return;
@@ -200,13 +111,7 @@ impl Object {
                 return;
             }
             let from = s.surface.len();
-            let face = ray_faces.and_then(|f| f.get(i));
-            if use_along {
-                along[i] = member_hits_along(c, face, ray, tmax, s);
-                any_along |= along[i].is_some();
-            } else {
-                member_hits(c, face, ray, tmax, s);
-            }
+            member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
             for j in from..s.surface.len() {
                 s.csg_order
                     .push((order_key(s.surface[j].t), j as u32, i as u32));
@@ -250,20 +155,13 @@ impl Object {
                 }
             };
             let clip_kept = || clip.is_empty() || (t > EPSILON && clip.iter().all(|c| c.inside(p)));
-            let kept = || {
-                if any_along {
-                    let along = &along[..children.len()];
-                    csg_keeps_along(op, i, children, faces, (ray, t, p), along, &rejecter)
-                } else {
-                    csg_keeps(op, i, children, index, faces, p, &rejecter)
-                }
-            };
-            (leaf_kept() && kept() && clip_kept()).then(|| {
-                let mut h = s.surface[j as usize];
-                h.flip ^= op == CsgOp::Difference && i > 0;
-                h.flip ^= self.inverse;
-                h
-            })
+            (leaf_kept() && csg_keeps(op, i, children, index, faces, p, &rejecter) && clip_kept())
+                .then(|| {
+                    let mut h = s.surface[j as usize];
+                    h.flip ^= op == CsgOp::Difference && i > 0;
+                    h.flip ^= self.inverse;
+                    h
+                })
         });
         s.csg_order.truncate(order_from);
         s.surface.truncate(start);

@@ -130,25 +130,6 @@ pub(super) fn csg_keeps(
     p: DVec3,
     rejecter: &std::cell::Cell<usize>,
 ) -> bool {
-    csg_keeps_with(op, i, children, index, faces, p, rejecter, |_, o| {
-        o.inside(p)
-    })
-}
-
-/// `csg_keeps`, with member `j`'s `inside(p)` asked of `inside(j, member)` (which must answer
-/// as it does) when the node has no index.
-#[allow(clippy::too_many_arguments)]
-#[inline(always)]
-pub(super) fn csg_keeps_with(
-    op: CsgOp,
-    i: usize,
-    children: &[Object],
-    index: Option<&ChildIndex>,
-    faces: Option<&Faces>,
-    p: DVec3,
-    rejecter: &std::cell::Cell<usize>,
-    inside: impl Fn(usize, &Object) -> bool,
-) -> bool {
     // With an index only the members whose boxes hold `p` are asked: outside its box a member
     // without `inverse` is not inside (members with `inverse` have infinite boxes).
     match (op, index) {
@@ -172,7 +153,7 @@ pub(super) fn csg_keeps_with(
             // `Object::inside` of a leaf, with the face's test for its shape's.
             Some(f) if o.bounds.contains(p) => f.inside(p) != o.inverse,
             Some(_) => o.inverse,
-            None => inside(j, o),
+            None => o.inside(p),
         };
         inside == want_inside
     };
@@ -231,7 +212,7 @@ impl Object {
     /// The ray in object space: `ray` itself when there is no transform (a copy costs more
     /// than the plane or sphere test reading it), else the transformed ray put in `local`.
     #[inline]
-    pub(super) fn local_ray<'r>(&self, ray: &'r Ray, local: &'r mut Option<Ray>) -> &'r Ray {
+    fn local_ray<'r>(&self, ray: &'r Ray, local: &'r mut Option<Ray>) -> &'r Ray {
         match &self.transform {
             Some(t) => local.insert(t.inv_ray(ray)),
             None => ray,

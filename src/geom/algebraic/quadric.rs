@@ -3,7 +3,7 @@
 //! cylinders, and the certificate skips the square root, the divisions and the expansion in
 //! the unit direction that [`super::Algebraic`]'s quadratic formula would run to find no root.
 
-use crate::math::{DVec3, Ray};
+use crate::math::DVec3;
 
 /// `Σ sq_i x_i² + Σ lin_i x_i + k`, the quadric's diagonal form.
 #[derive(Clone, Copy, Debug)]
@@ -22,86 +22,6 @@ pub(super) struct Diagonal {
     pub in_order: bool,
     pub coef: [f64; 7],
     pub has: [bool; 7],
-    /// The coefficients' absolute values, for `Along::inside`'s rounding margin.
-    pub abs: AbsForm,
-}
-
-/// The absolute values of a diagonal form's square, linear and constant coefficients.
-#[derive(Clone, Copy, Debug)]
-pub struct AbsForm {
-    sq: [f64; 3],
-    lin: [f64; 3],
-    k: f64,
-}
-
-/// A diagonal quadric's form along a ray as `Algebraic::intersect_all_along` found it:
-/// `c[2]·t² + c[1]·t + c[0]` in the ray's own `t` (the object-space ray, whose `t` is the
-/// world ray's). It answers the shape's inside test at a point of the world ray wherever the
-/// form is clearly away from zero (`inside`), so a CSG search need not transform the point
-/// and evaluate the form again.
-#[derive(Clone, Copy, Debug)]
-pub struct Along<'a> {
-    c: [f64; 3],
-    abs: &'a AbsForm,
-}
-
-/// `Along::inside`'s margin, relative to the scale of the form's terms: the two computations
-/// it stands between differ by under 2^-47 of that scale.
-const SIGN_MARGIN: f64 = 1.0 / (1u64 << 30) as f64;
-
-impl Along<'_> {
-    /// The shape's `inside` (`value < 0`) at `ray.at(t)` taken into object space by `inv`
-    /// (the object's inverse transform, `None` for none), when the form along the ray
-    /// decides it with a margin; `None` near the surface or for values too large or small.
-    ///
-    /// Why the margin keeps the bits: both `value(inv·ray.at(t))` (the inside test) and
-    /// `(c₂t + c₁)t + c₀` (here) approximate the exact `F(t) = Q(L(o + t·d) + T)` (with `L`,
-    /// `T` the stored inverse transform, `o`, `d` the world ray, `Q` the form). Let
-    /// `X_k = Σ_i |L_ki|(|o_i| + |t||d_i|) + |T_k|`, which bounds the object-space point's
-    /// coordinate `k` and the sums that compute it, and `S = Σ_k |a_k|X_k² + |l_k|X_k + |k|`.
-    /// With `u = 2^-53`: the world point's rounding (`o + d·t`, two roundings) and the
-    /// transform's (`transform_point3`, four) move coordinate `k` by at most `6.1u·X_k`; the
-    /// form then moves by at most `12.3u·S`, and its evaluation in the shape's order rounds
-    /// by at most `9.1u·S` (seven terms of products): `|value − F| ≤ 22u·S`. Here the
-    /// object-space origin and direction carry `4u` and `3u` of the same sums, moving the
-    /// form by at most `8.1u·S`; the coefficients' products and sums (`misses_along`) and
-    /// the evaluation round by at most `6.1u·S` and `4.1u·S`: `|here − F| ≤ 19u·S`. So the
-    /// two differ by under `41u·S < 2^-47·S`, and where `|here| > 2^-30·S` (computed here
-    /// with rounding far below the gap) both have the same sign. `S` is kept within
-    /// (1e-150, 1e150), so nothing overflows and underflow's absolute errors are negligible
-    /// beside the margin; NaN fails every comparison and decides nothing.
-    #[inline(always)]
-    pub fn inside(&self, inv: Option<&crate::math::DMat4>, ray: &Ray, t: f64) -> Option<bool> {
-        let at = t.abs();
-        let q = ray.origin.abs() + ray.dir.abs() * at;
-        let x = match inv {
-            Some(m) => {
-                m.x_axis.truncate().abs() * q.x
-                    + m.y_axis.truncate().abs() * q.y
-                    + m.z_axis.truncate().abs() * q.z
-                    + m.w_axis.truncate().abs()
-            }
-            None => q,
-        };
-        let a = self.abs;
-        let scale = (a.sq[0] * x.x + a.lin[0]) * x.x
-            + (a.sq[1] * x.y + a.lin[1]) * x.y
-            + (a.sq[2] * x.z + a.lin[2]) * x.z
-            + a.k;
-        if !(scale > 1e-150 && scale < 1e150) {
-            return None;
-        }
-        let [c0, c1, c2] = self.c;
-        let f = (c2 * t + c1) * t + c0;
-        let margin = SIGN_MARGIN * scale;
-        if f < -margin {
-            Some(true)
-        } else if f > margin {
-            Some(false)
-        } else {
-            None
-        }
-    }
 }
 
 /// Kinds of a diagonal term.
@@ -140,11 +60,6 @@ impl Diagonal {
             in_order: true,
             coef: [0.0; 7],
             has: [false; 7],
-            abs: AbsForm {
-                sq: sq.map(f64::abs),
-                lin: lin.map(f64::abs),
-                k: k.abs(),
-            },
         };
         for (p, c) in terms.iter().take(7) {
             let kind = match *p {
@@ -295,12 +210,6 @@ impl Diagonal {
     /// input fails the comparisons and certifies nothing.
     #[inline(always)]
     pub fn surely_misses(&self, origin: DVec3, dir: DVec3) -> bool {
-        self.misses_along(origin, dir).0
-    }
-
-    /// `surely_misses`, and the form along `origin + t·dir` it computed, `[c₀, c₁, c₂]`.
-    #[inline(always)]
-    pub fn misses_along(&self, origin: DVec3, dir: DVec3) -> (bool, [f64; 3]) {
         let ([a0, a1, a2], [l0, l1, l2]) = (self.sq, self.lin);
         let (ax, ay, az) = (a0 * origin.x, a1 * origin.y, a2 * origin.z);
         let c2 = a0 * dir.x * dir.x + a1 * dir.y * dir.y + a2 * dir.z * dir.z;
@@ -309,7 +218,7 @@ impl Diagonal {
         let disc = c1 * c1 - 4.0 * c2 * c0;
         // Most quadric tests that fail here are hits: the bounds only when it can pass (NaN
         // fails too).
-        let misses = disc < 0.0 && {
+        disc < 0.0 && {
             let (ax, ay, az) = (ax.abs(), ay.abs(), az.abs());
             let (l0, l1, l2) = (l0.abs(), l1.abs(), l2.abs());
             let (o, d) = (origin.abs(), dir.abs());
@@ -319,14 +228,7 @@ impl Diagonal {
             let scale = m1 * m1 + 4.0 * m2 * m0;
             let len2 = dir.length_squared();
             disc < -1e-12 * scale && scale > 1e-150 && scale < 1e150 && len2 > 1e-50 && len2 < 1e50
-        };
-        (misses, [c0, c1, c2])
-    }
-
-    /// The form along `origin + t·dir` from `misses_along`'s coefficients.
-    #[inline(always)]
-    pub fn along_ray(&self, c: [f64; 3]) -> Along<'_> {
-        Along { c, abs: &self.abs }
+        }
     }
 }
 
@@ -404,79 +306,6 @@ mod tests {
             in_order > 60_000 && in_order < checked - 60_000,
             "{in_order}"
         );
-    }
-
-    /// Where the form along the ray decides the inside test, it answers as the inside test
-    /// of the world point taken into object space: quadrics of shapes.inc's kinds (and
-    /// anisotropic ones), scaled, rotated and moved far, at random points of the ray, at
-    /// their own crossings and just beside them, and at another quadric's crossings.
-    #[test]
-    fn form_along_the_ray_answers_as_inside() {
-        use crate::geom::Shape;
-        use crate::math::Transform;
-        let mut rnd = crate::math::xorshift_unit(0x8f1b_bcdc_b7a5_6a3du64);
-        let (mut decided, mut asked) = (0usize, 0usize);
-        for case in 0..20_000 {
-            let pick = |r: f64| [-1.0, 0.0, 1.0, 0.25, -3.0, 4.0][(r * 6.0) as usize % 6];
-            let sq = [pick(rnd()), pick(rnd()), pick(rnd())];
-            let lin = [pick(rnd()) * (rnd() < 0.3) as u8 as f64, 0.0, pick(rnd())];
-            let k = pick(rnd()) * 10f64.powi((rnd() * 4.0) as i32 - 2);
-            let mut terms = vec![];
-            for (i, p) in [[2, 0, 0], [0, 2, 0], [0, 0, 2]].into_iter().enumerate() {
-                terms.push((p, sq[i]));
-            }
-            for (i, p) in [[1, 0, 0], [0, 1, 0], [0, 0, 1]].into_iter().enumerate() {
-                terms.push((p, lin[i]));
-            }
-            terms.push(([0, 0, 0], k));
-            if case % 2 == 1 {
-                terms.reverse();
-            }
-            let q = Algebraic::new(2, &terms, false);
-            let other = Algebraic::new(
-                2,
-                &[([2, 0, 0], 1.0), ([0, 0, 2], 1.0), ([0, 0, 0], -1.0)],
-                false,
-            );
-            if q.diagonal.is_none() {
-                continue;
-            }
-            let mut v = |s: f64| DVec3::new(rnd() - 0.5, rnd() - 0.5, rnd() - 0.5) * s;
-            let scale = 10f64.powi((case % 5) as i32 - 2);
-            let tr = Transform::scale(DVec3::new(1.0, 0.5, 2.0) * scale)
-                .then(&Transform::rotate(v(360.0)))
-                .then(&Transform::translate(v(if case % 3 == 0 {
-                    1e4
-                } else {
-                    10.0
-                } * scale)));
-            let inv = (case % 7 != 0).then_some(&tr.inv);
-            let origin = v(40.0 * scale) + inv.map_or(DVec3::ZERO, |_| tr.m.w_axis.truncate());
-            let ray = Ray::new(origin, v(10f64.powi((case % 4) as i32 - 1)));
-            let local = |r: &Ray| inv.map_or(*r, |_| tr.inv_ray(r));
-            let (mut hits, mut other_hits) = (vec![], vec![]);
-            let Some(along) = q.intersect_all_along(&local(&ray), &mut hits) else {
-                panic!("a diagonal quadric gives its form");
-            };
-            other.intersect_all(&local(&ray), &mut other_hits);
-            let mut ts: Vec<f64> = (0..8).map(|_| rnd() * 100.0 * scale).collect();
-            for h in hits.iter().chain(&other_hits) {
-                ts.push(h.t);
-                ts.push(h.t * (1.0 + 1e-9));
-                ts.push(h.t * (1.0 - 1e-6));
-                ts.push(f64::from_bits(h.t.to_bits() + 1));
-            }
-            for t in ts {
-                let p = ray.at(t);
-                let lp = inv.map_or(p, |m| m.transform_point3(p));
-                asked += 1;
-                if let Some(inside) = along.inside(inv, &ray, t) {
-                    decided += 1;
-                    assert_eq!(inside, q.inside(lp), "{terms:?} {ray:?} {t}");
-                }
-            }
-        }
-        assert!(decided > asked * 3 / 4, "{decided} of {asked}");
     }
 
     /// Where the certificate holds, the quadratic formula in the unit direction finds no
