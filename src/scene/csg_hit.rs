@@ -36,6 +36,14 @@ pub(super) fn folded(c: &Object) -> Option<(&[Object], Option<&Aabb>, Option<&Fa
     }
 }
 
+/// An integer that orders crossings' `t` as `f64::total_cmp` does (its own mapping of the
+/// bits), for sorting them by plain integer comparisons.
+#[inline(always)]
+fn order_key(t: f64) -> i64 {
+    let b = t.to_bits() as i64;
+    b ^ (((b >> 63) as u64) >> 1) as i64
+}
+
 /// Member `i` as `each_member` offers it.
 fn member_at<'a>(children: &'a [Object], index: Option<&ChildIndex>, i: usize) -> &'a Object {
     index.map_or(&children[i], |ix| ix.leaf(children, i))
@@ -97,7 +105,7 @@ impl Object {
                     member_hits(g, leaf_faces.and_then(|f| f.get(k)), ray, tmax, s);
                     let tag = i as u32 | (k as u32 + 1) << LEAF_SHIFT;
                     for j in from..s.surface.len() {
-                        s.csg_order.push((s.surface[j].t, j as u32, tag));
+                        s.csg_order.push((order_key(s.surface[j].t), j as u32, tag));
                     }
                 }
                 return;
@@ -105,16 +113,19 @@ impl Object {
             let from = s.surface.len();
             member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
             for j in from..s.surface.len() {
-                s.csg_order.push((s.surface[j].t, j as u32, i as u32));
+                s.csg_order
+                    .push((order_key(s.surface[j].t), j as u32, i as u32));
             }
         };
         each_member(children, index, ray, tmax, s, gather);
         let order = &mut s.csg_order[order_from..];
-        order.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        // By (t as `total_cmp` orders it, place in the gather): `j` differs between entries.
+        order.sort_unstable();
         let rejecter = Cell::new(usize::MAX);
         let leaf_rejecter = Cell::new(usize::MAX);
         let clip = &self.clip[..];
-        let best = order.iter().find_map(|&(t, j, tag)| {
+        let best = order.iter().find_map(|&(_, j, tag)| {
+            let t = s.surface[j as usize].t;
             // Without folding, tags are plain member numbers (a node may have more than
             // the tag's low bits hold).
             let i = if FOLD {
@@ -420,6 +431,9 @@ mod tests {
             difference { box { -1, 1 } #for (i, 0, 9) sphere { <i / 5 - 0.9, 0.5, 0.3>, 0.3 } #end
                          clipped_by { sphere { 0, 1.5 } } }
             intersection { #for (i, 0, 9) sphere { <i / 20, 0, 0>, 1.2 } #end }
+            difference { quadric { <1, 1, 1>, 0, 0, -1.4 } quadric { <0, 1, 1>, 0, <0, 0.2, 0>, -0.3 }
+                         quadric { <1, 0, 1>, 0, 0, -0.3 } rotate <20, 30, 0> translate <0.2, 0, 0.1> }
+            merge { quadric { <1, 1, 0.5>, 0, 0, -1 } quadric { <1, 0, 1>, 0, 0, -0.5 } scale <1, 1.5, 1> }
         "#;
         let scene = built(SCENE);
         let mut rng = Lcg(11);

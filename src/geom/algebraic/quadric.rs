@@ -15,12 +15,38 @@ pub(super) struct Diagonal {
     /// `LIN + axis`, `CONST`) and its coefficient; `n` of them.
     pub terms: [(u8, f64); 7],
     pub n: usize,
+    /// Whether the terms come in kind order (x², y², z², x, y, z, constant: a `quadric`'s
+    /// order, zero coefficients left out), and then each kind's coefficient and whether the
+    /// shape has it: `along` and `value` are then written out in that order, without the
+    /// loop over the terms and its dispatch on their kinds.
+    pub in_order: bool,
+    pub coef: [f64; 7],
+    pub has: [bool; 7],
 }
 
 /// Kinds of a diagonal term.
 pub(super) const SQ: u8 = 0;
 pub(super) const LIN: u8 = 3;
 pub(super) const CONST: u8 = 6;
+
+/// `acc[a] += c·p[a]` for the nonzero `p[a]`, as `Diagonal::along` adds an x or y term.
+#[inline(always)]
+fn add_nonzero<const N: usize>(acc: &mut [f64; 3], c: f64, p: [f64; N]) {
+    for a in 0..N {
+        let v = 0.0 + p[a];
+        if v != 0.0 {
+            acc[a] += c * v;
+        }
+    }
+}
+
+/// `acc[b] += c·p[b]` for every `p[b]`, as `Diagonal::along` adds a z term.
+#[inline(always)]
+fn add_all<const N: usize>(acc: &mut [f64; 3], c: f64, p: [f64; N]) {
+    for b in 0..N {
+        acc[b] += c * p[b];
+    }
+}
 
 impl Diagonal {
     /// The diagonal form of `terms` (powers distinct, at most order 2, no cross terms).
@@ -31,6 +57,9 @@ impl Diagonal {
             k,
             terms: [(CONST, 0.0); 7],
             n: 0,
+            in_order: true,
+            coef: [0.0; 7],
+            has: [false; 7],
         };
         for (p, c) in terms.iter().take(7) {
             let kind = match *p {
@@ -45,6 +74,11 @@ impl Diagonal {
             };
             d.terms[d.n] = (kind, *c);
             d.n += 1;
+        }
+        for (k, &(kind, c)) in d.terms[..d.n].iter().enumerate() {
+            d.in_order &= k == 0 || d.terms[k - 1].0 < kind;
+            d.coef[kind as usize] = c;
+            d.has[kind as usize] = true;
         }
         d
     }
@@ -63,6 +97,32 @@ impl Diagonal {
         let (x1, y1, z1) = (p1(o.x, d.x), p1(o.y, d.y), p1(o.z, d.z));
         let (x2, y2, z2) = (p2(x1, o.x, d.x), p2(y1, o.y, d.y), p2(z1, o.z, d.z));
         let mut acc = [0.0f64; 3];
+        if self.in_order {
+            // The loop below for terms in kind order: the same additions in the same order.
+            let (c, has) = (&self.coef, &self.has);
+            if has[0] {
+                add_nonzero(&mut acc, c[0], x2);
+            }
+            if has[1] {
+                add_nonzero(&mut acc, c[1], y2);
+            }
+            if has[2] {
+                add_all(&mut acc, c[2], z2);
+            }
+            if has[3] {
+                add_nonzero(&mut acc, c[3], x1);
+            }
+            if has[4] {
+                add_nonzero(&mut acc, c[4], y1);
+            }
+            if has[5] {
+                add_all(&mut acc, c[5], z1);
+            }
+            if has[6] {
+                acc[0] += c[6];
+            }
+            return acc;
+        }
         for &(kind, c) in &self.terms[..self.n] {
             match kind {
                 0 | 1 => {
@@ -106,6 +166,24 @@ impl Diagonal {
     pub fn value(&self, p: DVec3) -> f64 {
         let sq = [p.x * p.x, p.y * p.y, p.z * p.z];
         let lin = [p.x, p.y, p.z];
+        if self.in_order {
+            // The sum below for terms in kind order, from the same neutral element (`sum`'s
+            // own, whose sign decides a lone term's zero).
+            let (c, has) = (&self.coef, &self.has);
+            let mut s: f64 = std::iter::empty::<f64>().sum();
+            for (k, v) in [sq[0], sq[1], sq[2], lin[0], lin[1], lin[2]]
+                .into_iter()
+                .enumerate()
+            {
+                if has[k] {
+                    s += c[k] * v;
+                }
+            }
+            if has[6] {
+                s += c[6];
+            }
+            return s;
+        }
         self.terms[..self.n]
             .iter()
             .map(|&(kind, c)| match kind {
@@ -193,7 +271,7 @@ mod tests {
             [0, 0, 0],
         ];
         let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
-        let mut checked = 0;
+        let (mut checked, mut in_order) = (0, 0);
         for case in 0..200_000usize {
             // A random subset of the powers in a random order, with random coefficients.
             let mut terms: Vec<([u8; 3], f64)> = powers.iter().map(|p| (*p, 0.0)).collect();
@@ -202,6 +280,10 @@ mod tests {
                 terms.swap(i, j);
             }
             terms.truncate(1 + case % 7);
+            if case % 3 == 0 {
+                // A `quadric`'s order (kind order), which takes the written-out sums.
+                terms.sort_by_key(|t| powers.iter().position(|p| *p == t.0));
+            }
             for t in terms.iter_mut() {
                 t.1 = pick();
             }
@@ -217,8 +299,13 @@ mod tests {
             }
             assert!(same(diag.value(o), q.value_n::<3>(o)), "{terms:?} {o:?}");
             checked += 1;
+            in_order += diag.in_order as usize;
         }
         assert!(checked > 100_000, "{checked}");
+        assert!(
+            in_order > 60_000 && in_order < checked - 60_000,
+            "{in_order}"
+        );
     }
 
     /// Where the certificate holds, the quadratic formula in the unit direction finds no
