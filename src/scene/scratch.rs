@@ -46,6 +46,9 @@ pub struct Scratch<'a> {
     pub rad_local: Vec<RadiositySample>,
     /// Where a camera ray's radiosity lookups read the cache: (point, normal).
     pub rad_seen: Vec<(DVec3, DVec3)>,
+    /// The cells this thread's last radiosity lookups read, for the next lookup facing the
+    /// same way (render::radiosity_cache).
+    pub rad_memo: RadiosityMemo,
     /// Photons found around the point being shaded: (squared distance, index).
     pub photon_found: Vec<(f32, u32)>,
     /// The media lists along the ray stretch being sampled (render::media).
@@ -84,4 +87,36 @@ pub struct RadiositySample {
     pub r: f64,
     /// 1 for samples seen from camera rays, deeper for those of their gathering rays.
     pub level: u32,
+}
+
+/// Per scale of the irradiance cache, the cell the last lookup facing a normal read and, once
+/// two lookups in a row facing it read the cell, the samples of that cell the normal and
+/// level tests let through for that facing (render::radiosity_cache, `Cache::near_memo`). A
+/// few normals at once (a floor and what its reflections meet, a room's walls), each in the
+/// entry its bits hash to.
+#[derive(Default)]
+pub struct RadiosityMemo {
+    pub entries: Vec<MemoEntry>,
+}
+
+/// One normal's cells (`RadiosityMemo`).
+#[derive(Default)]
+pub struct MemoEntry {
+    /// Which filing of which cache the cells are of (0: none).
+    pub stamp: u64,
+    /// The lookups' normal (bits), level and error bound (bits) the lists hold for.
+    pub n: [u64; 3],
+    pub level: u32,
+    pub bound: u64,
+    /// One per scale, in the cache's order.
+    pub cells: Vec<MemoCell>,
+}
+
+/// A scale's last cell read (`RadiosityMemo`).
+#[derive(Default)]
+pub struct MemoCell {
+    pub key: u64,
+    /// 0: nothing kept; 1: `key` read once (by the last lookup); 2: `ids` kept for `key`.
+    pub state: u8,
+    pub ids: Vec<u32>,
 }
