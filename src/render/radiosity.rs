@@ -109,16 +109,9 @@ impl<'a> Tracer<'a> {
         } else {
             let (cache, bound) = (rad.cache, rad.bound);
             let mut b = Blend::default();
-            if memo_mode() == 0 {
-                cache.near(p, bound, level, 0, |i, s| {
-                    b.add(s, cache.irr[i], p, n, level, bound)
-                });
-            } else {
-                memo_ways(ctx);
-                cache.near_memo(p, n, bound, level, &mut ctx.rad_memo, |i, s| {
-                    b.add(s, cache.irr[i], p, n, level, bound)
-                });
-            }
+            cache.near_memo(p, n, bound, level, &mut ctx.rad_memo, |i, s| {
+                b.add(s, cache.irr[i], p, n, level, bound)
+            });
             for s in &ctx.rad_local {
                 b.add(&s.footprint(), s.irr, p, n, level, bound);
             }
@@ -227,47 +220,15 @@ impl<'a> Tracer<'a> {
 /// only grow, so the lookup stops once they are enough (raddem and rad_def_test, error_bound
 /// 1.8: a hundred samples within reach of a lookup). Not inlined: in `irradiance` beside the
 /// full lookup it made gamma_showcase's lookups 3% slower.
-fn memo_mode() -> u8 {
-    static M: std::sync::OnceLock<u8> = std::sync::OnceLock::new();
-    *M.get_or_init(|| match std::env::var("LANCER_RAD_MEMO").as_deref() {
-        Ok("0") => 0,
-        Ok("w") => 2,
-        Ok("w1") => 4,
-        Ok("1") => 3,
-        _ => 1,
-    })
-}
-
-fn memo_ways(ctx: &mut Scratch) {
-    if ctx.rad_memo.entries.is_empty() {
-        let ways = if memo_mode() >= 3 { 1 } else { 4 };
-        ctx.rad_memo.entries.resize_with(ways, Default::default);
-    }
-}
-
 #[inline(never)]
-fn enough_here(
-    rad: &RadTrace,
-    p: DVec3,
-    n: DVec3,
-    need: u32,
-    ctx: &mut Scratch,
-) -> Option<DVec3> {
+fn enough_here(rad: &RadTrace, p: DVec3, n: DVec3, need: u32, ctx: &Scratch) -> Option<DVec3> {
     let (cache, bound) = (rad.cache, rad.bound);
     let mut b = Blend::default();
     let enough = |b: &Blend| b.count >= need && b.weight > 0.0;
-    let mut done = if memo_mode() == 2 || memo_mode() == 4 {
-        memo_ways(ctx);
-        !cache.near_memo_while::<true>(p, n, bound, 1, &mut ctx.rad_memo, |i, s| {
-            b.add(s, cache.irr[i], p, n, 1, bound);
-            !enough(&b)
-        })
-    } else {
-        !cache.near_while(p, bound, 1, |i, s| {
-            b.add(s, cache.irr[i], p, n, 1, bound);
-            !enough(&b)
-        })
-    };
+    let mut done = !cache.near_while(p, bound, 1, |i, s| {
+        b.add(s, cache.irr[i], p, n, 1, bound);
+        !enough(&b)
+    });
     for s in &ctx.rad_local {
         if done {
             break;

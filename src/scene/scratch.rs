@@ -89,11 +89,10 @@ pub struct RadiositySample {
     pub level: u32,
 }
 
-/// Per scale of the irradiance cache, the cell the last lookup facing a normal read and, once
-/// two lookups in a row facing it read the cell, the samples of that cell the normal and
-/// level tests let through for that facing (render::radiosity_cache, `Cache::near_memo`). A
-/// few normals at once (a floor and what its reflections meet, a room's walls), each in the
-/// entry its bits hash to.
+/// For a few normals (a floor and what its reflections meet, a room's walls; each in the entry
+/// its bits hash to), per scale of the irradiance cache the last cell a lookup facing it read,
+/// with that cell's samples the normal and level tests let through for that facing
+/// (render::radiosity_cache, `Cache::near_memo`).
 #[derive(Default)]
 pub struct RadiosityMemo {
     pub entries: Vec<MemoEntry>,
@@ -108,15 +107,20 @@ pub struct MemoEntry {
     pub n: [u64; 3],
     pub level: u32,
     pub bound: u64,
+    /// Lookups with this normal so far (the first reads the cache as without the memo).
+    pub seen: u32,
+    /// Raised whenever the entry takes another normal: cells of an older epoch hold nothing.
+    pub epoch: u64,
     /// One per scale, in the cache's order.
     pub cells: Vec<MemoCell>,
 }
 
-/// A scale's last cell read (`RadiosityMemo`).
+/// A scale's last cell read (`MemoEntry`), valid in the entry's epoch: its key, and once the
+/// next lookup read it too, its list.
 #[derive(Default)]
 pub struct MemoCell {
     pub key: u64,
-    /// 0: nothing kept; 1: `key` read once (by the last lookup); 2: `ids` kept for `key`.
-    pub state: u8,
+    pub epoch: u64,
+    pub listed: bool,
     pub ids: Vec<u32>,
 }
