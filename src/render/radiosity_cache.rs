@@ -240,10 +240,9 @@ impl Cache {
     /// cell that pass those two tests, and the lookups after it read the list. Neighbouring
     /// pixels of a flat surface share their normal to the bit and their cells at every
     /// scale, and in a room about half of what a cell lists faces away (rad15's counts).
-    /// A normal's first lookup reads the cache as `near` does and keeps nothing (on curved
-    /// surfaces no normal comes back), and a cell is listed only when read twice in a row
-    /// (a floor's reflections in spheres meet it at scattered points: listing each cell they
-    /// met cost gamma_showcase's lookups 3.5% more instructions). `f` meets the samples
+    /// A cell is listed only when read twice in a row (gathering rays and reflections meet a
+    /// wall or floor at scattered points, where listing every cell met cost more than it
+    /// saved), and another normal taking an entry only raises its epoch. `f` meets the samples
     /// `weight` takes in the order `near` gives them, so the blend's sums are the same to the
     /// bit.
     #[inline]
@@ -272,13 +271,7 @@ impl Cache {
             memo.n = facing;
             memo.level = level;
             memo.bound = bound.to_bits();
-            memo.seen = 0;
             memo.epoch += 1;
-        }
-        memo.seen = memo.seen.saturating_add(1);
-        if memo.seen == 1 {
-            self.near(p, bound, level, 0, f);
-            return;
         }
         if memo.cells.len() != self.scales.len() {
             memo.cells.resize_with(self.scales.len(), Default::default);

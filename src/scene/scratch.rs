@@ -107,8 +107,6 @@ pub struct MemoEntry {
     pub n: [u64; 3],
     pub level: u32,
     pub bound: u64,
-    /// Lookups with this normal so far (the first reads the cache as without the memo).
-    pub seen: u32,
     /// Raised whenever the entry takes another normal: cells of an older epoch hold nothing.
     pub epoch: u64,
     /// One per scale, in the cache's order.
