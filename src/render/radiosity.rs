@@ -109,7 +109,7 @@ impl<'a> Tracer<'a> {
         } else {
             let (cache, bound) = (rad.cache, rad.bound);
             let mut b = Blend::default();
-            cache.near(p, bound, level, 0, |i, s| {
+            cache.near_memo(p, n, bound, level, &mut ctx.rad_memo, |i, s| {
                 b.add(s, cache.irr[i], p, n, level, bound)
             });
             for s in &ctx.rad_local {

@@ -46,6 +46,9 @@ pub struct Scratch<'a> {
     pub rad_local: Vec<RadiositySample>,
     /// Where a camera ray's radiosity lookups read the cache: (point, normal).
     pub rad_seen: Vec<(DVec3, DVec3)>,
+    /// The cells this thread's last radiosity lookups read, for the next lookup facing the
+    /// same way (render::radiosity_cache).
+    pub rad_memo: RadiosityMemo,
     /// Photons found around the point being shaded: (squared distance, index).
     pub photon_found: Vec<(f32, u32)>,
     /// The media lists along the ray stretch being sampled (render::media).
@@ -84,4 +87,38 @@ pub struct RadiositySample {
     pub r: f64,
     /// 1 for samples seen from camera rays, deeper for those of their gathering rays.
     pub level: u32,
+}
+
+/// For a few normals (a floor and what its reflections meet, a room's walls; each in the entry
+/// its bits hash to), per scale of the irradiance cache the last cell a lookup facing it read,
+/// with that cell's samples the normal and level tests let through for that facing
+/// (render::radiosity_cache, `Cache::near_memo`).
+#[derive(Default)]
+pub struct RadiosityMemo {
+    pub entries: Vec<MemoEntry>,
+}
+
+/// One normal's cells (`RadiosityMemo`).
+#[derive(Default)]
+pub struct MemoEntry {
+    /// Which filing of which cache the cells are of (0: none).
+    pub stamp: u64,
+    /// The lookups' normal (bits), level and error bound (bits) the lists hold for.
+    pub n: [u64; 3],
+    pub level: u32,
+    pub bound: u64,
+    /// Raised whenever the entry takes another normal: cells of an older epoch hold nothing.
+    pub epoch: u64,
+    /// One per scale, in the cache's order.
+    pub cells: Vec<MemoCell>,
+}
+
+/// A scale's last cell read (`MemoEntry`), valid in the entry's epoch: its key, and once the
+/// next lookup read it too, its list.
+#[derive(Default)]
+pub struct MemoCell {
+    pub key: u64,
+    pub epoch: u64,
+    pub listed: bool,
+    pub ids: Vec<u32>,
 }
