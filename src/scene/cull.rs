@@ -717,19 +717,7 @@ mod tests {
                     Ray::new(rng.vec(8.0), rng.vec(2.0))
                 };
                 let tmax = if rng.next() < 0.3 { 3.0 } else { f64::INFINITY };
-                let (ha, hb) = (
-                    a.first_hit(&ray, tmax, &mut sa),
-                    b.first_hit(&ray, tmax, &mut sb),
-                );
-                assert_eq!(ha.map(|h| h.t.to_bits()), hb.map(|h| h.t.to_bits()));
-                hits += ha.is_some() as usize;
-                a.all_hits(&ray, tmax, &mut sa);
-                b.all_hits(&ray, tmax, &mut sb);
-                let la: Vec<_> = sa.surface.iter().map(|h| (h.t.to_bits(), h.flip)).collect();
-                let lb: Vec<_> = sb.surface.iter().map(|h| (h.t.to_bits(), h.flip)).collect();
-                assert_eq!(la, lb);
-                sa.surface.clear();
-                sb.surface.clear();
+                hits += super::window_tests::same_hits(a, b, &ray, tmax, &mut sa, &mut sb) as usize;
                 let mut p = rng.vec(4.0);
                 p[k % 3] = 0.0;
                 assert_eq!(a.inside(p), b.inside(p));

@@ -42,6 +42,28 @@ fn unwindow(o: &mut Object) -> usize {
     n
 }
 
+/// Asserts that `a` and `b` give `ray` the same first hit and the same crossings, bit for bit
+/// (also used by cull.rs's tests); true when there is a first hit.
+pub(super) fn same_hits<'a>(
+    a: &'a Object,
+    b: &'a Object,
+    ray: &Ray,
+    tmax: f64,
+    sa: &mut Scratch<'a>,
+    sb: &mut Scratch<'a>,
+) -> bool {
+    let (ha, hb) = (a.first_hit(ray, tmax, sa), b.first_hit(ray, tmax, sb));
+    assert_eq!(ha.map(|h| h.t.to_bits()), hb.map(|h| h.t.to_bits()));
+    a.all_hits(ray, tmax, sa);
+    b.all_hits(ray, tmax, sb);
+    let la: Vec<_> = sa.surface.iter().map(|h| (h.t.to_bits(), h.flip)).collect();
+    let lb: Vec<_> = sb.surface.iter().map(|h| (h.t.to_bits(), h.flip)).collect();
+    assert_eq!(la, lb);
+    sa.surface.clear();
+    sb.surface.clear();
+    ha.is_some()
+}
+
 #[test]
 fn turned_windows_keep_every_crossing() {
     let windowed = scene();
@@ -66,19 +88,7 @@ fn turned_windows_keep_every_crossing() {
             };
             let ray = Ray::new(o, dir);
             let tmax = if rng.next() < 0.3 { 6.0 } else { f64::INFINITY };
-            let (ha, hb) = (
-                a.first_hit(&ray, tmax, &mut sa),
-                b.first_hit(&ray, tmax, &mut sb),
-            );
-            assert_eq!(ha.map(|h| h.t.to_bits()), hb.map(|h| h.t.to_bits()));
-            hits += ha.is_some() as usize;
-            a.all_hits(&ray, tmax, &mut sa);
-            b.all_hits(&ray, tmax, &mut sb);
-            let la: Vec<_> = sa.surface.iter().map(|h| (h.t.to_bits(), h.flip)).collect();
-            let lb: Vec<_> = sb.surface.iter().map(|h| (h.t.to_bits(), h.flip)).collect();
-            assert_eq!(la, lb);
-            sa.surface.clear();
-            sb.surface.clear();
+            hits += same_hits(a, b, &ray, tmax, &mut sa, &mut sb) as usize;
         }
         assert!(hits > 100, "{hits}");
     }
