@@ -284,9 +284,14 @@ pub(super) fn refine(
             false_position(a, ea.v, b, eb.v)
         };
         let p = o + u * m;
-        let estimate = reference
-            .as_ref()
-            .and_then(|(pw, lin)| lin.at(p).or_else(|| se.near(pw, p)));
+        // The series where the model cannot settle the sign: it costs about 0.6 of an exact
+        // evaluation and settles most of what the model leaves.
+        let settles = |&(v, err): &(f64, f64)| v.abs() > err && v.abs() < 1e300;
+        let estimate = reference.as_ref().and_then(|(pw, lin)| {
+            lin.at(p)
+                .filter(settles)
+                .or_else(|| se.near(pw, p).filter(settles))
+        });
         let em = match estimate {
             Some((v, err)) if v.abs() > err && v.abs() < 1e300 => End {
                 s: m,
