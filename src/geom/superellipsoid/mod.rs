@@ -564,16 +564,7 @@ mod tests {
                     let p = DVec3::new(next(), next(), next()) * 2.0 - DVec3::ONE;
                     // Half the points pulled onto the surface, where the sign is close.
                     let p = if next() < 0.5 {
-                        let (mut lo, mut hi) = (0.0, 2.0);
-                        for _ in 0..60 {
-                            let mid = 0.5 * (lo + hi);
-                            if s.value(p * mid) < 0.0 {
-                                lo = mid;
-                            } else {
-                                hi = mid;
-                            }
-                        }
-                        p * lo
+                        super::near::tests::on_surface(&s, p)
                     } else {
                         p
                     };
