@@ -125,34 +125,12 @@ impl Diagonal {
         }
         for &(kind, c) in &self.terms[..self.n] {
             match kind {
-                0 | 1 => {
-                    let p = if kind == 0 { x2 } else { y2 };
-                    for a in 0..3 {
-                        let v = 0.0 + p[a];
-                        if v != 0.0 {
-                            acc[a] += c * v;
-                        }
-                    }
-                }
-                2 => {
-                    for b in 0..3 {
-                        acc[b] += c * z2[b];
-                    }
-                }
-                3 | 4 => {
-                    let p = if kind == 3 { x1 } else { y1 };
-                    for a in 0..2 {
-                        let v = 0.0 + p[a];
-                        if v != 0.0 {
-                            acc[a] += c * v;
-                        }
-                    }
-                }
-                5 => {
-                    for b in 0..2 {
-                        acc[b] += c * z1[b];
-                    }
-                }
+                0 => add_nonzero(&mut acc, c, x2),
+                1 => add_nonzero(&mut acc, c, y2),
+                2 => add_all(&mut acc, c, z2),
+                3 => add_nonzero(&mut acc, c, x1),
+                4 => add_nonzero(&mut acc, c, y1),
+                5 => add_all(&mut acc, c, z1),
                 _ => acc[0] += c,
             }
         }
