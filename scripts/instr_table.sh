@@ -75,7 +75,9 @@ for s in "$@"; do
   path=$samples/$s.pov
   p=$(pov_ir "$path")
   n=$(lancer_ir "$new" "$path")
-  if [ -n "$base" ]; then
+  if [ "$p" = 0.0 ] || [ "$n" = 0.0 ]; then
+    echo "| $s | $p | $n | (a run under valgrind failed) |"
+  elif [ -n "$base" ]; then
     b=$(lancer_ir "$base" "$path")
     awk -v s="$s" -v b="$b" -v n="$n" -v p="$p" \
       'BEGIN {printf "| %s | %.1f | %.1f | %.1f | %.2f | %.2f |\n", s, p, b, n, b / p, n / p}'
