@@ -7,7 +7,6 @@ use std::cell::Cell;
 use crate::geom::Hit;
 use crate::math::{Aabb, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
-use crate::scene::csg_window::{shut, within, Windows, OPEN};
 use crate::scene::desc::CsgOp;
 use crate::scene::faces::{self, Face, Faces, MAX_ALL};
 use crate::scene::object::{
@@ -65,11 +64,6 @@ impl Object {
     /// `inside`) has no side effect on the answer, and ties in `t` go to the earlier in that
     /// order, as `min_by` over `all_hits` does: the answer is the same crossing, bit for bit.
     ///
-    /// Crossings outside their member's window (`csg_window`: where the other members' bounds
-    /// leave room for them) are left out of the order before the sort, and a member with no
-    /// room at all is not intersected: `csg_keeps` would turn all of them away, so the kept
-    /// crossings and their order are the same.
-    ///
     /// `FOLD` false: no member is folded, for nodes that have none to fold (the common case),
     /// so that their search pays nothing for the folding.
     #[allow(clippy::too_many_arguments)]
@@ -93,18 +87,8 @@ impl Object {
         let order_from = s.csg_order.len();
         let slabs = Slabs::new(ray.origin, inv_dir);
         let fold = FOLD && index.is_none() && children.len() <= 1 << LEAF_SHIFT;
-        // Crossings outside their member's window are turned away here, before the sort
-        // (`csg_window`): `csg_keeps` would turn them away.
-        let windows = index
-            .is_none()
-            .then(|| Windows::new(op, children, ray, inv_dir))
-            .flatten();
         let gather = |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
             if !slabs.hits(&c.bounds, tmax) {
-                return;
-            }
-            let w = windows.as_ref().map_or(OPEN, |w| w.get(i));
-            if shut(w, tmax) {
                 return;
             }
             if let Some((leaves, leaf_cull, leaf_faces)) = fold.then(|| folded(c)).flatten() {
@@ -113,26 +97,15 @@ impl Object {
                     return;
                 }
                 let leaf_faces = leaf_faces.filter(|_| faces::ray_ok(ray));
-                // A leaf's crossing is kept only inside the folded member's other leaves and
-                // the node's other members: the meet of the two windows.
-                let leaf_windows = Windows::new(CsgOp::Intersection, leaves, ray, inv_dir);
                 for (k, g) in leaves.iter().enumerate() {
                     if !slabs.hits(&g.bounds, tmax) {
-                        continue;
-                    }
-                    let lw = leaf_windows.as_ref().map_or(OPEN, |lw| lw.get(k));
-                    let lw = (lw.0.max(w.0), lw.1.min(w.1));
-                    if shut(lw, tmax) {
                         continue;
                     }
                     let from = s.surface.len();
                     member_hits(g, leaf_faces.and_then(|f| f.get(k)), ray, tmax, s);
                     let tag = i as u32 | (k as u32 + 1) << LEAF_SHIFT;
                     for j in from..s.surface.len() {
-                        let t = s.surface[j].t;
-                        if within(lw, t) {
-                            s.csg_order.push((order_key(t), j as u32, tag));
-                        }
+                        s.csg_order.push((order_key(s.surface[j].t), j as u32, tag));
                     }
                 }
                 return;
@@ -140,10 +113,8 @@ impl Object {
             let from = s.surface.len();
             member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
             for j in from..s.surface.len() {
-                let t = s.surface[j].t;
-                if within(w, t) {
-                    s.csg_order.push((order_key(t), j as u32, i as u32));
-                }
+                s.csg_order
+                    .push((order_key(s.surface[j].t), j as u32, i as u32));
             }
         };
         each_member(children, index, ray, tmax, s, gather);
@@ -228,25 +199,15 @@ impl Object {
         let rejecter = Cell::new(usize::MAX);
         let clip = &self.clip[..];
         let mut found = false;
-        // As in `csg_first_hit`: a member none of whose crossings could be kept is not asked.
-        let windows = index
-            .is_none()
-            .then(|| Windows::new(op, children, ray, inv_dir))
-            .flatten();
         each_member(children, index, ray, tmax, s, |c, i, s| {
             if found || !slabs.hits(&c.bounds, tmax) {
-                return;
-            }
-            let w = windows.as_ref().map_or(OPEN, |w| w.get(i));
-            if shut(w, tmax) {
                 return;
             }
             let from = s.surface.len();
             member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
             found = s.surface[from..].iter().any(|h| {
                 let p = ray.at(h.t);
-                within(w, h.t)
-                    && csg_keeps(op, i, children, index, faces, p, &rejecter)
+                csg_keeps(op, i, children, index, faces, p, &rejecter)
                     && (clip.is_empty() || (h.t > EPSILON && clip.iter().all(|c| c.inside(p))))
             });
             s.surface.truncate(from);
@@ -404,10 +365,7 @@ impl Object {
 mod tests {
     use crate::geom::test_rng::Lcg;
     use crate::math::{DVec3, Ray, EPSILON};
-    use crate::scene::desc::CsgOp;
-    use crate::scene::object::{
-        csg_keeps, each_member, member_hits, ObjKind, Object, Scratch, SurfaceHit,
-    };
+    use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
     use crate::sdl::{ParseOptions, Parser};
 
     /// The built scene of `text`.
@@ -424,74 +382,8 @@ mod tests {
         (h.t.to_bits(), h.flip, h.hit.part)
     }
 
-    /// `all_hits` without the members' windows (`csg_window`): every member's crossings, each
-    /// asked of `csg_keeps`, after the same culls, appended to `out` in the same order.
-    fn plain_all_hits<'a>(
-        o: &'a Object,
-        ray: &Ray,
-        tmax: f64,
-        s: &mut Scratch<'a>,
-        out: &mut Vec<SurfaceHit<'a>>,
-    ) {
-        let ObjKind::Csg {
-            op,
-            children,
-            index,
-            cull,
-        } = &o.kind
-        else {
-            let from = s.surface.len();
-            o.all_hits(ray, tmax, s);
-            out.extend(s.surface.drain(from..));
-            return;
-        };
-        let inv_dir = ray.dir.recip();
-        if cull
-            .as_ref()
-            .and_then(|c| c.aabb.as_ref())
-            .is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none())
-        {
-            return;
-        }
-        let index = index.as_deref();
-        let faces = cull.as_ref().and_then(|c| c.faces.as_ref());
-        let ray_faces = faces.filter(|_| crate::scene::faces::ray_ok(ray));
-        let slabs = crate::math::Slabs::new(ray.origin, inv_dir);
-        let mut members = Vec::new();
-        each_member(children, index, ray, tmax, s, |c, i, _| {
-            if slabs.hits(&c.bounds, tmax) {
-                members.push((c, i));
-            }
-        });
-        let rejecter = std::cell::Cell::new(usize::MAX);
-        let mut mine = Vec::new();
-        for (c, i) in members {
-            let mut sub = Vec::new();
-            match &c.kind {
-                ObjKind::Csg { .. } => plain_all_hits(c, ray, tmax, s, &mut sub),
-                _ => {
-                    let from = s.surface.len();
-                    member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
-                    sub.extend(s.surface.drain(from..));
-                }
-            }
-            for mut h in sub {
-                if csg_keeps(*op, i, children, index, faces, ray.at(h.t), &rejecter) {
-                    h.flip ^= *op == CsgOp::Difference && i > 0;
-                    mine.push(h);
-                }
-            }
-        }
-        if o.inverse {
-            mine.iter_mut().for_each(|h| h.flip = !h.flip);
-        }
-        mine.retain(|h| o.clip.iter().all(|c| c.inside(ray.at(h.t))));
-        out.extend(mine);
-    }
-
-    /// `first_hit` as `all_hits` defines it without the windows: the nearest crossing
-    /// (t > EPSILON when clipped), the earliest listed of equal ones. `all_hits` itself lists
-    /// the same crossings in the same order.
+    /// `first_hit` as `all_hits` defines it: the nearest crossing (t > EPSILON when clipped),
+    /// the earliest listed of equal ones.
     fn reference<'a>(
         o: &'a Object,
         ray: &Ray,
@@ -499,14 +391,9 @@ mod tests {
         s: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
         s.surface.clear();
-        let mut plain = Vec::new();
-        plain_all_hits(o, ray, tmax, s, &mut plain);
         o.all_hits(ray, tmax, s);
-        let keys = |l: &[SurfaceHit]| -> Vec<_> {
-            l.iter().map(|h| (key(h), h.obj as *const Object)).collect()
-        };
-        assert_eq!(keys(&s.surface), keys(&plain), "all_hits");
-        let best = plain
+        let best = s
+            .surface
             .iter()
             .filter(|h| o.clip.is_empty() || h.t > EPSILON)
             .min_by(|a, b| a.t.total_cmp(&b.t))
@@ -547,26 +434,18 @@ mod tests {
             difference { quadric { <1, 1, 1>, 0, 0, -1.4 } quadric { <0, 1, 1>, 0, <0, 0.2, 0>, -0.3 }
                          quadric { <1, 0, 1>, 0, 0, -0.3 } rotate <20, 30, 0> translate <0.2, 0, 0.1> }
             merge { quadric { <1, 1, 0.5>, 0, 0, -1 } quadric { <1, 0, 1>, 0, 0, -0.5 } scale <1, 1.5, 1> }
-            intersection { box { -1, 1 } cylinder { -2 * x, 2 * x, 0.9 } cylinder { -2 * z, 2 * z, 0.9 }
-                           sphere { 0, 2 translate 2.6 * y inverse } scale <1.5, 0.6, 1.5> }
-            difference { intersection { box { -1, 1 } sphere { 0, 1.4 } } cylinder { -2 * x, 2 * x, 0.5 }
-                         box { <-0.5, -2, -0.5>, <0.5, 2, 0.5> } rotate <0, 30, 10> }
         "#;
         let scene = built(SCENE);
         let mut rng = Lcg(11);
         let (mut sa, mut sb) = (Scratch::default(), Scratch::default());
         for (n, o) in scene.objects.iter().enumerate() {
             let mut hits = 0;
-            let mut on_surface = None;
             for k in 0..6000 {
-                // Every third ray runs along an axis through a point on a face of the box;
-                // some start where an earlier ray met the object, as shadow rays do.
+                // Every third ray runs along an axis through a point on a face of the box.
                 let ray = if k % 3 == 0 {
                     let mut q = rng.vec(2.0);
                     q[k % 2] = [1.0, -1.0, 0.0][k % 3];
                     Ray::new(q, [DVec3::X, DVec3::Y, DVec3::Z, rng.vec(1.0)][k % 4])
-                } else if let Some(p) = on_surface.filter(|_| k % 3 == 1) {
-                    Ray::new(p, rng.vec(2.0))
                 } else {
                     Ray::new(rng.vec(5.0), rng.vec(2.0))
                 };
@@ -587,9 +466,6 @@ mod tests {
                 );
                 assert!(sa.surface.is_empty() && sa.csg_order.is_empty());
                 hits += want.is_some() as usize;
-                if let Some((t, ..)) = want {
-                    on_surface = Some(ray.at(f64::from_bits(t)));
-                }
             }
             assert!(hits > 100, "object {n}: {hits}");
         }

@@ -4,7 +4,6 @@ pub mod atmosphere;
 pub mod build;
 pub mod children;
 pub mod csg_hit;
-pub mod csg_window;
 pub mod cull;
 pub mod desc;
 pub mod df3;

@@ -9,7 +9,6 @@ use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, Slabs, Transform};
 use crate::scene::children::{union_first_hit, union_scan_first_hit, ChildIndex};
 use crate::scene::csg_hit;
-use crate::scene::csg_window::{shut, within, Windows, OPEN};
 use crate::scene::cull::{Range, Window};
 use crate::scene::desc::{CsgOp, MeshData, Texture};
 use crate::scene::faces::{self, Faces};
@@ -440,12 +439,6 @@ impl Object {
                 let ray_faces = faces.filter(|_| faces::ray_ok(ray));
                 let rejecter = std::cell::Cell::new(usize::MAX);
                 let slabs = Slabs::new(ray.origin, inv_dir);
-                // Where each member's crossings can be kept (`csg_window`): outside, turned
-                // away without their inside tests; a member with no such place is not asked.
-                let windows = index
-                    .is_none()
-                    .then(|| Windows::new(*op, children, ray, inv_dir))
-                    .flatten();
                 // Member `i` is `c`; in a union's index `c` may be a leaf of an opened member
                 // union (its number then does not matter: a union keeps every crossing).
                 let member = |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
@@ -454,19 +447,13 @@ impl Object {
                     if !slabs.hits(&c.bounds, tmax) {
                         return;
                     }
-                    let w = windows.as_ref().map_or(OPEN, |w| w.get(i));
-                    if shut(w, tmax) {
-                        return;
-                    }
                     // Each child's crossings are appended, then filtered in place.
                     let start = s.surface.len();
                     member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
                     let mut k = start;
                     for j in start..s.surface.len() {
                         let mut h = s.surface[j];
-                        if within(w, h.t)
-                            && csg_keeps(*op, i, children, index, faces, ray.at(h.t), &rejecter)
-                        {
+                        if csg_keeps(*op, i, children, index, faces, ray.at(h.t), &rejecter) {
                             // Surfaces of subtracted operands face into the result.
                             h.flip ^= *op == CsgOp::Difference && i > 0;
                             s.surface[k] = h;
