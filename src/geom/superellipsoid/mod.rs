@@ -14,18 +14,20 @@
 
 mod linear;
 mod near;
-mod table;
 
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
 use linear::LinConsts;
 use near::Series;
-use table::Table;
 
 /// Widening of the box searched, so a crossing on the box's faces (e or n near zero) is kept.
 const MARGIN: f64 = 1e-6;
 /// Samples per piece between breakpoints.
 const SAMPLES: usize = 4;
+
+/// Table steps on [0, 1] for the bounds of the samples' powers (a power of two, so that
+/// `x * STEPS` and its floor are exact).
+const STEPS: usize = 128;
 
 #[derive(Clone, Debug)]
 pub struct Superellipsoid {
@@ -37,9 +39,10 @@ pub struct Superellipsoid {
     c: Power,
     /// 2^(e/n): the largest `(1 + r^a)^b` can be (r <= 1), for `sign`.
     top: f64,
-    /// Bounds on `x^c` and on `(1 + r^a)^b` for the samples (`table`).
-    pow_c: Table,
-    pow_ab: Table,
+    /// `x^c` at `x = i / STEPS`: with `x^c` increasing, the two entries around `x` bound it.
+    pow_c: [f64; STEPS + 1],
+    /// `(1 + r^a)^b` at `r = i / STEPS`, increasing in `r` like `pow_c`.
+    pow_ab: [f64; STEPS + 1],
     /// The binomial series of `a`, `b` and `c`, for values near a known one (`near`).
     sa: Series,
     sb: Series,
@@ -93,6 +96,16 @@ impl Power {
     }
 }
 
+/// The two table entries around `x` in `[0, 1]` (None outside, or NaN).
+#[inline]
+fn around(table: &[f64; STEPS + 1], x: f64) -> Option<(f64, f64)> {
+    if x > 1.0 || x.is_nan() {
+        return None;
+    }
+    let i = (x * STEPS as f64) as usize;
+    Some((table[i], table[(i + 1).min(STEPS)]))
+}
+
 /// A point's field value, or only its sign when that is certain without the whole value.
 #[derive(Clone, Copy)]
 enum Field {
@@ -114,13 +127,14 @@ impl Superellipsoid {
     /// Exponents must be positive and finite; callers clamp (the parser warns).
     pub fn new(e: f64, n: f64) -> Superellipsoid {
         let (a, b, c) = (Power::new(2.0 / e), Power::new(e / n), Power::new(2.0 / n));
+        let at = |i: usize| i as f64 / STEPS as f64;
         Superellipsoid {
             a,
             b,
             c,
             top: 2f64.powf(e / n),
-            pow_c: Table::power(c),
-            pow_ab: Table::ratio(a, b),
+            pow_c: std::array::from_fn(|i| c.of(at(i))),
+            pow_ab: std::array::from_fn(|i| b.of(1.0 + a.of(at(i)))),
             sa: Series::new(a.exponent()),
             sb: Series::new(b.exponent()),
             sc: Series::new(c.exponent()),
@@ -154,10 +168,11 @@ impl Superellipsoid {
         let r = x.min(y) / m;
         // Bounds from the tables first (no power at all): the field is increasing in `m`, `r`
         // and `|z|`, and the margins are far above the tables' and these sums' rounding.
-        let g = self.pow_ab.bounds(r);
-        if let (Some((mc0, mc1)), Some((g0, g1)), Some((zc0, zc1))) =
-            (self.pow_c.bounds(m), g, self.pow_c.bounds(z))
-        {
+        if let (Some((mc0, mc1)), Some((g0, g1)), Some((zc0, zc1))) = (
+            around(&self.pow_c, m),
+            around(&self.pow_ab, r),
+            around(&self.pow_c, z),
+        ) {
             if mc0 * g0 + zc0 > 1.0 + 1e-9 {
                 return Field::Sign(false);
             }
@@ -166,13 +181,11 @@ impl Superellipsoid {
             }
         }
         let (mc, zc) = (self.c.of(m), self.c.of(z));
-        // With the two exact powers, the table's bounds on the third (or 1 and 2^b).
         // Margins far above the rounding of these few operations.
-        let (g0, g1) = g.unwrap_or((1.0, self.top));
-        if mc * g0 + zc > 1.0 + 1e-9 {
+        if mc + zc > 1.0 + 1e-9 {
             return Field::Sign(false);
         }
-        if mc * g1 + zc < 1.0 - 1e-9 {
+        if mc * self.top + zc < 1.0 - 1e-9 {
             return Field::Sign(true);
         }
         let xy = mc * self.b.of(1.0 + self.a.of(r));
