@@ -79,54 +79,6 @@ fn bits<const N: usize>(b: [bool; N]) -> u32 {
         .fold(0, |m, (i, &x)| m | (x as u32) << i)
 }
 
-/// Lane bits of `v > t`: `bits(v.0.map(|v| v > t))`. The lone comparisons compile to a scalar
-/// compare, a flag read and a shift per lane, a quarter of the four-lane loop's instructions
-/// besides its arithmetic (front-end bound: SSE2's two-operand forms add a copy per product);
-/// here two lanes are compared at once and their bits read together. `cmpgt` and `cmple` are
-/// the ordered predicates, false for NaN like `>` and `<=`.
-#[inline(always)]
-fn above<const N: usize>(v: V<N>, t: f64) -> u32 {
-    #[cfg(target_arch = "x86_64")]
-    {
-        use std::arch::x86_64::{_mm_cmpgt_pd, _mm_loadu_pd, _mm_movemask_pd, _mm_set1_pd};
-        if N % 2 == 0 {
-            let mut m = 0u32;
-            // SAFETY: SSE2 is part of x86_64; each load reads lanes i and i + 1 < N.
-            unsafe {
-                let tt = _mm_set1_pd(t);
-                for i in (0..N).step_by(2) {
-                    let x = _mm_loadu_pd(v.0.as_ptr().add(i));
-                    m |= (_mm_movemask_pd(_mm_cmpgt_pd(x, tt)) as u32) << i;
-                }
-            }
-            return m;
-        }
-    }
-    bits(v.0.map(|v| v > t))
-}
-
-/// Lane bits of `v <= t`, as `above`.
-#[inline(always)]
-fn at_most<const N: usize>(v: V<N>, t: f64) -> u32 {
-    #[cfg(target_arch = "x86_64")]
-    {
-        use std::arch::x86_64::{_mm_cmple_pd, _mm_loadu_pd, _mm_movemask_pd, _mm_set1_pd};
-        if N % 2 == 0 {
-            let mut m = 0u32;
-            // SAFETY: SSE2 is part of x86_64; each load reads lanes i and i + 1 < N.
-            unsafe {
-                let tt = _mm_set1_pd(t);
-                for i in (0..N).step_by(2) {
-                    let x = _mm_loadu_pd(v.0.as_ptr().add(i));
-                    m |= (_mm_movemask_pd(_mm_cmple_pd(x, tt)) as u32) << i;
-                }
-            }
-            return m;
-        }
-    }
-    bits(v.0.map(|v| v <= t))
-}
-
 impl Julia {
     /// `p.map(|p| self.is_in(p))`, the orbits run side by side where they are quaternion
     /// ones.
@@ -174,10 +126,11 @@ impl Julia {
                 h = std::array::from_fn(|i| f[i] + c[i]);
                 dr = dr * if CUBE { three * r * r } else { two * r };
                 r = qnorm_sq_n(&h).sqrt();
-                let esc = above(r, bail);
+                let esc = bits(r.0.map(|r| r > bail));
                 let left = (steps - 1 - k) as usize;
                 let kept = if left < KEEP {
-                    at_most(r, self.keep[left])
+                    let q = self.keep[left];
+                    bits(r.0.map(|r| r <= q))
                 } else {
                     0
                 };
@@ -225,11 +178,12 @@ impl Julia {
                 let h2 = qmul_n(&h, &h);
                 let f = if CUBE { qmul_n(&h, &h2) } else { h2 };
                 h = std::array::from_fn(|i| f[i] + c[i]);
-                let s = qnorm_sq_n(&h);
-                let esc = above(s, bail_sq);
+                let s = qnorm_sq_n(&h).0;
+                let esc = bits(s.map(|s| s > bail_sq));
                 let left = (steps - 1 - k) as usize;
                 let kept = if left < KEEP {
-                    at_most(s, self.keep_sq[left])
+                    let r = self.keep_sq[left];
+                    bits(s.map(|s| s <= r))
                 } else {
                     0
                 };
