@@ -244,7 +244,10 @@ impl Cache {
     /// wall or floor at scattered points, where listing every cell met cost more than it
     /// saved), and another normal taking an entry only raises its epoch. `f` meets the samples
     /// `weight` takes in the order `near` gives them, so the blend's sums are the same to the
-    /// bit.
+    /// bit. A sample of a list comes with `Some` of its `normal_err` for this normal (the
+    /// list keeps it: the same bits for every lookup reading the list), which `Blend::add_listed`
+    /// takes in place of `weight`'s level and normal tests and its first square root; the
+    /// samples of cells not listed come with `None`.
     #[inline]
     pub(super) fn near_memo(
         &self,
@@ -253,7 +256,7 @@ impl Cache {
         bound: f64,
         level: u32,
         memo: &mut RadiosityMemo,
-        mut f: impl FnMut(usize, &Footprint),
+        mut f: impl FnMut(usize, &Footprint, Option<f64>),
     ) {
         let facing = [n.x.to_bits(), n.y.to_bits(), n.z.to_bits()];
         if memo.entries.is_empty() {
@@ -319,10 +322,10 @@ impl Cache {
             for (j, c) in cells.iter_mut().enumerate() {
                 match found[j] {
                     None => {
-                        for &i in &c.ids {
+                        for &(i, e) in &c.ids {
                             let s = &self.foot[i as usize];
                             if within(s, p, bound) {
-                                f(i as usize, s);
+                                f(i as usize, s, Some(e));
                             }
                         }
                     }
@@ -330,12 +333,14 @@ impl Cache {
                         for &i in ids {
                             let s = &self.foot[i as usize];
                             // `weight`'s first tests, as it writes them (a NaN cosine passes).
-                            if s.level > level || n.dot(s.n) < 0.5 {
+                            let cos = n.dot(s.n);
+                            if s.level > level || cos < 0.5 {
                                 continue;
                             }
-                            c.ids.push(i);
+                            let e = normal_err(cos);
+                            c.ids.push((i, e));
                             if within(s, p, bound) {
-                                f(i as usize, s);
+                                f(i as usize, s, Some(e));
                             }
                         }
                         c.listed = true;
@@ -344,7 +349,7 @@ impl Cache {
                         for &i in ids {
                             let s = &self.foot[i as usize];
                             if within(s, p, bound) {
-                                f(i as usize, s);
+                                f(i as usize, s, None);
                             }
                         }
                     }
@@ -502,6 +507,25 @@ impl Blend {
             self.count += 1;
         }
     }
+
+    /// `add` for a sample of a `near_memo` list, whose level and normal passed `weight`'s
+    /// tests for this lookup's normal when listed, `nerr` its `normal_err` then.
+    #[inline]
+    pub(super) fn add_listed(
+        &mut self,
+        s: &Footprint,
+        irr: DVec3,
+        p: DVec3,
+        n: DVec3,
+        bound: f64,
+        nerr: f64,
+    ) {
+        if let Some(w) = weight_listed(s, p, n, bound, nerr) {
+            self.sum += irr * w;
+            self.weight += w;
+            self.count += 1;
+        }
+    }
 }
 
 /// The weight of sample `s` in the blend at (p, n) for a lookup of `level`, None where it is
@@ -521,12 +545,52 @@ pub(super) fn weight(s: &Footprint, p: DVec3, n: DVec3, level: u32, bound: f64) 
     if cos < 0.5 {
         return None;
     }
+    weight_tail(s, d, d2, n, bound, || normal_err(cos))
+}
+
+/// `weight` for a sample whose level and normal are known to pass its tests for normal `n`,
+/// with `nerr` its `normal_err` for `n`: the same arithmetic, so the same bits.
+#[inline]
+pub(super) fn weight_listed(
+    s: &Footprint,
+    p: DVec3,
+    n: DVec3,
+    bound: f64,
+    nerr: f64,
+) -> Option<f64> {
+    let d = p - s.p;
+    let d2 = d.length_squared();
+    let far = s.r * bound;
+    if d2 >= far * far {
+        return None;
+    }
+    weight_tail(s, d, d2, n, bound, || nerr)
+}
+
+/// The share of a sample's error from its normal's turn from the lookup's (`cos`, their dot
+/// product): the same for every lookup facing the same way.
+#[inline(always)]
+fn normal_err(cos: f64) -> f64 {
+    2.0 * (1.0 - cos).max(0.0).sqrt()
+}
+
+/// `weight` past its level, distance and normal tests (`d` from the sample to the point,
+/// `d2` its squared length); `nerr` gives `normal_err`, asked only of samples not in front.
+#[inline(always)]
+fn weight_tail(
+    s: &Footprint,
+    d: DVec3,
+    d2: f64,
+    n: DVec3,
+    bound: f64,
+    nerr: impl FnOnce() -> f64,
+) -> Option<f64> {
     let dist = d2.sqrt();
     // Samples in front of the point see a different neighbourhood (Ward's test).
     if d.dot(n + s.n) * 0.5 < -0.05 * s.r {
         return None;
     }
-    let err = dist / s.r + 2.0 * (1.0 - cos).max(0.0).sqrt();
+    let err = dist / s.r + nerr();
     if err >= bound {
         return None;
     }
@@ -675,11 +739,19 @@ mod tests {
                     }
                     want.add(s, cache.irr[i], p, n, level, bound);
                 });
-                cache.near_memo(p, n, bound, level, &mut memo, |i, s| {
-                    if weight(s, p, n, level, bound).is_some() {
+                cache.near_memo(p, n, bound, level, &mut memo, |i, s, nerr| {
+                    let w = weight(s, p, n, level, bound);
+                    if w.is_some() {
                         got_ids.push(i);
                     }
-                    got.add(s, cache.irr[i], p, n, level, bound);
+                    match nerr {
+                        Some(e) => {
+                            let listed = weight_listed(s, p, n, bound, e);
+                            assert_eq!(listed.map(f64::to_bits), w.map(f64::to_bits));
+                            got.add_listed(s, cache.irr[i], p, n, bound, e);
+                        }
+                        None => got.add(s, cache.irr[i], p, n, level, bound),
+                    }
                 });
                 assert_eq!(got_ids, want_ids, "lookup {k} at {p}");
                 assert_eq!(got.count, want.count);

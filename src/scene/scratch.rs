@@ -114,11 +114,12 @@ pub struct MemoEntry {
 }
 
 /// A scale's last cell read (`MemoEntry`), valid in the entry's epoch: its key, and once the
-/// next lookup read it too, its list.
+/// next lookup read it too, its list: each sample's number and its share of the error from
+/// its normal's turn from the entry's (the same for every lookup of the entry).
 #[derive(Default)]
 pub struct MemoCell {
     pub key: u64,
     pub epoch: u64,
     pub listed: bool,
-    pub ids: Vec<u32>,
+    pub ids: Vec<(u32, f64)>,
 }
