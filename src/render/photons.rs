@@ -108,7 +108,6 @@ impl PhotonMap {
         p: DVec3,
         nf: DVec3,
         obj: &Object,
-        seed: u32,
         found: &mut Vec<(f32, u32)>,
     ) -> Option<LitBy> {
         if obj.photons & flags::NO_COLLECT != 0 {
@@ -121,7 +120,7 @@ impl PhotonMap {
             cos_n: 1.0,
             shadowless: true,
             back: false,
-            grain: super::trace::grain(seed, u32::MAX),
+            slot: u32::MAX,
         })
     }
 
