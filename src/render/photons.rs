@@ -114,7 +114,7 @@ impl PhotonMap {
             return None;
         }
         let e = self.irradiance(p, nf, found);
-        (e != DVec3::ZERO).then(|| LitBy {
+        (e != DVec3::ZERO).then_some(LitBy {
             color: e,
             l: nf,
             cos_n: 1.0,
