@@ -214,10 +214,18 @@ impl Bvh {
         } else {
             None
         };
-        // The root's box by the paired test too where it applies (the same answer): with
-        // few objects, `Aabb::hit`'s NaN-aware minima and maxima at the root were a
-        // twentieth of a small scene's time.
+        // With the paired test and no flat axis the root's own box is not tested: the root
+        // is then a node, whose two children's boxes the loop below tests first, and a ray
+        // missing the root's box misses both. Every node's box is the exact union of its
+        // children's, and without infinite reciprocals the paired test's interval only
+        // widens as a box grows (a rounded difference times the same finite reciprocal, then
+        // minima and maxima; no NaN). A flat axis breaks that: a box flat in it holding the
+        // origin's plane passes, a larger box with the origin on its face does not. Shadow
+        // and reflected rays start inside the root's box far more often than camera rays miss
+        // it, and the test cost about as much as a node's (unit test
+        // `the_root_test_is_implied_by_its_children`).
         let root_missed = match &slabs {
+            Some(s) if !s.any_flat() => false,
             Some(s) => s.hit2(&self.root_box, &self.root_box, tmax).0.is_none(),
             None => self.root_box.hit(origin, inv_dir, tmax).is_none(),
         };

@@ -27,7 +27,6 @@ impl<'a> Tracer<'a> {
         let q = self.quality;
         let mut lit = std::mem::take(&mut ctx.lit);
         lit.clear();
-        let seed = point_seed(p);
         for (slot, light) in self.scene.lights.iter().enumerate() {
             if groups && !set.sees(light.group) {
                 continue;
@@ -42,7 +41,6 @@ impl<'a> Tracer<'a> {
                     // `area_illumination`: every point of the array lights the surface from
                     // its own direction, with its share of the light, even where the
                     // array's centre is below the surface's horizon.
-                    let grain = grain(seed, slot as u32);
                     self.area_each(p, (slot, light), l, dist, ctx, |dir, d, seen| {
                         let lc = light.color * (light.fade(d) * inc.beam);
                         let cos_n = nf.dot(dir);
@@ -54,7 +52,7 @@ impl<'a> Tracer<'a> {
                                 cos_n,
                                 shadowless: false,
                                 back,
-                                grain,
+                                slot: slot as u32,
                             });
                         }
                     });
@@ -91,11 +89,11 @@ impl<'a> Tracer<'a> {
                 cos_n,
                 shadowless: light.shadowless,
                 back,
-                grain: grain(seed, slot as u32),
+                slot: slot as u32,
             });
         }
         if let Some(map) = self.photons {
-            if let Some(c) = map.caustic(p, nf, obj, seed, &mut ctx.photon_found) {
+            if let Some(c) = map.caustic(p, nf, obj, &mut ctx.photon_found) {
                 lit.push(c);
             }
         }
@@ -159,8 +157,12 @@ impl<'a> Tracer<'a> {
                     };
                     // crand darkens each light's diffuse term by its own random share
                     // (measured with povray: independent per light, uniform, ambient untouched).
+                    // The share's hash is made here, for the few finishes with crand, not
+                    // for every light of every hit as it once was (`gather_lights` shades the
+                    // same point `p`, so the same seed).
                     let k = if fin.crand != 0.0 {
-                        fin.diffuse * d * opacity * (1.0 - fin.crand * lb.grain)
+                        let g = grain(point_seed(p), lb.slot);
+                        fin.diffuse * d * opacity * (1.0 - fin.crand * g)
                     } else {
                         fin.diffuse * d * opacity
                     };

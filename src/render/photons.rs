@@ -108,20 +108,19 @@ impl PhotonMap {
         p: DVec3,
         nf: DVec3,
         obj: &Object,
-        seed: u32,
         found: &mut Vec<(f32, u32)>,
     ) -> Option<LitBy> {
         if obj.photons & flags::NO_COLLECT != 0 {
             return None;
         }
         let e = self.irradiance(p, nf, found);
-        (e != DVec3::ZERO).then(|| LitBy {
+        (e != DVec3::ZERO).then_some(LitBy {
             color: e,
             l: nf,
             cos_n: 1.0,
             shadowless: true,
             back: false,
-            grain: super::trace::grain(seed, u32::MAX),
+            slot: u32::MAX,
         })
     }
 

@@ -170,7 +170,9 @@ impl<'a> Tracer<'a> {
         if ctx.blockers.len() <= slot {
             ctx.blockers.resize(slot + 1, None);
         }
-        let inv = ray.dir.recip();
+        // Once for the cached blocker's box and the walk (each took its own three divisions);
+        // `ray_recip` is `recip` to the bit, read so as to forward from the stores just made.
+        let inv = crate::geom::bvh::ray_recip(&ray);
         let mut tried = None;
         if let Some(b) = ctx.blockers[slot] {
             if b.bounds.hit(ray.origin, inv, dist).is_some() {
@@ -202,7 +204,7 @@ impl<'a> Tracer<'a> {
         let mut att = DVec3::ONE;
         let mut blocker = None;
         let mut members = std::mem::take(&mut ctx.shadow_members);
-        self.scene.for_each_candidate(&ray, dist, |obj| {
+        self.scene.for_each_candidate_inv(&ray, inv, dist, |obj| {
             // The cached blocker, opaque, was just found not to block.
             if obj.no_shadow || tried.is_some_and(|t| std::ptr::eq(t, obj)) {
                 return false;

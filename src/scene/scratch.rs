@@ -71,8 +71,10 @@ pub struct LitBy {
     pub shadowless: bool,
     /// Behind the surface, lighting it through `double_illuminate`.
     pub back: bool,
-    /// Uniform in [0, 1), fixed by the point and the light: `crand`'s random share.
-    pub grain: f64,
+    /// The light's index (`u32::MAX` for the photons' light): with the shaded point's seed it
+    /// fixes `crand`'s random share (render::trace::grain), worked out only by finishes with
+    /// `crand`, not for every light of every hit.
+    pub slot: u32,
 }
 
 /// One cached irradiance value.

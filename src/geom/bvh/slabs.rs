@@ -85,6 +85,13 @@ impl Slabs2 {
         }
     }
 
+    /// Whether some axis is flat (its reciprocal direction infinite): the test is not
+    /// monotonic in the box then (`Bvh::traverse_inv`'s root).
+    #[inline]
+    pub(super) fn any_flat(&self) -> bool {
+        self.flat[0] | self.flat[1] | self.flat[2]
+    }
+
     /// A flat axis's (near, far) slab distances for one box, as `Aabb::hit` has them: its
     /// `f64::min` and `f64::max` of the two distances, which ignore a NaN. Both NaN (a box
     /// flat in this axis with the origin in its plane) gives (−∞, +∞), which the reductions
@@ -160,10 +167,96 @@ impl Slabs2 {
     pub(super) fn new(_: DVec3, _: DVec3) -> Option<Slabs2> {
         None
     }
+    pub(super) fn any_flat(&self) -> bool {
+        unreachable!()
+    }
     pub(super) fn hit2(&self, _: &Aabb, _: &Aabb, _: f64) -> (Option<f64>, Option<f64>) {
         unreachable!()
     }
     pub(super) fn hit_pair(&self, _: &Pair, _: f64) -> (Option<f64>, Option<f64>) {
         unreachable!()
+    }
+}
+
+#[cfg(all(test, target_arch = "x86_64"))]
+mod tests {
+    use super::super::Bvh;
+    use super::*;
+
+    /// What lets `Bvh::traverse_inv` skip the root's own box for rays without a flat axis:
+    /// where the paired test finds a ray missing a node's box (the union of its children's),
+    /// it misses both children's. Boxes on a grid, flat in one or two axes, tiny, or from
+    /// `Bvh::build`; origins on their faces and edges or anywhere; direction components from
+    /// 1e-300 to 1e3 (reciprocals that overflow the slab distances included); finite,
+    /// infinite and NaN `tmax`. Rays with a flat axis keep the root's test, and are skipped.
+    #[test]
+    fn the_root_test_is_implied_by_its_children() {
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let grid = |x: f64| (x * 16.0).floor() - 8.0;
+        let mut checked = 0usize;
+        for n in [2usize, 3, 5, 17, 200] {
+            let boxes: Vec<Aabb> = (0..n)
+                .map(|k| {
+                    let a = DVec3::new(grid(next()), grid(next()), grid(next()));
+                    let size = match k % 4 {
+                        0 => DVec3::new(0.0, 1.0, 2.0),
+                        1 => DVec3::new(3.0, 0.0, 0.0),
+                        2 => DVec3::new(next() * 4.0, next() * 4.0, next() * 4.0),
+                        _ => DVec3::splat(1e-9),
+                    };
+                    Aabb::new(a, a + size)
+                })
+                .collect();
+            let bvh = Bvh::build(&boxes);
+            let mut parents: Vec<(Aabb, &Pair)> = bvh
+                .nodes
+                .iter()
+                .map(|n| (n.boxes.get(0).union(&n.boxes.get(1)), &n.boxes))
+                .collect();
+            if bvh.root.count == 0 {
+                parents.push((bvh.root_box, &bvh.nodes[bvh.root.index as usize].boxes));
+            }
+            for k in 0..20_000usize {
+                let origin = if k % 2 == 0 {
+                    DVec3::new(grid(next()), grid(next()), grid(next()))
+                } else {
+                    DVec3::new(next(), next(), next()) * 24.0 - DVec3::splat(12.0)
+                };
+                let mut dir = DVec3::new(next(), next(), next()) * 2.0 - DVec3::ONE;
+                match k % 7 {
+                    0 => dir.x = 1e-300,
+                    1 => dir.y = -1e-200 * next(),
+                    2 => dir *= 1e3,
+                    3 => dir.z = 1e-9,
+                    _ => {}
+                }
+                let inv = DVec3::new(1.0 / dir.x, 1.0 / dir.y, 1.0 / dir.z);
+                let Some(s) = Slabs2::new(origin, inv) else {
+                    continue;
+                };
+                if s.any_flat() {
+                    continue;
+                }
+                let tmax = match k % 5 {
+                    0 => f64::INFINITY,
+                    1 => f64::NAN,
+                    2 => next() * 3.0,
+                    _ => next() * 40.0,
+                };
+                for &(whole, pair) in &parents {
+                    if s.hit2(&whole, &whole, tmax).0.is_none() {
+                        assert_eq!(s.hit_pair(pair, tmax), (None, None), "n={n} k={k}");
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        assert!(checked > 10_000, "{checked}");
     }
 }

@@ -48,9 +48,20 @@ impl Scene {
         &'a self,
         ray: &Ray,
         tmax: f64,
+        f: impl FnMut(&'a Object) -> bool,
+    ) {
+        self.for_each_candidate_inv(ray, crate::geom::bvh::ray_recip(ray), tmax, f);
+    }
+
+    /// `for_each_candidate` with the ray's reciprocal direction (`ray_recip`) already
+    /// computed: a shadow ray's caller has it for its cached blocker's box.
+    pub fn for_each_candidate_inv<'a>(
+        &'a self,
+        ray: &Ray,
+        inv_dir: DVec3,
+        tmax: f64,
         mut f: impl FnMut(&'a Object) -> bool,
     ) {
-        let inv_dir = crate::geom::bvh::ray_recip(ray);
         for (&i, cull) in self.unbounded.iter().zip(&self.unbounded_cull) {
             // An object the ray misses adds nothing, opaque or not.
             let missed = cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none());
