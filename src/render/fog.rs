@@ -94,6 +94,12 @@ fn depth_along(f: &FogDesc, origin: DVec3, dir: DVec3, d: f64) -> f64 {
 /// factor 1 − min(turb_depth·T, 1)·exp(−d/distance), T the scalar turbulence (marble's) at
 /// turbulence ⊙ (the ray's midpoint); turb_depth scales the effect, it does not move the
 /// point. Without the keyword nothing changes; with it, even <0,0,0> (T at the origin) does.
+///
+/// Far along a ray the factor is exactly 1 and T is not computed: |min(turb_depth·T, 1)| is
+/// at most `reach` (from `noise::turbulence_bound`), so when reach·exp(−d/distance) is at
+/// most 2^-55 the rounded product is too, and 1 minus a number that small rounds to 1 (a
+/// sky plane 10000 away under a fog of distance 50: exp(−200)). NaN or infinite bounds fail
+/// the test and take the full formula.
 fn stirred(f: &FogDesc, origin: DVec3, dir: DVec3, d: f64, optical: f64) -> f64 {
     let Some(tb) = f.turbulence.as_deref().filter(|t| t.on) else {
         return optical;
@@ -101,10 +107,23 @@ fn stirred(f: &FogDesc, origin: DVec3, dir: DVec3, d: f64, optical: f64) -> f64 
     if !d.is_finite() || d >= FAR {
         return optical;
     }
+    let fall = (-d / f.distance).exp();
+    // `reach` is at least 1, so near rays need not compute it.
+    if fall <= NEGLIGIBLE {
+        let bound = super::noise::turbulence_bound(tb.octaves, tb.omega);
+        let reach = (tb.depth.abs() * bound).max(1.0);
+        if reach * fall <= NEGLIGIBLE {
+            return optical;
+        }
+    }
     let p = tb.amount * (origin + dir * (d * 0.5));
     let t = super::noise::turbulence(p, tb.octaves, tb.omega, tb.lambda, tb.noise_generator);
-    optical * (1.0 - (tb.depth * t).min(1.0) * (-d / f.distance).exp())
+    optical * (1.0 - (tb.depth * t).min(1.0) * fall)
 }
+
+/// 2^-55: 1 − x and 1 + x round to 1 for any |x| up to here (half an ulp of 1 from below
+/// is 2^-54).
+const NEGLIGIBLE: f64 = 1.0 / (1u64 << 55) as f64;
 
 /// A rainbow's colour for a ray going `dir` (unit); None where the ray misses the rainbow.
 fn rainbow_color(rb: &RainbowDesc, dir: DVec3) -> Option<Rgbft> {
@@ -178,4 +197,75 @@ fn ground_depth(f: &FogDesc, origin: DVec3, dir: DVec3, d: f64) -> f64 {
         return d * density;
     }
     d * (integral(h1) - integral(h0)) / (h1 - h0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::atmosphere::FogTurbulence;
+
+    /// The formula `stirred` skips the turbulence of, computed in full.
+    fn stirred_in_full(f: &FogDesc, origin: DVec3, dir: DVec3, d: f64, optical: f64) -> f64 {
+        let tb = f.turbulence.as_deref().unwrap();
+        let p = tb.amount * (origin + dir * (d * 0.5));
+        let t = crate::render::noise::turbulence(
+            p,
+            tb.octaves,
+            tb.omega,
+            tb.lambda,
+            tb.noise_generator,
+        );
+        optical * (1.0 - (tb.depth * t).min(1.0) * (-d / f.distance).exp())
+    }
+
+    /// Far rays, whose turbulence is not computed, and near ones get the full formula's bits,
+    /// for depths and omegas of both signs and large, every generator and a fog distance
+    /// around the point where the shortcut starts.
+    #[test]
+    fn far_fog_without_turbulence_is_the_formula() {
+        let mut skipped = 0;
+        for (depth, omega, octaves, g) in [
+            (0.5, 0.5, 6, 2),
+            (-3.0, 0.7, 10, 1),
+            (40.0, 2.5, 10, 3),
+            (1e6, 1.3, 4, 2),
+            (0.0, 0.5, 6, 2),
+        ] {
+            let f = FogDesc {
+                distance: 50.0,
+                turbulence: Some(Box::new(FogTurbulence {
+                    on: true,
+                    amount: DVec3::new(1.8, 1.8, 1.8),
+                    depth,
+                    octaves,
+                    omega,
+                    lambda: 2.0,
+                    noise_generator: g,
+                })),
+                ..FogDesc::default()
+            };
+            for n in 0..3_000 {
+                let t = n as f64 * 0.731;
+                let origin = DVec3::new(t.sin() * 3.0, 1.0, t.cos() * 2.0 - 3.0);
+                let dir = DVec3::new((t * 0.3).sin(), (t * 0.7).cos(), 0.5).normalize();
+                // From 1 to about 10^5: across exp(-d/50) ~ 2^-55 and far beyond.
+                let d = 10f64.powf(n as f64 / 600.0);
+                let optical = d * 0.37;
+                let full = stirred_in_full(&f, origin, dir, d, optical);
+                let got = stirred(&f, origin, dir, d, optical);
+                assert_eq!(
+                    got.to_bits(),
+                    full.to_bits(),
+                    "d {d} depth {depth} omega {omega}"
+                );
+                let tb = f.turbulence.as_deref().unwrap();
+                let reach = (tb.depth.abs()
+                    * crate::render::noise::turbulence_bound(tb.octaves, tb.omega))
+                .max(1.0);
+                skipped += usize::from(reach * (-d / f.distance).exp() <= NEGLIGIBLE);
+            }
+        }
+        // The shortcut is taken for a good share of the rays.
+        assert!(skipped > 3_000, "{skipped}");
+    }
 }

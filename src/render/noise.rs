@@ -257,6 +257,22 @@ pub fn turbulence(p: DVec3, octaves: u32, omega: f64, lambda: f64, generator: u8
     sum
 }
 
+/// A bound on |`turbulence(p, octaves, omega, _, generator)`| over every point (a NaN or
+/// infinite point gives NaN), for any lambda and generator: the first octave is clipped to
+/// [0, 1], every other one is at most `x` (generator 2's map of the lattice's bound, which
+/// also covers generator 1's [0, 1] and generator 3's [-1/2, 3/2]) times its weight |ω|^i;
+/// doubled for rounding. Infinite or NaN for an infinite or NaN omega.
+pub fn turbulence_bound(octaves: u32, omega: f64) -> f64 {
+    let omega = (omega as f32 as f64).abs();
+    let x = 2.0 * (GEN2_A + GEN2_B * (0.5 + noise_lattice::SCALAR_BOUND)) + 0.5;
+    let (mut sum, mut weight) = (1.0, 1.0);
+    for _ in 1..octaves.clamp(1, 10) {
+        weight *= omega;
+        sum += weight * x;
+    }
+    2.0 * sum
+}
+
 /// `turbulence` at a normal's four samples, the lattice walks of all their octaves together
 /// (the same values: each sum in the same order).
 pub fn turbulence4(
@@ -425,6 +441,35 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// `turbulence_bound` bounds scalar turbulence at scattered points for every generator,
+    /// octave count and a spread of omegas (the lattice's own bound is checked at its extreme
+    /// corners in noise_lattice's tests).
+    #[test]
+    fn turbulence_stays_within_its_bound() {
+        for n in 0..4_000 {
+            let t = n as f64 * 0.377;
+            let p = DVec3::new(t.sin() * 300.0, t * 0.91 - 700.0, (t * 0.3).cos() * 70.0);
+            for g in [1, 2, 3] {
+                for (oct, om) in [
+                    (1, 0.5),
+                    (6, 0.5),
+                    (10, 0.9),
+                    (4, 1.25),
+                    (10, 3.0),
+                    (7, -2.0),
+                ] {
+                    let v = turbulence(p, oct, om, 2.0, g);
+                    assert!(
+                        v.abs() <= turbulence_bound(oct, om),
+                        "{v} at {p} {g} {oct} {om}"
+                    );
+                }
+            }
+        }
+        assert!(turbulence_bound(6, f64::NAN).is_nan());
+        assert!(turbulence_bound(6, 1e300).is_infinite());
     }
 
     #[test]

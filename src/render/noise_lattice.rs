@@ -184,6 +184,27 @@ unsafe fn cell_avx(p: DVec3) -> Cell {
     }
 }
 
+/// A bound on |`scalar(p)`| for every point (a NaN or infinite point gives NaN): each of the
+/// eight corner terms is a weight in [0, 1] times ½e0 + e1·dx + e2·dy + e3·dz with every
+/// |d| ≤ 1, so the sum is at most 8 times the largest row's Σ|e|; doubled for rounding.
+/// Callers use it to prove that a noise cannot change a result (`fog::stirred`).
+pub const SCALAR_BOUND: f64 = scalar_bound();
+
+const fn scalar_bound() -> f64 {
+    let rows = rows();
+    let mut most = 0.0;
+    let mut i = 0;
+    while i < 256 {
+        let r = &rows[i].0;
+        let s = r[0].abs() + r[1].abs() + r[2].abs() + r[3].abs();
+        if s > most {
+            most = s;
+        }
+        i += 1;
+    }
+    16.0 * most
+}
+
 /// The lattice noise of component 0 (the scalar noise), in about [-0.5, 0.5]; 0.5 plus it
 /// is generator 1's unclipped value.
 #[inline]
@@ -610,6 +631,24 @@ pub fn vector_octaves(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 
 
 #[cfg(test)]
 mod tests {
+    /// `SCALAR_BOUND` holds at random points and at the points where the s-curve weights sit
+    /// on one corner (integer coordinates and just below them), where a term is largest.
+    #[test]
+    fn scalar_noise_stays_within_its_bound() {
+        let mut most: f64 = 0.0;
+        for n in 0..200_000 {
+            let t = n as f64 * 0.618_033_988_7;
+            let p = DVec3::new(t.sin() * 900.0, t * 0.37 - 5_000.0, (t * 0.71).cos() * 40.0);
+            most = most.max(scalar(p).abs());
+            let k = p.floor();
+            for q in [k, k - DVec3::splat(1e-9), k + DVec3::splat(0.5)] {
+                most = most.max(scalar(q).abs());
+            }
+        }
+        assert!(most <= SCALAR_BOUND, "{most} > {SCALAR_BOUND}");
+        const { assert!(SCALAR_BOUND < 100.0) };
+    }
+
     use super::*;
 
     /// The original formulation: one scalar chain per corner and component, read straight

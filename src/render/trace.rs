@@ -452,11 +452,8 @@ impl<'a> Tracer<'a> {
             }));
         }
         let top = obj.texture_facing(h, !entering);
-        let uv = if top.uses_uv() {
-            obj.uv_point(p, h)
-        } else {
-            None
-        };
+        let [uses_uv, bumpy, lit] = texture_facts(top, ctx);
+        let uv = if uses_uv { obj.uv_point(p, h) } else { None };
         if !q.lighting {
             return Seen {
                 rgb: texture_map::color_at(top, p, uv, q.quick_colors).rgb,
@@ -466,13 +463,13 @@ impl<'a> Tracer<'a> {
         // Per hit, not per light or layer.
         let mirror = reflect(dir, nf);
         // A perturbed normal may face lights the surface itself turns away from; POV-Ray
-        // lights them (measured: a light just behind a plane whose normal leans towards it).
-        let bumpy = normal::texture_perturbs(top);
+        // lights them (measured: a light just behind a plane whose normal leans towards it):
+        // `bumpy`, whether any part of the texture perturbs the normal.
         if self.rad.is_some_and(|r| r.probe) && path.rad_level == 0 {
             // A radiosity pretrace pass keeps the samples its camera rays gather, not their
             // colour: the lights of what they meet do not matter.
             ctx.lit.clear();
-        } else if !texture_map::lit_by_lights(top) {
+        } else if !lit {
             // No layer would add anything per light (a sky dome's `diffuse 0`): no shadow
             // rays. Nothing but `layer_light` reads the gathered lights, this hit's layers
             // only (`irradiance` keeps them from the gathering rays' hits).
@@ -690,6 +687,26 @@ impl<'a> Tracer<'a> {
         }
         Seen { rgb: col, clear }
     }
+}
+
+/// Three facts about a texture that each walk all its layers and entries: whether any part
+/// is uv-mapped, perturbs the normal, and takes light from light sources
+/// (`texture_map::lit_by_lights`). Remembered for the last texture shaded in `ctx`: most
+/// hits in a row are on one texture, and a big texture_map's walks were a fifth of
+/// textures/pigments/skies/stars.
+fn texture_facts<'a>(top: &'a Texture, ctx: &mut TraceCtx<'a>) -> [bool; 3] {
+    if let Some((t, facts)) = ctx.last_texture {
+        if std::ptr::eq(t, top) {
+            return facts;
+        }
+    }
+    let facts = [
+        top.uses_uv(),
+        normal::texture_perturbs(top),
+        texture_map::lit_by_lights(top),
+    ];
+    ctx.last_texture = Some((top, facts));
+    facts
 }
 
 /// A reflected colour raised to a reflection `exponent`'s power (per channel, negative

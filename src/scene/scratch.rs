@@ -6,6 +6,7 @@
 
 use crate::geom::Hit;
 use crate::math::DVec3;
+use crate::scene::desc::Texture;
 use crate::scene::media::{Media, Scattering};
 use crate::scene::object::{Object, SurfaceHit};
 
@@ -61,6 +62,11 @@ pub struct Scratch<'a> {
     pub media_piece: Vec<usize>,
     /// At one media sample: each scattering media's density, with its scattering.
     pub media_scatter: Vec<(DVec3, Scattering)>,
+    /// The texture last shaded with facts about it that walk its whole tree (render::trace's
+    /// `TextureFacts`): a star field's nested texture_maps cost two walks of every entry per
+    /// hit otherwise. Held by reference, so while the scene lives no other texture can have
+    /// its address.
+    pub last_texture: Option<(&'a Texture, [bool; 3])>,
 }
 
 /// A light reaching the point being shaded, after shadows.
