@@ -374,6 +374,21 @@ pub(crate) fn xorshift_unit(mut seed: u64) -> impl FnMut() -> f64 {
     }
 }
 
+/// Whether the CPU has AVX, for the paths built with `#[target_feature(enable = "avx")]` (the
+/// build targets x86-64-v2, which lacks it): the noise lattice and the julia orbits. std
+/// caches the CPU query.
+#[inline(always)]
+pub fn has_avx() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        std::arch::is_x86_feature_detected!("avx")
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

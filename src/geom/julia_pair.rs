@@ -9,7 +9,7 @@
 //! decided goes on iterating unread (an escaped one may overflow, harmlessly).
 
 use super::{qnorm, qnorm_sq, Julia, JuliaFn, Orbit, KEEP, Q};
-use crate::math::DVec3;
+use crate::math::{has_avx, DVec3};
 
 /// One number per lane; the element-wise operations vectorise to SSE2.
 #[derive(Clone, Copy)]
@@ -219,11 +219,4 @@ impl Julia {
 #[target_feature(enable = "avx")]
 unsafe fn inside4_avx<const CUBE: bool>(j: &Julia, h: [Q; 4]) -> [bool; 4] {
     j.inside_n::<4, CUBE>(h)
-}
-
-/// Whether the AVX orbits may run (std caches the CPU query).
-#[cfg(target_arch = "x86_64")]
-#[inline(always)]
-fn has_avx() -> bool {
-    std::arch::is_x86_feature_detected!("avx")
 }

@@ -12,7 +12,7 @@
 //! register; without it the same lanes are plain arrays. The scalar noise (bozo, granite,
 //! wrinkles) puts four corners in the lanes instead and sums their terms in corner order.
 
-use crate::math::DVec3;
+use crate::math::{has_avx, DVec3};
 
 use super::noise_data::{ENTRY, HASH_OFFSET, HASH_X, HASH_Y, HASH_Z};
 
@@ -451,19 +451,6 @@ unsafe fn vector_avx(c: &Cell) -> [f64; 3] {
     }
 }
 
-/// Whether the AVX path may run (std caches the CPU query).
-#[inline(always)]
-fn has_avx() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    {
-        std::arch::is_x86_feature_detected!("avx")
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        false
-    }
-}
-
 /// POV-Ray's vector noise: the lattice noise of components 0, 4 and 8 places on.
 #[inline]
 pub fn vector(p: DVec3) -> DVec3 {
@@ -631,6 +618,8 @@ pub fn vector_octaves(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 
 
 #[cfg(test)]
 mod tests {
+    use super::*;
+
     /// `SCALAR_BOUND` holds at random points and at the points where the s-curve weights sit
     /// on one corner (integer coordinates and just below them), where a term is largest.
     #[test]
@@ -648,8 +637,6 @@ mod tests {
         assert!(most <= SCALAR_BOUND, "{most} > {SCALAR_BOUND}");
         const { assert!(SCALAR_BOUND < 100.0) };
     }
-
-    use super::*;
 
     /// The original formulation: one scalar chain per corner and component, read straight
     /// from ENTRY.

@@ -501,11 +501,7 @@ impl Blend {
         level: u32,
         bound: f64,
     ) {
-        if let Some(w) = weight(s, p, n, level, bound) {
-            self.sum += irr * w;
-            self.weight += w;
-            self.count += 1;
-        }
+        self.take(irr, weight(s, p, n, level, bound));
     }
 
     /// `add` for a sample of a `near_memo` list, whose level and normal passed `weight`'s
@@ -520,7 +516,13 @@ impl Blend {
         bound: f64,
         nerr: f64,
     ) {
-        if let Some(w) = weight_listed(s, p, n, bound, nerr) {
+        self.take(irr, weight_listed(s, p, n, bound, nerr));
+    }
+
+    /// Counts a sample of irradiance `irr` in with its weight, where it has one.
+    #[inline(always)]
+    fn take(&mut self, irr: DVec3, w: Option<f64>) {
+        if let Some(w) = w {
             self.sum += irr * w;
             self.weight += w;
             self.count += 1;

@@ -63,7 +63,7 @@ pub struct Scratch<'a> {
     /// At one media sample: each scattering media's density, with its scattering.
     pub media_scatter: Vec<(DVec3, Scattering)>,
     /// The texture last shaded with facts about it that walk its whole tree (render::trace's
-    /// `TextureFacts`): a star field's nested texture_maps cost two walks of every entry per
+    /// `texture_facts`): a star field's nested texture_maps cost two walks of every entry per
     /// hit otherwise. Held by reference, so while the scene lives no other texture can have
     /// its address.
     pub last_texture: Option<(&'a Texture, [bool; 3])>,
