@@ -194,7 +194,25 @@ pub(super) fn member_hits<'a>(
                 });
             }
         }
-        None => c.all_hits(ray, tmax, s),
+        // A leaf without clipping or window, the common member: `all_hits`'s own steps for
+        // it, here in the search's loop instead of through the general function's frame and
+        // its tests for clips, windows and nodes (the same calls and arithmetic).
+        None => match &c.kind {
+            ObjKind::Shape(shape, None) if c.clip.is_empty() => {
+                let mut local = None;
+                let r = c.local_ray(ray, &mut local);
+                s.hits.clear();
+                shape.intersect_all(r, &mut s.hits);
+                s.surface
+                    .extend(s.hits.iter().filter(|h| h.t < tmax).map(|&hit| SurfaceHit {
+                        t: hit.t,
+                        obj: c,
+                        hit,
+                        flip: c.inverse,
+                    }));
+            }
+            _ => c.all_hits(ray, tmax, s),
+        },
     }
 }
 
@@ -490,7 +508,28 @@ impl Object {
         }
     }
 
+    /// Whether `p` is inside this object (`inverse` and `clipped_by` applied).
+    #[inline]
     pub fn inside(&self, p: DVec3) -> bool {
+        // A leaf without clipping, the common CSG member: answered inline in the callers'
+        // loops (`csg_keeps`), without the frame of the recursive function below. The same
+        // tests as there: its bounds, the point in object space, the shape's own test.
+        if let (ObjKind::Shape(s, _), true) = (&self.kind, self.clip.is_empty()) {
+            if !self.bounds.contains(p) {
+                return self.inverse;
+            }
+            let lp = match &self.transform {
+                Some(t) => t.inv_point(p),
+                None => p,
+            };
+            return s.inside(lp) != self.inverse;
+        }
+        self.inside_node(p)
+    }
+
+    /// `inside` of a CSG node or a clipped leaf.
+    #[inline(never)]
+    fn inside_node(&self, p: DVec3) -> bool {
         // Bounds enclose the (un-inverted) solid, so outside them the answer is known.
         if !self.bounds.contains(p) {
             return self.inverse;
