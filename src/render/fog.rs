@@ -96,10 +96,11 @@ fn depth_along(f: &FogDesc, origin: DVec3, dir: DVec3, d: f64) -> f64 {
 /// point. Without the keyword nothing changes; with it, even <0,0,0> (T at the origin) does.
 ///
 /// Far along a ray the factor is exactly 1 and T is not computed: |min(turb_depth·T, 1)| is
-/// at most `reach` (from `noise::turbulence_bound`), so when reach·exp(−d/distance) is at
-/// most 2^-55 the rounded product is too, and 1 minus a number that small rounds to 1 (a
-/// sky plane 10000 away under a fog of distance 50: exp(−200)). NaN or infinite bounds fail
-/// the test and take the full formula.
+/// at most the fog's `reach` (max(1, |turb_depth|·`noise::turbulence_bound`), computed once
+/// per fog when the scene is built), so when reach·exp(−d/distance) is at most 2^-55 the
+/// rounded product is too, and 1 minus a number that small rounds to 1 (a sky plane 10000
+/// away under a fog of distance 50: exp(−200)). An infinite reach fails the test and takes
+/// the full formula; a NaN bound leaves reach 1, which still bounds min(NaN·…, 1) = 1.
 fn stirred(f: &FogDesc, origin: DVec3, dir: DVec3, d: f64, optical: f64) -> f64 {
     let Some(tb) = f.turbulence.as_deref().filter(|t| t.on) else {
         return optical;
@@ -108,13 +109,8 @@ fn stirred(f: &FogDesc, origin: DVec3, dir: DVec3, d: f64, optical: f64) -> f64 
         return optical;
     }
     let fall = (-d / f.distance).exp();
-    // `reach` is at least 1, so near rays need not compute it.
-    if fall <= NEGLIGIBLE {
-        let bound = super::noise::turbulence_bound(tb.octaves, tb.omega);
-        let reach = (tb.depth.abs() * bound).max(1.0);
-        if reach * fall <= NEGLIGIBLE {
-            return optical;
-        }
+    if tb.reach * fall <= NEGLIGIBLE {
+        return optical;
     }
     let p = tb.amount * (origin + dir * (d * 0.5));
     let t = super::noise::turbulence(p, tb.octaves, tb.omega, tb.lambda, tb.noise_generator);
@@ -231,17 +227,20 @@ mod tests {
             (1e6, 1.3, 4, 2),
             (0.0, 0.5, 6, 2),
         ] {
+            let mut tb = FogTurbulence {
+                on: true,
+                amount: DVec3::new(1.8, 1.8, 1.8),
+                depth,
+                octaves,
+                omega,
+                lambda: 2.0,
+                noise_generator: g,
+                reach: f64::INFINITY,
+            };
+            tb.set_reach();
             let f = FogDesc {
                 distance: 50.0,
-                turbulence: Some(Box::new(FogTurbulence {
-                    on: true,
-                    amount: DVec3::new(1.8, 1.8, 1.8),
-                    depth,
-                    octaves,
-                    omega,
-                    lambda: 2.0,
-                    noise_generator: g,
-                })),
+                turbulence: Some(Box::new(tb)),
                 ..FogDesc::default()
             };
             for n in 0..3_000 {
@@ -258,10 +257,7 @@ mod tests {
                     full.to_bits(),
                     "d {d} depth {depth} omega {omega}"
                 );
-                let tb = f.turbulence.as_deref().unwrap();
-                let reach = (tb.depth.abs()
-                    * crate::render::noise::turbulence_bound(tb.octaves, tb.omega))
-                .max(1.0);
+                let reach = f.turbulence.as_deref().unwrap().reach;
                 skipped += usize::from(reach * (-d / f.distance).exp() <= NEGLIGIBLE);
             }
         }

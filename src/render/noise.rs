@@ -257,21 +257,14 @@ pub fn turbulence(p: DVec3, octaves: u32, omega: f64, lambda: f64, generator: u8
     sum
 }
 
-/// A bound on |`turbulence(p, octaves, omega, _, generator)`| over every point (a NaN or
-/// infinite point gives NaN), for any lambda and generator: the first octave is clipped to
-/// [0, 1], every other one is at most `x` (generator 2's map of the lattice's bound, which
-/// also covers generator 1's [0, 1] and generator 3's [-1/2, 3/2]) times its weight |ω|^i;
-/// doubled for rounding. Infinite or NaN for an infinite or NaN omega.
-pub fn turbulence_bound(octaves: u32, omega: f64) -> f64 {
-    let omega = (omega as f32 as f64).abs();
-    let x = 2.0 * (GEN2_A + GEN2_B * (0.5 + noise_lattice::SCALAR_BOUND)) + 0.5;
-    let (mut sum, mut weight) = (1.0, 1.0);
-    for _ in 1..octaves.clamp(1, 10) {
-        weight *= omega;
-        sum += weight * x;
-    }
-    2.0 * sum
-}
+pub use crate::scene::atmosphere::turbulence_bound;
+
+// The scene layer's octave bound (`turbulence_bound`'s) is generator 2's map of the lattice's
+// bound computed from the table, to the bit.
+const _: () = assert!(
+    2.0 * (GEN2_A + GEN2_B * (0.5 + noise_lattice::SCALAR_BOUND)) + 0.5
+        == crate::scene::atmosphere::TURBULENCE_OCTAVE_BOUND
+);
 
 /// `turbulence` at a normal's four samples, the lattice walks of all their octaves together
 /// (the same values: each sum in the same order).

@@ -14,7 +14,7 @@ use std::f64::consts::{PI, TAU};
 use crate::math::DVec3;
 use crate::scene::pattern::{Pattern, PatternKind, Slope, Wave};
 
-use super::fractal::{fractal, fractal2_lanes, magnet_lanes};
+use super::fractal::{fractal, fractal2_lanes4, magnet_lanes4};
 use super::noise;
 use super::pattern_wrap::{fmod, rem_euclid};
 use super::warp;
@@ -406,14 +406,14 @@ fn tri(v: f64) -> f64 {
 pub fn values_warped4(pat: &Pattern, qs: [DVec3; 4]) -> [f64; 4] {
     if let PatternKind::Fractal(f) = &pat.kind {
         if f.magnet != 0 {
-            return magnet_lanes(f, qs.map(|q| (q.x, q.y))).map(|v| shape(pat, v));
+            return magnet_lanes4(f, qs.map(|q| (q.x, q.y))).map(|v| shape(pat, v));
         }
         if f.exponent == 2 {
             let ps = qs.map(|q| (q.x, q.y));
             let raw = if f.interior.0 == 1 {
-                fractal2_lanes::<true, 4>(f, ps)
+                fractal2_lanes4::<true>(f, ps)
             } else {
-                fractal2_lanes::<false, 4>(f, ps)
+                fractal2_lanes4::<false>(f, ps)
             };
             return raw.map(|v| shape(pat, v));
         }
@@ -503,7 +503,14 @@ fn brick(q: DVec3, size: DVec3, mortar: f64) -> usize {
         return 1;
     }
     let row = (q.y / size.y).floor();
-    let odd = rem_euclid(row, 2.0) != 0.0;
+    // `rem_euclid(row, 2.0) != 0.0` for the whole number `row` without a remainder: its
+    // integer parity, finite rows past 2^53 even (remainder 0), and NaN or infinite rows odd
+    // (their remainder is NaN, which is not 0).
+    let odd = if row.abs() < 9.0e18 {
+        row as i64 & 1 != 0
+    } else {
+        !row.is_finite()
+    };
     let x = if odd { q.x + size.x / 2.0 } else { q.x };
     let z = if odd { q.z } else { q.z + size.z / 2.0 };
     let xm = rem_euclid(x, size.x);

@@ -35,6 +35,41 @@ pub struct FogTurbulence {
     pub omega: f64,
     pub lambda: f64,
     pub noise_generator: u8,
+    /// max(1, |depth|·`turbulence_bound(octaves, omega)`): the most |min(depth·T, 1)| can be,
+    /// T the fog's turbulence anywhere (render::fog::stirred skips T where this times the
+    /// ray's fall-off is negligible). Set by the scene build (`set_reach`) once the other
+    /// fields are final; infinite, which never skips, until then.
+    pub reach: f64,
+}
+
+impl FogTurbulence {
+    /// Fills `reach` from the other fields (once per fog, when the scene is built, rather
+    /// than on every far ray).
+    pub fn set_reach(&mut self) {
+        self.reach = (self.depth.abs() * turbulence_bound(self.octaves, self.omega)).max(1.0);
+    }
+}
+
+/// The most one octave after the first of scalar turbulence can be in magnitude, before its
+/// weight: generator 2's map of the lattice noise's bound, 2·(a + b·(1/2 + bound)) + 1/2,
+/// which also covers generator 1's [0, 1] and generator 3's [−1/2, 3/2]. A number here so
+/// that the scene layer can bound a fog's turbulence without the renderer's tables;
+/// render::noise asserts at compile time that it is that value computed from the lattice's
+/// table (noise_lattice::SCALAR_BOUND), to the bit.
+pub const TURBULENCE_OCTAVE_BOUND: f64 = 48.24161077991952;
+
+/// A bound on |turbulence(p, octaves, omega, _, generator)| (render::noise) over every point,
+/// for any lambda and generator: the first octave is clipped to [0, 1], every other one is at
+/// most `TURBULENCE_OCTAVE_BOUND` times its weight |ω|^i; doubled for rounding. Infinite or
+/// NaN for an infinite or NaN omega.
+pub fn turbulence_bound(octaves: u32, omega: f64) -> f64 {
+    let omega = (omega as f32 as f64).abs();
+    let (mut sum, mut weight) = (1.0, 1.0);
+    for _ in 1..octaves.clamp(1, 10) {
+        weight *= omega;
+        sum += weight * TURBULENCE_OCTAVE_BOUND;
+    }
+    2.0 * sum
 }
 
 impl Default for FogTurbulence {
@@ -47,6 +82,7 @@ impl Default for FogTurbulence {
             omega: 0.5,
             lambda: 2.0,
             noise_generator: 2,
+            reach: f64::INFINITY,
         }
     }
 }

@@ -185,6 +185,7 @@ fn build_from<O: std::borrow::Borrow<ObjectDesc>>(
                 };
                 if let Some(tb) = &mut f.turbulence {
                     tb.noise_generator = desc.global.noise_generator;
+                    tb.set_reach();
                 }
                 // A rainbow's direction unit and its up perpendicular to it, once per scene.
                 if let Some(rb) = &mut f.rainbow {
