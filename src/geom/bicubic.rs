@@ -33,6 +33,16 @@ fn bernstein(t: f64) -> ([f64; 4], [f64; 4]) {
 
 /// The point and partial derivatives at (u, v); `p[row * 4 + col]`, u runs along a row.
 fn eval(p: &[DVec3; 16], u: f64, v: f64) -> (DVec3, DVec3, DVec3) {
+    #[cfg(target_arch = "x86_64")]
+    if crate::math::has_avx() {
+        // SAFETY: the CPU has AVX (checked just above).
+        return unsafe { eval_avx(p, u, v) };
+    }
+    eval_scalar(p, u, v)
+}
+
+/// `eval` one coordinate at a time: the sums of `eval_avx`, lane by lane.
+fn eval_scalar(p: &[DVec3; 16], u: f64, v: f64) -> (DVec3, DVec3, DVec3) {
     let (bu, du) = bernstein(u);
     let (bv, dv) = bernstein(v);
     let (mut s, mut su, mut sv) = (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO);
@@ -45,6 +55,43 @@ fn eval(p: &[DVec3; 16], u: f64, v: f64) -> (DVec3, DVec3, DVec3) {
         }
     }
     (s, su, sv)
+}
+
+/// `eval_scalar` with the point and both derivatives side by side in the lanes of one
+/// 256-bit register per coordinate (the fourth lane unread): a weight product and a
+/// product-and-sum per control point and coordinate become one instruction for all three
+/// (the tessellation evaluates 66,049 points for a patch of 8 × 8 steps). The same IEEE
+/// operations in the same order lane by lane (AVX, no FMA), so the same bits.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+unsafe fn eval_avx(p: &[DVec3; 16], u: f64, v: f64) -> (DVec3, DVec3, DVec3) {
+    use std::arch::x86_64::{
+        _mm256_add_pd, _mm256_mul_pd, _mm256_set1_pd, _mm256_set_pd, _mm256_setzero_pd,
+        _mm256_storeu_pd,
+    };
+    let (bu, du) = bernstein(u);
+    let (bv, dv) = bernstein(v);
+    // Lanes (s, su, sv, sv): the weights `bu[c]·bv[r]`, `du[c]·bv[r]` and `bu[c]·dv[r]`
+    // (the fourth lane repeats the third rather than holding a zero: LLVM builds a zero lane
+    // with a register `vmovq` that valgrind 3.19 cannot run).
+    let wc: [_; 4] = std::array::from_fn(|c| _mm256_set_pd(bu[c], bu[c], du[c], bu[c]));
+    let mut acc = [_mm256_setzero_pd(); 3];
+    for r in 0..4 {
+        let wr = _mm256_set_pd(dv[r], dv[r], bv[r], bv[r]);
+        for (c, &wc) in wc.iter().enumerate() {
+            let w = _mm256_mul_pd(wc, wr);
+            let q = p[r * 4 + c];
+            for (a, x) in acc.iter_mut().zip([q.x, q.y, q.z]) {
+                *a = _mm256_add_pd(*a, _mm256_mul_pd(_mm256_set1_pd(x), w));
+            }
+        }
+    }
+    let mut out = [[0.0; 4]; 3];
+    for (o, a) in out.iter_mut().zip(acc) {
+        _mm256_storeu_pd(o.as_mut_ptr(), a);
+    }
+    let lane = |k: usize| DVec3::new(out[0][k], out[1][k], out[2][k]);
+    (lane(0), lane(1), lane(2))
 }
 
 /// `normal_from` with the derivatives evaluated here.
@@ -97,6 +144,25 @@ mod tests {
 
     fn flat() -> [DVec3; 16] {
         std::array::from_fn(|k| DVec3::new((k % 4) as f64, (k / 4) as f64, 0.0))
+    }
+
+    /// The AVX evaluation gives `eval_scalar`'s bits (where the CPU has AVX).
+    #[test]
+    fn avx_eval_is_the_scalar_one() {
+        let mut rng = crate::geom::test_rng::Lcg(11);
+        for _ in 0..200 {
+            let p: [DVec3; 16] = std::array::from_fn(|_| rng.vec(3.0));
+            for _ in 0..50 {
+                let (u, v) = (rng.next(), rng.next());
+                let (a, b) = (eval(&p, u, v), eval_scalar(&p, u, v));
+                for (x, y) in [(a.0, b.0), (a.1, b.1), (a.2, b.2)] {
+                    assert_eq!(
+                        x.to_array().map(f64::to_bits),
+                        y.to_array().map(f64::to_bits)
+                    );
+                }
+            }
+        }
     }
 
     #[test]

@@ -6,8 +6,12 @@
 //! doing exactly the operations of `Julia::quaternion_orbit` in the same order (the same
 //! products and sums, no fused multiply-add, no reassociation), so each lane's answer is the
 //! lone orbit's to the bit. The lanes run in lockstep until all have decided; a lane that has
-//! decided goes on iterating unread (an escaped one may overflow, harmlessly).
+//! decided goes on iterating unread (an escaped one may overflow, harmlessly). Where the CPU
+//! has AVX, quaternion orbits of up to four lanes go to `julia_avx.rs` instead (the same
+//! operations, one 256-bit register per component); the code here serves the rest.
 
+#[cfg(target_arch = "x86_64")]
+use super::avx;
 use super::{qnorm, qnorm_sq, Julia, JuliaFn, Orbit, KEEP, Q};
 use crate::math::{has_avx, DVec3};
 
@@ -89,9 +93,9 @@ impl Julia {
             // SAFETY: the CPU has AVX (checked just above).
             let ins = unsafe {
                 if self.func == JuliaFn::Cube {
-                    inside4_avx::<true>(self, h)
+                    avx::inside4::<true>(self, h)
                 } else {
-                    inside4_avx::<false>(self, h)
+                    avx::inside4::<false>(self, h)
                 }
             };
             return std::array::from_fn(|i| ins[i]);
@@ -108,6 +112,26 @@ impl Julia {
     /// `p.map(|p| self.orbit(p))`, the orbits run side by side where they are quaternion
     /// ones.
     pub(super) fn orbit_n<const N: usize>(&self, p: [DVec3; N]) -> [Orbit; N] {
+        #[cfg(target_arch = "x86_64")]
+        if (1..=4).contains(&N) && self.algebra == super::Algebra::Quaternion && has_avx() {
+            // Unused lanes repeat the last point: they decide with it and add no iteration.
+            let h: [Q; 4] = std::array::from_fn(|i| self.lift(p[i.min(N - 1)]).0);
+            // SAFETY: the CPU has AVX (checked just above).
+            let (out, r, dr) = unsafe {
+                if self.func == JuliaFn::Cube {
+                    avx::orbits4::<true>(self, h)
+                } else {
+                    avx::orbits4::<false>(self, h)
+                }
+            };
+            return std::array::from_fn(|i| {
+                if out >> i & 1 == 1 {
+                    Orbit::Outside { r: r[i], dr: dr[i] }
+                } else {
+                    Orbit::Inside
+                }
+            });
+        }
         match self.algebra {
             super::Algebra::Quaternion if self.func == JuliaFn::Cube => {
                 self.orbits_n::<N, true>(p.map(|p| self.lift(p).0))
@@ -209,14 +233,4 @@ impl Julia {
         }
         std::array::from_fn(|i| out >> i & 1 == 0)
     }
-}
-
-/// The bisection's four orbits with AVX: each `V<4>` is one 256-bit register, so a lane-wise
-/// product or sum is one instruction instead of two SSE2 ones and the lanes are not moved
-/// between register halves. The same IEEE operations lane by lane in the same order (AVX, not
-/// FMA: nothing is fused), so the same bits as `inside_n` built for SSE2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-unsafe fn inside4_avx<const CUBE: bool>(j: &Julia, h: [Q; 4]) -> [bool; 4] {
-    j.inside_n::<4, CUBE>(h)
 }

@@ -595,3 +595,49 @@ fn paired_orbits_answer_as_lone_ones() {
         assert!(inside > 1000, "{c:?}: {inside}");
     }
 }
+
+/// The AVX lanes (`avx::tangents`, `avx::inside4`, `avx::orbits4`) give the scalar code's bits:
+/// the tangents of the normal, and four distinct orbits side by side.
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn avx_lanes_are_the_scalar_code() {
+    if !crate::math::has_avx() {
+        return;
+    }
+    let mut rng = crate::geom::test_rng::Lcg(17);
+    for (c, func) in [
+        ([-0.083, 0.0, -0.83, -0.025], JuliaFn::Sqr),
+        ([-0.03, 0.5, -0.2, -0.5], JuliaFn::Cube),
+        (FRACTAL3, JuliaFn::Sqr),
+    ] {
+        let j = julia(c, Algebra::Quaternion, func, 8, 20.0);
+        for _ in 0..5000 {
+            let p: [DVec3; 4] = std::array::from_fn(|_| rng.vec(2.5));
+            let h = p.map(|p| j.lift(p).0);
+            let (axes, n) = (j.lift(p[0]).1, 1 + (rng.next() * 10.0) as u32);
+            let want = j.tangents(h[0], axes, n);
+            // SAFETY: the CPU has AVX (checked above).
+            let got = unsafe {
+                if func == JuliaFn::Cube {
+                    super::avx::tangents::<true>(&j, h[0], axes, n)
+                } else {
+                    super::avx::tangents::<false>(&j, h[0], axes, n)
+                }
+            };
+            // Any NaN as one (escaped orbits overflow; the normal then falls back to p).
+            let b = |x: f64| if x.is_nan() { 1 } else { x.to_bits() };
+            let bits = |(h, t): (Q, [Q; 3])| (h.map(b), t.map(|q| q.map(b)));
+            assert_eq!(bits(got), bits(want), "{c:?} at {p:?}");
+            assert_eq!(j.is_in_n(p), p.map(|p| j.is_in(p)), "{c:?} at {p:?}");
+            let lone = p.map(|p| j.orbit(p));
+            let four = j.orbit_n(p);
+            for (a, b) in four.iter().zip(&lone) {
+                let key = |o: &Orbit| match *o {
+                    Orbit::Inside => None,
+                    Orbit::Outside { r, dr } => Some((r.to_bits(), dr.to_bits())),
+                };
+                assert_eq!(key(a), key(b), "{c:?} at {p:?}");
+            }
+        }
+    }
+}

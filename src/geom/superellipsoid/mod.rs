@@ -162,6 +162,17 @@ impl Superellipsoid {
     fn field(&self, p: DVec3) -> Field {
         let (x, y, z) = (p.x.abs(), p.y.abs(), p.z.abs());
         let m = x.max(y);
+        // Outside the unit box (the samples at the ray's entry into the searched box and at
+        // its exit lie on its faces, 1 + MARGIN out): `value` is not negative, without a
+        // power. With m > 1 (or |z| > 1) and an exponent k > 0, m^k is above 1, so its
+        // faithfully rounded power (glibc's, as `Power::of` and `near` assume) is at least 1,
+        // as are the other factor `(1 + r^a)^b` and their rounded product; the sum with the
+        // other, non-negative power is then at least 1, and less 1 at least 0. NaN compares
+        // false here and goes on as before. The tables (`around`) leave such points to the
+        // exact powers, two `pow` calls each.
+        if m > 1.0 || z > 1.0 {
+            return Field::Sign(false);
+        }
         if m <= 0.0 || m.is_nan() {
             return Field::Value(self.value(p));
         }
@@ -562,9 +573,16 @@ mod tests {
                 let s = Superellipsoid::new(e, n);
                 for _ in 0..20_000 {
                     let p = DVec3::new(next(), next(), next()) * 2.0 - DVec3::ONE;
-                    // Half the points pulled onto the surface, where the sign is close.
+                    // Half the points pulled onto the surface, where the sign is close; some
+                    // put on a face of the searched box (1 + MARGIN out), where samples start
+                    // and end.
                     let p = if next() < 0.5 {
                         super::near::tests::on_surface(&s, p)
+                    } else if next() < 0.2 {
+                        let mut q = p.to_array();
+                        let k = (next() * 3.0) as usize % 3;
+                        q[k] = (1.0 + MARGIN).copysign(q[k]);
+                        DVec3::from_array(q)
                     } else {
                         p
                     };
