@@ -15,11 +15,8 @@
 use crate::math::{Aabb, DMat4, DVec3, Ray};
 use crate::scene::desc::CsgOp;
 use crate::scene::object::{ObjKind, Object};
+use polyhedron::polyhedron_box;
 
-/// Far beyond any scene: a polyhedron reaching this far is open on that side.
-const FAR: f64 = 1e9;
-/// More half-spaces than this and the vertex search (cubic in their number) is not tried.
-const MAX_PLANES: usize = 48;
 /// More half-spaces than this and a window is kept as a box (each plane costs a division per
 /// ray).
 const MAX_WINDOW_PLANES: usize = 12;
@@ -486,67 +483,6 @@ fn complement(o: &Object) -> Option<(DVec3, f64)> {
     (n.is_finite() && d.is_finite() && n != DVec3::ZERO).then_some((-n, -d))
 }
 
-/// The bounding box of {p : n·p <= d for every half-space}, padded; `None` when it cannot be
-/// found (too many planes, nothing finite, no vertex).
-fn polyhedron_box(planes: &[(DVec3, f64)]) -> Option<Aabb> {
-    if planes.is_empty() || planes.len() > MAX_PLANES {
-        return None;
-    }
-    // Normalised, so one tolerance fits every plane; a far cube closes open polyhedra.
-    let mut hs: Vec<(DVec3, f64)> = planes
-        .iter()
-        .map(|&(n, d)| {
-            let l = n.length();
-            (n / l, d / l)
-        })
-        .collect();
-    for n in [DVec3::X, DVec3::Y, DVec3::Z] {
-        hs.push((n, FAR));
-        hs.push((-n, FAR));
-    }
-    let scale = hs[..planes.len()]
-        .iter()
-        .map(|h| h.1.abs())
-        .fold(1.0, f64::max);
-    let tol = 1e-9 * scale;
-    let mut b = Aabb::EMPTY;
-    let m = hs.len();
-    for i in 0..m {
-        for j in i + 1..m {
-            let nij = hs[i].0.cross(hs[j].0);
-            for k in j + 1..m {
-                let det = nij.dot(hs[k].0);
-                if det.abs() < 1e-12 {
-                    continue;
-                }
-                // Cramer's rule for the point on all three planes.
-                let v = (hs[j].0.cross(hs[k].0) * hs[i].1
-                    + hs[k].0.cross(hs[i].0) * hs[j].1
-                    + nij * hs[k].1)
-                    / det;
-                if v.is_finite() && hs.iter().all(|&(n, d)| n.dot(v) <= d + tol) {
-                    b = b.grow(v);
-                }
-            }
-        }
-    }
-    if b.is_empty() {
-        return None;
-    }
-    let pad = DVec3::splat(1e-6 * scale) + (b.max - b.min) * 1e-6;
-    let (mut lo, mut hi) = (b.min - pad, b.max + pad);
-    // A side reaching the far cube is open.
-    for a in 0..3 {
-        if lo[a] < -0.5 * FAR {
-            lo[a] = f64::NEG_INFINITY;
-        }
-        if hi[a] > 0.5 * FAR {
-            hi[a] = f64::INFINITY;
-        }
-    }
-    Some(Aabb::new(lo, hi))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -639,24 +575,6 @@ mod tests {
         assert!(b.max.x > 1.0 && b.contains(r.transform_point3(DVec3::ONE)));
     }
 
-    #[test]
-    fn cube_and_open_slab() {
-        let mut planes = Vec::new();
-        for n in [DVec3::X, DVec3::Y, DVec3::Z] {
-            planes.push((n, 1.0));
-            planes.push((-n, 1.0));
-        }
-        let b = polyhedron_box(&planes).unwrap();
-        assert!((b.max - DVec3::ONE).abs().max_element() < 1e-5);
-        assert!(b.contains(DVec3::ONE) && b.contains(-DVec3::ONE));
-        // Only x is closed.
-        let b = polyhedron_box(&planes[..2]).unwrap();
-        assert!(b.max.x < 1.1 && b.min.x > -1.1);
-        assert!(b.max.y == f64::INFINITY && b.min.z == f64::NEG_INFINITY);
-        // Empty: x <= -1 and x >= 1.
-        assert!(polyhedron_box(&[(DVec3::X, -1.0), (-DVec3::X, -1.0)]).is_none());
-    }
-
     /// A difference's box leaves out what its subtracted planes take away, and answers every
     /// query as the node without a box does, bit for bit: blobs and spheres less planes
     /// (moved, rotated, scaled, inverted, one clipped, which does not count), with rays and
@@ -725,21 +643,10 @@ mod tests {
             assert!(hits > 30, "{hits}");
         }
     }
-
-    #[test]
-    fn tetrahedron_from_rotated_planes() {
-        // x, y, z >= 0 and x + y + z <= 1.
-        let planes = [
-            (-DVec3::X, 0.0),
-            (-DVec3::Y, 0.0),
-            (-DVec3::Z, 0.0),
-            (DVec3::ONE, 1.0),
-        ];
-        let b = polyhedron_box(&planes).unwrap();
-        assert!((b.max - DVec3::ONE).abs().max_element() < 1e-5);
-        assert!(b.min.abs().max_element() < 1e-5);
-    }
 }
+
+#[path = "cull_polyhedron.rs"]
+mod polyhedron;
 
 #[cfg(test)]
 #[path = "cull_window_tests.rs"]
