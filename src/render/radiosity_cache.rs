@@ -9,7 +9,7 @@ use rustc_hash::FxHashMap;
 use smallvec::SmallVec;
 
 use crate::math::DVec3;
-use crate::scene::scratch::RadiosityMemo;
+use crate::scene::scratch::{MemoEntry, RadiosityMemo};
 
 use super::trace::Seen;
 pub use crate::scene::scratch::RadiositySample as Sample;
@@ -275,17 +275,25 @@ impl Cache {
             memo.level = level;
             memo.bound = bound.to_bits();
             memo.epoch += 1;
+            memo.lists.clear();
+            memo.listed.clear();
         }
         if memo.cells.len() != self.scales.len() {
             memo.cells.resize_with(self.scales.len(), Default::default);
         }
         let epoch = memo.epoch;
+        let MemoEntry {
+            cells: memo_cells,
+            lists,
+            listed,
+            ..
+        } = memo;
         // Per scale of a group: the memo's list (`None`), or the cell to read, and whether to
         // list it.
         let mut found: [Option<&[u32]>; GROUP] = [None; GROUP];
         let mut list = [false; GROUP];
         for (g, group) in self.scales.chunks(GROUP).enumerate() {
-            let cells = &mut memo.cells[g * GROUP..g * GROUP + group.len()];
+            let cells = &mut memo_cells[g * GROUP..g * GROUP + group.len()];
             // As in `cells`: every cell is found before any is read.
             for (j, (scale, c)) in group.iter().zip(cells.iter_mut()).enumerate() {
                 found[j] = Some(&[]);
@@ -296,9 +304,22 @@ impl Cache {
                 let key = scale.key(p);
                 let again = c.epoch == epoch && c.key == key;
                 if again && c.listed {
-                    prefetch(c.ids.as_ptr());
+                    prefetch(listed.as_ptr().wrapping_add(c.at.0 as usize));
                     found[j] = None;
                     continue;
+                }
+                if !again {
+                    c.key = key;
+                    c.epoch = epoch;
+                    c.listed = false;
+                    // A cell listed before in this epoch, left since.
+                    if let Some(&at) = lists.get(&((g * GROUP + j) as u32, key)) {
+                        prefetch(listed.as_ptr().wrapping_add(at.0 as usize));
+                        c.at = at;
+                        c.listed = true;
+                        found[j] = None;
+                        continue;
+                    }
                 }
                 let grid = if level == 1 {
                     &scale.grid1
@@ -309,20 +330,14 @@ impl Cache {
                     prefetch(ids.as_ptr());
                     found[j] = Some(ids.as_slice());
                 }
-                if again {
-                    // Listed once the whole cell has been read.
-                    c.ids.clear();
-                    list[j] = true;
-                } else {
-                    c.key = key;
-                    c.epoch = epoch;
-                    c.listed = false;
-                }
+                // Listed once the whole cell has been read.
+                list[j] = true;
             }
             for (j, c) in cells.iter_mut().enumerate() {
                 match found[j] {
                     None => {
-                        for &(i, e) in &c.ids {
+                        let (at, len) = (c.at.0 as usize, c.at.1 as usize);
+                        for &(i, e) in &listed[at..at + len] {
                             let s = &self.foot[i as usize];
                             if within(s, p, bound) {
                                 f(i as usize, s, Some(e));
@@ -330,6 +345,7 @@ impl Cache {
                         }
                     }
                     Some(ids) if list[j] => {
+                        let start = listed.len();
                         for &i in ids {
                             let s = &self.foot[i as usize];
                             // `weight`'s first tests, as it writes them (a NaN cosine passes).
@@ -338,12 +354,14 @@ impl Cache {
                                 continue;
                             }
                             let e = normal_err(cos);
-                            c.ids.push((i, e));
+                            listed.push((i, e));
                             if within(s, p, bound) {
                                 f(i as usize, s, Some(e));
                             }
                         }
+                        c.at = (start as u32, (listed.len() - start) as u32);
                         c.listed = true;
+                        lists.insert(((g * GROUP + j) as u32, c.key), c.at);
                     }
                     Some(ids) => {
                         for &i in ids {
