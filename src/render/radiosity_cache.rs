@@ -235,19 +235,20 @@ impl Cache {
 
     /// `near` from the first sample on for a lookup facing `n`, leaving out besides samples
     /// that `weight` turns away whatever the point: of a level above `level`, or facing more
-    /// than 60° from `n`. `memo` (the thread's) keeps per normal and scale the last cell read;
-    /// when the next lookup facing the same way reads it again, it lists the samples of the
-    /// cell that pass those two tests, and the lookups after it read the list. Neighbouring
-    /// pixels of a flat surface share their normal to the bit and their cells at every
-    /// scale, and in a room about half of what a cell lists faces away (rad15's counts).
-    /// A cell is listed only when read twice in a row (gathering rays and reflections meet a
-    /// wall or floor at scattered points, where listing every cell met cost more than it
-    /// saved), and another normal taking an entry only raises its epoch. `f` meets the samples
-    /// `weight` takes in the order `near` gives them, so the blend's sums are the same to the
-    /// bit. A sample of a list comes with `Some` of its `normal_err` for this normal (the
-    /// list keeps it: the same bits for every lookup reading the list), which `Blend::add_listed`
-    /// takes in place of `weight`'s level and normal tests and its first square root; the
-    /// samples of cells not listed come with `None`.
+    /// than 60° from `n`. `memo` (the thread's) keeps per normal the cells read, each listed
+    /// (the first time a lookup facing that way reads it) with the samples that pass those
+    /// two tests; lookups after it read the list, whenever they come back to the cell.
+    /// Neighbouring pixels of a flat surface share their normal to the bit and their cells at
+    /// every scale, and in a room about half of what a cell lists faces away (rad15's
+    /// counts). Another normal taking an entry raises its epoch and drops its lists. (rad16
+    /// listed a cell only when read twice in a row and kept one cell per scale: a cell left
+    /// and come back to, as the next row of a floor does, was read whole again; listing a
+    /// cell costs about what reading it whole does, the list's place and a map's insert.)
+    /// `f` meets the samples `weight` takes in the order `near` gives them, so the blend's
+    /// sums are the same to the bit. A sample of a list comes with `Some` of its `normal_err`
+    /// for this normal (the list keeps it: the same bits for every lookup reading the list),
+    /// which `Blend::add_listed` takes in place of `weight`'s level and normal tests and its
+    /// first square root; the samples of cells not listed come with `None`.
     #[inline]
     pub(super) fn near_memo(
         &self,
@@ -275,13 +276,22 @@ impl Cache {
             memo.level = level;
             memo.bound = bound.to_bits();
             memo.epoch += 1;
-            memo.lists.clear();
+            memo.fresh = true;
+            // Emptied only when it holds something: a curved surface's normals come back never,
+            // each taking an entry, and clearing a map writes all its buckets.
+            if !memo.lists.is_empty() {
+                memo.lists.clear();
+            }
             memo.listed.clear();
+        } else {
+            memo.fresh = false;
         }
         if memo.cells.len() != self.scales.len() {
             memo.cells.resize_with(self.scales.len(), Default::default);
         }
         let epoch = memo.epoch;
+        // A normal's first lookup lists nothing: on a curved surface it is the only one.
+        let fresh = memo.fresh;
         let MemoEntry {
             cells: memo_cells,
             lists,
@@ -302,30 +312,33 @@ impl Cache {
                     continue;
                 }
                 let key = scale.key(p);
-                let again = c.epoch == epoch && c.key == key;
-                if again && c.listed {
+                if c.epoch == epoch && c.key == key {
+                    // The cell the last lookup read: listed then.
                     prefetch(listed.as_ptr().wrapping_add(c.at.0 as usize));
                     found[j] = None;
                     continue;
-                }
-                if !again {
-                    c.key = key;
-                    c.epoch = epoch;
-                    c.listed = false;
-                    // A cell listed before in this epoch, left since.
-                    if let Some(&at) = lists.get(&((g * GROUP + j) as u32, key)) {
-                        prefetch(listed.as_ptr().wrapping_add(at.0 as usize));
-                        c.at = at;
-                        c.listed = true;
-                        found[j] = None;
-                        continue;
-                    }
                 }
                 let grid = if level == 1 {
                     &scale.grid1
                 } else {
                     &scale.grid
                 };
+                if fresh {
+                    if let Some(ids) = grid.get(&key) {
+                        prefetch(ids.as_ptr());
+                        found[j] = Some(ids.as_slice());
+                    }
+                    continue;
+                }
+                c.key = key;
+                c.epoch = epoch;
+                // A cell listed before in this epoch, left since.
+                if let Some(&at) = lists.get(&((g * GROUP + j) as u32, key)) {
+                    prefetch(listed.as_ptr().wrapping_add(at.0 as usize));
+                    c.at = at;
+                    found[j] = None;
+                    continue;
+                }
                 if let Some(ids) = grid.get(&key) {
                     prefetch(ids.as_ptr());
                     found[j] = Some(ids.as_slice());
@@ -360,7 +373,6 @@ impl Cache {
                             }
                         }
                         c.at = (start as u32, (listed.len() - start) as u32);
-                        c.listed = true;
                         lists.insert(((g * GROUP + j) as u32, c.key), c.at);
                     }
                     Some(ids) => {
@@ -782,11 +794,8 @@ mod tests {
                 );
             }
         }
-        let listed = memo.entries.iter().flat_map(|e| &e.cells);
-        assert!(
-            listed.filter(|c| c.listed).count() > 1,
-            "the lists were used"
-        );
+        let listed: usize = memo.entries.iter().map(|e| e.lists.len()).sum();
+        assert!(listed > 1, "the lists were used");
     }
 
     /// The fold check's `any_valid` answers as testing every sample from `from` on would,

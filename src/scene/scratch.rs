@@ -117,6 +117,8 @@ pub struct MemoEntry {
     pub bound: u64,
     /// Raised whenever the entry takes another normal: cells of an older epoch hold nothing.
     pub epoch: u64,
+    /// The entry took its normal at this lookup (no lookup before it faced the same way).
+    pub fresh: bool,
     /// One per scale, in the cache's order.
     pub cells: Vec<MemoCell>,
     /// Every cell listed in this epoch, by (scale, key): its list's place in `listed`. A
@@ -128,12 +130,11 @@ pub struct MemoEntry {
     pub listed: Vec<(u32, f64)>,
 }
 
-/// A scale's last cell read (`MemoEntry`), valid in the entry's epoch: its key, and once
-/// listed, where its list is in the entry's `listed` (start, length).
+/// A scale's last cell read (`MemoEntry`), valid in the entry's epoch: its key, and where its
+/// list is in the entry's `listed` (start, length).
 #[derive(Default)]
 pub struct MemoCell {
     pub key: u64,
     pub epoch: u64,
-    pub listed: bool,
     pub at: (u32, u32),
 }
