@@ -260,38 +260,44 @@ impl Cache {
         mut f: impl FnMut(usize, &Footprint, Option<f64>),
     ) {
         let facing = [n.x.to_bits(), n.y.to_bits(), n.z.to_bits()];
-        if memo.entries.is_empty() {
-            memo.entries.resize_with(MEMO_WAYS, Default::default);
+        if memo.entries.len() != MEMO_WAYS + 1 {
+            memo.entries.resize_with(MEMO_WAYS + 1, Default::default);
         }
         let hash = (facing[0] ^ facing[1].rotate_left(21) ^ facing[2].rotate_left(42))
             .wrapping_mul(0x9e37_79b9_7f4a_7c15);
-        let memo = &mut memo.entries[(hash >> 32) as usize & (MEMO_WAYS - 1)];
-        if memo.stamp != self.stamp
-            || memo.n != facing
-            || memo.level != level
-            || memo.bound != bound.to_bits()
-        {
-            memo.stamp = self.stamp;
-            memo.n = facing;
-            memo.level = level;
-            memo.bound = bound.to_bits();
-            memo.epoch += 1;
-            memo.fresh = true;
-            // Emptied only when it holds something: a curved surface's normals come back never,
-            // each taking an entry, and clearing a map writes all its buckets.
-            if !memo.lists.is_empty() {
-                memo.lists.clear();
-            }
-            memo.listed.clear();
+        let slot = (hash >> 32) as usize & (MEMO_WAYS - 1);
+        let holds = |e: &MemoEntry| {
+            e.stamp == self.stamp && e.n == facing && e.level == level && e.bound == bound.to_bits()
+        };
+        // A normal no entry holds takes the last one, which lists nothing (a curved surface's
+        // normals never come back); when its next lookup faces the same way it swaps into its
+        // own entry, whose lists go. The normals of a room keep their lists through the
+        // curved surfaces met between them.
+        let (ways, probation) = memo.entries.split_at_mut(MEMO_WAYS);
+        let probation = &mut probation[0];
+        let fresh = if holds(&ways[slot]) {
+            false
+        } else if holds(probation) {
+            std::mem::swap(&mut ways[slot], probation);
+            false
         } else {
-            memo.fresh = false;
-        }
+            probation.stamp = self.stamp;
+            probation.n = facing;
+            probation.level = level;
+            probation.bound = bound.to_bits();
+            probation.epoch += 1;
+            // Emptied only when it holds something: clearing a map writes all its buckets.
+            if !probation.lists.is_empty() {
+                probation.lists.clear();
+            }
+            probation.listed.clear();
+            true
+        };
+        let memo = if fresh { probation } else { &mut ways[slot] };
         if memo.cells.len() != self.scales.len() {
             memo.cells.resize_with(self.scales.len(), Default::default);
         }
         let epoch = memo.epoch;
-        // A normal's first lookup lists nothing: on a curved surface it is the only one.
-        let fresh = memo.fresh;
         let MemoEntry {
             cells: memo_cells,
             lists,

@@ -117,8 +117,6 @@ pub struct MemoEntry {
     pub bound: u64,
     /// Raised whenever the entry takes another normal: cells of an older epoch hold nothing.
     pub epoch: u64,
-    /// The entry took its normal at this lookup (no lookup before it faced the same way).
-    pub fresh: bool,
     /// One per scale, in the cache's order.
     pub cells: Vec<MemoCell>,
     /// Every cell listed in this epoch, by (scale, key): its list's place in `listed`. A
