@@ -236,8 +236,9 @@ impl Cache {
     /// `near` from the first sample on for a lookup facing `n`, leaving out besides samples
     /// that `weight` turns away whatever the point: of a level above `level`, or facing more
     /// than 60° from `n`. `memo` (the thread's) keeps per normal the cells read, each listed
-    /// (the first time a lookup facing that way reads it) with the samples that pass those
-    /// two tests; lookups after it read the list, whenever they come back to the cell.
+    /// (the first time a lookup facing that way reads it, from the normal's second lookup on:
+    /// see the probation entry below) with the samples that pass those two tests; lookups
+    /// after it read the list, whenever they come back to the cell.
     /// Neighbouring pixels of a flat surface share their normal to the bit and their cells at
     /// every scale, and in a room about half of what a cell lists faces away (rad15's
     /// counts). Another normal taking an entry raises its epoch and drops its lists. (rad16

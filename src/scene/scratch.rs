@@ -98,9 +98,9 @@ pub struct RadiositySample {
 }
 
 /// For a few normals (a floor and what its reflections meet, a room's walls; each in the entry
-/// its bits hash to), per scale of the irradiance cache the last cell a lookup facing it read,
-/// with that cell's samples the normal and level tests let through for that facing
-/// (render::radiosity_cache, `Cache::near_memo`).
+/// its bits hash to, after a first lookup in the last, probation entry), the cells of the
+/// irradiance cache lookups facing it read, each with its samples the normal and level tests
+/// let through for that facing (render::radiosity_cache, `Cache::near_memo`).
 #[derive(Default)]
 pub struct RadiosityMemo {
     pub entries: Vec<MemoEntry>,
