@@ -9,7 +9,7 @@ use rustc_hash::FxHashMap;
 use smallvec::SmallVec;
 
 use crate::math::DVec3;
-use crate::scene::scratch::RadiosityMemo;
+use crate::scene::scratch::{MemoEntry, RadiosityMemo};
 
 use super::trace::Seen;
 pub use crate::scene::scratch::RadiositySample as Sample;
@@ -235,19 +235,21 @@ impl Cache {
 
     /// `near` from the first sample on for a lookup facing `n`, leaving out besides samples
     /// that `weight` turns away whatever the point: of a level above `level`, or facing more
-    /// than 60° from `n`. `memo` (the thread's) keeps per normal and scale the last cell read;
-    /// when the next lookup facing the same way reads it again, it lists the samples of the
-    /// cell that pass those two tests, and the lookups after it read the list. Neighbouring
-    /// pixels of a flat surface share their normal to the bit and their cells at every
-    /// scale, and in a room about half of what a cell lists faces away (rad15's counts).
-    /// A cell is listed only when read twice in a row (gathering rays and reflections meet a
-    /// wall or floor at scattered points, where listing every cell met cost more than it
-    /// saved), and another normal taking an entry only raises its epoch. `f` meets the samples
-    /// `weight` takes in the order `near` gives them, so the blend's sums are the same to the
-    /// bit. A sample of a list comes with `Some` of its `normal_err` for this normal (the
-    /// list keeps it: the same bits for every lookup reading the list), which `Blend::add_listed`
-    /// takes in place of `weight`'s level and normal tests and its first square root; the
-    /// samples of cells not listed come with `None`.
+    /// than 60° from `n`. `memo` (the thread's) keeps per normal the cells read, each listed
+    /// (the first time a lookup facing that way reads it, from the normal's second lookup on:
+    /// see the probation entry below) with the samples that pass those two tests; lookups
+    /// after it read the list, whenever they come back to the cell.
+    /// Neighbouring pixels of a flat surface share their normal to the bit and their cells at
+    /// every scale, and in a room about half of what a cell lists faces away (rad15's
+    /// counts). Another normal taking an entry raises its epoch and drops its lists. (rad16
+    /// listed a cell only when read twice in a row and kept one cell per scale: a cell left
+    /// and come back to, as the next row of a floor does, was read whole again; listing a
+    /// cell costs about what reading it whole does, the list's place and a map's insert.)
+    /// `f` meets the samples `weight` takes in the order `near` gives them, so the blend's
+    /// sums are the same to the bit. A sample of a list comes with `Some` of its `normal_err`
+    /// for this normal (the list keeps it: the same bits for every lookup reading the list),
+    /// which `Blend::add_listed` takes in place of `weight`'s level and normal tests and its
+    /// first square root; the samples of cells not listed come with `None`.
     #[inline]
     pub(super) fn near_memo(
         &self,
@@ -259,33 +261,56 @@ impl Cache {
         mut f: impl FnMut(usize, &Footprint, Option<f64>),
     ) {
         let facing = [n.x.to_bits(), n.y.to_bits(), n.z.to_bits()];
-        if memo.entries.is_empty() {
-            memo.entries.resize_with(MEMO_WAYS, Default::default);
+        if memo.entries.len() != MEMO_WAYS + 1 {
+            memo.entries.resize_with(MEMO_WAYS + 1, Default::default);
         }
         let hash = (facing[0] ^ facing[1].rotate_left(21) ^ facing[2].rotate_left(42))
             .wrapping_mul(0x9e37_79b9_7f4a_7c15);
-        let memo = &mut memo.entries[(hash >> 32) as usize & (MEMO_WAYS - 1)];
-        if memo.stamp != self.stamp
-            || memo.n != facing
-            || memo.level != level
-            || memo.bound != bound.to_bits()
-        {
-            memo.stamp = self.stamp;
-            memo.n = facing;
-            memo.level = level;
-            memo.bound = bound.to_bits();
-            memo.epoch += 1;
-        }
+        let slot = (hash >> 32) as usize & (MEMO_WAYS - 1);
+        let holds = |e: &MemoEntry| {
+            e.stamp == self.stamp && e.n == facing && e.level == level && e.bound == bound.to_bits()
+        };
+        // A normal no entry holds takes the last one, which lists nothing (a curved surface's
+        // normals never come back); when its next lookup faces the same way it swaps into its
+        // own entry, whose lists go. The normals of a room keep their lists through the
+        // curved surfaces met between them.
+        let (ways, probation) = memo.entries.split_at_mut(MEMO_WAYS);
+        let probation = &mut probation[0];
+        let fresh = if holds(&ways[slot]) {
+            false
+        } else if holds(probation) {
+            std::mem::swap(&mut ways[slot], probation);
+            false
+        } else {
+            probation.stamp = self.stamp;
+            probation.n = facing;
+            probation.level = level;
+            probation.bound = bound.to_bits();
+            probation.epoch += 1;
+            // Emptied only when it holds something: clearing a map writes all its buckets.
+            if !probation.lists.is_empty() {
+                probation.lists.clear();
+            }
+            probation.listed.clear();
+            true
+        };
+        let memo = if fresh { probation } else { &mut ways[slot] };
         if memo.cells.len() != self.scales.len() {
             memo.cells.resize_with(self.scales.len(), Default::default);
         }
         let epoch = memo.epoch;
+        let MemoEntry {
+            cells: memo_cells,
+            lists,
+            listed,
+            ..
+        } = memo;
         // Per scale of a group: the memo's list (`None`), or the cell to read, and whether to
         // list it.
         let mut found: [Option<&[u32]>; GROUP] = [None; GROUP];
         let mut list = [false; GROUP];
         for (g, group) in self.scales.chunks(GROUP).enumerate() {
-            let cells = &mut memo.cells[g * GROUP..g * GROUP + group.len()];
+            let cells = &mut memo_cells[g * GROUP..g * GROUP + group.len()];
             // As in `cells`: every cell is found before any is read.
             for (j, (scale, c)) in group.iter().zip(cells.iter_mut()).enumerate() {
                 found[j] = Some(&[]);
@@ -294,9 +319,9 @@ impl Cache {
                     continue;
                 }
                 let key = scale.key(p);
-                let again = c.epoch == epoch && c.key == key;
-                if again && c.listed {
-                    prefetch(c.ids.as_ptr());
+                if c.epoch == epoch && c.key == key {
+                    // The cell the last lookup read: listed then.
+                    prefetch(listed.as_ptr().wrapping_add(c.at.0 as usize));
                     found[j] = None;
                     continue;
                 }
@@ -305,24 +330,34 @@ impl Cache {
                 } else {
                     &scale.grid
                 };
+                if fresh {
+                    if let Some(ids) = grid.get(&key) {
+                        prefetch(ids.as_ptr());
+                        found[j] = Some(ids.as_slice());
+                    }
+                    continue;
+                }
+                c.key = key;
+                c.epoch = epoch;
+                // A cell listed before in this epoch, left since.
+                if let Some(&at) = lists.get(&((g * GROUP + j) as u32, key)) {
+                    prefetch(listed.as_ptr().wrapping_add(at.0 as usize));
+                    c.at = at;
+                    found[j] = None;
+                    continue;
+                }
                 if let Some(ids) = grid.get(&key) {
                     prefetch(ids.as_ptr());
                     found[j] = Some(ids.as_slice());
                 }
-                if again {
-                    // Listed once the whole cell has been read.
-                    c.ids.clear();
-                    list[j] = true;
-                } else {
-                    c.key = key;
-                    c.epoch = epoch;
-                    c.listed = false;
-                }
+                // Listed once the whole cell has been read.
+                list[j] = true;
             }
             for (j, c) in cells.iter_mut().enumerate() {
                 match found[j] {
                     None => {
-                        for &(i, e) in &c.ids {
+                        let (at, len) = (c.at.0 as usize, c.at.1 as usize);
+                        for &(i, e) in &listed[at..at + len] {
                             let s = &self.foot[i as usize];
                             if within(s, p, bound) {
                                 f(i as usize, s, Some(e));
@@ -330,6 +365,7 @@ impl Cache {
                         }
                     }
                     Some(ids) if list[j] => {
+                        let start = listed.len();
                         for &i in ids {
                             let s = &self.foot[i as usize];
                             // `weight`'s first tests, as it writes them (a NaN cosine passes).
@@ -338,12 +374,13 @@ impl Cache {
                                 continue;
                             }
                             let e = normal_err(cos);
-                            c.ids.push((i, e));
+                            listed.push((i, e));
                             if within(s, p, bound) {
                                 f(i as usize, s, Some(e));
                             }
                         }
-                        c.listed = true;
+                        c.at = (start as u32, (listed.len() - start) as u32);
+                        lists.insert(((g * GROUP + j) as u32, c.key), c.at);
                     }
                     Some(ids) => {
                         for &i in ids {
@@ -764,11 +801,8 @@ mod tests {
                 );
             }
         }
-        let listed = memo.entries.iter().flat_map(|e| &e.cells);
-        assert!(
-            listed.filter(|c| c.listed).count() > 1,
-            "the lists were used"
-        );
+        let listed: usize = memo.entries.iter().map(|e| e.lists.len()).sum();
+        assert!(listed > 1, "the lists were used");
     }
 
     /// The fold check's `any_valid` answers as testing every sample from `from` on would,

@@ -98,9 +98,9 @@ pub struct RadiositySample {
 }
 
 /// For a few normals (a floor and what its reflections meet, a room's walls; each in the entry
-/// its bits hash to), per scale of the irradiance cache the last cell a lookup facing it read,
-/// with that cell's samples the normal and level tests let through for that facing
-/// (render::radiosity_cache, `Cache::near_memo`).
+/// its bits hash to, after a first lookup in the last, probation entry), the cells of the
+/// irradiance cache lookups facing it read, each with its samples the normal and level tests
+/// let through for that facing (render::radiosity_cache, `Cache::near_memo`).
 #[derive(Default)]
 pub struct RadiosityMemo {
     pub entries: Vec<MemoEntry>,
@@ -119,15 +119,20 @@ pub struct MemoEntry {
     pub epoch: u64,
     /// One per scale, in the cache's order.
     pub cells: Vec<MemoCell>,
+    /// Every cell listed in this epoch, by (scale, key): its list's place in `listed`. A
+    /// lookup coming back to a cell it left (the next row of a floor, the pass's next phase)
+    /// reads the list again instead of the cell.
+    pub lists: rustc_hash::FxHashMap<(u32, u64), (u32, u32)>,
+    /// The lists, one after another: each sample's number and its share of the error from its
+    /// normal's turn from the entry's (the same for every lookup of the entry).
+    pub listed: Vec<(u32, f64)>,
 }
 
-/// A scale's last cell read (`MemoEntry`), valid in the entry's epoch: its key, and once the
-/// next lookup read it too, its list: each sample's number and its share of the error from
-/// its normal's turn from the entry's (the same for every lookup of the entry).
+/// A scale's last cell read (`MemoEntry`), valid in the entry's epoch: its key, and where its
+/// list is in the entry's `listed` (start, length).
 #[derive(Default)]
 pub struct MemoCell {
     pub key: u64,
     pub epoch: u64,
-    pub listed: bool,
-    pub ids: Vec<(u32, f64)>,
+    pub at: (u32, u32),
 }
