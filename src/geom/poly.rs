@@ -218,6 +218,17 @@ fn brackets(
 }
 
 fn isolate(c: &[f64], lo: f64, hi: f64, out: &mut Roots, breakpoints: bool) {
+    // As in `polish`: a quartic's and its cubic derivative's evaluations unrolled, the same
+    // operations.
+    match c.len() {
+        5 => isolate_body(<&[f64; 5]>::try_from(c).unwrap(), lo, hi, out, breakpoints),
+        4 => isolate_body(<&[f64; 4]>::try_from(c).unwrap(), lo, hi, out, breakpoints),
+        _ => isolate_body(c, lo, hi, out, breakpoints),
+    }
+}
+
+#[inline(always)]
+fn isolate_body(c: &[f64], lo: f64, hi: f64, out: &mut Roots, breakpoints: bool) {
     let n = c.len().saturating_sub(1);
     if n <= 2 {
         let mut r = Roots::new();
