@@ -218,6 +218,17 @@ fn brackets(
 }
 
 fn isolate(c: &[f64], lo: f64, hi: f64, out: &mut Roots, breakpoints: bool) {
+    // As in `polish`: a quartic's and its cubic derivative's evaluations unrolled, the same
+    // operations.
+    match c.len() {
+        5 => isolate_body(<&[f64; 5]>::try_from(c).unwrap(), lo, hi, out, breakpoints),
+        4 => isolate_body(<&[f64; 4]>::try_from(c).unwrap(), lo, hi, out, breakpoints),
+        _ => isolate_body(c, lo, hi, out, breakpoints),
+    }
+}
+
+#[inline(always)]
+fn isolate_body(c: &[f64], lo: f64, hi: f64, out: &mut Roots, breakpoints: bool) {
     let n = c.len().saturating_sub(1);
     if n <= 2 {
         let mut r = Roots::new();
@@ -414,7 +425,20 @@ pub(crate) fn roots_in_isolated(c: &[f64], lo: f64, hi: f64) -> Roots {
 
 /// Newton iteration kept inside the sign-change bracket `[a, b]`; `neg_at_a` is the sign of
 /// the polynomial at `a`.
-fn polish(c: &[f64], mut a: f64, mut b: f64, neg_at_a: bool) -> f64 {
+///
+/// Quartics (a torus) and their cubic derivatives are most of the calls: for them the body
+/// is compiled with the length known, so each step's Horner pass is unrolled (the same
+/// operations in the same order, only without the loop's bookkeeping).
+fn polish(c: &[f64], a: f64, b: f64, neg_at_a: bool) -> f64 {
+    match c.len() {
+        5 => polish_body(<&[f64; 5]>::try_from(c).unwrap(), a, b, neg_at_a),
+        4 => polish_body(<&[f64; 4]>::try_from(c).unwrap(), a, b, neg_at_a),
+        _ => polish_body(c, a, b, neg_at_a),
+    }
+}
+
+#[inline(always)]
+fn polish_body(c: &[f64], mut a: f64, mut b: f64, neg_at_a: bool) -> f64 {
     let mut x = 0.5 * (a + b);
     let mut step = b - a;
     let mut prev_step = step;
