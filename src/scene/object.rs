@@ -203,13 +203,7 @@ pub(super) fn member_hits<'a>(
                 let r = c.local_ray(ray, &mut local);
                 s.hits.clear();
                 shape.intersect_all(r, &mut s.hits);
-                s.surface
-                    .extend(s.hits.iter().filter(|h| h.t < tmax).map(|&hit| SurfaceHit {
-                        t: hit.t,
-                        obj: c,
-                        hit,
-                        flip: c.inverse,
-                    }));
+                c.take_hits(tmax, s);
             }
             _ => c.all_hits(ray, tmax, s),
         },
@@ -428,13 +422,7 @@ impl Object {
                     },
                     None => shape.intersect_all(r, &mut s.hits),
                 }
-                s.surface
-                    .extend(s.hits.iter().filter(|h| h.t < tmax).map(|&hit| SurfaceHit {
-                        t: hit.t,
-                        obj: self,
-                        hit,
-                        flip: self.inverse,
-                    }));
+                self.take_hits(tmax, s);
             }
             ObjKind::Csg {
                 op,
@@ -508,6 +496,28 @@ impl Object {
         }
     }
 
+    /// `p` in the object's own space (its shape's coordinates).
+    #[inline(always)]
+    fn local_point(&self, p: DVec3) -> DVec3 {
+        match &self.transform {
+            Some(t) => t.inv_point(p),
+            None => p,
+        }
+    }
+
+    /// The shape crossings left in `s.hits` closer than `tmax`, as this object's surface hits
+    /// (a leaf's part of `all_hits`, shared with the CSG searches' inlined leaf members).
+    #[inline(always)]
+    fn take_hits<'a>(&'a self, tmax: f64, s: &mut Scratch<'a>) {
+        s.surface
+            .extend(s.hits.iter().filter(|h| h.t < tmax).map(|&hit| SurfaceHit {
+                t: hit.t,
+                obj: self,
+                hit,
+                flip: self.inverse,
+            }));
+    }
+
     /// Whether `p` is inside this object (`inverse` and `clipped_by` applied).
     #[inline]
     pub fn inside(&self, p: DVec3) -> bool {
@@ -518,11 +528,7 @@ impl Object {
             if !self.bounds.contains(p) {
                 return self.inverse;
             }
-            let lp = match &self.transform {
-                Some(t) => t.inv_point(p),
-                None => p,
-            };
-            return s.inside(lp) != self.inverse;
+            return s.inside(self.local_point(p)) != self.inverse;
         }
         self.inside_node(p)
     }
@@ -535,13 +541,7 @@ impl Object {
             return self.inverse;
         }
         let r = match &self.kind {
-            ObjKind::Shape(s, _) => {
-                let lp = match &self.transform {
-                    Some(t) => t.inv_point(p),
-                    None => p,
-                };
-                s.inside(lp)
-            }
+            ObjKind::Shape(s, _) => s.inside(self.local_point(p)),
             ObjKind::Csg { cull: Some(c), .. } if c.aabb.is_some_and(|a| !a.contains(p)) => false,
             ObjKind::Csg {
                 op,
