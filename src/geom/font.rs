@@ -11,6 +11,8 @@ use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex, OnceLock};
 
 use glam::DVec2;
+
+use super::glyph_bands::Bands;
 use ttf_parser::{Face, GlyphId, OutlineBuilder, PlatformId};
 
 /// One y-monotone quadratic Bézier piece of a glyph contour, `p0 → p1` with control `c`
@@ -112,10 +114,31 @@ pub struct Glyph {
     /// The filled side of the contours: on the right of the direction of travel (TrueType's
     /// clockwise outer contours) or on the left (PostScript's convention).
     pub fill_right: bool,
+    /// Which pieces each height band meets: `contains` and the side-wall search ask only those.
+    pub bands: Bands,
 }
 
 impl Glyph {
-    /// Non-zero winding, as TrueType fills.
+    /// A glyph of these outline pieces (finite), with its bounds and band index.
+    pub fn new(id: u16, advance: f64, lsb: f64, pieces: Vec<Piece>, fill_right: bool) -> Glyph {
+        let bounds = pieces
+            .iter()
+            .map(|p| (p.min, p.max))
+            .reduce(|a, b| (a.0.min(b.0), a.1.max(b.1)));
+        let bands = bounds.map_or_else(Bands::default, |(lo, hi)| Bands::new(&pieces, lo.y, hi.y));
+        Glyph {
+            id,
+            advance,
+            lsb,
+            pieces,
+            bounds,
+            fill_right,
+            bands,
+        }
+    }
+
+    /// Non-zero winding, as TrueType fills. Only pieces whose height range holds `q.y` can
+    /// wind around it: the band's pieces (the sum is of integers, so their order is free).
     pub fn contains(&self, q: DVec2) -> bool {
         let Some((min, max)) = self.bounds else {
             return false;
@@ -123,7 +146,11 @@ impl Glyph {
         if q.cmplt(min).any() || q.cmpgt(max).any() {
             return false;
         }
-        self.pieces.iter().map(|p| p.winding(q)).sum::<i32>() != 0
+        let mut winding = 0;
+        self.bands.each_in(self.pieces.len(), q.y, q.y, |i| {
+            winding += self.pieces[i].winding(q)
+        });
+        winding != 0
     }
 
     /// Outward normal of the side wall at parameter `s` of piece `i`.
@@ -394,18 +421,13 @@ impl Font {
             .into_iter()
             .filter(|p| p.min.is_finite() && p.max.is_finite())
             .collect();
-        let bounds = pieces
-            .iter()
-            .map(|p| (p.min, p.max))
-            .reduce(|a, b| (a.0.min(b.0), a.1.max(b.1)));
-        Glyph {
-            id: id.0,
-            advance: face.glyph_hor_advance(id).unwrap_or(0) as f64 * self.scale,
-            lsb: face.glyph_hor_side_bearing(id).unwrap_or(0) as f64 * self.scale,
+        Glyph::new(
+            id.0,
+            face.glyph_hor_advance(id).unwrap_or(0) as f64 * self.scale,
+            face.glyph_hor_side_bearing(id).unwrap_or(0) as f64 * self.scale,
             pieces,
-            bounds,
-            fill_right: c.area2 <= 0.0,
-        }
+            c.area2 <= 0.0,
+        )
     }
 
     /// Kerning between two glyphs from the `kern` table's plain horizontal subtables: the

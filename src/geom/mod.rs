@@ -108,6 +108,7 @@ pub mod cone;
 pub mod cylinder;
 pub mod disc;
 pub mod font;
+pub mod glyph_bands;
 pub mod height_field;
 pub mod isosurface;
 pub mod julia;

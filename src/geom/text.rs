@@ -157,17 +157,22 @@ impl Text {
         let (q0, q1) = (oxy + dxy * tlo, oxy + dxy * thi);
         let (smin, smax) = (q0.min(q1) - MARGIN, q0.max(q1) + MARGIN);
         let u = dxy / len;
-        for (i, p) in glyph.pieces.iter().enumerate() {
-            if p.max.x < smin.x || p.min.x > smax.x || p.max.y < smin.y || p.min.y > smax.y {
-                continue;
-            }
-            wall_crossings(p, oxy, u, |s, along| {
-                let t = along / len;
-                if t >= zlo && t <= zhi {
-                    emit(hit(t, i as f64, s));
+        // The bands give the pieces the full scan would reach, in its order (ties keep their
+        // first-found piece).
+        glyph
+            .bands
+            .each_in(glyph.pieces.len(), smin.y, smax.y, |i| {
+                let p = &glyph.pieces[i];
+                if p.max.x < smin.x || p.min.x > smax.x || p.max.y < smin.y || p.min.y > smax.y {
+                    return;
                 }
+                wall_crossings(p, oxy, u, |s, along| {
+                    let t = along / len;
+                    if t >= zlo && t <= zhi {
+                        emit(hit(t, i as f64, s));
+                    }
+                });
             });
-        }
     }
 }
 
@@ -286,14 +291,9 @@ mod tests {
         };
         contour(&[(0.0, 0.0), (0.0, 1.0), (1.0, 1.0), (1.0, 0.0)]);
         contour(&[(0.25, 0.25), (0.75, 0.25), (0.75, 0.75), (0.25, 0.75)]);
-        Arc::new(Glyph {
-            id: 1,
-            advance: 1.2,
-            lsb: 0.0,
-            pieces,
-            bounds: Some((DVec2::ZERO, DVec2::ONE)),
-            fill_right: true,
-        })
+        let g = Glyph::new(1, 1.2, 0.0, pieces, true);
+        assert_eq!(g.bounds, Some((DVec2::ZERO, DVec2::ONE)));
+        Arc::new(g)
     }
 
     fn text(thickness: f64, n: usize) -> Text {
