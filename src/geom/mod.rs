@@ -54,6 +54,22 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
     fn any_hit(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> bool {
         self.intersect_first(ray, tmax, scratch).is_some()
     }
+    /// Whether `keep` holds for the `t` of some crossing `intersect_all` lists with
+    /// `t < tmax` (CSG and clipped shadow rays: is any crossing on the surface). Which
+    /// crossings are asked, and in what order, is the shape's choice: `keep` has no side
+    /// effect on the answer. Shapes that find their crossings one at a time stop at the first
+    /// kept one.
+    fn any_kept(
+        &self,
+        ray: &Ray,
+        tmax: f64,
+        scratch: &mut Vec<Hit>,
+        keep: &mut dyn FnMut(f64) -> bool,
+    ) -> bool {
+        scratch.clear();
+        self.intersect_all(ray, scratch);
+        scratch.iter().any(|h| h.t < tmax && keep(h.t))
+    }
     /// `intersect_all`, but crossings with `t` outside `[lo, hi]` may be left out (a clipped
     /// object's crossings outside its clipping box): those inside come out exactly as
     /// `intersect_all` gives them.

@@ -188,6 +188,7 @@ pub fn low_roots_in(c: &[f64], lo: f64, hi: impl Fn() -> f64) -> ([f64; 2], usiz
 /// The roots `isolate` reports for `d` on [lo, hi] with critical points `crit` (ascending),
 /// in order, each as its bracket (a, b, sign of d at a) written into `out`; an exact zero
 /// has a == b. Returns how many.
+#[inline(always)]
 fn brackets(
     d: &[f64],
     crit: impl Iterator<Item = f64>,
@@ -322,9 +323,24 @@ pub fn first_root_with(
     c: &[f64],
     lo: f64,
     hi: f64,
-    mut take: impl FnMut(Candidate) -> Option<f64>,
+    take: impl FnMut(Candidate) -> Option<f64>,
 ) -> Option<f64> {
     let c = trim(c)?;
+    // As in `polish`: a quartic's walk (a torus's) compiled with the length known, so its
+    // evaluations are unrolled: the same operations in the same order.
+    match c.len() {
+        5 => first_root_body(<&[f64; 5]>::try_from(c).unwrap(), lo, hi, take),
+        _ => first_root_body(c, lo, hi, take),
+    }
+}
+
+#[inline(always)]
+fn first_root_body(
+    c: &[f64],
+    lo: f64,
+    hi: f64,
+    mut take: impl FnMut(Candidate) -> Option<f64>,
+) -> Option<f64> {
     let n = c.len().saturating_sub(1);
     if lo > hi || lo.is_nan() || hi.is_nan() || surely_no_root(c, lo, hi) {
         return None;

@@ -11,7 +11,7 @@
 //!   form (see `poly`). `sturm` adds a Sturm-sequence search for exact tangencies (double
 //!   roots without a sign change); it is slower and visually the same.
 
-use crate::geom::poly::{first_root_in, roots_in, sturm_roots_in};
+use crate::geom::poly::{first_root_in, first_root_with, roots_in, sturm_roots_in};
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
 
@@ -51,12 +51,46 @@ impl Torus {
     /// `crossings`, or with `first_only` only the first of them (the others neither found nor
     /// polished: `first_root_in`), the same bits.
     fn crossings_up_to(&self, ray: &Ray, out: &mut [f64; 4], first_only: bool) -> usize {
-        if self.empty {
+        let Some(q) = self.setup(ray) else {
             return 0;
+        };
+        let roots = match &q.poly {
+            // Degenerate to a sphere: the quartic is a perfect square whose double roots the
+            // sign-change search would miss.
+            Poly::Sphere(c) => roots_in(c, 0.0, q.hi),
+            Poly::Quartic(c) if self.sturm => sturm_roots_in(c, 0.0, q.hi),
+            Poly::Quartic(c) if first_only => {
+                return match first_root_in(c, 0.0, q.hi, |s| q.to_t(s) > EPSILON) {
+                    Some(s) => {
+                        out[0] = q.to_t(s);
+                        1
+                    }
+                    None => 0,
+                };
+            }
+            Poly::Quartic(c) => roots_in(c, 0.0, q.hi),
+        };
+        let mut n = 0;
+        for &s in roots.iter() {
+            let t = q.to_t(s);
+            if t > EPSILON && n < 4 {
+                out[n] = t;
+                n += 1;
+            }
+        }
+        n
+    }
+
+    /// The polynomial whose roots in `[0, hi]` are the crossings, in the shifted and scaled
+    /// variable of the module's notes; None when the ray misses the bounds.
+    #[inline(always)]
+    fn setup(&self, ray: &Ray) -> Option<Setup> {
+        if self.empty {
+            return None;
         }
         let len = ray.dir.length();
         if !(len > 0.0 && len.is_finite()) {
-            return 0;
+            return None;
         }
         let scale = self.major + self.minor;
         let u = ray.dir / len;
@@ -68,7 +102,7 @@ impl Torus {
         let closest = o - u * b;
         let disc = 1.0 - closest.length_squared();
         if disc < -MARGIN {
-            return 0;
+            return None;
         }
         let half = disc.max(0.0).sqrt();
         let (mut lo, mut hi) = (-b - half, -b + half);
@@ -77,7 +111,7 @@ impl Torus {
             lo = lo.max(y0.min(y1));
             hi = hi.min(y0.max(y1));
         } else if o.y.abs() > small {
-            return 0;
+            return None;
         }
         // Distances not beyond EPSILON in ray units are self-intersections.
         let min_dist = EPSILON * len / scale;
@@ -85,51 +119,58 @@ impl Torus {
         hi += MARGIN;
         // Written to also reject NaN from a non-finite origin.
         if lo.is_nan() || hi.is_nan() || lo > hi {
-            return 0;
+            return None;
         }
 
         let shift = lo;
         let p = o + u * shift;
-        let roots = if big == 0.0 {
-            // Degenerate to a sphere: the quartic is a perfect square whose double roots the
-            // sign-change search would miss.
+        let poly = if big == 0.0 {
             let c = p.length_squared() - small * small;
-            roots_in(&[c, 2.0 * p.dot(u), 1.0], 0.0, hi - shift)
+            Poly::Sphere([c, 2.0 * p.dot(u), 1.0])
         } else {
             let k = p.length_squared() + big * big - small * small;
             let b = p.dot(u);
             let r2 = 4.0 * big * big;
-            let c = [
+            Poly::Quartic([
                 k * k - r2 * (p.x * p.x + p.z * p.z),
                 4.0 * b * k - 2.0 * r2 * (p.x * u.x + p.z * u.z),
                 4.0 * b * b + 2.0 * k - r2 * (u.x * u.x + u.z * u.z),
                 4.0 * b,
                 1.0,
-            ];
-            if self.sturm {
-                sturm_roots_in(&c, 0.0, hi - shift)
-            } else if first_only {
-                let to_t = |s: f64| (s + shift) * scale / len;
-                return match first_root_in(&c, 0.0, hi - shift, |s| to_t(s) > EPSILON) {
-                    Some(s) => {
-                        out[0] = to_t(s);
-                        1
-                    }
-                    None => 0,
-                };
-            } else {
-                roots_in(&c, 0.0, hi - shift)
-            }
+            ])
         };
-        let mut n = 0;
-        for &s in roots.iter() {
-            let t = (s + shift) * scale / len;
-            if t > EPSILON && n < 4 {
-                out[n] = t;
-                n += 1;
-            }
-        }
-        n
+        Some(Setup {
+            poly,
+            hi: hi - shift,
+            shift,
+            scale,
+            len,
+        })
+    }
+}
+
+/// The polynomial of a ray's crossings: a quartic, or for a zero major radius the sphere's
+/// quadratic.
+enum Poly {
+    Sphere([f64; 3]),
+    Quartic([f64; 5]),
+}
+
+/// `Torus::setup`'s answer: the polynomial, the end of its interval (the start is 0), and
+/// what turns its variable back into the ray's `t`.
+struct Setup {
+    poly: Poly,
+    hi: f64,
+    shift: f64,
+    scale: f64,
+    len: f64,
+}
+
+impl Setup {
+    /// The ray's `t` of root `s`.
+    #[inline(always)]
+    fn to_t(&self, s: f64) -> f64 {
+        (s + self.shift) * self.scale / self.len
     }
 }
 
@@ -155,6 +196,51 @@ impl Shape for Torus {
         let mut t = [0.0; 4];
         let n = self.crossings_up_to(ray, &mut t, true);
         t[..n].first().filter(|&&t| t < tmax).map(|&t| Hit::new(t))
+    }
+
+    /// The crossings `intersect_all` lists, nearest first, each polished only when the walk
+    /// reaches it (`first_root_with`, the same bits as `roots_in`): a CSG shadow ray whose
+    /// first kept crossing is the torus's nearest does not polish the other two or three.
+    /// `crossings`' filters are replayed on the way: `Roots::push`'s merge of a root equal
+    /// to the one before, `t > EPSILON`, and at most four crossings.
+    fn any_kept(
+        &self,
+        ray: &Ray,
+        tmax: f64,
+        scratch: &mut Vec<Hit>,
+        keep: &mut dyn FnMut(f64) -> bool,
+    ) -> bool {
+        let Some(q) = self.setup(ray) else {
+            return false;
+        };
+        let c = match &q.poly {
+            Poly::Quartic(c) if !self.sturm => c,
+            _ => {
+                scratch.clear();
+                self.intersect_all(ray, scratch);
+                return scratch.iter().any(|h| h.t < tmax && keep(h.t));
+            }
+        };
+        let (mut last, mut listed, mut found) = (None, 0, false);
+        first_root_with(c, 0.0, q.hi, |cand| {
+            let s = cand.root();
+            if last == Some(s) {
+                return None;
+            }
+            last = Some(s);
+            let t = q.to_t(s);
+            if t.is_nan() || t <= EPSILON {
+                return None;
+            }
+            // Roots increase, and `t` with them: none after this one is below `tmax`.
+            if listed == 4 || t >= tmax {
+                return Some(s);
+            }
+            listed += 1;
+            found = keep(t);
+            found.then_some(s)
+        });
+        found
     }
 
     fn inside(&self, p: DVec3) -> bool {
@@ -188,6 +274,60 @@ mod tests {
         let mut v = Vec::new();
         s.intersect_all(r, &mut v);
         v.iter().map(|h| h.t).collect()
+    }
+
+    /// `any_kept` answers as `intersect_all`'s crossings below `tmax` do, for keep tests
+    /// that take some crossings and not others, and asks only crossings that list has (the
+    /// same bits): rays from inside and outside, grazing ones, spindle and degenerate tori.
+    #[test]
+    fn any_kept_is_intersect_all() {
+        let mut rng = crate::geom::test_rng::Lcg(19);
+        let shapes = [
+            Torus::new(1.0, 0.25, false),
+            Torus::new(0.3, 0.6, false),
+            Torus::new(0.0, 0.5, false),
+            Torus::new(1.0, 0.25, true),
+            Torus::new(2.0, 1e-3, false),
+        ];
+        let (mut kept, mut total) = (0, 0);
+        for s in &shapes {
+            for _ in 0..4000 {
+                let origin = rng.vec(6.0);
+                // Aimed near the ring, or anywhere.
+                let aim = if rng.next() < 0.7 {
+                    let a = rng.next() * std::f64::consts::TAU;
+                    DVec3::new(a.cos() * s.major, 0.0, a.sin() * s.major) + rng.vec(3.0 * s.minor)
+                } else {
+                    rng.vec(4.0)
+                };
+                let ray = Ray::new(origin, (aim - origin) * (0.2 + rng.next()));
+                let listed = all(s, &ray);
+                let tmax = if rng.next() < 0.5 {
+                    f64::INFINITY
+                } else {
+                    rng.next() * 3.0
+                };
+                let cut = rng.next() * 2.0;
+                let want = listed.iter().any(|&t| t < tmax && t > cut);
+                let mut asked = Vec::new();
+                let mut keep = |t: f64| {
+                    asked.push(t);
+                    t > cut
+                };
+                let got = s.any_kept(&ray, tmax, &mut Vec::new(), &mut keep);
+                assert_eq!(got, want, "{s:?} {ray:?} {tmax} {cut} {listed:?}");
+                for t in &asked {
+                    assert!(listed.iter().any(|l| l.to_bits() == t.to_bits()));
+                }
+                kept += usize::from(got);
+                total += 1;
+            }
+        }
+        // Both answers are exercised.
+        assert!(
+            kept > total / 10 && kept < total * 9 / 10,
+            "{kept} of {total}"
+        );
     }
 
     fn close(a: &[f64], b: &[f64], tol: f64) -> bool {

@@ -4,7 +4,7 @@
 
 use std::cell::Cell;
 
-use crate::geom::Hit;
+use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
 use crate::scene::desc::CsgOp;
@@ -203,13 +203,23 @@ impl Object {
             if found || !slabs.hits(&c.bounds, tmax) {
                 return;
             }
-            let from = s.surface.len();
-            member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
-            found = s.surface[from..].iter().any(|h| {
-                let p = ray.at(h.t);
+            let face = ray_faces.and_then(|f| f.get(i));
+            let mut keep = |t: f64| {
+                let p = ray.at(t);
                 csg_keeps(op, i, children, index, faces, p, &rejecter)
-                    && (clip.is_empty() || (h.t > EPSILON && clip.iter().all(|c| c.inside(p))))
-            });
+                    && (clip.is_empty() || (t > EPSILON && clip.iter().all(|c| c.inside(p))))
+            };
+            // A leaf without face, clipping or window (`member_hits`' own case): its crossings
+            // asked as the shape finds them, so that a torus stops polishing at the first kept.
+            if let (ObjKind::Shape(shape, None), None, true) = (&c.kind, face, c.clip.is_empty()) {
+                let mut local = None;
+                let r = c.local_ray(ray, &mut local);
+                found = shape.any_kept(r, tmax, &mut s.hits, &mut keep);
+                return;
+            }
+            let from = s.surface.len();
+            member_hits(c, face, ray, tmax, s);
+            found = s.surface[from..].iter().any(|h| keep(h.t));
             s.surface.truncate(from);
         });
         found
@@ -289,6 +299,26 @@ impl Object {
             obj: c,
             hit: Hit::new(t),
             flip: c.inverse ^ (op == CsgOp::Difference && i > 0) ^ self.inverse,
+        })
+    }
+
+    /// `any_hit` of a leaf `shape` (this object's) with `clipped_by` and without window:
+    /// whether `clipped_first_hit` would find a crossing, that is whether any crossing
+    /// `all_hits_unclipped` lists (the shape's `intersect_all` below `tmax`) has t > EPSILON
+    /// and lies inside every clipping object. The shape asks them in its own order
+    /// (`Shape::any_kept`): a clipped torus stops polishing at the first one kept.
+    #[inline(never)]
+    pub(super) fn clipped_leaf_any_hit(
+        &self,
+        shape: &dyn Shape,
+        ray: &Ray,
+        tmax: f64,
+        s: &mut Scratch<'_>,
+    ) -> bool {
+        let mut local = None;
+        let r = self.local_ray(ray, &mut local);
+        shape.any_kept(r, tmax, &mut s.hits, &mut |t| {
+            t > EPSILON && self.clip.iter().all(|c| c.inside(ray.at(t)))
         })
     }
 

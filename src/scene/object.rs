@@ -224,7 +224,7 @@ impl Object {
     /// The ray in object space: `ray` itself when there is no transform (a copy costs more
     /// than the plane or sphere test reading it), else the transformed ray put in `local`.
     #[inline]
-    fn local_ray<'r>(&self, ray: &'r Ray, local: &'r mut Option<Ray>) -> &'r Ray {
+    pub(super) fn local_ray<'r>(&self, ray: &'r Ray, local: &'r mut Option<Ray>) -> &'r Ray {
         match &self.transform {
             Some(t) => local.insert(t.inv_ray(ray)),
             None => ray,
@@ -641,6 +641,9 @@ impl Object {
             }
         }
         if !self.clip.is_empty() {
+            if let ObjKind::Shape(shape, None) = &self.kind {
+                return self.clipped_leaf_any_hit(&**shape, ray, tmax, s);
+            }
             return self.clipped_hit(ray, tmax, s, false).is_some();
         }
         self.first_hit(ray, tmax, s).is_some()
