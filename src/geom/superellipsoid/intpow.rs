@@ -156,7 +156,16 @@ mod tests {
         }
         for k in [3.0, 4.0, 5.0, 10.0, 20.0, 2.5, 1.5, 128.0] {
             let p = IntPow::new(k).unwrap();
-            for x in [0.0, 1.0, 2.0, 0.5, f64::MIN_POSITIVE, 5e-324, 1e300, f64::INFINITY] {
+            for x in [
+                0.0,
+                1.0,
+                2.0,
+                0.5,
+                f64::MIN_POSITIVE,
+                5e-324,
+                1e300,
+                f64::INFINITY,
+            ] {
                 assert_eq!(p.of(x).to_bits(), x.powf(k).to_bits(), "{x} {k}");
             }
             assert!(p.of(f64::NAN).is_nan());
