@@ -12,11 +12,13 @@
 //! field is therefore evaluated as `m^(2/n) · (1 + (min/max)^(2/e))^(e/n)` with `m` the larger
 //! of |x| and |y|, and the gradient in logarithms.
 
+mod intpow;
 mod linear;
 mod near;
 
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
+use intpow::IntPow;
 use linear::LinConsts;
 use near::Series;
 
@@ -26,8 +28,11 @@ const MARGIN: f64 = 1e-6;
 const SAMPLES: usize = 4;
 
 /// Table steps on [0, 1] for the bounds of the samples' powers (a power of two, so that
-/// `x * STEPS` and its floor are exact).
-const STEPS: usize = 128;
+/// `x * STEPS` and its floor are exact). 512 rather than 128: a sample the tables leave
+/// undecided costs two to four `pow` calls, and with large exponents (|z|^20 for n = 0.1)
+/// one step of 128 near 1 spans a seventh of the field. The tables cost ~1,500 powers per
+/// shape; 1024 steps decided a little more and cost more than they saved (superel2).
+const STEPS: usize = 512;
 
 #[derive(Clone, Debug)]
 pub struct Superellipsoid {
@@ -54,11 +59,13 @@ pub struct Superellipsoid {
 /// A fixed exponent. `powf` with exponent 1, 2 or 1/2 gives exactly `x`, `x * x` and
 /// `x.sqrt()` (the correctly rounded results; unit test `special_powers_are_exact`), at a
 /// fraction of the cost: these exponents come from round shapes' `e` or `n` of 1 or 2.
+/// Other whole and half-whole exponents have their own form with the same bits (`intpow`).
 #[derive(Clone, Copy, Debug)]
 enum Power {
     One,
     Two,
     Half,
+    Whole(IntPow),
     Other(f64),
 }
 
@@ -70,6 +77,8 @@ impl Power {
             Power::Two
         } else if k == 0.5 {
             Power::Half
+        } else if let Some(p) = IntPow::new(k) {
+            Power::Whole(p)
         } else {
             Power::Other(k)
         }
@@ -82,6 +91,7 @@ impl Power {
             Power::One => x,
             Power::Two => x * x,
             Power::Half => x.sqrt(),
+            Power::Whole(p) => p.of(x),
             Power::Other(k) => x.powf(k),
         }
     }
@@ -91,6 +101,7 @@ impl Power {
             Power::One => 1.0,
             Power::Two => 2.0,
             Power::Half => 0.5,
+            Power::Whole(p) => p.exponent(),
             Power::Other(k) => k,
         }
     }
@@ -102,8 +113,12 @@ fn around(table: &[f64; STEPS + 1], x: f64) -> Option<(f64, f64)> {
     if x > 1.0 || x.is_nan() {
         return None;
     }
-    let i = (x * STEPS as f64) as usize;
-    Some((table[i], table[(i + 1).min(STEPS)]))
+    // SAFETY: `x` is an absolute value or a ratio of them (not negative), not NaN and at most
+    // 1 here, so `x * STEPS` is in [0, STEPS] and its truncation fits a u32. (The checked
+    // float-to-usize cast was a tenth of the samples' cost.)
+    let i = unsafe { (x * STEPS as f64).to_int_unchecked::<u32>() } as usize;
+    let i = i.min(STEPS - 1);
+    Some((table[i], table[i + 1]))
 }
 
 /// A point's field value, or only its sign when that is certain without the whole value.
@@ -159,6 +174,10 @@ impl Superellipsoid {
     /// is `m^c·(1 + r^a)^b + |z|^c − 1` with `1 <= (1 + r^a)^b <= 2^b`, so far enough from
     /// the surface the two other powers are not needed. When they are, the value is finished
     /// from the same powers, so it is `value`'s to the bit.
+    ///
+    /// Inlined into the sample loop (most samples end at the box test or the tables, ~40
+    /// instructions, which the call's overhead grew by a third); the powers are `field_powers`.
+    #[inline(always)]
     fn field(&self, p: DVec3) -> Field {
         let (x, y, z) = (p.x.abs(), p.y.abs(), p.z.abs());
         let m = x.max(y);
@@ -174,7 +193,7 @@ impl Superellipsoid {
             return Field::Sign(false);
         }
         if m <= 0.0 || m.is_nan() {
-            return Field::Value(self.value(p));
+            return self.field_powers(p, m, 0.0);
         }
         let r = x.min(y) / m;
         // Bounds from the tables first (no power at all): the field is increasing in `m`, `r`
@@ -191,6 +210,17 @@ impl Superellipsoid {
                 return Field::Sign(true);
             }
         }
+        self.field_powers(p, m, r)
+    }
+
+    /// `field`'s end where the tables do not settle the sign: `m` is max(|x|, |y|) and `r`
+    /// min/max (not read when `m` is not positive, where `value` decides).
+    #[inline(never)]
+    fn field_powers(&self, p: DVec3, m: f64, r: f64) -> Field {
+        if m <= 0.0 || m.is_nan() {
+            return Field::Value(self.value(p));
+        }
+        let z = p.z.abs();
         let (mc, zc) = (self.c.of(m), self.c.of(z));
         // Margins far above the rounding of these few operations.
         if mc + zc > 1.0 + 1e-9 {

@@ -101,7 +101,7 @@ fn near_power(power: Power, s: &Series, x: f64, x0: f64, inv0: f64, p0: f64) -> 
         Power::One => Some((x, 0.0)),
         Power::Two => Some((x * x, 0.0)),
         Power::Half => Some((x.sqrt(), 0.0)),
-        Power::Other(_) => {
+        Power::Whole(_) | Power::Other(_) => {
             // The same argument gives the same bits; `powf(0, k)` is 0 for k > 0.
             if x == x0 {
                 return Some((p0, 0.0));
