@@ -151,8 +151,29 @@ unsafe fn cell_avx(p: DVec3) -> Cell {
         _mm256_storeu_pd(ta.as_mut_ptr(), t);
         _mm256_storeu_pd(sa.as_mut_ptr(), s);
         _mm256_storeu_pd(oa.as_mut_ptr(), o);
-        // The floors are integers inside the i32 range: converted exactly, and the hash's
-        // wrapping add and 12-bit mask see the same low bits as in i64.
+        let entry = entries_avx(f);
+        Cell {
+            t: [ta[0], ta[1], ta[2]],
+            wxy,
+            wz: [oa[2], sa[2]],
+            entry,
+        }
+    }
+}
+
+/// The eight corners' ENTRY positions of the cell whose floors are `f`'s lanes (x, y, z,
+/// unused): `cell`'s hash walk. The floors must be integers inside the i32 range (the
+/// callers check): converted exactly, and the hash's wrapping add and 12-bit mask see the
+/// same low bits as in i64.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn entries_avx(f: std::arch::x86_64::__m256d) -> [u32; 8] {
+    use std::arch::x86_64::*;
+    // SAFETY: the caller guarantees AVX.
+    unsafe {
         let m0 = _mm_add_epi32(_mm256_cvttpd_epi32(f), _mm_set1_epi32(HASH_OFFSET as i32));
         let m1 = _mm_add_epi32(m0, _mm_set1_epi32(1));
         let mask = _mm_set1_epi32(4095);
@@ -175,11 +196,47 @@ unsafe fn cell_avx(p: DVec3) -> Cell {
         for (c, e) in entry.iter_mut().enumerate() {
             *e = u32::from(HASH_Z[(hxy[c & 3] ^ mz[c >> 2]) & 4095]);
         }
-        Cell {
+        entry
+    }
+}
+
+/// What `scalar_avx4` reads of a cell: the fractional position and the corners' ENTRY
+/// positions (`Cell` without the weights, which the four-point lanes compute themselves).
+#[derive(Clone, Copy)]
+struct Corners {
+    t: [f64; 3],
+    entry: [u32; 8],
+}
+
+/// `cell_avx`'s fractional position and hash walk without its weights: the batched scalar
+/// noise (wrinkles' ten octaves, granite's, a normal's four samples) computed and stored
+/// the weights of every point only for `scalar_avx4` to compute them again in its lanes.
+/// Coordinates outside the i32 range (and NaN) take `cell`, as `cell_avx` does.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn corners_avx(p: DVec3) -> Corners {
+    use std::arch::x86_64::*;
+    // SAFETY: the caller guarantees AVX.
+    unsafe {
+        let v = _mm256_setr_pd(p.x, p.y, p.z, 0.0);
+        let f = _mm256_round_pd::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(v);
+        let abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), f);
+        let inside = _mm256_cmp_pd::<_CMP_LT_OQ>(abs, _mm256_set1_pd(2147483648.0));
+        if _mm256_movemask_pd(inside) != 0b1111 {
+            let c = cell(p);
+            return Corners {
+                t: c.t,
+                entry: c.entry,
+            };
+        }
+        let mut ta = [0.0; 4];
+        _mm256_storeu_pd(ta.as_mut_ptr(), _mm256_sub_pd(v, f));
+        Corners {
             t: [ta[0], ta[1], ta[2]],
-            wxy,
-            wz: [oa[2], sa[2]],
-            entry,
+            entry: entries_avx(f),
         }
     }
 }
@@ -251,17 +308,26 @@ fn scalar_into_avx(ps: &[DVec3], out: &mut [f64]) {
         return;
     }
     // Every hash walk first (as `scalar_into_with`), without initialising the unused cells.
-    let mut buf = [const { MaybeUninit::<Cell>::uninit() }; MAX_POINTS];
+    let mut buf = [const { MaybeUninit::<Corners>::uninit() }; MAX_POINTS];
     for (b, &p) in buf.iter_mut().zip(&ps[..n]) {
         // SAFETY: this function only runs with AVX enabled.
-        b.write(unsafe { cell_avx(p) });
+        b.write(unsafe { corners_avx(p) });
     }
-    // SAFETY: the first n cells were written just above; Cell is Copy (nothing to drop).
-    let cells = unsafe { std::slice::from_raw_parts(buf.as_ptr() as *const Cell, n) };
-    for (c, o) in cells.chunks(4).zip(out[..n].chunks_mut(4)) {
+    // SAFETY: the first n cells were written just above; Corners is Copy (nothing to drop).
+    let cells = unsafe { std::slice::from_raw_parts(buf.as_ptr() as *const Corners, n) };
+    for ((c, o), p) in cells
+        .chunks(4)
+        .zip(out[..n].chunks_mut(4))
+        .zip(ps.chunks(4))
+    {
         if c.len() == 1 {
+            // A lone last point (5 or 9 octaves) takes the one-point lanes, which need the
+            // weights: its whole cell again.
             // SAFETY: as above.
-            o[0] = unsafe { scalar_avx(&c[0]) };
+            o[0] = unsafe { scalar_avx(&cell_avx(p[0])) };
+        } else if c.len() == 2 {
+            // SAFETY: as above.
+            unsafe { scalar_avx2(c, o) };
         } else {
             // SAFETY: as above.
             unsafe { scalar_avx4(c, o) };
@@ -279,7 +345,7 @@ fn scalar_into_avx(ps: &[DVec3], out: &mut [f64]) {
 /// The CPU must have AVX.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn scalar_avx4(cells: &[Cell], out: &mut [f64]) {
+unsafe fn scalar_avx4(cells: &[Corners], out: &mut [f64]) {
     use std::arch::x86_64::*;
     let n = cells.len();
     // Missing lanes repeat the last point; their results are dropped.
@@ -326,6 +392,60 @@ unsafe fn scalar_avx4(cells: &[Cell], out: &mut [f64]) {
         let mut res = [0.0; 4];
         _mm256_storeu_pd(res.as_mut_ptr(), acc);
         out.copy_from_slice(&res[..n]);
+    }
+}
+
+/// `scalar_avx4` for two points in the two lanes of a 128-bit register: the last two of ten
+/// octaves (wrinkles, granite) took a four-lane pass of which half was thrown away. Each
+/// lane does `scalar_avx4`'s operations in its order (the accumulator starting at +0 too),
+/// so the bits are the same.
+///
+/// # Safety
+/// The CPU must have AVX (the caller's target feature; SSE2 would do).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn scalar_avx2(cells: &[Corners], out: &mut [f64]) {
+    use std::arch::x86_64::*;
+    let (a, b) = (&cells[0], &cells[1]);
+    // SAFETY: the caller guarantees AVX; ROWS' rows are 32-byte aligned, so both their
+    // halves are 16-byte aligned, as the aligned loads need.
+    unsafe {
+        let v = |i: usize| _mm_setr_pd(a.t[i], b.t[i]);
+        let (tx, ty, tz) = (v(0), v(1), v(2));
+        let one = _mm_set1_pd(1.0);
+        let s_curve = |t: __m128d| {
+            _mm_mul_pd(
+                _mm_mul_pd(t, t),
+                _mm_sub_pd(_mm_set1_pd(3.0), _mm_mul_pd(_mm_set1_pd(2.0), t)),
+            )
+        };
+        let (sx, sy, sz) = (s_curve(tx), s_curve(ty), s_curve(tz));
+        let (wx, wy) = ([_mm_sub_pd(one, sx), sx], [_mm_sub_pd(one, sy), sy]);
+        let wxy = [
+            _mm_mul_pd(wx[0], wy[0]),
+            _mm_mul_pd(wx[1], wy[0]),
+            _mm_mul_pd(wx[0], wy[1]),
+            _mm_mul_pd(wx[1], wy[1]),
+        ];
+        let wz = [_mm_sub_pd(one, sz), sz];
+        let dx = [tx, _mm_sub_pd(tx, one)];
+        let dy = [ty, _mm_sub_pd(ty, one)];
+        let dz = [tz, _mm_sub_pd(tz, one)];
+        let mut acc = _mm_setzero_pd();
+        for k in 0..8 {
+            let ra = ROWS[a.entry[k] as usize & 255].0.as_ptr();
+            let rb = ROWS[b.entry[k] as usize & 255].0.as_ptr();
+            let (alo, ahi) = (_mm_load_pd(ra), _mm_load_pd(ra.add(2)));
+            let (blo, bhi) = (_mm_load_pd(rb), _mm_load_pd(rb.add(2)));
+            let (e0, e1) = (_mm_unpacklo_pd(alo, blo), _mm_unpackhi_pd(alo, blo));
+            let (e2, e3) = (_mm_unpacklo_pd(ahi, bhi), _mm_unpackhi_pd(ahi, bhi));
+            let mut t = _mm_add_pd(e0, _mm_mul_pd(e1, dx[k & 1]));
+            t = _mm_add_pd(t, _mm_mul_pd(e2, dy[(k >> 1) & 1]));
+            t = _mm_add_pd(t, _mm_mul_pd(e3, dz[k >> 2]));
+            let w = _mm_mul_pd(wxy[k & 3], wz[k >> 2]);
+            acc = _mm_add_pd(acc, _mm_mul_pd(w, t));
+        }
+        _mm_storeu_pd(out.as_mut_ptr(), acc);
     }
 }
 
