@@ -124,10 +124,17 @@ impl Steps {
         while span >> shift >= BUCKETS {
             shift += 1;
         }
+        // The ranges' starts rise with i and `t` is sorted, so each count goes on from the
+        // one before: one walk of the table instead of a bisection per range (4096 of
+        // them, ~0.3 M instructions of every 8-bit render).
+        let mut below = 0;
         let start = (0..=span >> shift)
             .map(|i| {
                 let v = at(first + (i << shift));
-                t.partition_point(|&x| x <= v) as u16
+                while below < t.len() && t[below] <= v {
+                    below += 1;
+                }
+                below as u16
             })
             .collect();
         Steps {
@@ -244,6 +251,11 @@ mod tests {
         ];
         for t in tables {
             let steps = Steps::from_thresholds(t.to_vec(), 7);
+            // Each range's count is the bisection's.
+            for (i, &s) in steps.start.iter().enumerate() {
+                let v = at(steps.first + ((i as u64) << steps.shift));
+                assert_eq!(s as usize, t.partition_point(|&x| x <= v), "{i} in {t:?}");
+            }
             let mut probes = vec![f64::MIN_POSITIVE, 1e-310, 1e300, f64::INFINITY, 0.3, 5.0];
             for &x in t {
                 for b in x.to_bits().saturating_sub(2)..x.to_bits() + 3 {

@@ -113,6 +113,20 @@ fn cell(p: DVec3) -> Cell {
     }
 }
 
+/// Whether every lane of the comparison mask `m` is set: one `vtestpd` of its sign bits
+/// against all ones (`_mm256_movemask_pd(m) == 0b1111` compiled to seven instructions, an
+/// extract, two 64-bit compares, an or and a test, on every point of every noise).
+///
+/// # Safety
+/// The CPU must have AVX.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn all_lanes(m: std::arch::x86_64::__m256d) -> bool {
+    use std::arch::x86_64::*;
+    // SAFETY: the caller guarantees AVX.
+    unsafe { _mm256_testc_pd(m, _mm256_castsi256_pd(_mm256_set1_epi64x(-1))) != 0 }
+}
+
 /// `cell` with the three coordinates in the lanes of one AVX register: one rounding, one
 /// conversion and one s-curve for the three axes instead of three scalar ones (each scalar
 /// `as i64` is a conversion plus its saturation and NaN checks). The same operations per
@@ -131,7 +145,7 @@ unsafe fn cell_avx(p: DVec3) -> Cell {
         let f = _mm256_round_pd::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(v);
         let abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), f);
         let inside = _mm256_cmp_pd::<_CMP_LT_OQ>(abs, _mm256_set1_pd(2147483648.0));
-        if _mm256_movemask_pd(inside) != 0b1111 {
+        if !all_lanes(inside) {
             return cell(p);
         }
         let t = _mm256_sub_pd(v, f);
@@ -151,8 +165,29 @@ unsafe fn cell_avx(p: DVec3) -> Cell {
         _mm256_storeu_pd(ta.as_mut_ptr(), t);
         _mm256_storeu_pd(sa.as_mut_ptr(), s);
         _mm256_storeu_pd(oa.as_mut_ptr(), o);
-        // The floors are integers inside the i32 range: converted exactly, and the hash's
-        // wrapping add and 12-bit mask see the same low bits as in i64.
+        let entry = entries_avx(f);
+        Cell {
+            t: [ta[0], ta[1], ta[2]],
+            wxy,
+            wz: [oa[2], sa[2]],
+            entry,
+        }
+    }
+}
+
+/// The eight corners' ENTRY positions of the cell whose floors are `f`'s lanes (x, y, z,
+/// unused): `cell`'s hash walk. The floors must be integers inside the i32 range (the
+/// callers check): converted exactly, and the hash's wrapping add and 12-bit mask see the
+/// same low bits as in i64.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn entries_avx(f: std::arch::x86_64::__m256d) -> [u32; 8] {
+    use std::arch::x86_64::*;
+    // SAFETY: the caller guarantees AVX.
+    unsafe {
         let m0 = _mm_add_epi32(_mm256_cvttpd_epi32(f), _mm_set1_epi32(HASH_OFFSET as i32));
         let m1 = _mm_add_epi32(m0, _mm_set1_epi32(1));
         let mask = _mm_set1_epi32(4095);
@@ -175,11 +210,47 @@ unsafe fn cell_avx(p: DVec3) -> Cell {
         for (c, e) in entry.iter_mut().enumerate() {
             *e = u32::from(HASH_Z[(hxy[c & 3] ^ mz[c >> 2]) & 4095]);
         }
-        Cell {
+        entry
+    }
+}
+
+/// What `scalar_avx4` reads of a cell: the fractional position and the corners' ENTRY
+/// positions (`Cell` without the weights, which the four-point lanes compute themselves).
+#[derive(Clone, Copy)]
+struct Corners {
+    t: [f64; 3],
+    entry: [u32; 8],
+}
+
+/// `cell_avx`'s fractional position and hash walk without its weights: the batched scalar
+/// noise (wrinkles' ten octaves, granite's, a normal's four samples) computed and stored
+/// the weights of every point only for `scalar_avx4` to compute them again in its lanes.
+/// Coordinates outside the i32 range (and NaN) take `cell`, as `cell_avx` does.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn corners_avx(p: DVec3) -> Corners {
+    use std::arch::x86_64::*;
+    // SAFETY: the caller guarantees AVX.
+    unsafe {
+        let v = _mm256_setr_pd(p.x, p.y, p.z, 0.0);
+        let f = _mm256_round_pd::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(v);
+        let abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), f);
+        let inside = _mm256_cmp_pd::<_CMP_LT_OQ>(abs, _mm256_set1_pd(2147483648.0));
+        if !all_lanes(inside) {
+            let c = cell(p);
+            return Corners {
+                t: c.t,
+                entry: c.entry,
+            };
+        }
+        let mut ta = [0.0; 4];
+        _mm256_storeu_pd(ta.as_mut_ptr(), _mm256_sub_pd(v, f));
+        Corners {
             t: [ta[0], ta[1], ta[2]],
-            wxy,
-            wz: [oa[2], sa[2]],
-            entry,
+            entry: entries_avx(f),
         }
     }
 }
@@ -251,17 +322,26 @@ fn scalar_into_avx(ps: &[DVec3], out: &mut [f64]) {
         return;
     }
     // Every hash walk first (as `scalar_into_with`), without initialising the unused cells.
-    let mut buf = [const { MaybeUninit::<Cell>::uninit() }; MAX_POINTS];
+    let mut buf = [const { MaybeUninit::<Corners>::uninit() }; MAX_POINTS];
     for (b, &p) in buf.iter_mut().zip(&ps[..n]) {
         // SAFETY: this function only runs with AVX enabled.
-        b.write(unsafe { cell_avx(p) });
+        b.write(unsafe { corners_avx(p) });
     }
-    // SAFETY: the first n cells were written just above; Cell is Copy (nothing to drop).
-    let cells = unsafe { std::slice::from_raw_parts(buf.as_ptr() as *const Cell, n) };
-    for (c, o) in cells.chunks(4).zip(out[..n].chunks_mut(4)) {
+    // SAFETY: the first n cells were written just above; Corners is Copy (nothing to drop).
+    let cells = unsafe { std::slice::from_raw_parts(buf.as_ptr() as *const Corners, n) };
+    for ((c, o), p) in cells
+        .chunks(4)
+        .zip(out[..n].chunks_mut(4))
+        .zip(ps.chunks(4))
+    {
         if c.len() == 1 {
+            // A lone last point (5 or 9 octaves) takes the one-point lanes, which need the
+            // weights: its whole cell again.
             // SAFETY: as above.
-            o[0] = unsafe { scalar_avx(&c[0]) };
+            o[0] = unsafe { scalar_avx(&cell_avx(p[0])) };
+        } else if c.len() == 2 {
+            // SAFETY: as above.
+            unsafe { scalar_avx2(c, o) };
         } else {
             // SAFETY: as above.
             unsafe { scalar_avx4(c, o) };
@@ -279,7 +359,7 @@ fn scalar_into_avx(ps: &[DVec3], out: &mut [f64]) {
 /// The CPU must have AVX.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn scalar_avx4(cells: &[Cell], out: &mut [f64]) {
+unsafe fn scalar_avx4(cells: &[Corners], out: &mut [f64]) {
     use std::arch::x86_64::*;
     let n = cells.len();
     // Missing lanes repeat the last point; their results are dropped.
@@ -326,6 +406,60 @@ unsafe fn scalar_avx4(cells: &[Cell], out: &mut [f64]) {
         let mut res = [0.0; 4];
         _mm256_storeu_pd(res.as_mut_ptr(), acc);
         out.copy_from_slice(&res[..n]);
+    }
+}
+
+/// `scalar_avx4` for two points in the two lanes of a 128-bit register: the last two of ten
+/// octaves (wrinkles, granite) took a four-lane pass of which half was thrown away. Each
+/// lane does `scalar_avx4`'s operations in its order (the accumulator starting at +0 too),
+/// so the bits are the same.
+///
+/// # Safety
+/// The CPU must have AVX (the caller's target feature; SSE2 would do).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn scalar_avx2(cells: &[Corners], out: &mut [f64]) {
+    use std::arch::x86_64::*;
+    let (a, b) = (&cells[0], &cells[1]);
+    // SAFETY: the caller guarantees AVX; ROWS' rows are 32-byte aligned, so both their
+    // halves are 16-byte aligned, as the aligned loads need.
+    unsafe {
+        let v = |i: usize| _mm_setr_pd(a.t[i], b.t[i]);
+        let (tx, ty, tz) = (v(0), v(1), v(2));
+        let one = _mm_set1_pd(1.0);
+        let s_curve = |t: __m128d| {
+            _mm_mul_pd(
+                _mm_mul_pd(t, t),
+                _mm_sub_pd(_mm_set1_pd(3.0), _mm_mul_pd(_mm_set1_pd(2.0), t)),
+            )
+        };
+        let (sx, sy, sz) = (s_curve(tx), s_curve(ty), s_curve(tz));
+        let (wx, wy) = ([_mm_sub_pd(one, sx), sx], [_mm_sub_pd(one, sy), sy]);
+        let wxy = [
+            _mm_mul_pd(wx[0], wy[0]),
+            _mm_mul_pd(wx[1], wy[0]),
+            _mm_mul_pd(wx[0], wy[1]),
+            _mm_mul_pd(wx[1], wy[1]),
+        ];
+        let wz = [_mm_sub_pd(one, sz), sz];
+        let dx = [tx, _mm_sub_pd(tx, one)];
+        let dy = [ty, _mm_sub_pd(ty, one)];
+        let dz = [tz, _mm_sub_pd(tz, one)];
+        let mut acc = _mm_setzero_pd();
+        for k in 0..8 {
+            let ra = ROWS[a.entry[k] as usize & 255].0.as_ptr();
+            let rb = ROWS[b.entry[k] as usize & 255].0.as_ptr();
+            let (alo, ahi) = (_mm_load_pd(ra), _mm_load_pd(ra.add(2)));
+            let (blo, bhi) = (_mm_load_pd(rb), _mm_load_pd(rb.add(2)));
+            let (e0, e1) = (_mm_unpacklo_pd(alo, blo), _mm_unpackhi_pd(alo, blo));
+            let (e2, e3) = (_mm_unpacklo_pd(ahi, bhi), _mm_unpackhi_pd(ahi, bhi));
+            let mut t = _mm_add_pd(e0, _mm_mul_pd(e1, dx[k & 1]));
+            t = _mm_add_pd(t, _mm_mul_pd(e2, dy[(k >> 1) & 1]));
+            t = _mm_add_pd(t, _mm_mul_pd(e3, dz[k >> 2]));
+            let w = _mm_mul_pd(wxy[k & 3], wz[k >> 2]);
+            acc = _mm_add_pd(acc, _mm_mul_pd(w, t));
+        }
+        _mm_storeu_pd(out.as_mut_ptr(), acc);
     }
 }
 
@@ -617,208 +751,5 @@ pub fn vector_octaves(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// `SCALAR_BOUND` holds at random points and at the points where the s-curve weights sit
-    /// on one corner (integer coordinates and just below them), where a term is largest.
-    #[test]
-    fn scalar_noise_stays_within_its_bound() {
-        let mut most: f64 = 0.0;
-        for n in 0..200_000 {
-            let t = n as f64 * 0.618_033_988_7;
-            let p = DVec3::new(t.sin() * 900.0, t * 0.37 - 5_000.0, (t * 0.71).cos() * 40.0);
-            most = most.max(scalar(p).abs());
-            let k = p.floor();
-            for q in [k, k - DVec3::splat(1e-9), k + DVec3::splat(0.5)] {
-                most = most.max(scalar(q).abs());
-            }
-        }
-        assert!(most <= SCALAR_BOUND, "{most} > {SCALAR_BOUND}");
-        const { assert!(SCALAR_BOUND < 100.0) };
-    }
-
-    /// The original formulation: one scalar chain per corner and component, read straight
-    /// from ENTRY.
-    fn reference(p: DVec3, k: usize) -> f64 {
-        let (fx, fy, fz) = (p.x.floor(), p.y.floor(), p.z.floor());
-        let (ix, iy, iz) = (fx as i64, fy as i64, fz as i64);
-        let t = [p.x - fx, p.y - fy, p.z - fz];
-        let s = t.map(s_curve);
-        let m = |c: i64| (c.wrapping_add(HASH_OFFSET) & 4095) as usize;
-        let mut out = 0.0;
-        for corner in 0..8usize {
-            let d = [corner & 1, (corner >> 1) & 1, corner >> 2];
-            let w: [f64; 3] = std::array::from_fn(|a| if d[a] == 1 { s[a] } else { 1.0 - s[a] });
-            let hx = HASH_X[m(ix + d[0] as i64)] as usize;
-            let hy = HASH_Y[hx ^ m(iy + d[1] as i64)] as usize;
-            let i = HASH_Z[hy ^ m(iz + d[2] as i64)] as usize + k;
-            let dd: [f64; 3] = std::array::from_fn(|a| t[a] - d[a] as f64);
-            out += w[0]
-                * w[1]
-                * w[2]
-                * (0.5 * ENTRY[i]
-                    + ENTRY[i + 1] * dd[0]
-                    + ENTRY[i + 2] * dd[1]
-                    + ENTRY[i + 3] * dd[2]);
-        }
-        out
-    }
-
-    #[test]
-    fn packed_lattice_is_the_scalar_lattice() {
-        for n in 0..20_000 {
-            let t = n as f64 * 0.0137;
-            let p = DVec3::new(t.sin() * 50.0, t * 0.31 - 7.0, (t * 0.7).cos() * 33.0);
-            let want = [reference(p, 0), reference(p, 4), reference(p, 8)];
-            assert_eq!(scalar(p).to_bits(), want[0].to_bits(), "{p}");
-            assert_eq!(scalar_lanes(&cell(p)).to_bits(), want[0].to_bits(), "{p}");
-            assert_eq!(
-                vector(p).to_array().map(f64::to_bits),
-                want.map(f64::to_bits),
-                "{p}"
-            );
-            assert_eq!(
-                vector_lanes(&cell(p)).map(f64::to_bits),
-                want.map(f64::to_bits),
-                "{p}"
-            );
-        }
-    }
-
-    /// `cell_avx` is `cell` field for field, bit for bit: every magnitude from tiny to past
-    /// the i32 range (where it hands over to `cell`), both signs, integers and their
-    /// neighbours, signed zeros, infinities and NaN.
-    #[cfg(target_arch = "x86_64")]
-    #[test]
-    fn avx_cell_is_the_cell() {
-        if !has_avx() {
-            return;
-        }
-        let bits = |c: &Cell| {
-            (
-                c.t.map(f64::to_bits),
-                c.wxy.map(f64::to_bits),
-                c.wz.map(f64::to_bits),
-                c.entry,
-            )
-        };
-        let mut vals = vec![
-            0.0,
-            -0.0,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::NAN,
-            f64::MIN_POSITIVE,
-            -f64::MIN_POSITIVE,
-            2147483647.0,
-            2147483647.5,
-            2147483648.0,
-            -2147483648.0,
-            -2147483648.5,
-            -2147483649.0,
-            4503599627370496.0,
-            -4503599627370497.0,
-            1e300,
-            -1e300,
-        ];
-        let mut x = 0x9E37_79B9_7F4A_7C15u64;
-        for k in 0..4_000i32 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            let m = (x >> 11) as f64 / (1u64 << 53) as f64;
-            let e = k % 80 - 40;
-            let v = m * 2f64.powi(e) * if x & 1 == 0 { 1.0 } else { -1.0 };
-            vals.push(v);
-            let n = (v * 7.0).round();
-            vals.extend([
-                n,
-                f64::from_bits(n.to_bits() + 1),
-                n.next_down(),
-                n.next_up(),
-            ]);
-        }
-        for (i, &a) in vals.iter().enumerate() {
-            let (b, c) = (
-                vals[(i * 7 + 3) % vals.len()],
-                vals[(i * 13 + 5) % vals.len()],
-            );
-            for p in [
-                DVec3::new(a, b, c),
-                DVec3::new(c, a, b),
-                DVec3::new(b, c, a),
-            ] {
-                // SAFETY: AVX was detected above.
-                let got = unsafe { cell_avx(p) };
-                assert_eq!(bits(&got), bits(&cell(p)), "{p:?}");
-            }
-        }
-    }
-
-    #[test]
-    fn vectors_together_are_one_at_a_time() {
-        for n in 0..2_000 {
-            let t = n as f64 * 0.291;
-            let p = DVec3::new(t.sin() * 70.0, t * 0.11 - 30.0, (t * 0.9).cos() * 12.0);
-            let ps: [DVec3; 10] = std::array::from_fn(|k| p * (1u32 << k) as f64);
-            let bits = |v: DVec3| v.to_array().map(f64::to_bits);
-            let want = ps.map(|q| bits(vector(q)));
-            let mut got = [DVec3::ZERO; 10];
-            vector_many(&ps, &mut got);
-            assert_eq!(got.map(bits), want);
-            vector_many_with(&ps, &mut got, cell, vector_lanes);
-            assert_eq!(got.map(bits), want);
-            // Component 0 of the vector noise is the scalar noise, bit for bit (dents reads
-            // both at one point from one walk).
-            assert_eq!(want.map(|w| w[0]), ps.map(|q| scalar(q).to_bits()));
-        }
-    }
-
-    #[test]
-    fn batched_scalar_is_the_scalar_lattice() {
-        for n in 0..2_000 {
-            let p = DVec3::new(n as f64 * 0.37 - 300.0, (n as f64).sqrt(), -0.01 * n as f64);
-            let ps: [DVec3; MAX_POINTS] =
-                std::array::from_fn(|k| p * (1 << (k % 10)) as f64 + DVec3::splat((k / 10) as f64));
-            // Every batch size, as the AVX path groups the points by four.
-            for m in 1..=MAX_POINTS {
-                let mut got = [0.0; MAX_POINTS];
-                scalar_into(&ps[..m], &mut got[..m]);
-                // The path without AVX too (this machine may take the AVX one above).
-                let mut lanes = [0.0; MAX_POINTS];
-                scalar_into_with(&ps[..m], &mut lanes[..m], scalar_lanes);
-                for (k, (v, l)) in got[..m].iter().zip(&lanes[..m]).enumerate() {
-                    let want = reference(ps[k], 0).to_bits();
-                    assert_eq!((v.to_bits(), l.to_bits()), (want, want), "{m} {k}");
-                }
-            }
-        }
-    }
-
-    #[test]
-    fn octaves_are_the_scalar_lattice_octaves() {
-        for n in 0..2_000 {
-            let t = n as f64 * 0.173;
-            let p = DVec3::new(t.cos() * 9.0, t * 0.05, t.sin() * 4.0 - 2.0);
-            let a = vector_octaves(p, 10, 0.5, 2.5);
-            let (mut b, mut scale, mut weight) = (DVec3::ZERO, 1.0, 1.0);
-            for _ in 0..10 {
-                let q = p * scale;
-                b += weight * DVec3::new(reference(q, 0), reference(q, 4), reference(q, 8));
-                scale *= 2.5;
-                weight *= 0.5;
-            }
-            let lanes = octaves_with(p, 10, 0.5, 2.5, cell, vector_lanes);
-            let bits = |v: DVec3| v.to_array().map(f64::to_bits);
-            assert_eq!((bits(a), bits(lanes)), (bits(b), bits(b)));
-            let ps = [0.0, 0.01, -0.03, 1.5].map(|d| p + DVec3::new(d, d, -d));
-            for oct in [1, 3, 4, 10] {
-                let one = ps.map(|p| bits(vector_octaves(p, oct, 0.5, 2.5)));
-                let four = vector_octaves4(ps, oct, 0.5, 2.5).map(bits);
-                let four_lanes = octaves4_with(ps, oct, 0.5, 2.5, cell, vector_lanes).map(bits);
-                assert_eq!((four, four_lanes), (one, one));
-            }
-        }
-    }
-}
+#[path = "noise_lattice_tests.rs"]
+mod tests;
