@@ -281,9 +281,12 @@ impl<'a> Tracer<'a> {
         // a reflected ray stays where its incident ray was, whichever way it turns
         // (measured: rays reflected from a rippled floor into the floor's half-space are
         // fogged, advanced/mist.pov).
-        let atmosphere =
-            !self.scene.fogs.is_empty() || !self.scene.media.is_empty() || self.scene.object_media;
-        let solid = atmosphere
+        let media = !self.scene.media.is_empty() || self.scene.object_media;
+        // A radiosity pretrace pass keeps the samples its camera rays' trees gather, not their
+        // colour, which is all fog changes: no fog there, nor the inside test it needs.
+        let fog = !self.scene.fogs.is_empty()
+            && !(path.rad_level == 0 && self.rad.is_some_and(|r| r.probe));
+        let solid = (fog || media)
             && path.in_solid.unwrap_or_else(|| {
                 let mid = if t.is_finite() { t * 0.5 } else { 1.0 };
                 self.scene.inside_solid(ray.at(mid))
@@ -296,10 +299,10 @@ impl<'a> Tracer<'a> {
             Some(h) => self.shade_blended(ray, &h, path, ctx),
             None => self.background(ray.dir, path.straight),
         };
-        if t.is_finite() && !solid && (self.scene.object_media || !self.scene.media.is_empty()) {
+        if t.is_finite() && !solid && media {
             seen = self.media_segment(ray, t, seen, ctx);
         }
-        if self.scene.fogs.is_empty() || solid {
+        if !fog || solid {
             seen
         } else {
             super::fog::apply(&self.scene.fogs, ray, t, seen)
