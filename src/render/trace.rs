@@ -284,8 +284,10 @@ impl<'a> Tracer<'a> {
         let media = !self.scene.media.is_empty() || self.scene.object_media;
         // A radiosity pretrace pass keeps the samples its camera rays' trees gather, not their
         // colour, which is all fog changes: no fog there, nor the inside test it needs.
-        let fog = !self.scene.fogs.is_empty()
-            && !(path.rad_level == 0 && self.rad.is_some_and(|r| r.probe));
+        let fog = match self.rad {
+            Some(r) if r.probe && path.rad_level == 0 => false,
+            _ => !self.scene.fogs.is_empty(),
+        };
         let solid = (fog || media)
             && path.in_solid.unwrap_or_else(|| {
                 let mid = if t.is_finite() { t * 0.5 } else { 1.0 };
