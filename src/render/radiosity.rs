@@ -619,4 +619,47 @@ mod tests {
             }
         }
     }
+
+    /// A camera ray traced from the crossing the completion passes keep (`camera_hit`, found
+    /// with another scratch) sees what it sees traced whole, to the bit, gathering the same
+    /// samples.
+    #[test]
+    fn a_kept_crossing_traces_as_the_ray() {
+        let text = "#version 3.7;
+            global_settings { assumed_gamma 1 radiosity { count 20 } }
+            camera { location <0, 2, -4> look_at <0, 0, 0> }
+            light_source { <3, 20, -2> rgb 1 }
+            fog { fog_type 2 fog_alt 1 fog_offset 0 color rgb 0.8 distance 30 }
+            plane { y, 0 pigment { rgb 1 } finish { diffuse 0.8 reflection 0.2 } }
+            box { <-1, 0.5, -1>, <1, 1.2, 1> pigment { rgb <1, 0.5, 0.2> } }";
+        let mut parser = crate::sdl::Parser::new(crate::sdl::ParseOptions::default());
+        parser.parse_str("kept.pov", text).expect("parses");
+        let scene = crate::scene::build::build(&parser.scene, 24, 18).scene;
+        let camera = crate::render::camera::Camera::of_scene(&scene);
+        let plain = Tracer::new(
+            &scene,
+            &camera,
+            false,
+            crate::render::trace::Quality::level(9),
+        );
+        let set = scene.radiosity.as_ref().expect("radiosity");
+        let mut cache = Cache::with_pool(direction_pool(set.count), 2);
+        cache.file_new(set.error_bound, set.error_bound);
+        let tracer = final_tracer(&plain, set, &cache);
+        let (mut ctx, mut own) = (Scratch::default(), Scratch::default());
+        for y in 0..18 {
+            for x in 0..24 {
+                let ray = camera.ray(x as f64 + 0.5, y as f64 + 0.5).expect("a ray");
+                ctx.rad_local.clear();
+                let want = tracer.trace_pretrace(Some(ray), &mut ctx);
+                let samples = ctx.rad_local.len();
+                ctx.rad_local.clear();
+                let hit = plain.camera_hit(&ray, &mut own);
+                let got = tracer.trace_pretrace_hit(&ray, hit, &mut ctx);
+                assert_eq!(got.rgb.to_array(), want.rgb.to_array(), "pixel ({x}, {y})");
+                assert_eq!(got.clear.to_bits(), want.clear.to_bits());
+                assert_eq!(ctx.rad_local.len(), samples);
+            }
+        }
+    }
 }
