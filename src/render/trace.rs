@@ -232,6 +232,27 @@ impl<'a> Tracer<'a> {
         sum
     }
 
+    /// A camera ray's first visible crossing, as `trace_seen` finds it: radiosity's completion
+    /// passes keep it for the same pixel's ray in their later passes (`trace_pretrace_hit`).
+    pub(super) fn camera_hit(&self, ray: &Ray, ctx: &mut TraceCtx<'a>) -> Option<SurfaceHit<'a>> {
+        self.first_visible(ray, Path::CAMERA.straight, false, ctx)
+    }
+
+    /// `trace_pretrace` of a camera ray whose `camera_hit` is `hit`: the same colour, samples
+    /// and ray count, without looking for the crossing again.
+    pub(super) fn trace_pretrace_hit(
+        &self,
+        ray: &Ray,
+        hit: Option<SurfaceHit<'a>>,
+        ctx: &mut TraceCtx<'a>,
+    ) -> Seen {
+        ctx.rays += 1;
+        if Path::CAMERA.depth > self.scene.max_trace_level {
+            return Seen::default();
+        }
+        self.seen_past(ray, hit, Path::CAMERA, ctx)
+    }
+
     /// `path.straight`: the ray continues the camera ray through transparent surfaces only, so the
     /// background it reaches counts towards the pixel's transparency.
     fn trace_seen(&self, ray: &Ray, path: Path<'a>, ctx: &mut TraceCtx<'a>) -> Seen {
@@ -240,6 +261,18 @@ impl<'a> Tracer<'a> {
             return Seen::default();
         }
         let hit = self.first_visible(ray, path.straight, false, ctx);
+        self.seen_past(ray, hit, path, ctx)
+    }
+
+    /// `trace_seen` past finding the ray's first visible crossing `hit`.
+    #[inline(always)]
+    fn seen_past(
+        &self,
+        ray: &Ray,
+        hit: Option<SurfaceHit<'a>>,
+        path: Path<'a>,
+        ctx: &mut TraceCtx<'a>,
+    ) -> Seen {
         let t = hit.as_ref().map_or(f64::INFINITY, |h| h.t);
         // No atmosphere and no media inside solid (not `hollow`) objects, povray's rule
         // (measured: a camera inside plane { z, 10 } sees the plane unfogged; a media box,
@@ -248,9 +281,14 @@ impl<'a> Tracer<'a> {
         // a reflected ray stays where its incident ray was, whichever way it turns
         // (measured: rays reflected from a rippled floor into the floor's half-space are
         // fogged, advanced/mist.pov).
-        let atmosphere =
-            !self.scene.fogs.is_empty() || !self.scene.media.is_empty() || self.scene.object_media;
-        let solid = atmosphere
+        let media = !self.scene.media.is_empty() || self.scene.object_media;
+        // A radiosity pretrace pass keeps the samples its camera rays' trees gather, not their
+        // colour, which is all fog changes: no fog there, nor the inside test it needs.
+        let fog = match self.rad {
+            Some(r) if r.probe && path.rad_level == 0 => false,
+            _ => !self.scene.fogs.is_empty(),
+        };
+        let solid = (fog || media)
             && path.in_solid.unwrap_or_else(|| {
                 let mid = if t.is_finite() { t * 0.5 } else { 1.0 };
                 self.scene.inside_solid(ray.at(mid))
@@ -263,10 +301,10 @@ impl<'a> Tracer<'a> {
             Some(h) => self.shade_blended(ray, &h, path, ctx),
             None => self.background(ray.dir, path.straight),
         };
-        if t.is_finite() && !solid && (self.scene.object_media || !self.scene.media.is_empty()) {
+        if t.is_finite() && !solid && media {
             seen = self.media_segment(ray, t, seen, ctx);
         }
-        if self.scene.fogs.is_empty() || solid {
+        if !fog || solid {
             seen
         } else {
             super::fog::apply(&self.scene.fogs, ray, t, seen)
