@@ -24,7 +24,7 @@ use smallvec::SmallVec;
 
 use super::radiosity_cache::Blend;
 pub use super::radiosity_cache::{Cache, Sample};
-use super::trace::{point_seed, Path, Seen, Tracer};
+use super::trace::{point_seed, Path, Seen, TraceCtx, Tracer};
 use super::RenderSettings;
 
 /// What the tracer needs to look up and gather irradiance during one pass.
@@ -554,6 +554,30 @@ pub fn final_tracer<'a>(
             eye: base.camera.location,
         }),
         ..base.clone()
+    }
+}
+
+/// The camera rays of radiosity's completion passes, found once per pixel.
+impl<'a> Tracer<'a> {
+    /// A camera ray's first visible crossing, as `trace_seen` finds it: radiosity's completion
+    /// passes keep it for the same pixel's ray in their later passes (`trace_pretrace_hit`).
+    pub(super) fn camera_hit(&self, ray: &Ray, ctx: &mut TraceCtx<'a>) -> Option<SurfaceHit<'a>> {
+        self.first_visible(ray, Path::CAMERA.straight, false, ctx)
+    }
+
+    /// `trace_pretrace` of a camera ray whose `camera_hit` is `hit`: the same colour, samples
+    /// and ray count, without looking for the crossing again.
+    pub(super) fn trace_pretrace_hit(
+        &self,
+        ray: &Ray,
+        hit: Option<SurfaceHit<'a>>,
+        ctx: &mut TraceCtx<'a>,
+    ) -> Seen {
+        ctx.rays += 1;
+        if Path::CAMERA.depth > self.scene.max_trace_level {
+            return Seen::default();
+        }
+        self.seen_past(ray, hit, Path::CAMERA, ctx)
     }
 }
 

@@ -70,11 +70,11 @@ impl Default for Quality {
 #[derive(Clone, Copy)]
 pub struct Path<'a> {
     /// 1 for camera rays.
-    depth: u32,
+    pub(super) depth: u32,
     /// The ray's share of the pixel, for adaptive depth control.
     weight: f64,
     /// The camera ray continued through transparent surfaces only (see `trace_seen`).
-    straight: bool,
+    pub(super) straight: bool,
     /// The fading interior the ray travels in, if any.
     medium: Option<&'a Interior>,
     /// Whether the ray runs inside a solid (not `hollow`) object, where there is no fog:
@@ -87,7 +87,7 @@ pub struct Path<'a> {
 }
 
 impl<'a> Path<'a> {
-    const CAMERA: Path<'static> = Path {
+    pub(super) const CAMERA: Path<'static> = Path {
         depth: 1,
         weight: 1.0,
         straight: true,
@@ -232,27 +232,6 @@ impl<'a> Tracer<'a> {
         sum
     }
 
-    /// A camera ray's first visible crossing, as `trace_seen` finds it: radiosity's completion
-    /// passes keep it for the same pixel's ray in their later passes (`trace_pretrace_hit`).
-    pub(super) fn camera_hit(&self, ray: &Ray, ctx: &mut TraceCtx<'a>) -> Option<SurfaceHit<'a>> {
-        self.first_visible(ray, Path::CAMERA.straight, false, ctx)
-    }
-
-    /// `trace_pretrace` of a camera ray whose `camera_hit` is `hit`: the same colour, samples
-    /// and ray count, without looking for the crossing again.
-    pub(super) fn trace_pretrace_hit(
-        &self,
-        ray: &Ray,
-        hit: Option<SurfaceHit<'a>>,
-        ctx: &mut TraceCtx<'a>,
-    ) -> Seen {
-        ctx.rays += 1;
-        if Path::CAMERA.depth > self.scene.max_trace_level {
-            return Seen::default();
-        }
-        self.seen_past(ray, hit, Path::CAMERA, ctx)
-    }
-
     /// `path.straight`: the ray continues the camera ray through transparent surfaces only, so the
     /// background it reaches counts towards the pixel's transparency.
     fn trace_seen(&self, ray: &Ray, path: Path<'a>, ctx: &mut TraceCtx<'a>) -> Seen {
@@ -266,7 +245,7 @@ impl<'a> Tracer<'a> {
 
     /// `trace_seen` past finding the ray's first visible crossing `hit`.
     #[inline(always)]
-    fn seen_past(
+    pub(super) fn seen_past(
         &self,
         ray: &Ray,
         hit: Option<SurfaceHit<'a>>,
@@ -354,7 +333,7 @@ impl<'a> Tracer<'a> {
     /// ones (measured with povray: a no_image sphere is missing through glass too, and shows
     /// in a mirror), radiosity's gathering rays (`gather`) through `no_radiosity` ones. `t`
     /// stays measured along `ray`.
-    fn first_visible(
+    pub(super) fn first_visible(
         &self,
         ray: &Ray,
         straight: bool,
