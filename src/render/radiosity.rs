@@ -603,6 +603,15 @@ mod tests {
         assert_eq!(pretrace_blocks(&set, 160, 120), vec![12.8, 6.4]);
     }
 
+    /// A scene from its text, built for a 24x18 picture, and its camera.
+    fn scene_24x18(text: &str) -> (Scene, crate::render::camera::Camera) {
+        let mut parser = crate::sdl::Parser::new(crate::sdl::ParseOptions::default());
+        parser.parse_str("test.pov", text).expect("parses");
+        let scene = crate::scene::build::build(&parser.scene, 24, 18).scene;
+        let camera = crate::render::camera::Camera::of_scene(&scene);
+        (scene, camera)
+    }
+
     /// A point whose lookup misses gathers a sample, and the gathering rays shade hits of their
     /// own: the point is still lit by its own lights. (They replaced its list: a point that
     /// gathered was lit as the last gathering ray's hit saw the lights.) With `brightness 0`
@@ -618,10 +627,7 @@ mod tests {
             plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 0.8 } }
             box { <-1, 1, -1>, <1, 1.2, 1> pigment { rgb <1, 0.5, 0.2> }
                   finish { ambient 0 diffuse 0.8 } }";
-        let mut parser = crate::sdl::Parser::new(crate::sdl::ParseOptions::default());
-        parser.parse_str("gathers.pov", text).expect("parses");
-        let scene = crate::scene::build::build(&parser.scene, 24, 18).scene;
-        let camera = crate::render::camera::Camera::of_scene(&scene);
+        let (scene, camera) = scene_24x18(text);
         let plain = Tracer::new(
             &scene,
             &camera,
@@ -656,10 +662,7 @@ mod tests {
             fog { fog_type 2 fog_alt 1 fog_offset 0 color rgb 0.8 distance 30 }
             plane { y, 0 pigment { rgb 1 } finish { diffuse 0.8 reflection 0.2 } }
             box { <-1, 0.5, -1>, <1, 1.2, 1> pigment { rgb <1, 0.5, 0.2> } }";
-        let mut parser = crate::sdl::Parser::new(crate::sdl::ParseOptions::default());
-        parser.parse_str("kept.pov", text).expect("parses");
-        let scene = crate::scene::build::build(&parser.scene, 24, 18).scene;
-        let camera = crate::render::camera::Camera::of_scene(&scene);
+        let (scene, camera) = scene_24x18(text);
         let plain = Tracer::new(
             &scene,
             &camera,
