@@ -369,7 +369,21 @@ impl Blob {
     /// at or beyond `tmax` are not searched: a root s in [lo, hi] gives t = (s + shift) / len,
     /// and rounding keeps that order, so t >= tmax for every such root, which
     /// `intersect_first` drops anyway.
-    fn crossings(&self, ray: &Ray, w: &mut Work, out: &mut Vec<Hit>, first_only: bool, tmax: f64) {
+    ///
+    /// With `first_only`, `accept` is asked in increasing order about each crossing's `t`
+    /// the full list holds (it never sees a `t <= EPSILON`) and the walk stops at the first it
+    /// accepts, which is the one pushed: `intersect_first` accepts the first, `any_kept` the
+    /// first its caller keeps or the first at or beyond `tmax`. Without `first_only` it is
+    /// not asked.
+    fn crossings(
+        &self,
+        ray: &Ray,
+        w: &mut Work,
+        out: &mut Vec<Hit>,
+        first_only: bool,
+        tmax: f64,
+        mut accept: impl FnMut(f64) -> bool,
+    ) {
         let len = ray.dir.length();
         if !(len > 0.0 && len.is_finite() && ray.origin.is_finite()) {
             return;
@@ -462,7 +476,8 @@ impl Blob {
                     }
                     let s = cand.root();
                     backlog.settle(s, &mut last, shift, len);
-                    keep_root(s, &mut last, shift, len).then_some(s)
+                    // `keep_root` first: it moves `last` for every root the list would hold.
+                    (keep_root(s, &mut last, shift, len) && accept((s + shift) / len)).then_some(s)
                 };
                 if let Some(s) = first_root_with(&sum, lo, hi, take) {
                     out.push(Hit::with_part((s + shift) / len, PART_BLENDED));
@@ -510,17 +525,19 @@ impl Shape for Blob {
 
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
         WORK.with(|w| match w.try_borrow_mut() {
-            Ok(mut w) => self.crossings(ray, &mut w, out, false, f64::INFINITY),
+            Ok(mut w) => self.crossings(ray, &mut w, out, false, f64::INFINITY, |_| true),
             // Never re-entered in practice; a fresh buffer keeps it correct if it were.
-            Err(_) => self.crossings(ray, &mut Work::default(), out, false, f64::INFINITY),
+            Err(_) => self.crossings(ray, &mut Work::default(), out, false, f64::INFINITY, |_| {
+                true
+            }),
         });
     }
 
     fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
         scratch.clear();
         WORK.with(|w| match w.try_borrow_mut() {
-            Ok(mut w) => self.crossings(ray, &mut w, scratch, true, tmax),
-            Err(_) => self.crossings(ray, &mut Work::default(), scratch, true, tmax),
+            Ok(mut w) => self.crossings(ray, &mut w, scratch, true, tmax, |_| true),
+            Err(_) => self.crossings(ray, &mut Work::default(), scratch, true, tmax, |_| true),
         });
         // With `sturm` every crossing is there; without, only the nearest.
         scratch
@@ -528,6 +545,29 @@ impl Shape for Blob {
             .filter(|h| h.t > EPSILON && h.t < tmax)
             .min_by(|a, b| a.t.total_cmp(&b.t))
             .copied()
+    }
+
+    /// The crossings nearest first (`crossings`' walk for `intersect_first`: the same roots,
+    /// bit for bit, each polished only when reached), stopping at the first `keep` holds for
+    /// or the first at or beyond `tmax` (`t` grows with the root). `sturm` blobs list.
+    fn any_kept(
+        &self,
+        ray: &Ray,
+        tmax: f64,
+        scratch: &mut Vec<Hit>,
+        keep: &mut dyn FnMut(f64) -> bool,
+    ) -> bool {
+        scratch.clear();
+        if self.sturm {
+            self.intersect_all(ray, scratch);
+            return scratch.iter().any(|h| h.t < tmax && keep(h.t));
+        }
+        let accept = |t: f64| t >= tmax || keep(t);
+        WORK.with(|w| match w.try_borrow_mut() {
+            Ok(mut w) => self.crossings(ray, &mut w, scratch, true, tmax, accept),
+            Err(_) => self.crossings(ray, &mut Work::default(), scratch, true, tmax, accept),
+        });
+        scratch.first().is_some_and(|h| h.t < tmax)
     }
 
     fn inside(&self, p: DVec3) -> bool {
@@ -557,214 +597,5 @@ impl Shape for Blob {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::geom::test_rng::Lcg;
-
-    fn sphere(c: DVec3, r: f64, s: f64) -> Component {
-        Component {
-            kind: ComponentKind::Sphere { center: c },
-            radius: r,
-            strength: s,
-            transform: Transform::IDENTITY,
-        }
-    }
-
-    fn hits(b: &Blob, o: DVec3, d: DVec3) -> Vec<f64> {
-        let mut v = Vec::new();
-        b.intersect_all(&Ray::new(o, d), &mut v);
-        v.iter().map(|h| h.t).collect()
-    }
-
-    #[test]
-    fn single_sphere_radius() {
-        // strength 1, threshold t: surface where (1 - d²/r²)² = t, d = r sqrt(1 - sqrt t).
-        let b = Blob::new(&BlobData {
-            components: vec![sphere(DVec3::ZERO, 2.0, 1.0)],
-            threshold: 0.25,
-            sturm: false,
-        });
-        let d = 2.0 * (0.5f64).sqrt();
-        let t = hits(&b, DVec3::new(0.0, 0.0, -5.0), DVec3::Z * 2.0);
-        assert_eq!(t.len(), 2, "{t:?}");
-        assert!((t[0] - (5.0 - d) / 2.0).abs() < 1e-12 && (t[1] - (5.0 + d) / 2.0).abs() < 1e-12);
-        let n = b.normal(DVec3::new(0.0, 0.0, -d), &Hit::new(0.0));
-        assert!((n.normalize() - DVec3::NEG_Z).length() < 1e-12);
-        assert!(b.inside(DVec3::ZERO) && !b.inside(DVec3::new(0.0, 1.5, 0.0)));
-        // Above the strength the component vanishes.
-        let b = Blob::new(&BlobData {
-            components: vec![sphere(DVec3::ZERO, 2.0, 1.0)],
-            threshold: 1.5,
-            sturm: true,
-        });
-        assert!(hits(&b, DVec3::new(0.0, 0.0, -5.0), DVec3::Z).is_empty());
-    }
-
-    #[test]
-    fn cylinder_body_and_caps() {
-        let c = Component {
-            kind: ComponentKind::Cylinder {
-                a: DVec3::new(-1.0, 0.0, 0.0),
-                b: DVec3::new(1.0, 0.0, 0.0),
-            },
-            radius: 1.0,
-            strength: 1.0,
-            transform: Transform::IDENTITY,
-        };
-        for sturm in [false, true] {
-            let b = Blob::new(&BlobData {
-                components: vec![c],
-                threshold: 0.25,
-                sturm,
-            });
-            // Radius of the surface: (1 - d²)² = 0.25, d = sqrt(0.5).
-            let d = 0.5f64.sqrt();
-            // Along the axis: through both caps.
-            let t = hits(&b, DVec3::new(-5.0, 0.0, 0.0), DVec3::X);
-            assert_eq!(t.len(), 2);
-            assert!((t[0] - (4.0 - d)).abs() < 1e-12 && (t[1] - (6.0 + d)).abs() < 1e-12);
-            // Across the body, and obliquely through a cap and the body.
-            let t = hits(&b, DVec3::new(0.3, -5.0, 0.0), DVec3::Y);
-            assert!((t[0] - (5.0 - d)).abs() < 1e-12, "{t:?}");
-            let dir = DVec3::new(1.0, 1.0, 0.0).normalize();
-            let t = hits(&b, DVec3::new(-1.5, -0.5, 0.0) - dir * 3.0, dir);
-            assert_eq!(t.len(), 2, "{t:?}");
-            for &ti in &t {
-                let p = DVec3::new(-1.5, -0.5, 0.0) + dir * (ti - 3.0);
-                assert!((b.field(p) - 0.25).abs() < 1e-12, "{p} {}", b.field(p));
-            }
-        }
-    }
-
-    #[test]
-    fn negative_and_transformed_components() {
-        let mut squash = sphere(DVec3::ZERO, 1.0, 1.0);
-        squash.transform = Transform::scale(DVec3::new(2.0, 1.0, 1.0));
-        let b = Blob::new(&BlobData {
-            components: vec![squash, sphere(DVec3::new(2.0, 0.0, 0.0), 1.0, -1.0)],
-            threshold: 0.25,
-            sturm: false,
-        });
-        let t = hits(&b, DVec3::new(-5.0, 0.0, 0.0), DVec3::X);
-        assert_eq!(t.len(), 2, "{t:?}");
-        // Left end of the ellipsoid: x = -2 sqrt(0.5); the right end is dented inwards.
-        assert!((t[0] - (5.0 - 2.0 * 0.5f64.sqrt())).abs() < 1e-12);
-        assert!(t[1] < 5.0 + 2.0 * 0.5f64.sqrt() - 0.1);
-        let p = DVec3::new(-5.0 + t[1], 0.0, 0.0);
-        assert!((b.field(p) - 0.25).abs() < 1e-12);
-        assert!(b.normal(p, &Hit::new(0.0)).x > 0.0);
-        // The negative component adds nothing to the bounds.
-        assert!(b.bounds().max.x <= 2.0 + 1e-12);
-    }
-
-    #[test]
-    fn first_hit_below_tmax() {
-        // Two separate spheres along the ray: intersect_first agrees with the nearest of
-        // intersect_all below tmax, for a tmax before, between and after the crossings.
-        let b = Blob::new(&BlobData {
-            components: vec![
-                sphere(DVec3::ZERO, 1.0, 1.0),
-                sphere(DVec3::new(0.0, 0.0, 3.0), 1.0, 1.0),
-            ],
-            threshold: 0.25,
-            sturm: false,
-        });
-        let ray = Ray::new(DVec3::new(0.1, 0.0, -5.0), DVec3::new(0.0, 0.0, 0.5));
-        let mut all = Vec::new();
-        b.intersect_all(&ray, &mut all);
-        assert_eq!(all.len(), 4);
-        let mut scratch = Vec::new();
-        for tmax in [1.0, all[0].t, all[1].t + 0.1, all[2].t, 100.0] {
-            let want = all.iter().map(|h| h.t).find(|&t| t < tmax);
-            let got = b.intersect_first(&ray, tmax, &mut scratch).map(|h| h.t);
-            assert_eq!(got, want, "tmax {tmax}");
-        }
-    }
-
-    #[test]
-    fn first_hit_leaving_the_surface() {
-        // Rays from crossings of the surface (shadow rays) and from points near it: the
-        // nearest crossing, whose roots at t <= EPSILON are deferred rather than polished,
-        // is intersect_all's nearest bit for bit, with and without a tmax.
-        let mut arm = Component {
-            kind: ComponentKind::Cylinder {
-                a: DVec3::new(-1.5, 0.0, 0.0),
-                b: DVec3::new(1.5, 0.2, 0.0),
-            },
-            radius: 1.2,
-            strength: 1.0,
-            transform: Transform::IDENTITY,
-        };
-        let mut other = arm;
-        other.kind = ComponentKind::Cylinder {
-            a: DVec3::new(0.0, 0.0, -1.5),
-            b: DVec3::new(0.0, 0.3, 1.5),
-        };
-        arm.transform = Transform::scale(DVec3::new(1.0, 0.7, 1.3));
-        let b = Blob::new(&BlobData {
-            components: vec![
-                arm,
-                other,
-                sphere(DVec3::new(0.0, 0.8, 0.0), 1.0, -1.5),
-                sphere(DVec3::new(0.9, 0.0, 0.9), 0.8, 1.0),
-            ],
-            threshold: 0.4,
-            sturm: false,
-        });
-        let mut rng = Lcg(7);
-        let (mut all, mut scratch, mut from_surface) = (Vec::new(), Vec::new(), 0);
-        for _ in 0..3000 {
-            let o = rng.vec(8.0);
-            let d = rng.vec(2.0) - o * 0.2;
-            all.clear();
-            b.intersect_all(&Ray::new(o, d), &mut all);
-            let starts = all.iter().map(|h| o + d * h.t).chain([o + rng.vec(0.1)]);
-            for p in starts.collect::<Vec<_>>() {
-                for _ in 0..4 {
-                    let ray = Ray::new(p, rng.vec(3.0));
-                    let mut hits = Vec::new();
-                    b.intersect_all(&ray, &mut hits);
-                    from_surface += 1;
-                    for tmax in [f64::INFINITY, 0.5 + rng.next()] {
-                        let want = hits.iter().map(|h| h.t).find(|&t| t < tmax);
-                        let got = b.intersect_first(&ray, tmax, &mut scratch).map(|h| h.t);
-                        assert_eq!(got.map(f64::to_bits), want.map(f64::to_bits), "{ray:?}");
-                    }
-                }
-            }
-        }
-        assert!(from_surface > 10000);
-    }
-
-    #[test]
-    fn shifting_quartics() {
-        let c = [1.0, -2.0, 0.5, 3.0, -1.0];
-        let s = shifted(&c, 1.5);
-        for x in [-1.0, 0.0, 0.7, 2.0] {
-            let a = crate::geom::poly::eval(&c, x + 1.5);
-            let b = crate::geom::poly::eval(&s, x);
-            assert!((a - b).abs() < 1e-9, "{a} {b}");
-        }
-    }
-
-    #[test]
-    fn degenerate_input() {
-        let b = Blob::new(&BlobData {
-            components: vec![
-                sphere(DVec3::ZERO, 0.0, 1.0),
-                sphere(DVec3::ZERO, 1.0, f64::NAN),
-            ],
-            threshold: 0.5,
-            sturm: false,
-        });
-        assert!(hits(&b, DVec3::new(0.0, 0.0, -5.0), DVec3::Z).is_empty());
-        assert!(b.bounds().is_empty());
-        let b = Blob::new(&BlobData {
-            components: vec![sphere(DVec3::ZERO, 1.0, 1.0)],
-            threshold: 0.5,
-            sturm: false,
-        });
-        assert!(hits(&b, DVec3::splat(f64::NAN), DVec3::Z).is_empty());
-        assert!(hits(&b, DVec3::ZERO, DVec3::ZERO).is_empty());
-    }
-}
+#[path = "blob_tests.rs"]
+mod tests;

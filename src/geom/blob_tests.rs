@@ -1,0 +1,298 @@
+//! Unit tests of `geom::blob`: crossings against closed forms, the nearest crossing and
+//! `any_kept` against the full list bit for bit.
+
+use super::*;
+use crate::geom::test_rng::Lcg;
+
+fn sphere(c: DVec3, r: f64, s: f64) -> Component {
+    Component {
+        kind: ComponentKind::Sphere { center: c },
+        radius: r,
+        strength: s,
+        transform: Transform::IDENTITY,
+    }
+}
+
+fn hits(b: &Blob, o: DVec3, d: DVec3) -> Vec<f64> {
+    let mut v = Vec::new();
+    b.intersect_all(&Ray::new(o, d), &mut v);
+    v.iter().map(|h| h.t).collect()
+}
+
+#[test]
+fn single_sphere_radius() {
+    // strength 1, threshold t: surface where (1 - d²/r²)² = t, d = r sqrt(1 - sqrt t).
+    let b = Blob::new(&BlobData {
+        components: vec![sphere(DVec3::ZERO, 2.0, 1.0)],
+        threshold: 0.25,
+        sturm: false,
+    });
+    let d = 2.0 * (0.5f64).sqrt();
+    let t = hits(&b, DVec3::new(0.0, 0.0, -5.0), DVec3::Z * 2.0);
+    assert_eq!(t.len(), 2, "{t:?}");
+    assert!((t[0] - (5.0 - d) / 2.0).abs() < 1e-12 && (t[1] - (5.0 + d) / 2.0).abs() < 1e-12);
+    let n = b.normal(DVec3::new(0.0, 0.0, -d), &Hit::new(0.0));
+    assert!((n.normalize() - DVec3::NEG_Z).length() < 1e-12);
+    assert!(b.inside(DVec3::ZERO) && !b.inside(DVec3::new(0.0, 1.5, 0.0)));
+    // Above the strength the component vanishes.
+    let b = Blob::new(&BlobData {
+        components: vec![sphere(DVec3::ZERO, 2.0, 1.0)],
+        threshold: 1.5,
+        sturm: true,
+    });
+    assert!(hits(&b, DVec3::new(0.0, 0.0, -5.0), DVec3::Z).is_empty());
+}
+
+#[test]
+fn cylinder_body_and_caps() {
+    let c = Component {
+        kind: ComponentKind::Cylinder {
+            a: DVec3::new(-1.0, 0.0, 0.0),
+            b: DVec3::new(1.0, 0.0, 0.0),
+        },
+        radius: 1.0,
+        strength: 1.0,
+        transform: Transform::IDENTITY,
+    };
+    for sturm in [false, true] {
+        let b = Blob::new(&BlobData {
+            components: vec![c],
+            threshold: 0.25,
+            sturm,
+        });
+        // Radius of the surface: (1 - d²)² = 0.25, d = sqrt(0.5).
+        let d = 0.5f64.sqrt();
+        // Along the axis: through both caps.
+        let t = hits(&b, DVec3::new(-5.0, 0.0, 0.0), DVec3::X);
+        assert_eq!(t.len(), 2);
+        assert!((t[0] - (4.0 - d)).abs() < 1e-12 && (t[1] - (6.0 + d)).abs() < 1e-12);
+        // Across the body, and obliquely through a cap and the body.
+        let t = hits(&b, DVec3::new(0.3, -5.0, 0.0), DVec3::Y);
+        assert!((t[0] - (5.0 - d)).abs() < 1e-12, "{t:?}");
+        let dir = DVec3::new(1.0, 1.0, 0.0).normalize();
+        let t = hits(&b, DVec3::new(-1.5, -0.5, 0.0) - dir * 3.0, dir);
+        assert_eq!(t.len(), 2, "{t:?}");
+        for &ti in &t {
+            let p = DVec3::new(-1.5, -0.5, 0.0) + dir * (ti - 3.0);
+            assert!((b.field(p) - 0.25).abs() < 1e-12, "{p} {}", b.field(p));
+        }
+    }
+}
+
+#[test]
+fn negative_and_transformed_components() {
+    let mut squash = sphere(DVec3::ZERO, 1.0, 1.0);
+    squash.transform = Transform::scale(DVec3::new(2.0, 1.0, 1.0));
+    let b = Blob::new(&BlobData {
+        components: vec![squash, sphere(DVec3::new(2.0, 0.0, 0.0), 1.0, -1.0)],
+        threshold: 0.25,
+        sturm: false,
+    });
+    let t = hits(&b, DVec3::new(-5.0, 0.0, 0.0), DVec3::X);
+    assert_eq!(t.len(), 2, "{t:?}");
+    // Left end of the ellipsoid: x = -2 sqrt(0.5); the right end is dented inwards.
+    assert!((t[0] - (5.0 - 2.0 * 0.5f64.sqrt())).abs() < 1e-12);
+    assert!(t[1] < 5.0 + 2.0 * 0.5f64.sqrt() - 0.1);
+    let p = DVec3::new(-5.0 + t[1], 0.0, 0.0);
+    assert!((b.field(p) - 0.25).abs() < 1e-12);
+    assert!(b.normal(p, &Hit::new(0.0)).x > 0.0);
+    // The negative component adds nothing to the bounds.
+    assert!(b.bounds().max.x <= 2.0 + 1e-12);
+}
+
+#[test]
+fn first_hit_below_tmax() {
+    // Two separate spheres along the ray: intersect_first agrees with the nearest of
+    // intersect_all below tmax, for a tmax before, between and after the crossings.
+    let b = Blob::new(&BlobData {
+        components: vec![
+            sphere(DVec3::ZERO, 1.0, 1.0),
+            sphere(DVec3::new(0.0, 0.0, 3.0), 1.0, 1.0),
+        ],
+        threshold: 0.25,
+        sturm: false,
+    });
+    let ray = Ray::new(DVec3::new(0.1, 0.0, -5.0), DVec3::new(0.0, 0.0, 0.5));
+    let mut all = Vec::new();
+    b.intersect_all(&ray, &mut all);
+    assert_eq!(all.len(), 4);
+    let mut scratch = Vec::new();
+    for tmax in [1.0, all[0].t, all[1].t + 0.1, all[2].t, 100.0] {
+        let want = all.iter().map(|h| h.t).find(|&t| t < tmax);
+        let got = b.intersect_first(&ray, tmax, &mut scratch).map(|h| h.t);
+        assert_eq!(got, want, "tmax {tmax}");
+    }
+}
+
+#[test]
+fn first_hit_leaving_the_surface() {
+    // Rays from crossings of the surface (shadow rays) and from points near it: the
+    // nearest crossing, whose roots at t <= EPSILON are deferred rather than polished,
+    // is intersect_all's nearest bit for bit, with and without a tmax.
+    let mut arm = Component {
+        kind: ComponentKind::Cylinder {
+            a: DVec3::new(-1.5, 0.0, 0.0),
+            b: DVec3::new(1.5, 0.2, 0.0),
+        },
+        radius: 1.2,
+        strength: 1.0,
+        transform: Transform::IDENTITY,
+    };
+    let mut other = arm;
+    other.kind = ComponentKind::Cylinder {
+        a: DVec3::new(0.0, 0.0, -1.5),
+        b: DVec3::new(0.0, 0.3, 1.5),
+    };
+    arm.transform = Transform::scale(DVec3::new(1.0, 0.7, 1.3));
+    let b = Blob::new(&BlobData {
+        components: vec![
+            arm,
+            other,
+            sphere(DVec3::new(0.0, 0.8, 0.0), 1.0, -1.5),
+            sphere(DVec3::new(0.9, 0.0, 0.9), 0.8, 1.0),
+        ],
+        threshold: 0.4,
+        sturm: false,
+    });
+    let mut rng = Lcg(7);
+    let (mut all, mut scratch, mut from_surface) = (Vec::new(), Vec::new(), 0);
+    for _ in 0..3000 {
+        let o = rng.vec(8.0);
+        let d = rng.vec(2.0) - o * 0.2;
+        all.clear();
+        b.intersect_all(&Ray::new(o, d), &mut all);
+        let starts = all.iter().map(|h| o + d * h.t).chain([o + rng.vec(0.1)]);
+        for p in starts.collect::<Vec<_>>() {
+            for _ in 0..4 {
+                // Aimed at the blob, or anywhere.
+                let aim = if rng.next() < 0.7 {
+                    rng.vec(1.5)
+                } else {
+                    p + rng.vec(3.0)
+                };
+                let ray = Ray::new(p, (aim - p) * (0.3 + rng.next()));
+                let mut hits = Vec::new();
+                b.intersect_all(&ray, &mut hits);
+                from_surface += 1;
+                for tmax in [f64::INFINITY, 0.5 + rng.next()] {
+                    let want = hits.iter().map(|h| h.t).find(|&t| t < tmax);
+                    let got = b.intersect_first(&ray, tmax, &mut scratch).map(|h| h.t);
+                    assert_eq!(got.map(f64::to_bits), want.map(f64::to_bits), "{ray:?}");
+                }
+            }
+        }
+    }
+    assert!(from_surface > 10000);
+}
+
+#[test]
+fn any_kept_is_intersect_all() {
+    // CSG and clipped shadow rays: `any_kept` asks exactly the listed crossings below
+    // tmax, nearest first, bit for bit, up to the first kept one, for rays from the
+    // surface (roots at t <= EPSILON deferred) and from anywhere.
+    let mut arm = Component {
+        kind: ComponentKind::Cylinder {
+            a: DVec3::new(-1.5, 0.0, 0.0),
+            b: DVec3::new(1.5, 0.2, 0.0),
+        },
+        radius: 1.2,
+        strength: 1.0,
+        transform: Transform::IDENTITY,
+    };
+    arm.transform = Transform::scale(DVec3::new(1.0, 0.7, 1.3));
+    let comps = vec![
+        arm,
+        sphere(DVec3::new(0.0, 0.8, 0.0), 1.0, -1.5),
+        sphere(DVec3::new(0.9, 0.0, 0.9), 0.8, 1.0),
+        sphere(DVec3::new(-0.9, 0.0, -0.5), 0.7, 1.0),
+        sphere(DVec3::new(2.5, 0.0, 0.0), 0.6, 1.0),
+    ];
+    let mut rng = Lcg(19);
+    let (mut kept, mut total, mut skipped) = (0, 0, 0);
+    for sturm in [false, true] {
+        let b = Blob::new(&BlobData {
+            components: comps.clone(),
+            threshold: 0.4,
+            sturm,
+        });
+        let mut scratch = Vec::new();
+        for _ in 0..3000 {
+            let o = rng.vec(8.0);
+            let d = rng.vec(2.0) - o * 0.2;
+            let first = hits(&b, o, d);
+            let starts = first.iter().map(|&t| o + d * t).chain([o]);
+            for p in starts.collect::<Vec<_>>() {
+                // Aimed at the blob, or anywhere.
+                let aim = if rng.next() < 0.7 {
+                    rng.vec(1.5)
+                } else {
+                    p + rng.vec(3.0)
+                };
+                let ray = Ray::new(p, (aim - p) * (0.3 + rng.next()));
+                let listed = hits(&b, ray.origin, ray.dir);
+                let tmax = if rng.next() < 0.5 {
+                    f64::INFINITY
+                } else {
+                    rng.next() * 3.0
+                };
+                // Keeps beyond a cut, or by the low bits (skips some, keeps a later one).
+                let (cut, odd) = (rng.next() * 2.0, rng.next() < 0.5);
+                let test = |t: f64| t > cut && (!odd || t.to_bits().is_multiple_of(3));
+                let below: Vec<f64> = listed.iter().copied().filter(|&t| t < tmax).collect();
+                let want = below.iter().position(|&t| test(t));
+                let mut asked = Vec::new();
+                let got = b.any_kept(&ray, tmax, &mut scratch, &mut |t| {
+                    asked.push(t);
+                    test(t)
+                });
+                assert_eq!(got, want.is_some(), "{ray:?} {tmax} {listed:?}");
+                if !sturm {
+                    let upto = want.map_or(below.len(), |k| k + 1);
+                    let bits = |v: &[f64]| v.iter().map(|t| t.to_bits()).collect::<Vec<_>>();
+                    assert_eq!(bits(&asked), bits(&below[..upto]), "{ray:?} {tmax}");
+                    skipped += usize::from(want.is_some_and(|k| k > 0));
+                }
+                kept += usize::from(got);
+                total += 1;
+            }
+        }
+    }
+    // Both answers, and kept crossings beyond a skipped one, are exercised.
+    assert!(
+        kept > total / 10 && kept < total * 9 / 10,
+        "{kept} of {total}"
+    );
+    assert!(skipped > 100, "{skipped}");
+}
+
+#[test]
+fn shifting_quartics() {
+    let c = [1.0, -2.0, 0.5, 3.0, -1.0];
+    let s = shifted(&c, 1.5);
+    for x in [-1.0, 0.0, 0.7, 2.0] {
+        let a = crate::geom::poly::eval(&c, x + 1.5);
+        let b = crate::geom::poly::eval(&s, x);
+        assert!((a - b).abs() < 1e-9, "{a} {b}");
+    }
+}
+
+#[test]
+fn degenerate_input() {
+    let b = Blob::new(&BlobData {
+        components: vec![
+            sphere(DVec3::ZERO, 0.0, 1.0),
+            sphere(DVec3::ZERO, 1.0, f64::NAN),
+        ],
+        threshold: 0.5,
+        sturm: false,
+    });
+    assert!(hits(&b, DVec3::new(0.0, 0.0, -5.0), DVec3::Z).is_empty());
+    assert!(b.bounds().is_empty());
+    let b = Blob::new(&BlobData {
+        components: vec![sphere(DVec3::ZERO, 1.0, 1.0)],
+        threshold: 0.5,
+        sturm: false,
+    });
+    assert!(hits(&b, DVec3::splat(f64::NAN), DVec3::Z).is_empty());
+    assert!(hits(&b, DVec3::ZERO, DVec3::ZERO).is_empty());
+}
