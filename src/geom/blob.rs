@@ -557,11 +557,10 @@ impl Shape for Blob {
         scratch: &mut Vec<Hit>,
         keep: &mut dyn FnMut(f64) -> bool,
     ) -> bool {
-        scratch.clear();
         if self.sturm {
-            self.intersect_all(ray, scratch);
-            return scratch.iter().any(|h| h.t < tmax && keep(h.t));
+            return super::any_listed_kept(self, ray, tmax, scratch, keep);
         }
+        scratch.clear();
         let accept = |t: f64| t >= tmax || keep(t);
         WORK.with(|w| match w.try_borrow_mut() {
             Ok(mut w) => self.crossings(ray, &mut w, scratch, true, tmax, accept),

@@ -124,12 +124,9 @@ fn first_hit_below_tmax() {
     }
 }
 
-#[test]
-fn first_hit_leaving_the_surface() {
-    // Rays from crossings of the surface (shadow rays) and from points near it: the
-    // nearest crossing, whose roots at t <= EPSILON are deferred rather than polished,
-    // is intersect_all's nearest bit for bit, with and without a tmax.
-    let mut arm = Component {
+/// A cylinder component across the x axis, rising a little: the shadow-ray tests' arm.
+fn leaning_arm() -> Component {
+    Component {
         kind: ComponentKind::Cylinder {
             a: DVec3::new(-1.5, 0.0, 0.0),
             b: DVec3::new(1.5, 0.2, 0.0),
@@ -137,7 +134,15 @@ fn first_hit_leaving_the_surface() {
         radius: 1.2,
         strength: 1.0,
         transform: Transform::IDENTITY,
-    };
+    }
+}
+
+#[test]
+fn first_hit_leaving_the_surface() {
+    // Rays from crossings of the surface (shadow rays) and from points near it: the
+    // nearest crossing, whose roots at t <= EPSILON are deferred rather than polished,
+    // is intersect_all's nearest bit for bit, with and without a tmax.
+    let mut arm = leaning_arm();
     let mut other = arm;
     other.kind = ComponentKind::Cylinder {
         a: DVec3::new(0.0, 0.0, -1.5),
@@ -190,15 +195,7 @@ fn any_kept_is_intersect_all() {
     // CSG and clipped shadow rays: `any_kept` asks exactly the listed crossings below
     // tmax, nearest first, bit for bit, up to the first kept one, for rays from the
     // surface (roots at t <= EPSILON deferred) and from anywhere.
-    let mut arm = Component {
-        kind: ComponentKind::Cylinder {
-            a: DVec3::new(-1.5, 0.0, 0.0),
-            b: DVec3::new(1.5, 0.2, 0.0),
-        },
-        radius: 1.2,
-        strength: 1.0,
-        transform: Transform::IDENTITY,
-    };
+    let mut arm = leaning_arm();
     arm.transform = Transform::scale(DVec3::new(1.0, 0.7, 1.3));
     let comps = vec![
         arm,

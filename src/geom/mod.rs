@@ -66,9 +66,7 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
         scratch: &mut Vec<Hit>,
         keep: &mut dyn FnMut(f64) -> bool,
     ) -> bool {
-        scratch.clear();
-        self.intersect_all(ray, scratch);
-        scratch.iter().any(|h| h.t < tmax && keep(h.t))
+        any_listed_kept(self, ray, tmax, scratch, keep)
     }
     /// `intersect_all`, but crossings with `t` outside `[lo, hi]` may be left out (a clipped
     /// object's crossings outside its clipping box): those inside come out exactly as
@@ -112,6 +110,20 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
     fn uv(&self, _p: DVec3, _hit: &Hit) -> Option<[f64; 2]> {
         None
     }
+}
+
+/// `Shape::any_kept` from the full list of crossings: the default, and the fallback of shapes
+/// whose lazy walk does not apply to every ray or setting (a `sturm` blob).
+pub fn any_listed_kept<S: Shape + ?Sized>(
+    shape: &S,
+    ray: &Ray,
+    tmax: f64,
+    scratch: &mut Vec<Hit>,
+    keep: &mut dyn FnMut(f64) -> bool,
+) -> bool {
+    scratch.clear();
+    shape.intersect_all(ray, scratch);
+    scratch.iter().any(|h| h.t < tmax && keep(h.t))
 }
 
 pub mod algebraic;
