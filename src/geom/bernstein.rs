@@ -24,7 +24,7 @@ pub const BINOM: [[f64; 17]; 17] = {
 /// `BINOM[k][i] / BINOM[n][i]` for degrees `n` up to 8, the weights of the change to the
 /// Bernstein basis: the same quotients (IEEE division, at compile time) without a division per
 /// term at run time.
-const TO_BERNSTEIN: [[[f64; 9]; 9]; 9] = {
+pub(crate) const TO_BERNSTEIN: [[[f64; 9]; 9]; 9] = {
     let mut w = [[[0.0f64; 9]; 9]; 9];
     let mut n = 0;
     while n < 9 {

@@ -235,6 +235,9 @@ impl Lathe {
         // dy²(c − r²) + 2 b dy (h − oy) + a (h − oy)², zero where the ray meets the surface.
         let mut hh = pc.y;
         hh[0] -= o.y;
+        if pc.is_linear() && hh[0].is_finite() {
+            return self.sloped_linear(pc, i, o, [a, b, c], dy, hh, found);
+        }
         let (r2, h2) = (&self.r2[i], mul(&hh, &hh));
         let mut f = [0.0; 7];
         for k in 0..7 {
@@ -242,6 +245,46 @@ impl Lathe {
             if k < 4 {
                 f[k] += 2.0 * b * dy * hh[k];
             }
+        }
+        f[0] += dy * dy * c;
+        let end = |q: P2| {
+            let e = q[1] - o.y;
+            dy * dy * (c - q[0] * q[0]) + 2.0 * b * dy * e + a * e * e
+        };
+        sign_changes(&f, 0.0, 1.0, end(pc.p0), end(pc.p1), |s| {
+            let t = (crate::geom::poly::eval(&pc.y, s) - o.y) / dy;
+            found(t, i, s);
+        });
+    }
+
+    /// `sloped` for a straight piece: `f`'s terms past the square are sums of zero products
+    /// (`+0`, or `−0` for the `f` terms, which `sign_changes` trims all the same), so only the
+    /// first three are computed, by `mul`'s and the loop's operations in their order. `mul`'s
+    /// sums start from `+0`, which only matters for a `−0` product: `h0·h1` keeps its `0.0 +`,
+    /// and `h1²` is never `−0`, so adding `h0·0 = ±0` before it and `0·h0` after it (finite
+    /// `h0`, checked by the caller) leaves it as it is.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(never)]
+    fn sloped_linear(
+        &self,
+        pc: &Piece,
+        i: usize,
+        o: DVec3,
+        [a, b, c]: [f64; 3],
+        dy: f64,
+        hh: [f64; 4],
+        found: &mut impl FnMut(f64, usize, f64),
+    ) {
+        let r2 = &self.r2[i];
+        let h2 = [
+            hh[0] * hh[0],
+            0.0 + hh[0] * hh[1] + hh[1] * hh[0],
+            hh[1] * hh[1],
+        ];
+        let mut f = [0.0; 3];
+        for k in 0..3 {
+            f[k] = -dy * dy * r2[k] + a * h2[k];
+            f[k] += 2.0 * b * dy * hh[k];
         }
         f[0] += dy * dy * c;
         let end = |q: P2| {

@@ -13,7 +13,7 @@
 //! share it. So a crossing at a shared vertex is found by exactly one of the two pieces, and
 //! even-odd counts never double or lose a vertex.
 
-use crate::geom::bernstein::BINOM;
+use crate::geom::bernstein::{BINOM, TO_BERNSTEIN};
 use crate::geom::poly::{eval, eval_with_derivative, roots_in};
 
 /// A point of a 2-D curve: (x, z) for prisms, (radius, height) for lathes.
@@ -139,12 +139,27 @@ impl Piece {
 /// Calls `found` with every s in [lo, hi] where the polynomial `c` changes sign, zero counting
 /// as positive. `f_lo` and `f_hi` stand for the polynomial's values at the ends: the caller
 /// computes them from exact data so that neighbouring pieces agree on them.
-pub fn sign_changes(c: &[f64], lo: f64, hi: f64, f_lo: f64, f_hi: f64, mut found: impl FnMut(f64)) {
+pub fn sign_changes(c: &[f64], lo: f64, hi: f64, f_lo: f64, f_hi: f64, found: impl FnMut(f64)) {
     let n = c.iter().rposition(|&v| v != 0.0).map_or(0, |i| i + 1);
     if lo.is_nan() || hi.is_nan() || lo > hi || n > 17 {
         return;
     }
+    // The lengths lathes, prisms and sors make, each with its own copy of the body: a
+    // constant length lets LLVM unroll the evaluations (the same operations in the same
+    // order, so the same roots to the bit).
     let c = &c[..n];
+    match n {
+        3 => changes_body(<&[f64; 3]>::try_from(c).unwrap(), lo, hi, f_lo, f_hi, found),
+        4 => changes_body(<&[f64; 4]>::try_from(c).unwrap(), lo, hi, f_lo, f_hi, found),
+        5 => changes_body(<&[f64; 5]>::try_from(c).unwrap(), lo, hi, f_lo, f_hi, found),
+        7 => changes_body(<&[f64; 7]>::try_from(c).unwrap(), lo, hi, f_lo, f_hi, found),
+        _ => changes_body(c, lo, hi, f_lo, f_hi, found),
+    }
+}
+
+#[inline(always)]
+fn changes_body(c: &[f64], lo: f64, hi: f64, f_lo: f64, f_hi: f64, mut found: impl FnMut(f64)) {
+    let n = c.len();
     if n > 2 && lo == 0.0 && hi == 1.0 && no_sign_change(c, f_lo, f_hi) {
         return;
     }
@@ -154,10 +169,21 @@ pub fn sign_changes(c: &[f64], lo: f64, hi: f64, f_lo: f64, f_hi: f64, mut found
     for i in 1..n {
         d[i - 1] = c[i] * i as f64;
     }
-    let crit = if n > 2 {
-        roots_in(&d[..n - 1], lo, hi)
+    let (line_root, roots);
+    let crit: &[f64] = if n == 3 {
+        // `roots_in` of a line, as it computes it: `d[1] = 2 c[2]` is not zero (nor is
+        // `c[2]`), so it is the line's one root, kept when in [lo, hi].
+        line_root = [-d[0] / d[1]];
+        if line_root[0] >= lo && line_root[0] <= hi {
+            &line_root
+        } else {
+            &[]
+        }
+    } else if n > 2 {
+        roots = roots_in(&d[..n - 1], lo, hi);
+        &roots
     } else {
-        Default::default()
+        &[]
     };
     let mut a = lo;
     let mut fa = f_lo;
@@ -177,24 +203,27 @@ pub fn sign_changes(c: &[f64], lo: f64, hi: f64, f_lo: f64, f_hi: f64, mut found
 /// Whether the polynomial surely keeps one sign on [0, 1], ends included: its Bernstein
 /// coefficients (whose hull holds the curve) all share the sign of both end values. Most
 /// pieces a ray passes near have no crossing, and this is far cheaper than isolating roots.
+#[inline(always)]
 fn no_sign_change(c: &[f64], f_lo: f64, f_hi: f64) -> bool {
     let n = c.len() - 1;
     let positive = f_lo >= 0.0;
     if positive != (f_hi >= 0.0) {
         return false;
     }
-    // b_k = Σ_{i ≤ k} C(k, i) / C(n, i) · c_i
-    (0..=n).all(|k| {
-        let b: f64 = (0..=k).map(|i| BINOM[k][i] / BINOM[n][i] * c[i]).sum();
-        if positive {
-            b > 0.0
+    // b_k = Σ_{i ≤ k} C(k, i) / C(n, i) · c_i, the quotients from the table up to degree 8.
+    let b = |k: usize| -> f64 {
+        if n < TO_BERNSTEIN.len() {
+            let w = &TO_BERNSTEIN[n][k];
+            (0..=k).map(|i| w[i] * c[i]).sum()
         } else {
-            b < 0.0
+            (0..=k).map(|i| BINOM[k][i] / BINOM[n][i] * c[i]).sum()
         }
-    })
+    };
+    (0..=n).all(|k| if positive { b(k) > 0.0 } else { b(k) < 0.0 })
 }
 
 /// A root in the bracket `[a, b]` by Newton steps kept inside a shrinking bracket.
+#[inline(always)]
 fn refine(c: &[f64], mut a: f64, mut b: f64, neg_at_a: bool) -> f64 {
     let mut x = 0.5 * (a + b);
     for _ in 0..100 {
@@ -317,6 +346,37 @@ mod tests {
         let c = [-1.0, 1.0];
         sign_changes(&c, 0.0, 1.0, -1.0, 0.0, |_| n += 1);
         assert_eq!(n, 1);
+    }
+
+    /// The fixed-length bodies `sign_changes` picks find the roots the slice body finds, bit
+    /// for bit: random polynomials of the lengths it specialises (many with roots in [0, 1],
+    /// some nearly touching zero), on [0, 1] (the Bernstein shortcut) and on other intervals.
+    #[test]
+    fn fixed_lengths_match_the_slice_body() {
+        let mut rng = crate::geom::test_rng::Lcg(0x51_6e);
+        let mut found = 0;
+        for case in 0..20_000 {
+            let len = [3, 4, 5, 7][case % 4];
+            let roots: Vec<f64> = (0..len - 1).map(|_| rng.next() * 1.6 - 0.3).collect();
+            let mut c = crate::geom::test_rng::from_roots(&roots);
+            c[0] += (rng.next() - 0.5) * if case % 3 == 0 { 1e-9 } else { 0.2 };
+            let (lo, hi) = if case % 5 == 0 {
+                let lo = rng.next() - 0.2;
+                (lo, lo + rng.next())
+            } else {
+                (0.0, 1.0)
+            };
+            let (f_lo, f_hi) = (eval(&c, lo), eval(&c, hi));
+            let mut fixed = Vec::new();
+            sign_changes(&c, lo, hi, f_lo, f_hi, |s| fixed.push(s.to_bits()));
+            let mut slice = Vec::new();
+            changes_body(std::hint::black_box(&c[..]), lo, hi, f_lo, f_hi, |s| {
+                slice.push(s.to_bits())
+            });
+            assert_eq!(fixed, slice, "{c:?} on [{lo}, {hi}]");
+            found += fixed.len();
+        }
+        assert!(found > 10_000, "{found}");
     }
 
     #[test]

@@ -198,3 +198,70 @@ fn nearest_crossing_is_the_defaults() {
     }
     assert!(hits > 5000, "{hits}");
 }
+
+/// `sloped`'s straight-piece path finds the crossings the general path (`mul` over all seven
+/// terms) finds, bit for bit, on random rays through random straight profiles.
+#[test]
+fn straight_pieces_match_the_general_path() {
+    let mut rng = Lcg(0x11e_a7e);
+    let mut found = 0;
+    for _ in 0..200 {
+        let mut p: Vec<P2> = (0..6)
+            .map(|_| [rng.next() * 3.0 - 0.5, rng.next() * 4.0 - 2.0])
+            .collect();
+        // Flat pieces: h1 = 0, where `mul`'s sums meet zero products.
+        for k in 1..6 {
+            if rng.next() < 0.3 {
+                p[k][1] = p[k - 1][1];
+            }
+        }
+        let l = Lathe::new(profile(SplineKind::Linear, &p).unwrap());
+        for n in 0..50 {
+            let mut o = rng.vec(6.0);
+            if n % 4 == 0 {
+                // Level with a vertex: h0 = 0 for the pieces there.
+                o.y = l.pieces[n % l.pieces.len()].p0[1];
+            }
+            let u = (rng.vec(2.0) - o * 0.1).normalize();
+            if u.y.abs() < FLAT {
+                continue;
+            }
+            let (a, b, c) = (
+                u.x * u.x + u.z * u.z,
+                o.x * u.x + o.z * u.z,
+                o.x * o.x + o.z * o.z,
+            );
+            for (i, pc) in l.pieces.iter().enumerate() {
+                let mut fast = Vec::new();
+                l.sloped(pc, i, o, [a, b, c], u.y, &mut |t, _, s| {
+                    fast.push((t.to_bits(), s.to_bits()))
+                });
+                // The general path, as `sloped` computes it for any piece.
+                let mut hh = pc.y;
+                hh[0] -= o.y;
+                let (r2, h2) = (&l.r2[i], mul(&hh, &hh));
+                let dy = u.y;
+                let mut f = [0.0; 7];
+                for k in 0..7 {
+                    f[k] = -dy * dy * r2[k] + a * h2[k];
+                    if k < 4 {
+                        f[k] += 2.0 * b * dy * hh[k];
+                    }
+                }
+                f[0] += dy * dy * c;
+                let end = |q: P2| {
+                    let e = q[1] - o.y;
+                    dy * dy * (c - q[0] * q[0]) + 2.0 * b * dy * e + a * e * e
+                };
+                let mut slow = Vec::new();
+                sign_changes(&f, 0.0, 1.0, end(pc.p0), end(pc.p1), |s| {
+                    let t = (crate::geom::poly::eval(&pc.y, s) - o.y) / dy;
+                    slow.push((t.to_bits(), s.to_bits()));
+                });
+                assert_eq!(fast, slow);
+                found += fast.len();
+            }
+        }
+    }
+    assert!(found > 1000, "{found}");
+}
