@@ -25,7 +25,9 @@ impl BoxShape {
         }
     }
 
-    /// Entry and exit of the full line as ((t, face), (t, face)).
+    /// Entry and exit of the full line as ((t, face), (t, face)). Inlined: called, its
+    /// answer went back through memory and cost a frame per box crossing.
+    #[inline(always)]
     fn slabs(&self, ray: &Ray) -> Option<((f64, u32), (f64, u32))> {
         if self.empty {
             return None;
