@@ -16,6 +16,8 @@
 //! them visibly on steep slopes (see `vertex_normal`).
 
 mod walk;
+#[cfg(target_arch = "x86_64")]
+mod walk_avx;
 
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};

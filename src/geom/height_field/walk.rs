@@ -19,6 +19,8 @@ pub(super) struct Signs {
     sz: usize,
     /// Whether the ray rises: it then enters a block's height range through its low face.
     up: bool,
+    /// The children's tests in AVX lanes (`walk_avx`).
+    avx: bool,
 }
 
 impl Signs {
@@ -30,6 +32,7 @@ impl Signs {
             sx: (r.inv.x < 0.0) as usize,
             sz: (r.inv.z < 0.0) as usize,
             up: r.inv.y > 0.0,
+            avx: crate::math::has_avx(),
         })
     }
 }
@@ -73,6 +76,39 @@ impl HeightField {
         r: &mut GridRay,
         s: &Signs,
         level: usize,
+        b: (usize, usize),
+        ux: [f64; 2],
+        uz: [f64; 2],
+    ) {
+        self.visit_body::<false>(r, s, level, b, ux, uz);
+    }
+
+    /// `visit_signed` with the children's tests in AVX lanes (`walk_avx`), the same answers.
+    ///
+    /// # Safety
+    /// The CPU must have AVX (`Signs::avx`).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    unsafe fn visit_avx(
+        &self,
+        r: &mut GridRay,
+        s: &Signs,
+        level: usize,
+        b: (usize, usize),
+        ux: [f64; 2],
+        uz: [f64; 2],
+    ) {
+        self.visit_body::<true>(r, s, level, b, ux, uz);
+    }
+
+    /// `visit_signed`'s body, its children's tests in lanes when `AVX` (only called so from
+    /// `visit_avx`, which is compiled with AVX).
+    #[inline(always)]
+    fn visit_body<const AVX: bool>(
+        &self,
+        r: &mut GridRay,
+        s: &Signs,
+        level: usize,
         (bi, bj): (usize, usize),
         ux: [f64; 2],
         uz: [f64; 2],
@@ -107,15 +143,32 @@ impl HeightField {
         let mut key = [0.0f64; 4];
         let mut exit = [0.0f64; 4];
         let mut mask = 0u32;
-        for g in 0..4 {
-            let (di, dj) = (g & 1, g >> 1);
-            // `0.0f64.max(xe).max(ze)` of `visit`, whose sort key it is; comparisons give
-            // +0 for a -0 entry, as `f64::max` with a constant 0 does on x86.
-            let k = if xe[di] > 0.0 { xe[di] } else { 0.0 };
-            key[g] = if ze[dj] > k { ze[dj] } else { k };
-            exit[g] = fmin::<true>(xx[di], zx[dj]);
-            let ok = self.reaches_signed(r, s, quad[g], key[g], exit[g]);
-            mask |= ((ok & exists[g]) as u32) << g;
+        #[cfg(target_arch = "x86_64")]
+        if AVX {
+            let y = super::walk_avx::RayY {
+                oy: r.o.y,
+                inv_y: r.inv.y,
+                up: s.up,
+                tmax: r.tmax,
+                water: self.data.water_level,
+            };
+            // SAFETY: `AVX` is only true in `visit_avx`, compiled with AVX and called only
+            // when the CPU has it.
+            let c = unsafe { super::walk_avx::children(quad, (xe, xx), (ze, zx), &y) };
+            let exists_bits = 1 | (hx as u32) << 1 | (hz as u32) << 2 | ((hx & hz) as u32) << 3;
+            (key, exit, mask) = (c.key, c.exit, c.mask & exists_bits);
+        }
+        if !AVX {
+            for g in 0..4 {
+                let (di, dj) = (g & 1, g >> 1);
+                // `0.0f64.max(xe).max(ze)` of `visit`, whose sort key it is; comparisons give
+                // +0 for a -0 entry, as `f64::max` with a constant 0 does on x86.
+                let k = if xe[di] > 0.0 { xe[di] } else { 0.0 };
+                key[g] = if ze[dj] > k { ze[dj] } else { k };
+                exit[g] = fmin::<true>(xx[di], zx[dj]);
+                let ok = self.reaches_signed(r, s, quad[g], key[g], exit[g]);
+                mask |= ((ok & exists[g]) as u32) << g;
+            }
         }
         if mask == 0 {
             return;
@@ -153,6 +206,12 @@ impl HeightField {
                 self.cell_hits(r, ci, cj);
             } else {
                 let (kx, kz) = ([ux[di], ux[di + 1]], [uz[dj], uz[dj + 1]]);
+                #[cfg(target_arch = "x86_64")]
+                if AVX {
+                    // SAFETY: as above, this is `visit_avx` on a CPU with AVX.
+                    unsafe { self.visit_avx(r, s, level - 1, (ci, cj), kx, kz) };
+                    continue;
+                }
                 self.visit_signed(r, s, level - 1, (ci, cj), kx, kz);
             }
         }
@@ -175,6 +234,12 @@ impl HeightField {
         );
         let exit = fmin::<true>(fmax::<true>(ux[0], ux[1]), fmax::<true>(uz[0], uz[1]));
         if self.reaches_signed(r, s, self.levels[top].range(0, 0), key, exit) {
+            #[cfg(target_arch = "x86_64")]
+            if s.avx {
+                // SAFETY: `Signs::avx` says the CPU has AVX.
+                unsafe { self.visit_avx(r, s, top, (0, 0), ux, uz) };
+                return;
+            }
             self.visit_signed(r, s, top, (0, 0), ux, uz);
         }
     }
@@ -236,6 +301,64 @@ mod tests {
                     hf.trace_by(&ray, tmax, first, &mut b, false);
                     assert_eq!(bits(&a), bits(&b), "{ray:?} {tmax} {first}");
                     checked += a.len();
+                }
+            }
+        }
+        assert!(checked > 1000, "{checked}");
+    }
+
+    /// The children's tests in AVX lanes give the scalar walk's crossings, bit for bit and in
+    /// order (the walk above is checked against `visit` with whichever the CPU has): grids
+    /// with water, flat steps and missing children, rays rising and falling, from grid faces.
+    #[test]
+    fn avx_lanes_walk_as_the_scalar_tests() {
+        if !crate::math::has_avx() {
+            return;
+        }
+        let mut rng = crate::geom::test_rng::Lcg(23);
+        let mut rnd = move || rng.next();
+        let mut checked = 0;
+        for (w, h, water) in [(3, 2, 0.0), (9, 6, 0.45), (33, 40, 0.0), (64, 65, 0.2)] {
+            let heights = (0..w * h)
+                .map(|k| {
+                    let (i, j) = ((k % w) as f64, (k / w) as f64);
+                    let v = 0.5 + 0.45 * ((i * 0.9).sin() * (j * 0.35).cos());
+                    ((v * 6.0).floor() / 6.0 * 65535.0) as u16
+                })
+                .collect();
+            let mut data = HeightData::new(w, h, heights);
+            data.water_level = water;
+            let hf = HeightField::new(Arc::new(data));
+            let (cx, cz) = hf.cells();
+            for k in 0..6000 {
+                let mut o = DVec3::new(rnd() * 1.6 - 0.3, rnd() * 2.0 - 0.2, rnd() * 1.6 - 0.3);
+                if k % 3 == 0 {
+                    o.x = (rnd() * (cx + 1.0)).floor() / cx;
+                    o.z = (rnd() * (cz + 1.0)).floor() / cz;
+                }
+                let d = DVec3::new(rnd(), rnd(), rnd()) - o;
+                let (o, d) = (o * DVec3::new(cx, 1.0, cz), d * DVec3::new(cx, 1.0, cz));
+                let tmax = [f64::INFINITY, rnd() * 2.0, 0.0][k % 3];
+                for first in [true, false] {
+                    let mut outs = [vec![], vec![]];
+                    for (avx, out) in [false, true].into_iter().zip(outs.iter_mut()) {
+                        let mut r = GridRay {
+                            o,
+                            d,
+                            inv: d.recip(),
+                            tmax,
+                            first,
+                            from: 0,
+                            out,
+                        };
+                        let Some(mut s) = Signs::new(&r) else {
+                            continue;
+                        };
+                        s.avx = avx;
+                        hf.walk_signed(&mut r, &s);
+                    }
+                    assert_eq!(bits(&outs[0]), bits(&outs[1]), "{o} {d} {tmax} {first}");
+                    checked += outs[0].len();
                 }
             }
         }
