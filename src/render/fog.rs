@@ -28,9 +28,12 @@ pub fn apply(fogs: &[FogDesc], ray: &Ray, t: f64, mut seen: Seen) -> Seen {
     let d = if t.is_finite() { t * len } else { FAR };
     let dir = ray.dir / len;
     let mut added = DVec3::ZERO;
+    // The rainbows' jitter depends on the direction only: hashed once per ray, by the first
+    // rainbow with jitter (rainbow1's two rainbows hashed it twice).
+    let mut jitter = None;
     for f in fogs {
         let color = match &f.rainbow {
-            Some(rb) => match rainbow_color(rb, dir) {
+            Some(rb) => match rainbow_color(rb, dir, &mut jitter) {
                 Some(c) => c,
                 None => continue,
             },
@@ -136,13 +139,13 @@ const NEGLIGIBLE: f64 = 1.0 / (1u64 << 55) as f64;
 /// loop over the fogs and computed for every fogged ray, rainbow or not (radiosity_37: ~80
 /// instructions of each of its 127 k fogged rays).
 #[inline(never)]
-fn rainbow_color(rb: &RainbowDesc, dir: DVec3) -> Option<Rgbft> {
+fn rainbow_color(rb: &RainbowDesc, dir: DVec3, jitter: &mut Option<f64>) -> Option<Rgbft> {
     // Unit, and `up` perpendicular to it, since the scene was built.
     let d = rb.direction;
     let angle = dir.dot(d).clamp(-1.0, 1.0).acos().to_degrees();
     let mut index = (angle - (rb.angle - rb.width * 0.5)) / rb.width.max(1e-12);
     if rb.jitter != 0.0 {
-        index += rb.jitter * (jitter_noise(dir) - 0.5);
+        index += rb.jitter * (*jitter.get_or_insert_with(|| jitter_noise(dir)) - 0.5);
     }
     if !(0.0..=1.0).contains(&index) {
         return None;
