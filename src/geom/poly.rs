@@ -325,12 +325,40 @@ pub fn first_root_with(
     hi: f64,
     take: impl FnMut(Candidate) -> Option<f64>,
 ) -> Option<f64> {
+    first_root_checked(c, lo, hi, true, take)
+}
+
+/// [`first_root_in`] without its [`surely_no_root`] shortcut, for a caller whose own
+/// certificate of "no root" (see `definite`) has just failed, where that shortcut seldom
+/// succeeds: the same answer, bit for bit, since the shortcut only ever answers `None` where
+/// the walk finds nothing (see `surely_no_root`).
+pub fn first_root_in_unchecked(
+    c: &[f64],
+    lo: f64,
+    hi: f64,
+    mut keep: impl FnMut(f64) -> bool,
+) -> Option<f64> {
+    first_root_checked(c, lo, hi, false, |cand| {
+        let x = cand.root();
+        keep(x).then_some(x)
+    })
+}
+
+/// [`first_root_with`], the [`surely_no_root`] shortcut asked when `shortcut`.
+#[inline(always)]
+fn first_root_checked(
+    c: &[f64],
+    lo: f64,
+    hi: f64,
+    shortcut: bool,
+    take: impl FnMut(Candidate) -> Option<f64>,
+) -> Option<f64> {
     let c = trim(c)?;
     // As in `polish`: a quartic's walk (a torus's) compiled with the length known, so its
     // evaluations are unrolled: the same operations in the same order.
     match c.len() {
-        5 => first_root_body(<&[f64; 5]>::try_from(c).unwrap(), lo, hi, take),
-        _ => first_root_body(c, lo, hi, take),
+        5 => first_root_body(<&[f64; 5]>::try_from(c).unwrap(), lo, hi, shortcut, take),
+        _ => first_root_body(c, lo, hi, shortcut, take),
     }
 }
 
@@ -339,10 +367,11 @@ fn first_root_body(
     c: &[f64],
     lo: f64,
     hi: f64,
+    shortcut: bool,
     mut take: impl FnMut(Candidate) -> Option<f64>,
 ) -> Option<f64> {
     let n = c.len().saturating_sub(1);
-    if lo > hi || lo.is_nan() || hi.is_nan() || surely_no_root(c, lo, hi) {
+    if lo > hi || lo.is_nan() || hi.is_nan() || (shortcut && surely_no_root(c, lo, hi)) {
         return None;
     }
     if n <= 2 {

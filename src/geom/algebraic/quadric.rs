@@ -83,7 +83,7 @@ impl Diagonal {
         d
     }
 
-    /// `Algebraic::along_unrolled::<3>` for these terms, with the same operations in the same
+    /// `Algebraic::along_quadric` for these terms, with the same operations in the same
     /// order left after its multiplications by the constant 1 (exact): the powers of each
     /// axis as `powers_unrolled` sums them from zero, then each term added to the
     /// coefficients in the shape's order, the x and y terms skipping zero powers as
@@ -271,7 +271,7 @@ mod tests {
             };
             let o = DVec3::new(pick(), pick(), pick());
             let d = DVec3::new(pick(), pick(), pick());
-            let (a, b) = (diag.along(o, d), q.along_unrolled::<3>(o, d));
+            let (a, b) = (diag.along(o, d), q.along_quadric(o, d));
             for k in 0..3 {
                 assert!(same(a[k], b[k]), "{terms:?} {o:?} {d:?}: {a:?} {b:?}");
             }
@@ -338,7 +338,7 @@ mod tests {
                 );
                 // The discriminant itself is negative, whatever the interval.
                 let len = dir.length();
-                let c = q.along_unrolled::<3>(origin, dir / len);
+                let c = q.along_quadric(origin, dir / len);
                 assert!(c[1] * c[1] - 4.0 * c[2] * c[0] < 0.0);
             }
         }

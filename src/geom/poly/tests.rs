@@ -163,9 +163,24 @@ fn first_root_is_roots_ins_first() {
         let all = roots_in(&c, lo, hi);
         let first = |cut: f64| first_root_in(&c, lo, hi, |x| x > cut);
         crate::geom::test_rng::check_first_root(&mut rng, &all, (lo, hi), first, &format!("{c:?}"));
+        // Without the `surely_no_root` shortcut: the same answer, bit for bit.
+        let cut = lo + (hi - lo) * rng.next();
+        let (a, b) = (
+            first_root_in(&c, lo, hi, |x| x > cut),
+            first_root_in_unchecked(&c, lo, hi, |x| x > cut),
+        );
+        assert_eq!(
+            a.map(f64::to_bits),
+            b.map(f64::to_bits),
+            "{c:?} {lo} {hi} {cut}"
+        );
     }
     assert_eq!(
         first_root_in(&[1.0, 0.0, 0.0, 1.0], f64::NAN, 1.0, |_| true),
+        None
+    );
+    assert_eq!(
+        first_root_in_unchecked(&[1.0, 0.0, 0.0, 1.0], f64::NAN, 1.0, |_| true),
         None
     );
 }
