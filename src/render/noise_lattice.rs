@@ -14,6 +14,7 @@
 
 use crate::math::{has_avx, DVec3};
 
+use super::cell_list::CellList;
 use super::noise_data::{ENTRY, HASH_OFFSET, HASH_X, HASH_Y, HASH_Z};
 
 #[inline(always)]
@@ -302,11 +303,11 @@ pub fn scalar_into(ps: &[DVec3], out: &mut [f64]) {
 
 #[inline(always)]
 fn scalar_into_with(ps: &[DVec3], out: &mut [f64], terms: impl Fn(&Cell) -> f64) {
-    let mut cells = [const { None }; MAX_POINTS];
-    for (c, &p) in cells.iter_mut().zip(ps) {
-        *c = Some(cell(p));
+    let mut cells = CellList::<Cell, MAX_POINTS>::new();
+    for &p in ps.iter().take(MAX_POINTS) {
+        cells.push(cell(p));
     }
-    for (o, c) in out.iter_mut().zip(cells.iter().flatten()) {
+    for (o, c) in out.iter_mut().zip(cells.as_slice()) {
         *o = terms(c);
     }
 }
@@ -623,11 +624,11 @@ fn vector_many_with<const N: usize>(
     cell: impl Fn(DVec3) -> Cell,
     terms: impl Fn(&Cell) -> [f64; 3],
 ) {
-    let mut cells = [const { None }; N];
-    for (c, &p) in cells.iter_mut().zip(ps) {
-        *c = Some(cell(p));
+    let mut cells = CellList::<Cell, N>::new();
+    for &p in ps {
+        cells.push(cell(p));
     }
-    for (o, c) in out.iter_mut().zip(cells.iter().flatten()) {
+    for (o, c) in out.iter_mut().zip(cells.as_slice()) {
         *o = DVec3::from_array(terms(c));
     }
 }
@@ -657,15 +658,15 @@ fn octaves_with(
     terms: impl Fn(&Cell) -> [f64; 3],
 ) -> DVec3 {
     let n = octaves.min(10) as usize;
-    let mut cells = [const { None }; 10];
+    let mut cells = CellList::<Cell, 10>::new();
     let mut scale = 1.0;
-    for c in &mut cells[..n] {
-        *c = Some(cell(p * scale));
+    for _ in 0..n {
+        cells.push(cell(p * scale));
         scale *= lambda;
     }
     let mut sum = DVec3::ZERO;
     let mut weight = 1.0;
-    for c in cells[..n].iter().flatten() {
+    for c in cells.as_slice() {
         sum += weight * DVec3::from_array(terms(c));
         weight *= omega;
     }
@@ -683,18 +684,18 @@ fn octaves4_with(
     terms: impl Fn(&Cell) -> [f64; 3],
 ) -> [DVec3; 4] {
     let n = octaves.clamp(1, 10) as usize;
-    let mut cells = [const { None }; MAX_POINTS];
-    for (p, cs) in ps.iter().zip(cells.chunks_mut(n)) {
+    let mut cells = CellList::<Cell, MAX_POINTS>::new();
+    for p in &ps {
         let mut scale = 1.0;
-        for c in cs {
-            *c = Some(cell(*p * scale));
+        for _ in 0..n {
+            cells.push(cell(*p * scale));
             scale *= lambda;
         }
     }
     let mut out = [DVec3::ZERO; 4];
-    for (o, cs) in out.iter_mut().zip(cells[..4 * n].chunks(n)) {
+    for (o, cs) in out.iter_mut().zip(cells.as_slice().chunks(n)) {
         let mut weight = 1.0;
-        for c in cs.iter().flatten() {
+        for c in cs {
             *o += weight * DVec3::from_array(terms(c));
             weight *= omega;
         }
