@@ -7,6 +7,7 @@ mod aa;
 mod aa1;
 pub mod band;
 pub mod camera;
+mod cell_list;
 mod cells_data;
 mod crackle;
 mod dispersion;

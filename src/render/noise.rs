@@ -341,12 +341,23 @@ pub fn granite4(ps: [DVec3; 4], generator: u8) -> [f64; 4] {
 pub fn granite(p: DVec3, generator: u8) -> f64 {
     let freqs = [4.0, 8.0, 16.0, 32.0, 64.0, 128.0];
     let mut v = [0.0; 6];
-    sum_noise_into(&freqs.map(|f| p * f), generator, &mut v);
+    sum_noise_into(&scaled(p, freqs), generator, &mut v);
     let mut sum = 0.0;
     for (x, f) in v.into_iter().zip(freqs) {
         sum += (x.clamp(0.0, 1.0) - 0.5).abs() * 4.0 / f;
     }
     sum
+}
+
+/// `p` times each frequency. A loop: `freqs.map(|f| p * f)` stayed a call to
+/// `array::try_map` that copied the points out through memory.
+#[inline(always)]
+fn scaled<const N: usize>(p: DVec3, freqs: [f64; N]) -> [DVec3; N] {
+    let mut ps = [DVec3::ZERO; N];
+    for (q, f) in ps.iter_mut().zip(freqs) {
+        *q = p * f;
+    }
+    ps
 }
 
 /// Wrinkles: ten octaves of the clipped noise, weights 1/2, 1/4, ...
@@ -356,7 +367,7 @@ pub fn wrinkles(p: DVec3, generator: u8) -> f64 {
         freqs[k] = freqs[k - 1] * 2.0;
     }
     let mut v = [0.0; 10];
-    sum_noise_into(&freqs.map(|f| p * f), generator, &mut v);
+    sum_noise_into(&scaled(p, freqs), generator, &mut v);
     let mut sum = 0.0;
     let mut weight = 0.5;
     for x in v {

@@ -14,6 +14,7 @@
 
 use crate::math::{has_avx, DVec3};
 
+use super::cell_list::CellList;
 use super::noise_data::{ENTRY, HASH_OFFSET, HASH_X, HASH_Y, HASH_Z};
 
 #[inline(always)]
@@ -302,11 +303,11 @@ pub fn scalar_into(ps: &[DVec3], out: &mut [f64]) {
 
 #[inline(always)]
 fn scalar_into_with(ps: &[DVec3], out: &mut [f64], terms: impl Fn(&Cell) -> f64) {
-    let mut cells = [const { None }; MAX_POINTS];
-    for (c, &p) in cells.iter_mut().zip(ps) {
-        *c = Some(cell(p));
+    let mut cells = CellList::<Cell, MAX_POINTS>::new();
+    for &p in ps.iter().take(MAX_POINTS) {
+        cells.push(cell(p));
     }
-    for (o, c) in out.iter_mut().zip(cells.iter().flatten()) {
+    for (o, c) in out.iter_mut().zip(cells.as_slice()) {
         *o = terms(c);
     }
 }
@@ -388,24 +389,44 @@ unsafe fn scalar_avx4(cells: &[Corners], out: &mut [f64]) {
         let dy = [ty, _mm256_sub_pd(ty, one)];
         let dz = [tz, _mm256_sub_pd(tz, one)];
         let mut acc = _mm256_setzero_pd();
-        for k in 0..8 {
-            let row = |l: usize| _mm256_load_pd(ROWS[lane(l).entry[k] as usize & 255].0.as_ptr());
-            let (r0, r1, r2, r3) = (row(0), row(1), row(2), row(3));
-            let (t0, t1) = (_mm256_unpacklo_pd(r0, r1), _mm256_unpackhi_pd(r0, r1));
-            let (t2, t3) = (_mm256_unpacklo_pd(r2, r3), _mm256_unpackhi_pd(r2, r3));
-            let e0 = _mm256_permute2f128_pd(t0, t2, 0x20);
-            let e1 = _mm256_permute2f128_pd(t1, t3, 0x20);
-            let e2 = _mm256_permute2f128_pd(t0, t2, 0x31);
-            let e3 = _mm256_permute2f128_pd(t1, t3, 0x31);
-            let mut t = _mm256_add_pd(e0, _mm256_mul_pd(e1, dx[k & 1]));
-            t = _mm256_add_pd(t, _mm256_mul_pd(e2, dy[(k >> 1) & 1]));
-            t = _mm256_add_pd(t, _mm256_mul_pd(e3, dz[k >> 2]));
-            let w = _mm256_mul_pd(wxy[k & 3], wz[k >> 2]);
-            acc = _mm256_add_pd(acc, _mm256_mul_pd(w, t));
+        // Written out per corner (a macro, not a loop): rolled, the loop kept its operands on
+        // the stack and computed each one's offset from k, ~14 of its ~47 instructions a
+        // corner.
+        macro_rules! corner {
+            ($k:literal) => {{
+                let row =
+                    |l: usize| _mm256_load_pd(ROWS[lane(l).entry[$k] as usize & 255].0.as_ptr());
+                let (r0, r1, r2, r3) = (row(0), row(1), row(2), row(3));
+                let (t0, t1) = (_mm256_unpacklo_pd(r0, r1), _mm256_unpackhi_pd(r0, r1));
+                let (t2, t3) = (_mm256_unpacklo_pd(r2, r3), _mm256_unpackhi_pd(r2, r3));
+                let e0 = _mm256_permute2f128_pd(t0, t2, 0x20);
+                let e1 = _mm256_permute2f128_pd(t1, t3, 0x20);
+                let e2 = _mm256_permute2f128_pd(t0, t2, 0x31);
+                let e3 = _mm256_permute2f128_pd(t1, t3, 0x31);
+                let mut t = _mm256_add_pd(e0, _mm256_mul_pd(e1, dx[$k & 1]));
+                t = _mm256_add_pd(t, _mm256_mul_pd(e2, dy[($k >> 1) & 1]));
+                t = _mm256_add_pd(t, _mm256_mul_pd(e3, dz[$k >> 2]));
+                let w = _mm256_mul_pd(wxy[$k & 3], wz[$k >> 2]);
+                acc = _mm256_add_pd(acc, _mm256_mul_pd(w, t));
+            }};
         }
-        let mut res = [0.0; 4];
-        _mm256_storeu_pd(res.as_mut_ptr(), acc);
-        out.copy_from_slice(&res[..n]);
+        corner!(0);
+        corner!(1);
+        corner!(2);
+        corner!(3);
+        corner!(4);
+        corner!(5);
+        corner!(6);
+        corner!(7);
+        if let Ok(o) = <&mut [f64; 4]>::try_from(&mut *out) {
+            // Four points (most chunks): one store, where the copy of a slice of variable
+            // length was a call to memcpy.
+            _mm256_storeu_pd(o.as_mut_ptr(), acc);
+        } else {
+            let mut res = [0.0; 4];
+            _mm256_storeu_pd(res.as_mut_ptr(), acc);
+            out.copy_from_slice(&res[..n]);
+        }
     }
 }
 
@@ -623,11 +644,11 @@ fn vector_many_with<const N: usize>(
     cell: impl Fn(DVec3) -> Cell,
     terms: impl Fn(&Cell) -> [f64; 3],
 ) {
-    let mut cells = [const { None }; N];
-    for (c, &p) in cells.iter_mut().zip(ps) {
-        *c = Some(cell(p));
+    let mut cells = CellList::<Cell, N>::new();
+    for &p in ps {
+        cells.push(cell(p));
     }
-    for (o, c) in out.iter_mut().zip(cells.iter().flatten()) {
+    for (o, c) in out.iter_mut().zip(cells.as_slice()) {
         *o = DVec3::from_array(terms(c));
     }
 }
@@ -657,15 +678,15 @@ fn octaves_with(
     terms: impl Fn(&Cell) -> [f64; 3],
 ) -> DVec3 {
     let n = octaves.min(10) as usize;
-    let mut cells = [const { None }; 10];
+    let mut cells = CellList::<Cell, 10>::new();
     let mut scale = 1.0;
-    for c in &mut cells[..n] {
-        *c = Some(cell(p * scale));
+    for _ in 0..n {
+        cells.push(cell(p * scale));
         scale *= lambda;
     }
     let mut sum = DVec3::ZERO;
     let mut weight = 1.0;
-    for c in cells[..n].iter().flatten() {
+    for c in cells.as_slice() {
         sum += weight * DVec3::from_array(terms(c));
         weight *= omega;
     }
@@ -683,18 +704,18 @@ fn octaves4_with(
     terms: impl Fn(&Cell) -> [f64; 3],
 ) -> [DVec3; 4] {
     let n = octaves.clamp(1, 10) as usize;
-    let mut cells = [const { None }; MAX_POINTS];
-    for (p, cs) in ps.iter().zip(cells.chunks_mut(n)) {
+    let mut cells = CellList::<Cell, MAX_POINTS>::new();
+    for p in &ps {
         let mut scale = 1.0;
-        for c in cs {
-            *c = Some(cell(*p * scale));
+        for _ in 0..n {
+            cells.push(cell(*p * scale));
             scale *= lambda;
         }
     }
     let mut out = [DVec3::ZERO; 4];
-    for (o, cs) in out.iter_mut().zip(cells[..4 * n].chunks(n)) {
+    for (o, cs) in out.iter_mut().zip(cells.as_slice().chunks(n)) {
         let mut weight = 1.0;
-        for c in cs.iter().flatten() {
+        for c in cs {
             *o += weight * DVec3::from_array(terms(c));
             weight *= omega;
         }
