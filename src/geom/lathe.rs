@@ -238,6 +238,23 @@ impl Lathe {
         if pc.is_linear() && hh[0].is_finite() {
             return self.sloped_linear(pc, i, o, [a, b, c], dy, hh, found);
         }
+        self.sloped_general(pc, i, o, [a, b, c], dy, hh, found);
+    }
+
+    /// `sloped` for any piece: `f` over all seven terms. Its own function so that the tests
+    /// can hold the straight pieces' path against it; inlined, so `sloped` compiles as one.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    pub(super) fn sloped_general(
+        &self,
+        pc: &Piece,
+        i: usize,
+        o: DVec3,
+        [a, b, c]: [f64; 3],
+        dy: f64,
+        hh: [f64; 4],
+        found: &mut impl FnMut(f64, usize, f64),
+    ) {
         let (r2, h2) = (&self.r2[i], mul(&hh, &hh));
         let mut f = [0.0; 7];
         for k in 0..7 {
@@ -247,14 +264,7 @@ impl Lathe {
             }
         }
         f[0] += dy * dy * c;
-        let end = |q: P2| {
-            let e = q[1] - o.y;
-            dy * dy * (c - q[0] * q[0]) + 2.0 * b * dy * e + a * e * e
-        };
-        sign_changes(&f, 0.0, 1.0, end(pc.p0), end(pc.p1), |s| {
-            let t = (crate::geom::poly::eval(&pc.y, s) - o.y) / dy;
-            found(t, i, s);
-        });
+        sloped_roots(&f, pc, i, o.y, [a, b, c], dy, found);
     }
 
     /// `sloped` for a straight piece: `f`'s terms past the square are sums of zero products
@@ -287,14 +297,7 @@ impl Lathe {
             f[k] += 2.0 * b * dy * hh[k];
         }
         f[0] += dy * dy * c;
-        let end = |q: P2| {
-            let e = q[1] - o.y;
-            dy * dy * (c - q[0] * q[0]) + 2.0 * b * dy * e + a * e * e
-        };
-        sign_changes(&f, 0.0, 1.0, end(pc.p0), end(pc.p1), |s| {
-            let t = (crate::geom::poly::eval(&pc.y, s) - o.y) / dy;
-            found(t, i, s);
-        });
+        sloped_roots(&f, pc, i, o.y, [a, b, c], dy, found);
     }
 
     fn flat(
@@ -466,6 +469,28 @@ impl Shape for Lathe {
             DVec3::new(0.0, m[1].signum(), 0.0)
         }
     }
+}
+
+/// The crossings of a sloped piece whose equation in the piece's parameter is `f`: its roots
+/// in [0, 1] (the ends' values by the unexpanded form), each with the ray's distance.
+#[inline(always)]
+fn sloped_roots(
+    f: &[f64],
+    pc: &Piece,
+    i: usize,
+    oy: f64,
+    [a, b, c]: [f64; 3],
+    dy: f64,
+    found: &mut impl FnMut(f64, usize, f64),
+) {
+    let end = |q: P2| {
+        let e = q[1] - oy;
+        dy * dy * (c - q[0] * q[0]) + 2.0 * b * dy * e + a * e * e
+    };
+    sign_changes(f, 0.0, 1.0, end(pc.p0), end(pc.p1), |s| {
+        let t = (crate::geom::poly::eval(&pc.y, s) - oy) / dy;
+        found(t, i, s);
+    });
 }
 
 #[cfg(test)]

@@ -239,24 +239,9 @@ fn straight_pieces_match_the_general_path() {
                 // The general path, as `sloped` computes it for any piece.
                 let mut hh = pc.y;
                 hh[0] -= o.y;
-                let (r2, h2) = (&l.r2[i], mul(&hh, &hh));
-                let dy = u.y;
-                let mut f = [0.0; 7];
-                for k in 0..7 {
-                    f[k] = -dy * dy * r2[k] + a * h2[k];
-                    if k < 4 {
-                        f[k] += 2.0 * b * dy * hh[k];
-                    }
-                }
-                f[0] += dy * dy * c;
-                let end = |q: P2| {
-                    let e = q[1] - o.y;
-                    dy * dy * (c - q[0] * q[0]) + 2.0 * b * dy * e + a * e * e
-                };
                 let mut slow = Vec::new();
-                sign_changes(&f, 0.0, 1.0, end(pc.p0), end(pc.p1), |s| {
-                    let t = (crate::geom::poly::eval(&pc.y, s) - o.y) / dy;
-                    slow.push((t.to_bits(), s.to_bits()));
+                l.sloped_general(pc, i, o, [a, b, c], u.y, hh, &mut |t, _, s| {
+                    slow.push((t.to_bits(), s.to_bits()))
                 });
                 assert_eq!(fast, slow);
                 found += fast.len();
