@@ -72,6 +72,9 @@ pub struct Cache {
     pub(super) coarser: i32,
     /// Unit-disc points of the gathering directions (`direction_pool`).
     pub(super) pool: Vec<(f64, f64)>,
+    /// Whether the CPU has AVX: lookups then read a listed cell's samples four at a time
+    /// (`lanes::blend_listed`).
+    lanes: bool,
     /// Rays the pretrace traced, for the statistics line.
     pub rays: u64,
     /// First-pass colours (one ray at each pixel's centre, row by row) the last completion
@@ -134,6 +137,7 @@ impl Cache {
         Cache {
             pool,
             coarser,
+            lanes: crate::math::has_avx(),
             ..Cache::default()
         }
     }
@@ -233,7 +237,8 @@ impl Cache {
         }
     }
 
-    /// `near` from the first sample on for a lookup facing `n`, leaving out besides samples
+    /// Blends into `b` the samples `weight` takes at (p, n) for a lookup of `level`: `near`
+    /// from the first sample on for a lookup facing `n`, leaving out besides samples
     /// that `weight` turns away whatever the point: of a level above `level`, or facing more
     /// than 60° from `n`. `memo` (the thread's) keeps per normal the cells read, each listed
     /// (the first time a lookup facing that way reads it, from the normal's second lookup on:
@@ -245,11 +250,11 @@ impl Cache {
     /// listed a cell only when read twice in a row and kept one cell per scale: a cell left
     /// and come back to, as the next row of a floor does, was read whole again; listing a
     /// cell costs about what reading it whole does, the list's place and a map's insert.)
-    /// `f` meets the samples `weight` takes in the order `near` gives them, so the blend's
-    /// sums are the same to the bit. A sample of a list comes with `Some` of its `normal_err`
-    /// for this normal (the list keeps it: the same bits for every lookup reading the list),
-    /// which `Blend::add_listed` takes in place of `weight`'s level and normal tests and its
-    /// first square root; the samples of cells not listed come with `None`.
+    /// The samples are blended in the order `near` gives them, so the blend's sums are the
+    /// same to the bit. A sample of a list keeps its `normal_err` for this normal (the same
+    /// bits for every lookup reading the list), which `Blend::add_listed` takes in place of
+    /// `weight`'s level and normal tests and its first square root; a list already made is
+    /// read four samples at a time where the CPU has AVX (`lanes`).
     #[inline]
     pub(super) fn near_memo(
         &self,
@@ -258,7 +263,7 @@ impl Cache {
         bound: f64,
         level: u32,
         memo: &mut RadiosityMemo,
-        mut f: impl FnMut(usize, &Footprint, Option<f64>),
+        b: &mut Blend,
     ) {
         let facing = [n.x.to_bits(), n.y.to_bits(), n.z.to_bits()];
         if memo.entries.len() != MEMO_WAYS + 1 {
@@ -357,12 +362,7 @@ impl Cache {
                 match found[j] {
                     None => {
                         let (at, len) = (c.at.0 as usize, c.at.1 as usize);
-                        for &(i, e) in &listed[at..at + len] {
-                            let s = &self.foot[i as usize];
-                            if within(s, p, bound) {
-                                f(i as usize, s, Some(e));
-                            }
-                        }
+                        lanes::blend_listed(self, &listed[at..at + len], p, n, bound, b);
                     }
                     Some(ids) if list[j] => {
                         let start = listed.len();
@@ -376,7 +376,7 @@ impl Cache {
                             let e = normal_err(cos);
                             listed.push((i, e));
                             if within(s, p, bound) {
-                                f(i as usize, s, Some(e));
+                                b.add_listed(s, self.irr[i as usize], p, n, bound, e);
                             }
                         }
                         c.at = (start as u32, (listed.len() - start) as u32);
@@ -386,7 +386,7 @@ impl Cache {
                         for &i in ids {
                             let s = &self.foot[i as usize];
                             if within(s, p, bound) {
-                                f(i as usize, s, None);
+                                b.add(s, self.irr[i as usize], p, n, level, bound);
                             }
                         }
                     }
@@ -639,6 +639,9 @@ fn weight_tail(
     // radiosity_36 0.883 -> 0.901 against povray).
     Some((1.0 - err / bound).sqrt())
 }
+
+#[path = "radiosity_lanes.rs"]
+mod lanes;
 
 #[cfg(test)]
 #[path = "radiosity_cache_tests.rs"]
