@@ -3,7 +3,8 @@
 //! (no FMA, the comparisons' NaN cases kept), so every weight is the scalar one to the bit;
 //! the weights are then summed one by one in the list's order, as `Blend::take` does, so the
 //! blend's sums are the same bits too. On the radiosity scenes most of a lookup's work is
-//! reading these lists (rad_def_test_37: ~800 k samples read, 45 % of them taken).
+//! reading these lists (rad_def_test_37: ~800 k samples read, 45 % of them taken). Cells read
+//! whole (not listed) have their samples' reach tested the same way (`each_within`).
 
 use crate::math::DVec3;
 
