@@ -109,17 +109,7 @@ impl<'a> Tracer<'a> {
         } else {
             let (cache, bound) = (rad.cache, rad.bound);
             let mut b = Blend::default();
-            cache.near_memo(
-                p,
-                n,
-                bound,
-                level,
-                &mut ctx.rad_memo,
-                |i, s, nerr| match nerr {
-                    Some(e) => b.add_listed(s, cache.irr[i], p, n, bound, e),
-                    None => b.add(s, cache.irr[i], p, n, level, bound),
-                },
-            );
+            cache.near_memo(p, n, bound, level, &mut ctx.rad_memo, &mut b);
             for s in &ctx.rad_local {
                 b.add(&s.footprint(), s.irr, p, n, level, bound);
             }

@@ -128,11 +128,13 @@ pub struct MemoEntry {
     pub listed: Vec<(u32, f64)>,
 }
 
-/// A scale's last cell read (`MemoEntry`), valid in the entry's epoch: its key, and where its
-/// list is in the entry's `listed` (start, length).
+/// A scale's last cell read (`MemoEntry`), valid in the entry's epoch: its key, the floors of
+/// the point's coordinates in cells it was made from, and where its list is in the entry's
+/// `listed` (start, length).
 #[derive(Default)]
 pub struct MemoCell {
     pub key: u64,
+    pub floors: [f64; 3],
     pub epoch: u64,
     pub at: (u32, u32),
 }
