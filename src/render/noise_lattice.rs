@@ -723,42 +723,14 @@ fn octaves4_with(
     out
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-fn octaves4_avx(ps: [DVec3; 4], octaves: u32, omega: f64, lambda: f64) -> [DVec3; 4] {
-    // SAFETY: this function only runs with AVX enabled.
-    octaves4_with(
-        ps,
-        octaves,
-        omega,
-        lambda,
-        |p| unsafe { cell_avx(p) },
-        |c| unsafe { vector_avx(c) },
-    )
-}
-
 /// `vector_octaves` at four points (1 to 10 octaves).
 pub fn vector_octaves4(ps: [DVec3; 4], octaves: u32, omega: f64, lambda: f64) -> [DVec3; 4] {
     #[cfg(target_arch = "x86_64")]
     if has_avx() {
         // SAFETY: AVX was detected.
-        return unsafe { octaves4_avx(ps, octaves, omega, lambda) };
+        return unsafe { octaves_lanes::octaves4(ps, octaves, omega, lambda) };
     }
     octaves4_with(ps, octaves, omega, lambda, cell, vector_lanes)
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-fn octaves_avx(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
-    // SAFETY: this function only runs with AVX enabled.
-    octaves_with(
-        p,
-        octaves,
-        omega,
-        lambda,
-        |p| unsafe { cell_avx(p) },
-        |c| unsafe { vector_avx(c) },
-    )
 }
 
 /// `octaves` octaves (at most 10) of vector noise from `p`.
@@ -766,10 +738,15 @@ pub fn vector_octaves(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 
     #[cfg(target_arch = "x86_64")]
     if has_avx() {
         // SAFETY: AVX was detected.
-        return unsafe { octaves_avx(p, octaves, omega, lambda) };
+        return unsafe { octaves_lanes::octaves(p, octaves, omega, lambda) };
     }
     octaves_with(p, octaves, omega, lambda, cell, vector_lanes)
 }
+
+// The AVX form of `octaves_with` and `octaves4_with`, with cells laid out for the lanes.
+#[cfg(target_arch = "x86_64")]
+#[path = "noise_octaves.rs"]
+mod octaves_lanes;
 
 #[cfg(test)]
 #[path = "noise_lattice_tests.rs"]
