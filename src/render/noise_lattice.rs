@@ -762,6 +762,14 @@ pub fn vector_octaves(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 
         // SAFETY: AVX was detected.
         return unsafe { octaves_lanes::octaves(p, octaves, omega, lambda) };
     }
+    octaves_plain(p, octaves, omega, lambda)
+}
+
+/// `vector_octaves` without AVX, out of line: inlined, its ten cells made the callers' stack
+/// frames 1.4 KB and their prologues longer on every call.
+#[cold]
+#[inline(never)]
+fn octaves_plain(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
     octaves_with(p, octaves, omega, lambda, cell, vector_lanes)
 }
 
