@@ -397,6 +397,31 @@ pub fn has_avx() -> bool {
 mod tests {
     use super::*;
 
+    /// `is_identity` is DMat4's `==` against the identity for every single-entry change
+    /// (signed zeros, NaN, ones off the diagonal) and for the usual transforms.
+    #[test]
+    fn identity_is_the_matrix_compare() {
+        let mut cases = vec![
+            Transform::IDENTITY,
+            Transform::scale(DVec3::splat(0.5)),
+            Transform::translate(DVec3::new(1.0, 0.0, 0.0)),
+            Transform::rotate(DVec3::new(0.0, 90.0, 0.0)),
+        ];
+        for k in 0..16 {
+            for v in [0.0, -0.0, 1.0, -1.0, f64::NAN, 2.0] {
+                let mut a = DMat4::IDENTITY.to_cols_array();
+                a[k] = v;
+                cases.push(Transform {
+                    m: DMat4::from_cols_array(&a),
+                    inv: DMat4::IDENTITY,
+                });
+            }
+        }
+        for t in cases {
+            assert_eq!(t.is_identity(), t.m == DMat4::IDENTITY, "{:?}", t.m);
+        }
+    }
+
     #[test]
     fn rotate_is_left_handed_pov_order() {
         // POV-Ray: rotate 90*y takes +x to -z? In a left-handed system rotating x by +90 about y
