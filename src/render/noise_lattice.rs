@@ -203,17 +203,37 @@ unsafe fn entries_avx(f: std::arch::x86_64::__m256d) -> [u32; 8] {
             [a0[1] as usize, a1[1] as usize],
             [a0[2] as usize, a1[2] as usize],
         );
+        // Unchecked reads: `cell`'s `& 4095` on each index changes nothing (both sides of
+        // every xor are below 4096) but was an instruction on six of the walk's reads.
         let mut hxy = [0usize; 4];
         for (k, h) in hxy.iter_mut().enumerate() {
-            *h = HASH_Y[(hx[k & 1] ^ my[k >> 1]) & 4095] as usize;
+            // SAFETY: HASH_X's values are below 4096 (asserted at compile time below)
+            // and `my` is masked to 12 bits, so the xor is below 4096, HASH_Y's length.
+            *h = *HASH_Y.get_unchecked(hx[k & 1] ^ my[k >> 1]) as usize;
         }
         let mut entry = [0u32; 8];
         for (c, e) in entry.iter_mut().enumerate() {
-            *e = u32::from(HASH_Z[(hxy[c & 3] ^ mz[c >> 2]) & 4095]);
+            // SAFETY: as above, with HASH_Y's values (asserted) and `mz`: below HASH_Z's 4096.
+            *e = u32::from(*HASH_Z.get_unchecked(hxy[c & 3] ^ mz[c >> 2]));
         }
         entry
     }
 }
+
+/// Whether every value of a hash stage indexes the next stage's 4096 entries.
+const fn all_below_4096(t: &[u16; 4096]) -> bool {
+    let mut i = 0;
+    while i < 4096 {
+        if t[i] >= 4096 {
+            return false;
+        }
+        i += 1;
+    }
+    true
+}
+
+// `entries_avx`'s unchecked reads rely on this (an unnamed constant is always evaluated).
+const _: () = assert!(all_below_4096(&HASH_X) && all_below_4096(&HASH_Y));
 
 /// What `scalar_avx4` reads of a cell: the fractional position and the corners' ENTRY
 /// positions (`Cell` without the weights, which the four-point lanes compute themselves).
@@ -723,53 +743,40 @@ fn octaves4_with(
     out
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-fn octaves4_avx(ps: [DVec3; 4], octaves: u32, omega: f64, lambda: f64) -> [DVec3; 4] {
-    // SAFETY: this function only runs with AVX enabled.
-    octaves4_with(
-        ps,
-        octaves,
-        omega,
-        lambda,
-        |p| unsafe { cell_avx(p) },
-        |c| unsafe { vector_avx(c) },
-    )
-}
-
 /// `vector_octaves` at four points (1 to 10 octaves).
 pub fn vector_octaves4(ps: [DVec3; 4], octaves: u32, omega: f64, lambda: f64) -> [DVec3; 4] {
     #[cfg(target_arch = "x86_64")]
     if has_avx() {
         // SAFETY: AVX was detected.
-        return unsafe { octaves4_avx(ps, octaves, omega, lambda) };
+        return unsafe { octaves_lanes::octaves4(ps, octaves, omega, lambda) };
     }
     octaves4_with(ps, octaves, omega, lambda, cell, vector_lanes)
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-fn octaves_avx(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
-    // SAFETY: this function only runs with AVX enabled.
-    octaves_with(
-        p,
-        octaves,
-        omega,
-        lambda,
-        |p| unsafe { cell_avx(p) },
-        |c| unsafe { vector_avx(c) },
-    )
-}
-
-/// `octaves` octaves (at most 10) of vector noise from `p`.
+/// `octaves` octaves (at most 10) of vector noise from `p`. Inlined, so that the turbulence
+/// calls the AVX octaves directly.
+#[inline]
 pub fn vector_octaves(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
     #[cfg(target_arch = "x86_64")]
     if has_avx() {
         // SAFETY: AVX was detected.
-        return unsafe { octaves_avx(p, octaves, omega, lambda) };
+        return unsafe { octaves_lanes::octaves(p, octaves, omega, lambda) };
     }
+    octaves_plain(p, octaves, omega, lambda)
+}
+
+/// `vector_octaves` without AVX, out of line: inlined, its ten cells made the callers' stack
+/// frames 1.4 KB and their prologues longer on every call.
+#[cold]
+#[inline(never)]
+fn octaves_plain(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
     octaves_with(p, octaves, omega, lambda, cell, vector_lanes)
 }
+
+// The AVX form of `octaves_with` and `octaves4_with`, with cells laid out for the lanes.
+#[cfg(target_arch = "x86_64")]
+#[path = "noise_octaves.rs"]
+mod octaves_lanes;
 
 #[cfg(test)]
 #[path = "noise_lattice_tests.rs"]

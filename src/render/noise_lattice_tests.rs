@@ -211,3 +211,62 @@ fn octaves_are_the_scalar_lattice_octaves() {
         }
     }
 }
+
+/// The AVX octaves with lane-ready cells (`octaves_lanes`) are `octaves_with` and
+/// `octaves4_with` over `cell` and `vector_lanes`, bit for bit (NaN for NaN), at every
+/// magnitude: past the i32 range, where the cells come from `cell`, at integers and their
+/// neighbours, signed zeros, infinities and NaN.
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn lane_octaves_are_the_octaves() {
+    if !has_avx() {
+        return;
+    }
+    let same = |a: DVec3, b: DVec3| {
+        a.to_array()
+            .into_iter()
+            .zip(b.to_array())
+            .all(|(x, y)| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan()))
+    };
+    let mut vals = vec![
+        0.0,
+        -0.0,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+        2147483647.5,
+        -2147483648.5,
+        1e300,
+        -1e18,
+    ];
+    let mut x = 0x2545_F491_4F6C_DD1Du64;
+    for k in 0..600i32 {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        let m = (x >> 11) as f64 / (1u64 << 53) as f64;
+        let v = m * 2f64.powi(k % 40 - 10) * if x & 1 == 0 { 1.0 } else { -1.0 };
+        let n = v.round();
+        vals.extend([v, n, n.next_down(), n.next_up()]);
+    }
+    for (i, &a) in vals.iter().enumerate() {
+        let (b, c) = (
+            vals[(i * 7 + 3) % vals.len()],
+            vals[(i * 13 + 5) % vals.len()],
+        );
+        let p = DVec3::new(a, b, c);
+        for (oct, omega, lambda) in [(1, 0.5, 2.0), (3, 0.6, 2.7), (10, 0.5, 2.5), (0, 0.5, 2.0)] {
+            // SAFETY: AVX was detected above.
+            let got = unsafe { octaves_lanes::octaves(p, oct, omega, lambda) };
+            let want = octaves_with(p, oct, omega, lambda, cell, vector_lanes);
+            assert!(same(got, want), "{p:?} {oct}: {got:?} {want:?}");
+            let ps = [p, DVec3::new(b, c, a), DVec3::new(c, a, b), p * 0.37];
+            // SAFETY: as above.
+            let got4 = unsafe { octaves_lanes::octaves4(ps, oct, omega, lambda) };
+            let want4 = octaves4_with(ps, oct, omega, lambda, cell, vector_lanes);
+            for (g, w) in got4.into_iter().zip(want4) {
+                assert!(same(g, w), "{ps:?} {oct}: {g:?} {w:?}");
+            }
+        }
+    }
+}

@@ -167,19 +167,7 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
             let c = super::pigment::eval(p, q);
             0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z
         }
-        // Measured: gradient x gives 0.3 at x = 1.3, 1 at 1, 0 at 2, but 0.80009 at -9.2 (only
-        // values above 1 are reduced before the 1.00001 wrap).
-        PatternKind::Gradient(a) => {
-            let v = q.dot(*a);
-            if v > 1.0 && v < 2.0 {
-                // fmod's exact result here (Sterbenz: v − 1 is exact for v in [1, 2]).
-                v - 1.0
-            } else if v > 1.0 {
-                fmod(v, 1.0)
-            } else {
-                v
-            }
-        }
+        PatternKind::Gradient(a) => gradient(q, *a),
         PatternKind::Onion => fmod(q.length(), 1.0),
         PatternKind::Radial => {
             let a = (-q.z).atan2(q.x) / TAU;
@@ -282,6 +270,21 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
     }
 }
 
+/// Gradient's value before the wave. Measured: gradient x gives 0.3 at x = 1.3, 1 at 1, 0 at
+/// 2, but 0.80009 at -9.2 (only values above 1 are reduced before the 1.00001 wrap).
+#[inline(always)]
+fn gradient(q: DVec3, a: DVec3) -> f64 {
+    let v = q.dot(a);
+    if v > 1.0 && v < 2.0 {
+        // fmod's exact result here (Sterbenz: v − 1 is exact for v in [1, 2]).
+        v - 1.0
+    } else if v > 1.0 {
+        fmod(v, 1.0)
+    } else {
+        v
+    }
+}
+
 /// A material map's palette index at `q` (0 off a `once` image).
 fn material_index(im: &crate::scene::desc::ImageMap, indices: &[u8], q: DVec3) -> usize {
     super::pigment::image_pixel(im, q)
@@ -362,7 +365,8 @@ fn agate(turb: f64, q: DVec3, t: f64) -> f64 {
 }
 
 /// `values_warped4` of the noise patterns, whose samples' lattice walks go together; None
-/// for the others.
+/// for the others. Always inlined: its one caller's other checks had it moved out of line.
+#[inline(always)]
 fn noise_values4(pat: &Pattern, qs: [DVec3; 4]) -> Option<[f64; 4]> {
     let gen = pat.noise_generator;
     let raw = match &pat.kind {
@@ -420,6 +424,11 @@ pub fn values_warped4(pat: &Pattern, qs: [DVec3; 4]) -> [f64; 4] {
     }
     if let Some(vs) = noise_values4(pat, qs) {
         return vs;
+    }
+    // Gradient normals (normal maps of gradients, slope maps) read four samples of a dot
+    // product: `raw`'s call and dispatch per sample cost more than the pattern.
+    if let PatternKind::Gradient(a) = &pat.kind {
+        return qs.map(|q| shape(pat, gradient(q, *a)));
     }
     qs.map(|q| value_warped(pat, q))
 }

@@ -1,0 +1,177 @@
+//! The vector turbulence's octaves in AVX lanes (the displacement of every turbulent wood,
+//! granite and sky): `octaves_with(cell_avx, vector_avx)`'s values, bit for bit, with each
+//! octave's cell laid out as the lanes read it.
+//!
+//! `Cell` keeps the s-curve weights as x·y products and two z weights, and the fractional
+//! position as three scalars; the arithmetic then made the eight corner weights and the six
+//! offset broadcasts (t and t − 1 per axis) with shuffles and scalar subtractions, about 30
+//! instructions an octave. Here the hash-walk phase, which has the values in lanes anyway,
+//! stores the eight weights (the same wxy·wz products) and both offset rows (the same
+//! t − 1.0), so every corner reads its weight with one broadcast from memory; and the octaves'
+//! sum stays in a register instead of three scalars that were spilled to the stack.
+
+use std::arch::x86_64::*;
+
+use crate::math::DVec3;
+
+use super::{all_lanes, cell, entries_avx, Cell, CellList, MAX_POINTS, PACKED};
+
+/// One octave's cell for the lanes: the fractional position's lanes (x, y, z, 0) and the
+/// same minus one (each corner's offsets), the eight corners' weights in corner order
+/// (corner = dx + 2dy + 4dz), and their ENTRY positions.
+#[derive(Clone, Copy)]
+#[repr(C, align(32))]
+struct LaneCell {
+    d: [[f64; 4]; 2],
+    w: [f64; 8],
+    entry: [u32; 8],
+}
+
+/// `LaneCell` from a `Cell` (points whose floors leave the i32 range, and NaN): the
+/// products and differences `vector_avx` forms from it.
+fn from_cell(c: &Cell) -> LaneCell {
+    let [tx, ty, tz] = c.t;
+    LaneCell {
+        d: [[tx, ty, tz, 0.0], [tx - 1.0, ty - 1.0, tz - 1.0, -1.0]],
+        w: std::array::from_fn(|k| c.wxy[k & 3] * c.wz[k >> 2]),
+        entry: c.entry,
+    }
+}
+
+/// `cell_avx`'s operations, then the weights' and offsets' last steps in the lanes.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[inline(always)]
+unsafe fn lane_cell(p: DVec3) -> LaneCell {
+    // SAFETY: the caller guarantees AVX; the stores go to 32-byte aligned fields of a
+    // `repr(C, align(32))` struct at offsets 0, 32, 64 and 96.
+    unsafe {
+        let v = _mm256_setr_pd(p.x, p.y, p.z, 0.0);
+        let f = _mm256_round_pd::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(v);
+        let abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), f);
+        let inside = _mm256_cmp_pd::<_CMP_LT_OQ>(abs, _mm256_set1_pd(2147483648.0));
+        if !all_lanes(inside) {
+            return from_cell(&cell(p));
+        }
+        let t = _mm256_sub_pd(v, f);
+        let s = _mm256_mul_pd(
+            _mm256_mul_pd(t, t),
+            _mm256_sub_pd(_mm256_set1_pd(3.0), _mm256_mul_pd(_mm256_set1_pd(2.0), t)),
+        );
+        let o = _mm256_sub_pd(_mm256_set1_pd(1.0), s);
+        // wx·wy in lanes as `cell_avx` forms them, then times each z weight (1 − sz, sz),
+        // broadcast from lane 2: `vector_avx`'s two lane-wise products.
+        let xo = _mm256_unpacklo_pd(o, s);
+        let wx = _mm256_permute2f128_pd::<0x00>(xo, xo);
+        let wy = _mm256_permute2f128_pd::<0x20>(_mm256_unpackhi_pd(o, o), _mm256_unpackhi_pd(s, s));
+        let wxy = _mm256_mul_pd(wx, wy);
+        let oz = _mm256_permute_pd::<0>(_mm256_permute2f128_pd::<0x11>(o, o));
+        let sz = _mm256_permute_pd::<0>(_mm256_permute2f128_pd::<0x11>(s, s));
+        let mut c = LaneCell {
+            d: [[0.0; 4]; 2],
+            w: [0.0; 8],
+            entry: entries_avx(f),
+        };
+        _mm256_store_pd(c.d[0].as_mut_ptr(), t);
+        _mm256_store_pd(c.d[1].as_mut_ptr(), _mm256_sub_pd(t, _mm256_set1_pd(1.0)));
+        _mm256_store_pd(c.w.as_mut_ptr(), _mm256_mul_pd(wxy, oz));
+        _mm256_store_pd(c.w.as_mut_ptr().add(4), _mm256_mul_pd(wxy, sz));
+        c
+    }
+}
+
+/// `vector_avx`'s sum over the eight corners (x, y, z in lanes 0-2), in corner order.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[inline(always)]
+unsafe fn lane_terms(c: &LaneCell) -> __m256d {
+    // SAFETY: the caller guarantees AVX; PACKED's rows are 32-byte aligned, as the aligned
+    // loads need.
+    unsafe {
+        let dx = [
+            _mm256_broadcast_sd(&c.d[0][0]),
+            _mm256_broadcast_sd(&c.d[1][0]),
+        ];
+        let dy = [
+            _mm256_broadcast_sd(&c.d[0][1]),
+            _mm256_broadcast_sd(&c.d[1][1]),
+        ];
+        let dz = [
+            _mm256_broadcast_sd(&c.d[0][2]),
+            _mm256_broadcast_sd(&c.d[1][2]),
+        ];
+        let mut acc = _mm256_setzero_pd();
+        for (k, &i) in c.entry.iter().enumerate() {
+            let e = PACKED[i as usize & 255].0.as_ptr() as *const f64;
+            let w = _mm256_broadcast_sd(&c.w[k]);
+            let mut t = _mm256_add_pd(
+                _mm256_load_pd(e),
+                _mm256_mul_pd(_mm256_load_pd(e.add(4)), dx[k & 1]),
+            );
+            t = _mm256_add_pd(t, _mm256_mul_pd(_mm256_load_pd(e.add(8)), dy[(k >> 1) & 1]));
+            t = _mm256_add_pd(t, _mm256_mul_pd(_mm256_load_pd(e.add(12)), dz[k >> 2]));
+            acc = _mm256_add_pd(acc, _mm256_mul_pd(w, t));
+        }
+        acc
+    }
+}
+
+/// The octaves' weighted sum of `cells` (each octave's terms times 1, ω, ω², ...): `sum +=
+/// weight·terms` lane by lane, as `octaves_with` adds its three components.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[inline(always)]
+unsafe fn weighted(cells: &[LaneCell], omega: f64) -> DVec3 {
+    // SAFETY: the caller guarantees AVX.
+    unsafe {
+        let mut sum = _mm256_setzero_pd();
+        let mut weight = 1.0;
+        for c in cells {
+            sum = _mm256_add_pd(sum, _mm256_mul_pd(_mm256_set1_pd(weight), lane_terms(c)));
+            weight *= omega;
+        }
+        let mut out = [0.0; 4];
+        _mm256_storeu_pd(out.as_mut_ptr(), sum);
+        DVec3::new(out[0], out[1], out[2])
+    }
+}
+
+/// `octaves_with(p, .., cell_avx, vector_avx)`: every octave's hash walk first, then the
+/// arithmetic.
+#[target_feature(enable = "avx")]
+pub(super) fn octaves(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
+    let n = octaves.min(10) as usize;
+    let mut cells = CellList::<LaneCell, 10>::new();
+    let mut scale = 1.0;
+    for _ in 0..n {
+        // SAFETY: this function only runs with AVX enabled.
+        cells.push(unsafe { lane_cell(p * scale) });
+        scale *= lambda;
+    }
+    // SAFETY: as above.
+    unsafe { weighted(cells.as_slice(), omega) }
+}
+
+/// `octaves4_with(ps, .., cell_avx, vector_avx)`: all four points' hash walks first.
+#[target_feature(enable = "avx")]
+pub(super) fn octaves4(ps: [DVec3; 4], octaves: u32, omega: f64, lambda: f64) -> [DVec3; 4] {
+    let n = octaves.clamp(1, 10) as usize;
+    let mut cells = CellList::<LaneCell, MAX_POINTS>::new();
+    for p in &ps {
+        let mut scale = 1.0;
+        for _ in 0..n {
+            // SAFETY: this function only runs with AVX enabled.
+            cells.push(unsafe { lane_cell(*p * scale) });
+            scale *= lambda;
+        }
+    }
+    let mut out = [DVec3::ZERO; 4];
+    for (o, cs) in out.iter_mut().zip(cells.as_slice().chunks(n)) {
+        // SAFETY: as above.
+        *o = unsafe { weighted(cs, omega) };
+    }
+    out
+}
