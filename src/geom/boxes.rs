@@ -109,6 +109,22 @@ impl Shape for BoxShape {
         !self.empty && p.cmpgt(self.min).all() && p.cmplt(self.max).all()
     }
 
+    /// Near crossing then far, as `intersect_all` lists them, without the list: CSG shadow
+    /// rays ask each box member through here (radiosity_37's walls).
+    fn any_kept(
+        &self,
+        ray: &Ray,
+        tmax: f64,
+        _scratch: &mut Vec<Hit>,
+        keep: &mut dyn FnMut(f64) -> bool,
+    ) -> bool {
+        let Some((near, far)) = self.slabs(ray) else {
+            return false;
+        };
+        (near.0 > EPSILON && near.0 < tmax && keep(near.0))
+            || (far.0 > EPSILON && far.0 < tmax && keep(far.0))
+    }
+
     fn normal(&self, _p: DVec3, hit: &Hit) -> DVec3 {
         let mut n = DVec3::ZERO;
         n[(hit.part as usize / 2).min(2)] = if hit.part & 1 == 0 { -1.0 } else { 1.0 };
@@ -193,5 +209,48 @@ mod tests {
         let bad = BoxShape::new(DVec3::splat(f64::NAN), DVec3::ONE);
         assert!(all(&bad, &Ray::new(DVec3::new(0.5, 0.5, -5.0), DVec3::Z)).is_empty());
         assert!(bad.bounds().is_empty());
+    }
+
+    /// `any_kept` answers as the default's listing does, and asks `keep` about the same
+    /// crossings in the same order up to the first kept: rays from inside, outside, along
+    /// faces and edges, flat and empty boxes, random cuts `tmax` and keep tests.
+    #[test]
+    fn any_kept_is_the_listing() {
+        let mut rng = crate::geom::test_rng::Lcg(7);
+        let boxes = [
+            BoxShape::new(DVec3::splat(-1.0), DVec3::splat(1.0)),
+            BoxShape::new(DVec3::new(-1.0, 0.0, -1.0), DVec3::new(1.0, 0.0, 1.0)),
+            BoxShape::new(DVec3::new(-10.0, -0.1, -10.0), DVec3::new(10.0, 4.0, 10.0)),
+            BoxShape::new(DVec3::splat(f64::NAN), DVec3::ONE),
+        ];
+        let mut kept = 0;
+        for (n, b) in boxes.iter().enumerate() {
+            for k in 0..20_000 {
+                let mut o = rng.vec(12.0);
+                if k % 4 == 0 {
+                    o = o.round();
+                }
+                let d = match k % 5 {
+                    0 => [DVec3::X, DVec3::NEG_Y, DVec3::Z][k % 3],
+                    1 => DVec3::ZERO,
+                    _ => rng.vec(2.0),
+                };
+                let ray = Ray::new(o, d);
+                let tmax = [f64::INFINITY, 3.0, rng.next() * 20.0, -1.0][k % 4];
+                let cut = rng.next() * 20.0;
+                let (mut asked_a, mut asked_b) = (Vec::new(), Vec::new());
+                let got = b.any_kept(&ray, tmax, &mut Vec::new(), &mut |t| {
+                    asked_a.push(t.to_bits());
+                    t > cut
+                });
+                let want = crate::geom::any_listed_kept(b, &ray, tmax, &mut Vec::new(), &mut |t| {
+                    asked_b.push(t.to_bits());
+                    t > cut
+                });
+                assert_eq!((got, &asked_a), (want, &asked_b), "box {n}, ray {k}");
+                kept += got as usize;
+            }
+        }
+        assert!(kept > 1_000, "{kept}");
     }
 }

@@ -44,6 +44,27 @@ fn order_key(t: f64) -> i64 {
     b ^ (((b >> 63) as u64) >> 1) as i64
 }
 
+/// Sorts a search's crossings by (order key, place in the gather), the order
+/// `sort_unstable` gives them: no two entries share a place, so every sort gives this one
+/// order. A short list is sorted here by insertion, without the call into the library's
+/// sort (radiosity_37's walls sort 211 k lists, most of two to four crossings).
+#[inline(always)]
+fn sort_crossings(order: &mut [(i64, u32, u32)]) {
+    if order.len() > 8 {
+        order.sort_unstable();
+        return;
+    }
+    for k in 1..order.len() {
+        let e = order[k];
+        let mut m = k;
+        while m > 0 && (order[m - 1].0, order[m - 1].1) > (e.0, e.1) {
+            order[m] = order[m - 1];
+            m -= 1;
+        }
+        order[m] = e;
+    }
+}
+
 /// Member `i` as `each_member` offers it.
 fn member_at<'a>(children: &'a [Object], index: Option<&ChildIndex>, i: usize) -> &'a Object {
     index.map_or(&children[i], |ix| ix.leaf(children, i))
@@ -120,7 +141,7 @@ impl Object {
         each_member(children, index, ray, tmax, s, gather);
         let order = &mut s.csg_order[order_from..];
         // By (t as `total_cmp` orders it, place in the gather): `j` differs between entries.
-        order.sort_unstable();
+        sort_crossings(order);
         let rejecter = Cell::new(usize::MAX);
         let leaf_rejecter = Cell::new(usize::MAX);
         let clip = &self.clip[..];
@@ -393,6 +414,7 @@ impl Object {
 
 #[cfg(test)]
 mod tests {
+    use super::sort_crossings;
     use crate::geom::test_rng::Lcg;
     use crate::math::{DVec3, Ray, EPSILON};
     use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
@@ -410,6 +432,30 @@ mod tests {
     /// What two crossings must share bit for bit.
     fn key(h: &SurfaceHit) -> (u64, bool, u32) {
         (h.t.to_bits(), h.flip, h.hit.part)
+    }
+
+    /// The short lists' insertion sort gives `sort_unstable`'s order: lists of every length
+    /// up to past the cut-over, with ties in the key (and in the tag) broken by the place.
+    #[test]
+    fn crossings_sort_as_sort_unstable() {
+        let mut rng = Lcg(3);
+        for n in 0..14 {
+            for _ in 0..500 {
+                let mut places: Vec<u32> = (0..n as u32).collect();
+                // Places in any order, keys from a few values so that they tie.
+                for k in (1..places.len()).rev() {
+                    places.swap(k, (rng.next() * (k + 1) as f64) as usize % (k + 1));
+                }
+                let mut a: Vec<(i64, u32, u32)> = places
+                    .iter()
+                    .map(|&j| ((rng.next() * 4.0) as i64 - 2, j, (rng.next() * 3.0) as u32))
+                    .collect();
+                let mut b = a.clone();
+                sort_crossings(&mut a);
+                b.sort_unstable();
+                assert_eq!(a, b);
+            }
+        }
     }
 
     /// `first_hit` as `all_hits` defines it: the nearest crossing (t > EPSILON when clipped),
