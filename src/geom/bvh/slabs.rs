@@ -117,13 +117,28 @@ impl Slabs2 {
     /// `Aabb::hit` of both boxes of `p` within (0, tmax): the entry distances of those crossed.
     #[inline]
     pub(super) fn hit_pair(&self, p: &Pair, tmax: f64) -> (Option<f64>, Option<f64>) {
+        self.pair_test::<true>(p, tmax)
+    }
+
+    /// `hit_pair` for a ray with no flat axis (`any_flat` false), which the walk knows once
+    /// per ray: without the per-axis look at `flat`, three tests and branches a node, and the
+    /// registers they held (mirror_spheres' walks are ~3.7 nodes a camera ray).
+    #[inline]
+    pub(super) fn hit_pair_unflat(&self, p: &Pair, tmax: f64) -> (Option<f64>, Option<f64>) {
+        debug_assert!(!self.any_flat());
+        self.pair_test::<false>(p, tmax)
+    }
+
+    /// The paired test; `FLAT` false leaves out the flat axes' path, for rays that have none.
+    #[inline(always)]
+    fn pair_test<const FLAT: bool>(&self, p: &Pair, tmax: f64) -> (Option<f64>, Option<f64>) {
         use std::arch::x86_64::*;
         // SAFETY: SSE2 is part of x86_64; `Pair` is 16-byte aligned and each `[f64; 2]` row
         // sits at a multiple of 16 bytes in it, as `_mm_load_pd` needs; the store writes two
         // doubles into a two-double array.
         unsafe {
             let axis = |k: usize| {
-                if self.flat[k] {
+                if FLAT && self.flat[k] {
                     let (na, fa) = self.flat_axis(k, p.lo[k][0], p.hi[k][0]);
                     let (nb, fb) = self.flat_axis(k, p.lo[k][1], p.hi[k][1]);
                     return (_mm_set_pd(nb, na), _mm_set_pd(fb, fa));
@@ -174,6 +189,9 @@ impl Slabs2 {
         unreachable!()
     }
     pub(super) fn hit_pair(&self, _: &Pair, _: f64) -> (Option<f64>, Option<f64>) {
+        unreachable!()
+    }
+    pub(super) fn hit_pair_unflat(&self, _: &Pair, _: f64) -> (Option<f64>, Option<f64>) {
         unreachable!()
     }
 }
