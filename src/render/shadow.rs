@@ -2,6 +2,7 @@
 //! lights and for area lights (an array of points, sampled whole or adaptively).
 
 use crate::math::{DVec3, Ray};
+use crate::scene::build::leaf_any_hit;
 use crate::scene::desc::AreaLightDesc;
 use crate::scene::light::{AreaGrid, Light};
 
@@ -180,7 +181,7 @@ impl<'a> Tracer<'a> {
         let mut tried = None;
         if let Some(b) = ctx.blockers[slot] {
             if slabs.hits(&b.bounds, dist) {
-                if b.any_hit(&ray, dist, ctx) {
+                if leaf_any_hit(b, &ray, dist, ctx) {
                     return DVec3::ZERO;
                 }
                 tried = Some(b);
@@ -214,7 +215,7 @@ impl<'a> Tracer<'a> {
                 return false;
             }
             if !obj.transparent {
-                if obj.any_hit(&ray, dist, ctx) {
+                if leaf_any_hit(obj, &ray, dist, ctx) {
                     att = DVec3::ZERO;
                     blocker = Some(obj);
                     return true;
