@@ -32,14 +32,23 @@ impl Scene {
                 best = Some(h);
             }
         }
-        self.bvh.traverse_inv(ray, inv_dir, tmax, |prim, tmax| {
-            if let Some(h) = leaf_first_hit(&self.objects[self.bounded[prim]], ray, *tmax, scratch)
-            {
-                *tmax = h.t;
-                best = Some(h);
-            }
-            false
-        });
+        // Inlined into the walk, which LLVM stopped doing once the walk had two copies (one
+        // for rays with a flat axis): a call per leaf otherwise.
+        self.bvh.traverse_inv(
+            ray,
+            inv_dir,
+            tmax,
+            #[inline(always)]
+            |prim, tmax| {
+                if let Some(h) =
+                    leaf_first_hit(&self.objects[self.bounded[prim]], ray, *tmax, scratch)
+                {
+                    *tmax = h.t;
+                    best = Some(h);
+                }
+                false
+            },
+        );
         best
     }
 
