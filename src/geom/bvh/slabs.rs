@@ -277,4 +277,67 @@ mod tests {
         }
         assert!(checked > 10_000, "{checked}");
     }
+
+    /// `hit_pair_unflat` is `hit_pair` bit for bit wherever the walk takes it (no flat axis):
+    /// boxes from tiny to huge and infinite, origins on faces and anywhere, direction
+    /// components down to 1e-300, `tmax` finite, infinite and NaN.
+    #[test]
+    fn the_unflat_test_is_the_paired_test() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut compared = 0usize;
+        for k in 0..50_000usize {
+            let grid = |x: f64| (x * 16.0).floor() - 8.0;
+            let mut corner = || DVec3::new(grid(next()), grid(next()), grid(next()));
+            let (a0, b0) = (corner(), corner());
+            let size = match k % 4 {
+                0 => DVec3::splat(1e-9),
+                1 => DVec3::new(0.0, 2.0, 1.0),
+                2 => DVec3::splat(f64::INFINITY),
+                _ => DVec3::new(3.0, 1.0, 5.0),
+            };
+            let (a, b) = (
+                Aabb::new(a0, a0 + size),
+                Aabb::new(b0.min(b0 + size), b0.max(b0)),
+            );
+            let origin = if k % 3 == 0 {
+                a0
+            } else {
+                DVec3::new(next(), next(), next()) * 24.0 - DVec3::splat(12.0)
+            };
+            let mut dir = DVec3::new(next(), next(), next()) * 2.0 - DVec3::ONE;
+            match k % 5 {
+                0 => dir.y = 1e-300,
+                1 => dir.z = -1e-12,
+                _ => {}
+            }
+            let inv = DVec3::new(1.0 / dir.x, 1.0 / dir.y, 1.0 / dir.z);
+            let Some(s) = Slabs2::new(origin, inv) else {
+                continue;
+            };
+            if s.any_flat() {
+                continue;
+            }
+            let tmax = match k % 4 {
+                0 => f64::INFINITY,
+                1 => f64::NAN,
+                _ => next() * 30.0,
+            };
+            let pair = Pair::of(&a, &b);
+            let bits =
+                |h: (Option<f64>, Option<f64>)| (h.0.map(f64::to_bits), h.1.map(f64::to_bits));
+            assert_eq!(
+                bits(s.hit_pair_unflat(&pair, tmax)),
+                bits(s.hit_pair(&pair, tmax)),
+                "k={k}"
+            );
+            compared += 1;
+        }
+        assert!(compared > 40_000, "{compared}");
+    }
 }
