@@ -209,114 +209,88 @@ impl<'a> Tracer<'a> {
         let mut att = DVec3::ONE;
         let mut blocker = None;
         let mut members = std::mem::take(&mut ctx.shadow_members);
-        // Inlined into the walk: the opaque case, nearly every object's, is a few tests and
-        // the shape's own; transparent objects take `through_transparent`, out of line.
-        self.scene.for_each_candidate_inv(
-            &ray,
-            inv,
-            dist,
-            #[inline(always)]
-            |obj| {
-                // The cached blocker, opaque, was just found not to block.
-                if obj.no_shadow || tried.is_some_and(|t| std::ptr::eq(t, obj)) {
-                    return false;
+        self.scene.for_each_candidate_inv(&ray, inv, dist, |obj| {
+            // The cached blocker, opaque, was just found not to block.
+            if obj.no_shadow || tried.is_some_and(|t| std::ptr::eq(t, obj)) {
+                return false;
+            }
+            if !obj.transparent {
+                if leaf_any_hit(obj, &ray, dist, ctx) {
+                    att = DVec3::ZERO;
+                    blocker = Some(obj);
+                    return true;
                 }
-                if !obj.transparent {
-                    if leaf_any_hit(obj, &ray, dist, ctx) {
-                        att = DVec3::ZERO;
-                        blocker = Some(obj);
-                        return true;
+                return false;
+            }
+            let start = ctx.surface.len();
+            members.clear();
+            if obj.union_members(&ray, dist, ctx, &mut members) {
+                // A union's crossings are its members' in member order. Any crossing that
+                // blocks makes the answer zero wherever it stands in that list, so the opaque
+                // members (most of a scene wrapped in a clear container, as advanced/abyss's
+                // media sphere) are asked first, each alone, and the first that blocks ends
+                // the ray; only when none does is the list gathered in order for the
+                // product below. A member without crossings is not asked twice.
+                let mut k = 0;
+                for i in 0..members.len() {
+                    let m = members[i];
+                    if !m.transparent {
+                        if self.member_blocks(m, &ray, l, dist, photons_only, ctx) {
+                            ctx.member_blockers[slot] = Some((obj, m));
+                            att = DVec3::ZERO;
+                            return true;
+                        }
+                        if ctx.surface.len() == start {
+                            continue;
+                        }
+                        ctx.surface.truncate(start);
                     }
-                    return false;
+                    members[k] = m;
+                    k += 1;
                 }
-                let lit = (l, dist, slot, photons_only);
-                self.through_transparent(obj, &ray, lit, &mut members, &mut att, ctx)
-            },
-        );
+                for &m in &members[..k] {
+                    m.all_hits(&ray, dist, ctx);
+                }
+            } else {
+                obj.all_hits(&ray, dist, ctx);
+            }
+            for i in start..ctx.surface.len() {
+                let h = ctx.surface[i];
+                if self.crossing_blocks(&h, &ray, l, photons_only, Some(&mut att)) {
+                    att = DVec3::ZERO;
+                    break;
+                }
+            }
+            // Fading interiors and media dim the light over each stretch the ray spends
+            // inside them: from the last crossing (or the shaded point) to a crossing that
+            // leaves (povray: absorbing media in a transparent container always shadow).
+            if att != DVec3::ZERO
+                && ctx.surface[start..]
+                    .iter()
+                    .any(|h| h.obj.interior.is_some())
+            {
+                ctx.surface[start..].sort_by(|a, b| a.t.total_cmp(&b.t));
+                let mut last = 0.0;
+                for h in &ctx.surface[start..] {
+                    if let Some(int) = &h.obj.interior {
+                        if h.obj.normal(ray.at(h.t), h).dot(l) > 0.0 {
+                            att *= int.fade(h.t - last);
+                            if int.has_media() {
+                                att *= super::media::transmittance(&[int.media()], &ray, last, h.t);
+                            }
+                        }
+                    }
+                    last = h.t;
+                }
+            }
+            ctx.surface.truncate(start);
+            att == DVec3::ZERO
+        });
         ctx.shadow_members = members;
         if blocker.is_some() {
             ctx.blockers[slot] = blocker;
         }
         att
-    }
-
-    /// The shadow walk's transparent object `obj`: its crossings filter `att` (zero when one
-    /// blocks); true to stop the walk (the light is gone). `(l, dist, slot, photons_only)`:
-    /// the shadow ray's direction and length, its light and whether that light's refracted
-    /// share comes as photons. Out of line, so the walk's opaque case stays small.
-    #[inline(never)]
-    fn through_transparent(
-        &self,
-        obj: &'a crate::scene::object::Object,
-        ray: &Ray,
-        (l, dist, slot, photons_only): (DVec3, f64, usize, bool),
-        members: &mut Vec<&'a crate::scene::object::Object>,
-        att: &mut DVec3,
-        ctx: &mut TraceCtx<'a>,
-    ) -> bool {
-        let start = ctx.surface.len();
-        members.clear();
-        if obj.union_members(ray, dist, ctx, members) {
-            // A union's crossings are its members' in member order. Any crossing that
-            // blocks makes the answer zero wherever it stands in that list, so the opaque
-            // members (most of a scene wrapped in a clear container, as advanced/abyss's
-            // media sphere) are asked first, each alone, and the first that blocks ends
-            // the ray; only when none does is the list gathered in order for the
-            // product below. A member without crossings is not asked twice.
-            let mut k = 0;
-            for i in 0..members.len() {
-                let m = members[i];
-                if !m.transparent {
-                    if self.member_blocks(m, ray, l, dist, photons_only, ctx) {
-                        ctx.member_blockers[slot] = Some((obj, m));
-                        *att = DVec3::ZERO;
-                        return true;
-                    }
-                    if ctx.surface.len() == start {
-                        continue;
-                    }
-                    ctx.surface.truncate(start);
-                }
-                members[k] = m;
-                k += 1;
-            }
-            for &m in &members[..k] {
-                m.all_hits(ray, dist, ctx);
-            }
-        } else {
-            obj.all_hits(ray, dist, ctx);
-        }
-        for i in start..ctx.surface.len() {
-            let h = ctx.surface[i];
-            if self.crossing_blocks(&h, ray, l, photons_only, Some(&mut *att)) {
-                *att = DVec3::ZERO;
-                break;
-            }
-        }
-        // Fading interiors and media dim the light over each stretch the ray spends
-        // inside them: from the last crossing (or the shaded point) to a crossing that
-        // leaves (povray: absorbing media in a transparent container always shadow).
-        if *att != DVec3::ZERO
-            && ctx.surface[start..]
-                .iter()
-                .any(|h| h.obj.interior.is_some())
-        {
-            ctx.surface[start..].sort_by(|a, b| a.t.total_cmp(&b.t));
-            let mut last = 0.0;
-            for h in &ctx.surface[start..] {
-                if let Some(int) = &h.obj.interior {
-                    if h.obj.normal(ray.at(h.t), h).dot(l) > 0.0 {
-                        *att *= int.fade(h.t - last);
-                        if int.has_media() {
-                            *att *= super::media::transmittance(&[int.media()], ray, last, h.t);
-                        }
-                    }
-                }
-                last = h.t;
-            }
-        }
-        ctx.surface.truncate(start);
-        *att == DVec3::ZERO
     }
 
     /// Whether a crossing of `m` (a member of a transparent union) within `dist` blocks the
