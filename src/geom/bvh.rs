@@ -201,8 +201,8 @@ impl Bvh {
         &self,
         ray: &Ray,
         inv_dir: DVec3,
-        mut tmax: f64,
-        mut f: impl FnMut(usize, &mut f64) -> bool,
+        tmax: f64,
+        f: impl FnMut(usize, &mut f64) -> bool,
     ) {
         if self.prims.is_empty() {
             return;
@@ -224,14 +224,36 @@ impl Bvh {
         // and reflected rays start inside the root's box far more often than camera rays miss
         // it, and the test cost about as much as a node's (unit test
         // `the_root_test_is_implied_by_its_children`).
+        let test_general = |n: &Node, tmax: f64| match &slabs {
+            Some(s) => s.hit_pair(&n.boxes, tmax),
+            None => (
+                n.boxes.get(0).hit(origin, inv_dir, tmax).map(|t| t.0),
+                n.boxes.get(1).hit(origin, inv_dir, tmax).map(|t| t.0),
+            ),
+        };
         let root_missed = match &slabs {
-            Some(s) if !s.any_flat() => false,
+            Some(s) if !s.any_flat() => {
+                // Nearly every ray: the walk compiled for it, without the flat axes' tests.
+                return self.walk(tmax, f, |n, tmax| s.hit_pair_unflat(&n.boxes, tmax));
+            }
             Some(s) => s.hit2(&self.root_box, &self.root_box, tmax).0.is_none(),
             None => self.root_box.hit(origin, inv_dir, tmax).is_none(),
         };
         if root_missed {
             return;
         }
+        self.walk(tmax, f, test_general);
+    }
+
+    /// `traverse_inv`'s walk from the root, each node's pair of boxes tested by `test` (the
+    /// entry distances of those the ray crosses within tmax).
+    #[inline(always)]
+    fn walk(
+        &self,
+        mut tmax: f64,
+        mut f: impl FnMut(usize, &mut f64) -> bool,
+        test: impl Fn(&Node, f64) -> (Option<f64>, Option<f64>),
+    ) {
         // Far children waiting, with their entry distance so they can be skipped once a
         // closer hit has lowered tmax. Left uninitialised: zeroing 2 KB on every traversal
         // (every camera, shadow and mesh ray) cost about a tenth of the render.
@@ -248,14 +270,7 @@ impl Bvh {
                 }
             } else {
                 let n = &self.nodes[at.index as usize];
-                let (ha, hb) = match &slabs {
-                    Some(s) => s.hit_pair(&n.boxes, tmax),
-                    None => (
-                        n.boxes.get(0).hit(origin, inv_dir, tmax).map(|t| t.0),
-                        n.boxes.get(1).hit(origin, inv_dir, tmax).map(|t| t.0),
-                    ),
-                };
-                match (ha, hb) {
+                match test(n, tmax) {
                     (Some(ta), Some(tb)) => {
                         let (near, far, tfar) = if ta <= tb {
                             (n.child[0], n.child[1], tb)

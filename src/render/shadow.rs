@@ -2,6 +2,7 @@
 //! lights and for area lights (an array of points, sampled whole or adaptively).
 
 use crate::math::{DVec3, Ray};
+use crate::scene::build::leaf_any_hit;
 use crate::scene::desc::AreaLightDesc;
 use crate::scene::light::{AreaGrid, Light};
 
@@ -173,10 +174,14 @@ impl<'a> Tracer<'a> {
         // Once for the cached blocker's box and the walk (each took its own three divisions);
         // `ray_recip` is `recip` to the bit, read so as to forward from the stores just made.
         let inv = crate::geom::bvh::ray_recip(&ray);
+        // The cached boxes' tests are `Aabb::hit(..).is_some()`, through plain comparisons
+        // where no slab distance can be NaN (`Slabs`): most cached blockers are not in the
+        // way, and the NaN-aware test was ~75 instructions of every such shadow ray.
+        let slabs = crate::math::Slabs::new(ray.origin, inv);
         let mut tried = None;
         if let Some(b) = ctx.blockers[slot] {
-            if b.bounds.hit(ray.origin, inv, dist).is_some() {
-                if b.any_hit(&ray, dist, ctx) {
+            if slabs.hits(&b.bounds, dist) {
+                if leaf_any_hit(b, &ray, dist, ctx) {
                     return DVec3::ZERO;
                 }
                 tried = Some(b);
@@ -193,8 +198,8 @@ impl<'a> Tracer<'a> {
         }
         if let Some((top, m)) = ctx.member_blockers[slot] {
             let start = ctx.surface.len();
-            if top.bounds.hit(ray.origin, inv, dist).is_some()
-                && m.bounds.hit(ray.origin, inv, dist).is_some()
+            if slabs.hits(&top.bounds, dist)
+                && slabs.hits(&m.bounds, dist)
                 && self.member_blocks(m, &ray, l, dist, photons_only, ctx)
             {
                 return DVec3::ZERO;
@@ -210,7 +215,7 @@ impl<'a> Tracer<'a> {
                 return false;
             }
             if !obj.transparent {
-                if obj.any_hit(&ray, dist, ctx) {
+                if leaf_any_hit(obj, &ray, dist, ctx) {
                     att = DVec3::ZERO;
                     blocker = Some(obj);
                     return true;

@@ -22,6 +22,7 @@ use crate::scene::shapes::make_shape;
 pub use super::light::Light;
 
 mod query;
+pub(crate) use query::leaf_any_hit;
 
 /// How working values become file values.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -62,11 +62,13 @@ pub struct Scratch<'a> {
     pub media_piece: Vec<usize>,
     /// At one media sample: each scattering media's density, with its scattering.
     pub media_scatter: Vec<(DVec3, Scattering)>,
-    /// The texture last shaded with facts about it that walk its whole tree (render::trace's
-    /// `texture_facts`): a star field's nested texture_maps cost two walks of every entry per
-    /// hit otherwise. Held by reference, so while the scene lives no other texture can have
-    /// its address.
-    pub last_texture: Option<(&'a Texture, [bool; 3])>,
+    /// The textures last shaded, newest first, with facts about them that walk their whole
+    /// tree (render::trace's `texture_facts`): a star field's nested texture_maps cost two
+    /// walks of every entry per hit otherwise. Four, for scenes whose rays go from one
+    /// object to another and back (a mirror's reflections: with one, a fifth of
+    /// mirror_spheres' hits walked their texture). Held by reference, so while the scene
+    /// lives no other texture can have its address.
+    pub last_textures: [Option<(&'a Texture, [bool; 3])>; 4],
 }
 
 /// A light reaching the point being shaded, after shadows.

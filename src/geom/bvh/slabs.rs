@@ -117,13 +117,28 @@ impl Slabs2 {
     /// `Aabb::hit` of both boxes of `p` within (0, tmax): the entry distances of those crossed.
     #[inline]
     pub(super) fn hit_pair(&self, p: &Pair, tmax: f64) -> (Option<f64>, Option<f64>) {
+        self.pair_test::<true>(p, tmax)
+    }
+
+    /// `hit_pair` for a ray with no flat axis (`any_flat` false), which the walk knows once
+    /// per ray: without the per-axis look at `flat`, three tests and branches a node, and the
+    /// registers they held (mirror_spheres' walks are ~3.7 nodes a camera ray).
+    #[inline]
+    pub(super) fn hit_pair_unflat(&self, p: &Pair, tmax: f64) -> (Option<f64>, Option<f64>) {
+        debug_assert!(!self.any_flat());
+        self.pair_test::<false>(p, tmax)
+    }
+
+    /// The paired test; `FLAT` false leaves out the flat axes' path, for rays that have none.
+    #[inline(always)]
+    fn pair_test<const FLAT: bool>(&self, p: &Pair, tmax: f64) -> (Option<f64>, Option<f64>) {
         use std::arch::x86_64::*;
         // SAFETY: SSE2 is part of x86_64; `Pair` is 16-byte aligned and each `[f64; 2]` row
         // sits at a multiple of 16 bytes in it, as `_mm_load_pd` needs; the store writes two
         // doubles into a two-double array.
         unsafe {
             let axis = |k: usize| {
-                if self.flat[k] {
+                if FLAT && self.flat[k] {
                     let (na, fa) = self.flat_axis(k, p.lo[k][0], p.hi[k][0]);
                     let (nb, fb) = self.flat_axis(k, p.lo[k][1], p.hi[k][1]);
                     return (_mm_set_pd(nb, na), _mm_set_pd(fb, fa));
@@ -174,6 +189,9 @@ impl Slabs2 {
         unreachable!()
     }
     pub(super) fn hit_pair(&self, _: &Pair, _: f64) -> (Option<f64>, Option<f64>) {
+        unreachable!()
+    }
+    pub(super) fn hit_pair_unflat(&self, _: &Pair, _: f64) -> (Option<f64>, Option<f64>) {
         unreachable!()
     }
 }
@@ -258,5 +276,68 @@ mod tests {
             }
         }
         assert!(checked > 10_000, "{checked}");
+    }
+
+    /// `hit_pair_unflat` is `hit_pair` bit for bit wherever the walk takes it (no flat axis):
+    /// boxes from tiny to huge and infinite, origins on faces and anywhere, direction
+    /// components down to 1e-300, `tmax` finite, infinite and NaN.
+    #[test]
+    fn the_unflat_test_is_the_paired_test() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut compared = 0usize;
+        for k in 0..50_000usize {
+            let grid = |x: f64| (x * 16.0).floor() - 8.0;
+            let mut corner = || DVec3::new(grid(next()), grid(next()), grid(next()));
+            let (a0, b0) = (corner(), corner());
+            let size = match k % 4 {
+                0 => DVec3::splat(1e-9),
+                1 => DVec3::new(0.0, 2.0, 1.0),
+                2 => DVec3::splat(f64::INFINITY),
+                _ => DVec3::new(3.0, 1.0, 5.0),
+            };
+            let (a, b) = (
+                Aabb::new(a0, a0 + size),
+                Aabb::new(b0.min(b0 + size), b0.max(b0)),
+            );
+            let origin = if k % 3 == 0 {
+                a0
+            } else {
+                DVec3::new(next(), next(), next()) * 24.0 - DVec3::splat(12.0)
+            };
+            let mut dir = DVec3::new(next(), next(), next()) * 2.0 - DVec3::ONE;
+            match k % 5 {
+                0 => dir.y = 1e-300,
+                1 => dir.z = -1e-12,
+                _ => {}
+            }
+            let inv = DVec3::new(1.0 / dir.x, 1.0 / dir.y, 1.0 / dir.z);
+            let Some(s) = Slabs2::new(origin, inv) else {
+                continue;
+            };
+            if s.any_flat() {
+                continue;
+            }
+            let tmax = match k % 4 {
+                0 => f64::INFINITY,
+                1 => f64::NAN,
+                _ => next() * 30.0,
+            };
+            let pair = Pair::of(&a, &b);
+            let bits =
+                |h: (Option<f64>, Option<f64>)| (h.0.map(f64::to_bits), h.1.map(f64::to_bits));
+            assert_eq!(
+                bits(s.hit_pair_unflat(&pair, tmax)),
+                bits(s.hit_pair(&pair, tmax)),
+                "k={k}"
+            );
+            compared += 1;
+        }
+        assert!(compared > 40_000, "{compared}");
     }
 }
