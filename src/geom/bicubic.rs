@@ -127,10 +127,107 @@ fn normal_from(p: &[DVec3; 16], u: f64, v: f64, su: DVec3, sv: DVec3) -> DVec3 {
 pub fn tessellate(p: &[DVec3; 16], u_steps: u32, v_steps: u32) -> MeshData {
     let nu = 1usize << u_steps.min(MAX_STEPS);
     let nv = 1usize << v_steps.min(MAX_STEPS);
-    crate::geom::mesh::grid_mesh(nu, nv, |i, j| {
-        let (u, v) = (i as f64 / nu as f64, j as f64 / nv as f64);
-        let (s, su, sv) = eval(p, u, v);
-        (s, normal_from(p, u, v, su, sv), [u, v])
+    let points = (nu + 1) * (nv + 1);
+    let (mut vertices, mut normals, mut uvs) = (
+        Vec::with_capacity(points),
+        Vec::with_capacity(points),
+        Vec::with_capacity(points),
+    );
+    let mut push = |u: f64, v: f64, (s, su, sv): (DVec3, DVec3, DVec3)| {
+        vertices.push(s);
+        normals.push(normal_from(p, u, v, su, sv));
+        uvs.push([u, v]);
+    };
+    #[cfg(target_arch = "x86_64")]
+    let avx = crate::math::has_avx();
+    #[cfg(not(target_arch = "x86_64"))]
+    let avx = false;
+    // A row's weights along u, four points' to a batch: [batch][c][lane].
+    let us: Vec<f64> = (0..=nu).map(|i| i as f64 / nu as f64).collect();
+    let batches: Vec<_> = if avx {
+        us.chunks_exact(4)
+            .map(|u| {
+                let w = [0, 1, 2, 3].map(|k| bernstein(u[k]));
+                let lanes = |d: usize| {
+                    std::array::from_fn(|c| [0, 1, 2, 3].map(|k| [w[k].0, w[k].1][d][c]))
+                };
+                (lanes(0), lanes(1))
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
+    for j in 0..=nv {
+        let v = j as f64 / nv as f64;
+        let done = 4 * batches.len();
+        #[cfg(target_arch = "x86_64")]
+        if !batches.is_empty() {
+            let (bv, dv) = bernstein(v);
+            for (b, (bu, du)) in batches.iter().enumerate() {
+                // SAFETY: `batches` is filled only where the CPU has AVX.
+                let four = unsafe { eval4_avx(p, bu, du, &bv, &dv) };
+                for (k, e) in four.into_iter().enumerate() {
+                    push(us[4 * b + k], v, e);
+                }
+            }
+        }
+        for &u in &us[done..] {
+            push(u, v, eval(p, u, v));
+        }
+    }
+    crate::geom::mesh::grid_mesh_of(nu, nv, vertices, normals, uvs)
+}
+
+/// `eval` at four points of one row (`v` fixed): `bu[c][k]` and `du[c][k]` are the weights
+/// of `bernstein` at point k's u, `bv` and `dv` at v. Lane k holds point k, so each weight
+/// product and product-and-sum serves four points, where `eval_avx` leaves a lane of four
+/// unused and makes the weights of every point anew (most of a patch's set-up). Each lane
+/// makes `eval_scalar`'s IEEE operations in its order (AVX, no FMA): the same bits.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+unsafe fn eval4_avx(
+    p: &[DVec3; 16],
+    bu: &[[f64; 4]; 4],
+    du: &[[f64; 4]; 4],
+    bv: &[f64; 4],
+    dv: &[f64; 4],
+) -> [(DVec3, DVec3, DVec3); 4] {
+    use std::arch::x86_64::{
+        _mm256_add_pd, _mm256_loadu_pd, _mm256_mul_pd, _mm256_set1_pd, _mm256_setzero_pd,
+        _mm256_storeu_pd,
+    };
+    // Accumulators [output][coordinate]: the point, d/du and d/dv; x, y, z.
+    let mut acc = [[_mm256_setzero_pd(); 3]; 3];
+    for r in 0..4 {
+        let (wv, wdv) = (_mm256_set1_pd(bv[r]), _mm256_set1_pd(dv[r]));
+        for c in 0..4 {
+            let (wu, wdu) = (
+                _mm256_loadu_pd(bu[c].as_ptr()),
+                _mm256_loadu_pd(du[c].as_ptr()),
+            );
+            let w = [
+                _mm256_mul_pd(wu, wv),
+                _mm256_mul_pd(wdu, wv),
+                _mm256_mul_pd(wu, wdv),
+            ];
+            let q = p[r * 4 + c];
+            for (a, x) in [q.x, q.y, q.z].into_iter().enumerate() {
+                let x = _mm256_set1_pd(x);
+                for (o, &w) in w.iter().enumerate() {
+                    acc[o][a] = _mm256_add_pd(acc[o][a], _mm256_mul_pd(x, w));
+                }
+            }
+        }
+    }
+    let mut out = [[[0.0; 4]; 3]; 3];
+    for (o, a) in out.iter_mut().zip(acc) {
+        for (o, a) in o.iter_mut().zip(a) {
+            _mm256_storeu_pd(o.as_mut_ptr(), a);
+        }
+    }
+    std::array::from_fn(|k| {
+        let v = |o: usize| DVec3::new(out[o][0][k], out[o][1][k], out[o][2][k]);
+        (v(0), v(1), v(2))
     })
 }
 
@@ -162,6 +259,36 @@ mod tests {
                     );
                 }
             }
+        }
+    }
+
+    /// The row-by-row tessellation (four points a batch where the CPU has AVX) gives the
+    /// vertices, normals and uvs of `eval` and `normal_from` point by point, bit for bit,
+    /// with the rows' last points (past the batches) and collapsed edges among them.
+    #[test]
+    fn batched_rows_are_pointwise_eval() {
+        let mut rng = crate::geom::test_rng::Lcg(17);
+        for case in 0..40 {
+            let mut p: [DVec3; 16] = std::array::from_fn(|_| rng.vec(3.0));
+            if case % 4 == 1 {
+                for q in p.iter_mut().take(4) {
+                    *q = DVec3::new(0.5, -1.0, 2.0);
+                }
+            }
+            let (us, vs) = (case % 5, (case / 5) % 4 + 1);
+            let m = tessellate(&p, us as u32, vs as u32);
+            let (nu, nv) = (1usize << us, 1usize << vs);
+            let want = crate::geom::mesh::grid_mesh(nu, nv, |i, j| {
+                let (u, v) = (i as f64 / nu as f64, j as f64 / nv as f64);
+                let (s, su, sv) = eval(&p, u, v);
+                (s, normal_from(&p, u, v, su, sv), [u, v])
+            });
+            assert_eq!(format!("{m:?}"), format!("{want:?}"), "case {case}");
+            let bits = |v: &[DVec3]| -> Vec<[u64; 3]> {
+                v.iter().map(|x| x.to_array().map(f64::to_bits)).collect()
+            };
+            assert_eq!(bits(&m.vertices), bits(&want.vertices));
+            assert_eq!(bits(&m.normals), bits(&want.normals));
         }
     }
 

@@ -99,6 +99,7 @@ pub fn ray_recip(ray: &Ray) -> DVec3 {
 }
 
 mod build;
+mod grid;
 mod slabs;
 
 use build::{centroid, clamp_box, Builder};
