@@ -15,6 +15,7 @@ pub mod focal;
 mod fog;
 mod fractal;
 mod irid;
+mod legacy_sky;
 mod lighting;
 mod media;
 mod media_beam;
