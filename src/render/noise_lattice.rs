@@ -584,64 +584,15 @@ fn vector_lanes(c: &Cell) -> [f64; 3] {
     [out[0], out[1], out[2]]
 }
 
-/// The same with one AVX register as the lanes.
-///
-/// # Safety
-/// The CPU must have AVX.
-#[cfg(target_arch = "x86_64")]
-#[inline(always)]
-unsafe fn vector_avx(c: &Cell) -> [f64; 3] {
-    use std::arch::x86_64::*;
-    // SAFETY: the caller guarantees AVX; PACKED's rows are 32-byte aligned, as the aligned
-    // loads need.
-    unsafe {
-        let dx = [_mm256_set1_pd(c.t[0]), _mm256_set1_pd(c.t[0] - 1.0)];
-        let dy = [_mm256_set1_pd(c.t[1]), _mm256_set1_pd(c.t[1] - 1.0)];
-        let dz = [_mm256_set1_pd(c.t[2]), _mm256_set1_pd(c.t[2] - 1.0)];
-        // The eight corners' weights wxy·wz as two lane-wise products (the scalar code's
-        // products, lane by lane), each then broadcast from memory: one load instead of a
-        // scalar multiply and two shuffles per corner.
-        let wxy = _mm256_loadu_pd(c.wxy.as_ptr());
-        let mut w8 = [0.0; 8];
-        _mm256_storeu_pd(w8.as_mut_ptr(), _mm256_mul_pd(wxy, _mm256_set1_pd(c.wz[0])));
-        _mm256_storeu_pd(
-            w8.as_mut_ptr().add(4),
-            _mm256_mul_pd(wxy, _mm256_set1_pd(c.wz[1])),
-        );
-        let mut acc = _mm256_setzero_pd();
-        for (k, &i) in c.entry.iter().enumerate() {
-            let e = PACKED[i as usize & 255].0.as_ptr() as *const f64;
-            let w = _mm256_broadcast_sd(&w8[k]);
-            let mut t = _mm256_add_pd(
-                _mm256_load_pd(e),
-                _mm256_mul_pd(_mm256_load_pd(e.add(4)), dx[k & 1]),
-            );
-            t = _mm256_add_pd(t, _mm256_mul_pd(_mm256_load_pd(e.add(8)), dy[(k >> 1) & 1]));
-            t = _mm256_add_pd(t, _mm256_mul_pd(_mm256_load_pd(e.add(12)), dz[k >> 2]));
-            acc = _mm256_add_pd(acc, _mm256_mul_pd(w, t));
-        }
-        let mut out = [0.0; 4];
-        _mm256_storeu_pd(out.as_mut_ptr(), acc);
-        [out[0], out[1], out[2]]
-    }
-}
-
 /// POV-Ray's vector noise: the lattice noise of components 0, 4 and 8 places on.
 #[inline]
 pub fn vector(p: DVec3) -> DVec3 {
     #[cfg(target_arch = "x86_64")]
     if has_avx() {
         // SAFETY: AVX was detected.
-        return unsafe { vector_avx_fn(p) };
+        return unsafe { octaves_lanes::vector(p) };
     }
     DVec3::from_array(vector_lanes(&cell(p)))
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-fn vector_avx_fn(p: DVec3) -> DVec3 {
-    // SAFETY: this function only runs with AVX enabled.
-    DVec3::from_array(unsafe { vector_avx(&cell_avx(p)) })
 }
 
 /// `vector` at up to ten points (the wrinkles normal's octaves): every hash walk first, as in
@@ -652,7 +603,7 @@ pub fn vector_many<const N: usize>(ps: &[DVec3; N], out: &mut [DVec3; N]) {
     #[cfg(target_arch = "x86_64")]
     if has_avx() {
         // SAFETY: AVX was detected.
-        return unsafe { vector_many_avx(ps, out) };
+        return unsafe { octaves_lanes::vector_many(ps, out) };
     }
     vector_many_with(ps, out, cell, vector_lanes)
 }
@@ -673,16 +624,32 @@ fn vector_many_with<const N: usize>(
     }
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-fn vector_many_avx<const N: usize>(ps: &[DVec3; N], out: &mut [DVec3; N]) {
-    // SAFETY: this function only runs with AVX enabled.
-    vector_many_with(
-        ps,
-        out,
-        |p| unsafe { cell_avx(p) },
-        |c| unsafe { vector_avx(c) },
-    )
+/// The wrinkles normal's tilt: Σ |`vector`(p·2ᵏ)| / 2ᵏ for k = 0..10, summed in that order,
+/// the ten lattice walks first.
+#[inline]
+pub fn abs_octaves(p: DVec3) -> DVec3 {
+    #[cfg(target_arch = "x86_64")]
+    if has_avx() {
+        // SAFETY: AVX was detected.
+        return unsafe { octaves_lanes::abs_octaves(p) };
+    }
+    abs_octaves_plain(p)
+}
+
+fn abs_octaves_plain(p: DVec3) -> DVec3 {
+    let mut scales = [1.0; 10];
+    let mut ps = [p; 10];
+    for k in 1..10 {
+        scales[k] = scales[k - 1] * 2.0;
+        ps[k] = p * scales[k];
+    }
+    let mut ds = [DVec3::ZERO; 10];
+    vector_many_with(&ps, &mut ds, cell, vector_lanes);
+    let mut sum = DVec3::ZERO;
+    for k in 0..10 {
+        sum += ds[k].abs() / scales[k];
+    }
+    sum
 }
 
 /// Octaves of vector noise, each `lambda` times finer and `omega` times weaker than the one
@@ -773,7 +740,8 @@ fn octaves_plain(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
     octaves_with(p, octaves, omega, lambda, cell, vector_lanes)
 }
 
-// The AVX form of `octaves_with` and `octaves4_with`, with cells laid out for the lanes.
+// The AVX forms of `octaves_with`, `octaves4_with`, `vector`, `vector_many` and
+// `abs_octaves_plain`, with cells laid out for the lanes.
 #[cfg(target_arch = "x86_64")]
 #[path = "noise_octaves.rs"]
 mod octaves_lanes;

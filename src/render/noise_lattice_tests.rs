@@ -222,12 +222,102 @@ fn lane_octaves_are_the_octaves() {
     if !has_avx() {
         return;
     }
-    let same = |a: DVec3, b: DVec3| {
-        a.to_array()
-            .into_iter()
-            .zip(b.to_array())
-            .all(|(x, y)| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan()))
-    };
+    let vals = edge_values();
+    for (i, &a) in vals.iter().enumerate() {
+        let (b, c) = (
+            vals[(i * 7 + 3) % vals.len()],
+            vals[(i * 13 + 5) % vals.len()],
+        );
+        let p = DVec3::new(a, b, c);
+        for (oct, omega, lambda) in [(1, 0.5, 2.0), (3, 0.6, 2.7), (10, 0.5, 2.5), (0, 0.5, 2.0)] {
+            // SAFETY: AVX was detected above.
+            let got = unsafe { octaves_lanes::octaves(p, oct, omega, lambda) };
+            let want = octaves_with(p, oct, omega, lambda, cell, vector_lanes);
+            assert!(same(got, want), "{p:?} {oct}: {got:?} {want:?}");
+            let ps = [p, DVec3::new(b, c, a), DVec3::new(c, a, b), p * 0.37];
+            // SAFETY: as above.
+            let got4 = unsafe { octaves_lanes::octaves4(ps, oct, omega, lambda) };
+            let want4 = octaves4_with(ps, oct, omega, lambda, cell, vector_lanes);
+            for (g, w) in got4.into_iter().zip(want4) {
+                assert!(same(g, w), "{ps:?} {oct}: {g:?} {w:?}");
+            }
+        }
+    }
+}
+
+/// The AVX vector noise (bumps, dents) and its batches (wrinkles' ten octaves) are
+/// `vector_lanes(&cell(p))`, bit for bit (NaN for NaN), at the same values as the octaves.
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn lane_vectors_are_the_vectors() {
+    if !has_avx() {
+        return;
+    }
+    let vals = edge_values();
+    for (i, &a) in vals.iter().enumerate() {
+        let (b, c) = (
+            vals[(i * 7 + 3) % vals.len()],
+            vals[(i * 13 + 5) % vals.len()],
+        );
+        let p = DVec3::new(a, b, c);
+        let want = DVec3::from_array(vector_lanes(&cell(p)));
+        // SAFETY: AVX was detected above.
+        let got = unsafe { octaves_lanes::vector(p) };
+        assert!(same(got, want), "{p:?}: {got:?} {want:?}");
+        let ps: [DVec3; 10] = std::array::from_fn(|k| p * (1u32 << k) as f64);
+        let mut got10 = [DVec3::ZERO; 10];
+        // SAFETY: as above.
+        unsafe { octaves_lanes::vector_many(&ps, &mut got10) };
+        for (g, q) in got10.into_iter().zip(ps) {
+            let w = DVec3::from_array(vector_lanes(&cell(q)));
+            assert!(same(g, w), "{q:?}: {g:?} {w:?}");
+        }
+    }
+}
+
+/// The wrinkles normal's octaves: the AVX lanes' sum is the plain one, and the plain one is
+/// `vector` at each octave's point, |·| / 2ᵏ, summed (the normal's sum before it moved here).
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn abs_octaves_are_the_vectors_summed() {
+    if !has_avx() {
+        return;
+    }
+    let vals = edge_values();
+    for (i, &a) in vals.iter().enumerate() {
+        let (b, c) = (
+            vals[(i * 11 + 1) % vals.len()],
+            vals[(i * 5 + 9) % vals.len()],
+        );
+        let p = DVec3::new(a, b, c);
+        let mut want = DVec3::ZERO;
+        let mut scale = 1.0;
+        for k in 0..10 {
+            let q = if k == 0 { p } else { p * scale };
+            want += DVec3::from_array(vector_lanes(&cell(q))).abs() / scale;
+            scale *= 2.0;
+        }
+        let plain = abs_octaves_plain(p);
+        // SAFETY: AVX was detected above.
+        let got = unsafe { octaves_lanes::abs_octaves(p) };
+        assert!(
+            same(plain, want) && same(got, want),
+            "{p:?}: {got:?} {plain:?} {want:?}"
+        );
+    }
+}
+
+/// Bit-for-bit equality, any NaN equal to any NaN.
+fn same(a: DVec3, b: DVec3) -> bool {
+    a.to_array()
+        .into_iter()
+        .zip(b.to_array())
+        .all(|(x, y)| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan()))
+}
+
+/// Signed zeros, infinities, NaN, values past the i32 range, and random magnitudes from 2⁻¹⁰
+/// to 2²⁹ with their nearest integers and those integers' neighbours.
+fn edge_values() -> Vec<f64> {
     let mut vals = vec![
         0.0,
         -0.0,
@@ -249,24 +339,5 @@ fn lane_octaves_are_the_octaves() {
         let n = v.round();
         vals.extend([v, n, n.next_down(), n.next_up()]);
     }
-    for (i, &a) in vals.iter().enumerate() {
-        let (b, c) = (
-            vals[(i * 7 + 3) % vals.len()],
-            vals[(i * 13 + 5) % vals.len()],
-        );
-        let p = DVec3::new(a, b, c);
-        for (oct, omega, lambda) in [(1, 0.5, 2.0), (3, 0.6, 2.7), (10, 0.5, 2.5), (0, 0.5, 2.0)] {
-            // SAFETY: AVX was detected above.
-            let got = unsafe { octaves_lanes::octaves(p, oct, omega, lambda) };
-            let want = octaves_with(p, oct, omega, lambda, cell, vector_lanes);
-            assert!(same(got, want), "{p:?} {oct}: {got:?} {want:?}");
-            let ps = [p, DVec3::new(b, c, a), DVec3::new(c, a, b), p * 0.37];
-            // SAFETY: as above.
-            let got4 = unsafe { octaves_lanes::octaves4(ps, oct, omega, lambda) };
-            let want4 = octaves4_with(ps, oct, omega, lambda, cell, vector_lanes);
-            for (g, w) in got4.into_iter().zip(want4) {
-                assert!(same(g, w), "{ps:?} {oct}: {g:?} {w:?}");
-            }
-        }
-    }
+    vals
 }

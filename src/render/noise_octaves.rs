@@ -1,6 +1,6 @@
-//! The vector turbulence's octaves in AVX lanes (the displacement of every turbulent wood,
-//! granite and sky): `octaves_with(cell_avx, vector_avx)`'s values, bit for bit, with each
-//! octave's cell laid out as the lanes read it.
+//! The vector noise in AVX lanes: the turbulence's octaves (the displacement of every
+//! turbulent wood, granite and sky) and the bumps, dents and wrinkles normals' single points,
+//! `vector_lanes(&cell(p))`'s values bit for bit, with each cell laid out as the lanes read it.
 //!
 //! `Cell` keeps the s-curve weights as x·y products and two z weights, and the fractional
 //! position as three scalars; the arithmetic then made the eight corner weights and the six
@@ -28,7 +28,7 @@ struct LaneCell {
 }
 
 /// `LaneCell` from a `Cell` (points whose floors leave the i32 range, and NaN): the
-/// products and differences `vector_avx` forms from it.
+/// products and differences `vector_lanes` forms from it.
 fn from_cell(c: &Cell) -> LaneCell {
     let [tx, ty, tz] = c.t;
     LaneCell {
@@ -61,7 +61,7 @@ unsafe fn lane_cell(p: DVec3) -> LaneCell {
         );
         let o = _mm256_sub_pd(_mm256_set1_pd(1.0), s);
         // wx·wy in lanes as `cell_avx` forms them, then times each z weight (1 − sz, sz),
-        // broadcast from lane 2: `vector_avx`'s two lane-wise products.
+        // broadcast from lane 2: `vector_lanes`' wxy·wz products, four at a time.
         let xo = _mm256_unpacklo_pd(o, s);
         let wx = _mm256_permute2f128_pd::<0x00>(xo, xo);
         let wy = _mm256_permute2f128_pd::<0x20>(_mm256_unpackhi_pd(o, o), _mm256_unpackhi_pd(s, s));
@@ -81,7 +81,7 @@ unsafe fn lane_cell(p: DVec3) -> LaneCell {
     }
 }
 
-/// `vector_avx`'s sum over the eight corners (x, y, z in lanes 0-2), in corner order.
+/// `vector_lanes`' sum over the eight corners (x, y, z in lanes 0-2), in corner order.
 ///
 /// # Safety
 /// The CPU must have AVX.
@@ -118,6 +118,70 @@ unsafe fn lane_terms(c: &LaneCell) -> __m256d {
     }
 }
 
+/// The lanes' x, y and z.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[inline(always)]
+unsafe fn to_dvec3(v: __m256d) -> DVec3 {
+    let mut out = [0.0; 4];
+    // SAFETY: the caller guarantees AVX; `out` has the four lanes' room.
+    unsafe { _mm256_storeu_pd(out.as_mut_ptr(), v) };
+    DVec3::new(out[0], out[1], out[2])
+}
+
+/// `vector_lanes(&cell(p))`, the vector noise of a bumps or dents normal. Through `Cell`
+/// (`cell_avx`, then the AVX sum) the walk stored t, s and 1 − s as scalars and the sum
+/// rebuilt the weights and offsets from them; the lanes' cell keeps them as the sum reads them.
+#[target_feature(enable = "avx")]
+pub(super) fn vector(p: DVec3) -> DVec3 {
+    // SAFETY: this function only runs with AVX enabled.
+    unsafe { to_dvec3(lane_terms(&lane_cell(p))) }
+}
+
+/// `vector` at up to ten points (the wrinkles normal's octaves): every hash walk first.
+#[target_feature(enable = "avx")]
+pub(super) fn vector_many<const N: usize>(ps: &[DVec3; N], out: &mut [DVec3; N]) {
+    let mut cells = CellList::<LaneCell, N>::new();
+    for &p in ps {
+        // SAFETY: this function only runs with AVX enabled.
+        cells.push(unsafe { lane_cell(p) });
+    }
+    for (o, c) in out.iter_mut().zip(cells.as_slice()) {
+        // SAFETY: as above.
+        *o = unsafe { to_dvec3(lane_terms(c)) };
+    }
+}
+
+/// `noise_lattice::abs_octaves_plain(p)`, the wrinkles normal's ten octaves: the octaves'
+/// values stay in the lanes for the sum instead of going out as `DVec3`s and coming back.
+/// Each |value| is cleared of its sign as `f64::abs` does, and multiplied by 2⁻ᵏ where the
+/// plain sum divides by 2ᵏ: both round the same exact quotient, so the bits are the same.
+#[target_feature(enable = "avx")]
+pub(super) fn abs_octaves(p: DVec3) -> DVec3 {
+    let mut cells = CellList::<LaneCell, 10>::new();
+    // SAFETY: this function only runs with AVX enabled.
+    cells.push(unsafe { lane_cell(p) });
+    let mut scale = 1.0;
+    for _ in 1..10 {
+        scale *= 2.0;
+        // SAFETY: as above.
+        cells.push(unsafe { lane_cell(p * scale) });
+    }
+    // SAFETY: as above.
+    unsafe {
+        let sign = _mm256_set1_pd(-0.0);
+        let mut sum = _mm256_setzero_pd();
+        let mut inv = 1.0;
+        for c in cells.as_slice() {
+            let a = _mm256_andnot_pd(sign, lane_terms(c));
+            sum = _mm256_add_pd(sum, _mm256_mul_pd(a, _mm256_set1_pd(inv)));
+            inv *= 0.5;
+        }
+        to_dvec3(sum)
+    }
+}
+
 /// The octaves' weighted sum of `cells` (each octave's terms times 1, ω, ω², ...): `sum +=
 /// weight·terms` lane by lane, as `octaves_with` adds its three components.
 ///
@@ -133,13 +197,11 @@ unsafe fn weighted(cells: &[LaneCell], omega: f64) -> DVec3 {
             sum = _mm256_add_pd(sum, _mm256_mul_pd(_mm256_set1_pd(weight), lane_terms(c)));
             weight *= omega;
         }
-        let mut out = [0.0; 4];
-        _mm256_storeu_pd(out.as_mut_ptr(), sum);
-        DVec3::new(out[0], out[1], out[2])
+        to_dvec3(sum)
     }
 }
 
-/// `octaves_with(p, .., cell_avx, vector_avx)`: every octave's hash walk first, then the
+/// `octaves_with(p, .., cell, vector_lanes)`: every octave's hash walk first, then the
 /// arithmetic.
 #[target_feature(enable = "avx")]
 pub(super) fn octaves(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
@@ -155,7 +217,7 @@ pub(super) fn octaves(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 
     unsafe { weighted(cells.as_slice(), omega) }
 }
 
-/// `octaves4_with(ps, .., cell_avx, vector_avx)`: all four points' hash walks first.
+/// `octaves4_with(ps, .., cell, vector_lanes)`: all four points' hash walks first.
 #[target_feature(enable = "avx")]
 pub(super) fn octaves4(ps: [DVec3; 4], octaves: u32, omega: f64, lambda: f64) -> [DVec3; 4] {
     let n = octaves.clamp(1, 10) as usize;

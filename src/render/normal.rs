@@ -22,7 +22,7 @@ use crate::math::{DVec3, Transform};
 use crate::scene::desc::{ImageMap, Normal, NormalKind, Special, Texture, TextureEntries};
 use crate::scene::pattern::{Pattern, PatternKind};
 
-use super::{noise, pattern};
+use super::{noise, noise_lattice, pattern};
 
 /// Tilt per unit of value slope and of amount (measured: `gradient x 1` tilts by 2/15).
 const SLOPE_SCALE: f64 = 2.0 / 15.0;
@@ -197,20 +197,7 @@ fn dents(pat: &Pattern, lp: DVec3, ln: DVec3, amount: f64) -> DVec3 {
 /// povray's normals to one 16-bit step, probe `normal_noise`).
 fn wrinkles(pat: &Pattern, lp: DVec3, ln: DVec3, amount: f64) -> DVec3 {
     let q = pattern::warped(pat, lp);
-    // The ten octaves' lattice walks together; the sum in the same order.
-    let mut scales = [1.0; 10];
-    let mut qs = [q; 10];
-    for k in 1..10 {
-        scales[k] = scales[k - 1] * 2.0;
-        qs[k] = q * scales[k];
-    }
-    let mut ds = [DVec3::ZERO; 10];
-    noise::dnoise_many(&qs, &mut ds);
-    let mut sum = DVec3::ZERO;
-    for k in 0..10 {
-        sum += ds[k].abs() / scales[k];
-    }
-    ln + sum * amount
+    ln + noise_lattice::abs_octaves(q) * amount
 }
 
 /// Ripples and waves: each wave source tilts the normal along the direction from it by the
