@@ -29,13 +29,15 @@ pub(super) fn clamp_box(b: &Aabb) -> Aabb {
     }
 }
 
-/// `Aabb::union` for boxes with no NaN in them (the clamped boxes the heuristic bins): the
-/// ordinary min and max, which pass over NaN, take several instructions a component, and this
-/// union ran three times per primitive per tree level. Only the heuristic's areas come from
-/// these boxes, and a tie between 0 and -0 (the one case where the result may differ) gives
-/// the same area, so the tree is the same.
+/// `Aabb::union` for boxes with no NaN in them (the clamped boxes the heuristic bins; the grid
+/// builder's boxes, which its callers promise hold none): where no operand is NaN,
+/// `f64::min(x, y)` is `if y < x { y } else { x }` and `max` likewise (the first operand on a
+/// tie of zeros), without the NaN tests' several instructions a component; this union ran
+/// three times per primitive per tree level. Only the heuristic's areas come from the binned
+/// boxes, and a tie between 0 and -0 (the one case where the result may differ) gives the same
+/// area, so the tree is the same.
 #[inline(always)]
-fn union_no_nan(a: &Aabb, b: &Aabb) -> Aabb {
+pub(super) fn union_no_nan(a: &Aabb, b: &Aabb) -> Aabb {
     let lo = |x: f64, y: f64| if y < x { y } else { x };
     let hi = |x: f64, y: f64| if y > x { y } else { x };
     Aabb {

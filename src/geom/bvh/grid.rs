@@ -7,6 +7,7 @@
 
 use crate::math::{Aabb, DVec3};
 
+use super::build::union_no_nan;
 use super::slabs::Pair;
 use super::{Bvh, Node, Ref};
 
@@ -47,27 +48,6 @@ struct GridBuilder<F> {
     prims: Vec<u32>,
     /// Every box kept so far (leaves' and interior nodes') is finite.
     finite: bool,
-}
-
-/// `a.union(b)` for boxes holding no NaN, which `build_grid`'s callers promise: where no
-/// operand is NaN, `f64::min(x, y)` is `if y < x { y } else { x }` and `max` likewise (the
-/// first operand on a tie of zeros), without the NaN tests' instructions.
-#[inline(always)]
-fn union_no_nan(a: &Aabb, b: &Aabb) -> Aabb {
-    let lo = |x: f64, y: f64| if y < x { y } else { x };
-    let hi = |x: f64, y: f64| if y > x { y } else { x };
-    Aabb {
-        min: DVec3::new(
-            lo(a.min.x, b.min.x),
-            lo(a.min.y, b.min.y),
-            lo(a.min.z, b.min.z),
-        ),
-        max: DVec3::new(
-            hi(a.max.x, b.max.x),
-            hi(a.max.y, b.max.y),
-            hi(a.max.z, b.max.z),
-        ),
-    }
 }
 
 impl<F: FnMut(usize) -> Aabb> GridBuilder<F> {
