@@ -5,7 +5,7 @@
 //! from the builders' layout: that layout was a second 56-byte node per triangle (7 MB of
 //! fresh pages for objects/bezier's 131,072 triangles) written once and read once.
 
-use crate::math::{Aabb, DVec3};
+use crate::math::Aabb;
 
 use super::build::union_no_nan;
 use super::slabs::Pair;
@@ -172,6 +172,7 @@ impl Bvh {
 mod tests {
     use super::super::BinNode;
     use super::*;
+    use crate::math::DVec3;
 
     /// The builders' layout of the same tree, as the grid build made it before it wrote the
     /// walk's nodes itself; `Bvh::from_binary` turns it into the walk's.
