@@ -128,6 +128,51 @@ unsafe fn all_lanes(m: std::arch::x86_64::__m256d) -> bool {
     unsafe { _mm256_testc_pd(m, _mm256_castsi256_pd(_mm256_set1_epi64x(-1))) != 0 }
 }
 
+/// A cell's set-up in AVX lanes (x, y, z, unused), shared by `cell_avx` and the octaves'
+/// `lane_cell`: the floors `f`, the offsets `t = p − f`, the s-curves `s` and `o = 1 − s`,
+/// and the four wx·wy of `cell` in its order (wx in lanes (1 − sx, sx, 1 − sx, sx), wy in
+/// (1 − sy, 1 − sy, sy, sy), multiplied lane-wise). `None` where a floor is outside the i32
+/// range (or NaN): those points take `cell`, whose saturating conversion they need.
+#[cfg(target_arch = "x86_64")]
+pub(super) struct CellLanes {
+    pub f: std::arch::x86_64::__m256d,
+    pub t: std::arch::x86_64::__m256d,
+    pub s: std::arch::x86_64::__m256d,
+    pub o: std::arch::x86_64::__m256d,
+    pub wxy: std::arch::x86_64::__m256d,
+}
+
+/// `CellLanes` of the point `p`.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub(super) unsafe fn cell_lanes(p: DVec3) -> Option<CellLanes> {
+    use std::arch::x86_64::*;
+    // SAFETY: the caller guarantees AVX.
+    unsafe {
+        let v = _mm256_setr_pd(p.x, p.y, p.z, 0.0);
+        let f = _mm256_round_pd::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(v);
+        let abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), f);
+        let inside = _mm256_cmp_pd::<_CMP_LT_OQ>(abs, _mm256_set1_pd(2147483648.0));
+        if !all_lanes(inside) {
+            return None;
+        }
+        let t = _mm256_sub_pd(v, f);
+        let s = _mm256_mul_pd(
+            _mm256_mul_pd(t, t),
+            _mm256_sub_pd(_mm256_set1_pd(3.0), _mm256_mul_pd(_mm256_set1_pd(2.0), t)),
+        );
+        let o = _mm256_sub_pd(_mm256_set1_pd(1.0), s);
+        let xo = _mm256_unpacklo_pd(o, s);
+        let wx = _mm256_permute2f128_pd::<0x00>(xo, xo);
+        let wy = _mm256_permute2f128_pd::<0x20>(_mm256_unpackhi_pd(o, o), _mm256_unpackhi_pd(s, s));
+        let wxy = _mm256_mul_pd(wx, wy);
+        Some(CellLanes { f, t, s, o, wxy })
+    }
+}
+
 /// `cell` with the three coordinates in the lanes of one AVX register: one rounding, one
 /// conversion and one s-curve for the three axes instead of three scalar ones (each scalar
 /// `as i64` is a conversion plus its saturation and NaN checks). The same operations per
@@ -142,26 +187,18 @@ unsafe fn cell_avx(p: DVec3) -> Cell {
     use std::arch::x86_64::*;
     // SAFETY: the caller guarantees AVX.
     unsafe {
-        let v = _mm256_setr_pd(p.x, p.y, p.z, 0.0);
-        let f = _mm256_round_pd::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(v);
-        let abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), f);
-        let inside = _mm256_cmp_pd::<_CMP_LT_OQ>(abs, _mm256_set1_pd(2147483648.0));
-        if !all_lanes(inside) {
+        let Some(CellLanes {
+            f,
+            t,
+            s,
+            o,
+            wxy: wxy_lanes,
+        }) = cell_lanes(p)
+        else {
             return cell(p);
-        }
-        let t = _mm256_sub_pd(v, f);
-        let s = _mm256_mul_pd(
-            _mm256_mul_pd(t, t),
-            _mm256_sub_pd(_mm256_set1_pd(3.0), _mm256_mul_pd(_mm256_set1_pd(2.0), t)),
-        );
-        let o = _mm256_sub_pd(_mm256_set1_pd(1.0), s);
-        // wx in lanes (1 - sx, sx, 1 - sx, sx), wy in (1 - sy, 1 - sy, sy, sy): their
-        // lane-wise product is the four wx·wy of `cell` in its order.
-        let xo = _mm256_unpacklo_pd(o, s);
-        let wx = _mm256_permute2f128_pd::<0x00>(xo, xo);
-        let wy = _mm256_permute2f128_pd::<0x20>(_mm256_unpackhi_pd(o, o), _mm256_unpackhi_pd(s, s));
+        };
         let mut wxy = [0.0; 4];
-        _mm256_storeu_pd(wxy.as_mut_ptr(), _mm256_mul_pd(wx, wy));
+        _mm256_storeu_pd(wxy.as_mut_ptr(), wxy_lanes);
         let (mut ta, mut sa, mut oa) = ([0.0; 4], [0.0; 4], [0.0; 4]);
         _mm256_storeu_pd(ta.as_mut_ptr(), t);
         _mm256_storeu_pd(sa.as_mut_ptr(), s);
@@ -370,6 +407,24 @@ fn scalar_into_avx(ps: &[DVec3], out: &mut [f64]) {
     }
 }
 
+/// Four rows of `ROWS` (four corners' or four points' (value, x, y, z) entries, each an AVX
+/// register) transposed, so that each of the four results holds one field of all four: a
+/// macro, not a function, so the shuffles stay in the AVX callers' registers.
+#[cfg(target_arch = "x86_64")]
+macro_rules! transposed {
+    ($r0:expr, $r1:expr, $r2:expr, $r3:expr) => {{
+        let (r0, r1, r2, r3) = ($r0, $r1, $r2, $r3);
+        let (t0, t1) = (_mm256_unpacklo_pd(r0, r1), _mm256_unpackhi_pd(r0, r1));
+        let (t2, t3) = (_mm256_unpacklo_pd(r2, r3), _mm256_unpackhi_pd(r2, r3));
+        [
+            _mm256_permute2f128_pd(t0, t2, 0x20),
+            _mm256_permute2f128_pd(t1, t3, 0x20),
+            _mm256_permute2f128_pd(t0, t2, 0x31),
+            _mm256_permute2f128_pd(t1, t3, 0x31),
+        ]
+    }};
+}
+
 /// `scalar`'s arithmetic for two to four points at once (octaves of one sum), lane l for
 /// point l: each lane computes every corner's term as the scalar code does and adds them in
 /// corner order, so the eight-term sum is vertical instead of a horizontal chain per point.
@@ -416,13 +471,7 @@ unsafe fn scalar_avx4(cells: &[Corners], out: &mut [f64]) {
             ($k:literal) => {{
                 let row =
                     |l: usize| _mm256_load_pd(ROWS[lane(l).entry[$k] as usize & 255].0.as_ptr());
-                let (r0, r1, r2, r3) = (row(0), row(1), row(2), row(3));
-                let (t0, t1) = (_mm256_unpacklo_pd(r0, r1), _mm256_unpackhi_pd(r0, r1));
-                let (t2, t3) = (_mm256_unpacklo_pd(r2, r3), _mm256_unpackhi_pd(r2, r3));
-                let e0 = _mm256_permute2f128_pd(t0, t2, 0x20);
-                let e1 = _mm256_permute2f128_pd(t1, t3, 0x20);
-                let e2 = _mm256_permute2f128_pd(t0, t2, 0x31);
-                let e3 = _mm256_permute2f128_pd(t1, t3, 0x31);
+                let [e0, e1, e2, e3] = transposed!(row(0), row(1), row(2), row(3));
                 let mut t = _mm256_add_pd(e0, _mm256_mul_pd(e1, dx[$k & 1]));
                 t = _mm256_add_pd(t, _mm256_mul_pd(e2, dy[($k >> 1) & 1]));
                 t = _mm256_add_pd(t, _mm256_mul_pd(e3, dz[$k >> 2]));
@@ -546,13 +595,7 @@ unsafe fn scalar_avx(c: &Cell) -> f64 {
         let mut out = 0.0;
         for (z, entry) in c.entry.chunks_exact(4).enumerate() {
             let row = |k: usize| _mm256_load_pd(ROWS[entry[k] as usize & 255].0.as_ptr());
-            let (r0, r1, r2, r3) = (row(0), row(1), row(2), row(3));
-            let (t0, t1) = (_mm256_unpacklo_pd(r0, r1), _mm256_unpackhi_pd(r0, r1));
-            let (t2, t3) = (_mm256_unpacklo_pd(r2, r3), _mm256_unpackhi_pd(r2, r3));
-            let e0 = _mm256_permute2f128_pd(t0, t2, 0x20);
-            let e1 = _mm256_permute2f128_pd(t1, t3, 0x20);
-            let e2 = _mm256_permute2f128_pd(t0, t2, 0x31);
-            let e3 = _mm256_permute2f128_pd(t1, t3, 0x31);
+            let [e0, e1, e2, e3] = transposed!(row(0), row(1), row(2), row(3));
             let dz = _mm256_set1_pd(tz - z as f64);
             let mut t = _mm256_add_pd(e0, _mm256_mul_pd(e1, dx));
             t = _mm256_add_pd(t, _mm256_mul_pd(e2, dy));

@@ -14,7 +14,7 @@ use std::arch::x86_64::*;
 
 use crate::math::DVec3;
 
-use super::{all_lanes, cell, entries_avx, Cell, CellList, MAX_POINTS, PACKED};
+use super::{cell, cell_lanes, entries_avx, Cell, CellLanes, CellList, MAX_POINTS, PACKED};
 
 /// One octave's cell for the lanes: the fractional position's lanes (x, y, z, 0) and the
 /// same minus one (each corner's offsets), the eight corners' weights in corner order
@@ -47,25 +47,11 @@ unsafe fn lane_cell(p: DVec3) -> LaneCell {
     // SAFETY: the caller guarantees AVX; the stores go to 32-byte aligned fields of a
     // `repr(C, align(32))` struct at offsets 0, 32, 64 and 96.
     unsafe {
-        let v = _mm256_setr_pd(p.x, p.y, p.z, 0.0);
-        let f = _mm256_round_pd::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(v);
-        let abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), f);
-        let inside = _mm256_cmp_pd::<_CMP_LT_OQ>(abs, _mm256_set1_pd(2147483648.0));
-        if !all_lanes(inside) {
+        let Some(CellLanes { f, t, s, o, wxy }) = cell_lanes(p) else {
             return from_cell(&cell(p));
-        }
-        let t = _mm256_sub_pd(v, f);
-        let s = _mm256_mul_pd(
-            _mm256_mul_pd(t, t),
-            _mm256_sub_pd(_mm256_set1_pd(3.0), _mm256_mul_pd(_mm256_set1_pd(2.0), t)),
-        );
-        let o = _mm256_sub_pd(_mm256_set1_pd(1.0), s);
-        // wx·wy in lanes as `cell_avx` forms them, then times each z weight (1 − sz, sz),
-        // broadcast from lane 2: `vector_lanes`' wxy·wz products, four at a time.
-        let xo = _mm256_unpacklo_pd(o, s);
-        let wx = _mm256_permute2f128_pd::<0x00>(xo, xo);
-        let wy = _mm256_permute2f128_pd::<0x20>(_mm256_unpackhi_pd(o, o), _mm256_unpackhi_pd(s, s));
-        let wxy = _mm256_mul_pd(wx, wy);
+        };
+        // Each z weight (1 − sz, sz) broadcast from lane 2, to multiply wx·wy by:
+        // `vector_lanes`' wxy·wz products, four at a time.
         let oz = _mm256_permute_pd::<0>(_mm256_permute2f128_pd::<0x11>(o, o));
         let sz = _mm256_permute_pd::<0>(_mm256_permute2f128_pd::<0x11>(s, s));
         let mut c = LaneCell {
