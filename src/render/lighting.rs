@@ -4,6 +4,8 @@
 
 use crate::color::Rgbft;
 use crate::math::{DVec3, Ray};
+use crate::scene::desc::Finish;
+use crate::scene::light::{Cone, Incidence};
 use crate::scene::object::Object;
 
 use super::trace::{grain, point_seed, LitBy, TraceCtx, Tracer};
@@ -31,8 +33,26 @@ impl<'a> Tracer<'a> {
             if groups && !set.sees(light.group) {
                 continue;
             }
-            let Some(inc) = light.incidence(p) else {
-                continue;
+            let inc = if matches!(light.cone, Cone::Point) && light.parallel.is_none() {
+                // `Light::incidence` of a point light (most lights) written out: its beam is
+                // 1 everywhere, so the out-of-line `beam_from` call and its spills go. The
+                // same operations in the same order.
+                let to_light = light.position - p;
+                let dist = to_light.length();
+                if dist <= 0.0 {
+                    continue;
+                }
+                Incidence {
+                    l: to_light / dist,
+                    shadow_dist: Some(dist),
+                    dist,
+                    beam: 1.0,
+                }
+            } else {
+                let Some(inc) = light.incidence(p) else {
+                    continue;
+                };
+                inc
             };
             let l = inc.l;
             let spread = light.area.as_ref().is_some_and(|a| a.illumination);
@@ -107,7 +127,7 @@ impl<'a> Tracer<'a> {
     pub(super) fn layer_light(
         &self,
         c: &Rgbft,
-        fin: &crate::scene::desc::Finish,
+        fin: &Finish,
         p: DVec3,
         dir: DVec3,
         nf: DVec3,
@@ -137,64 +157,111 @@ impl<'a> Tracer<'a> {
             0.0
         };
         let metallic = fin.metallic != 0.0 && (phong || specular);
-        let cos_view = -dir.dot(nf);
-        for lb in &ctx.lit {
-            let (lc, l) = (lb.color, lb.l);
-            // Iridescence scales the light's diffuse and highlight terms alike (measured).
-            let lc_irid = match &fin.irid {
-                Some(irid) => lc * super::irid::factor(irid, p, nf.dot(l), cos_view),
-                None => lc,
-            };
-            if diffuse {
-                // The same as lb.cos_n unless the normal was perturbed; a light behind a
-                // double-illuminated surface lights it as if from the front.
-                let cos_n = if lb.back { -nf.dot(l) } else { nf.dot(l) };
-                if cos_n > 0.0 {
-                    let d = if fin.brilliance == 1.0 {
-                        cos_n
-                    } else {
-                        cos_n.powf(fin.brilliance)
-                    };
-                    // crand darkens each light's diffuse term by its own random share
-                    // (measured with povray: independent per light, uniform, ambient untouched).
-                    // The share's hash is made here, for the few finishes with crand, not
-                    // for every light of every hit as it once was (`gather_lights` shades the
-                    // same point `p`, so the same seed).
-                    let k = if fin.crand != 0.0 {
-                        let g = grain(point_seed(p), lb.slot);
-                        fin.diffuse * d * opacity * (1.0 - fin.crand * g)
-                    } else {
-                        fin.diffuse * d * opacity
-                    };
-                    col += lc_irid * c.rgb * k;
-                }
-            }
-            // POV-Ray 3.7 gives shadowless lights no highlights (tests/probes/shadowless_*),
-            // nor lights behind a double-illuminated surface (tests/probes/double_illuminate).
-            if lb.shadowless || lb.back || !(phong || specular) {
-                continue;
-            }
-            // Highlights take the surface colour in proportion to `metallic`, less so as the
-            // light grazes the surface (measured: render::metallic).
-            let lc_tint = if metallic {
-                lc_irid * super::metallic::tint(c.rgb, fin.metallic, nf.dot(l))
-            } else {
-                lc_irid
-            };
-            if phong {
-                let cos_r = mirror.dot(l);
-                if cos_r > 0.0 {
-                    col += lc_tint * (fin.phong * cos_r.powf(fin.phong_size));
-                }
-            }
-            if specular {
-                let hv = (l - dir).normalize_or_zero();
-                let cos_h = nf.dot(hv);
-                if cos_h > 0.0 {
-                    col += lc_tint * (fin.specular * cos_h.powf(specular_exp));
-                }
-            }
+        // Most finishes have neither irid nor crand nor a metallic highlight and a brilliance
+        // of 1: their loop is compiled without those branches (and without the crand hash's
+        // point seed, which the compiler hoisted out of the loop for every light-lit layer).
+        let plain = fin.irid.is_none() && fin.crand == 0.0 && !metallic && fin.brilliance == 1.0;
+        let f = Factors {
+            c,
+            fin,
+            p,
+            dir,
+            nf,
+            mirror,
+            opacity,
+            diffuse,
+            phong,
+            specular,
+            specular_exp,
+            metallic,
+        };
+        if plain {
+            lights_add::<true>(&f, &ctx.lit, &mut col);
+        } else {
+            lights_add::<false>(&f, &ctx.lit, &mut col);
         }
         col
+    }
+}
+
+/// A layer's per-light constants, for `lights_add`.
+struct Factors<'f> {
+    c: &'f Rgbft,
+    fin: &'f Finish,
+    p: DVec3,
+    dir: DVec3,
+    nf: DVec3,
+    mirror: DVec3,
+    opacity: f64,
+    diffuse: bool,
+    phong: bool,
+    specular: bool,
+    specular_exp: f64,
+    metallic: bool,
+}
+
+/// Each gathered light's diffuse and highlight terms of one layer, added to `col`. `PLAIN`:
+/// the finish has no irid, no crand, no metallic highlight and brilliance 1 (the caller
+/// checked), so those branches are compiled out; the arithmetic is the same either way.
+#[inline(always)]
+fn lights_add<const PLAIN: bool>(f: &Factors, lit: &[LitBy], col: &mut DVec3) {
+    let (fin, c, p, dir, nf) = (f.fin, f.c, f.p, f.dir, f.nf);
+    let cos_view = -dir.dot(nf);
+    for lb in lit {
+        let (lc, l) = (lb.color, lb.l);
+        // Iridescence scales the light's diffuse and highlight terms alike (measured).
+        let lc_irid = match &fin.irid {
+            Some(irid) if !PLAIN => lc * super::irid::factor(irid, p, nf.dot(l), cos_view),
+            _ => lc,
+        };
+        if f.diffuse {
+            // The same as lb.cos_n unless the normal was perturbed; a light behind a
+            // double-illuminated surface lights it as if from the front.
+            let cos_n = if lb.back { -nf.dot(l) } else { nf.dot(l) };
+            if cos_n > 0.0 {
+                let d = if PLAIN || fin.brilliance == 1.0 {
+                    cos_n
+                } else {
+                    cos_n.powf(fin.brilliance)
+                };
+                // crand darkens each light's diffuse term by its own random share
+                // (measured with povray: independent per light, uniform, ambient untouched).
+                // The share's hash is made here, for the few finishes with crand, not
+                // for every light of every hit as it once was (`gather_lights` shades the
+                // same point `p`, so the same seed).
+                let k = if !PLAIN && fin.crand != 0.0 {
+                    let g = grain(point_seed(p), lb.slot);
+                    fin.diffuse * d * f.opacity * (1.0 - fin.crand * g)
+                } else {
+                    fin.diffuse * d * f.opacity
+                };
+                *col += lc_irid * c.rgb * k;
+            }
+        }
+        // POV-Ray 3.7 gives shadowless lights no highlights (tests/probes/shadowless_*),
+        // nor lights behind a double-illuminated surface (tests/probes/double_illuminate).
+        if lb.shadowless || lb.back || !(f.phong || f.specular) {
+            continue;
+        }
+        // Highlights take the surface colour in proportion to `metallic`, less so as the
+        // light grazes the surface (measured: render::metallic).
+        let lc_tint = if !PLAIN && f.metallic {
+            lc_irid * super::metallic::tint(c.rgb, fin.metallic, nf.dot(l))
+        } else {
+            lc_irid
+        };
+        if f.phong {
+            let cos_r = f.mirror.dot(l);
+            if cos_r > 0.0 {
+                *col += lc_tint * (fin.phong * cos_r.powf(fin.phong_size));
+            }
+        }
+        if f.specular {
+            let hv = (l - dir).normalize_or_zero();
+            let cos_h = nf.dot(hv);
+            if cos_h > 0.0 {
+                *col += lc_tint * (fin.specular * cos_h.powf(f.specular_exp));
+            }
+        }
     }
 }
