@@ -145,6 +145,18 @@ fn unit_sky(dir: DVec3) -> DVec3 {
     dir.normalize_or_zero()
 }
 
+/// Whether the crossing `h` is invisible to the ray (`first_visible`'s rules).
+#[inline(always)]
+fn hidden(h: &SurfaceHit, straight: bool, gather: bool) -> bool {
+    if gather {
+        h.obj.no_radiosity
+    } else if straight {
+        h.obj.no_image
+    } else {
+        h.obj.no_reflection
+    }
+}
+
 /// One sky_sphere layer's colour for a ray going `dir`; `d`, the sky direction, is worked out
 /// at most once per ray and only for a layer that is not a plain colour.
 #[inline(always)]
@@ -309,8 +321,8 @@ impl<'a> Tracer<'a> {
             in_solid: Some(solid),
             ..path
         };
-        let mut seen = match hit {
-            Some(h) => self.shade_blended(ray, &h, path, ctx),
+        let mut seen = match &hit {
+            Some(h) => self.shade_blended(ray, h, path, ctx),
             None => self.background(ray.dir, path.straight),
         };
         if t.is_finite() && !solid && media {
@@ -373,18 +385,29 @@ impl<'a> Tracer<'a> {
         gather: bool,
         ctx: &mut TraceCtx<'a>,
     ) -> Option<SurfaceHit<'a>> {
-        let mut h = self.scene.first_hit(ray, f64::INFINITY, ctx)?;
+        let h = self.scene.first_hit(ray, f64::INFINITY, ctx)?;
+        // Nearly every first crossing is visible: the loop past hidden objects (and its
+        // set-up, hoisted before this test when it was one loop) is out of line.
+        if !hidden(&h, straight, gather) {
+            return Some(h);
+        }
+        self.visible_past(ray, h, straight, gather, ctx)
+    }
+
+    /// `first_visible` past a first crossing `h` that is hidden.
+    #[inline(never)]
+    fn visible_past(
+        &self,
+        ray: &Ray,
+        mut h: SurfaceHit<'a>,
+        straight: bool,
+        gather: bool,
+        ctx: &mut TraceCtx<'a>,
+    ) -> Option<SurfaceHit<'a>> {
         let mut offset = 0.0;
         // Bounded so that a ray grazing along a hidden surface cannot loop for ever.
         for _ in 0..256 {
-            let hidden = if gather {
-                h.obj.no_radiosity
-            } else if straight {
-                h.obj.no_image
-            } else {
-                h.obj.no_reflection
-            };
-            if !hidden {
+            if !hidden(&h, straight, gather) {
                 h.t += offset;
                 return Some(h);
             }
