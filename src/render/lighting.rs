@@ -5,7 +5,7 @@
 use crate::color::Rgbft;
 use crate::math::{DVec3, Ray};
 use crate::scene::desc::Finish;
-use crate::scene::light::{Cone, Incidence};
+use crate::scene::light::{Cone, Incidence, Light};
 use crate::scene::object::Object;
 
 use super::trace::{grain, point_seed, LitBy, TraceCtx, Tracer};
@@ -35,26 +35,8 @@ impl<'a> Tracer<'a> {
             if groups && !set.sees(light.group) {
                 continue;
             }
-            let inc = if matches!(light.cone, Cone::Point) && light.parallel.is_none() {
-                // `Light::incidence` of a point light (most lights) written out: its beam is
-                // 1 everywhere, so the out-of-line `beam_from` call and its spills go. The
-                // same operations in the same order.
-                let to_light = light.position - p;
-                let dist = to_light.length();
-                if dist <= 0.0 {
-                    continue;
-                }
-                Incidence {
-                    l: to_light / dist,
-                    shadow_dist: Some(dist),
-                    dist,
-                    beam: 1.0,
-                }
-            } else {
-                let Some(inc) = light.incidence(p) else {
-                    continue;
-                };
-                inc
+            let Some(inc) = incidence(light, p) else {
+                continue;
             };
             let l = inc.l;
             let spread = light.area.as_ref().is_some_and(|a| a.illumination);
@@ -188,6 +170,27 @@ impl<'a> Tracer<'a> {
     }
 }
 
+/// `Light::incidence`, with a point light's (most lights') written out: its beam is 1
+/// everywhere, so the out-of-line `beam_from` call and the spills around it go. The same
+/// operations in the same order (unit test `point_lights_incidence_is_lights_own`).
+#[inline(always)]
+fn incidence(light: &Light, p: DVec3) -> Option<Incidence> {
+    if !matches!(light.cone, Cone::Point) || light.parallel.is_some() {
+        return light.incidence(p);
+    }
+    let to_light = light.position - p;
+    let dist = to_light.length();
+    if dist <= 0.0 {
+        return None;
+    }
+    Some(Incidence {
+        l: to_light / dist,
+        shadow_dist: Some(dist),
+        dist,
+        beam: 1.0,
+    })
+}
+
 /// A layer's per-light constants, for `lights_add`.
 struct Factors<'f> {
     c: &'f Rgbft,
@@ -266,6 +269,109 @@ fn lights_add<const PLAIN: bool>(f: &Factors, lit: &[LitBy], col: &mut DVec3) {
             if cos_h > 0.0 {
                 *col += lc_tint * (fin.specular * cos_h.powf(f.specular_exp));
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::Transform;
+    use crate::scene::desc::LightDesc;
+
+    /// A small deterministic generator, so the tests need no crate and never change.
+    struct Lcg(u64);
+    impl Lcg {
+        fn next(&mut self) -> f64 {
+            self.0 = self
+                .0
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+        fn vec(&mut self, r: f64) -> DVec3 {
+            DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * (2.0 * r)
+        }
+    }
+
+    fn bits(v: DVec3) -> [u64; 3] {
+        v.to_array().map(f64::to_bits)
+    }
+
+    #[test]
+    fn point_lights_incidence_is_lights_own() {
+        let mut rng = Lcg(7);
+        for case in 0..20_000 {
+            let scale = [1e-3, 1.0, 1e4][case % 3];
+            let light = Light::new(&LightDesc::at(rng.vec(scale)), &Transform::IDENTITY);
+            // Every seventh point is the light's own place (no incidence).
+            let p = if case % 7 == 0 {
+                light.position
+            } else {
+                rng.vec(scale)
+            };
+            match (incidence(&light, p), light.incidence(p)) {
+                (None, None) => {}
+                (Some(a), Some(b)) => {
+                    assert_eq!(bits(a.l), bits(b.l));
+                    assert_eq!(a.dist.to_bits(), b.dist.to_bits());
+                    assert_eq!(a.beam.to_bits(), b.beam.to_bits());
+                    assert_eq!(
+                        a.shadow_dist.map(f64::to_bits),
+                        b.shadow_dist.map(f64::to_bits)
+                    );
+                }
+                (a, b) => panic!("case {case}: {a:?} against {b:?}"),
+            }
+        }
+    }
+
+    #[test]
+    fn the_plain_loop_is_the_general_loop() {
+        let mut rng = Lcg(11);
+        for case in 0..5_000 {
+            let fin = Finish {
+                diffuse: [0.0, 0.6, rng.next()][case % 3],
+                phong: [0.0, rng.next()][case % 2],
+                phong_size: 1.0 + 80.0 * rng.next(),
+                specular: [0.0, rng.next()][(case / 2) % 2],
+                roughness: 0.001 + rng.next() * 0.1,
+                ..Finish::default()
+            };
+            let c = Rgbft::new(rng.next(), rng.next(), rng.next(), rng.next() * 0.3, 0.0);
+            let nf = rng.vec(1.0).normalize();
+            let dir = rng.vec(1.0).normalize();
+            let lit: Vec<LitBy> = (0..case % 4)
+                .map(|i| {
+                    let l = rng.vec(1.0).normalize();
+                    LitBy {
+                        color: rng.vec(1.0).abs(),
+                        l,
+                        cos_n: nf.dot(l),
+                        shadowless: i == 2,
+                        back: i == 3 && case % 5 == 0,
+                        slot: i as u32,
+                    }
+                })
+                .collect();
+            let f = Factors {
+                c: &c,
+                fin: &fin,
+                p: rng.vec(10.0),
+                dir,
+                nf,
+                mirror: dir - nf * (2.0 * dir.dot(nf)),
+                opacity: c.opacity(),
+                diffuse: fin.diffuse > 0.0,
+                phong: fin.phong > 0.0,
+                specular: fin.specular > 0.0,
+                specular_exp: 1.0 / fin.roughness,
+                metallic: false,
+            };
+            let (mut plain, mut general) = (DVec3::splat(0.1), DVec3::splat(0.1));
+            lights_add::<true>(&f, &lit, &mut plain);
+            lights_add::<false>(&f, &lit, &mut general);
+            assert_eq!(bits(plain), bits(general), "case {case}");
         }
     }
 }

@@ -322,6 +322,9 @@ impl<'a> Tracer<'a> {
             ..path
         };
         let mut seen = match &hit {
+            // Blobs with textured components aside, straight to `shade` (not through
+            // `shade_blended`'s frame).
+            Some(h) if h.obj.blob.is_none() => self.shade(ray, h, path, ctx),
             Some(h) => self.shade_blended(ray, h, path, ctx),
             None => self.background(ray.dir, path.straight),
         };
@@ -527,23 +530,10 @@ impl<'a> Tracer<'a> {
                 clear: 0.0,
             };
         }
-        // Per hit, not per light or layer.
+        // Per hit, not per layer or light. Gathered into one `HitView` before the lights, so
+        // that each value has one home on the stack across the shadow rays' calls, not a
+        // spill slot and a copy in the view.
         let mirror = reflect(dir, nf);
-        // A perturbed normal may face lights the surface itself turns away from; POV-Ray
-        // lights them (measured: a light just behind a plane whose normal leans towards it):
-        // `bumpy`, whether any part of the texture perturbs the normal.
-        if self.rad.is_some_and(|r| r.probe) && path.rad_level == 0 {
-            // A radiosity pretrace pass keeps the samples its camera rays gather, not their
-            // colour: the lights of what they meet do not matter.
-            ctx.lit.clear();
-        } else if !lit {
-            // No layer would add anything per light (a sky dome's `diffuse 0`): no shadow
-            // rays. Nothing but `layer_light` reads the gathered lights, this hit's layers
-            // only (`irradiance` keeps them from the gathering rays' hits).
-            ctx.lit.clear();
-        } else {
-            self.gather_lights(p, nf, bumpy, obj, path.rad_level > 0, ctx);
-        }
         let cos_i = (-dir.dot(nf)).clamp(0.0, 1.0);
         let ior = super::dispersion::ior(obj, path.wave);
         let (n1, n2) = if entering { (1.0, ior) } else { (ior, 1.0) };
@@ -560,6 +550,21 @@ impl<'a> Tracer<'a> {
             uv,
             path,
         };
+        // A perturbed normal may face lights the surface itself turns away from; POV-Ray
+        // lights them (measured: a light just behind a plane whose normal leans towards it):
+        // `bumpy`, whether any part of the texture perturbs the normal.
+        if self.rad.is_some_and(|r| r.probe) && path.rad_level == 0 {
+            // A radiosity pretrace pass keeps the samples its camera rays gather, not their
+            // colour: the lights of what they meet do not matter.
+            ctx.lit.clear();
+        } else if !lit {
+            // No layer would add anything per light (a sky dome's `diffuse 0`): no shadow
+            // rays. Nothing but `layer_light` reads the gathered lights, this hit's layers
+            // only (`irradiance` keeps them from the gathering rays' hits).
+            ctx.lit.clear();
+        } else {
+            self.gather_lights(hv.p, hv.nf, bumpy, obj, path.rad_level > 0, ctx);
+        }
         let mut sum = LayerSum::new();
         self.shade_layers(top, &hv, &mut sum, ctx);
         let LayerSum {
