@@ -4,6 +4,8 @@
 
 use crate::color::Rgbft;
 use crate::math::{DVec3, Ray};
+use crate::scene::desc::Finish;
+use crate::scene::light::{Cone, Incidence, Light};
 use crate::scene::object::Object;
 
 use super::trace::{grain, point_seed, LitBy, TraceCtx, Tracer};
@@ -25,13 +27,15 @@ impl<'a> Tracer<'a> {
         let groups = self.scene.light_sets.len() > 1;
         let set = &self.scene.light_sets[obj.light_set as usize];
         let q = self.quality;
-        let mut lit = std::mem::take(&mut ctx.lit);
-        lit.clear();
+        // Pushed to in place: nothing the shadow rays do reads `ctx.lit` (taking the Vec out
+        // and putting it back cost ~26 instructions a hit); only the area lights' closure,
+        // which borrows `ctx` itself, takes it out.
+        ctx.lit.clear();
         for (slot, light) in self.scene.lights.iter().enumerate() {
             if groups && !set.sees(light.group) {
                 continue;
             }
-            let Some(inc) = light.incidence(p) else {
+            let Some(inc) = incidence(light, p) else {
                 continue;
             };
             let l = inc.l;
@@ -41,6 +45,7 @@ impl<'a> Tracer<'a> {
                     // `area_illumination`: every point of the array lights the surface from
                     // its own direction, with its share of the light, even where the
                     // array's centre is below the surface's horizon.
+                    let mut lit = std::mem::take(&mut ctx.lit);
                     self.area_each(p, (slot, light), l, dist, ctx, |dir, d, seen| {
                         let lc = light.color * (light.fade(d) * inc.beam);
                         let cos_n = nf.dot(dir);
@@ -56,6 +61,7 @@ impl<'a> Tracer<'a> {
                             });
                         }
                     });
+                    ctx.lit = lit;
                     continue;
                 }
             }
@@ -83,7 +89,7 @@ impl<'a> Tracer<'a> {
                     }
                 }
             }
-            lit.push(LitBy {
+            ctx.lit.push(LitBy {
                 color: lc,
                 l,
                 cos_n,
@@ -94,20 +100,20 @@ impl<'a> Tracer<'a> {
         }
         if let Some(map) = self.photons {
             if let Some(c) = map.caustic(p, nf, obj, &mut ctx.photon_found) {
-                lit.push(c);
+                ctx.lit.push(c);
             }
         }
-        ctx.lit = lit;
     }
 
     /// One texture layer's own light: ambient and diffuse weighted by its opacity,
     /// highlights not. With radiosity, `indirect` (the irradiance there) replaces ambient:
     /// POV-Ray 3.7 ignores `ambient` then (measured: docs/povray-behaviour.md).
     #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
     pub(super) fn layer_light(
         &self,
         c: &Rgbft,
-        fin: &crate::scene::desc::Finish,
+        fin: &Finish,
         p: DVec3,
         dir: DVec3,
         nf: DVec3,
@@ -137,64 +143,235 @@ impl<'a> Tracer<'a> {
             0.0
         };
         let metallic = fin.metallic != 0.0 && (phong || specular);
-        let cos_view = -dir.dot(nf);
-        for lb in &ctx.lit {
-            let (lc, l) = (lb.color, lb.l);
-            // Iridescence scales the light's diffuse and highlight terms alike (measured).
-            let lc_irid = match &fin.irid {
-                Some(irid) => lc * super::irid::factor(irid, p, nf.dot(l), cos_view),
-                None => lc,
-            };
-            if diffuse {
-                // The same as lb.cos_n unless the normal was perturbed; a light behind a
-                // double-illuminated surface lights it as if from the front.
-                let cos_n = if lb.back { -nf.dot(l) } else { nf.dot(l) };
-                if cos_n > 0.0 {
-                    let d = if fin.brilliance == 1.0 {
-                        cos_n
-                    } else {
-                        cos_n.powf(fin.brilliance)
-                    };
-                    // crand darkens each light's diffuse term by its own random share
-                    // (measured with povray: independent per light, uniform, ambient untouched).
-                    // The share's hash is made here, for the few finishes with crand, not
-                    // for every light of every hit as it once was (`gather_lights` shades the
-                    // same point `p`, so the same seed).
-                    let k = if fin.crand != 0.0 {
-                        let g = grain(point_seed(p), lb.slot);
-                        fin.diffuse * d * opacity * (1.0 - fin.crand * g)
-                    } else {
-                        fin.diffuse * d * opacity
-                    };
-                    col += lc_irid * c.rgb * k;
-                }
-            }
-            // POV-Ray 3.7 gives shadowless lights no highlights (tests/probes/shadowless_*),
-            // nor lights behind a double-illuminated surface (tests/probes/double_illuminate).
-            if lb.shadowless || lb.back || !(phong || specular) {
-                continue;
-            }
-            // Highlights take the surface colour in proportion to `metallic`, less so as the
-            // light grazes the surface (measured: render::metallic).
-            let lc_tint = if metallic {
-                lc_irid * super::metallic::tint(c.rgb, fin.metallic, nf.dot(l))
-            } else {
-                lc_irid
-            };
-            if phong {
-                let cos_r = mirror.dot(l);
-                if cos_r > 0.0 {
-                    col += lc_tint * (fin.phong * cos_r.powf(fin.phong_size));
-                }
-            }
-            if specular {
-                let hv = (l - dir).normalize_or_zero();
-                let cos_h = nf.dot(hv);
-                if cos_h > 0.0 {
-                    col += lc_tint * (fin.specular * cos_h.powf(specular_exp));
-                }
-            }
+        // Most finishes have neither irid nor crand nor a metallic highlight and a brilliance
+        // of 1: their loop is compiled without those branches (and without the crand hash's
+        // point seed, which the compiler hoisted out of the loop for every light-lit layer).
+        let plain = fin.irid.is_none() && fin.crand == 0.0 && !metallic && fin.brilliance == 1.0;
+        let f = Factors {
+            c,
+            fin,
+            p,
+            dir,
+            nf,
+            mirror,
+            opacity,
+            diffuse,
+            phong,
+            specular,
+            specular_exp,
+            metallic,
+        };
+        if plain {
+            lights_add::<true>(&f, &ctx.lit, &mut col);
+        } else {
+            lights_add::<false>(&f, &ctx.lit, &mut col);
         }
         col
+    }
+}
+
+/// `Light::incidence`, with a point light's (most lights') written out: its beam is 1
+/// everywhere, so the out-of-line `beam_from` call and the spills around it go. The same
+/// operations in the same order (unit test `point_lights_incidence_is_lights_own`).
+#[inline(always)]
+fn incidence(light: &Light, p: DVec3) -> Option<Incidence> {
+    if !matches!(light.cone, Cone::Point) || light.parallel.is_some() {
+        return light.incidence(p);
+    }
+    let to_light = light.position - p;
+    let dist = to_light.length();
+    if dist <= 0.0 {
+        return None;
+    }
+    Some(Incidence {
+        l: to_light / dist,
+        shadow_dist: Some(dist),
+        dist,
+        beam: 1.0,
+    })
+}
+
+/// A layer's per-light constants, for `lights_add`.
+struct Factors<'f> {
+    c: &'f Rgbft,
+    fin: &'f Finish,
+    p: DVec3,
+    dir: DVec3,
+    nf: DVec3,
+    mirror: DVec3,
+    opacity: f64,
+    diffuse: bool,
+    phong: bool,
+    specular: bool,
+    specular_exp: f64,
+    metallic: bool,
+}
+
+/// Each gathered light's diffuse and highlight terms of one layer, added to `col`. `PLAIN`:
+/// the finish has no irid, no crand, no metallic highlight and brilliance 1 (the caller
+/// checked), so those branches are compiled out; the arithmetic is the same either way.
+#[inline(always)]
+fn lights_add<const PLAIN: bool>(f: &Factors, lit: &[LitBy], col: &mut DVec3) {
+    let (fin, c, p, dir, nf) = (f.fin, f.c, f.p, f.dir, f.nf);
+    let cos_view = -dir.dot(nf);
+    for lb in lit {
+        let (lc, l) = (lb.color, lb.l);
+        // Iridescence scales the light's diffuse and highlight terms alike (measured).
+        let lc_irid = match &fin.irid {
+            Some(irid) if !PLAIN => lc * super::irid::factor(irid, p, nf.dot(l), cos_view),
+            _ => lc,
+        };
+        if f.diffuse {
+            // The same as lb.cos_n unless the normal was perturbed; a light behind a
+            // double-illuminated surface lights it as if from the front.
+            let cos_n = if lb.back { -nf.dot(l) } else { nf.dot(l) };
+            if cos_n > 0.0 {
+                let d = if PLAIN || fin.brilliance == 1.0 {
+                    cos_n
+                } else {
+                    cos_n.powf(fin.brilliance)
+                };
+                // crand darkens each light's diffuse term by its own random share
+                // (measured with povray: independent per light, uniform, ambient untouched).
+                // The share's hash is made here, for the few finishes with crand, not
+                // for every light of every hit as it once was (`gather_lights` shades the
+                // same point `p`, so the same seed).
+                let k = if !PLAIN && fin.crand != 0.0 {
+                    let g = grain(point_seed(p), lb.slot);
+                    fin.diffuse * d * f.opacity * (1.0 - fin.crand * g)
+                } else {
+                    fin.diffuse * d * f.opacity
+                };
+                *col += lc_irid * c.rgb * k;
+            }
+        }
+        // POV-Ray 3.7 gives shadowless lights no highlights (tests/probes/shadowless_*),
+        // nor lights behind a double-illuminated surface (tests/probes/double_illuminate).
+        if lb.shadowless || lb.back || !(f.phong || f.specular) {
+            continue;
+        }
+        // Highlights take the surface colour in proportion to `metallic`, less so as the
+        // light grazes the surface (measured: render::metallic).
+        let lc_tint = if !PLAIN && f.metallic {
+            lc_irid * super::metallic::tint(c.rgb, fin.metallic, nf.dot(l))
+        } else {
+            lc_irid
+        };
+        if f.phong {
+            let cos_r = f.mirror.dot(l);
+            if cos_r > 0.0 {
+                *col += lc_tint * (fin.phong * cos_r.powf(fin.phong_size));
+            }
+        }
+        if f.specular {
+            let hv = (l - dir).normalize_or_zero();
+            let cos_h = nf.dot(hv);
+            if cos_h > 0.0 {
+                *col += lc_tint * (fin.specular * cos_h.powf(f.specular_exp));
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::Transform;
+    use crate::scene::desc::LightDesc;
+
+    /// A small deterministic generator, so the tests need no crate and never change.
+    struct Lcg(u64);
+    impl Lcg {
+        fn next(&mut self) -> f64 {
+            self.0 = self
+                .0
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+        fn vec(&mut self, r: f64) -> DVec3 {
+            DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * (2.0 * r)
+        }
+    }
+
+    fn bits(v: DVec3) -> [u64; 3] {
+        v.to_array().map(f64::to_bits)
+    }
+
+    #[test]
+    fn point_lights_incidence_is_lights_own() {
+        let mut rng = Lcg(7);
+        for case in 0..20_000 {
+            let scale = [1e-3, 1.0, 1e4][case % 3];
+            let light = Light::new(&LightDesc::at(rng.vec(scale)), &Transform::IDENTITY);
+            // Every seventh point is the light's own place (no incidence).
+            let p = if case % 7 == 0 {
+                light.position
+            } else {
+                rng.vec(scale)
+            };
+            match (incidence(&light, p), light.incidence(p)) {
+                (None, None) => {}
+                (Some(a), Some(b)) => {
+                    assert_eq!(bits(a.l), bits(b.l));
+                    assert_eq!(a.dist.to_bits(), b.dist.to_bits());
+                    assert_eq!(a.beam.to_bits(), b.beam.to_bits());
+                    assert_eq!(
+                        a.shadow_dist.map(f64::to_bits),
+                        b.shadow_dist.map(f64::to_bits)
+                    );
+                }
+                (a, b) => panic!("case {case}: {a:?} against {b:?}"),
+            }
+        }
+    }
+
+    #[test]
+    fn the_plain_loop_is_the_general_loop() {
+        let mut rng = Lcg(11);
+        for case in 0..5_000 {
+            let fin = Finish {
+                diffuse: [0.0, 0.6, rng.next()][case % 3],
+                phong: [0.0, rng.next()][case % 2],
+                phong_size: 1.0 + 80.0 * rng.next(),
+                specular: [0.0, rng.next()][(case / 2) % 2],
+                roughness: 0.001 + rng.next() * 0.1,
+                ..Finish::default()
+            };
+            let c = Rgbft::new(rng.next(), rng.next(), rng.next(), rng.next() * 0.3, 0.0);
+            let nf = rng.vec(1.0).normalize();
+            let dir = rng.vec(1.0).normalize();
+            let lit: Vec<LitBy> = (0..case % 4)
+                .map(|i| {
+                    let l = rng.vec(1.0).normalize();
+                    LitBy {
+                        color: rng.vec(1.0).abs(),
+                        l,
+                        cos_n: nf.dot(l),
+                        shadowless: i == 2,
+                        back: i == 3 && case % 5 == 0,
+                        slot: i as u32,
+                    }
+                })
+                .collect();
+            let f = Factors {
+                c: &c,
+                fin: &fin,
+                p: rng.vec(10.0),
+                dir,
+                nf,
+                mirror: dir - nf * (2.0 * dir.dot(nf)),
+                opacity: c.opacity(),
+                diffuse: fin.diffuse > 0.0,
+                phong: fin.phong > 0.0,
+                specular: fin.specular > 0.0,
+                specular_exp: 1.0 / fin.roughness,
+                metallic: false,
+            };
+            let (mut plain, mut general) = (DVec3::splat(0.1), DVec3::splat(0.1));
+            lights_add::<true>(&f, &lit, &mut plain);
+            lights_add::<false>(&f, &lit, &mut general);
+            assert_eq!(bits(plain), bits(general), "case {case}");
+        }
     }
 }

@@ -15,6 +15,7 @@ pub mod focal;
 mod fog;
 mod fractal;
 mod irid;
+mod layers;
 mod legacy_sky;
 mod lighting;
 mod media;

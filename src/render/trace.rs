@@ -6,14 +6,14 @@
 //! at every surface crossing; shadowless lights make no highlights; rays past max_trace_level
 //! return black.
 
-use crate::color::Rgbft;
-use crate::math::{DVec3, Ray, Transform};
+use crate::math::{DVec3, Ray};
 use crate::scene::build::Scene;
 use crate::scene::desc::{Interior, Texture};
 use crate::scene::object::{Scratch, SurfaceHit};
 pub use crate::scene::scratch::LitBy;
 
 use super::camera::Camera;
+use super::layers::{HitView, LayerSum};
 use super::legacy_sky::LegacySky;
 use super::{normal, pigment, texture_map};
 
@@ -143,6 +143,50 @@ fn grey(c: DVec3) -> f64 {
 #[inline(never)]
 fn unit_sky(dir: DVec3) -> DVec3 {
     dir.normalize_or_zero()
+}
+
+/// Whether the crossing `h` is invisible to the ray (`first_visible`'s rules).
+#[inline(always)]
+fn hidden(h: &SurfaceHit, straight: bool, gather: bool) -> bool {
+    if gather {
+        h.obj.no_radiosity
+    } else if straight {
+        h.obj.no_image
+    } else {
+        h.obj.no_reflection
+    }
+}
+
+/// One sky_sphere layer's colour for a ray going `dir`; `d`, the sky direction, is worked out
+/// at most once per ray and only for a layer that is not a plain colour.
+#[inline(always)]
+fn sky_colour(
+    layer: &crate::scene::desc::Pigment,
+    dir: DVec3,
+    d: &mut Option<DVec3>,
+) -> crate::color::Rgbft {
+    match &layer.kind {
+        crate::scene::desc::PigmentKind::Solid(c) => *c,
+        _ => pigment::eval(layer, *d.get_or_insert_with(|| unit_sky(dir))),
+    }
+}
+
+/// `Tracer::background`'s sky for scenes older than 3.7 (`legacy_sky_filter`), out of the
+/// common path: the same blending as the 3.7 rule, then `LegacySky`'s where a layer filters.
+#[inline(never)]
+fn legacy_sky(s: &Scene, dir: DVec3, mut seen: Seen) -> Seen {
+    let mut d = None;
+    let mut legacy = LegacySky::new(seen.rgb);
+    for layer in &s.sky {
+        let c = sky_colour(layer, dir, &mut d);
+        legacy.add(&c);
+        seen.rgb = c.rgb * c.opacity() + seen.rgb * c.transmitted();
+        seen.clear *= c.filter * grey(c.rgb) + c.transmit;
+    }
+    if let Some(rgb) = legacy.filtered_rgb() {
+        seen.rgb = rgb;
+    }
+    seen
 }
 
 /// The direction a ray going `dir` takes through a surface with normal `nf` (facing the ray,
@@ -277,8 +321,11 @@ impl<'a> Tracer<'a> {
             in_solid: Some(solid),
             ..path
         };
-        let mut seen = match hit {
-            Some(h) => self.shade_blended(ray, &h, path, ctx),
+        let mut seen = match &hit {
+            // Blobs with textured components aside, straight to `shade` (not through
+            // `shade_blended`'s frame).
+            Some(h) if h.obj.blob.is_none() => self.shade(ray, h, path, ctx),
+            Some(h) => self.shade_blended(ray, h, path, ctx),
             None => self.background(ray.dir, path.straight),
         };
         if t.is_finite() && !solid && media {
@@ -341,18 +388,29 @@ impl<'a> Tracer<'a> {
         gather: bool,
         ctx: &mut TraceCtx<'a>,
     ) -> Option<SurfaceHit<'a>> {
-        let mut h = self.scene.first_hit(ray, f64::INFINITY, ctx)?;
+        let h = self.scene.first_hit(ray, f64::INFINITY, ctx)?;
+        // Nearly every first crossing is visible: the loop past hidden objects (and its
+        // set-up, hoisted before this test when it was one loop) is out of line.
+        if !hidden(&h, straight, gather) {
+            return Some(h);
+        }
+        self.visible_past(ray, h, straight, gather, ctx)
+    }
+
+    /// `first_visible` past a first crossing `h` that is hidden.
+    #[inline(never)]
+    fn visible_past(
+        &self,
+        ray: &Ray,
+        mut h: SurfaceHit<'a>,
+        straight: bool,
+        gather: bool,
+        ctx: &mut TraceCtx<'a>,
+    ) -> Option<SurfaceHit<'a>> {
         let mut offset = 0.0;
         // Bounded so that a ray grazing along a hidden surface cannot loop for ever.
         for _ in 0..256 {
-            let hidden = if gather {
-                h.obj.no_radiosity
-            } else if straight {
-                h.obj.no_image
-            } else {
-                h.obj.no_reflection
-            };
-            if !hidden {
+            if !hidden(&h, straight, gather) {
                 h.t += offset;
                 return Some(h);
             }
@@ -430,24 +488,18 @@ impl<'a> Tracer<'a> {
                 clear: 0.0,
             },
         };
-        if !s.sky.is_empty() {
-            // A plain colour needs no direction (most skies are one layer of one colour).
-            let mut d = None;
-            let mut legacy = LegacySky::new(seen.rgb);
-            for layer in &s.sky {
-                let c = match &layer.kind {
-                    crate::scene::desc::PigmentKind::Solid(c) => *c,
-                    _ => pigment::eval(layer, *d.get_or_insert_with(|| unit_sky(dir))),
-                };
-                if s.legacy_sky_filter {
-                    legacy.add(&c);
-                }
-                seen.rgb = c.rgb * c.opacity() + seen.rgb * c.transmitted();
-                seen.clear *= c.filter * grey(c.rgb) + c.transmit;
-            }
-            if let Some(rgb) = legacy.filtered_rgb() {
-                seen.rgb = rgb;
-            }
+        if s.sky.is_empty() {
+            return seen;
+        }
+        if s.legacy_sky_filter {
+            return legacy_sky(s, dir, seen);
+        }
+        // A plain colour needs no direction (most skies are one layer of one colour).
+        let mut d = None;
+        for layer in &s.sky {
+            let c = sky_colour(layer, dir, &mut d);
+            seen.rgb = c.rgb * c.opacity() + seen.rgb * c.transmitted();
+            seen.clear *= c.filter * grey(c.rgb) + c.transmit;
         }
         seen
     }
@@ -478,8 +530,26 @@ impl<'a> Tracer<'a> {
                 clear: 0.0,
             };
         }
-        // Per hit, not per light or layer.
+        // Per hit, not per layer or light. Gathered into one `HitView` before the lights, so
+        // that each value has one home on the stack across the shadow rays' calls, not a
+        // spill slot and a copy in the view.
         let mirror = reflect(dir, nf);
+        let cos_i = (-dir.dot(nf)).clamp(0.0, 1.0);
+        let ior = super::dispersion::ior(obj, path.wave);
+        let (n1, n2) = if entering { (1.0, ior) } else { (ior, 1.0) };
+        let hv = HitView {
+            p,
+            dir,
+            nf,
+            mirror,
+            cos_i,
+            n1,
+            n2,
+            entering,
+            obj,
+            uv,
+            path,
+        };
         // A perturbed normal may face lights the surface itself turns away from; POV-Ray
         // lights them (measured: a light just behind a plane whose normal leans towards it):
         // `bumpy`, whether any part of the texture perturbs the normal.
@@ -493,127 +563,23 @@ impl<'a> Tracer<'a> {
             // only (`irradiance` keeps them from the gathering rays' hits).
             ctx.lit.clear();
         } else {
-            self.gather_lights(p, nf, bumpy, obj, path.rad_level > 0, ctx);
+            self.gather_lights(hv.p, hv.nf, bumpy, obj, path.rad_level > 0, ctx);
         }
-        let cos_i = (-dir.dot(nf)).clamp(0.0, 1.0);
-        let ior = super::dispersion::ior(obj, path.wave);
-        let (n1, n2) = if entering { (1.0, ior) } else { (ior, 1.0) };
-
-        // Layers from the top down (one for most textures). Measured with povray 3.7
-        // (tests/probes/layered_*): each layer lights its own colour weighted by what the
-        // layers above let through and by its own opacity; its highlights only by what the
-        // layers above let through; reflections of all layers add up unweighted; what passes
-        // every layer goes on through the object.
-        let mut col = DVec3::ZERO;
-        let mut through = DVec3::ONE;
-        let mut refl_amount = DVec3::ZERO;
-        let mut refl_tinted = DVec3::ZERO;
-        // Every reflection's tinted share, bent or not: what conserve_energy takes away.
-        let mut refl_all_tinted = DVec3::ZERO;
-        let mut last = Rgbft::BLACK;
-        let mut conserve = false;
-        // Reflections off perturbed normals go their own ways: (direction, tint·amount).
-        // Inline for the few a hit has: a heap Vec cost an allocation per such hit.
-        let mut bent: smallvec::SmallVec<[(DVec3, DVec3); 4]> = smallvec::SmallVec::new();
-        // `exponent`: what a reflection brings back is raised to this power first.
-        let mut refl_power: Option<f64> = None;
-        // The first perturbed normal met decides refraction.
-        let mut refract_n: Option<DVec3> = None;
-        // Radiosity's light at this point, gathered at most once (per normal with
-        // `normal on`), and only if some layer is diffuse.
-        let rad_normal = self.rad.is_some_and(|r| r.set.normal);
-        let mut irr: Option<DVec3> = None;
-        for tex in top.layers() {
-            // Under an opaque layer a layer's light and colour count nothing (`through` is
-            // zero; transmission, `last` and `conserve` are only read when it is not), only
-            // its reflection does: a layer that cannot reflect is not evaluated. Radiosity's
-            // gathering has effects beyond this point, so it keeps every layer.
-            if through == DVec3::ZERO
-                && self.rad.is_none()
-                && !(q.reflection && texture_map::may_reflect(tex))
-            {
-                continue;
-            }
-            // A patterned texture is shaded as the plain textures it is made of here, each
-            // weighted (texture_map blends); a plain one is itself with weight 1.
-            let mut layer_c = [0.0; 5];
-            let mut each = |c: Rgbft, part: &Texture, space: &Transform, w: f64| {
-                let fin = &part.finish;
-                let (pn, pmirror, pcos) = match &part.normal {
-                    Some(nd) if normal::perturbs(part.normal.as_deref()) => {
-                        let pn = normal::perturb_in(nd, space, p, nf);
-                        refract_n.get_or_insert(pn);
-                        (pn, reflect(dir, pn), (-dir.dot(pn)).clamp(0.0, 1.0))
-                    }
-                    _ => (nf, mirror, cos_i),
-                };
-                let indirect = match self.rad {
-                    None => None,
-                    Some(_) if fin.diffuse <= 0.0 => Some(DVec3::ZERO),
-                    Some(_) if rad_normal => Some(self.irradiance(p, pn, path, ctx)),
-                    Some(_) => Some(*irr.get_or_insert_with(|| self.irradiance(p, nf, path, ctx))),
-                };
-                col += through * w * self.layer_light(&c, fin, p, dir, pn, pmirror, indirect, ctx);
-                let refl = &fin.reflection;
-                if !refl.is_zero() && q.reflection {
-                    refl_power = refl.power().or(refl_power);
-                    // Where a ray leaves an object at a point still inside another object (a
-                    // wall plane whose inside holds the camera, say), POV-Ray takes the leaving
-                    // object's ior for both sides of the Fresnel term, which makes it zero;
-                    // elsewhere the exit is an ordinary glass-to-air interface. Measured:
-                    // tests/probes.
-                    let f = if refl.min == refl.max {
-                        // The blend factor does not matter; skip the powf on this per-hit path.
-                        0.0
-                    } else if !refl.fresnel {
-                        (1.0 - pcos).powf(refl.falloff)
-                    } else if entering || !s.inside_other(p, obj) {
-                        fresnel(pcos, n1, n2)
-                    } else {
-                        0.0
-                    };
-                    let amount = (refl.min + (refl.max - refl.min) * f) * w;
-                    // Measured: the tint fades to white at glancing angles (render::metallic).
-                    let tinted = amount * super::metallic::tint(c.rgb, refl.metallic, pcos);
-                    refl_all_tinted += tinted;
-                    if pmirror == mirror {
-                        refl_amount += amount;
-                        refl_tinted += tinted;
-                    } else {
-                        refl_amount += amount;
-                        // Measured (a sky coloured by direction seen in a plane with a
-                        // steep normal pattern, tests/probes/reflect_below_surface.pov): where
-                        // the perturbed normal faces away from the ray the reflection is the
-                        // true surface's; a perturbed reflection that would go into the
-                        // surface is mirrored back out across it.
-                        let below = pmirror.dot(nf);
-                        let d = if dir.dot(pn) >= 0.0 {
-                            mirror
-                        } else if below < 0.0 {
-                            pmirror - nf * (2.0 * below)
-                        } else {
-                            pmirror
-                        };
-                        bent.push((d, tinted));
-                    }
-                }
-                for (l, v) in layer_c.iter_mut().zip(c.to_array()) {
-                    *l += v * w;
-                }
-                conserve = fin.conserve_energy;
-            };
-            // A plain layer (most are) is its own only part: called directly, not through
-            // `blend`'s dynamic callback, so the body can be inlined for it.
-            if tex.pattern.is_none() {
-                let c = texture_map::plain_colour(tex, p, uv, &Transform::IDENTITY, q.quick_colors);
-                each(c, tex, &Transform::IDENTITY, 1.0);
-            } else {
-                texture_map::blend(tex, p, uv, q.quick_colors, 1.0, &mut each);
-            }
-            let c = Rgbft::from_array(layer_c);
-            through *= c.transmitted();
-            last = c;
-        }
+        let mut sum = LayerSum::new();
+        self.shade_layers(top, &hv, &mut sum, ctx);
+        let LayerSum {
+            mut col,
+            through,
+            refl_amount,
+            refl_tinted,
+            refl_all_tinted,
+            last,
+            conserve,
+            ref bent,
+            refl_power,
+            refract_n,
+            ..
+        } = sum;
         if refl_amount != DVec3::ZERO {
             let w = path.weight * refl_amount.max_element();
             if w > s.adc_bailout {
