@@ -39,7 +39,13 @@ struct LaneCell {
 #[inline(always)]
 unsafe fn packed_at(off: u32) -> *const f64 {
     // SAFETY: the caller guarantees 4·off = 128·k is the start of PACKED[k], k < 256.
-    unsafe { PACKED.as_ptr().cast::<u8>().add(off as usize * 4).cast::<f64>() }
+    unsafe {
+        PACKED
+            .as_ptr()
+            .cast::<u8>()
+            .add(off as usize * 4)
+            .cast::<f64>()
+    }
 }
 
 /// `LaneCell` from a `Cell` (points whose floors leave the i32 range, and NaN): the

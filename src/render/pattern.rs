@@ -137,7 +137,7 @@ fn shape(pat: &Pattern, v: f64) -> f64 {
 
 /// `shape` written into its caller: a normal's four samples of a plain function (gradient,
 /// radial) paid its call, and the array `map` around it, on each (~30 instructions a sample
-/// on normavg's slopes).
+/// on normavg's slopes; likewise the noise patterns' four samples).
 #[inline(always)]
 fn shape_inline(pat: &Pattern, v: f64) -> f64 {
     if pat.is_block() {
@@ -421,7 +421,11 @@ fn noise_values4(pat: &Pattern, qs: [DVec3; 4]) -> Option<[f64; 4]> {
         }
         _ => return None,
     };
-    Some(raw.map(|v| shape(pat, v)))
+    let mut out = [0.0; 4];
+    for (o, v) in out.iter_mut().zip(raw) {
+        *o = shape_inline(pat, v);
+    }
+    Some(out)
 }
 
 /// A triangle wave of period 1 from 0 (at integers) to 1 (at half-integers).
