@@ -98,10 +98,8 @@ pub fn index_warped(pat: &Pattern, q: DVec3) -> usize {
 /// (measured: a `pigment_map`, pigment list, `texture_map`, texture list or `normal_map` of
 /// `gradient z` stripes under `warp { turbulence }` or plain turbulence shows wavy stripes in
 /// povray; marble's and wood's own turbulence, which is not a warp, leaves them straight).
-///
-/// Inlined for its first test: most patterns have neither warps nor turbulence, and marble's
-/// and wood's turbulence is their formula's, so the point stays; the call was ~30
-/// instructions a wood pigment and a slope normal.
+/// Inlined for its first test (no warps, and no turbulence or marble's and wood's own: the
+/// point stays), which spares most patterns a ~30-instruction call.
 #[inline]
 pub fn warped(pat: &Pattern, p: DVec3) -> DVec3 {
     if pat.warps.is_empty()
@@ -135,9 +133,8 @@ fn shape(pat: &Pattern, v: f64) -> f64 {
     shape_inline(pat, v)
 }
 
-/// `shape` written into its caller: a normal's four samples of a plain function (gradient,
-/// radial) paid its call, and the array `map` around it, on each (~30 instructions a sample
-/// on normavg's slopes; likewise the noise patterns' four samples).
+/// `shape` written into its caller: a normal's four samples (gradient, radial, the noises)
+/// paid its call and an array `map` on each (~30 instructions a sample on normavg).
 #[inline(always)]
 fn shape_inline(pat: &Pattern, v: f64) -> f64 {
     if pat.is_block() {
@@ -731,6 +728,9 @@ mod tests {
             PatternKind::Agate { turb: 1.6 },
             PatternKind::Marble,
             PatternKind::Wood,
+            // Not noise, but with their own four-sample paths (`shape_inline`).
+            PatternKind::Gradient(DVec3::new(0.3, 1.0, -0.7)),
+            PatternKind::Radial,
         ];
         for kind in kinds {
             for (gen, turbulence, wave) in [
@@ -747,6 +747,40 @@ mod tests {
                     let qs = [0.0, 0.003, -0.004, 0.2].map(|d| c + DVec3::new(d, 2.0 * d, -d));
                     let want = qs.map(|q| value_warped(&p, q).to_bits());
                     assert_eq!(values_warped4(&p, qs).map(f64::to_bits), want, "{kind:?}");
+                }
+            }
+        }
+    }
+
+    /// `warped`'s inline test keeps the point only where the whole warp would: no warps, and
+    /// no turbulence or marble's and wood's own (zero turbulence too, which leaves it).
+    #[test]
+    fn warped_test_is_the_whole_warp() {
+        use crate::scene::pattern::Turbulence;
+        let turb = Turbulence {
+            amount: DVec3::new(0.7, 0.2, 0.1),
+            ..Default::default()
+        };
+        let still = Turbulence {
+            amount: DVec3::ZERO,
+            ..Default::default()
+        };
+        let kinds = [
+            PatternKind::Wood,
+            PatternKind::Marble,
+            PatternKind::Granite,
+            PatternKind::Agate { turb: 1.6 },
+            PatternKind::Gradient(DVec3::X),
+        ];
+        for kind in kinds {
+            for turbulence in [None, Some(turb), Some(still)] {
+                let mut p = pat(kind.clone());
+                p.turbulence = turbulence;
+                for n in 0..200 {
+                    let t = n as f64 * 0.37;
+                    let q = DVec3::new(t.sin() * 5.0, t * 0.03 - 2.0, t.cos());
+                    let bits = |v: DVec3| v.to_array().map(f64::to_bits);
+                    assert_eq!(bits(warped(&p, q)), bits(warped_moved(&p, q)), "{kind:?}");
                 }
             }
         }
