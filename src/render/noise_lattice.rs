@@ -68,6 +68,22 @@ const fn rows() -> [Row; 256] {
 
 static ROWS: [Row; 256] = rows();
 
+/// HASH_Z's values times 32: the byte offset of each corner's row in `ROWS` (and a quarter
+/// of it in `PACKED`, whose rows are 128 bytes: an address's scale of 4). The lanes' cells
+/// keep these, so reading a row adds the offset to the table's address, where an index
+/// took a shift first (one instruction per corner and point).
+static HASH_Z32: [u16; 4096] = hash_z32();
+
+const fn hash_z32() -> [u16; 4096] {
+    let mut t = [0u16; 4096];
+    let mut i = 0;
+    while i < 4096 {
+        t[i] = HASH_Z[i] as u16 * 32;
+        i += 1;
+    }
+    t
+}
+
 /// What the eight corners share: the fractional position, the x·y weights of the four
 /// (dx, dy) columns, the z weights, and each corner's ENTRY position (corner = dx + 2dy + 4dz;
 /// below 256, as HASH_Z's values are: the readers mask it with 255, which spares the bounds
@@ -203,7 +219,7 @@ unsafe fn cell_avx(p: DVec3) -> Cell {
         _mm256_storeu_pd(ta.as_mut_ptr(), t);
         _mm256_storeu_pd(sa.as_mut_ptr(), s);
         _mm256_storeu_pd(oa.as_mut_ptr(), o);
-        let entry = entries_avx(f);
+        let entry = entries_avx(f, &HASH_Z);
         Cell {
             t: [ta[0], ta[1], ta[2]],
             wxy,
@@ -214,7 +230,8 @@ unsafe fn cell_avx(p: DVec3) -> Cell {
 }
 
 /// The eight corners' ENTRY positions of the cell whose floors are `f`'s lanes (x, y, z,
-/// unused): `cell`'s hash walk. The floors must be integers inside the i32 range (the
+/// unused): `cell`'s hash walk, its last stage read from `last` (HASH_Z, or `HASH_Z32` for
+/// the rows' byte offsets). The floors must be integers inside the i32 range (the
 /// callers check): converted exactly, and the hash's wrapping add and 12-bit mask see the
 /// same low bits as in i64.
 ///
@@ -222,7 +239,10 @@ unsafe fn cell_avx(p: DVec3) -> Cell {
 /// The CPU must have AVX.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn entries_avx(f: std::arch::x86_64::__m256d) -> [u32; 8] {
+unsafe fn entries_avx<T: Copy + Into<u32>>(
+    f: std::arch::x86_64::__m256d,
+    last: &[T; 4096],
+) -> [u32; 8] {
     use std::arch::x86_64::*;
     // SAFETY: the caller guarantees AVX.
     unsafe {
@@ -250,8 +270,8 @@ unsafe fn entries_avx(f: std::arch::x86_64::__m256d) -> [u32; 8] {
         }
         let mut entry = [0u32; 8];
         for (c, e) in entry.iter_mut().enumerate() {
-            // SAFETY: as above, with HASH_Y's values (asserted) and `mz`: below HASH_Z's 4096.
-            *e = u32::from(*HASH_Z.get_unchecked(hxy[c & 3] ^ mz[c >> 2]));
+            // SAFETY: as above, with HASH_Y's values (asserted) and `mz`: below `last`'s 4096.
+            *e = (*last.get_unchecked(hxy[c & 3] ^ mz[c >> 2])).into();
         }
         entry
     }
@@ -271,47 +291,6 @@ const fn all_below_4096(t: &[u16; 4096]) -> bool {
 
 // `entries_avx`'s unchecked reads rely on this (an unnamed constant is always evaluated).
 const _: () = assert!(all_below_4096(&HASH_X) && all_below_4096(&HASH_Y));
-
-/// What `scalar_avx4` reads of a cell: the fractional position and the corners' ENTRY
-/// positions (`Cell` without the weights, which the four-point lanes compute themselves).
-#[derive(Clone, Copy)]
-struct Corners {
-    t: [f64; 3],
-    entry: [u32; 8],
-}
-
-/// `cell_avx`'s fractional position and hash walk without its weights: the batched scalar
-/// noise (wrinkles' ten octaves, granite's, a normal's four samples) computed and stored
-/// the weights of every point only for `scalar_avx4` to compute them again in its lanes.
-/// Coordinates outside the i32 range (and NaN) take `cell`, as `cell_avx` does.
-///
-/// # Safety
-/// The CPU must have AVX.
-#[cfg(target_arch = "x86_64")]
-#[inline(always)]
-unsafe fn corners_avx(p: DVec3) -> Corners {
-    use std::arch::x86_64::*;
-    // SAFETY: the caller guarantees AVX.
-    unsafe {
-        let v = _mm256_setr_pd(p.x, p.y, p.z, 0.0);
-        let f = _mm256_round_pd::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(v);
-        let abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), f);
-        let inside = _mm256_cmp_pd::<_CMP_LT_OQ>(abs, _mm256_set1_pd(2147483648.0));
-        if !all_lanes(inside) {
-            let c = cell(p);
-            return Corners {
-                t: c.t,
-                entry: c.entry,
-            };
-        }
-        let mut ta = [0.0; 4];
-        _mm256_storeu_pd(ta.as_mut_ptr(), _mm256_sub_pd(v, f));
-        Corners {
-            t: [ta[0], ta[1], ta[2]],
-            entry: entries_avx(f),
-        }
-    }
-}
 
 /// A bound on |`scalar(p)`| for every point (a NaN or infinite point gives NaN): each of the
 /// eight corner terms is a weight in [0, 1] times ½e0 + e1·dx + e2·dy + e3·dz with every
@@ -369,44 +348,6 @@ fn scalar_into_with(ps: &[DVec3], out: &mut [f64], terms: impl Fn(&Cell) -> f64)
     }
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-fn scalar_into_avx(ps: &[DVec3], out: &mut [f64]) {
-    use std::mem::MaybeUninit;
-    let n = ps.len().min(out.len()).min(MAX_POINTS);
-    if n == 1 {
-        // SAFETY: this function only runs with AVX enabled.
-        out[0] = unsafe { scalar_avx(&cell_avx(ps[0])) };
-        return;
-    }
-    // Every hash walk first (as `scalar_into_with`), without initialising the unused cells.
-    let mut buf = [const { MaybeUninit::<Corners>::uninit() }; MAX_POINTS];
-    for (b, &p) in buf.iter_mut().zip(&ps[..n]) {
-        // SAFETY: this function only runs with AVX enabled.
-        b.write(unsafe { corners_avx(p) });
-    }
-    // SAFETY: the first n cells were written just above; Corners is Copy (nothing to drop).
-    let cells = unsafe { std::slice::from_raw_parts(buf.as_ptr() as *const Corners, n) };
-    for ((c, o), p) in cells
-        .chunks(4)
-        .zip(out[..n].chunks_mut(4))
-        .zip(ps.chunks(4))
-    {
-        if c.len() == 1 {
-            // A lone last point (5 or 9 octaves) takes the one-point lanes, which need the
-            // weights: its whole cell again.
-            // SAFETY: as above.
-            o[0] = unsafe { scalar_avx(&cell_avx(p[0])) };
-        } else if c.len() == 2 {
-            // SAFETY: as above.
-            unsafe { scalar_avx2(c, o) };
-        } else {
-            // SAFETY: as above.
-            unsafe { scalar_avx4(c, o) };
-        }
-    }
-}
-
 /// Four rows of `ROWS` (four corners' or four points' (value, x, y, z) entries, each an AVX
 /// register) transposed, so that each of the four results holds one field of all four: a
 /// macro, not a function, so the shuffles stay in the AVX callers' registers.
@@ -423,134 +364,6 @@ macro_rules! transposed {
             _mm256_permute2f128_pd(t1, t3, 0x31),
         ]
     }};
-}
-
-/// `scalar`'s arithmetic for two to four points at once (octaves of one sum), lane l for
-/// point l: each lane computes every corner's term as the scalar code does and adds them in
-/// corner order, so the eight-term sum is vertical instead of a horizontal chain per point.
-/// The weights are computed in the lanes from the fractional positions with the scalar
-/// code's operations (`cell`).
-///
-/// # Safety
-/// The CPU must have AVX.
-#[cfg(target_arch = "x86_64")]
-#[inline(always)]
-unsafe fn scalar_avx4(cells: &[Corners], out: &mut [f64]) {
-    use std::arch::x86_64::*;
-    let n = cells.len();
-    // Missing lanes repeat the last point; their results are dropped.
-    let lane = |l: usize| &cells[l.min(n - 1)];
-    // SAFETY: the caller guarantees AVX; ROWS' rows are 32-byte aligned.
-    unsafe {
-        let v = |a: usize| _mm256_setr_pd(lane(0).t[a], lane(1).t[a], lane(2).t[a], lane(3).t[a]);
-        let (tx, ty, tz) = (v(0), v(1), v(2));
-        let one = _mm256_set1_pd(1.0);
-        let s_curve = |t: __m256d| {
-            _mm256_mul_pd(
-                _mm256_mul_pd(t, t),
-                _mm256_sub_pd(_mm256_set1_pd(3.0), _mm256_mul_pd(_mm256_set1_pd(2.0), t)),
-            )
-        };
-        let (sx, sy, sz) = (s_curve(tx), s_curve(ty), s_curve(tz));
-        let (wx, wy) = ([_mm256_sub_pd(one, sx), sx], [_mm256_sub_pd(one, sy), sy]);
-        let wxy = [
-            _mm256_mul_pd(wx[0], wy[0]),
-            _mm256_mul_pd(wx[1], wy[0]),
-            _mm256_mul_pd(wx[0], wy[1]),
-            _mm256_mul_pd(wx[1], wy[1]),
-        ];
-        let wz = [_mm256_sub_pd(one, sz), sz];
-        let dx = [tx, _mm256_sub_pd(tx, one)];
-        let dy = [ty, _mm256_sub_pd(ty, one)];
-        let dz = [tz, _mm256_sub_pd(tz, one)];
-        let mut acc = _mm256_setzero_pd();
-        // Written out per corner (a macro, not a loop): rolled, the loop kept its operands on
-        // the stack and computed each one's offset from k, ~14 of its ~47 instructions a
-        // corner.
-        macro_rules! corner {
-            ($k:literal) => {{
-                let row =
-                    |l: usize| _mm256_load_pd(ROWS[lane(l).entry[$k] as usize & 255].0.as_ptr());
-                let [e0, e1, e2, e3] = transposed!(row(0), row(1), row(2), row(3));
-                let mut t = _mm256_add_pd(e0, _mm256_mul_pd(e1, dx[$k & 1]));
-                t = _mm256_add_pd(t, _mm256_mul_pd(e2, dy[($k >> 1) & 1]));
-                t = _mm256_add_pd(t, _mm256_mul_pd(e3, dz[$k >> 2]));
-                let w = _mm256_mul_pd(wxy[$k & 3], wz[$k >> 2]);
-                acc = _mm256_add_pd(acc, _mm256_mul_pd(w, t));
-            }};
-        }
-        corner!(0);
-        corner!(1);
-        corner!(2);
-        corner!(3);
-        corner!(4);
-        corner!(5);
-        corner!(6);
-        corner!(7);
-        if let Ok(o) = <&mut [f64; 4]>::try_from(&mut *out) {
-            // Four points (most chunks): one store, where the copy of a slice of variable
-            // length was a call to memcpy.
-            _mm256_storeu_pd(o.as_mut_ptr(), acc);
-        } else {
-            let mut res = [0.0; 4];
-            _mm256_storeu_pd(res.as_mut_ptr(), acc);
-            out.copy_from_slice(&res[..n]);
-        }
-    }
-}
-
-/// `scalar_avx4` for two points in the two lanes of a 128-bit register: the last two of ten
-/// octaves (wrinkles, granite) took a four-lane pass of which half was thrown away. Each
-/// lane does `scalar_avx4`'s operations in its order (the accumulator starting at +0 too),
-/// so the bits are the same.
-///
-/// # Safety
-/// The CPU must have AVX (the caller's target feature; SSE2 would do).
-#[cfg(target_arch = "x86_64")]
-#[inline(always)]
-unsafe fn scalar_avx2(cells: &[Corners], out: &mut [f64]) {
-    use std::arch::x86_64::*;
-    let (a, b) = (&cells[0], &cells[1]);
-    // SAFETY: the caller guarantees AVX; ROWS' rows are 32-byte aligned, so both their
-    // halves are 16-byte aligned, as the aligned loads need.
-    unsafe {
-        let v = |i: usize| _mm_setr_pd(a.t[i], b.t[i]);
-        let (tx, ty, tz) = (v(0), v(1), v(2));
-        let one = _mm_set1_pd(1.0);
-        let s_curve = |t: __m128d| {
-            _mm_mul_pd(
-                _mm_mul_pd(t, t),
-                _mm_sub_pd(_mm_set1_pd(3.0), _mm_mul_pd(_mm_set1_pd(2.0), t)),
-            )
-        };
-        let (sx, sy, sz) = (s_curve(tx), s_curve(ty), s_curve(tz));
-        let (wx, wy) = ([_mm_sub_pd(one, sx), sx], [_mm_sub_pd(one, sy), sy]);
-        let wxy = [
-            _mm_mul_pd(wx[0], wy[0]),
-            _mm_mul_pd(wx[1], wy[0]),
-            _mm_mul_pd(wx[0], wy[1]),
-            _mm_mul_pd(wx[1], wy[1]),
-        ];
-        let wz = [_mm_sub_pd(one, sz), sz];
-        let dx = [tx, _mm_sub_pd(tx, one)];
-        let dy = [ty, _mm_sub_pd(ty, one)];
-        let dz = [tz, _mm_sub_pd(tz, one)];
-        let mut acc = _mm_setzero_pd();
-        for k in 0..8 {
-            let ra = ROWS[a.entry[k] as usize & 255].0.as_ptr();
-            let rb = ROWS[b.entry[k] as usize & 255].0.as_ptr();
-            let (alo, ahi) = (_mm_load_pd(ra), _mm_load_pd(ra.add(2)));
-            let (blo, bhi) = (_mm_load_pd(rb), _mm_load_pd(rb.add(2)));
-            let (e0, e1) = (_mm_unpacklo_pd(alo, blo), _mm_unpackhi_pd(alo, blo));
-            let (e2, e3) = (_mm_unpacklo_pd(ahi, bhi), _mm_unpackhi_pd(ahi, bhi));
-            let mut t = _mm_add_pd(e0, _mm_mul_pd(e1, dx[k & 1]));
-            t = _mm_add_pd(t, _mm_mul_pd(e2, dy[(k >> 1) & 1]));
-            t = _mm_add_pd(t, _mm_mul_pd(e3, dz[k >> 2]));
-            let w = _mm_mul_pd(wxy[k & 3], wz[k >> 2]);
-            acc = _mm_add_pd(acc, _mm_mul_pd(w, t));
-        }
-        _mm_storeu_pd(out.as_mut_ptr(), acc);
-    }
 }
 
 /// `scalar_into` for a fixed number of points.
@@ -574,6 +387,13 @@ fn scalar_lanes(c: &Cell) -> f64 {
     }
     out
 }
+
+// The batched scalar noise's walk and lanes (`scalar_into_avx`), after `transposed!`.
+#[cfg(target_arch = "x86_64")]
+#[path = "noise_scalar.rs"]
+mod scalar_lanes;
+#[cfg(target_arch = "x86_64")]
+use scalar_lanes::scalar_into_avx;
 
 /// `scalar`'s arithmetic with the four corners of each z layer as the lanes of one AVX
 /// register: their rows are transposed so that lane k holds corner k's numbers, each lane

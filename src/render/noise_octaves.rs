@@ -14,17 +14,38 @@ use std::arch::x86_64::*;
 
 use crate::math::DVec3;
 
-use super::{cell, cell_lanes, entries_avx, Cell, CellLanes, CellList, MAX_POINTS, PACKED};
+use super::{
+    cell, cell_lanes, entries_avx, Cell, CellLanes, CellList, HASH_Z32, MAX_POINTS, PACKED,
+};
 
 /// One octave's cell for the lanes: the fractional position's lanes (x, y, z, 0) and the
 /// same minus one (each corner's offsets), the eight corners' weights in corner order
-/// (corner = dx + 2dy + 4dz), and their ENTRY positions.
+/// (corner = dx + 2dy + 4dz), and their rows in `PACKED` as `HASH_Z32`'s offsets (32 times
+/// the ENTRY position; 4 times that is the row's byte offset, which the address's scale
+/// makes: an index took a shift per corner).
 #[derive(Clone, Copy)]
 #[repr(C, align(32))]
 struct LaneCell {
     d: [[f64; 4]; 2],
     w: [f64; 8],
-    entry: [u32; 8],
+    packed: [u32; 8],
+}
+
+/// The `PACKED` row at `HASH_Z32` offset `off` (a `LaneCell::packed`) as a pointer to its
+/// sixteen numbers.
+///
+/// # Safety
+/// `off` must be 32·k for some k < 256 (every `HASH_Z32` value is: HASH_Z's are below 256).
+#[inline(always)]
+unsafe fn packed_at(off: u32) -> *const f64 {
+    // SAFETY: the caller guarantees 4·off = 128·k is the start of PACKED[k], k < 256.
+    unsafe {
+        PACKED
+            .as_ptr()
+            .cast::<u8>()
+            .add(off as usize * 4)
+            .cast::<f64>()
+    }
 }
 
 /// `LaneCell` from a `Cell` (points whose floors leave the i32 range, and NaN): the
@@ -34,7 +55,7 @@ fn from_cell(c: &Cell) -> LaneCell {
     LaneCell {
         d: [[tx, ty, tz, 0.0], [tx - 1.0, ty - 1.0, tz - 1.0, -1.0]],
         w: std::array::from_fn(|k| c.wxy[k & 3] * c.wz[k >> 2]),
-        entry: c.entry,
+        packed: c.entry.map(|e| e * 32),
     }
 }
 
@@ -57,7 +78,7 @@ unsafe fn lane_cell(p: DVec3) -> LaneCell {
         let mut c = LaneCell {
             d: [[0.0; 4]; 2],
             w: [0.0; 8],
-            entry: entries_avx(f),
+            packed: entries_avx(f, &HASH_Z32),
         };
         _mm256_store_pd(c.d[0].as_mut_ptr(), t);
         _mm256_store_pd(c.d[1].as_mut_ptr(), _mm256_sub_pd(t, _mm256_set1_pd(1.0)));
@@ -73,8 +94,8 @@ unsafe fn lane_cell(p: DVec3) -> LaneCell {
 /// The CPU must have AVX.
 #[inline(always)]
 unsafe fn lane_terms(c: &LaneCell) -> __m256d {
-    // SAFETY: the caller guarantees AVX; PACKED's rows are 32-byte aligned, as the aligned
-    // loads need.
+    // SAFETY: the caller guarantees AVX; every `packed` is a row's offset (`lane_cell`,
+    // `from_cell`), and PACKED's rows are 32-byte aligned, as the aligned loads need.
     unsafe {
         let dx = [
             _mm256_broadcast_sd(&c.d[0][0]),
@@ -89,8 +110,8 @@ unsafe fn lane_terms(c: &LaneCell) -> __m256d {
             _mm256_broadcast_sd(&c.d[1][2]),
         ];
         let mut acc = _mm256_setzero_pd();
-        for (k, &i) in c.entry.iter().enumerate() {
-            let e = PACKED[i as usize & 255].0.as_ptr() as *const f64;
+        for (k, &off) in c.packed.iter().enumerate() {
+            let e = packed_at(off);
             let w = _mm256_broadcast_sd(&c.w[k]);
             let mut t = _mm256_add_pd(
                 _mm256_load_pd(e),

@@ -98,7 +98,22 @@ pub fn index_warped(pat: &Pattern, q: DVec3) -> usize {
 /// (measured: a `pigment_map`, pigment list, `texture_map`, texture list or `normal_map` of
 /// `gradient z` stripes under `warp { turbulence }` or plain turbulence shows wavy stripes in
 /// povray; marble's and wood's own turbulence, which is not a warp, leaves them straight).
+/// Inlined for its first test (no warps, and no turbulence or marble's and wood's own: the
+/// point stays), which spares most patterns a ~30-instruction call.
+#[inline]
 pub fn warped(pat: &Pattern, p: DVec3) -> DVec3 {
+    if pat.warps.is_empty()
+        && (pat.turbulence.is_none() || matches!(pat.kind, PatternKind::Marble | PatternKind::Wood))
+    {
+        p
+    } else {
+        warped_moved(pat, p)
+    }
+}
+
+/// `warped` of a pattern with warps or turbulence.
+#[inline(never)]
+fn warped_moved(pat: &Pattern, p: DVec3) -> DVec3 {
     let mut q = p;
     for w in pat.warps.iter().rev() {
         q = warp::apply(w, q, pat.noise_generator);
@@ -115,6 +130,13 @@ pub fn warped(pat: &Pattern, p: DVec3) -> DVec3 {
 
 /// Frequency, phase and wave type.
 fn shape(pat: &Pattern, v: f64) -> f64 {
+    shape_inline(pat, v)
+}
+
+/// `shape` written into its caller: a normal's four samples (gradient, radial, the noises)
+/// paid its call and an array `map` on each (~30 instructions a sample on normavg).
+#[inline(always)]
+fn shape_inline(pat: &Pattern, v: f64) -> f64 {
     if pat.is_block() {
         return v;
     }
@@ -169,10 +191,7 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
         }
         PatternKind::Gradient(a) => gradient(q, *a),
         PatternKind::Onion => fmod(q.length(), 1.0),
-        PatternKind::Radial => {
-            let a = (-q.z).atan2(q.x) / TAU;
-            a - a.floor()
-        }
+        PatternKind::Radial => radial(q),
         PatternKind::Spherical => 1.0 - q.length().min(1.0),
         PatternKind::Cylindrical => 1.0 - (q.x * q.x + q.z * q.z).sqrt().min(1.0),
         PatternKind::Boxed => 1.0 - q.x.abs().max(q.y.abs()).max(q.z.abs()).min(1.0),
@@ -268,6 +287,13 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
         // Maps handle `average` themselves; as a plain value it is the middle.
         PatternKind::Unsupported | PatternKind::Average => 0.5,
     }
+}
+
+/// Radial's value before the wave: the angle about y from +x, in turns.
+#[inline(always)]
+fn radial(q: DVec3) -> f64 {
+    let a = (-q.z).atan2(q.x) / TAU;
+    a - a.floor()
 }
 
 /// Gradient's value before the wave. Measured: gradient x gives 0.3 at x = 1.3, 1 at 1, 0 at
@@ -392,7 +418,11 @@ fn noise_values4(pat: &Pattern, qs: [DVec3; 4]) -> Option<[f64; 4]> {
         }
         _ => return None,
     };
-    Some(raw.map(|v| shape(pat, v)))
+    let mut out = [0.0; 4];
+    for (o, v) in out.iter_mut().zip(raw) {
+        *o = shape_inline(pat, v);
+    }
+    Some(out)
 }
 
 /// A triangle wave of period 1 from 0 (at integers) to 1 (at half-integers).
@@ -426,11 +456,27 @@ pub fn values_warped4(pat: &Pattern, qs: [DVec3; 4]) -> [f64; 4] {
         return vs;
     }
     // Gradient normals (normal maps of gradients, slope maps) read four samples of a dot
-    // product: `raw`'s call and dispatch per sample cost more than the pattern.
-    if let PatternKind::Gradient(a) = &pat.kind {
-        return qs.map(|q| shape(pat, gradient(q, *a)));
+    // product: `raw`'s call and dispatch per sample cost more than the pattern. Radial's
+    // samples, likewise, are `raw`'s angle and `shape`.
+    let mut out = [0.0; 4];
+    match &pat.kind {
+        PatternKind::Gradient(a) => {
+            for (o, q) in out.iter_mut().zip(qs) {
+                *o = shape_inline(pat, gradient(q, *a));
+            }
+        }
+        PatternKind::Radial => {
+            for (o, q) in out.iter_mut().zip(qs) {
+                *o = shape_inline(pat, radial(q));
+            }
+        }
+        _ => {
+            for (o, q) in out.iter_mut().zip(qs) {
+                *o = value_warped(pat, q);
+            }
+        }
     }
-    qs.map(|q| value_warped(pat, q))
+    out
 }
 
 fn checker(q: DVec3) -> usize {
@@ -682,6 +728,9 @@ mod tests {
             PatternKind::Agate { turb: 1.6 },
             PatternKind::Marble,
             PatternKind::Wood,
+            // Not noise, but with their own four-sample paths (`shape_inline`).
+            PatternKind::Gradient(DVec3::new(0.3, 1.0, -0.7)),
+            PatternKind::Radial,
         ];
         for kind in kinds {
             for (gen, turbulence, wave) in [
@@ -698,6 +747,40 @@ mod tests {
                     let qs = [0.0, 0.003, -0.004, 0.2].map(|d| c + DVec3::new(d, 2.0 * d, -d));
                     let want = qs.map(|q| value_warped(&p, q).to_bits());
                     assert_eq!(values_warped4(&p, qs).map(f64::to_bits), want, "{kind:?}");
+                }
+            }
+        }
+    }
+
+    /// `warped`'s inline test keeps the point only where the whole warp would: no warps, and
+    /// no turbulence or marble's and wood's own (zero turbulence too, which leaves it).
+    #[test]
+    fn warped_test_is_the_whole_warp() {
+        use crate::scene::pattern::Turbulence;
+        let turb = Turbulence {
+            amount: DVec3::new(0.7, 0.2, 0.1),
+            ..Default::default()
+        };
+        let still = Turbulence {
+            amount: DVec3::ZERO,
+            ..Default::default()
+        };
+        let kinds = [
+            PatternKind::Wood,
+            PatternKind::Marble,
+            PatternKind::Granite,
+            PatternKind::Agate { turb: 1.6 },
+            PatternKind::Gradient(DVec3::X),
+        ];
+        for kind in kinds {
+            for turbulence in [None, Some(turb), Some(still)] {
+                let mut p = pat(kind.clone());
+                p.turbulence = turbulence;
+                for n in 0..200 {
+                    let t = n as f64 * 0.37;
+                    let q = DVec3::new(t.sin() * 5.0, t * 0.03 - 2.0, t.cos());
+                    let bits = |v: DVec3| v.to_array().map(f64::to_bits);
+                    assert_eq!(bits(warped(&p, q)), bits(warped_moved(&p, q)), "{kind:?}");
                 }
             }
         }

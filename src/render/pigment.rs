@@ -27,14 +27,14 @@ pub fn eval(p: &Pigment, world: DVec3) -> Rgbft {
     match &p.kind {
         PigmentKind::Solid(c) => *c, // answered above
         PigmentKind::Mapped { pattern: pat, map } => {
-            lookup(map, pattern::value_warped(pat, warped(pat, lp)))
+            lookup(map, pattern::value_warped(pat, pattern::warped(pat, lp)))
         }
         PigmentKind::List {
             pattern: pat,
             items,
         } => {
             // The entries see the warped point (measured: see `pattern::warped`).
-            let q = warped(pat, lp);
+            let q = pattern::warped(pat, lp);
             let i = pattern::index_warped(pat, q).min(items.len().saturating_sub(1));
             items.get(i).map_or(Rgbft::BLACK, |item| eval(item, q))
         }
@@ -48,17 +48,6 @@ pub fn eval(p: &Pigment, world: DVec3) -> Rgbft {
         // Turbulence and warps move the point the image is looked up at (measured: warp1.pov).
         PigmentKind::ImageMap(im, Some(pat)) => image(im, pattern::warped(pat, lp)),
         PigmentKind::ImageMap(im, None) => image(im, lp),
-    }
-}
-
-/// `pattern::warped`, without its call for the patterns that have neither warps nor
-/// turbulence (most), whose point it returns unchanged.
-#[inline]
-fn warped(pat: &Pattern, lp: DVec3) -> DVec3 {
-    if pat.warps.is_empty() && pat.turbulence.is_none() {
-        lp
-    } else {
-        pattern::warped(pat, lp)
     }
 }
 
