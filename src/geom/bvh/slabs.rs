@@ -256,6 +256,115 @@ impl Slabs2 {
 mod tests {
     use super::super::Bvh;
     use super::*;
+    use crate::geom::test_rng::Lcg;
+
+    /// The paired test's entry distance `h` against `Aabb::hit`'s answer `e` for ray `k`: the
+    /// same hit or miss, and the same bits of the entry except for the sign of a zero.
+    fn same_entry(h: Option<f64>, e: Option<(f64, f64)>, k: usize) {
+        let e = e.map(|t| t.0);
+        assert_eq!(h.map(|t| t == 0.0), e.map(|t| t == 0.0), "{k}");
+        assert_eq!(
+            h.filter(|t| *t != 0.0).map(f64::to_bits),
+            e.filter(|t| *t != 0.0).map(f64::to_bits),
+            "{k}"
+        );
+    }
+
+    #[test]
+    fn paired_slabs_match_aabb_hit() {
+        let mut rng = Lcg(5);
+        let mut boxes: Vec<Aabb> = (0..64)
+            .map(|_| {
+                let (a, b) = (rng.vec(10.0), rng.vec(10.0));
+                Aabb::new(a.min(b), a.max(b))
+            })
+            .collect();
+        // Flat boxes, a point box, and boxes the rays start on or inside.
+        boxes.push(Aabb::new(
+            DVec3::new(-1.0, 0.0, -1.0),
+            DVec3::new(1.0, 0.0, 1.0),
+        ));
+        boxes.push(Aabb::new(DVec3::splat(0.5), DVec3::splat(0.5)));
+        boxes.push(Aabb::new(DVec3::splat(-20.0), DVec3::splat(20.0)));
+        let mut checked = 0;
+        for k in 0..4000 {
+            let origin = if k % 7 == 0 {
+                DVec3::ZERO
+            } else {
+                rng.vec(15.0)
+            };
+            let dir = rng.vec(2.0);
+            let inv_dir = DVec3::ONE / dir;
+            let Some(s) = Slabs2::new(origin, inv_dir) else {
+                continue;
+            };
+            let tmax = if k % 3 == 0 {
+                f64::INFINITY
+            } else {
+                rng.next() * 30.0
+            };
+            let (a, b) = (&boxes[k % boxes.len()], &boxes[(k * 7 + 3) % boxes.len()]);
+            let (ha, hb) = s.hit2(a, b, tmax);
+            same_entry(ha, a.hit(origin, inv_dir, tmax), k);
+            same_entry(hb, b.hit(origin, inv_dir, tmax), k);
+            checked += 1;
+        }
+        assert!(checked > 3000);
+        assert!(Slabs2::new(DVec3::splat(f64::INFINITY), DVec3::ONE).is_none());
+        assert!(Slabs2::new(DVec3::ZERO, DVec3::splat(f64::NAN)).is_none());
+    }
+
+    /// Rays with direction components of ±0 (infinite reciprocals) whose origins lie inside,
+    /// outside and exactly on the boxes' faces, where `Aabb::hit` meets 0·∞ = NaN: the paired
+    /// test gives its answers and entry distances bit for bit.
+    #[test]
+    fn paired_slabs_match_aabb_hit_for_flat_rays() {
+        let mut rng = Lcg(11);
+        // Whole-number corners, so that origins picked on the same grid land on faces.
+        let grid = |rng: &mut Lcg| (rng.next() * 8.0).floor() - 4.0;
+        let mut boxes = Vec::new();
+        for _ in 0..48 {
+            let a = DVec3::new(grid(&mut rng), grid(&mut rng), grid(&mut rng));
+            let b = DVec3::new(grid(&mut rng), grid(&mut rng), grid(&mut rng));
+            boxes.push(Aabb::new(a.min(b), a.max(b)));
+        }
+        let zeros = [0.0, -0.0];
+        let mut checked = 0;
+        for k in 0..20_000usize {
+            let origin = DVec3::new(grid(&mut rng), grid(&mut rng), grid(&mut rng))
+                + if k % 2 == 0 {
+                    DVec3::ZERO
+                } else {
+                    rng.vec(0.5)
+                };
+            let mut dir = rng.vec(2.0);
+            // One or two components zero (of either sign); sometimes a subnormal one, whose
+            // reciprocal overflows to infinity.
+            let z = zeros[k % 2];
+            match k % 7 {
+                0 => dir.x = z,
+                1 => dir.y = z,
+                2 => dir.z = z,
+                3 => (dir.x, dir.y) = (z, -z),
+                4 => (dir.y, dir.z) = (z, z),
+                5 => dir.x = 1e-310,
+                _ => (dir.x, dir.z) = (-z, z),
+            }
+            let inv_dir = DVec3::ONE / dir;
+            let s = Slabs2::new(origin, inv_dir).expect("flat rays take the paired test");
+            let tmax = if k % 3 == 0 {
+                f64::INFINITY
+            } else {
+                rng.next() * 30.0
+            };
+            let (a, b) = (&boxes[k % boxes.len()], &boxes[(k * 7 + 3) % boxes.len()]);
+            let (ha, hb) = s.hit2(a, b, tmax);
+            same_entry(ha, a.hit(origin, inv_dir, tmax), k);
+            same_entry(hb, b.hit(origin, inv_dir, tmax), k);
+            checked += 1;
+        }
+        assert_eq!(checked, 20_000);
+    }
 
     /// What lets `Bvh::traverse_inv` skip the root's own box for rays without a flat axis:
     /// where the paired test finds a ray missing a node's box (the union of its children's),
