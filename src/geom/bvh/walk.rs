@@ -48,6 +48,8 @@ impl Recip {
         // origin coordinate through `o - o`. No term is -inf, so the sum is below 4 exactly
         // for plain rays, in a dozen instructions where the three tests took ~40.
         let o = ray.origin;
+        // `o - o` is meant: zero exactly for a finite coordinate, NaN for any other.
+        #[allow(clippy::eq_op)]
         let sum = (x * inv.x + (o.x - o.x)) + (y * inv.y + (o.y - o.y)) + (z * inv.z + (o.z - o.z));
         Recip {
             inv,
