@@ -294,6 +294,18 @@ impl Slabs {
         }
     }
 
+    /// `new` for a ray whose `clean` is already known (`geom::bvh::Recip::plain` is `new`'s
+    /// test), without testing it again.
+    #[inline]
+    pub fn known(origin: DVec3, inv_dir: DVec3, clean: bool) -> Slabs {
+        debug_assert_eq!(clean, Slabs::new(origin, inv_dir).clean);
+        Slabs {
+            origin,
+            inv_dir,
+            clean,
+        }
+    }
+
     /// Whether the ray crosses `b` within `[0, tmax]`: `b.hit(origin, inv_dir, tmax).is_some()`.
     #[inline(always)]
     pub fn hits(&self, b: &Aabb, tmax: f64) -> bool {

@@ -30,8 +30,17 @@ impl Plane {
         }
     }
 
+    /// The plane of a half-space as `Shape::half_space` gives it (a plane's own normal and
+    /// distance): the same plane, bit for bit, for callers that hold the shape behind a
+    /// `dyn Shape` and want its crossings without the call through the table.
+    pub fn from_half_space((normal, distance): (DVec3, f64)) -> Plane {
+        Plane { normal, distance }
+    }
+
+    /// The crossing `intersect_first` reports when it is below its `tmax`: the one crossing
+    /// with `t > EPSILON`, if any.
     #[inline]
-    fn hit_t(&self, ray: &Ray) -> Option<f64> {
+    pub fn hit_t(&self, ray: &Ray) -> Option<f64> {
         let denom = self.normal.dot(ray.dir);
         if denom == 0.0 {
             return None;

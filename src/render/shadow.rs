@@ -28,6 +28,12 @@ impl<'a> Tracer<'a> {
         gathering: bool,
         ctx: &mut TraceCtx<'a>,
     ) -> DVec3 {
+        // A point light without media attenuation (nearly every light): the shadow ray's
+        // answer as it is, which `attenuated` returns unchanged, reached by a jump where the
+        // general path below made a frame of its own (~40 instructions a shadow ray).
+        if light.area.is_none() && !light.media_attenuation {
+            return self.shadow(p, l, dist, slot, ctx);
+        }
         let seen = match &light.area {
             Some(a) if self.samples_area(light, gathering) => {
                 self.area_seen(p, (slot, light), a, ctx)
@@ -171,13 +177,14 @@ impl<'a> Tracer<'a> {
         if ctx.blockers.len() <= slot {
             ctx.blockers.resize(slot + 1, None);
         }
-        // Once for the cached blocker's box and the walk (each took its own three divisions);
-        // `ray_recip` is `recip` to the bit, read so as to forward from the stores just made.
-        let inv = crate::geom::bvh::ray_recip(&ray);
+        // Once for the cached blocker's box and the walk (each took its own three divisions,
+        // and its own tests of the ray for NaN-free slabs); the reciprocal is `recip` to the
+        // bit, read so as to forward from the stores just made.
+        let r = crate::geom::bvh::Recip::of(&ray);
         // The cached boxes' tests are `Aabb::hit(..).is_some()`, through plain comparisons
         // where no slab distance can be NaN (`Slabs`): most cached blockers are not in the
         // way, and the NaN-aware test was ~75 instructions of every such shadow ray.
-        let slabs = crate::math::Slabs::new(ray.origin, inv);
+        let slabs = crate::math::Slabs::known(ray.origin, r.inv, r.plain);
         let mut tried = None;
         if let Some(b) = ctx.blockers[slot] {
             if slabs.hits(&b.bounds, dist) {
@@ -208,8 +215,7 @@ impl<'a> Tracer<'a> {
         }
         let mut att = DVec3::ONE;
         let mut blocker = None;
-        let mut members = std::mem::take(&mut ctx.shadow_members);
-        self.scene.for_each_candidate_inv(&ray, inv, dist, |obj| {
+        self.scene.for_each_candidate_recip(&ray, &r, dist, |obj| {
             // The cached blocker, opaque, was just found not to block.
             if obj.no_shadow || tried.is_some_and(|t| std::ptr::eq(t, obj)) {
                 return false;
@@ -223,6 +229,8 @@ impl<'a> Tracer<'a> {
                 return false;
             }
             let start = ctx.surface.len();
+            // Taken here, not for every shadow ray: only transparent objects need it.
+            let mut members = std::mem::take(&mut ctx.shadow_members);
             members.clear();
             if obj.union_members(&ray, dist, ctx, &mut members) {
                 // A union's crossings are its members' in member order. Any crossing that
@@ -237,6 +245,7 @@ impl<'a> Tracer<'a> {
                     if !m.transparent {
                         if self.member_blocks(m, &ray, l, dist, photons_only, ctx) {
                             ctx.member_blockers[slot] = Some((obj, m));
+                            ctx.shadow_members = members;
                             att = DVec3::ZERO;
                             return true;
                         }
@@ -254,6 +263,7 @@ impl<'a> Tracer<'a> {
             } else {
                 obj.all_hits(&ray, dist, ctx);
             }
+            ctx.shadow_members = members;
             for i in start..ctx.surface.len() {
                 let h = ctx.surface[i];
                 if self.crossing_blocks(&h, &ray, l, photons_only, Some(&mut att)) {
@@ -286,7 +296,6 @@ impl<'a> Tracer<'a> {
             ctx.surface.truncate(start);
             att == DVec3::ZERO
         });
-        ctx.shadow_members = members;
         if blocker.is_some() {
             ctx.blockers[slot] = blocker;
         }

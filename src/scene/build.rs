@@ -47,10 +47,8 @@ pub struct Scene {
     bvh: Bvh,
     /// BVH primitive index → object index.
     bounded: Vec<usize>,
-    unbounded: Vec<usize>,
-    /// For each of `unbounded`, a box holding all its crossings and its inside, when one is
-    /// known (`scene::cull::object_cull`): rays and points outside skip the object.
-    unbounded_cull: Vec<Option<Aabb>>,
+    /// The objects outside the BVH.
+    unbounded: Vec<query::Unbounded>,
     /// (address of a CSG member, address of its node), sorted: the way up from a leaf for
     /// `inside_other`, which would otherwise search every object tree for the leaf.
     parents: Vec<(usize, usize)>,
@@ -138,9 +136,9 @@ fn build_from<O: std::borrow::Borrow<ObjectDesc>>(
         }
     }
     let boxes: Vec<Aabb> = bounded.iter().map(|&i| objects[i].bounds).collect();
-    let unbounded_cull = unbounded
-        .iter()
-        .map(|&i| crate::scene::cull::object_cull(&objects[i]))
+    let unbounded = unbounded
+        .into_iter()
+        .map(|i| query::Unbounded::of(&objects, i))
         .collect();
     let bvh = Bvh::build(&boxes);
     let mut sky = desc.sky_sphere.clone().unwrap_or_default();
@@ -157,7 +155,6 @@ fn build_from<O: std::borrow::Borrow<ObjectDesc>>(
         light_sets: ctx.light_sets,
         objects,
         bvh,
-        unbounded_cull,
         bounded,
         unbounded,
         parents: Vec::new(),

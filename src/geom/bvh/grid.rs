@@ -159,11 +159,11 @@ impl Bvh {
             return Bvh::default();
         };
         Bvh {
+            paired: !g.nodes.is_empty() && g.finite,
             nodes: g.nodes,
             prims: g.prims,
             root_box,
             root,
-            finite: g.finite,
         }
     }
 }

@@ -31,6 +31,36 @@ impl Pair {
     }
 }
 
+/// Which of a node's two boxes a ray crosses within (0, tmax), bit 0 the first and bit 1 the
+/// second, and their entry distances (meaningful for the crossed ones): the walk branches on
+/// the mask as the comparison left it, where an `Option` pair cost a few instructions a node
+/// to build and take apart.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Crossing {
+    pub(super) mask: u32,
+    pub(super) near: [f64; 2],
+}
+
+impl Crossing {
+    /// The crossing of two boxes tested one at a time (`Aabb::hit`'s entry distances).
+    #[inline(always)]
+    pub(super) fn of(a: Option<f64>, b: Option<f64>) -> Crossing {
+        Crossing {
+            mask: a.is_some() as u32 | (b.is_some() as u32) << 1,
+            near: [a.unwrap_or(0.0), b.unwrap_or(0.0)],
+        }
+    }
+
+    /// Each box's entry distance, or None where the ray misses it.
+    #[inline]
+    pub(super) fn options(self) -> (Option<f64>, Option<f64>) {
+        (
+            (self.mask & 1 != 0).then_some(self.near[0]),
+            (self.mask & 2 != 0).then_some(self.near[1]),
+        )
+    }
+}
+
 /// The slab test of two boxes at once, one per SSE lane, for a ray whose slab distances cannot
 /// be NaN except along its `flat` axes (computed apart). Each lane does `Aabb::hit`'s
 /// operations in its order; without NaNs the minimum and maximum instructions give
@@ -111,27 +141,53 @@ impl Slabs2 {
     /// `Aabb::hit` of `a` and of `b` within (0, tmax): the entry distances of those crossed.
     #[inline]
     pub(super) fn hit2(&self, a: &Aabb, b: &Aabb, tmax: f64) -> (Option<f64>, Option<f64>) {
-        self.hit_pair(&Pair::of(a, b), tmax)
+        self.hit_pair(&Pair::of(a, b), tmax).options()
     }
 
     /// `Aabb::hit` of both boxes of `p` within (0, tmax): the entry distances of those crossed.
     #[inline]
-    pub(super) fn hit_pair(&self, p: &Pair, tmax: f64) -> (Option<f64>, Option<f64>) {
+    pub(super) fn hit_pair(&self, p: &Pair, tmax: f64) -> Crossing {
         self.pair_test::<true>(p, tmax)
+    }
+
+    /// `new` for a ray known to be plain (`Recip::plain`: a finite origin, finite and nonzero
+    /// reciprocals), without its tests: `new` would give this, with no flat axis.
+    #[inline(always)]
+    pub(super) fn plain(origin: DVec3, inv_dir: DVec3) -> Slabs2 {
+        use std::arch::x86_64::_mm_set1_pd;
+        debug_assert!(Slabs2::new(origin, inv_dir).is_some_and(|s| !s.any_flat()));
+        // SAFETY: SSE2 is part of x86_64.
+        unsafe {
+            Slabs2 {
+                origin: [
+                    _mm_set1_pd(origin.x),
+                    _mm_set1_pd(origin.y),
+                    _mm_set1_pd(origin.z),
+                ],
+                inv_dir: [
+                    _mm_set1_pd(inv_dir.x),
+                    _mm_set1_pd(inv_dir.y),
+                    _mm_set1_pd(inv_dir.z),
+                ],
+                flat: [false; 3],
+                origin_s: origin,
+                inv_s: inv_dir,
+            }
+        }
     }
 
     /// `hit_pair` for a ray with no flat axis (`any_flat` false), which the walk knows once
     /// per ray: without the per-axis look at `flat`, three tests and branches a node, and the
     /// registers they held (mirror_spheres' walks are ~3.7 nodes a camera ray).
     #[inline]
-    pub(super) fn hit_pair_unflat(&self, p: &Pair, tmax: f64) -> (Option<f64>, Option<f64>) {
+    pub(super) fn hit_pair_unflat(&self, p: &Pair, tmax: f64) -> Crossing {
         debug_assert!(!self.any_flat());
         self.pair_test::<false>(p, tmax)
     }
 
     /// The paired test; `FLAT` false leaves out the flat axes' path, for rays that have none.
     #[inline(always)]
-    fn pair_test<const FLAT: bool>(&self, p: &Pair, tmax: f64) -> (Option<f64>, Option<f64>) {
+    fn pair_test<const FLAT: bool>(&self, p: &Pair, tmax: f64) -> Crossing {
         use std::arch::x86_64::*;
         // SAFETY: SSE2 is part of x86_64; `Pair` is 16-byte aligned and each `[f64; 2]` row
         // sits at a multiple of 16 bytes in it, as `_mm_load_pd` needs; the store writes two
@@ -162,13 +218,10 @@ impl Slabs2 {
             // chain of two operations instead of three before the comparison.
             let near = _mm_max_pd(_mm_max_pd(nx, _mm_setzero_pd()), _mm_max_pd(ny, nz));
             let far = _mm_min_pd(_mm_min_pd(fx, _mm_set1_pd(tmax)), _mm_min_pd(fy, fz));
-            let mask = _mm_movemask_pd(_mm_cmple_pd(near, far));
+            let mask = _mm_movemask_pd(_mm_cmple_pd(near, far)) as u32;
             let mut t = [0.0f64; 2];
             _mm_storeu_pd(t.as_mut_ptr(), near);
-            (
-                (mask & 1 != 0).then_some(t[0]),
-                (mask & 2 != 0).then_some(t[1]),
-            )
+            Crossing { mask, near: t }
         }
     }
 }
@@ -188,10 +241,13 @@ impl Slabs2 {
     pub(super) fn hit2(&self, _: &Aabb, _: &Aabb, _: f64) -> (Option<f64>, Option<f64>) {
         unreachable!()
     }
-    pub(super) fn hit_pair(&self, _: &Pair, _: f64) -> (Option<f64>, Option<f64>) {
+    pub(super) fn plain(_: DVec3, _: DVec3) -> Slabs2 {
+        Slabs2
+    }
+    pub(super) fn hit_pair(&self, _: &Pair, _: f64) -> Crossing {
         unreachable!()
     }
-    pub(super) fn hit_pair_unflat(&self, _: &Pair, _: f64) -> (Option<f64>, Option<f64>) {
+    pub(super) fn hit_pair_unflat(&self, _: &Pair, _: f64) -> Crossing {
         unreachable!()
     }
 }
@@ -200,6 +256,115 @@ impl Slabs2 {
 mod tests {
     use super::super::Bvh;
     use super::*;
+    use crate::geom::test_rng::Lcg;
+
+    /// The paired test's entry distance `h` against `Aabb::hit`'s answer `e` for ray `k`: the
+    /// same hit or miss, and the same bits of the entry except for the sign of a zero.
+    fn same_entry(h: Option<f64>, e: Option<(f64, f64)>, k: usize) {
+        let e = e.map(|t| t.0);
+        assert_eq!(h.map(|t| t == 0.0), e.map(|t| t == 0.0), "{k}");
+        assert_eq!(
+            h.filter(|t| *t != 0.0).map(f64::to_bits),
+            e.filter(|t| *t != 0.0).map(f64::to_bits),
+            "{k}"
+        );
+    }
+
+    #[test]
+    fn paired_slabs_match_aabb_hit() {
+        let mut rng = Lcg(5);
+        let mut boxes: Vec<Aabb> = (0..64)
+            .map(|_| {
+                let (a, b) = (rng.vec(10.0), rng.vec(10.0));
+                Aabb::new(a.min(b), a.max(b))
+            })
+            .collect();
+        // Flat boxes, a point box, and boxes the rays start on or inside.
+        boxes.push(Aabb::new(
+            DVec3::new(-1.0, 0.0, -1.0),
+            DVec3::new(1.0, 0.0, 1.0),
+        ));
+        boxes.push(Aabb::new(DVec3::splat(0.5), DVec3::splat(0.5)));
+        boxes.push(Aabb::new(DVec3::splat(-20.0), DVec3::splat(20.0)));
+        let mut checked = 0;
+        for k in 0..4000 {
+            let origin = if k % 7 == 0 {
+                DVec3::ZERO
+            } else {
+                rng.vec(15.0)
+            };
+            let dir = rng.vec(2.0);
+            let inv_dir = DVec3::ONE / dir;
+            let Some(s) = Slabs2::new(origin, inv_dir) else {
+                continue;
+            };
+            let tmax = if k % 3 == 0 {
+                f64::INFINITY
+            } else {
+                rng.next() * 30.0
+            };
+            let (a, b) = (&boxes[k % boxes.len()], &boxes[(k * 7 + 3) % boxes.len()]);
+            let (ha, hb) = s.hit2(a, b, tmax);
+            same_entry(ha, a.hit(origin, inv_dir, tmax), k);
+            same_entry(hb, b.hit(origin, inv_dir, tmax), k);
+            checked += 1;
+        }
+        assert!(checked > 3000);
+        assert!(Slabs2::new(DVec3::splat(f64::INFINITY), DVec3::ONE).is_none());
+        assert!(Slabs2::new(DVec3::ZERO, DVec3::splat(f64::NAN)).is_none());
+    }
+
+    /// Rays with direction components of ±0 (infinite reciprocals) whose origins lie inside,
+    /// outside and exactly on the boxes' faces, where `Aabb::hit` meets 0·∞ = NaN: the paired
+    /// test gives its answers and entry distances bit for bit.
+    #[test]
+    fn paired_slabs_match_aabb_hit_for_flat_rays() {
+        let mut rng = Lcg(11);
+        // Whole-number corners, so that origins picked on the same grid land on faces.
+        let grid = |rng: &mut Lcg| (rng.next() * 8.0).floor() - 4.0;
+        let mut boxes = Vec::new();
+        for _ in 0..48 {
+            let a = DVec3::new(grid(&mut rng), grid(&mut rng), grid(&mut rng));
+            let b = DVec3::new(grid(&mut rng), grid(&mut rng), grid(&mut rng));
+            boxes.push(Aabb::new(a.min(b), a.max(b)));
+        }
+        let zeros = [0.0, -0.0];
+        let mut checked = 0;
+        for k in 0..20_000usize {
+            let origin = DVec3::new(grid(&mut rng), grid(&mut rng), grid(&mut rng))
+                + if k % 2 == 0 {
+                    DVec3::ZERO
+                } else {
+                    rng.vec(0.5)
+                };
+            let mut dir = rng.vec(2.0);
+            // One or two components zero (of either sign); sometimes a subnormal one, whose
+            // reciprocal overflows to infinity.
+            let z = zeros[k % 2];
+            match k % 7 {
+                0 => dir.x = z,
+                1 => dir.y = z,
+                2 => dir.z = z,
+                3 => (dir.x, dir.y) = (z, -z),
+                4 => (dir.y, dir.z) = (z, z),
+                5 => dir.x = 1e-310,
+                _ => (dir.x, dir.z) = (-z, z),
+            }
+            let inv_dir = DVec3::ONE / dir;
+            let s = Slabs2::new(origin, inv_dir).expect("flat rays take the paired test");
+            let tmax = if k % 3 == 0 {
+                f64::INFINITY
+            } else {
+                rng.next() * 30.0
+            };
+            let (a, b) = (&boxes[k % boxes.len()], &boxes[(k * 7 + 3) % boxes.len()]);
+            let (ha, hb) = s.hit2(a, b, tmax);
+            same_entry(ha, a.hit(origin, inv_dir, tmax), k);
+            same_entry(hb, b.hit(origin, inv_dir, tmax), k);
+            checked += 1;
+        }
+        assert_eq!(checked, 20_000);
+    }
 
     /// What lets `Bvh::traverse_inv` skip the root's own box for rays without a flat axis:
     /// where the paired test finds a ray missing a node's box (the union of its children's),
@@ -269,7 +434,7 @@ mod tests {
                 };
                 for &(whole, pair) in &parents {
                     if s.hit2(&whole, &whole, tmax).0.is_none() {
-                        assert_eq!(s.hit_pair(pair, tmax), (None, None), "n={n} k={k}");
+                        assert_eq!(s.hit_pair(pair, tmax).mask, 0, "n={n} k={k}");
                         checked += 1;
                     }
                 }
@@ -329,8 +494,10 @@ mod tests {
                 _ => next() * 30.0,
             };
             let pair = Pair::of(&a, &b);
-            let bits =
-                |h: (Option<f64>, Option<f64>)| (h.0.map(f64::to_bits), h.1.map(f64::to_bits));
+            let bits = |c: Crossing| {
+                let h = c.options();
+                (h.0.map(f64::to_bits), h.1.map(f64::to_bits))
+            };
             assert_eq!(
                 bits(s.hit_pair_unflat(&pair, tmax)),
                 bits(s.hit_pair(&pair, tmax)),
