@@ -12,7 +12,7 @@
 //! refinement makes from exact values, and the root is its root to the bit (unit test
 //! `lazy_refine_is_the_plain_one`).
 
-use super::linear::Lin;
+use super::linear::{Lin, Line};
 use super::{Power, Superellipsoid};
 use crate::math::DVec3;
 
@@ -208,6 +208,39 @@ impl Superellipsoid {
     }
 }
 
+/// A point the refinement evaluated exactly (`o + u·s`), with its powers and the first-order
+/// models there, built when first asked: an exact end is often replaced by the other end's
+/// exact evaluation before any midpoint needs it (a regula falsi step evaluates both).
+struct Reference {
+    pw: Powers,
+    s: f64,
+    p: DVec3,
+    models: Option<(Lin, Line)>,
+}
+
+impl Reference {
+    fn new(pw: Powers, s: f64, p: DVec3) -> Reference {
+        Reference {
+            pw,
+            s,
+            p,
+            models: None,
+        }
+    }
+
+    /// The powers, `Lin` at the point and `Line` along the ray (`eta` as `Line::new` takes
+    /// it).
+    #[inline(always)]
+    fn models(&mut self, se: &Superellipsoid, u: DVec3, eta: DVec3) -> (&Powers, &(Lin, Line)) {
+        let Reference { pw, s, p, models } = self;
+        let models = models.get_or_insert_with(|| {
+            let lin = pw.lin(se);
+            (lin, Line::new(&lin, *s, *p, u, eta))
+        });
+        (pw, models)
+    }
+}
+
 /// One end of the bracket: its value, exact when `err` is 0, else within `err` of the exact
 /// value after `halvings` Illinois halvings.
 #[derive(Clone, Copy)]
@@ -248,18 +281,19 @@ pub(super) fn refine(
     let mut eb = End { s: b, v: fb, ..ea };
     let tol = 1e-13 * a.abs().max(b.abs()).max(1.0);
     let mut side = 0i8;
-    // The last point evaluated exactly, whose powers the series start from, and the
-    // first-order model there (asked first: cheaper, and enough for most midpoints).
-    let mut reference: Option<(Powers, Lin)> = None;
-    let exact = |end: &mut End, reference: &mut Option<(Powers, Lin)>| {
+    // The last point evaluated exactly, whose powers the series start from (`Reference`).
+    let mut reference: Option<Reference> = None;
+    let eta = Line::eta(o, u, a.abs().max(b.abs()));
+    let exact = |end: &mut End, reference: &mut Option<Reference>| {
         if end.err != 0.0 {
-            let (mut v, pw) = se.value_powers(o + u * end.s);
+            let p = o + u * end.s;
+            let (mut v, pw) = se.value_powers(p);
             for _ in 0..end.halvings {
                 v *= 0.5;
             }
             (end.v, end.err) = (v, 0.0);
             if let Some(pw) = pw {
-                *reference = Some((pw, pw.lin(se)));
+                *reference = Some(Reference::new(pw, end.s, p));
             }
         }
     };
@@ -283,14 +317,18 @@ pub(super) fn refine(
             exact(&mut eb, &mut reference);
             false_position(a, ea.v, b, eb.v)
         };
-        let p = o + u * m;
+        let p = || o + u * m;
         // The series where the model cannot settle the sign: it costs about 0.6 of an exact
         // evaluation and settles most of what the model leaves.
         let settles = |&(v, err): &(f64, f64)| v.abs() > err && v.abs() < 1e300;
-        let estimate = reference.as_ref().and_then(|(pw, lin)| {
-            lin.at(p)
-                .filter(settles)
-                .or_else(|| se.near(pw, p).filter(settles))
+        let estimate = reference.as_mut().and_then(|r| {
+            let (pw, (lin, line)) = r.models(se, u, eta);
+            line.at(m).or_else(|| {
+                let p = p();
+                lin.at(p)
+                    .filter(settles)
+                    .or_else(|| se.near(pw, p).filter(settles))
+            })
         });
         let em = match estimate {
             Some((v, err)) if v.abs() > err && v.abs() < 1e300 => End {
@@ -300,12 +338,13 @@ pub(super) fn refine(
                 halvings: 0,
             },
             _ => {
+                let p = p();
                 let (fm, pw) = se.value_powers(p);
                 if fm.is_nan() {
                     return m;
                 }
                 if let Some(pw) = pw {
-                    reference = Some((pw, pw.lin(se)));
+                    reference = Some(Reference::new(pw, m, p));
                 }
                 End {
                     s: m,
