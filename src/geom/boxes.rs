@@ -81,6 +81,10 @@ fn slab(
 }
 
 impl Shape for BoxShape {
+    fn crossings_hug_surface(&self) -> bool {
+        true
+    }
+
     fn bounds(&self) -> Aabb {
         if self.empty {
             Aabb::EMPTY

@@ -53,6 +53,10 @@ impl Plane {
 }
 
 impl Shape for Plane {
+    fn crossings_hug_surface(&self) -> bool {
+        true
+    }
+
     fn bounds(&self) -> Aabb {
         if self.normal == DVec3::ZERO {
             Aabb::EMPTY
