@@ -325,39 +325,6 @@ impl Slabs {
         tnear <= tfar
     }
 
-    /// `hits`, with where the ray enters `b` (at 0 when it starts inside): `Some` exactly when
-    /// `hits` is true. A ray that may make NaNs enters at minus infinity (no place is
-    /// claimed for it).
-    #[inline(always)]
-    pub fn entry(&self, b: &Aabb, tmax: f64) -> Option<f64> {
-        if !self.clean {
-            return self.hits_nan(b, tmax).then_some(f64::NEG_INFINITY);
-        }
-        #[inline(always)]
-        fn lo(a: f64, b: f64) -> f64 {
-            if a < b {
-                a
-            } else {
-                b
-            }
-        }
-        #[inline(always)]
-        fn hi(a: f64, b: f64) -> f64 {
-            if a > b {
-                a
-            } else {
-                b
-            }
-        }
-        // `hits`' operations, in its order.
-        let t0 = (b.min - self.origin) * self.inv_dir;
-        let t1 = (b.max - self.origin) * self.inv_dir;
-        let tnear = hi(hi(lo(t0.x, t1.x), hi(lo(t0.y, t1.y), lo(t0.z, t1.z))), 0.0);
-        let far = lo(hi(t0.x, t1.x), lo(hi(t0.y, t1.y), hi(t0.z, t1.z)));
-        let tfar = if tmax < far { tmax } else { far };
-        (tnear <= tfar).then_some(tnear)
-    }
-
     /// `hits` for a ray that may make NaNs (rare: axis-parallel rays), out of the way of the
     /// inlined plain test.
     #[cold]

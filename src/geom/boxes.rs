@@ -81,10 +81,6 @@ fn slab(
 }
 
 impl Shape for BoxShape {
-    fn crossings_hug_surface(&self) -> bool {
-        true
-    }
-
     fn bounds(&self) -> Aabb {
         if self.empty {
             Aabb::EMPTY

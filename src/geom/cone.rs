@@ -46,10 +46,6 @@ impl Cone {
 }
 
 impl Shape for Cone {
-    fn crossings_hug_surface(&self) -> bool {
-        true
-    }
-
     fn bounds(&self) -> Aabb {
         if self.empty {
             return Aabb::EMPTY;

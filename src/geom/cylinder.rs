@@ -75,10 +75,6 @@ impl Cylinder {
 }
 
 impl Shape for Cylinder {
-    fn crossings_hug_surface(&self) -> bool {
-        true
-    }
-
     fn bounds(&self) -> Aabb {
         if self.empty {
             return Aabb::EMPTY;

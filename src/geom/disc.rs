@@ -54,10 +54,6 @@ impl Disc {
 }
 
 impl Shape for Disc {
-    fn crossings_hug_surface(&self) -> bool {
-        true
-    }
-
     fn bounds(&self) -> Aabb {
         if self.normal == DVec3::ZERO {
             return Aabb::EMPTY;

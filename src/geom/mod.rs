@@ -105,14 +105,6 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
     fn slab_bounds_within(&self, b: &Aabb) -> Aabb {
         self.slab_bounds().intersection(b)
     }
-    /// Whether every crossing `intersect_all` reports lies on the surface up to a few
-    /// roundings of the ray's and the shape's coordinates (closed-form roots: boxes, spheres,
-    /// cylinders, cones, planes, discs), so inside `bounds()` but for them. Shapes whose roots
-    /// come from iteration to a tolerance, or whose bounds may not hold every crossing, say
-    /// false: the CSG search then never skips them (`scene::csg_early`).
-    fn crossings_hug_surface(&self) -> bool {
-        false
-    }
     /// The surface's (u, v) texture coordinates at a point it reported, for `uv_mapping`;
     /// None for shapes POV-Ray 3.7 gives no uv coordinates.
     fn uv(&self, _p: DVec3, _hit: &Hit) -> Option<[f64; 2]> {

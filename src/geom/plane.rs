@@ -53,10 +53,6 @@ impl Plane {
 }
 
 impl Shape for Plane {
-    fn crossings_hug_surface(&self) -> bool {
-        true
-    }
-
     fn bounds(&self) -> Aabb {
         if self.normal == DVec3::ZERO {
             Aabb::EMPTY

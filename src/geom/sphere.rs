@@ -125,10 +125,6 @@ impl Quadratic {
 }
 
 impl Shape for Sphere {
-    fn crossings_hug_surface(&self) -> bool {
-        true
-    }
-
     fn bounds(&self) -> Aabb {
         if self.radius == 0.0 {
             return Aabb::EMPTY;

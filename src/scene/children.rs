@@ -93,14 +93,8 @@ fn set_culls(o: &mut Object) {
         // come cheaper through their faces (advanced/quilt1's clipped floor and wall). A union
         // given an index below drops them: the index numbers its leaves, not its members.
         let faces = crate::scene::faces::Faces::of(children);
-        let bounded = crate::scene::csg_early::bounded_members(*op, children);
-        *cull = (aabb.is_some() || faces.is_some() || bounded != 0).then(|| {
-            Box::new(crate::scene::object::Cull {
-                aabb,
-                faces,
-                bounded,
-            })
-        });
+        *cull = (aabb.is_some() || faces.is_some())
+            .then(|| Box::new(crate::scene::object::Cull { aabb, faces }));
     }
 }
 

@@ -5,7 +5,7 @@
 use std::cell::Cell;
 
 use crate::geom::{Hit, Shape};
-use crate::math::{Aabb, DVec3, Ray, Slabs, EPSILON};
+use crate::math::{Aabb, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
 use crate::scene::desc::CsgOp;
 use crate::scene::faces::{self, Face, Faces, MAX_ALL};
@@ -15,7 +15,7 @@ use crate::scene::object::{
 
 /// Crossings gathered for a search are tagged with their member `i`, and for the leaves of a
 /// member folded in (`folded`) with the leaf's number plus one above this shift.
-pub(super) const LEAF_SHIFT: u32 = 16;
+const LEAF_SHIFT: u32 = 16;
 
 /// The leaves, tight box and faces of member `c` when the search may test its crossings itself
 /// instead of through `c.all_hits`: an intersection without `clipped_by`, `inverse` or an index,
@@ -39,7 +39,7 @@ pub(super) fn folded(c: &Object) -> Option<(&[Object], Option<&Aabb>, Option<&Fa
 /// An integer that orders crossings' `t` as `f64::total_cmp` does (its own mapping of the
 /// bits), for sorting them by plain integer comparisons.
 #[inline(always)]
-pub(super) fn order_key(t: f64) -> i64 {
+fn order_key(t: f64) -> i64 {
     let b = t.to_bits() as i64;
     b ^ (((b >> 63) as u64) >> 1) as i64
 }
@@ -66,123 +66,11 @@ fn sort_crossings(order: &mut [(i64, u32, u32)]) {
 }
 
 /// Member `i` as `each_member` offers it.
-pub(super) fn member_at<'a>(
-    children: &'a [Object],
-    index: Option<&ChildIndex>,
-    i: usize,
-) -> &'a Object {
+fn member_at<'a>(children: &'a [Object], index: Option<&ChildIndex>, i: usize) -> &'a Object {
     index.map_or(&children[i], |ix| ix.leaf(children, i))
 }
 
-/// What a search's gather needs of its ray: `csg_first_hit`'s tests before a member's
-/// crossings are listed.
-pub(super) struct Gather<'r> {
-    pub ray: &'r Ray,
-    pub inv_dir: DVec3,
-    pub slabs: &'r Slabs,
-    pub ray_faces: Option<&'r Faces>,
-    pub tmax: f64,
-}
-
-impl Gather<'_> {
-    /// Lists member `c`'s crossings (member `i`; `fold`: a plain intersection's leaves
-    /// unfiltered) in `s.surface`, each with `(order key, place, tag(k))` in `s.csg_order`,
-    /// `k` the leaf's number plus one for a folded member's leaves, else 0. For a member whose
-    /// bounds the ray meets (the caller's test); a folded member's cull and leaves' slab tests
-    /// here, as its `all_hits` asks them.
-    #[inline(always)]
-    pub(super) fn member<'a>(
-        &self,
-        c: &'a Object,
-        i: usize,
-        fold: bool,
-        tag: impl Fn(u32) -> u32,
-        s: &mut Scratch<'a>,
-    ) {
-        let (ray, tmax, slabs) = (self.ray, self.tmax, self.slabs);
-        if let Some((leaves, leaf_cull, leaf_faces)) = fold.then(|| folded(c)).flatten() {
-            // `c.all_hits`'s own tests, in its order.
-            if leaf_cull.is_some_and(|b| b.hit(ray.origin, self.inv_dir, tmax).is_none()) {
-                return;
-            }
-            let leaf_faces = leaf_faces.filter(|_| faces::ray_ok(ray));
-            for (k, g) in leaves.iter().enumerate() {
-                if !slabs.hits(&g.bounds, tmax) {
-                    continue;
-                }
-                let from = s.surface.len();
-                member_hits(g, leaf_faces.and_then(|f| f.get(k)), ray, tmax, s);
-                let tag = tag(k as u32 + 1);
-                for j in from..s.surface.len() {
-                    s.csg_order.push((order_key(s.surface[j].t), j as u32, tag));
-                }
-            }
-            return;
-        }
-        let from = s.surface.len();
-        member_hits(c, self.ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
-        let tag = tag(0);
-        for j in from..s.surface.len() {
-            s.csg_order.push((order_key(s.surface[j].t), j as u32, tag));
-        }
-    }
-}
-
-/// What a search asks of a crossing, `csg_first_hit`'s tests: kept by a folded member's own
-/// intersection, by the node, and by its clip.
-pub(super) struct Ask<'r, 'a> {
-    pub op: CsgOp,
-    pub children: &'a [Object],
-    pub index: Option<&'r ChildIndex>,
-    pub faces: Option<&'r Faces>,
-    pub ray: &'r Ray,
-    pub rejecter: &'r Cell<usize>,
-    pub leaf_rejecter: &'r Cell<usize>,
-}
-
 impl Object {
-    /// Crossing `h` of member `i` (of its leaf `k - 1` when `k > 0`) as the node's surface
-    /// hit, if every test keeps it: none has a side effect on the answer (the rejecters only
-    /// order the questions).
-    #[inline(always)]
-    pub(super) fn kept<'a>(
-        &'a self,
-        ask: &Ask<'_, 'a>,
-        h: &SurfaceHit<'a>,
-        i: usize,
-        k: usize,
-    ) -> Option<SurfaceHit<'a>> {
-        let (op, children, t) = (ask.op, ask.children, h.t);
-        let p = ask.ray.at(t);
-        let leaf_kept = || match k {
-            0 => true,
-            k => {
-                let (leaves, _, leaf_faces) = folded(member_at(children, ask.index, i))
-                    .expect("tagged crossings come from folded members");
-                csg_keeps(
-                    CsgOp::Intersection,
-                    k - 1,
-                    leaves,
-                    None,
-                    leaf_faces,
-                    p,
-                    ask.leaf_rejecter,
-                )
-            }
-        };
-        let clip = &self.clip[..];
-        let clip_kept = || clip.is_empty() || (t > EPSILON && clip.iter().all(|c| c.inside(p)));
-        (leaf_kept()
-            && csg_keeps(op, i, children, ask.index, ask.faces, p, ask.rejecter)
-            && clip_kept())
-        .then(|| {
-            let mut h = *h;
-            h.flip ^= op == CsgOp::Difference && i > 0;
-            h.flip ^= self.inverse;
-            h
-        })
-    }
-
     /// `first_hit` of an intersection, difference or merge, with or without `clipped_by`: the
     /// nearest of the crossings `all_hits` would keep (and `first_hit` take: t > EPSILON when
     /// clipped), found by testing the members' crossings nearest first and stopping at the
@@ -211,14 +99,6 @@ impl Object {
         tmax: f64,
         s: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
-        // Members whose bounds hold their crossings: visited nearest first (`csg_early`).
-        if let (ObjKind::Csg { cull: Some(c), .. }, None) = (&self.kind, index) {
-            if c.bounded != 0 {
-                let culls = (cull, faces);
-                return self
-                    .csg_first_hit_early::<FOLD>(op, children, culls, c.bounded, ray, tmax, s);
-            }
-        }
         let inv_dir = ray.dir.recip();
         if cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none()) {
             return None;
@@ -228,18 +108,34 @@ impl Object {
         let order_from = s.csg_order.len();
         let slabs = Slabs::new(ray.origin, inv_dir);
         let fold = FOLD && index.is_none() && children.len() <= 1 << LEAF_SHIFT;
-        let the = Gather {
-            ray,
-            inv_dir,
-            slabs: &slabs,
-            ray_faces,
-            tmax,
-        };
         let gather = |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
-            if slabs.hits(&c.bounds, tmax) {
-                // Without folding, tags are plain member numbers (a node may have more than
-                // the tag's low bits hold).
-                the.member(c, i, fold, |k| i as u32 | k << LEAF_SHIFT, s);
+            if !slabs.hits(&c.bounds, tmax) {
+                return;
+            }
+            if let Some((leaves, leaf_cull, leaf_faces)) = fold.then(|| folded(c)).flatten() {
+                // `c.all_hits`'s own tests, in its order.
+                if leaf_cull.is_some_and(|b| b.hit(ray.origin, inv_dir, tmax).is_none()) {
+                    return;
+                }
+                let leaf_faces = leaf_faces.filter(|_| faces::ray_ok(ray));
+                for (k, g) in leaves.iter().enumerate() {
+                    if !slabs.hits(&g.bounds, tmax) {
+                        continue;
+                    }
+                    let from = s.surface.len();
+                    member_hits(g, leaf_faces.and_then(|f| f.get(k)), ray, tmax, s);
+                    let tag = i as u32 | (k as u32 + 1) << LEAF_SHIFT;
+                    for j in from..s.surface.len() {
+                        s.csg_order.push((order_key(s.surface[j].t), j as u32, tag));
+                    }
+                }
+                return;
+            }
+            let from = s.surface.len();
+            member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
+            for j in from..s.surface.len() {
+                s.csg_order
+                    .push((order_key(s.surface[j].t), j as u32, i as u32));
             }
         };
         each_member(children, index, ray, tmax, s, gather);
@@ -248,22 +144,45 @@ impl Object {
         sort_crossings(order);
         let rejecter = Cell::new(usize::MAX);
         let leaf_rejecter = Cell::new(usize::MAX);
-        let ask = Ask {
-            op,
-            children,
-            index,
-            faces,
-            ray,
-            rejecter: &rejecter,
-            leaf_rejecter: &leaf_rejecter,
-        };
+        let clip = &self.clip[..];
         let best = order.iter().find_map(|&(_, j, tag)| {
-            let (i, k) = if FOLD {
-                (tag & ((1 << LEAF_SHIFT) - 1), tag >> LEAF_SHIFT)
+            let t = s.surface[j as usize].t;
+            // Without folding, tags are plain member numbers (a node may have more than
+            // the tag's low bits hold).
+            let i = if FOLD {
+                tag & ((1 << LEAF_SHIFT) - 1)
             } else {
-                (tag, 0)
+                tag
+            } as usize;
+            let p = ray.at(t);
+            let leaf_kept = || match if FOLD {
+                (tag >> LEAF_SHIFT) as usize
+            } else {
+                0
+            } {
+                0 => true,
+                k => {
+                    let (leaves, _, leaf_faces) = folded(member_at(children, index, i))
+                        .expect("tagged crossings come from folded members");
+                    csg_keeps(
+                        CsgOp::Intersection,
+                        k - 1,
+                        leaves,
+                        None,
+                        leaf_faces,
+                        p,
+                        &leaf_rejecter,
+                    )
+                }
             };
-            self.kept(&ask, &s.surface[j as usize], i as usize, k as usize)
+            let clip_kept = || clip.is_empty() || (t > EPSILON && clip.iter().all(|c| c.inside(p)));
+            (leaf_kept() && csg_keeps(op, i, children, index, faces, p, &rejecter) && clip_kept())
+                .then(|| {
+                    let mut h = s.surface[j as usize];
+                    h.flip ^= op == CsgOp::Difference && i > 0;
+                    h.flip ^= self.inverse;
+                    h
+                })
         });
         s.csg_order.truncate(order_from);
         s.surface.truncate(start);

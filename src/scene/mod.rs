@@ -3,7 +3,6 @@
 pub mod atmosphere;
 pub mod build;
 pub mod children;
-pub mod csg_early;
 pub mod csg_hit;
 pub mod cull;
 pub mod desc;

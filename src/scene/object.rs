@@ -37,10 +37,6 @@ pub struct Cull {
     /// The members that are planes with an axis normal (`scene::faces`), of nodes other than
     /// unions (whose index, if any, numbers their members as `children` does).
     pub faces: Option<Faces>,
-    /// Bit `i`: member `i` has finite bounds holding every crossing it lists, up to rounding
-    /// (`scene::csg_early`), so the nearest-crossing search may leave it until a kept crossing
-    /// is known to lie before it. Zero for unions and nodes of more than 64 members.
-    pub bounded: u64,
 }
 
 /// A shape's data with the textures of its parts (mesh triangles, blob components).
