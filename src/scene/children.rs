@@ -93,8 +93,13 @@ fn set_culls(o: &mut Object) {
         // come cheaper through their faces (advanced/quilt1's clipped floor and wall). A union
         // given an index below drops them: the index numbers its leaves, not its members.
         let faces = crate::scene::faces::Faces::of(children);
-        *cull = (aabb.is_some() || faces.is_some())
-            .then(|| Box::new(crate::scene::object::Cull { aabb, faces }));
+        *cull = (aabb.is_some() || faces.is_some()).then(|| {
+            Box::new(crate::scene::object::Cull {
+                aabb,
+                faces,
+                folds: false,
+            })
+        });
     }
 }
 
@@ -162,6 +167,23 @@ fn attach_indexes(o: &mut Object, opened: bool) {
                 }
             }
         }
+    }
+    // Whether the search folds members: each member's index is attached by now (a member
+    // with one is not folded), and a node given its own folds none.
+    let folds = mine.is_none()
+        && *op != CsgOp::Union
+        && children
+            .iter()
+            .any(|c| crate::scene::csg_hit::folded(c).is_some());
+    if folds {
+        cull.get_or_insert_with(|| {
+            Box::new(crate::scene::object::Cull {
+                aabb: None,
+                faces: None,
+                folds: false,
+            })
+        })
+        .folds = true;
     }
     *index = mine;
 }
@@ -570,5 +592,56 @@ mod tests {
                 "{hits}"
             );
         }
+    }
+
+    /// `Cull::folds`, set once, says what scanning the members for `folded` ones at every
+    /// search said: nodes with and without members to fold, members that are not folded
+    /// (inverse, clipped, indexed), nested nodes and clipping objects, nodes with an index.
+    #[test]
+    fn folds_flag_is_the_members_scan() {
+        let mut p = Parser::new(ParseOptions::default());
+        p.parse_str(
+            "t.pov",
+            r#"
+            difference { box { -1, 1 } intersection { sphere { 0, 1 } box { 0, 2 } } }
+            difference { box { -1, 1 } intersection { sphere { 0, 1 } box { 0, 2 } inverse } }
+            merge { sphere { 0, 1 } intersection { sphere { 0, 1 } box { 0, 2 } clipped_by { plane { y, 0 } } } }
+            intersection { box { -1, 1 } difference { box { -1, 1 } sphere { 0, 1 } }
+                           clipped_by { intersection { sphere { 0, 2 } intersection { box { -1, 1 } sphere { 0, 1.2 } } } } }
+            difference { box { -1, 1 } #for (i, 0, 40) sphere { <i / 20 - 1, 0, 0>, 0.1 } #end
+                         intersection { sphere { 0, 1 } box { 0, 2 } } }
+            difference { box { -1, 1 }
+                         intersection { #for (i, 0, 40) sphere { <i / 200, 0, 0>, 1 } #end }
+                         intersection { sphere { 0, 1 } intersection { box { 0, 2 } sphere { x, 1 } } } }
+            union { intersection { sphere { 0, 1 } box { 0, 2 } } sphere { x, 1 } }
+            "#,
+        )
+        .map_err(|e| e.message.clone())
+        .unwrap();
+        let scene = build(&p.scene, 64, 48).scene;
+        fn check(o: &Object, seen: &mut [usize; 2]) {
+            for c in &o.clip {
+                check(c, seen);
+            }
+            if let ObjKind::Csg {
+                op,
+                children,
+                index,
+                cull,
+            } = &o.kind
+            {
+                let scan = *op != crate::scene::desc::CsgOp::Union
+                    && index.is_none()
+                    && children
+                        .iter()
+                        .any(|c| crate::scene::csg_hit::folded(c).is_some());
+                assert_eq!(cull.as_ref().is_some_and(|c| c.folds), scan);
+                seen[scan as usize] += 1;
+                children.iter().for_each(|c| check(c, seen));
+            }
+        }
+        let mut seen = [0; 2];
+        scene.objects.iter().for_each(|o| check(o, &mut seen));
+        assert!(seen[0] >= 8 && seen[1] >= 4, "{seen:?}");
     }
 }

@@ -8,7 +8,6 @@ use std::sync::Arc;
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, Slabs, Transform};
 use crate::scene::children::{union_first_hit, union_scan_first_hit, ChildIndex};
-use crate::scene::csg_hit;
 use crate::scene::cull::{Range, Window};
 use crate::scene::desc::{CsgOp, MeshData, Texture};
 use crate::scene::faces::{self, Faces};
@@ -37,6 +36,10 @@ pub struct Cull {
     /// The members that are planes with an axis normal (`scene::faces`), of nodes other than
     /// unions (whose index, if any, numbers their members as `children` does).
     pub faces: Option<Faces>,
+    /// The node has no index and a member `csg_hit::folded` searches through: its
+    /// `csg_first_hit` is the folding one. Set once the indexes are attached
+    /// (`children::attach`), so that no search scans the members for it.
+    pub folds: bool,
 }
 
 /// A shape's data with the textures of its parts (mesh triangles, blob components).
@@ -258,7 +261,7 @@ impl Object {
                 );
                 let index = index.as_deref();
                 // As `first_hit` chooses: the folding compiled out when nothing would fold.
-                if index.is_none() && children.iter().any(|c| csg_hit::folded(c).is_some()) {
+                if cull.as_ref().is_some_and(|c| c.folds) {
                     self.csg_first_hit::<true>(*op, children, index, culls, ray, tmax, s)
                 } else {
                     self.csg_first_hit::<false>(*op, children, index, culls, ray, tmax, s)
@@ -324,7 +327,7 @@ impl Object {
                 }
                 // Members that are plain intersections are searched through (`csg_hit`).
                 let index = index.as_deref();
-                if index.is_none() && children.iter().any(|c| csg_hit::folded(c).is_some()) {
+                if cull.as_ref().is_some_and(|c| c.folds) {
                     self.csg_first_hit::<true>(*op, children, index, culls, ray, tmax, s)
                 } else {
                     // Without members to fold: the search's folding compiled out (through it,
