@@ -384,38 +384,43 @@ impl Cache {
                     }
                     Some(ids) if list[j] => {
                         let start = listed.len();
-                        for &i in ids {
-                            let s = &self.foot[i as usize];
-                            // `weight`'s first tests, as it writes them (a NaN cosine passes).
-                            let cos = n.dot(s.n);
-                            if s.level > level || cos < 0.5 {
-                                continue;
-                            }
-                            let e = normal_err(cos);
-                            listed.push((i, e));
-                            if within(s, p, bound) {
-                                b.add_listed(s, self.irr[i as usize], p, n, bound, e);
-                            }
-                        }
+                        lanes::list_cell(self, ids, (p, n), level, bound, listed, b);
                         c.at = (start as u32, (listed.len() - start) as u32);
                         lists.insert(((g * GROUP + j) as u32, c.key), c.at);
                     }
-                    Some(ids) => {
-                        lanes::each_within(self, ids, p, bound, |i, s| {
-                            b.add(s, self.irr[i], p, n, level, bound);
-                            true
-                        });
-                    }
+                    Some(ids) => lanes::blend_whole(self, ids, (p, n), level, bound, b),
                 }
             }
         }
     }
 
-    /// `near` from the first sample on, stopping as soon as `f` returns false (then false).
-    /// Its own loop: `near` written as this with an `f` that never stops compiled to a slower
-    /// loop (gamma_showcase +3%). Not through `lanes::each_within`: most samples met here are
-    /// in reach, and `f` was not inlined there (rad_def_test_37 +1.5 %).
+    /// Whether `need` samples of level 1 are valid at (p, n) at error bound `bound`, with some
+    /// weight (`enough`): blends into `b` the samples `weight` takes in `near`'s
+    /// order, stopping at the one that makes them enough (then false).
     #[inline]
+    pub(super) fn near_enough(
+        &self,
+        p: DVec3,
+        n: DVec3,
+        bound: f64,
+        need: u32,
+        b: &mut Blend,
+    ) -> bool {
+        let mut found: [&[u32]; GROUP] = [&[]; GROUP];
+        for group in self.scales.chunks(GROUP) {
+            self.cells(group, p, bound, 1, &mut found);
+            for ids in &found[..group.len()] {
+                if !lanes::blend_until(self, ids, (p, n), bound, need, b) {
+                    return false;
+                }
+            }
+        }
+        true
+    }
+
+    /// `near` from the first sample on, stopping as soon as `f` returns false (then false):
+    /// what `near_enough` reads, for the tests.
+    #[cfg(test)]
     pub(super) fn near_while(
         &self,
         p: DVec3,
@@ -582,6 +587,13 @@ impl Blend {
             self.count += 1;
         }
     }
+}
+
+/// Whether a blend has the `need` samples of some weight a probe's lookup asks for
+/// (`enough_here`).
+#[inline(always)]
+pub(super) fn enough(b: &Blend, need: u32) -> bool {
+    b.count >= need && b.weight > 0.0
 }
 
 /// The weight of sample `s` in the blend at (p, n) for a lookup of `level`, None where it is

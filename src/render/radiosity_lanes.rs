@@ -4,13 +4,15 @@
 //! the weights are then summed one by one in the list's order, as `Blend::take` does, so the
 //! blend's sums are the same bits too. On the radiosity scenes most of a lookup's work is
 //! reading these lists (rad_def_test_37: ~800 k samples read, 45 % of them taken). Cells read
-//! whole (not listed) have their samples' reach tested the same way (`each_within`).
+//! whole (not listed, listed for the first time, or read by a probe's lookup) have their
+//! samples' reach and normal tested the same way (`quad_masks`) before the scalar code
+//! weighs or lists the few that pass.
 
 use crate::math::DVec3;
 
 #[cfg(test)]
 use super::weight_listed;
-use super::{within, Blend, Cache, Footprint};
+use super::{enough, normal_err, within, Blend, Cache, Footprint};
 
 /// `Blend::add_listed` of every sample of `items` (a list: (sample, its `normal_err`)) that
 /// reaches `p` (`within`), in the list's order.
@@ -174,99 +176,334 @@ pub(super) unsafe fn blend_listed_avx(
     blend_listed_scalar(foot, irr, quads.remainder(), p, n, bound, b);
 }
 
-/// `f` of every sample of `ids` that reaches `p` (`within`), in their order, until `f`
-/// returns false (then false). The reach of four samples is tested at a time where the CPU
-/// has AVX: in a cell read whole most samples are out of reach (radiosity2's lookups on its
-/// curved surfaces: 84 %).
+/// `($foot, $q, $at)`: the four samples of `$q` (four ids of a cell, from the cache) and
+/// the masks (bit k: sample k) of those that reach the lookup `$at` (`within`) and of those
+/// not turned away by `weight`'s normal test (`cos < 0.5`; a NaN cosine passes, as there).
+/// The same IEEE operations in the same order as the scalar tests (no FMA), so the same bits
+/// decide. A macro, used in AVX functions only: as a function it was not inlined.
+#[cfg(target_arch = "x86_64")]
+macro_rules! quad_masks {
+    ($foot:expr, $q:expr, $at:expr) => {{
+        use std::arch::x86_64::*;
+        let (foot, q, at): (&[Footprint], &[u32], &Lookup4) = ($foot, $q, $at);
+        let s = [q[0], q[1], q[2], q[3]].map(|i| &foot[i as usize]);
+        let ptr =
+            |k: usize, field: usize| (s[k] as *const Footprint as *const f64).wrapping_add(field);
+        // SAFETY: as in `blend_listed_avx`: pairs of consecutive f64 fields of a `Footprint`
+        // (`PX`, `PZ`, `NX`), lanes 0 and 2 of one register and 1 and 3 of the other.
+        let (xy, zr, nxy) = unsafe {
+            (
+                (
+                    _mm256_loadu2_m128d(ptr(2, PX), ptr(0, PX)),
+                    _mm256_loadu2_m128d(ptr(3, PX), ptr(1, PX)),
+                ),
+                (
+                    _mm256_loadu2_m128d(ptr(2, PZ), ptr(0, PZ)),
+                    _mm256_loadu2_m128d(ptr(3, PZ), ptr(1, PZ)),
+                ),
+                (
+                    _mm256_loadu2_m128d(ptr(2, NX), ptr(0, NX)),
+                    _mm256_loadu2_m128d(ptr(3, NX), ptr(1, NX)),
+                ),
+            )
+        };
+        let (sx, sy) = (
+            _mm256_unpacklo_pd(xy.0, xy.1),
+            _mm256_unpackhi_pd(xy.0, xy.1),
+        );
+        let (sz, r) = (
+            _mm256_unpacklo_pd(zr.0, zr.1),
+            _mm256_unpackhi_pd(zr.0, zr.1),
+        );
+        let (snx, sny) = (
+            _mm256_unpacklo_pd(nxy.0, nxy.1),
+            _mm256_unpackhi_pd(nxy.0, nxy.1),
+        );
+        let snz = _mm256_set_pd(s[3].n.z, s[2].n.z, s[1].n.z, s[0].n.z);
+        let (dx, dy, dz) = (
+            _mm256_sub_pd(at.px, sx),
+            _mm256_sub_pd(at.py, sy),
+            _mm256_sub_pd(at.pz, sz),
+        );
+        let d2 = _mm256_add_pd(
+            _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
+            _mm256_mul_pd(dz, dz),
+        );
+        let far = _mm256_mul_pd(r, at.bound);
+        let reach = _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(d2, _mm256_mul_pd(far, far)));
+        // `n.dot(s.n)`: (x·x' + y·y') + z·z'.
+        let cos = _mm256_add_pd(
+            _mm256_add_pd(_mm256_mul_pd(at.nx, snx), _mm256_mul_pd(at.ny, sny)),
+            _mm256_mul_pd(at.nz, snz),
+        );
+        let facing = _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_NLT_UQ>(cos, at.half));
+        (s, reach, facing)
+    }};
+}
+
+/// A lookup's point, normal and bound in every lane.
+#[cfg(target_arch = "x86_64")]
+struct Lookup4 {
+    px: std::arch::x86_64::__m256d,
+    py: std::arch::x86_64::__m256d,
+    pz: std::arch::x86_64::__m256d,
+    nx: std::arch::x86_64::__m256d,
+    ny: std::arch::x86_64::__m256d,
+    nz: std::arch::x86_64::__m256d,
+    bound: std::arch::x86_64::__m256d,
+    half: std::arch::x86_64::__m256d,
+}
+
+#[cfg(target_arch = "x86_64")]
+impl Lookup4 {
+    #[target_feature(enable = "avx")]
+    fn new(p: DVec3, n: DVec3, bound: f64) -> Lookup4 {
+        use std::arch::x86_64::_mm256_set1_pd as splat;
+        Lookup4 {
+            px: splat(p.x),
+            py: splat(p.y),
+            pz: splat(p.z),
+            nx: splat(n.x),
+            ny: splat(n.y),
+            nz: splat(n.z),
+            bound: splat(bound),
+            half: splat(0.5),
+        }
+    }
+}
+
+/// `Blend::add` (level 1) of every sample of `ids` (a cell's) that reaches `p` (`within`),
+/// in their order, until the blend is `enough` (then false). A sample `weight` turns away
+/// for its normal adds nothing and leaves `enough` as it was, so the lanes skip it: most
+/// samples a probe's lookup meets in reach face another way (rad_def_test_37: 80 k of 119 k).
 #[inline(always)]
-pub(super) fn each_within(
+pub(super) fn blend_until(
     cache: &Cache,
     ids: &[u32],
-    p: DVec3,
+    (p, n): (DVec3, DVec3),
     bound: f64,
-    f: impl FnMut(usize, &Footprint) -> bool,
+    need: u32,
+    b: &mut Blend,
 ) -> bool {
     #[cfg(target_arch = "x86_64")]
     if cache.lanes && ids.len() >= 4 {
         // SAFETY: `lanes` is only set where the CPU has AVX (`Cache::with_pool`).
-        return unsafe { each_within_avx(&cache.foot, ids, p, bound, f) };
+        return unsafe { blend_until_avx(&cache.foot, &cache.irr, ids, (p, n), bound, need, b) };
     }
-    each_within_scalar(&cache.foot, ids, p, bound, f)
+    blend_until_scalar(&cache.foot, &cache.irr, ids, (p, n), bound, need, b)
 }
 
 #[inline(always)]
-fn each_within_scalar(
+fn blend_until_scalar(
     foot: &[Footprint],
+    irr: &[DVec3],
     ids: &[u32],
-    p: DVec3,
+    (p, n): (DVec3, DVec3),
     bound: f64,
-    mut f: impl FnMut(usize, &Footprint) -> bool,
+    need: u32,
+    b: &mut Blend,
 ) -> bool {
     for &i in ids {
         let s = &foot[i as usize];
-        if within(s, p, bound) && !f(i as usize, s) {
-            return false;
+        if within(s, p, bound) {
+            b.add(s, irr[i as usize], p, n, 1, bound);
+            if enough(b, need) {
+                return false;
+            }
         }
     }
     true
 }
 
-/// `each_within_scalar` with `within` of four samples in the lanes of one register per
-/// quantity (its IEEE operations in its order, so the same samples pass).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx")]
-unsafe fn each_within_avx(
+unsafe fn blend_until_avx(
     foot: &[Footprint],
+    irr: &[DVec3],
     ids: &[u32],
-    p: DVec3,
+    (p, n): (DVec3, DVec3),
     bound: f64,
-    mut f: impl FnMut(usize, &Footprint) -> bool,
+    need: u32,
+    b: &mut Blend,
 ) -> bool {
-    use std::arch::x86_64::*;
-    let (px, py, pz) = (
-        _mm256_set1_pd(p.x),
-        _mm256_set1_pd(p.y),
-        _mm256_set1_pd(p.z),
-    );
-    let vbound = _mm256_set1_pd(bound);
+    let at = Lookup4::new(p, n, bound);
     let mut quads = ids.chunks_exact(4);
     for q in &mut quads {
-        let ids = [q[0], q[1], q[2], q[3]].map(|i| i as usize);
-        let s = ids.map(|i| &foot[i]);
-        let at =
-            |k: usize, field: usize| (s[k] as *const Footprint as *const f64).wrapping_add(field);
-        // SAFETY: as in `blend_listed_avx`: pairs of consecutive f64 fields of a `Footprint`.
-        let (xy, zr) = unsafe {
-            let xy = (
-                _mm256_loadu2_m128d(at(2, PX), at(0, PX)),
-                _mm256_loadu2_m128d(at(3, PX), at(1, PX)),
-            );
-            let zr = (
-                _mm256_loadu2_m128d(at(2, PZ), at(0, PZ)),
-                _mm256_loadu2_m128d(at(3, PZ), at(1, PZ)),
-            );
-            (xy, zr)
-        };
-        let dx = _mm256_sub_pd(px, _mm256_unpacklo_pd(xy.0, xy.1));
-        let dy = _mm256_sub_pd(py, _mm256_unpackhi_pd(xy.0, xy.1));
-        let dz = _mm256_sub_pd(pz, _mm256_unpacklo_pd(zr.0, zr.1));
-        let r = _mm256_unpackhi_pd(zr.0, zr.1);
-        let d2 = _mm256_add_pd(
-            _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
-            _mm256_mul_pd(dz, dz),
-        );
-        let far = _mm256_mul_pd(r, vbound);
-        let reach = _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(d2, _mm256_mul_pd(far, far)));
-        if reach == 0 {
+        let (s, reach, facing) = quad_masks!(foot, q, &at);
+        let take = reach & facing;
+        if take == 0 {
             continue;
         }
         for k in 0..4 {
-            if reach & (1 << k) != 0 && !f(ids[k], s[k]) {
-                return false;
+            if take & (1 << k) != 0 {
+                b.add(s[k], irr[q[k] as usize], p, n, 1, bound);
+                if enough(b, need) {
+                    return false;
+                }
             }
         }
     }
-    each_within_scalar(foot, quads.remainder(), p, bound, f)
+    blend_until_scalar(foot, irr, quads.remainder(), (p, n), bound, need, b)
+}
+
+/// `Blend::add` of every sample of `ids` (a cell read whole) that reaches `p`, in their
+/// order. The lanes skip the samples out of reach or facing another way, which `weight`
+/// turns away (radiosity2's curved surfaces: 84 % out of reach).
+#[inline(always)]
+pub(super) fn blend_whole(
+    cache: &Cache,
+    ids: &[u32],
+    (p, n): (DVec3, DVec3),
+    level: u32,
+    bound: f64,
+    b: &mut Blend,
+) {
+    #[cfg(target_arch = "x86_64")]
+    if cache.lanes && ids.len() >= 4 {
+        // SAFETY: `lanes` is only set where the CPU has AVX (`Cache::with_pool`).
+        unsafe { blend_whole_avx(&cache.foot, &cache.irr, ids, (p, n), level, bound, b) };
+        return;
+    }
+    blend_whole_scalar(&cache.foot, &cache.irr, ids, (p, n), level, bound, b)
+}
+
+#[inline(always)]
+fn blend_whole_scalar(
+    foot: &[Footprint],
+    irr: &[DVec3],
+    ids: &[u32],
+    (p, n): (DVec3, DVec3),
+    level: u32,
+    bound: f64,
+    b: &mut Blend,
+) {
+    for &i in ids {
+        let s = &foot[i as usize];
+        if within(s, p, bound) {
+            b.add(s, irr[i as usize], p, n, level, bound);
+        }
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+unsafe fn blend_whole_avx(
+    foot: &[Footprint],
+    irr: &[DVec3],
+    ids: &[u32],
+    (p, n): (DVec3, DVec3),
+    level: u32,
+    bound: f64,
+    b: &mut Blend,
+) {
+    let at = Lookup4::new(p, n, bound);
+    let mut quads = ids.chunks_exact(4);
+    for q in &mut quads {
+        let (s, reach, facing) = quad_masks!(foot, q, &at);
+        let take = reach & facing;
+        if take == 0 {
+            continue;
+        }
+        for k in 0..4 {
+            if take & (1 << k) != 0 {
+                b.add(s[k], irr[q[k] as usize], p, n, level, bound);
+            }
+        }
+    }
+    blend_whole_scalar(foot, irr, quads.remainder(), (p, n), level, bound, b)
+}
+
+/// A cell's first read by a memo entry (`near_memo`): lists in `listed` each sample of `ids`
+/// that `weight`'s level and normal tests let through for `n`, with its `normal_err`, and
+/// blends those in reach, in their order. The lanes skip the samples facing another way
+/// (raddem: 70 % of those listing reads).
+#[inline(always)]
+pub(super) fn list_cell(
+    cache: &Cache,
+    ids: &[u32],
+    (p, n): (DVec3, DVec3),
+    level: u32,
+    bound: f64,
+    listed: &mut Vec<(u32, f64)>,
+    b: &mut Blend,
+) {
+    #[cfg(target_arch = "x86_64")]
+    if cache.lanes && ids.len() >= 4 {
+        // SAFETY: `lanes` is only set where the CPU has AVX (`Cache::with_pool`).
+        unsafe {
+            list_cell_avx(
+                &cache.foot,
+                &cache.irr,
+                ids,
+                (p, n),
+                level,
+                bound,
+                listed,
+                b,
+            )
+        };
+        return;
+    }
+    for &i in ids {
+        list_one(&cache.foot, &cache.irr, i, (p, n), level, bound, listed, b);
+    }
+}
+
+/// One sample of `list_cell`: `near_memo`'s listing loop's body as it was.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn list_one(
+    foot: &[Footprint],
+    irr: &[DVec3],
+    i: u32,
+    (p, n): (DVec3, DVec3),
+    level: u32,
+    bound: f64,
+    listed: &mut Vec<(u32, f64)>,
+    b: &mut Blend,
+) {
+    let s = &foot[i as usize];
+    // `weight`'s first tests, as it writes them (a NaN cosine passes).
+    let cos = n.dot(s.n);
+    if s.level > level || cos < 0.5 {
+        return;
+    }
+    let e = normal_err(cos);
+    listed.push((i, e));
+    if within(s, p, bound) {
+        b.add_listed(s, irr[i as usize], p, n, bound, e);
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+unsafe fn list_cell_avx(
+    foot: &[Footprint],
+    irr: &[DVec3],
+    ids: &[u32],
+    (p, n): (DVec3, DVec3),
+    level: u32,
+    bound: f64,
+    listed: &mut Vec<(u32, f64)>,
+    b: &mut Blend,
+) {
+    let at = Lookup4::new(p, n, bound);
+    let mut quads = ids.chunks_exact(4);
+    for q in &mut quads {
+        let (_, _, facing) = quad_masks!(foot, q, &at);
+        if facing == 0 {
+            continue;
+        }
+        for k in 0..4 {
+            if facing & (1 << k) != 0 {
+                list_one(foot, irr, q[k], (p, n), level, bound, listed, b);
+            }
+        }
+    }
+    for &i in quads.remainder() {
+        list_one(foot, irr, i, (p, n), level, bound, listed, b);
+    }
 }
 
 /// The scalar weight of a listed sample, for the tests: `weight_listed` behind `within`.
@@ -319,37 +556,86 @@ mod tests {
         (foot, irr)
     }
 
-    /// The lanes find the samples in reach the scalar loop finds, in its order, and stop
-    /// where it stops.
+    /// A blend's fields as bits, to compare two blends exactly.
+    fn bits(b: &Blend) -> (u32, u64, [u64; 3]) {
+        (
+            b.count,
+            b.weight.to_bits(),
+            b.sum.to_array().map(f64::to_bits),
+        )
+    }
+
+    /// The lanes of `blend_until`, `blend_whole` and `list_cell` give what their scalar
+    /// loops give, to the bit, stopping where they stop: cells of every length, points near
+    /// and far, normals every way, a few NaN and infinite fields.
     #[test]
-    fn lanes_find_what_within_finds() {
+    fn lanes_read_cells_as_the_scalar_loops() {
         if !crate::math::has_avx() {
             return;
         }
-        let (foot, _) = footprints();
-        let mut rnd = rng(5);
+        let (mut foot, irr) = footprints();
+        for (k, s) in foot.iter_mut().enumerate() {
+            s.level = 1 + (k % 5 == 0) as u32;
+            if k % 89 == 7 {
+                s.n.z = f64::NAN;
+            }
+        }
+        let mut rnd = rng(11);
         for trial in 0..400 {
             let p = DVec3::new(rnd(), rnd(), rnd()) * 4.0;
+            let n = DVec3::new(rnd() - 0.5, rnd() - 0.5, rnd() - 0.5).normalize();
             let bound = [0.2, 0.9, 1.8][trial % 3];
+            let level = 1 + (trial % 2) as u32;
+            let need = (trial % 9) as u32;
             let ids: Vec<u32> = (0..trial % 45)
                 .map(|_| (rnd() * foot.len() as f64) as u32)
                 .collect();
-            let stop = trial % 7;
-            let run = |lanes: bool| {
-                let mut met = Vec::new();
-                let f = |i: usize, _: &Footprint| {
-                    met.push(i);
-                    met.len() != stop
-                };
-                let done = if lanes {
-                    // SAFETY: the CPU has AVX (checked above).
-                    unsafe { each_within_avx(&foot, &ids, p, bound, f) }
-                } else {
-                    each_within_scalar(&foot, &ids, p, bound, f)
-                };
-                (done, met)
+            let (mut want, mut got) = (Blend::default(), Blend::default());
+            let stop_want = blend_until_scalar(&foot, &irr, &ids, (p, n), bound, need, &mut want);
+            // SAFETY: the CPU has AVX (checked above).
+            let stop_got =
+                unsafe { blend_until_avx(&foot, &irr, &ids, (p, n), bound, need, &mut got) };
+            assert_eq!(stop_got, stop_want, "trial {trial}");
+            assert_eq!(bits(&got), bits(&want), "blend_until, trial {trial}");
+
+            let (mut want, mut got) = (Blend::default(), Blend::default());
+            blend_whole_scalar(&foot, &irr, &ids, (p, n), level, bound, &mut want);
+            // SAFETY: the CPU has AVX (checked above).
+            unsafe { blend_whole_avx(&foot, &irr, &ids, (p, n), level, bound, &mut got) };
+            assert_eq!(bits(&got), bits(&want), "blend_whole, trial {trial}");
+
+            let (mut want, mut got) = (Blend::default(), Blend::default());
+            let (mut list_want, mut list_got) = (Vec::new(), Vec::new());
+            for &i in &ids {
+                list_one(
+                    &foot,
+                    &irr,
+                    i,
+                    (p, n),
+                    level,
+                    bound,
+                    &mut list_want,
+                    &mut want,
+                );
+            }
+            // SAFETY: the CPU has AVX (checked above).
+            unsafe {
+                list_cell_avx(
+                    &foot,
+                    &irr,
+                    &ids,
+                    (p, n),
+                    level,
+                    bound,
+                    &mut list_got,
+                    &mut got,
+                )
             };
-            assert_eq!(run(true), run(false), "trial {trial}");
+            assert_eq!(bits(&got), bits(&want), "list_cell, trial {trial}");
+            let as_bits = |l: &[(u32, f64)]| -> Vec<(u32, u64)> {
+                l.iter().map(|&(i, e)| (i, e.to_bits())).collect()
+            };
+            assert_eq!(as_bits(&list_got), as_bits(&list_want), "trial {trial}");
         }
     }
 
