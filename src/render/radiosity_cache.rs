@@ -113,9 +113,10 @@ impl Scale {
         (k(p.x), k(p.y), k(p.z))
     }
 
+    /// `pack(cell_of(p))`, by `floors_key`.
+    #[inline(always)]
     fn key(&self, p: DVec3) -> u64 {
-        let (x, y, z) = self.cell_of(p);
-        pack(x, y, z)
+        floors_key(self.floors(p))
     }
 
     /// `cell_of` before its clamp and conversion: equal floors give equal keys (`floors_key`),
@@ -126,11 +127,23 @@ impl Scale {
     }
 }
 
-/// `Scale::key` from its `floors` (the same operations).
+/// `pack` of `cell_of`'s coordinates from their `floors`, to the bit. The clamped floor
+/// is a whole number below 2^51 in size, so adding 1.5 * 2^52 to it is exact and leaves it
+/// in the low bits as two's complement plus 2^51, whose low 21 bits are `as i64`'s: `pack`
+/// keeps only those. This instead of the saturating conversion, whose range checks were
+/// half of a key's instructions; a NaN is 0, as `as i64` makes it.
 #[inline(always)]
 fn floors_key(f: [f64; 3]) -> u64 {
-    let k = |v: f64| v.clamp(-1e15, 1e15) as i64;
-    pack(k(f[0]), k(f[1]), k(f[2]))
+    const WHOLE: f64 = 6_755_399_441_055_744.0;
+    let k = |v: f64| {
+        let c = v.clamp(-1e15, 1e15);
+        if c.is_nan() {
+            0
+        } else {
+            (c + WHOLE).to_bits()
+        }
+    };
+    pack_bits(k(f[0]), k(f[1]), k(f[2]))
 }
 
 /// A cell's key: its coordinates modulo 2^21, in one word (a bucket of 32 bytes instead of
@@ -140,8 +153,14 @@ fn floors_key(f: [f64; 3]) -> u64 {
 /// samples in the same order.
 #[inline(always)]
 fn pack(x: i64, y: i64, z: i64) -> u64 {
+    pack_bits(x as u64, y as u64, z as u64)
+}
+
+/// `pack` of three words whose low 21 bits are the coordinates'.
+#[inline(always)]
+fn pack_bits(x: u64, y: u64, z: u64) -> u64 {
     const M: u64 = (1 << 21) - 1;
-    ((x as u64 & M) << 42) | ((y as u64 & M) << 21) | (z as u64 & M)
+    ((x & M) << 42) | ((y & M) << 21) | (z & M)
 }
 
 impl Cache {
