@@ -285,9 +285,10 @@ impl Cache {
     /// cell costs about what reading it whole does, the list's place and a map's insert.)
     /// The samples are blended in the order `near` gives them, so the blend's sums are the
     /// same to the bit. A sample of a list keeps its `normal_err` for this normal (the same
-    /// bits for every lookup reading the list), which `Blend::add_listed` takes in place of
-    /// `weight`'s level and normal tests and its first square root; a list already made is
-    /// read four samples at a time where the CPU has AVX (`lanes`).
+    /// bits for every lookup reading the list), which stands for `weight`'s level and normal
+    /// tests and its first square root, and what else `weight` computes from the sample with
+    /// the entry's normal and bound alone (`ListedQuad`); a list is kept four samples to a
+    /// quad, field by field, and read a quad at a time where the CPU has AVX (`lanes`).
     #[inline]
     pub(super) fn near_memo(
         &self,
@@ -399,11 +400,15 @@ impl Cache {
                 match found[j] {
                     None => {
                         let (at, len) = (c.at.0 as usize, c.at.1 as usize);
-                        lanes::blend_listed(self, &listed[at..at + len], p, n, bound, b);
+                        lanes::blend_listed(self, &listed[at..at + len], p, bound, b);
                     }
                     Some(ids) if list[j] => {
                         let start = listed.len();
-                        lanes::list_cell(self, ids, (p, n), level, bound, listed, b);
+                        let mut list = lanes::Listing {
+                            quads: listed,
+                            len: 0,
+                        };
+                        lanes::list_cell(self, ids, (p, n), level, bound, &mut list, b);
                         c.at = (start as u32, (listed.len() - start) as u32);
                         lists.insert(((g * GROUP + j) as u32, c.key), c.at);
                     }

@@ -1,9 +1,10 @@
-//! The lookups' blend of a listed cell (`Cache::near_memo`'s lists) four samples at a time in
-//! AVX lanes. Each lane makes `within`'s and `weight_listed`'s IEEE operations in their order
-//! (no FMA, the comparisons' NaN cases kept), so every weight is the scalar one to the bit;
-//! the weights are then summed one by one in the list's order, as `Blend::take` does, so the
-//! blend's sums are the same bits too. On the radiosity scenes most of a lookup's work is
-//! reading these lists (rad_def_test_37: ~800 k samples read, 45 % of them taken). Cells read
+//! The lookups' blend of a listed cell (`Cache::near_memo`'s lists, kept in quads of four
+//! samples field by field, `ListedQuad`) four samples at a time in AVX lanes. Each lane makes
+//! `within`'s and `weight_listed`'s IEEE operations in their order (no FMA, the comparisons'
+//! NaN cases kept), so every weight is the scalar one to the bit; the weights are then summed
+//! one by one in the list's order, as `Blend::take` does, so the blend's sums are the same
+//! bits too. On the radiosity scenes most of a lookup's work is reading these lists
+//! (rad_def_test_37: ~800 k samples read, 45 % of them taken). Cells read
 //! whole (not listed, listed for the first time, or read by a probe's lookup) have their
 //! samples' reach and normal tested the same way (`quad_masks`) before the scalar code
 //! weighs or lists the few that pass.
@@ -13,45 +14,134 @@ use crate::math::DVec3;
 #[cfg(test)]
 use super::weight_listed;
 use super::{enough, normal_err, within, Blend, Cache, Footprint};
+use crate::scene::scratch::ListedQuad;
 
-/// `Blend::add_listed` of every sample of `items` (a list: (sample, its `normal_err`)) that
-/// reaches `p` (`within`), in the list's order.
+/// `Blend::add_listed` of every sample of `quads` (a list, four samples a quad) that reaches
+/// `p` (`within`), in the list's order.
 #[inline]
 pub(super) fn blend_listed(
     cache: &Cache,
-    items: &[(u32, f64)],
+    quads: &[ListedQuad],
     p: DVec3,
-    n: DVec3,
     bound: f64,
     b: &mut Blend,
 ) {
-    let (foot, irr) = (&cache.foot[..], &cache.irr[..]);
     #[cfg(target_arch = "x86_64")]
-    if cache.lanes && items.len() >= 4 {
+    if cache.lanes {
         // SAFETY: `lanes` is only set where the CPU has AVX (`Cache::with_pool`).
-        unsafe { blend_listed_avx(foot, irr, items, p, n, bound, b) };
+        unsafe { blend_listed_avx(&cache.irr, quads, p, bound, b) };
         return;
     }
-    blend_listed_scalar(foot, irr, items, p, n, bound, b);
+    blend_listed_scalar(&cache.irr, quads, p, bound, b);
 }
 
-/// The scalar form (and the lanes' tail): `near_memo`'s loop as it was.
-#[inline(always)]
+/// The scalar form: `within` and `weight_listed` of each sample, their operations in their
+/// order on the quad's fields (which hold the same bits as what they compute from the
+/// sample, the entry's normal and bound: `far2`, `front`, `mx`..`mz`).
 pub(super) fn blend_listed_scalar(
-    foot: &[Footprint],
     irr: &[DVec3],
-    items: &[(u32, f64)],
+    quads: &[ListedQuad],
     p: DVec3,
-    n: DVec3,
     bound: f64,
     b: &mut Blend,
 ) {
-    for &(i, e) in items {
-        let s = &foot[i as usize];
-        if within(s, p, bound) {
-            b.add_listed(s, irr[i as usize], p, n, bound, e);
+    for q in quads {
+        for k in 0..4 {
+            let (dx, dy, dz) = (p.x - q.px[k], p.y - q.py[k], p.z - q.pz[k]);
+            let d2 = dx * dx + dy * dy + dz * dz;
+            if !(d2 < q.far2[k]) {
+                continue;
+            }
+            let dist = d2.sqrt();
+            if (dx * q.mx[k] + dy * q.my[k] + dz * q.mz[k]) * 0.5 < q.front[k] {
+                continue;
+            }
+            let err = dist / q.r[k] + q.nerr[k];
+            if err >= bound {
+                continue;
+            }
+            b.take(irr[q.ids[k] as usize], Some((1.0 - err / bound).sqrt()));
         }
     }
+}
+
+/// `blend_listed_scalar` with the tests and weights of a quad's four samples in the lanes of
+/// one register per quantity, each loaded whole from the quad. The same operations per lane
+/// (no FMA; the comparisons' NaN cases kept: `d2 < far2` ordered, the front test kept where
+/// not `<`, the error where not `>=`); the taken weights are then summed one by one in the
+/// list's order, as `Blend::take` does.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+pub(super) unsafe fn blend_listed_avx(
+    irr: &[DVec3],
+    quads: &[ListedQuad],
+    p: DVec3,
+    bound: f64,
+    b: &mut Blend,
+) {
+    use std::arch::x86_64::*;
+    let (px, py, pz) = (
+        _mm256_set1_pd(p.x),
+        _mm256_set1_pd(p.y),
+        _mm256_set1_pd(p.z),
+    );
+    let vbound = _mm256_set1_pd(bound);
+    let half = _mm256_set1_pd(0.5);
+    let one = _mm256_set1_pd(1.0);
+    // The sums in registers: through `b` each was stored at every sample (a bounds check
+    // may panic between two).
+    let (mut sum, mut weight, mut count) = (b.sum, b.weight, b.count);
+    for q in quads {
+        macro_rules! load {
+            ($f:expr) => {{
+                let f: &[f64; 4] = $f;
+                // SAFETY: four f64s of the quad.
+                unsafe { _mm256_loadu_pd(f.as_ptr()) }
+            }};
+        }
+        let dx = _mm256_sub_pd(px, load!(&q.px));
+        let dy = _mm256_sub_pd(py, load!(&q.py));
+        let dz = _mm256_sub_pd(pz, load!(&q.pz));
+        let d2 = _mm256_add_pd(
+            _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
+            _mm256_mul_pd(dz, dz),
+        );
+        let reach = _mm256_cmp_pd::<_CMP_LT_OQ>(d2, load!(&q.far2));
+        if _mm256_movemask_pd(reach) == 0 {
+            continue;
+        }
+        // Ward's front test: not (d · (n + s.n) · 0.5 < -0.05 · s.r).
+        let dot = _mm256_add_pd(
+            _mm256_add_pd(
+                _mm256_mul_pd(dx, load!(&q.mx)),
+                _mm256_mul_pd(dy, load!(&q.my)),
+            ),
+            _mm256_mul_pd(dz, load!(&q.mz)),
+        );
+        let behind = _mm256_cmp_pd::<_CMP_NLT_UQ>(_mm256_mul_pd(dot, half), load!(&q.front));
+        // err = sqrt(d2) / s.r + normal_err; not (err >= bound).
+        let err = _mm256_add_pd(
+            _mm256_div_pd(_mm256_sqrt_pd(d2), load!(&q.r)),
+            load!(&q.nerr),
+        );
+        let inside = _mm256_cmp_pd::<_CMP_NGE_UQ>(err, vbound);
+        let take = _mm256_movemask_pd(_mm256_and_pd(_mm256_and_pd(reach, behind), inside));
+        if take == 0 {
+            continue;
+        }
+        let w = _mm256_sqrt_pd(_mm256_sub_pd(one, _mm256_div_pd(err, vbound)));
+        let mut ws = [0.0; 4];
+        _mm256_storeu_pd(ws.as_mut_ptr(), w);
+        for (k, (&i, &w)) in q.ids.iter().zip(&ws).enumerate() {
+            if take & (1 << k) != 0 {
+                // `Blend::take`'s operations.
+                sum += irr[i as usize] * w;
+                weight += w;
+                count += 1;
+            }
+        }
+    }
+    (b.sum, b.weight, b.count) = (sum, weight, count);
 }
 
 /// Where the lanes load pairs of a `Footprint`'s fields from, in f64s: (p.x, p.y), (p.z, r),
@@ -66,115 +156,6 @@ const _: () = {
     assert!(offset_of!(Footprint, r) == PZ * 8 + 8);
     assert!(offset_of!(Footprint, n) == NX * 8);
 };
-
-/// `blend_listed_scalar` with the tests and weights of four samples in the lanes of one
-/// register per quantity.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-pub(super) unsafe fn blend_listed_avx(
-    foot: &[Footprint],
-    irr: &[DVec3],
-    items: &[(u32, f64)],
-    p: DVec3,
-    n: DVec3,
-    bound: f64,
-    b: &mut Blend,
-) {
-    use std::arch::x86_64::*;
-    let (px, py, pz) = (
-        _mm256_set1_pd(p.x),
-        _mm256_set1_pd(p.y),
-        _mm256_set1_pd(p.z),
-    );
-    let (nx, ny, nz) = (
-        _mm256_set1_pd(n.x),
-        _mm256_set1_pd(n.y),
-        _mm256_set1_pd(n.z),
-    );
-    let vbound = _mm256_set1_pd(bound);
-    let half = _mm256_set1_pd(0.5);
-    let front = _mm256_set1_pd(-0.05);
-    let one = _mm256_set1_pd(1.0);
-    // The sums in registers: through `b` each was stored at every sample (a bounds check
-    // may panic between two).
-    let (mut sum, mut weight, mut count) = (b.sum, b.weight, b.count);
-    let irr = &irr[..foot.len()];
-    let mut quads = items.chunks_exact(4);
-    for q in &mut quads {
-        let ids = [q[0].0, q[1].0, q[2].0, q[3].0].map(|i| i as usize);
-        // One bounds check for the four (and for `irr`, as long).
-        let top = ids[0].max(ids[1]).max(ids[2].max(ids[3]));
-        let (foot, irr) = (&foot[..=top], &irr[..=top]);
-        let s = ids.map(|i| &foot[i]);
-        // Pairs of neighbouring fields, lanes 0 and 2 of one register and 1 and 3 of the
-        // other, then split into one register per field by the unpacks.
-        let at =
-            |k: usize, field: usize| (s[k] as *const Footprint as *const f64).wrapping_add(field);
-        macro_rules! pair {
-            ($field:expr) => {{
-                // SAFETY: `field` is the place (in f64s) of the first of two consecutive f64
-                // fields of a `Footprint` (`PX`, `PZ`, `NX`, checked above): inside the value.
-                let (even, odd) = unsafe {
-                    (
-                        _mm256_loadu2_m128d(at(2, $field), at(0, $field)),
-                        _mm256_loadu2_m128d(at(3, $field), at(1, $field)),
-                    )
-                };
-                (_mm256_unpacklo_pd(even, odd), _mm256_unpackhi_pd(even, odd))
-            }};
-        }
-        let (sx, sy) = pair!(PX);
-        let (sz, r) = pair!(PZ);
-        let (snx, sny) = pair!(NX);
-        let snz = _mm256_set_pd(s[3].n.z, s[2].n.z, s[1].n.z, s[0].n.z);
-        // `within`: (p - s.p).length_squared() < (s.r * bound)².
-        let (dx, dy, dz) = (
-            _mm256_sub_pd(px, sx),
-            _mm256_sub_pd(py, sy),
-            _mm256_sub_pd(pz, sz),
-        );
-        let d2 = _mm256_add_pd(
-            _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
-            _mm256_mul_pd(dz, dz),
-        );
-        let far = _mm256_mul_pd(r, vbound);
-        let reach = _mm256_cmp_pd::<_CMP_LT_OQ>(d2, _mm256_mul_pd(far, far));
-        if _mm256_movemask_pd(reach) == 0 {
-            continue;
-        }
-        // Ward's front test: not (d · (n + s.n) · 0.5 < -0.05 · s.r).
-        let dot = _mm256_add_pd(
-            _mm256_add_pd(
-                _mm256_mul_pd(dx, _mm256_add_pd(nx, snx)),
-                _mm256_mul_pd(dy, _mm256_add_pd(ny, sny)),
-            ),
-            _mm256_mul_pd(dz, _mm256_add_pd(nz, snz)),
-        );
-        let behind =
-            _mm256_cmp_pd::<_CMP_NLT_UQ>(_mm256_mul_pd(dot, half), _mm256_mul_pd(front, r));
-        // err = sqrt(d2) / s.r + normal_err; not (err >= bound).
-        let nerr = _mm256_set_pd(q[3].1, q[2].1, q[1].1, q[0].1);
-        let err = _mm256_add_pd(_mm256_div_pd(_mm256_sqrt_pd(d2), r), nerr);
-        let inside = _mm256_cmp_pd::<_CMP_NGE_UQ>(err, vbound);
-        let w = _mm256_sqrt_pd(_mm256_sub_pd(one, _mm256_div_pd(err, vbound)));
-        let take = _mm256_movemask_pd(_mm256_and_pd(_mm256_and_pd(reach, behind), inside));
-        if take == 0 {
-            continue;
-        }
-        let mut ws = [0.0; 4];
-        _mm256_storeu_pd(ws.as_mut_ptr(), w);
-        for (k, (&i, &w)) in ids.iter().zip(&ws).enumerate() {
-            if take & (1 << k) != 0 {
-                // `Blend::take`'s operations.
-                sum += irr[i] * w;
-                weight += w;
-                count += 1;
-            }
-        }
-    }
-    (b.sum, b.weight, b.count) = (sum, weight, count);
-    blend_listed_scalar(foot, irr, quads.remainder(), p, n, bound, b);
-}
 
 /// `($foot, $q, $at)`: the four samples of `$q` (four ids of a cell, from the cache) and
 /// the masks (bit k: sample k) of those that reach the lookup `$at` (`within`) and of those
@@ -413,10 +394,60 @@ unsafe fn blend_whole_avx(
     blend_whole_scalar(foot, irr, quads.remainder(), (p, n), level, bound, b)
 }
 
-/// A cell's first read by a memo entry (`near_memo`): lists in `listed` each sample of `ids`
-/// that `weight`'s level and normal tests let through for `n`, with its `normal_err`, and
-/// blends those in reach, in their order. The lanes skip the samples facing another way
-/// (raddem: 70 % of those listing reads).
+/// A list being made (`list_cell`): its quads, and how many samples it holds.
+pub(super) struct Listing<'l> {
+    pub(super) quads: &'l mut Vec<ListedQuad>,
+    pub(super) len: usize,
+}
+
+/// A quad's padding: a lane that reaches nothing (`d2 < -1` never holds).
+const PAD: ListedQuad = ListedQuad {
+    px: [0.0; 4],
+    py: [0.0; 4],
+    pz: [0.0; 4],
+    far2: [-1.0; 4],
+    r: [1.0; 4],
+    front: [0.0; 4],
+    mx: [0.0; 4],
+    my: [0.0; 4],
+    mz: [0.0; 4],
+    nerr: [0.0; 4],
+    ids: [0; 4],
+};
+
+impl Listing<'_> {
+    /// Appends sample `i` (`s`), of `normal_err` `e`, for the entry's normal `n` and bound.
+    #[inline(always)]
+    fn push(&mut self, s: &Footprint, i: u32, e: f64, n: DVec3, bound: f64) {
+        let k = self.len % 4;
+        if k == 0 {
+            self.quads.push(PAD);
+        }
+        let Some(q) = self.quads.last_mut() else {
+            unreachable!("a quad was pushed")
+        };
+        // `within`'s and `weight_tail`'s operations on the sample alone or with n and bound.
+        let far = s.r * bound;
+        q.px[k] = s.p.x;
+        q.py[k] = s.p.y;
+        q.pz[k] = s.p.z;
+        q.far2[k] = far * far;
+        q.r[k] = s.r;
+        q.front[k] = -0.05 * s.r;
+        let m = n + s.n;
+        q.mx[k] = m.x;
+        q.my[k] = m.y;
+        q.mz[k] = m.z;
+        q.nerr[k] = e;
+        q.ids[k] = i;
+        self.len += 1;
+    }
+}
+
+/// A cell's first read by a memo entry (`near_memo`): lists each sample of `ids` that
+/// `weight`'s level and normal tests let through for `n`, with its `normal_err`, and blends
+/// those in reach, in their order. The lanes skip the samples facing another way (raddem:
+/// 70 % of those listing reads).
 #[inline(always)]
 pub(super) fn list_cell(
     cache: &Cache,
@@ -424,28 +455,17 @@ pub(super) fn list_cell(
     (p, n): (DVec3, DVec3),
     level: u32,
     bound: f64,
-    listed: &mut Vec<(u32, f64)>,
+    list: &mut Listing,
     b: &mut Blend,
 ) {
     #[cfg(target_arch = "x86_64")]
     if cache.lanes && ids.len() >= 4 {
         // SAFETY: `lanes` is only set where the CPU has AVX (`Cache::with_pool`).
-        unsafe {
-            list_cell_avx(
-                &cache.foot,
-                &cache.irr,
-                ids,
-                (p, n),
-                level,
-                bound,
-                listed,
-                b,
-            )
-        };
+        unsafe { list_cell_avx(&cache.foot, &cache.irr, ids, (p, n), level, bound, list, b) };
         return;
     }
     for &i in ids {
-        list_one(&cache.foot, &cache.irr, i, (p, n), level, bound, listed, b);
+        list_one(&cache.foot, &cache.irr, i, (p, n), level, bound, list, b);
     }
 }
 
@@ -459,7 +479,7 @@ fn list_one(
     (p, n): (DVec3, DVec3),
     level: u32,
     bound: f64,
-    listed: &mut Vec<(u32, f64)>,
+    list: &mut Listing,
     b: &mut Blend,
 ) {
     let s = &foot[i as usize];
@@ -469,7 +489,7 @@ fn list_one(
         return;
     }
     let e = normal_err(cos);
-    listed.push((i, e));
+    list.push(s, i, e, n, bound);
     if within(s, p, bound) {
         b.add_listed(s, irr[i as usize], p, n, bound, e);
     }
@@ -485,7 +505,7 @@ unsafe fn list_cell_avx(
     (p, n): (DVec3, DVec3),
     level: u32,
     bound: f64,
-    listed: &mut Vec<(u32, f64)>,
+    list: &mut Listing,
     b: &mut Blend,
 ) {
     let at = Lookup4::new(p, n, bound);
@@ -497,12 +517,12 @@ unsafe fn list_cell_avx(
         }
         for k in 0..4 {
             if facing & (1 << k) != 0 {
-                list_one(foot, irr, q[k], (p, n), level, bound, listed, b);
+                list_one(foot, irr, q[k], (p, n), level, bound, list, b);
             }
         }
     }
     for &i in quads.remainder() {
-        list_one(foot, irr, i, (p, n), level, bound, listed, b);
+        list_one(foot, irr, i, (p, n), level, bound, list, b);
     }
 }
 
@@ -605,7 +625,11 @@ mod tests {
             assert_eq!(bits(&got), bits(&want), "blend_whole, trial {trial}");
 
             let (mut want, mut got) = (Blend::default(), Blend::default());
-            let (mut list_want, mut list_got) = (Vec::new(), Vec::new());
+            let (mut quads_want, mut quads_got) = (Vec::new(), Vec::new());
+            let mut list_want = Listing {
+                quads: &mut quads_want,
+                len: 0,
+            };
             for &i in &ids {
                 list_one(
                     &foot,
@@ -618,6 +642,10 @@ mod tests {
                     &mut want,
                 );
             }
+            let mut list_got = Listing {
+                quads: &mut quads_got,
+                len: 0,
+            };
             // SAFETY: the CPU has AVX (checked above).
             unsafe {
                 list_cell_avx(
@@ -631,12 +659,21 @@ mod tests {
                     &mut got,
                 )
             };
+            assert_eq!(list_got.len, list_want.len, "trial {trial}");
             assert_eq!(bits(&got), bits(&want), "list_cell, trial {trial}");
-            let as_bits = |l: &[(u32, f64)]| -> Vec<(u32, u64)> {
-                l.iter().map(|&(i, e)| (i, e.to_bits())).collect()
-            };
-            assert_eq!(as_bits(&list_got), as_bits(&list_want), "trial {trial}");
+            let as_bits = |l: &[ListedQuad]| -> Vec<u64> { l.iter().flat_map(quad_bits).collect() };
+            assert_eq!(as_bits(&quads_got), as_bits(&quads_want), "trial {trial}");
         }
+    }
+
+    /// Every field of a quad, as bits.
+    fn quad_bits(q: &ListedQuad) -> Vec<u64> {
+        let fields = [
+            q.px, q.py, q.pz, q.far2, q.r, q.front, q.mx, q.my, q.mz, q.nerr,
+        ];
+        let mut out: Vec<u64> = fields.iter().flatten().map(|v| v.to_bits()).collect();
+        out.extend(q.ids.map(u64::from));
+        out
     }
 
     /// The lanes blend lists of every length as the scalar loop does, to the bit: points
@@ -665,10 +702,26 @@ mod tests {
                     (i, e)
                 })
                 .collect();
-            let (mut want, mut got) = (Blend::default(), Blend::default());
-            blend_listed_scalar(&foot, &irr, &items, p, n, bound, &mut want);
+            // The list as `near_memo` makes it, and the blend `within` and `weight_listed`
+            // give of it in its order (`near_memo`'s loop before the quads).
+            let mut quads = Vec::new();
+            let mut list = Listing {
+                quads: &mut quads,
+                len: 0,
+            };
+            let mut want = Blend::default();
+            for &(i, e) in &items {
+                let s = &foot[i as usize];
+                list.push(s, i, e, n, bound);
+                if within(s, p, bound) {
+                    want.add_listed(s, irr[i as usize], p, n, bound, e);
+                }
+            }
+            let (mut scalar, mut got) = (Blend::default(), Blend::default());
+            blend_listed_scalar(&irr, &quads, p, bound, &mut scalar);
             // SAFETY: the CPU has AVX (checked above).
-            unsafe { blend_listed_avx(&foot, &irr, &items, p, n, bound, &mut got) };
+            unsafe { blend_listed_avx(&irr, &quads, p, bound, &mut got) };
+            assert_eq!(bits(&scalar), bits(&want), "trial {trial}");
             let taken = items
                 .iter()
                 .filter(|&&(i, e)| listed_weight(&foot[i as usize], p, n, bound, e).is_some())
