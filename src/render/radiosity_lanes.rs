@@ -49,7 +49,9 @@ pub(super) fn blend_listed_scalar(
         for k in 0..4 {
             let (dx, dy, dz) = (p.x - q.px[k], p.y - q.py[k], p.z - q.pz[k]);
             let d2 = dx * dx + dy * dy + dz * dz;
-            if !(d2 < q.far2[k]) {
+            // Ordered: a NaN reaches nothing, as in `within`.
+            let reach = d2 < q.far2[k];
+            if !reach {
                 continue;
             }
             let dist = d2.sqrt();
@@ -515,9 +517,9 @@ unsafe fn list_cell_avx(
         if facing == 0 {
             continue;
         }
-        for k in 0..4 {
+        for (k, &i) in q.iter().enumerate() {
             if facing & (1 << k) != 0 {
-                list_one(foot, irr, q[k], (p, n), level, bound, list, b);
+                list_one(foot, irr, i, (p, n), level, bound, list, b);
             }
         }
     }
