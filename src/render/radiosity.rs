@@ -222,11 +222,8 @@ impl<'a> Tracer<'a> {
 fn enough_here(rad: &RadTrace, p: DVec3, n: DVec3, need: u32, ctx: &Scratch) -> Option<DVec3> {
     let (cache, bound) = (rad.cache, rad.bound);
     let mut b = Blend::default();
-    let enough = |b: &Blend| b.count >= need && b.weight > 0.0;
-    let mut done = !cache.near_while(p, bound, 1, |i, s| {
-        b.add(s, cache.irr[i], p, n, 1, bound);
-        !enough(&b)
-    });
+    let enough = |b: &Blend| super::radiosity_cache::enough(b, need);
+    let mut done = !cache.near_enough(p, n, bound, need, &mut b);
     for s in &ctx.rad_local {
         if done {
             break;

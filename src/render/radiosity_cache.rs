@@ -113,9 +113,10 @@ impl Scale {
         (k(p.x), k(p.y), k(p.z))
     }
 
+    /// `pack(cell_of(p))`, by `floors_key`.
+    #[inline(always)]
     fn key(&self, p: DVec3) -> u64 {
-        let (x, y, z) = self.cell_of(p);
-        pack(x, y, z)
+        floors_key(self.floors(p))
     }
 
     /// `cell_of` before its clamp and conversion: equal floors give equal keys (`floors_key`),
@@ -126,11 +127,23 @@ impl Scale {
     }
 }
 
-/// `Scale::key` from its `floors` (the same operations).
+/// `pack` of `cell_of`'s coordinates from their `floors`, to the bit. The clamped floor
+/// is a whole number below 2^51 in size, so adding 1.5 * 2^52 to it is exact and leaves it
+/// in the low bits as two's complement plus 2^51, whose low 21 bits are `as i64`'s: `pack`
+/// keeps only those. This instead of the saturating conversion, whose range checks were
+/// half of a key's instructions; a NaN is 0, as `as i64` makes it.
 #[inline(always)]
 fn floors_key(f: [f64; 3]) -> u64 {
-    let k = |v: f64| v.clamp(-1e15, 1e15) as i64;
-    pack(k(f[0]), k(f[1]), k(f[2]))
+    const WHOLE: f64 = 6_755_399_441_055_744.0;
+    let k = |v: f64| {
+        let c = v.clamp(-1e15, 1e15);
+        if c.is_nan() {
+            0
+        } else {
+            (c + WHOLE).to_bits()
+        }
+    };
+    pack_bits(k(f[0]), k(f[1]), k(f[2]))
 }
 
 /// A cell's key: its coordinates modulo 2^21, in one word (a bucket of 32 bytes instead of
@@ -140,8 +153,14 @@ fn floors_key(f: [f64; 3]) -> u64 {
 /// samples in the same order.
 #[inline(always)]
 fn pack(x: i64, y: i64, z: i64) -> u64 {
+    pack_bits(x as u64, y as u64, z as u64)
+}
+
+/// `pack` of three words whose low 21 bits are the coordinates'.
+#[inline(always)]
+fn pack_bits(x: u64, y: u64, z: u64) -> u64 {
     const M: u64 = (1 << 21) - 1;
-    ((x as u64 & M) << 42) | ((y as u64 & M) << 21) | (z as u64 & M)
+    ((x & M) << 42) | ((y & M) << 21) | (z & M)
 }
 
 impl Cache {
@@ -266,9 +285,10 @@ impl Cache {
     /// cell costs about what reading it whole does, the list's place and a map's insert.)
     /// The samples are blended in the order `near` gives them, so the blend's sums are the
     /// same to the bit. A sample of a list keeps its `normal_err` for this normal (the same
-    /// bits for every lookup reading the list), which `Blend::add_listed` takes in place of
-    /// `weight`'s level and normal tests and its first square root; a list already made is
-    /// read four samples at a time where the CPU has AVX (`lanes`).
+    /// bits for every lookup reading the list), which stands for `weight`'s level and normal
+    /// tests and its first square root, and what else `weight` computes from the sample with
+    /// the entry's normal and bound alone (`ListedQuad`); a list is kept four samples to a
+    /// quad, field by field, and read a quad at a time where the CPU has AVX (`lanes`).
     #[inline]
     pub(super) fn near_memo(
         &self,
@@ -380,42 +400,51 @@ impl Cache {
                 match found[j] {
                     None => {
                         let (at, len) = (c.at.0 as usize, c.at.1 as usize);
-                        lanes::blend_listed(self, &listed[at..at + len], p, n, bound, b);
+                        lanes::blend_listed(self, &listed[at..at + len], p, bound, b);
                     }
                     Some(ids) if list[j] => {
                         let start = listed.len();
-                        for &i in ids {
-                            let s = &self.foot[i as usize];
-                            // `weight`'s first tests, as it writes them (a NaN cosine passes).
-                            let cos = n.dot(s.n);
-                            if s.level > level || cos < 0.5 {
-                                continue;
-                            }
-                            let e = normal_err(cos);
-                            listed.push((i, e));
-                            if within(s, p, bound) {
-                                b.add_listed(s, self.irr[i as usize], p, n, bound, e);
-                            }
-                        }
+                        let mut list = lanes::Listing {
+                            quads: listed,
+                            len: 0,
+                        };
+                        lanes::list_cell(self, ids, (p, n), level, bound, &mut list, b);
                         c.at = (start as u32, (listed.len() - start) as u32);
                         lists.insert(((g * GROUP + j) as u32, c.key), c.at);
                     }
-                    Some(ids) => {
-                        lanes::each_within(self, ids, p, bound, |i, s| {
-                            b.add(s, self.irr[i], p, n, level, bound);
-                            true
-                        });
-                    }
+                    Some(ids) => lanes::blend_whole(self, ids, (p, n), level, bound, b),
                 }
             }
         }
     }
 
-    /// `near` from the first sample on, stopping as soon as `f` returns false (then false).
-    /// Its own loop: `near` written as this with an `f` that never stops compiled to a slower
-    /// loop (gamma_showcase +3%). Not through `lanes::each_within`: most samples met here are
-    /// in reach, and `f` was not inlined there (rad_def_test_37 +1.5 %).
+    /// Whether `need` samples of level 1 are valid at (p, n) at error bound `bound`, with some
+    /// weight (`enough`): blends into `b` the samples `weight` takes in `near`'s
+    /// order, stopping at the one that makes them enough (then false).
     #[inline]
+    pub(super) fn near_enough(
+        &self,
+        p: DVec3,
+        n: DVec3,
+        bound: f64,
+        need: u32,
+        b: &mut Blend,
+    ) -> bool {
+        let mut found: [&[u32]; GROUP] = [&[]; GROUP];
+        for group in self.scales.chunks(GROUP) {
+            self.cells(group, p, bound, 1, &mut found);
+            for ids in &found[..group.len()] {
+                if !lanes::blend_until(self, ids, (p, n), bound, need, b) {
+                    return false;
+                }
+            }
+        }
+        true
+    }
+
+    /// `near` from the first sample on, stopping as soon as `f` returns false (then false):
+    /// what `near_enough` reads, for the tests.
+    #[cfg(test)]
     pub(super) fn near_while(
         &self,
         p: DVec3,
@@ -582,6 +611,13 @@ impl Blend {
             self.count += 1;
         }
     }
+}
+
+/// Whether a blend has the `need` samples of some weight a probe's lookup asks for
+/// (`enough_here`).
+#[inline(always)]
+pub(super) fn enough(b: &Blend, need: u32) -> bool {
+    b.count >= need && b.weight > 0.0
 }
 
 /// The weight of sample `s` in the blend at (p, n) for a lookup of `level`, None where it is

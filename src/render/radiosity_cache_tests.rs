@@ -176,3 +176,48 @@ fn any_valid_tests_every_new_sample() {
         assert_eq!(cache.any_valid(p, n, bound, from), want, "{p} from {from}");
     }
 }
+
+/// A key from the floors (`floors_key`) is `pack` of the cell's coordinates as `cell_of`
+/// makes them, for points near and far, on both sides of zero, beyond the clamp, infinite
+/// and NaN.
+#[test]
+fn floors_key_is_the_packed_cell() {
+    let mut rnd = unit_rng(9);
+    let scale = Scale {
+        exp: 0,
+        cell: 0.25,
+        inv_cell: 4.0,
+        level: 1,
+        grid: FxHashMap::default(),
+        grid1: FxHashMap::default(),
+    };
+    let mut specials = vec![
+        0.0,
+        -0.0,
+        1e-300,
+        -1e-300,
+        0.2499999,
+        -0.25,
+        1e14,
+        -1e14,
+        2.5e14,
+        -2.5e14,
+        1e300,
+        -1e300,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+    ];
+    for _ in 0..3000 {
+        let m = 10f64.powf(rnd() * 30.0 - 10.0);
+        specials.push((rnd() - 0.5) * m);
+    }
+    for (k, &x) in specials.iter().enumerate() {
+        let y = specials[(k * 7 + 3) % specials.len()];
+        let z = specials[(k * 13 + 5) % specials.len()];
+        let p = DVec3::new(x, y, z);
+        let (cx, cy, cz) = scale.cell_of(p);
+        assert_eq!(scale.key(p), pack(cx, cy, cz), "{p}");
+        assert_eq!(floors_key(scale.floors(p)), pack(cx, cy, cz), "{p}");
+    }
+}

@@ -1,55 +1,149 @@
-//! The lookups' blend of a listed cell (`Cache::near_memo`'s lists) four samples at a time in
-//! AVX lanes. Each lane makes `within`'s and `weight_listed`'s IEEE operations in their order
-//! (no FMA, the comparisons' NaN cases kept), so every weight is the scalar one to the bit;
-//! the weights are then summed one by one in the list's order, as `Blend::take` does, so the
-//! blend's sums are the same bits too. On the radiosity scenes most of a lookup's work is
-//! reading these lists (rad_def_test_37: ~800 k samples read, 45 % of them taken). Cells read
-//! whole (not listed) have their samples' reach tested the same way (`each_within`).
+//! The lookups' blend of a listed cell (`Cache::near_memo`'s lists, kept in quads of four
+//! samples field by field, `ListedQuad`) four samples at a time in AVX lanes. Each lane makes
+//! `within`'s and `weight_listed`'s IEEE operations in their order (no FMA, the comparisons'
+//! NaN cases kept), so every weight is the scalar one to the bit; the weights are then summed
+//! one by one in the list's order, as `Blend::take` does, so the blend's sums are the same
+//! bits too. On the radiosity scenes most of a lookup's work is reading these lists
+//! (rad_def_test_37: ~800 k samples read, 45 % of them taken). Cells read
+//! whole (not listed, listed for the first time, or read by a probe's lookup) have their
+//! samples' reach and normal tested the same way (`quad_masks`) before the scalar code
+//! weighs or lists the few that pass.
 
 use crate::math::DVec3;
 
 #[cfg(test)]
 use super::weight_listed;
-use super::{within, Blend, Cache, Footprint};
+use super::{enough, normal_err, within, Blend, Cache, Footprint};
+use crate::scene::scratch::ListedQuad;
 
-/// `Blend::add_listed` of every sample of `items` (a list: (sample, its `normal_err`)) that
-/// reaches `p` (`within`), in the list's order.
+/// `Blend::add_listed` of every sample of `quads` (a list, four samples a quad) that reaches
+/// `p` (`within`), in the list's order.
 #[inline]
 pub(super) fn blend_listed(
     cache: &Cache,
-    items: &[(u32, f64)],
+    quads: &[ListedQuad],
     p: DVec3,
-    n: DVec3,
     bound: f64,
     b: &mut Blend,
 ) {
-    let (foot, irr) = (&cache.foot[..], &cache.irr[..]);
     #[cfg(target_arch = "x86_64")]
-    if cache.lanes && items.len() >= 4 {
+    if cache.lanes {
         // SAFETY: `lanes` is only set where the CPU has AVX (`Cache::with_pool`).
-        unsafe { blend_listed_avx(foot, irr, items, p, n, bound, b) };
+        unsafe { blend_listed_avx(&cache.irr, quads, p, bound, b) };
         return;
     }
-    blend_listed_scalar(foot, irr, items, p, n, bound, b);
+    blend_listed_scalar(&cache.irr, quads, p, bound, b);
 }
 
-/// The scalar form (and the lanes' tail): `near_memo`'s loop as it was.
-#[inline(always)]
+/// The scalar form: `within` and `weight_listed` of each sample, their operations in their
+/// order on the quad's fields (which hold the same bits as what they compute from the
+/// sample, the entry's normal and bound: `far2`, `front`, `mx`..`mz`).
 pub(super) fn blend_listed_scalar(
-    foot: &[Footprint],
     irr: &[DVec3],
-    items: &[(u32, f64)],
+    quads: &[ListedQuad],
     p: DVec3,
-    n: DVec3,
     bound: f64,
     b: &mut Blend,
 ) {
-    for &(i, e) in items {
-        let s = &foot[i as usize];
-        if within(s, p, bound) {
-            b.add_listed(s, irr[i as usize], p, n, bound, e);
+    for q in quads {
+        for k in 0..4 {
+            let (dx, dy, dz) = (p.x - q.px[k], p.y - q.py[k], p.z - q.pz[k]);
+            let d2 = dx * dx + dy * dy + dz * dz;
+            // Ordered: a NaN reaches nothing, as in `within`.
+            let reach = d2 < q.far2[k];
+            if !reach {
+                continue;
+            }
+            let dist = d2.sqrt();
+            if (dx * q.mx[k] + dy * q.my[k] + dz * q.mz[k]) * 0.5 < q.front[k] {
+                continue;
+            }
+            let err = dist / q.r[k] + q.nerr[k];
+            if err >= bound {
+                continue;
+            }
+            b.take(irr[q.ids[k] as usize], Some((1.0 - err / bound).sqrt()));
         }
     }
+}
+
+/// `blend_listed_scalar` with the tests and weights of a quad's four samples in the lanes of
+/// one register per quantity, each loaded whole from the quad. The same operations per lane
+/// (no FMA; the comparisons' NaN cases kept: `d2 < far2` ordered, the front test kept where
+/// not `<`, the error where not `>=`); the taken weights are then summed one by one in the
+/// list's order, as `Blend::take` does.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+pub(super) unsafe fn blend_listed_avx(
+    irr: &[DVec3],
+    quads: &[ListedQuad],
+    p: DVec3,
+    bound: f64,
+    b: &mut Blend,
+) {
+    use std::arch::x86_64::*;
+    let (px, py, pz) = (
+        _mm256_set1_pd(p.x),
+        _mm256_set1_pd(p.y),
+        _mm256_set1_pd(p.z),
+    );
+    let vbound = _mm256_set1_pd(bound);
+    let half = _mm256_set1_pd(0.5);
+    let one = _mm256_set1_pd(1.0);
+    // The sums in registers: through `b` each was stored at every sample (a bounds check
+    // may panic between two).
+    let (mut sum, mut weight, mut count) = (b.sum, b.weight, b.count);
+    for q in quads {
+        macro_rules! load {
+            ($f:expr) => {{
+                let f: &[f64; 4] = $f;
+                // SAFETY: four f64s of the quad.
+                unsafe { _mm256_loadu_pd(f.as_ptr()) }
+            }};
+        }
+        let dx = _mm256_sub_pd(px, load!(&q.px));
+        let dy = _mm256_sub_pd(py, load!(&q.py));
+        let dz = _mm256_sub_pd(pz, load!(&q.pz));
+        let d2 = _mm256_add_pd(
+            _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
+            _mm256_mul_pd(dz, dz),
+        );
+        let reach = _mm256_cmp_pd::<_CMP_LT_OQ>(d2, load!(&q.far2));
+        if _mm256_movemask_pd(reach) == 0 {
+            continue;
+        }
+        // Ward's front test: not (d · (n + s.n) · 0.5 < -0.05 · s.r).
+        let dot = _mm256_add_pd(
+            _mm256_add_pd(
+                _mm256_mul_pd(dx, load!(&q.mx)),
+                _mm256_mul_pd(dy, load!(&q.my)),
+            ),
+            _mm256_mul_pd(dz, load!(&q.mz)),
+        );
+        let behind = _mm256_cmp_pd::<_CMP_NLT_UQ>(_mm256_mul_pd(dot, half), load!(&q.front));
+        // err = sqrt(d2) / s.r + normal_err; not (err >= bound).
+        let err = _mm256_add_pd(
+            _mm256_div_pd(_mm256_sqrt_pd(d2), load!(&q.r)),
+            load!(&q.nerr),
+        );
+        let inside = _mm256_cmp_pd::<_CMP_NGE_UQ>(err, vbound);
+        let take = _mm256_movemask_pd(_mm256_and_pd(_mm256_and_pd(reach, behind), inside));
+        if take == 0 {
+            continue;
+        }
+        let w = _mm256_sqrt_pd(_mm256_sub_pd(one, _mm256_div_pd(err, vbound)));
+        let mut ws = [0.0; 4];
+        _mm256_storeu_pd(ws.as_mut_ptr(), w);
+        for (k, (&i, &w)) in q.ids.iter().zip(&ws).enumerate() {
+            if take & (1 << k) != 0 {
+                // `Blend::take`'s operations.
+                sum += irr[i as usize] * w;
+                weight += w;
+                count += 1;
+            }
+        }
+    }
+    (b.sum, b.weight, b.count) = (sum, weight, count);
 }
 
 /// Where the lanes load pairs of a `Footprint`'s fields from, in f64s: (p.x, p.y), (p.z, r),
@@ -65,208 +159,373 @@ const _: () = {
     assert!(offset_of!(Footprint, n) == NX * 8);
 };
 
-/// `blend_listed_scalar` with the tests and weights of four samples in the lanes of one
-/// register per quantity.
+/// `($foot, $q, $at)`: the four samples of `$q` (four ids of a cell, from the cache) and
+/// the masks (bit k: sample k) of those that reach the lookup `$at` (`within`) and of those
+/// not turned away by `weight`'s normal test (`cos < 0.5`; a NaN cosine passes, as there).
+/// The same IEEE operations in the same order as the scalar tests (no FMA), so the same bits
+/// decide. A macro, used in AVX functions only: as a function it was not inlined.
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-pub(super) unsafe fn blend_listed_avx(
-    foot: &[Footprint],
-    irr: &[DVec3],
-    items: &[(u32, f64)],
-    p: DVec3,
-    n: DVec3,
-    bound: f64,
-    b: &mut Blend,
-) {
-    use std::arch::x86_64::*;
-    let (px, py, pz) = (
-        _mm256_set1_pd(p.x),
-        _mm256_set1_pd(p.y),
-        _mm256_set1_pd(p.z),
-    );
-    let (nx, ny, nz) = (
-        _mm256_set1_pd(n.x),
-        _mm256_set1_pd(n.y),
-        _mm256_set1_pd(n.z),
-    );
-    let vbound = _mm256_set1_pd(bound);
-    let half = _mm256_set1_pd(0.5);
-    let front = _mm256_set1_pd(-0.05);
-    let one = _mm256_set1_pd(1.0);
-    // The sums in registers: through `b` each was stored at every sample (a bounds check
-    // may panic between two).
-    let (mut sum, mut weight, mut count) = (b.sum, b.weight, b.count);
-    let irr = &irr[..foot.len()];
-    let mut quads = items.chunks_exact(4);
-    for q in &mut quads {
-        let ids = [q[0].0, q[1].0, q[2].0, q[3].0].map(|i| i as usize);
-        // One bounds check for the four (and for `irr`, as long).
-        let top = ids[0].max(ids[1]).max(ids[2].max(ids[3]));
-        let (foot, irr) = (&foot[..=top], &irr[..=top]);
-        let s = ids.map(|i| &foot[i]);
-        // Pairs of neighbouring fields, lanes 0 and 2 of one register and 1 and 3 of the
-        // other, then split into one register per field by the unpacks.
-        let at =
+macro_rules! quad_masks {
+    ($foot:expr, $q:expr, $at:expr) => {{
+        use std::arch::x86_64::*;
+        let (foot, q, at): (&[Footprint], &[u32], &Lookup4) = ($foot, $q, $at);
+        let s = [q[0], q[1], q[2], q[3]].map(|i| &foot[i as usize]);
+        let ptr =
             |k: usize, field: usize| (s[k] as *const Footprint as *const f64).wrapping_add(field);
-        macro_rules! pair {
-            ($field:expr) => {{
-                // SAFETY: `field` is the place (in f64s) of the first of two consecutive f64
-                // fields of a `Footprint` (`PX`, `PZ`, `NX`, checked above): inside the value.
-                let (even, odd) = unsafe {
-                    (
-                        _mm256_loadu2_m128d(at(2, $field), at(0, $field)),
-                        _mm256_loadu2_m128d(at(3, $field), at(1, $field)),
-                    )
-                };
-                (_mm256_unpacklo_pd(even, odd), _mm256_unpackhi_pd(even, odd))
-            }};
-        }
-        let (sx, sy) = pair!(PX);
-        let (sz, r) = pair!(PZ);
-        let (snx, sny) = pair!(NX);
+        // SAFETY: as in `blend_listed_avx`: pairs of consecutive f64 fields of a `Footprint`
+        // (`PX`, `PZ`, `NX`), lanes 0 and 2 of one register and 1 and 3 of the other.
+        let (xy, zr, nxy) = unsafe {
+            (
+                (
+                    _mm256_loadu2_m128d(ptr(2, PX), ptr(0, PX)),
+                    _mm256_loadu2_m128d(ptr(3, PX), ptr(1, PX)),
+                ),
+                (
+                    _mm256_loadu2_m128d(ptr(2, PZ), ptr(0, PZ)),
+                    _mm256_loadu2_m128d(ptr(3, PZ), ptr(1, PZ)),
+                ),
+                (
+                    _mm256_loadu2_m128d(ptr(2, NX), ptr(0, NX)),
+                    _mm256_loadu2_m128d(ptr(3, NX), ptr(1, NX)),
+                ),
+            )
+        };
+        let (sx, sy) = (
+            _mm256_unpacklo_pd(xy.0, xy.1),
+            _mm256_unpackhi_pd(xy.0, xy.1),
+        );
+        let (sz, r) = (
+            _mm256_unpacklo_pd(zr.0, zr.1),
+            _mm256_unpackhi_pd(zr.0, zr.1),
+        );
+        let (snx, sny) = (
+            _mm256_unpacklo_pd(nxy.0, nxy.1),
+            _mm256_unpackhi_pd(nxy.0, nxy.1),
+        );
         let snz = _mm256_set_pd(s[3].n.z, s[2].n.z, s[1].n.z, s[0].n.z);
-        // `within`: (p - s.p).length_squared() < (s.r * bound)².
         let (dx, dy, dz) = (
-            _mm256_sub_pd(px, sx),
-            _mm256_sub_pd(py, sy),
-            _mm256_sub_pd(pz, sz),
+            _mm256_sub_pd(at.px, sx),
+            _mm256_sub_pd(at.py, sy),
+            _mm256_sub_pd(at.pz, sz),
         );
         let d2 = _mm256_add_pd(
             _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
             _mm256_mul_pd(dz, dz),
         );
-        let far = _mm256_mul_pd(r, vbound);
-        let reach = _mm256_cmp_pd::<_CMP_LT_OQ>(d2, _mm256_mul_pd(far, far));
-        if _mm256_movemask_pd(reach) == 0 {
-            continue;
-        }
-        // Ward's front test: not (d · (n + s.n) · 0.5 < -0.05 · s.r).
-        let dot = _mm256_add_pd(
-            _mm256_add_pd(
-                _mm256_mul_pd(dx, _mm256_add_pd(nx, snx)),
-                _mm256_mul_pd(dy, _mm256_add_pd(ny, sny)),
-            ),
-            _mm256_mul_pd(dz, _mm256_add_pd(nz, snz)),
+        let far = _mm256_mul_pd(r, at.bound);
+        let reach = _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(d2, _mm256_mul_pd(far, far)));
+        // `n.dot(s.n)`: (x·x' + y·y') + z·z'.
+        let cos = _mm256_add_pd(
+            _mm256_add_pd(_mm256_mul_pd(at.nx, snx), _mm256_mul_pd(at.ny, sny)),
+            _mm256_mul_pd(at.nz, snz),
         );
-        let behind =
-            _mm256_cmp_pd::<_CMP_NLT_UQ>(_mm256_mul_pd(dot, half), _mm256_mul_pd(front, r));
-        // err = sqrt(d2) / s.r + normal_err; not (err >= bound).
-        let nerr = _mm256_set_pd(q[3].1, q[2].1, q[1].1, q[0].1);
-        let err = _mm256_add_pd(_mm256_div_pd(_mm256_sqrt_pd(d2), r), nerr);
-        let inside = _mm256_cmp_pd::<_CMP_NGE_UQ>(err, vbound);
-        let w = _mm256_sqrt_pd(_mm256_sub_pd(one, _mm256_div_pd(err, vbound)));
-        let take = _mm256_movemask_pd(_mm256_and_pd(_mm256_and_pd(reach, behind), inside));
-        if take == 0 {
-            continue;
-        }
-        let mut ws = [0.0; 4];
-        _mm256_storeu_pd(ws.as_mut_ptr(), w);
-        for (k, (&i, &w)) in ids.iter().zip(&ws).enumerate() {
-            if take & (1 << k) != 0 {
-                // `Blend::take`'s operations.
-                sum += irr[i] * w;
-                weight += w;
-                count += 1;
-            }
-        }
-    }
-    (b.sum, b.weight, b.count) = (sum, weight, count);
-    blend_listed_scalar(foot, irr, quads.remainder(), p, n, bound, b);
+        let facing = _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_NLT_UQ>(cos, at.half));
+        (s, reach, facing)
+    }};
 }
 
-/// `f` of every sample of `ids` that reaches `p` (`within`), in their order, until `f`
-/// returns false (then false). The reach of four samples is tested at a time where the CPU
-/// has AVX: in a cell read whole most samples are out of reach (radiosity2's lookups on its
-/// curved surfaces: 84 %).
+/// A lookup's point, normal and bound in every lane.
+#[cfg(target_arch = "x86_64")]
+struct Lookup4 {
+    px: std::arch::x86_64::__m256d,
+    py: std::arch::x86_64::__m256d,
+    pz: std::arch::x86_64::__m256d,
+    nx: std::arch::x86_64::__m256d,
+    ny: std::arch::x86_64::__m256d,
+    nz: std::arch::x86_64::__m256d,
+    bound: std::arch::x86_64::__m256d,
+    half: std::arch::x86_64::__m256d,
+}
+
+#[cfg(target_arch = "x86_64")]
+impl Lookup4 {
+    #[target_feature(enable = "avx")]
+    fn new(p: DVec3, n: DVec3, bound: f64) -> Lookup4 {
+        use std::arch::x86_64::_mm256_set1_pd as splat;
+        Lookup4 {
+            px: splat(p.x),
+            py: splat(p.y),
+            pz: splat(p.z),
+            nx: splat(n.x),
+            ny: splat(n.y),
+            nz: splat(n.z),
+            bound: splat(bound),
+            half: splat(0.5),
+        }
+    }
+}
+
+/// `Blend::add` (level 1) of every sample of `ids` (a cell's) that reaches `p` (`within`),
+/// in their order, until the blend is `enough` (then false). A sample `weight` turns away
+/// for its normal adds nothing and leaves `enough` as it was, so the lanes skip it: most
+/// samples a probe's lookup meets in reach face another way (rad_def_test_37: 80 k of 119 k).
 #[inline(always)]
-pub(super) fn each_within(
+pub(super) fn blend_until(
     cache: &Cache,
     ids: &[u32],
-    p: DVec3,
+    (p, n): (DVec3, DVec3),
     bound: f64,
-    f: impl FnMut(usize, &Footprint) -> bool,
+    need: u32,
+    b: &mut Blend,
 ) -> bool {
     #[cfg(target_arch = "x86_64")]
     if cache.lanes && ids.len() >= 4 {
         // SAFETY: `lanes` is only set where the CPU has AVX (`Cache::with_pool`).
-        return unsafe { each_within_avx(&cache.foot, ids, p, bound, f) };
+        return unsafe { blend_until_avx(&cache.foot, &cache.irr, ids, (p, n), bound, need, b) };
     }
-    each_within_scalar(&cache.foot, ids, p, bound, f)
+    blend_until_scalar(&cache.foot, &cache.irr, ids, (p, n), bound, need, b)
 }
 
 #[inline(always)]
-fn each_within_scalar(
+fn blend_until_scalar(
     foot: &[Footprint],
+    irr: &[DVec3],
     ids: &[u32],
-    p: DVec3,
+    (p, n): (DVec3, DVec3),
     bound: f64,
-    mut f: impl FnMut(usize, &Footprint) -> bool,
+    need: u32,
+    b: &mut Blend,
 ) -> bool {
     for &i in ids {
         let s = &foot[i as usize];
-        if within(s, p, bound) && !f(i as usize, s) {
-            return false;
+        if within(s, p, bound) {
+            b.add(s, irr[i as usize], p, n, 1, bound);
+            if enough(b, need) {
+                return false;
+            }
         }
     }
     true
 }
 
-/// `each_within_scalar` with `within` of four samples in the lanes of one register per
-/// quantity (its IEEE operations in its order, so the same samples pass).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx")]
-unsafe fn each_within_avx(
+unsafe fn blend_until_avx(
     foot: &[Footprint],
+    irr: &[DVec3],
     ids: &[u32],
-    p: DVec3,
+    (p, n): (DVec3, DVec3),
     bound: f64,
-    mut f: impl FnMut(usize, &Footprint) -> bool,
+    need: u32,
+    b: &mut Blend,
 ) -> bool {
-    use std::arch::x86_64::*;
-    let (px, py, pz) = (
-        _mm256_set1_pd(p.x),
-        _mm256_set1_pd(p.y),
-        _mm256_set1_pd(p.z),
-    );
-    let vbound = _mm256_set1_pd(bound);
+    let at = Lookup4::new(p, n, bound);
     let mut quads = ids.chunks_exact(4);
     for q in &mut quads {
-        let ids = [q[0], q[1], q[2], q[3]].map(|i| i as usize);
-        let s = ids.map(|i| &foot[i]);
-        let at =
-            |k: usize, field: usize| (s[k] as *const Footprint as *const f64).wrapping_add(field);
-        // SAFETY: as in `blend_listed_avx`: pairs of consecutive f64 fields of a `Footprint`.
-        let (xy, zr) = unsafe {
-            let xy = (
-                _mm256_loadu2_m128d(at(2, PX), at(0, PX)),
-                _mm256_loadu2_m128d(at(3, PX), at(1, PX)),
-            );
-            let zr = (
-                _mm256_loadu2_m128d(at(2, PZ), at(0, PZ)),
-                _mm256_loadu2_m128d(at(3, PZ), at(1, PZ)),
-            );
-            (xy, zr)
-        };
-        let dx = _mm256_sub_pd(px, _mm256_unpacklo_pd(xy.0, xy.1));
-        let dy = _mm256_sub_pd(py, _mm256_unpackhi_pd(xy.0, xy.1));
-        let dz = _mm256_sub_pd(pz, _mm256_unpacklo_pd(zr.0, zr.1));
-        let r = _mm256_unpackhi_pd(zr.0, zr.1);
-        let d2 = _mm256_add_pd(
-            _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
-            _mm256_mul_pd(dz, dz),
-        );
-        let far = _mm256_mul_pd(r, vbound);
-        let reach = _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(d2, _mm256_mul_pd(far, far)));
-        if reach == 0 {
+        let (s, reach, facing) = quad_masks!(foot, q, &at);
+        let take = reach & facing;
+        if take == 0 {
             continue;
         }
         for k in 0..4 {
-            if reach & (1 << k) != 0 && !f(ids[k], s[k]) {
-                return false;
+            if take & (1 << k) != 0 {
+                b.add(s[k], irr[q[k] as usize], p, n, 1, bound);
+                if enough(b, need) {
+                    return false;
+                }
             }
         }
     }
-    each_within_scalar(foot, quads.remainder(), p, bound, f)
+    blend_until_scalar(foot, irr, quads.remainder(), (p, n), bound, need, b)
+}
+
+/// `Blend::add` of every sample of `ids` (a cell read whole) that reaches `p`, in their
+/// order. The lanes skip the samples out of reach or facing another way, which `weight`
+/// turns away (radiosity2's curved surfaces: 84 % out of reach).
+#[inline(always)]
+pub(super) fn blend_whole(
+    cache: &Cache,
+    ids: &[u32],
+    (p, n): (DVec3, DVec3),
+    level: u32,
+    bound: f64,
+    b: &mut Blend,
+) {
+    #[cfg(target_arch = "x86_64")]
+    if cache.lanes && ids.len() >= 4 {
+        // SAFETY: `lanes` is only set where the CPU has AVX (`Cache::with_pool`).
+        unsafe { blend_whole_avx(&cache.foot, &cache.irr, ids, (p, n), level, bound, b) };
+        return;
+    }
+    blend_whole_scalar(&cache.foot, &cache.irr, ids, (p, n), level, bound, b)
+}
+
+#[inline(always)]
+fn blend_whole_scalar(
+    foot: &[Footprint],
+    irr: &[DVec3],
+    ids: &[u32],
+    (p, n): (DVec3, DVec3),
+    level: u32,
+    bound: f64,
+    b: &mut Blend,
+) {
+    for &i in ids {
+        let s = &foot[i as usize];
+        if within(s, p, bound) {
+            b.add(s, irr[i as usize], p, n, level, bound);
+        }
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+unsafe fn blend_whole_avx(
+    foot: &[Footprint],
+    irr: &[DVec3],
+    ids: &[u32],
+    (p, n): (DVec3, DVec3),
+    level: u32,
+    bound: f64,
+    b: &mut Blend,
+) {
+    let at = Lookup4::new(p, n, bound);
+    let mut quads = ids.chunks_exact(4);
+    for q in &mut quads {
+        let (s, reach, facing) = quad_masks!(foot, q, &at);
+        let take = reach & facing;
+        if take == 0 {
+            continue;
+        }
+        for k in 0..4 {
+            if take & (1 << k) != 0 {
+                b.add(s[k], irr[q[k] as usize], p, n, level, bound);
+            }
+        }
+    }
+    blend_whole_scalar(foot, irr, quads.remainder(), (p, n), level, bound, b)
+}
+
+/// A list being made (`list_cell`): its quads, and how many samples it holds.
+pub(super) struct Listing<'l> {
+    pub(super) quads: &'l mut Vec<ListedQuad>,
+    pub(super) len: usize,
+}
+
+/// A quad's padding: a lane that reaches nothing (`d2 < -1` never holds).
+const PAD: ListedQuad = ListedQuad {
+    px: [0.0; 4],
+    py: [0.0; 4],
+    pz: [0.0; 4],
+    far2: [-1.0; 4],
+    r: [1.0; 4],
+    front: [0.0; 4],
+    mx: [0.0; 4],
+    my: [0.0; 4],
+    mz: [0.0; 4],
+    nerr: [0.0; 4],
+    ids: [0; 4],
+};
+
+impl Listing<'_> {
+    /// Appends sample `i` (`s`), of `normal_err` `e`, for the entry's normal `n` and bound.
+    #[inline(always)]
+    fn push(&mut self, s: &Footprint, i: u32, e: f64, n: DVec3, bound: f64) {
+        let k = self.len % 4;
+        if k == 0 {
+            self.quads.push(PAD);
+        }
+        let Some(q) = self.quads.last_mut() else {
+            unreachable!("a quad was pushed")
+        };
+        // `within`'s and `weight_tail`'s operations on the sample alone or with n and bound.
+        let far = s.r * bound;
+        q.px[k] = s.p.x;
+        q.py[k] = s.p.y;
+        q.pz[k] = s.p.z;
+        q.far2[k] = far * far;
+        q.r[k] = s.r;
+        q.front[k] = -0.05 * s.r;
+        let m = n + s.n;
+        q.mx[k] = m.x;
+        q.my[k] = m.y;
+        q.mz[k] = m.z;
+        q.nerr[k] = e;
+        q.ids[k] = i;
+        self.len += 1;
+    }
+}
+
+/// A cell's first read by a memo entry (`near_memo`): lists each sample of `ids` that
+/// `weight`'s level and normal tests let through for `n`, with its `normal_err`, and blends
+/// those in reach, in their order. The lanes skip the samples facing another way (raddem:
+/// 70 % of those listing reads).
+#[inline(always)]
+pub(super) fn list_cell(
+    cache: &Cache,
+    ids: &[u32],
+    (p, n): (DVec3, DVec3),
+    level: u32,
+    bound: f64,
+    list: &mut Listing,
+    b: &mut Blend,
+) {
+    #[cfg(target_arch = "x86_64")]
+    if cache.lanes && ids.len() >= 4 {
+        // SAFETY: `lanes` is only set where the CPU has AVX (`Cache::with_pool`).
+        unsafe { list_cell_avx(&cache.foot, &cache.irr, ids, (p, n), level, bound, list, b) };
+        return;
+    }
+    for &i in ids {
+        list_one(&cache.foot, &cache.irr, i, (p, n), level, bound, list, b);
+    }
+}
+
+/// One sample of `list_cell`: `near_memo`'s listing loop's body as it was.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn list_one(
+    foot: &[Footprint],
+    irr: &[DVec3],
+    i: u32,
+    (p, n): (DVec3, DVec3),
+    level: u32,
+    bound: f64,
+    list: &mut Listing,
+    b: &mut Blend,
+) {
+    let s = &foot[i as usize];
+    // `weight`'s first tests, as it writes them (a NaN cosine passes).
+    let cos = n.dot(s.n);
+    if s.level > level || cos < 0.5 {
+        return;
+    }
+    let e = normal_err(cos);
+    list.push(s, i, e, n, bound);
+    if within(s, p, bound) {
+        b.add_listed(s, irr[i as usize], p, n, bound, e);
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+unsafe fn list_cell_avx(
+    foot: &[Footprint],
+    irr: &[DVec3],
+    ids: &[u32],
+    (p, n): (DVec3, DVec3),
+    level: u32,
+    bound: f64,
+    list: &mut Listing,
+    b: &mut Blend,
+) {
+    let at = Lookup4::new(p, n, bound);
+    let mut quads = ids.chunks_exact(4);
+    for q in &mut quads {
+        let (_, _, facing) = quad_masks!(foot, q, &at);
+        if facing == 0 {
+            continue;
+        }
+        for (k, &i) in q.iter().enumerate() {
+            if facing & (1 << k) != 0 {
+                list_one(foot, irr, i, (p, n), level, bound, list, b);
+            }
+        }
+    }
+    for &i in quads.remainder() {
+        list_one(foot, irr, i, (p, n), level, bound, list, b);
+    }
 }
 
 /// The scalar weight of a listed sample, for the tests: `weight_listed` behind `within`.
@@ -319,38 +578,104 @@ mod tests {
         (foot, irr)
     }
 
-    /// The lanes find the samples in reach the scalar loop finds, in its order, and stop
-    /// where it stops.
+    /// A blend's fields as bits, to compare two blends exactly.
+    fn bits(b: &Blend) -> (u32, u64, [u64; 3]) {
+        (
+            b.count,
+            b.weight.to_bits(),
+            b.sum.to_array().map(f64::to_bits),
+        )
+    }
+
+    /// The lanes of `blend_until`, `blend_whole` and `list_cell` give what their scalar
+    /// loops give, to the bit, stopping where they stop: cells of every length, points near
+    /// and far, normals every way, a few NaN and infinite fields.
     #[test]
-    fn lanes_find_what_within_finds() {
+    fn lanes_read_cells_as_the_scalar_loops() {
         if !crate::math::has_avx() {
             return;
         }
-        let (foot, _) = footprints();
-        let mut rnd = rng(5);
+        let (mut foot, irr) = footprints();
+        for (k, s) in foot.iter_mut().enumerate() {
+            s.level = 1 + (k % 5 == 0) as u32;
+            if k % 89 == 7 {
+                s.n.z = f64::NAN;
+            }
+        }
+        let mut rnd = rng(11);
         for trial in 0..400 {
             let p = DVec3::new(rnd(), rnd(), rnd()) * 4.0;
+            let n = DVec3::new(rnd() - 0.5, rnd() - 0.5, rnd() - 0.5).normalize();
             let bound = [0.2, 0.9, 1.8][trial % 3];
+            let level = 1 + (trial % 2) as u32;
+            let need = (trial % 9) as u32;
             let ids: Vec<u32> = (0..trial % 45)
                 .map(|_| (rnd() * foot.len() as f64) as u32)
                 .collect();
-            let stop = trial % 7;
-            let run = |lanes: bool| {
-                let mut met = Vec::new();
-                let f = |i: usize, _: &Footprint| {
-                    met.push(i);
-                    met.len() != stop
-                };
-                let done = if lanes {
-                    // SAFETY: the CPU has AVX (checked above).
-                    unsafe { each_within_avx(&foot, &ids, p, bound, f) }
-                } else {
-                    each_within_scalar(&foot, &ids, p, bound, f)
-                };
-                (done, met)
+            let (mut want, mut got) = (Blend::default(), Blend::default());
+            let stop_want = blend_until_scalar(&foot, &irr, &ids, (p, n), bound, need, &mut want);
+            // SAFETY: the CPU has AVX (checked above).
+            let stop_got =
+                unsafe { blend_until_avx(&foot, &irr, &ids, (p, n), bound, need, &mut got) };
+            assert_eq!(stop_got, stop_want, "trial {trial}");
+            assert_eq!(bits(&got), bits(&want), "blend_until, trial {trial}");
+
+            let (mut want, mut got) = (Blend::default(), Blend::default());
+            blend_whole_scalar(&foot, &irr, &ids, (p, n), level, bound, &mut want);
+            // SAFETY: the CPU has AVX (checked above).
+            unsafe { blend_whole_avx(&foot, &irr, &ids, (p, n), level, bound, &mut got) };
+            assert_eq!(bits(&got), bits(&want), "blend_whole, trial {trial}");
+
+            let (mut want, mut got) = (Blend::default(), Blend::default());
+            let (mut quads_want, mut quads_got) = (Vec::new(), Vec::new());
+            let mut list_want = Listing {
+                quads: &mut quads_want,
+                len: 0,
             };
-            assert_eq!(run(true), run(false), "trial {trial}");
+            for &i in &ids {
+                list_one(
+                    &foot,
+                    &irr,
+                    i,
+                    (p, n),
+                    level,
+                    bound,
+                    &mut list_want,
+                    &mut want,
+                );
+            }
+            let mut list_got = Listing {
+                quads: &mut quads_got,
+                len: 0,
+            };
+            // SAFETY: the CPU has AVX (checked above).
+            unsafe {
+                list_cell_avx(
+                    &foot,
+                    &irr,
+                    &ids,
+                    (p, n),
+                    level,
+                    bound,
+                    &mut list_got,
+                    &mut got,
+                )
+            };
+            assert_eq!(list_got.len, list_want.len, "trial {trial}");
+            assert_eq!(bits(&got), bits(&want), "list_cell, trial {trial}");
+            let as_bits = |l: &[ListedQuad]| -> Vec<u64> { l.iter().flat_map(quad_bits).collect() };
+            assert_eq!(as_bits(&quads_got), as_bits(&quads_want), "trial {trial}");
         }
+    }
+
+    /// Every field of a quad, as bits.
+    fn quad_bits(q: &ListedQuad) -> Vec<u64> {
+        let fields = [
+            q.px, q.py, q.pz, q.far2, q.r, q.front, q.mx, q.my, q.mz, q.nerr,
+        ];
+        let mut out: Vec<u64> = fields.iter().flatten().map(|v| v.to_bits()).collect();
+        out.extend(q.ids.map(u64::from));
+        out
     }
 
     /// The lanes blend lists of every length as the scalar loop does, to the bit: points
@@ -379,10 +704,26 @@ mod tests {
                     (i, e)
                 })
                 .collect();
-            let (mut want, mut got) = (Blend::default(), Blend::default());
-            blend_listed_scalar(&foot, &irr, &items, p, n, bound, &mut want);
+            // The list as `near_memo` makes it, and the blend `within` and `weight_listed`
+            // give of it in its order (`near_memo`'s loop before the quads).
+            let mut quads = Vec::new();
+            let mut list = Listing {
+                quads: &mut quads,
+                len: 0,
+            };
+            let mut want = Blend::default();
+            for &(i, e) in &items {
+                let s = &foot[i as usize];
+                list.push(s, i, e, n, bound);
+                if within(s, p, bound) {
+                    want.add_listed(s, irr[i as usize], p, n, bound, e);
+                }
+            }
+            let (mut scalar, mut got) = (Blend::default(), Blend::default());
+            blend_listed_scalar(&irr, &quads, p, bound, &mut scalar);
             // SAFETY: the CPU has AVX (checked above).
-            unsafe { blend_listed_avx(&foot, &irr, &items, p, n, bound, &mut got) };
+            unsafe { blend_listed_avx(&irr, &quads, p, bound, &mut got) };
+            assert_eq!(bits(&scalar), bits(&want), "trial {trial}");
             let taken = items
                 .iter()
                 .filter(|&&(i, e)| listed_weight(&foot[i as usize], p, n, bound, e).is_some())

@@ -125,14 +125,39 @@ pub struct MemoEntry {
     /// lookup coming back to a cell it left (the next row of a floor, the pass's next phase)
     /// reads the list again instead of the cell.
     pub lists: rustc_hash::FxHashMap<(u32, u64), (u32, u32)>,
-    /// The lists, one after another: each sample's number and its share of the error from its
-    /// normal's turn from the entry's (the same for every lookup of the entry).
-    pub listed: Vec<(u32, f64)>,
+    /// The lists, one after another, each in quads of four samples (the last padded with
+    /// samples that reach nothing).
+    pub listed: Vec<ListedQuad>,
+}
+
+/// Four samples of a list of a `MemoEntry`, field by field, with what a lookup computes of
+/// each that depends only on the entry's normal and bound: a lookup's lanes load each
+/// quantity of the four at once (render::radiosity_lanes).
+#[derive(Clone, Copy, Default)]
+#[repr(C, align(32))]
+pub struct ListedQuad {
+    /// The samples' positions.
+    pub px: [f64; 4],
+    pub py: [f64; 4],
+    pub pz: [f64; 4],
+    /// The squared reach at the entry's bound, `(r * bound)²` (-1 in a padding lane).
+    pub far2: [f64; 4],
+    /// The harmonic distances, and -0.05 times them (Ward's front test).
+    pub r: [f64; 4],
+    pub front: [f64; 4],
+    /// The entry's normal plus the sample's.
+    pub mx: [f64; 4],
+    pub my: [f64; 4],
+    pub mz: [f64; 4],
+    /// The share of the error from the sample's normal's turn from the entry's.
+    pub nerr: [f64; 4],
+    /// The samples' numbers.
+    pub ids: [u32; 4],
 }
 
 /// A scale's last cell read (`MemoEntry`), valid in the entry's epoch: its key, the floors of
 /// the point's coordinates in cells it was made from, and where its list is in the entry's
-/// `listed` (start, length).
+/// `listed` (first quad, number of quads).
 #[derive(Default)]
 pub struct MemoCell {
     pub key: u64,
