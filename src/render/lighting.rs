@@ -279,20 +279,7 @@ mod tests {
     use crate::math::Transform;
     use crate::scene::desc::LightDesc;
 
-    /// A small deterministic generator, so the tests need no crate and never change.
-    struct Lcg(u64);
-    impl Lcg {
-        fn next(&mut self) -> f64 {
-            self.0 = self
-                .0
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (self.0 >> 11) as f64 / (1u64 << 53) as f64
-        }
-        fn vec(&mut self, r: f64) -> DVec3 {
-            DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * (2.0 * r)
-        }
-    }
+    use crate::geom::test_rng::Lcg;
 
     fn bits(v: DVec3) -> [u64; 3] {
         v.to_array().map(f64::to_bits)
@@ -303,12 +290,12 @@ mod tests {
         let mut rng = Lcg(7);
         for case in 0..20_000 {
             let scale = [1e-3, 1.0, 1e4][case % 3];
-            let light = Light::new(&LightDesc::at(rng.vec(scale)), &Transform::IDENTITY);
+            let light = Light::new(&LightDesc::at(rng.vec(2.0 * scale)), &Transform::IDENTITY);
             // Every seventh point is the light's own place (no incidence).
             let p = if case % 7 == 0 {
                 light.position
             } else {
-                rng.vec(scale)
+                rng.vec(2.0 * scale)
             };
             match (incidence(&light, p), light.incidence(p)) {
                 (None, None) => {}
@@ -339,13 +326,13 @@ mod tests {
                 ..Finish::default()
             };
             let c = Rgbft::new(rng.next(), rng.next(), rng.next(), rng.next() * 0.3, 0.0);
-            let nf = rng.vec(1.0).normalize();
-            let dir = rng.vec(1.0).normalize();
+            let nf = rng.vec(2.0).normalize();
+            let dir = rng.vec(2.0).normalize();
             let lit: Vec<LitBy> = (0..case % 4)
                 .map(|i| {
-                    let l = rng.vec(1.0).normalize();
+                    let l = rng.vec(2.0).normalize();
                     LitBy {
-                        color: rng.vec(1.0).abs(),
+                        color: rng.vec(2.0).abs(),
                         l,
                         cos_n: nf.dot(l),
                         shadowless: i == 2,
@@ -357,7 +344,7 @@ mod tests {
             let f = Factors {
                 c: &c,
                 fin: &fin,
-                p: rng.vec(10.0),
+                p: rng.vec(20.0),
                 dir,
                 nf,
                 mirror: dir - nf * (2.0 * dir.dot(nf)),

@@ -318,20 +318,7 @@ mod tests {
         Light::new(&d, &Transform::IDENTITY)
     }
 
-    /// A small deterministic generator, so the test needs no crate and never changes.
-    struct Lcg(u64);
-    impl Lcg {
-        fn next(&mut self) -> f64 {
-            self.0 = self
-                .0
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (self.0 >> 11) as f64 / (1u64 << 53) as f64
-        }
-        fn vec(&mut self, r: f64) -> DVec3 {
-            DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * (2.0 * r)
-        }
-    }
+    use crate::geom::test_rng::Lcg;
 
     /// Case `case` of the property tests: a spot (or, every third, a cylinder) light of random
     /// place, aim, radius and falloff, and a ray of random length from a random point, from
@@ -343,20 +330,20 @@ mod tests {
         } else {
             LightKind::Spot
         };
-        let pos = rng.vec(20.0);
-        let at = pos + rng.vec(5.0);
+        let pos = rng.vec(40.0);
+        let at = pos + rng.vec(10.0);
         let radius = rng.next() * 3.0;
         let falloff = radius + rng.next() * 20.0;
         let l = light(kind, pos, at, radius, falloff);
         let origin = match case % 5 {
             0 => pos,
             1 => pos + (at - pos) * 3.0,
-            _ => rng.vec(30.0),
+            _ => rng.vec(60.0),
         };
         let dir = match case % 7 {
             0 => (at - pos).normalize(),
             1 if backwards => -(at - pos).normalize(),
-            _ => rng.vec(1.0).normalize(),
+            _ => rng.vec(2.0).normalize(),
         };
         let len = rng.next() * 80.0;
         (l, origin, dir, len)
