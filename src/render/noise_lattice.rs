@@ -158,6 +158,27 @@ pub(super) struct CellLanes {
     pub wxy: std::arch::x86_64::__m256d,
 }
 
+/// The point `p` in lanes (x, y, z, 0) and its floors; `None` where a floor is outside the
+/// i32 range (or NaN): those points take `cell`, whose saturating conversion they need.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub(super) unsafe fn floor_lanes(
+    p: DVec3,
+) -> Option<(std::arch::x86_64::__m256d, std::arch::x86_64::__m256d)> {
+    use std::arch::x86_64::*;
+    // SAFETY: the caller guarantees AVX.
+    unsafe {
+        let v = _mm256_setr_pd(p.x, p.y, p.z, 0.0);
+        let f = _mm256_round_pd::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(v);
+        let abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), f);
+        let inside = _mm256_cmp_pd::<_CMP_LT_OQ>(abs, _mm256_set1_pd(2147483648.0));
+        all_lanes(inside).then_some((v, f))
+    }
+}
+
 /// `CellLanes` of the point `p`.
 ///
 /// # Safety
@@ -168,13 +189,7 @@ pub(super) unsafe fn cell_lanes(p: DVec3) -> Option<CellLanes> {
     use std::arch::x86_64::*;
     // SAFETY: the caller guarantees AVX.
     unsafe {
-        let v = _mm256_setr_pd(p.x, p.y, p.z, 0.0);
-        let f = _mm256_round_pd::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(v);
-        let abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), f);
-        let inside = _mm256_cmp_pd::<_CMP_LT_OQ>(abs, _mm256_set1_pd(2147483648.0));
-        if !all_lanes(inside) {
-            return None;
-        }
+        let (v, f) = floor_lanes(p)?;
         let t = _mm256_sub_pd(v, f);
         let s = _mm256_mul_pd(
             _mm256_mul_pd(t, t),

@@ -8,7 +8,7 @@ use std::mem::MaybeUninit;
 
 use crate::math::DVec3;
 
-use super::{all_lanes, cell, cell_avx, entries_avx, scalar_avx, HASH_Z32, MAX_POINTS, ROWS};
+use super::{cell, cell_avx, entries_avx, floor_lanes, scalar_avx, HASH_Z32, MAX_POINTS, ROWS};
 
 /// What `scalar_avx4` reads of a cell: the fractional position and the corners' rows
 /// (`Cell` without the weights, which the four-point lanes compute themselves). `row` holds
@@ -43,17 +43,13 @@ unsafe fn row_at(off: u32) -> *const f64 {
 pub(super) unsafe fn corners_avx(p: DVec3) -> Corners {
     // SAFETY: the caller guarantees AVX.
     unsafe {
-        let v = _mm256_setr_pd(p.x, p.y, p.z, 0.0);
-        let f = _mm256_round_pd::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(v);
-        let abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), f);
-        let inside = _mm256_cmp_pd::<_CMP_LT_OQ>(abs, _mm256_set1_pd(2147483648.0));
-        if !all_lanes(inside) {
+        let Some((v, f)) = floor_lanes(p) else {
             let c = cell(p);
             return Corners {
                 t: c.t,
                 row: c.entry.map(|e| e * 32),
             };
-        }
+        };
         let mut ta = [0.0; 4];
         _mm256_storeu_pd(ta.as_mut_ptr(), _mm256_sub_pd(v, f));
         Corners {
