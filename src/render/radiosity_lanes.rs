@@ -268,65 +268,7 @@ pub(super) fn blend_until(
     need: u32,
     b: &mut Blend,
 ) -> bool {
-    #[cfg(target_arch = "x86_64")]
-    if cache.lanes && ids.len() >= 4 {
-        // SAFETY: `lanes` is only set where the CPU has AVX (`Cache::with_pool`).
-        return unsafe { blend_until_avx(&cache.foot, &cache.irr, ids, (p, n), bound, need, b) };
-    }
-    blend_until_scalar(&cache.foot, &cache.irr, ids, (p, n), bound, need, b)
-}
-
-#[inline(always)]
-fn blend_until_scalar(
-    foot: &[Footprint],
-    irr: &[DVec3],
-    ids: &[u32],
-    (p, n): (DVec3, DVec3),
-    bound: f64,
-    need: u32,
-    b: &mut Blend,
-) -> bool {
-    for &i in ids {
-        let s = &foot[i as usize];
-        if within(s, p, bound) {
-            b.add(s, irr[i as usize], p, n, 1, bound);
-            if enough(b, need) {
-                return false;
-            }
-        }
-    }
-    true
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-unsafe fn blend_until_avx(
-    foot: &[Footprint],
-    irr: &[DVec3],
-    ids: &[u32],
-    (p, n): (DVec3, DVec3),
-    bound: f64,
-    need: u32,
-    b: &mut Blend,
-) -> bool {
-    let at = Lookup4::new(p, n, bound);
-    let mut quads = ids.chunks_exact(4);
-    for q in &mut quads {
-        let (s, reach, facing) = quad_masks!(foot, q, &at);
-        let take = reach & facing;
-        if take == 0 {
-            continue;
-        }
-        for k in 0..4 {
-            if take & (1 << k) != 0 {
-                b.add(s[k], irr[q[k] as usize], p, n, 1, bound);
-                if enough(b, need) {
-                    return false;
-                }
-            }
-        }
-    }
-    blend_until_scalar(foot, irr, quads.remainder(), (p, n), bound, need, b)
+    blend_taken(cache, ids, (p, n), 1, bound, b, |b| enough(b, need))
 }
 
 /// `Blend::add` of every sample of `ids` (a cell read whole) that reaches `p`, in their
@@ -341,17 +283,34 @@ pub(super) fn blend_whole(
     bound: f64,
     b: &mut Blend,
 ) {
+    blend_taken(cache, ids, (p, n), level, bound, b, |_| false);
+}
+
+/// `Blend::add` at `level` of every sample of `ids` that reaches `p`, in their order, until
+/// `done` says the blend has enough (then false).
+#[inline(always)]
+fn blend_taken(
+    cache: &Cache,
+    ids: &[u32],
+    (p, n): (DVec3, DVec3),
+    level: u32,
+    bound: f64,
+    b: &mut Blend,
+    done: impl Fn(&Blend) -> bool,
+) -> bool {
     #[cfg(target_arch = "x86_64")]
     if cache.lanes && ids.len() >= 4 {
         // SAFETY: `lanes` is only set where the CPU has AVX (`Cache::with_pool`).
-        unsafe { blend_whole_avx(&cache.foot, &cache.irr, ids, (p, n), level, bound, b) };
-        return;
+        return unsafe {
+            blend_taken_avx(&cache.foot, &cache.irr, ids, (p, n), level, bound, b, done)
+        };
     }
-    blend_whole_scalar(&cache.foot, &cache.irr, ids, (p, n), level, bound, b)
+    blend_taken_scalar(&cache.foot, &cache.irr, ids, (p, n), level, bound, b, done)
 }
 
+#[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn blend_whole_scalar(
+fn blend_taken_scalar(
     foot: &[Footprint],
     irr: &[DVec3],
     ids: &[u32],
@@ -359,18 +318,24 @@ fn blend_whole_scalar(
     level: u32,
     bound: f64,
     b: &mut Blend,
-) {
+    done: impl Fn(&Blend) -> bool,
+) -> bool {
     for &i in ids {
         let s = &foot[i as usize];
         if within(s, p, bound) {
             b.add(s, irr[i as usize], p, n, level, bound);
+            if done(b) {
+                return false;
+            }
         }
     }
+    true
 }
 
+#[allow(clippy::too_many_arguments)]
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx")]
-unsafe fn blend_whole_avx(
+unsafe fn blend_taken_avx(
     foot: &[Footprint],
     irr: &[DVec3],
     ids: &[u32],
@@ -378,7 +343,8 @@ unsafe fn blend_whole_avx(
     level: u32,
     bound: f64,
     b: &mut Blend,
-) {
+    done: impl Fn(&Blend) -> bool,
+) -> bool {
     let at = Lookup4::new(p, n, bound);
     let mut quads = ids.chunks_exact(4);
     for q in &mut quads {
@@ -390,10 +356,13 @@ unsafe fn blend_whole_avx(
         for k in 0..4 {
             if take & (1 << k) != 0 {
                 b.add(s[k], irr[q[k] as usize], p, n, level, bound);
+                if done(b) {
+                    return false;
+                }
             }
         }
     }
-    blend_whole_scalar(foot, irr, quads.remainder(), (p, n), level, bound, b)
+    blend_taken_scalar(foot, irr, quads.remainder(), (p, n), level, bound, b, done)
 }
 
 /// A list being made (`list_cell`): its quads, and how many samples it holds.
@@ -613,17 +582,20 @@ mod tests {
                 .map(|_| (rnd() * foot.len() as f64) as u32)
                 .collect();
             let (mut want, mut got) = (Blend::default(), Blend::default());
-            let stop_want = blend_until_scalar(&foot, &irr, &ids, (p, n), bound, need, &mut want);
+            let until = |b: &Blend| enough(b, need);
+            let stop_want =
+                blend_taken_scalar(&foot, &irr, &ids, (p, n), 1, bound, &mut want, until);
             // SAFETY: the CPU has AVX (checked above).
             let stop_got =
-                unsafe { blend_until_avx(&foot, &irr, &ids, (p, n), bound, need, &mut got) };
+                unsafe { blend_taken_avx(&foot, &irr, &ids, (p, n), 1, bound, &mut got, until) };
             assert_eq!(stop_got, stop_want, "trial {trial}");
             assert_eq!(bits(&got), bits(&want), "blend_until, trial {trial}");
 
             let (mut want, mut got) = (Blend::default(), Blend::default());
-            blend_whole_scalar(&foot, &irr, &ids, (p, n), level, bound, &mut want);
+            let whole = |_: &Blend| false;
+            blend_taken_scalar(&foot, &irr, &ids, (p, n), level, bound, &mut want, whole);
             // SAFETY: the CPU has AVX (checked above).
-            unsafe { blend_whole_avx(&foot, &irr, &ids, (p, n), level, bound, &mut got) };
+            unsafe { blend_taken_avx(&foot, &irr, &ids, (p, n), level, bound, &mut got, whole) };
             assert_eq!(bits(&got), bits(&want), "blend_whole, trial {trial}");
 
             let (mut want, mut got) = (Blend::default(), Blend::default());
