@@ -119,6 +119,32 @@ fn messages_and_exit_codes_as_povray() {
     assert_eq!(key_lines(&o).len(), 3);
 }
 
+/// Until the process catches SIGINT (its handler is set at start), read from
+/// /proc/PID/status: a fixed sleep could send the signal before, on a loaded machine, and the
+/// default action would kill it with no exit code. Without /proc, half a second.
+fn wait_for_sigint_handler(pid: u32) {
+    let start = std::time::Instant::now();
+    let status = format!("/proc/{pid}/status");
+    while start.elapsed() < std::time::Duration::from_secs(20) {
+        let Ok(text) = std::fs::read_to_string(&status) else {
+            std::thread::sleep(std::time::Duration::from_millis(500));
+            return;
+        };
+        let caught = text
+            .lines()
+            .find_map(|l| l.strip_prefix("SigCgt:"))
+            .and_then(|h| u64::from_str_radix(h.trim(), 16).ok())
+            .unwrap_or(0);
+        // SIGINT is signal 2: bit 1.
+        if caught & 2 != 0 {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+    // The render under way, as the test means it.
+    std::thread::sleep(std::time::Duration::from_millis(200));
+}
+
 #[test]
 fn user_abort_exits_with_2() {
     let (d, link) = setup("abort");
@@ -130,7 +156,7 @@ fn user_abort_exits_with_2() {
         .stderr(std::process::Stdio::piped())
         .spawn()
         .unwrap();
-    std::thread::sleep(std::time::Duration::from_millis(500));
+    wait_for_sigint_handler(child.id());
     Command::new("kill")
         .args(["-INT", &child.id().to_string()])
         .status()
