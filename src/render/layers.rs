@@ -112,10 +112,10 @@ impl<'a> Tracer<'a> {
                     tex,
                     hv.p,
                     hv.uv,
-                    &Transform::IDENTITY,
+                    &crate::math::IDENTITY,
                     q.quick_colors,
                 );
-                self.shade_part(hv, sum, c, tex, &Transform::IDENTITY, 1.0, ctx);
+                self.shade_part(hv, sum, c, tex, &crate::math::IDENTITY, 1.0, ctx);
             } else {
                 texture_map::blend(
                     tex,

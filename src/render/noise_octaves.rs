@@ -11,6 +11,7 @@
 //! sum stays in a register instead of three scalars that were spilled to the stack.
 
 use std::arch::x86_64::*;
+use std::mem::MaybeUninit;
 
 use crate::math::DVec3;
 
@@ -210,18 +211,26 @@ unsafe fn weighted(cells: &[LaneCell], omega: f64) -> DVec3 {
 
 /// `octaves_with(p, .., cell, vector_lanes)`: every octave's hash walk first, then the
 /// arithmetic.
+///
+/// The cells go to a plain array by the loop's own index: through `CellList` the list's
+/// length went to memory and back with a bounds check on every octave (~5 instructions of
+/// ~185), the stores through its buffer being able to alias it.
 #[target_feature(enable = "avx")]
 pub(super) fn octaves(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
     let n = octaves.min(10) as usize;
-    let mut cells = CellList::<LaneCell, 10>::new();
+    let mut buf = [const { MaybeUninit::<LaneCell>::uninit() }; 10];
     let mut scale = 1.0;
-    for _ in 0..n {
+    for cell in &mut buf[..n] {
         // SAFETY: this function only runs with AVX enabled.
-        cells.push(unsafe { lane_cell(p * scale) });
+        cell.write(unsafe { lane_cell(p * scale) });
         scale *= lambda;
     }
-    // SAFETY: as above.
-    unsafe { weighted(cells.as_slice(), omega) }
+    // SAFETY: the first n cells were written just above (n <= 10, the slice's bound);
+    // `MaybeUninit<LaneCell>` has `LaneCell`'s layout and LaneCell is Copy (nothing to drop).
+    unsafe {
+        let cells = std::slice::from_raw_parts(buf.as_ptr().cast::<LaneCell>(), n);
+        weighted(cells, omega)
+    }
 }
 
 /// `octaves4_with(ps, .., cell, vector_lanes)`: all four points' hash walks first.

@@ -27,7 +27,7 @@ pub fn blend(
     weight: f64,
     f: &mut dyn FnMut(Rgbft, &Texture, &Transform, f64),
 ) {
-    blend_in(tex, p, uv, &Transform::IDENTITY, quick, weight, f)
+    blend_in(tex, p, uv, &crate::math::IDENTITY, quick, weight, f)
 }
 
 fn blend_in(
