@@ -180,6 +180,12 @@ impl Cache {
     /// which orders the scales. Samples are only ever appended, so this gives the grids a
     /// filing from scratch would; a new `bound` files every sample again.
     pub(super) fn file_new(&mut self, bound: f64, last: f64) {
+        // Grids filed again as they were keep their stamp, so the threads' memos of them stay
+        // valid (the pretrace files at the start of every pass and after every phase that
+        // added samples: its last passes mostly add none).
+        if self.stamp != 0 && bound == self.filed_bound && self.filed == self.samples.len() {
+            return;
+        }
         for s in &self.samples[self.foot.len()..] {
             self.foot.push(s.footprint());
             self.irr.push(s.irr);
