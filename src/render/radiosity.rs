@@ -221,13 +221,7 @@ impl<'a> Tracer<'a> {
 /// 1.8: a hundred samples within reach of a lookup). Not inlined: in `irradiance` beside the
 /// full lookup it made gamma_showcase's lookups 3% slower.
 #[inline(never)]
-fn enough_here(
-    rad: &RadTrace,
-    p: DVec3,
-    n: DVec3,
-    need: u32,
-    ctx: &mut Scratch,
-) -> Option<DVec3> {
+fn enough_here(rad: &RadTrace, p: DVec3, n: DVec3, need: u32, ctx: &mut Scratch) -> Option<DVec3> {
     let (cache, bound) = (rad.cache, rad.bound);
     let mut b = Blend::default();
     let enough = |b: &Blend| super::radiosity_cache::enough(b, need);

@@ -211,6 +211,45 @@ fn near_enough_memo_reads_as_the_cells() {
     assert!(stops > 100, "probes stopped early: {stops}");
 }
 
+/// Filing again with nothing new and the same bound keeps the stamp (the threads' memos stay
+/// valid) and the grids; a new sample or another bound makes a new stamp, and a memo made
+/// before reads the grids afresh, finding the new sample.
+#[test]
+fn filing_nothing_new_keeps_the_stamp() {
+    let mut cache = Cache::with_pool(Vec::new(), 1);
+    let sample = |x: f64| Sample {
+        p: DVec3::new(x, 0.0, 0.0),
+        n: DVec3::Z,
+        irr: DVec3::ONE,
+        r: 1.0,
+        level: 1,
+    };
+    cache.file_new(0.5, 1.0);
+    let empty = cache.stamp;
+    assert_ne!(empty, 0, "an empty cache filed has a stamp");
+    cache.samples.push(sample(0.0));
+    cache.file_new(0.5, 1.0);
+    let one = cache.stamp;
+    assert_ne!(one, empty);
+    cache.file_new(0.5, 1.0);
+    assert_eq!(cache.stamp, one, "nothing new");
+    let mut memo = ProbeMemo::default();
+    let lookup = |cache: &Cache, memo: &mut ProbeMemo| {
+        let mut b = Blend::default();
+        cache.near_enough(DVec3::new(0.1, 0.0, 0.0), DVec3::Z, 0.5, 9, memo, &mut b);
+        b.count
+    };
+    assert_eq!(lookup(&cache, &mut memo), 1);
+    cache.samples.push(sample(0.2));
+    cache.file_new(0.5, 1.0);
+    assert_ne!(cache.stamp, one, "a new sample");
+    assert_eq!(lookup(&cache, &mut memo), 2, "the memo was of the old grids");
+    let two = cache.stamp;
+    cache.file_new(1.0, 1.0);
+    assert_ne!(cache.stamp, two, "another bound");
+    assert_eq!(lookup(&cache, &mut memo), 2);
+}
+
 /// The fold check's `any_valid` answers as testing every sample from `from` on would,
 /// whether it tests the few new samples directly or reads the grids.
 #[test]
