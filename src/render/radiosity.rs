@@ -12,6 +12,7 @@
 //! computed for that camera sample only.
 
 use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Mutex;
 
 use rayon::prelude::*;
 
@@ -19,6 +20,7 @@ use crate::math::{DVec3, Ray};
 use crate::scene::build::Scene;
 use crate::scene::desc::RadiositySettings;
 use crate::scene::object::{Scratch, SurfaceHit};
+use crate::scene::scratch::{ProbeMemo, RadiosityMemo};
 
 use smallvec::SmallVec;
 
@@ -219,11 +221,11 @@ impl<'a> Tracer<'a> {
 /// 1.8: a hundred samples within reach of a lookup). Not inlined: in `irradiance` beside the
 /// full lookup it made gamma_showcase's lookups 3% slower.
 #[inline(never)]
-fn enough_here(rad: &RadTrace, p: DVec3, n: DVec3, need: u32, ctx: &Scratch) -> Option<DVec3> {
+fn enough_here(rad: &RadTrace, p: DVec3, n: DVec3, need: u32, ctx: &mut Scratch) -> Option<DVec3> {
     let (cache, bound) = (rad.cache, rad.bound);
     let mut b = Blend::default();
     let enough = |b: &Blend| super::radiosity_cache::enough(b, need);
-    let mut done = !cache.near_enough(p, n, bound, need, &mut b);
+    let mut done = !cache.near_enough(p, n, bound, need, &mut ctx.rad_probe, &mut b);
     for s in &ctx.rad_local {
         if done {
             break;
@@ -341,6 +343,7 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
     };
     let mut hits: Vec<Hit> = Vec::new();
     let rays = AtomicU64::new(0);
+    let kept = Mutex::new(Vec::new());
     // The pretrace's samples are filed for its own error bound where its gathering rays look
     // them up (`count` lookups per sample, and a third of the samples read per lookup), and
     // filed again for the final bound after it. With `recursion_limit 1` only its camera rays
@@ -394,8 +397,9 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
                 positions
                     .par_iter()
                     .map_init(
-                        || (Scratch::default(), Scratch::default()),
-                        |(ctx, own), &(ix, iy)| {
+                        || Kept::take(&kept),
+                        |kept, &(ix, iy)| {
+                            let (ctx, own) = (&mut kept.pair.0, &mut kept.pair.1);
                             let mut x = ((ix as f64 + 0.5) * block).min(w - 0.5);
                             let mut y = ((iy as f64 + 0.5) * block).min(h - 0.5);
                             if !pretrace {
@@ -521,6 +525,43 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
     }
     cache.first_pass = (!first.is_empty()).then_some(first);
     Some(cache)
+}
+
+/// The radiosity memos a thread's lookups keep (`Cache::near_memo`'s, `near_enough`'s).
+type Memos = (RadiosityMemo, ProbeMemo);
+
+/// A pair of scratches (a position's, and its camera ray's crossing's) for a job of a
+/// pretrace phase, the first with memos lent by the pool the phases share and given back
+/// when the job is done: their lists of cells (valid while the cache is not filed anew, as
+/// in the last passes, which add few samples or none) and their room outlive the phase. (The
+/// scratches themselves cannot: they borrow the phase's tracer, which borrows the cache.) A
+/// memo speeds the lookups and never changes what they find (so any split of the work among
+/// threads gives the same bytes), so which job gets which memos does not matter.
+struct Kept<'p, 'a, 'b> {
+    pair: (Scratch<'a>, Scratch<'b>),
+    pool: &'p Mutex<Vec<Memos>>,
+}
+
+impl<'p> Kept<'p, '_, '_> {
+    fn take(pool: &'p Mutex<Vec<Memos>>) -> Self {
+        let mut pair = <(Scratch, Scratch)>::default();
+        if let Some((memo, probe)) = pool.lock().ok().and_then(|mut v| v.pop()) {
+            (pair.0.rad_memo, pair.0.rad_probe) = (memo, probe);
+        }
+        Kept { pair, pool }
+    }
+}
+
+impl Drop for Kept<'_, '_, '_> {
+    fn drop(&mut self) {
+        if let Ok(mut v) = self.pool.lock() {
+            let ctx = &mut self.pair.0;
+            v.push((
+                std::mem::take(&mut ctx.rad_memo),
+                std::mem::take(&mut ctx.rad_probe),
+            ));
+        }
+    }
 }
 
 /// The tracer of the final trace: reads `cache`, adds nothing to it.

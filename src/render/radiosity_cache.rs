@@ -9,7 +9,7 @@ use rustc_hash::FxHashMap;
 use smallvec::SmallVec;
 
 use crate::math::DVec3;
-use crate::scene::scratch::{MemoEntry, RadiosityMemo};
+use crate::scene::scratch::{MemoEntry, ProbeMemo, RadiosityMemo};
 
 use super::trace::Seen;
 pub use crate::scene::scratch::RadiositySample as Sample;
@@ -180,6 +180,12 @@ impl Cache {
     /// which orders the scales. Samples are only ever appended, so this gives the grids a
     /// filing from scratch would; a new `bound` files every sample again.
     pub(super) fn file_new(&mut self, bound: f64, last: f64) {
+        // Grids filed again as they were keep their stamp, so the threads' memos of them stay
+        // valid (the pretrace files at the start of every pass and after every phase that
+        // added samples: its last passes mostly add none).
+        if self.stamp != 0 && bound == self.filed_bound && self.filed == self.samples.len() {
+            return;
+        }
         for s in &self.samples[self.foot.len()..] {
             self.foot.push(s.footprint());
             self.irr.push(s.irr);
@@ -420,7 +426,12 @@ impl Cache {
 
     /// Whether `need` samples of level 1 are valid at (p, n) at error bound `bound`, with some
     /// weight (`enough`): blends into `b` the samples `weight` takes in `near`'s
-    /// order, stopping at the one that makes them enough (then false).
+    /// order, stopping at the one that makes them enough (then false). `memo` (the thread's)
+    /// keeps per scale the last cell read, found again by the floors of the point's
+    /// coordinates (equal floors, equal key: `floors_key`): a probe then makes no key and asks
+    /// no grid for the cells its neighbour read (rad_def_test_37: most of them), and reads the
+    /// same list in the same order from the copy. A scale's cell is found only when the probe
+    /// gets to it (stopped at an earlier one, the copies of later scales stay as they were).
     #[inline]
     pub(super) fn near_enough(
         &self,
@@ -428,15 +439,34 @@ impl Cache {
         n: DVec3,
         bound: f64,
         need: u32,
+        memo: &mut ProbeMemo,
         b: &mut Blend,
     ) -> bool {
-        let mut found: [&[u32]; GROUP] = [&[]; GROUP];
-        for group in self.scales.chunks(GROUP) {
-            self.cells(group, p, bound, 1, &mut found);
-            for ids in &found[..group.len()] {
-                if !lanes::blend_until(self, ids, (p, n), bound, need, b) {
-                    return false;
+        debug_assert!(bound <= self.filed_bound, "grids filed for a smaller reach");
+        if memo.stamp != self.stamp {
+            memo.stamp = self.stamp;
+            for c in &mut memo.cells {
+                c.floors = [f64::NAN; 3];
+            }
+        }
+        if memo.cells.len() < self.scales.len() {
+            memo.cells.resize_with(self.scales.len(), Default::default);
+        }
+        for (scale, c) in self.scales.iter().zip(memo.cells.iter_mut()) {
+            if scale.level > 1 {
+                continue;
+            }
+            let floors = scale.floors(p);
+            // A NaN is equal to nothing: a point or a memo cell with one asks the grid.
+            if c.floors != floors {
+                c.floors = floors;
+                c.ids.clear();
+                if let Some(ids) = scale.grid1.get(&floors_key(floors)) {
+                    c.ids.extend_from_slice(ids);
                 }
+            }
+            if !lanes::blend_until(self, &c.ids, (p, n), bound, need, b) {
+                return false;
             }
         }
         true

@@ -146,6 +146,110 @@ fn near_memo_blends_as_near() {
     assert!(listed > 1, "the lists were used");
 }
 
+/// `near_enough` with a thread's memo of the last cells blends what the plain walk of the
+/// cells (`near_while`) blends and stops where it stops, to the bit: runs of probes creeping
+/// through the same cells, jumps, NaN points, stops at an early scale (later scales' copies
+/// left behind), and the grids filed again (another stamp) between runs.
+#[test]
+fn near_enough_memo_reads_as_the_cells() {
+    let mut cache = Cache::with_pool(Vec::new(), 2);
+    let mut rnd = unit_rng(23);
+    let mut memo = ProbeMemo::default();
+    let mut stops = 0;
+    for round in 0..4 {
+        for i in 0..150 {
+            let p = DVec3::new(rnd(), rnd(), rnd()) * 6.0;
+            let n = if i % 2 == 0 {
+                DVec3::Z
+            } else {
+                DVec3::new(rnd() - 0.5, rnd() - 0.5, rnd() + 0.2).normalize()
+            };
+            cache.samples.push(Sample {
+                p,
+                n,
+                irr: DVec3::new(rnd(), rnd(), rnd()),
+                r: 0.05 + rnd() * rnd() * 2.0,
+                level: 1 + (i % 5 == 0) as u32,
+            });
+        }
+        let bound = if round % 2 == 0 { 0.9 } else { 1.8 };
+        cache.file_new(bound, 1.8);
+        let mut p = DVec3::new(3.0, 3.0, 3.0);
+        for k in 0..1500 {
+            if k % 29 == 0 {
+                p = DVec3::new(rnd(), rnd(), rnd()) * 6.0;
+            }
+            p += DVec3::new(rnd() - 0.5, rnd() - 0.5, rnd() - 0.5) * 0.04;
+            let at = if k % 97 == 13 {
+                DVec3::new(f64::NAN, p.y, p.z)
+            } else {
+                p
+            };
+            let n = if k % 3 == 0 {
+                DVec3::new(rnd() - 0.5, rnd() - 0.5, rnd() + 0.2).normalize()
+            } else {
+                DVec3::Z
+            };
+            let need = 1 + (k % 7) as u32;
+            let mut want = Blend::default();
+            let want_all = cache.near_while(at, bound, 1, |i, s| {
+                want.add(s, cache.irr[i], at, n, 1, bound);
+                !enough(&want, need)
+            });
+            let mut got = Blend::default();
+            let got_all = cache.near_enough(at, n, bound, need, &mut memo, &mut got);
+            assert_eq!(got_all, want_all, "stopped at the same sample");
+            stops += usize::from(!got_all);
+            assert_eq!(got.count, want.count);
+            assert_eq!(got.weight.to_bits(), want.weight.to_bits());
+            assert_eq!(
+                got.sum.to_array().map(f64::to_bits),
+                want.sum.to_array().map(f64::to_bits)
+            );
+        }
+    }
+    assert!(stops > 100, "probes stopped early: {stops}");
+}
+
+/// Filing again with nothing new and the same bound keeps the stamp (the threads' memos stay
+/// valid) and the grids; a new sample or another bound makes a new stamp, and a memo made
+/// before reads the grids afresh, finding the new sample.
+#[test]
+fn filing_nothing_new_keeps_the_stamp() {
+    let mut cache = Cache::with_pool(Vec::new(), 1);
+    let sample = |x: f64| Sample {
+        p: DVec3::new(x, 0.0, 0.0),
+        n: DVec3::Z,
+        irr: DVec3::ONE,
+        r: 1.0,
+        level: 1,
+    };
+    cache.file_new(0.5, 1.0);
+    let empty = cache.stamp;
+    assert_ne!(empty, 0, "an empty cache filed has a stamp");
+    cache.samples.push(sample(0.0));
+    cache.file_new(0.5, 1.0);
+    let one = cache.stamp;
+    assert_ne!(one, empty);
+    cache.file_new(0.5, 1.0);
+    assert_eq!(cache.stamp, one, "nothing new");
+    let mut memo = ProbeMemo::default();
+    let lookup = |cache: &Cache, memo: &mut ProbeMemo| {
+        let mut b = Blend::default();
+        cache.near_enough(DVec3::new(0.1, 0.0, 0.0), DVec3::Z, 0.5, 9, memo, &mut b);
+        b.count
+    };
+    assert_eq!(lookup(&cache, &mut memo), 1);
+    cache.samples.push(sample(0.2));
+    cache.file_new(0.5, 1.0);
+    assert_ne!(cache.stamp, one, "a new sample");
+    assert_eq!(lookup(&cache, &mut memo), 2, "the memo was of the old grids");
+    let two = cache.stamp;
+    cache.file_new(1.0, 1.0);
+    assert_ne!(cache.stamp, two, "another bound");
+    assert_eq!(lookup(&cache, &mut memo), 2);
+}
+
 /// The fold check's `any_valid` answers as testing every sample from `from` on would,
 /// whether it tests the few new samples directly or reads the grids.
 #[test]

@@ -50,6 +50,8 @@ pub struct Scratch<'a> {
     /// The cells this thread's last radiosity lookups read, for the next lookup facing the
     /// same way (render::radiosity_cache).
     pub rad_memo: RadiosityMemo,
+    /// The cells this thread's last probe lookup (a pretrace camera ray's) read, per scale.
+    pub rad_probe: ProbeMemo,
     /// Photons found around the point being shaded: (squared distance, index).
     pub photon_found: Vec<(f32, u32)>,
     /// The media lists along the ray stretch being sampled (render::media).
@@ -128,6 +130,33 @@ pub struct MemoEntry {
     /// The lists, one after another, each in quads of four samples (the last padded with
     /// samples that reach nothing).
     pub listed: Vec<ListedQuad>,
+}
+
+/// Per scale, the cell a thread's last probe lookup read (render::radiosity_cache,
+/// `Cache::near_enough`): the next probe, a neighbouring block's camera ray, mostly falls in
+/// the same cells and reads this copy of their lists instead of making their keys and asking
+/// the grids again.
+#[derive(Default)]
+pub struct ProbeMemo {
+    /// Which filing of which cache the cells are of (0: none).
+    pub stamp: u64,
+    pub cells: Vec<ProbeCell>,
+}
+
+/// A scale's cell in `ProbeMemo`: the floors of the point's coordinates in cells it was found
+/// from (NaN, equal to nothing, until one is read), and a copy of the cell's level-1 list.
+pub struct ProbeCell {
+    pub floors: [f64; 3],
+    pub ids: Vec<u32>,
+}
+
+impl Default for ProbeCell {
+    fn default() -> Self {
+        ProbeCell {
+            floors: [f64::NAN; 3],
+            ids: Vec::new(),
+        }
+    }
 }
 
 /// Four samples of a list of a `MemoEntry`, field by field, with what a lookup computes of
