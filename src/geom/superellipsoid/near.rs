@@ -215,7 +215,7 @@ struct Reference {
     pw: Powers,
     s: f64,
     p: DVec3,
-    models: Option<(Lin, Line)>,
+    models: Option<Line>,
 }
 
 impl Reference {
@@ -228,16 +228,13 @@ impl Reference {
         }
     }
 
-    /// The powers, `Lin` at the point and `Line` along the ray (`eta` as `Line::new` takes
-    /// it).
+    /// The powers and `Line` along the ray (`eta` as `Line::new` takes it), from `Lin` at
+    /// the point.
     #[inline(always)]
-    fn models(&mut self, se: &Superellipsoid, u: DVec3, eta: DVec3) -> (&Powers, &(Lin, Line)) {
+    fn models(&mut self, se: &Superellipsoid, u: DVec3, eta: DVec3) -> (&Powers, &Line) {
         let Reference { pw, s, p, models } = self;
-        let models = models.get_or_insert_with(|| {
-            let lin = pw.lin(se);
-            (lin, Line::new(&lin, *s, *p, u, eta))
-        });
-        (pw, models)
+        let line = models.get_or_insert_with(|| Line::new(&pw.lin(se), *s, *p, u, eta));
+        (pw, line)
     }
 }
 
@@ -259,6 +256,104 @@ impl End {
     }
 }
 
+/// Whether the exact ratio of the two ends' values is surely outside [1e-3, 1e3], so the
+/// plain refinement bisects (an approximate value is finite, nonzero and below 1e300, and so
+/// is the exact one). Without divisions: `|fa| >= va − ea.err` and `|fb| <= vb + eb.err`, and
+/// the margin 1e-14 covers the roundings of these few operations and of `false_position`'s
+/// quotient. With both ends exact it is `false_position`'s own test, which then bisects too.
+#[inline(always)]
+fn lopsided(ea: &End, eb: &End) -> bool {
+    let (va, vb) = (ea.v.abs(), eb.v.abs());
+    (va + ea.err) * (1.0 + 1e-14) < 1e-3 * (vb - eb.err)
+        || (va - ea.err) * (1.0 - 1e-14) > 1e3 * (vb + eb.err)
+}
+
+/// The refinement's steps (ends, last side, steps taken so far), as `refine` keeps them.
+#[derive(Clone, Copy)]
+struct Ends {
+    ea: End,
+    eb: End,
+    side: i8,
+    steps: u32,
+}
+
+/// The plain refinement's step limit.
+const STEPS: u32 = 200;
+
+impl Ends {
+    /// Takes the midpoint `em` (its sign certain) as the end of its sign, with the Illinois
+    /// halving of the other end when the same side moves twice in a row.
+    #[inline(always)]
+    fn take(&mut self, em: End) {
+        if (em.v < 0.0) == (self.ea.v < 0.0) {
+            self.ea = em;
+            if self.side == -1 {
+                self.eb.halve();
+            }
+            self.side = -1;
+        } else {
+            self.eb = em;
+            if self.side == 1 {
+                self.ea.halve();
+            }
+            self.side = 1;
+        }
+    }
+
+    /// The steps `refine` would take next while each is a bisection whose midpoint `line`
+    /// settles: the same tests and updates in a loop that keeps the ends in registers (a
+    /// lopsided step in `refine` costs ~95 instructions, most of them its state moving through
+    /// the stack). Stops before the first step that needs more (the tolerance reached, a ratio
+    /// not surely lopsided, a midpoint the line does not settle), which `refine` then takes
+    /// from the same state, so every step is the one it would take.
+    #[inline(never)]
+    fn bisect_run(&mut self, line: &Line, tol: f64) {
+        let Ends {
+            mut ea,
+            mut eb,
+            mut side,
+            mut steps,
+        } = *self;
+        let line = *line;
+        while steps < STEPS {
+            let (a, b) = (ea.s, eb.s);
+            if (b - a).abs() <= tol || !lopsided(&ea, &eb) {
+                break;
+            }
+            let m = 0.5 * (a + b);
+            let Some((v, err)) = line.at(m) else {
+                break;
+            };
+            let em = End {
+                s: m,
+                v,
+                err,
+                halvings: 0,
+            };
+            if (v < 0.0) == (ea.v < 0.0) {
+                ea = em;
+                if side == -1 {
+                    eb.halve();
+                }
+                side = -1;
+            } else {
+                eb = em;
+                if side == 1 {
+                    ea.halve();
+                }
+                side = 1;
+            }
+            steps += 1;
+        }
+        *self = Ends {
+            ea,
+            eb,
+            side,
+            steps,
+        };
+    }
+}
+
 /// A root of the field along `o + s·u` between `a` and `b` (the exact values `fa` and `fb`,
 /// negative at exactly one end): regula falsi (Illinois variant), bisecting when the end
 /// values are too lopsided for it to make progress. The steps and the root are those of the
@@ -272,15 +367,19 @@ pub(super) fn refine(
     b: f64,
     fb: f64,
 ) -> f64 {
-    let mut ea = End {
+    let ea = End {
         s: a,
         v: fa,
         err: 0.0,
         halvings: 0,
     };
-    let mut eb = End { s: b, v: fb, ..ea };
+    let mut br = Ends {
+        ea,
+        eb: End { s: b, v: fb, ..ea },
+        side: 0,
+        steps: 0,
+    };
     let tol = 1e-13 * a.abs().max(b.abs()).max(1.0);
-    let mut side = 0i8;
     // The last point evaluated exactly, whose powers the series start from (`Reference`).
     let mut reference: Option<Reference> = None;
     let eta = Line::eta(o, u, a.abs().max(b.abs()));
@@ -297,38 +396,32 @@ pub(super) fn refine(
             }
         }
     };
-    for _ in 0..200 {
-        let (a, b) = (ea.s, eb.s);
+    while br.steps < STEPS {
+        let (a, b) = (br.ea.s, br.eb.s);
         if (b - a).abs() <= tol {
             break;
         }
-        // Bisect when the exact ratio is surely outside [1e-3, 1e3] (an approximate value is
-        // finite, nonzero and below 1e300, and so is the exact one); exact values otherwise.
-        let lopsided = (ea.err != 0.0 || eb.err != 0.0) && {
-            let (va, vb) = (ea.v.abs(), eb.v.abs());
-            let lo = (va - ea.err) / (vb + eb.err) * (1.0 - 1e-14);
-            let hi = (va + ea.err) / (vb - eb.err) * (1.0 + 1e-14);
-            hi < 1e-3 || lo > 1e3
-        };
-        let m = if lopsided {
+        let m = if lopsided(&br.ea, &br.eb) {
             0.5 * (a + b)
         } else {
-            exact(&mut ea, &mut reference);
-            exact(&mut eb, &mut reference);
-            false_position(a, ea.v, b, eb.v)
+            exact(&mut br.ea, &mut reference);
+            exact(&mut br.eb, &mut reference);
+            false_position(a, br.ea.v, b, br.eb.v)
         };
         let p = || o + u * m;
         // The series where the model cannot settle the sign: it costs about 0.6 of an exact
         // evaluation and settles most of what the model leaves.
         let settles = |&(v, err): &(f64, f64)| v.abs() > err && v.abs() < 1e300;
+        let mut line_settled = None;
         let estimate = reference.as_mut().and_then(|r| {
-            let (pw, (lin, line)) = r.models(se, u, eta);
-            line.at(m).or_else(|| {
-                let p = p();
-                lin.at(p)
-                    .filter(settles)
-                    .or_else(|| se.near(pw, p).filter(settles))
-            })
+            let (pw, line) = r.models(se, u, eta);
+            let at = line.at(m);
+            if at.is_some() {
+                line_settled = Some(*line);
+            }
+            // Not `Lin::at` where the line does not settle: it settled ~1 in 10 of those
+            // midpoints (superel2), each ask ~60 instructions, and the series most of them.
+            at.or_else(|| se.near(pw, p()).filter(settles))
         });
         let em = match estimate {
             Some((v, err)) if v.abs() > err && v.abs() < 1e300 => End {
@@ -355,21 +448,13 @@ pub(super) fn refine(
             }
         };
         // An approximate value's sign is the exact one's (|v| > err).
-        if (em.v < 0.0) == (ea.v < 0.0) {
-            ea = em;
-            if side == -1 {
-                eb.halve();
-            }
-            side = -1;
-        } else {
-            eb = em;
-            if side == 1 {
-                ea.halve();
-            }
-            side = 1;
+        br.take(em);
+        br.steps += 1;
+        if let Some(line) = line_settled {
+            br.bisect_run(&line, tol);
         }
     }
-    0.5 * (ea.s + eb.s)
+    0.5 * (br.ea.s + br.eb.s)
 }
 
 /// The refinement's next point: the false-position step between (a, fa) and (b, fb) when the
