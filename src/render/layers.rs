@@ -9,7 +9,7 @@
 
 use crate::color::Rgbft;
 use crate::math::{DVec3, Transform};
-use crate::scene::desc::Texture;
+use crate::scene::desc::{Reflection, Texture};
 use crate::scene::object::Object;
 
 use super::trace::{fresnel, reflect, Path, TraceCtx, Tracer};
@@ -81,6 +81,46 @@ impl LayerSum {
     }
 }
 
+impl LayerSum {
+    /// What `Tracer::shade` traces on from.
+    pub(super) fn layered(&self) -> Layered {
+        Layered {
+            col: self.col,
+            through: self.through,
+            refl_amount: self.refl_amount,
+            refl_tinted: self.refl_tinted,
+            refl_all_tinted: self.refl_all_tinted,
+            last: self.last,
+            conserve: self.conserve,
+            refl_power: self.refl_power,
+            refract_n: self.refract_n,
+        }
+    }
+}
+
+/// What `Tracer::shade` traces the reflected and transmitted rays from: `LayerSum` without
+/// the bent reflections (read from it in place) and the layer loop's own working values.
+pub(super) struct Layered {
+    pub col: DVec3,
+    pub through: DVec3,
+    pub refl_amount: DVec3,
+    pub refl_tinted: DVec3,
+    pub refl_all_tinted: DVec3,
+    pub last: Rgbft,
+    pub conserve: bool,
+    pub refl_power: Option<f64>,
+    pub refract_n: Option<DVec3>,
+}
+
+/// Whether `shade_single` serves a hit on `top`: one plain layer that does not perturb the
+/// normal (`bumpy`: some part of the texture does), no radiosity (whose irradiance the
+/// layer loop gathers), and a mirror direction without NaN (which equals nothing, so the
+/// general loop counts it a bent reflection).
+#[inline(always)]
+pub(super) fn single_plain(top: &Texture, bumpy: bool, radiosity: bool, mirror: DVec3) -> bool {
+    top.under.is_none() && top.pattern.is_none() && !bumpy && !radiosity && !mirror.is_nan()
+}
+
 impl<'a> Tracer<'a> {
     /// Every layer of `top` at the hit `hv`, into `sum` (fresh from `LayerSum::new`).
     pub(super) fn shade_layers(
@@ -132,6 +172,93 @@ impl<'a> Tracer<'a> {
         }
     }
 
+    /// A texture of one plain layer (no pattern, no layer under it, no normal perturbation)
+    /// without radiosity, on a hit whose mirror direction is a number: `shade_layers` and
+    /// `shade_part` with the weight 1 and nothing above the layer, written out with the
+    /// sums in locals. In `LayerSum` (passed by reference, with its `SmallVec` of bent
+    /// reflections) every sum lived in memory, initialised and read back on every hit.
+    /// The same operations in the same order; products by the constant 1 and 1·x are
+    /// folded by the compiler, which IEEE arithmetic allows (x·1 is x to the bit).
+    /// The caller's test: `single_plain`.
+    #[inline(always)]
+    pub(super) fn shade_single(
+        &self,
+        tex: &Texture,
+        hv: &HitView<'_, 'a>,
+        ctx: &mut TraceCtx<'a>,
+    ) -> Layered {
+        let q = self.quality;
+        let fin = &tex.finish;
+        let (w, through) = (1.0, DVec3::ONE);
+        let c = texture_map::plain_colour(tex, hv.p, hv.uv, &Transform::IDENTITY, q.quick_colors);
+        let light = self.layer_light(&c, fin, hv.p, hv.dir, hv.nf, hv.mirror, None, ctx);
+        let col = DVec3::ZERO + through * w * light;
+        let mut out = Layered {
+            col,
+            through,
+            refl_amount: DVec3::ZERO,
+            refl_tinted: DVec3::ZERO,
+            refl_all_tinted: DVec3::ZERO,
+            last: Rgbft::BLACK,
+            conserve: fin.conserve_energy,
+            refl_power: None,
+            refract_n: None,
+        };
+        let refl = &fin.reflection;
+        if !refl.is_zero() && q.reflection {
+            out.refl_power = refl.power();
+            let (amount, tinted) = self.reflection_share(hv, refl, c.rgb, hv.cos_i, w);
+            out.refl_all_tinted += tinted;
+            out.refl_amount += amount;
+            // The mirror direction is the unperturbed one and a number: never bent.
+            out.refl_tinted += tinted;
+        }
+        let mut layer_c = [0.0; 5];
+        for (l, v) in layer_c.iter_mut().zip(c.to_array()) {
+            *l += v * w;
+        }
+        let c = Rgbft::from_array(layer_c);
+        out.through *= c.transmitted();
+        out.last = c;
+        out
+    }
+
+    /// A reflection's share at a part of colour `rgb` and weight `w` whose normal meets the
+    /// ray at cosine `pcos`: (amount, amount tinted by `metallic`).
+    #[inline(always)]
+    fn reflection_share(
+        &self,
+        hv: &HitView<'_, 'a>,
+        refl: &Reflection,
+        rgb: DVec3,
+        pcos: f64,
+        w: f64,
+    ) -> (DVec3, DVec3) {
+        // Where a ray leaves an object at a point still inside another object (a wall
+        // plane whose inside holds the camera, say), POV-Ray takes the leaving object's
+        // ior for both sides of the Fresnel term, which makes it zero; elsewhere the exit
+        // is an ordinary glass-to-air interface. Measured: tests/probes.
+        let f = if refl.min == refl.max {
+            // The blend factor does not matter; skip the powf on this per-hit path.
+            0.0
+        } else if !refl.fresnel {
+            (1.0 - pcos).powf(refl.falloff)
+        } else if hv.entering || !self.scene.inside_other(hv.p, hv.obj) {
+            fresnel(pcos, hv.n1, hv.n2)
+        } else {
+            0.0
+        };
+        let amount = (refl.min + (refl.max - refl.min) * f) * w;
+        // Measured: the tint fades to white at glancing angles (render::metallic). Without
+        // `metallic` the tint is white and amount·1 is amount to the bit.
+        let tinted = if refl.metallic == 0.0 {
+            amount
+        } else {
+            amount * super::metallic::tint(rgb, refl.metallic, pcos)
+        };
+        (amount, tinted)
+    }
+
     /// One plain part of a layer, colour `c` with weight `w` (1 for a plain layer).
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
@@ -169,28 +296,7 @@ impl<'a> Tracer<'a> {
         let refl = &fin.reflection;
         if !refl.is_zero() && self.quality.reflection {
             sum.refl_power = refl.power().or(sum.refl_power);
-            // Where a ray leaves an object at a point still inside another object (a wall
-            // plane whose inside holds the camera, say), POV-Ray takes the leaving object's
-            // ior for both sides of the Fresnel term, which makes it zero; elsewhere the exit
-            // is an ordinary glass-to-air interface. Measured: tests/probes.
-            let f = if refl.min == refl.max {
-                // The blend factor does not matter; skip the powf on this per-hit path.
-                0.0
-            } else if !refl.fresnel {
-                (1.0 - pcos).powf(refl.falloff)
-            } else if hv.entering || !self.scene.inside_other(hv.p, hv.obj) {
-                fresnel(pcos, hv.n1, hv.n2)
-            } else {
-                0.0
-            };
-            let amount = (refl.min + (refl.max - refl.min) * f) * w;
-            // Measured: the tint fades to white at glancing angles (render::metallic). Without
-            // `metallic` the tint is white and amount·1 is amount to the bit.
-            let tinted = if refl.metallic == 0.0 {
-                amount
-            } else {
-                amount * super::metallic::tint(c.rgb, refl.metallic, pcos)
-            };
+            let (amount, tinted) = self.reflection_share(hv, refl, c.rgb, pcos, w);
             sum.refl_all_tinted += tinted;
             sum.refl_amount += amount;
             if pmirror == hv.mirror {
