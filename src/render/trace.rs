@@ -532,9 +532,10 @@ impl<'a> Tracer<'a> {
                 clear: 0.0,
             };
         }
-        // Per hit, not per layer or light. Gathered into one `HitView` before the lights, so
-        // that each value has one home on the stack across the shadow rays' calls, not a
-        // spill slot and a copy in the view.
+        // Per hit, not per layer or light. The `HitView` is made after the lights, in each
+        // branch: the one-layer path takes it apart again (its values stay in registers and
+        // their spill slots), where a view made before the lights, whose address the layer
+        // loop takes, was 34 copies a hit from those slots into it.
         let mirror = reflect(dir, nf);
         let cos_i = (-dir.dot(nf)).clamp(0.0, 1.0);
         // Undispersed light (nearly every ray) takes the object's ior without looking at
@@ -544,7 +545,7 @@ impl<'a> Tracer<'a> {
             wave => super::dispersion::ior(obj, wave),
         };
         let (n1, n2) = if entering { (1.0, ior) } else { (ior, 1.0) };
-        let hv = HitView {
+        let view = move || HitView {
             p,
             dir,
             nf,
@@ -570,16 +571,16 @@ impl<'a> Tracer<'a> {
             // only (`irradiance` keeps them from the gathering rays' hits).
             ctx.lit.clear();
         } else {
-            self.gather_lights(hv.p, hv.nf, bumpy, obj, path.rad_level > 0, ctx);
+            self.gather_lights(p, nf, bumpy, obj, path.rad_level > 0, ctx);
         }
         // Most hits are on one plain layer: its sums in locals, `LayerSum` not made.
         let mut sum;
         let (lay, bent): (Layered, &[(DVec3, DVec3)]) =
             if single_plain(top, bumpy, self.rad.is_some(), mirror) {
-                (self.shade_single(top, &hv, ctx), &[])
+                (self.shade_single(top, &view(), ctx), &[])
             } else {
                 sum = LayerSum::new();
-                self.shade_layers(top, &hv, &mut sum, ctx);
+                self.shade_layers(top, &view(), &mut sum, ctx);
                 (sum.layered(), &sum.bent)
             };
         let Layered {
