@@ -324,3 +324,119 @@ impl<'a> Tracer<'a> {
         sum.conserve = fin.conserve_energy;
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::test_rng::Lcg;
+    use crate::math::Ray;
+    use crate::render::camera::Camera;
+    use crate::render::trace::{Path, Quality};
+    use crate::scene::build::{build, Scene};
+    use crate::sdl::{ParseOptions, Parser};
+
+    fn scene(text: &str) -> Scene {
+        let mut p = Parser::new(ParseOptions::default());
+        p.parse_str("test.pov", text).expect("test scene parses");
+        build(&p.scene, 64, 48).scene
+    }
+
+    /// Single plain textures of every kind `shade_single` meets: reflections plain, with
+    /// falloff, fresnel (from inside too) and metallic, conserve_energy, filter and transmit,
+    /// phong, specular, brilliance and crand; a shadowless light and a shadowed one.
+    const SCENE: &str = "#version 3.7; global_settings { assumed_gamma 1.0 }
+        camera { location <0, 2, -8> look_at 0 }
+        light_source { <-6, 9, -7> rgb <1, 0.97, 0.92> }
+        light_source { <7, 5, -3> rgb 0.3 shadowless }
+        plane { y, -1 pigment { checker rgb 0.8 rgb 0.1 } finish { reflection 0.08 } }
+        sphere { <-2, 0, 0>, 1 pigment { rgbf <0.9, 0.9, 1, 0.8> }
+          finish { reflection { 0.1, 0.9 fresnel on } conserve_energy phong 0.6 }
+          interior { ior 1.5 } }
+        sphere { <0, 0, 0>, 1 pigment { rgb <0.8, 0.6, 0.2> }
+          finish { reflection { 0.5 metallic } phong 0.5 phong_size 40 metallic } }
+        sphere { <2, 0, 0>, 1 pigment { rgbt <0.2, 0.5, 0.9, 0.3> }
+          finish { specular 0.6 roughness 0.01 reflection { 0.2, 0.6 falloff 2 } } }
+        box { <-3, -1, 2>, <3, 2, 3> pigment { rgb 0.5 }
+          finish { brilliance 2 crand 0.2 diffuse 0.7 ambient 0.2 } }";
+
+    fn bits(v: DVec3) -> [u64; 3] {
+        v.to_array().map(f64::to_bits)
+    }
+
+    #[test]
+    fn one_plain_layer_is_the_layer_loop() {
+        let s = scene(SCENE);
+        let camera = Camera::of_scene(&s);
+        let tracer = Tracer::new(&s, &camera, false, Quality::level(9));
+        let mut ctx = TraceCtx::default();
+        let mut rng = Lcg(5);
+        let mut checked = 0;
+        for case in 0..6000 {
+            // Rays from around the camera, and every third from inside the scene (some
+            // from inside the glass sphere, leaving it).
+            let origin = if case % 3 == 0 {
+                rng.vec(4.0)
+            } else {
+                DVec3::new(0.0, 2.0, -8.0) + rng.vec(1.0)
+            };
+            let ray = Ray::new(origin, (rng.vec(2.0) + DVec3::new(0.0, -0.1, 0.9)) * 3.0);
+            let Some(h) = s.first_hit(&ray, f64::INFINITY, &mut ctx) else {
+                continue;
+            };
+            let p = ray.at(h.t);
+            let dir = ray.dir.normalize();
+            let n = h.obj.normal(p, &h);
+            let entering = n.dot(dir) < 0.0;
+            let nf = if entering { n } else { -n };
+            let top = h.obj.texture_facing(&h, !entering);
+            let mirror = reflect(dir, nf);
+            let bumpy = normal::texture_perturbs(top);
+            if !single_plain(top, bumpy, false, mirror) || top.uses_uv() {
+                continue;
+            }
+            let (n1, n2) = if entering {
+                (1.0, h.obj.ior)
+            } else {
+                (h.obj.ior, 1.0)
+            };
+            let hv = HitView {
+                p,
+                dir,
+                nf,
+                mirror,
+                cos_i: (-dir.dot(nf)).clamp(0.0, 1.0),
+                n1,
+                n2,
+                entering,
+                obj: h.obj,
+                uv: None,
+                path: Path::CAMERA,
+            };
+            tracer.gather_lights(p, nf, bumpy, h.obj, false, &mut ctx);
+            let one = tracer.shade_single(top, &hv, &mut ctx);
+            let mut sum = LayerSum::new();
+            tracer.shade_layers(top, &hv, &mut sum, &mut ctx);
+            assert!(sum.bent.is_empty(), "case {case}");
+            let all = sum.layered();
+            for (a, b) in [
+                (one.col, all.col),
+                (one.through, all.through),
+                (one.refl_amount, all.refl_amount),
+                (one.refl_tinted, all.refl_tinted),
+                (one.refl_all_tinted, all.refl_all_tinted),
+            ] {
+                assert_eq!(bits(a), bits(b), "case {case}");
+            }
+            let last = |c: Rgbft| c.to_array().map(f64::to_bits);
+            assert_eq!(last(one.last), last(all.last), "case {case}");
+            assert_eq!(one.conserve, all.conserve);
+            assert_eq!(
+                one.refl_power.map(f64::to_bits),
+                all.refl_power.map(f64::to_bits)
+            );
+            assert!(one.refract_n.is_none() && all.refract_n.is_none());
+            checked += 1;
+        }
+        assert!(checked > 2000, "{checked} hits checked");
+    }
+}
