@@ -9,7 +9,7 @@
 
 use crate::color::Rgbft;
 use crate::math::{DVec3, Transform};
-use crate::scene::desc::Texture;
+use crate::scene::desc::{Reflection, Texture};
 use crate::scene::object::Object;
 
 use super::trace::{fresnel, reflect, Path, TraceCtx, Tracer};
@@ -81,6 +81,46 @@ impl LayerSum {
     }
 }
 
+impl LayerSum {
+    /// What `Tracer::shade` traces on from.
+    pub(super) fn layered(&self) -> Layered {
+        Layered {
+            col: self.col,
+            through: self.through,
+            refl_amount: self.refl_amount,
+            refl_tinted: self.refl_tinted,
+            refl_all_tinted: self.refl_all_tinted,
+            last: self.last,
+            conserve: self.conserve,
+            refl_power: self.refl_power,
+            refract_n: self.refract_n,
+        }
+    }
+}
+
+/// What `Tracer::shade` traces the reflected and transmitted rays from: `LayerSum` without
+/// the bent reflections (read from it in place) and the layer loop's own working values.
+pub(super) struct Layered {
+    pub col: DVec3,
+    pub through: DVec3,
+    pub refl_amount: DVec3,
+    pub refl_tinted: DVec3,
+    pub refl_all_tinted: DVec3,
+    pub last: Rgbft,
+    pub conserve: bool,
+    pub refl_power: Option<f64>,
+    pub refract_n: Option<DVec3>,
+}
+
+/// Whether `shade_single` serves a hit on `top`: one plain layer that does not perturb the
+/// normal (`bumpy`: some part of the texture does), no radiosity (whose irradiance the
+/// layer loop gathers), and a mirror direction without NaN (which equals nothing, so the
+/// general loop counts it a bent reflection).
+#[inline(always)]
+pub(super) fn single_plain(top: &Texture, bumpy: bool, radiosity: bool, mirror: DVec3) -> bool {
+    top.under.is_none() && top.pattern.is_none() && !bumpy && !radiosity && !mirror.is_nan()
+}
+
 impl<'a> Tracer<'a> {
     /// Every layer of `top` at the hit `hv`, into `sum` (fresh from `LayerSum::new`).
     pub(super) fn shade_layers(
@@ -132,6 +172,93 @@ impl<'a> Tracer<'a> {
         }
     }
 
+    /// A texture of one plain layer (no pattern, no layer under it, no normal perturbation)
+    /// without radiosity, on a hit whose mirror direction is a number: `shade_layers` and
+    /// `shade_part` with the weight 1 and nothing above the layer, written out with the
+    /// sums in locals. In `LayerSum` (passed by reference, with its `SmallVec` of bent
+    /// reflections) every sum lived in memory, initialised and read back on every hit.
+    /// The same operations in the same order; products by the constant 1 and 1·x are
+    /// folded by the compiler, which IEEE arithmetic allows (x·1 is x to the bit).
+    /// The caller's test: `single_plain`.
+    #[inline(always)]
+    pub(super) fn shade_single(
+        &self,
+        tex: &Texture,
+        hv: &HitView<'_, 'a>,
+        ctx: &mut TraceCtx<'a>,
+    ) -> Layered {
+        let q = self.quality;
+        let fin = &tex.finish;
+        let (w, through) = (1.0, DVec3::ONE);
+        let c = texture_map::plain_colour(tex, hv.p, hv.uv, &Transform::IDENTITY, q.quick_colors);
+        let light = self.layer_light(&c, fin, hv.p, hv.dir, hv.nf, hv.mirror, None, ctx);
+        let col = DVec3::ZERO + through * w * light;
+        let mut out = Layered {
+            col,
+            through,
+            refl_amount: DVec3::ZERO,
+            refl_tinted: DVec3::ZERO,
+            refl_all_tinted: DVec3::ZERO,
+            last: Rgbft::BLACK,
+            conserve: fin.conserve_energy,
+            refl_power: None,
+            refract_n: None,
+        };
+        let refl = &fin.reflection;
+        if !refl.is_zero() && q.reflection {
+            out.refl_power = refl.power();
+            let (amount, tinted) = self.reflection_share(hv, refl, c.rgb, hv.cos_i, w);
+            out.refl_all_tinted += tinted;
+            out.refl_amount += amount;
+            // The mirror direction is the unperturbed one and a number: never bent.
+            out.refl_tinted += tinted;
+        }
+        let mut layer_c = [0.0; 5];
+        for (l, v) in layer_c.iter_mut().zip(c.to_array()) {
+            *l += v * w;
+        }
+        let c = Rgbft::from_array(layer_c);
+        out.through *= c.transmitted();
+        out.last = c;
+        out
+    }
+
+    /// A reflection's share at a part of colour `rgb` and weight `w` whose normal meets the
+    /// ray at cosine `pcos`: (amount, amount tinted by `metallic`).
+    #[inline(always)]
+    fn reflection_share(
+        &self,
+        hv: &HitView<'_, 'a>,
+        refl: &Reflection,
+        rgb: DVec3,
+        pcos: f64,
+        w: f64,
+    ) -> (DVec3, DVec3) {
+        // Where a ray leaves an object at a point still inside another object (a wall
+        // plane whose inside holds the camera, say), POV-Ray takes the leaving object's
+        // ior for both sides of the Fresnel term, which makes it zero; elsewhere the exit
+        // is an ordinary glass-to-air interface. Measured: tests/probes.
+        let f = if refl.min == refl.max {
+            // The blend factor does not matter; skip the powf on this per-hit path.
+            0.0
+        } else if !refl.fresnel {
+            (1.0 - pcos).powf(refl.falloff)
+        } else if hv.entering || !self.scene.inside_other(hv.p, hv.obj) {
+            fresnel(pcos, hv.n1, hv.n2)
+        } else {
+            0.0
+        };
+        let amount = (refl.min + (refl.max - refl.min) * f) * w;
+        // Measured: the tint fades to white at glancing angles (render::metallic). Without
+        // `metallic` the tint is white and amount·1 is amount to the bit.
+        let tinted = if refl.metallic == 0.0 {
+            amount
+        } else {
+            amount * super::metallic::tint(rgb, refl.metallic, pcos)
+        };
+        (amount, tinted)
+    }
+
     /// One plain part of a layer, colour `c` with weight `w` (1 for a plain layer).
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
@@ -169,28 +296,7 @@ impl<'a> Tracer<'a> {
         let refl = &fin.reflection;
         if !refl.is_zero() && self.quality.reflection {
             sum.refl_power = refl.power().or(sum.refl_power);
-            // Where a ray leaves an object at a point still inside another object (a wall
-            // plane whose inside holds the camera, say), POV-Ray takes the leaving object's
-            // ior for both sides of the Fresnel term, which makes it zero; elsewhere the exit
-            // is an ordinary glass-to-air interface. Measured: tests/probes.
-            let f = if refl.min == refl.max {
-                // The blend factor does not matter; skip the powf on this per-hit path.
-                0.0
-            } else if !refl.fresnel {
-                (1.0 - pcos).powf(refl.falloff)
-            } else if hv.entering || !self.scene.inside_other(hv.p, hv.obj) {
-                fresnel(pcos, hv.n1, hv.n2)
-            } else {
-                0.0
-            };
-            let amount = (refl.min + (refl.max - refl.min) * f) * w;
-            // Measured: the tint fades to white at glancing angles (render::metallic). Without
-            // `metallic` the tint is white and amount·1 is amount to the bit.
-            let tinted = if refl.metallic == 0.0 {
-                amount
-            } else {
-                amount * super::metallic::tint(c.rgb, refl.metallic, pcos)
-            };
+            let (amount, tinted) = self.reflection_share(hv, refl, c.rgb, pcos, w);
             sum.refl_all_tinted += tinted;
             sum.refl_amount += amount;
             if pmirror == hv.mirror {
@@ -216,5 +322,121 @@ impl<'a> Tracer<'a> {
             *l += v * w;
         }
         sum.conserve = fin.conserve_energy;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::test_rng::Lcg;
+    use crate::math::Ray;
+    use crate::render::camera::Camera;
+    use crate::render::trace::{Path, Quality};
+    use crate::scene::build::{build, Scene};
+    use crate::sdl::{ParseOptions, Parser};
+
+    fn scene(text: &str) -> Scene {
+        let mut p = Parser::new(ParseOptions::default());
+        p.parse_str("test.pov", text).expect("test scene parses");
+        build(&p.scene, 64, 48).scene
+    }
+
+    /// Single plain textures of every kind `shade_single` meets: reflections plain, with
+    /// falloff, fresnel (from inside too) and metallic, conserve_energy, filter and transmit,
+    /// phong, specular, brilliance and crand; a shadowless light and a shadowed one.
+    const SCENE: &str = "#version 3.7; global_settings { assumed_gamma 1.0 }
+        camera { location <0, 2, -8> look_at 0 }
+        light_source { <-6, 9, -7> rgb <1, 0.97, 0.92> }
+        light_source { <7, 5, -3> rgb 0.3 shadowless }
+        plane { y, -1 pigment { checker rgb 0.8 rgb 0.1 } finish { reflection 0.08 } }
+        sphere { <-2, 0, 0>, 1 pigment { rgbf <0.9, 0.9, 1, 0.8> }
+          finish { reflection { 0.1, 0.9 fresnel on } conserve_energy phong 0.6 }
+          interior { ior 1.5 } }
+        sphere { <0, 0, 0>, 1 pigment { rgb <0.8, 0.6, 0.2> }
+          finish { reflection { 0.5 metallic } phong 0.5 phong_size 40 metallic } }
+        sphere { <2, 0, 0>, 1 pigment { rgbt <0.2, 0.5, 0.9, 0.3> }
+          finish { specular 0.6 roughness 0.01 reflection { 0.2, 0.6 falloff 2 } } }
+        box { <-3, -1, 2>, <3, 2, 3> pigment { rgb 0.5 }
+          finish { brilliance 2 crand 0.2 diffuse 0.7 ambient 0.2 } }";
+
+    fn bits(v: DVec3) -> [u64; 3] {
+        v.to_array().map(f64::to_bits)
+    }
+
+    #[test]
+    fn one_plain_layer_is_the_layer_loop() {
+        let s = scene(SCENE);
+        let camera = Camera::of_scene(&s);
+        let tracer = Tracer::new(&s, &camera, false, Quality::level(9));
+        let mut ctx = TraceCtx::default();
+        let mut rng = Lcg(5);
+        let mut checked = 0;
+        for case in 0..6000 {
+            // Rays from around the camera, and every third from inside the scene (some
+            // from inside the glass sphere, leaving it).
+            let origin = if case % 3 == 0 {
+                rng.vec(4.0)
+            } else {
+                DVec3::new(0.0, 2.0, -8.0) + rng.vec(1.0)
+            };
+            let ray = Ray::new(origin, (rng.vec(2.0) + DVec3::new(0.0, -0.1, 0.9)) * 3.0);
+            let Some(h) = s.first_hit(&ray, f64::INFINITY, &mut ctx) else {
+                continue;
+            };
+            let p = ray.at(h.t);
+            let dir = ray.dir.normalize();
+            let n = h.obj.normal(p, &h);
+            let entering = n.dot(dir) < 0.0;
+            let nf = if entering { n } else { -n };
+            let top = h.obj.texture_facing(&h, !entering);
+            let mirror = reflect(dir, nf);
+            let bumpy = normal::texture_perturbs(top);
+            if !single_plain(top, bumpy, false, mirror) || top.uses_uv() {
+                continue;
+            }
+            let (n1, n2) = if entering {
+                (1.0, h.obj.ior)
+            } else {
+                (h.obj.ior, 1.0)
+            };
+            let hv = HitView {
+                p,
+                dir,
+                nf,
+                mirror,
+                cos_i: (-dir.dot(nf)).clamp(0.0, 1.0),
+                n1,
+                n2,
+                entering,
+                obj: h.obj,
+                uv: None,
+                path: Path::CAMERA,
+            };
+            tracer.gather_lights(p, nf, bumpy, h.obj, false, &mut ctx);
+            let one = tracer.shade_single(top, &hv, &mut ctx);
+            let mut sum = LayerSum::new();
+            tracer.shade_layers(top, &hv, &mut sum, &mut ctx);
+            assert!(sum.bent.is_empty(), "case {case}");
+            let all = sum.layered();
+            for (a, b) in [
+                (one.col, all.col),
+                (one.through, all.through),
+                (one.refl_amount, all.refl_amount),
+                (one.refl_tinted, all.refl_tinted),
+                (one.refl_all_tinted, all.refl_all_tinted),
+            ] {
+                assert_eq!(bits(a), bits(b), "case {case}");
+            }
+            let last = |c: Rgbft| c.to_array().map(f64::to_bits);
+            assert_eq!(last(one.last), last(all.last), "case {case}");
+            assert_eq!(one.conserve, all.conserve);
+            assert_eq!(
+                one.refl_power.map(f64::to_bits),
+                all.refl_power.map(f64::to_bits)
+            );
+            assert!(one.refract_n.is_none() && all.refract_n.is_none());
+            checked += 1;
+        }
+        assert!(checked > 2000, "{checked} hits checked");
     }
 }

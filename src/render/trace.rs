@@ -13,7 +13,7 @@ use crate::scene::object::{Scratch, SurfaceHit};
 pub use crate::scene::scratch::LitBy;
 
 use super::camera::Camera;
-use super::layers::{HitView, LayerSum};
+use super::layers::{single_plain, HitView, LayerSum, Layered};
 use super::legacy_sky::LegacySky;
 use super::{normal, pigment, texture_map};
 
@@ -317,10 +317,9 @@ impl<'a> Tracer<'a> {
                 let mid = if t.is_finite() { t * 0.5 } else { 1.0 };
                 self.scene.inside_solid(ray.at(mid))
             });
-        let path = Path {
-            in_solid: Some(solid),
-            ..path
-        };
+        // Set in place: a new `Path` from `..path` was a 14-instruction copy on every ray.
+        let mut path = path;
+        path.in_solid = Some(solid);
         let mut seen = match &hit {
             // Blobs with textured components aside, straight to `shade` (not through
             // `shade_blended`'s frame).
@@ -388,13 +387,16 @@ impl<'a> Tracer<'a> {
         gather: bool,
         ctx: &mut TraceCtx<'a>,
     ) -> Option<SurfaceHit<'a>> {
-        let h = self.scene.first_hit(ray, f64::INFINITY, ctx)?;
         // Nearly every first crossing is visible: the loop past hidden objects (and its
-        // set-up, hoisted before this test when it was one loop) is out of line.
-        if !hidden(&h, straight, gather) {
-            return Some(h);
+        // set-up, hoisted before this test when it was one loop) is out of line. The
+        // `Option` is passed on as it came: taken apart with `?` and wrapped again in
+        // `Some`, the 56-byte hit was copied twice on every ray.
+        match self.scene.first_hit(ray, f64::INFINITY, ctx) {
+            Some(h) if hidden(&h, straight, gather) => {
+                self.visible_past(ray, h, straight, gather, ctx)
+            }
+            hit => hit,
         }
-        self.visible_past(ray, h, straight, gather, ctx)
     }
 
     /// `first_visible` past a first crossing `h` that is hidden.
@@ -530,14 +532,20 @@ impl<'a> Tracer<'a> {
                 clear: 0.0,
             };
         }
-        // Per hit, not per layer or light. Gathered into one `HitView` before the lights, so
-        // that each value has one home on the stack across the shadow rays' calls, not a
-        // spill slot and a copy in the view.
+        // Per hit, not per layer or light. The `HitView` is made after the lights, in each
+        // branch: the one-layer path takes it apart again (its values stay in registers and
+        // their spill slots), where a view made before the lights, whose address the layer
+        // loop takes, was 34 copies a hit from those slots into it.
         let mirror = reflect(dir, nf);
         let cos_i = (-dir.dot(nf)).clamp(0.0, 1.0);
-        let ior = super::dispersion::ior(obj, path.wave);
+        // Undispersed light (nearly every ray) takes the object's ior without looking at
+        // its interior.
+        let ior = match path.wave {
+            None => obj.ior,
+            wave => super::dispersion::ior(obj, wave),
+        };
         let (n1, n2) = if entering { (1.0, ior) } else { (ior, 1.0) };
-        let hv = HitView {
+        let view = move || HitView {
             p,
             dir,
             nf,
@@ -563,11 +571,19 @@ impl<'a> Tracer<'a> {
             // only (`irradiance` keeps them from the gathering rays' hits).
             ctx.lit.clear();
         } else {
-            self.gather_lights(hv.p, hv.nf, bumpy, obj, path.rad_level > 0, ctx);
+            self.gather_lights(p, nf, bumpy, obj, path.rad_level > 0, ctx);
         }
-        let mut sum = LayerSum::new();
-        self.shade_layers(top, &hv, &mut sum, ctx);
-        let LayerSum {
+        // Most hits are on one plain layer: its sums in locals, `LayerSum` not made.
+        let mut sum;
+        let (lay, bent): (Layered, &[(DVec3, DVec3)]) =
+            if single_plain(top, bumpy, self.rad.is_some(), mirror) {
+                (self.shade_single(top, &view(), ctx), &[])
+            } else {
+                sum = LayerSum::new();
+                self.shade_layers(top, &view(), &mut sum, ctx);
+                (sum.layered(), &sum.bent)
+            };
+        let Layered {
             mut col,
             through,
             refl_amount,
@@ -575,11 +591,9 @@ impl<'a> Tracer<'a> {
             refl_all_tinted,
             last,
             conserve,
-            ref bent,
             refl_power,
             refract_n,
-            ..
-        } = sum;
+        } = lay;
         if refl_amount != DVec3::ZERO {
             let w = path.weight * refl_amount.max_element();
             if w > s.adc_bailout {
