@@ -190,7 +190,7 @@ impl<'a> Tracer<'a> {
         let q = self.quality;
         let fin = &tex.finish;
         let (w, through) = (1.0, DVec3::ONE);
-        let c = texture_map::plain_colour(tex, hv.p, hv.uv, &Transform::IDENTITY, q.quick_colors);
+        let c = texture_map::plain_colour(tex, hv.p, hv.uv, &crate::math::IDENTITY, q.quick_colors);
         let light = self.layer_light(&c, fin, hv.p, hv.dir, hv.nf, hv.mirror, None, ctx);
         let col = DVec3::ZERO + through * w * light;
         let mut out = Layered {

@@ -243,7 +243,11 @@ fn filing_nothing_new_keeps_the_stamp() {
     cache.samples.push(sample(0.2));
     cache.file_new(0.5, 1.0);
     assert_ne!(cache.stamp, one, "a new sample");
-    assert_eq!(lookup(&cache, &mut memo), 2, "the memo was of the old grids");
+    assert_eq!(
+        lookup(&cache, &mut memo),
+        2,
+        "the memo was of the old grids"
+    );
     let two = cache.stamp;
     cache.file_new(1.0, 1.0);
     assert_ne!(cache.stamp, two, "another bound");
