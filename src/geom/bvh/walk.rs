@@ -6,7 +6,7 @@ use std::mem::MaybeUninit;
 
 use crate::math::{DVec3, Ray};
 
-use super::slabs::{Crossing, Slabs2};
+use super::slabs::{Crossing, Plain2, Slabs2};
 use super::{Bvh, Node, STACK};
 
 /// `1.0 / ray.dir`, each component read on its own. Callers have usually just written the ray
@@ -67,8 +67,10 @@ impl Bvh {
         self.traverse_recip(ray, &Recip::of(ray), tmax, f);
     }
 
-    /// `traverse` with the ray's `Recip` already worked out.
-    #[inline]
+    /// `traverse` with the ray's `Recip` already worked out. Always inlined: the scene's
+    /// nearest-hit and shadow walks are each compiled twice (with and without AVX) around it,
+    /// and a call between the copies would cost what they save.
+    #[inline(always)]
     pub fn traverse_recip(
         &self,
         ray: &Ray,
@@ -89,8 +91,8 @@ impl Bvh {
         // than camera rays miss it, and the test cost about as much as a node's (unit test
         // `the_root_test_is_implied_by_its_children`).
         if cfg!(target_arch = "x86_64") && r.plain && self.paired {
-            let s = Slabs2::plain(origin, inv_dir);
-            return self.walk(tmax, f, |n, tmax| s.hit_pair_unflat(&n.boxes, tmax));
+            let s = Plain2::new(origin, inv_dir);
+            return self.walk(tmax, f, |n, tmax| s.hit_pair(&n.boxes, tmax));
         }
         if self.prims.is_empty() {
             return;

@@ -57,8 +57,53 @@ impl Unbounded {
 }
 
 impl Scene {
-    /// Nearest crossing along the ray closer than `tmax`.
+    /// Nearest crossing along the ray closer than `tmax`: the copy compiled with AVX where the
+    /// CPU has it (`first_hit_avx`), else the build's own (x86-64-v2).
+    #[inline]
     pub fn first_hit<'a>(
+        &'a self,
+        ray: &Ray,
+        tmax: f64,
+        scratch: &mut Scratch<'a>,
+    ) -> Option<SurfaceHit<'a>> {
+        #[cfg(target_arch = "x86_64")]
+        if crate::math::has_avx() {
+            // SAFETY: the CPU has AVX.
+            return unsafe { self.first_hit_avx(ray, tmax, scratch) };
+        }
+        self.first_hit_base(ray, tmax, scratch)
+    }
+
+    /// `first_hit_in` in three-operand AVX encodings, no other change (no fused multiply-add:
+    /// the same operations, so the same bits). The walk's node test holds six broadcast
+    /// vectors, the distance limit and a zero across the loop; with SSE's two-operand forms
+    /// some were spilled and reloaded every node, and each minimum and maximum needed a copy
+    /// (`Plain2` also reads each face straight into the subtraction).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    fn first_hit_avx<'a>(
+        &'a self,
+        ray: &Ray,
+        tmax: f64,
+        scratch: &mut Scratch<'a>,
+    ) -> Option<SurfaceHit<'a>> {
+        self.first_hit_in(ray, tmax, scratch)
+    }
+
+    /// `first_hit_in` for CPUs without AVX.
+    #[inline(never)]
+    fn first_hit_base<'a>(
+        &'a self,
+        ray: &Ray,
+        tmax: f64,
+        scratch: &mut Scratch<'a>,
+    ) -> Option<SurfaceHit<'a>> {
+        self.first_hit_in(ray, tmax, scratch)
+    }
+
+    /// `first_hit`'s work, inlined into each of its copies.
+    #[inline(always)]
+    fn first_hit_in<'a>(
         &'a self,
         ray: &Ray,
         tmax: f64,
@@ -126,7 +171,9 @@ impl Scene {
     }
 
     /// `for_each_candidate` with the ray's `Recip` already worked out: a shadow ray's caller
-    /// has it for its cached blocker's box.
+    /// has it for its cached blocker's box. Always inlined, so that the shadow ray's AVX copy
+    /// walks in AVX and its callback is not called out of line.
+    #[inline(always)]
     pub fn for_each_candidate_recip<'a>(
         &'a self,
         ray: &Ray,
@@ -141,8 +188,13 @@ impl Scene {
                 return;
             }
         }
-        self.bvh
-            .traverse_recip(ray, r, tmax, |prim, _| f(&self.objects[self.bounded[prim]]));
+        self.bvh.traverse_recip(
+            ray,
+            r,
+            tmax,
+            #[inline(always)]
+            |prim, _| f(&self.objects[self.bounded[prim]]),
+        );
     }
 
     /// Whether any top-level object that may hold `p` (the unbounded ones past their cull
