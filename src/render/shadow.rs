@@ -178,7 +178,15 @@ impl<'a> Tracer<'a> {
         slot: usize,
         ctx: &mut TraceCtx<'a>,
     ) -> DVec3 {
-        self.shadow_in(p, l, dist, slot, ctx)
+        // SAFETY: this copy is entered only where the CPU has AVX.
+        self.shadow_in(
+            unsafe { crate::geom::bvh::Avx::new() },
+            p,
+            l,
+            dist,
+            slot,
+            ctx,
+        )
     }
 
     /// `shadow_in` for CPUs without AVX.
@@ -191,13 +199,14 @@ impl<'a> Tracer<'a> {
         slot: usize,
         ctx: &mut TraceCtx<'a>,
     ) -> DVec3 {
-        self.shadow_in(p, l, dist, slot, ctx)
+        self.shadow_in(crate::geom::bvh::Sse, p, l, dist, slot, ctx)
     }
 
-    /// `shadow`'s work, inlined into each of its copies.
+    /// `shadow`'s work, inlined into each of its copies (`lanes`: the walk's node test).
     #[inline(always)]
     fn shadow_in(
         &self,
+        lanes: impl crate::geom::bvh::Lanes,
         p: DVec3,
         l: DVec3,
         dist: f64,
@@ -266,6 +275,7 @@ impl<'a> Tracer<'a> {
         // through `leaf_any_hit`), where the whole closure was called out of line for each
         // leaf (~40 instructions a call); transparent objects in `through_transparent`.
         self.scene.for_each_candidate_recip(
+            lanes,
             &ray,
             &r,
             dist,

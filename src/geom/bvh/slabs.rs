@@ -5,9 +5,11 @@
 use crate::math::{Aabb, DVec3};
 
 /// Two boxes, lane 0 and lane 1, each coordinate's pair adjacent: `lo[k]` holds both boxes'
-/// minimum along axis k, `hi[k]` their maximum. 16-byte aligned for the loads.
+/// minimum along axis k, `hi[k]` their maximum. 32-byte aligned, so that `Plain4`'s three
+/// 32-byte rows are aligned loads: LLVM splits an unaligned 256-bit load into two halves for
+/// the generic x86-64 tuning (two instructions more a row, and no memory operand).
 #[derive(Clone, Copy, Debug)]
-#[repr(C, align(16))]
+#[repr(C, align(32))]
 pub(super) struct Pair {
     pub(super) lo: [[f64; 2]; 3],
     pub(super) hi: [[f64; 2]; 3],
@@ -274,6 +276,78 @@ impl Plain2 {
     }
 }
 
+/// `Plain2` in 256-bit AVX lanes, for the walks' AVX copies: the node's 96 bytes of faces
+/// read as three 4-double rows (x and y faces below, z below and x above, y and z above),
+/// each against its own broadcasts, so six subtractions and multiplications become three;
+/// one cross-lane permute lines the far faces up with the near ones. Every distance, minimum
+/// and maximum is `Plain2::hit_pair`'s, on the same operands in the same order, so the
+/// answers are its to the bit (unit test `the_plain_test_is_the_paired_test`).
+#[cfg(target_arch = "x86_64")]
+pub(super) struct Plain4 {
+    origin: [std::arch::x86_64::__m256d; 3],
+    neg_inv: [std::arch::x86_64::__m256d; 3],
+}
+
+#[cfg(target_arch = "x86_64")]
+impl Plain4 {
+    /// For a plain ray (`Recip::plain`), as `Plain2::new`.
+    #[target_feature(enable = "avx")]
+    #[inline]
+    pub(super) fn new(o: DVec3, inv_dir: DVec3) -> Plain4 {
+        use std::arch::x86_64::_mm256_setr_pd;
+        let n = -inv_dir;
+        // The rows' axes: (x, y), (z, x), (y, z), each axis over both boxes.
+        Plain4 {
+            origin: [
+                _mm256_setr_pd(o.x, o.x, o.y, o.y),
+                _mm256_setr_pd(o.z, o.z, o.x, o.x),
+                _mm256_setr_pd(o.y, o.y, o.z, o.z),
+            ],
+            neg_inv: [
+                _mm256_setr_pd(n.x, n.x, n.y, n.y),
+                _mm256_setr_pd(n.z, n.z, n.x, n.x),
+                _mm256_setr_pd(n.y, n.y, n.z, n.z),
+            ],
+        }
+    }
+
+    /// `Plain2::hit_pair`, bit for bit.
+    #[target_feature(enable = "avx")]
+    #[inline]
+    pub(super) fn hit_pair(&self, p: &Pair, tmax: f64) -> Crossing {
+        use std::arch::x86_64::*;
+        let faces = p as *const Pair as *const f64;
+        // SAFETY: `Pair` is `repr(C, align(32))`, twelve doubles (`lo` then `hi`, each axis's
+        // pair adjacent), so doubles 0..4, 4..8 and 8..12 lie within it at multiples of 32
+        // bytes, as `_mm256_load_pd` needs; the store writes two doubles into a two-double
+        // array.
+        unsafe {
+            let row = |k: usize| {
+                _mm256_mul_pd(
+                    _mm256_sub_pd(self.origin[k], _mm256_load_pd(faces.add(4 * k))),
+                    self.neg_inv[k],
+                )
+            };
+            // [x below, y below], [z below, x above], [y above, z above].
+            let (a, b, c) = (row(0), row(1), row(2));
+            let above = _mm256_permute2f128_pd(b, c, 0x21);
+            let (nxy, fxy) = (_mm256_min_pd(a, above), _mm256_max_pd(a, above));
+            let (bz, cz) = (_mm256_castpd256_pd128(b), _mm256_extractf128_pd(c, 1));
+            let (nz, fz) = (_mm_min_pd(bz, cz), _mm_max_pd(bz, cz));
+            let (nx, ny) = (_mm256_castpd256_pd128(nxy), _mm256_extractf128_pd(nxy, 1));
+            let (fx, fy) = (_mm256_castpd256_pd128(fxy), _mm256_extractf128_pd(fxy, 1));
+            // `Plain2::hit_pair`'s reductions, in its grouping (a NaN `tmax` drops out of
+            // `far` as it does there).
+            let near = _mm_max_pd(_mm_max_pd(nx, _mm_setzero_pd()), _mm_max_pd(ny, nz));
+            let far = _mm_min_pd(_mm_min_pd(fx, _mm_set1_pd(tmax)), _mm_min_pd(fy, fz));
+            let mask = _mm_movemask_pd(_mm_cmple_pd(near, far)) as u32;
+            let mut t = [0.0f64; 2];
+            _mm_storeu_pd(t.as_mut_ptr(), near);
+            Crossing { mask, near: t }
+        }
+    }
+}
+
 /// Other targets take `Aabb::hit` for every ray.
 #[cfg(not(target_arch = "x86_64"))]
 pub(super) struct Slabs2;
@@ -297,6 +371,19 @@ impl Slabs2 {
 /// Other targets take `Aabb::hit` for every ray.
 #[cfg(not(target_arch = "x86_64"))]
 pub(super) struct Plain2;
+
+#[cfg(not(target_arch = "x86_64"))]
+pub(super) struct Plain4;
+
+#[cfg(not(target_arch = "x86_64"))]
+impl Plain4 {
+    pub(super) unsafe fn new(_: DVec3, _: DVec3) -> Plain4 {
+        Plain4
+    }
+    pub(super) unsafe fn hit_pair(&self, _: &Pair, _: f64) -> Crossing {
+        unreachable!()
+    }
+}
 
 #[cfg(not(target_arch = "x86_64"))]
 impl Plain2 {
@@ -500,7 +587,8 @@ mod tests {
     }
 
     /// `hit_pair_unflat` is `hit_pair` bit for bit wherever the walk takes it (no flat axis),
-    /// and `Plain2::hit_pair` is it up to the sign of a zero entry distance: boxes from tiny to
+    /// and `Plain2::hit_pair` is it up to the sign of a zero entry distance (and `Plain4`'s,
+    /// where the CPU has AVX, `Plain2`'s to the bit): boxes from tiny to
     /// huge and infinite, origins on faces and anywhere, direction components down to 1e-300,
     /// `tmax` finite, infinite and NaN.
     #[test]
@@ -561,6 +649,16 @@ mod tests {
             // sign may differ, which no comparison sees).
             let got = Plain2::new(origin, inv).hit_pair(&pair, tmax);
             assert_eq!(got.mask, want.mask, "k={k}");
+            if crate::math::has_avx() {
+                // SAFETY: the CPU has AVX.
+                let wide = unsafe { Plain4::new(origin, inv).hit_pair(&pair, tmax) };
+                assert_eq!(wide.mask, got.mask, "k={k}");
+                assert_eq!(
+                    wide.near.map(f64::to_bits),
+                    got.near.map(f64::to_bits),
+                    "k={k}"
+                );
+            }
             for b in 0..2 {
                 if want.mask >> b & 1 != 0 {
                     let (g, w) = (got.near[b], want.near[b]);

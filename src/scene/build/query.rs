@@ -2,7 +2,7 @@
 //! (for shadow rays), and which solids hold a point. The walks over the BVH and the
 //! unbounded objects live here; building the scene is in the parent module.
 
-use crate::geom::bvh::Recip;
+use crate::geom::bvh::{Avx, Lanes, Recip, Sse};
 use crate::geom::plane::Plane;
 use crate::geom::Hit;
 use crate::math::{Aabb, DVec3, Ray};
@@ -87,7 +87,8 @@ impl Scene {
         tmax: f64,
         scratch: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
-        self.first_hit_in(ray, tmax, scratch)
+        // SAFETY: this copy is entered only where the CPU has AVX.
+        self.first_hit_in(unsafe { Avx::new() }, ray, tmax, scratch)
     }
 
     /// `first_hit_in` for CPUs without AVX.
@@ -98,13 +99,14 @@ impl Scene {
         tmax: f64,
         scratch: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
-        self.first_hit_in(ray, tmax, scratch)
+        self.first_hit_in(Sse, ray, tmax, scratch)
     }
 
-    /// `first_hit`'s work, inlined into each of its copies.
+    /// `first_hit`'s work, inlined into each of its copies (`lanes`: the walk's node test).
     #[inline(always)]
     fn first_hit_in<'a>(
         &'a self,
+        lanes: impl Lanes,
         ray: &Ray,
         tmax: f64,
         scratch: &mut Scratch<'a>,
@@ -142,6 +144,7 @@ impl Scene {
         // Inlined into the walk, which LLVM stopped doing once the walk had two copies (one
         // for rays with a flat axis): a call per leaf otherwise.
         self.bvh.traverse_recip(
+            lanes,
             ray,
             &r,
             tmax,
@@ -167,15 +170,17 @@ impl Scene {
         tmax: f64,
         f: impl FnMut(&'a Object) -> bool,
     ) {
-        self.for_each_candidate_recip(ray, &Recip::of(ray), tmax, f);
+        self.for_each_candidate_recip(Sse, ray, &Recip::of(ray), tmax, f);
     }
 
     /// `for_each_candidate` with the ray's `Recip` already worked out: a shadow ray's caller
     /// has it for its cached blocker's box. Always inlined, so that the shadow ray's AVX copy
-    /// walks in AVX and its callback is not called out of line.
+    /// walks in AVX and its callback is not called out of line (`lanes`: see
+    /// `Bvh::traverse_recip`).
     #[inline(always)]
     pub fn for_each_candidate_recip<'a>(
         &'a self,
+        lanes: impl Lanes,
         ray: &Ray,
         r: &Recip,
         tmax: f64,
@@ -189,6 +194,7 @@ impl Scene {
             }
         }
         self.bvh.traverse_recip(
+            lanes,
             ray,
             r,
             tmax,
