@@ -150,8 +150,9 @@ impl<'a> Tracer<'a> {
     /// object, filtered by each crossing of a transparent one. `slot` is the light's number,
     /// for the cache of the last blocker. The copy compiled with AVX where the CPU has it, as
     /// `Scene::first_hit` (the walk's node test and the set-up around it in three-operand
-    /// forms; the same operations, so the same bits).
-    #[inline]
+    /// forms; the same operations, so the same bits). Not inlined, as before there were
+    /// copies: inlined, the choice grew `light_seen`'s frame.
+    #[inline(never)]
     pub(super) fn shadow(
         &self,
         p: DVec3,

@@ -58,8 +58,10 @@ impl Unbounded {
 
 impl Scene {
     /// Nearest crossing along the ray closer than `tmax`: the copy compiled with AVX where the
-    /// CPU has it (`first_hit_avx`), else the build's own (x86-64-v2).
-    #[inline]
+    /// CPU has it (`first_hit_avx`), else the build's own (x86-64-v2). Not inlined: a call
+    /// and a jump to the copy, where inlined into `Tracer::first_visible` it pushed that out of
+    /// `trace_seen` (a frame and two copies of the 56-byte answer, ~50 instructions a ray).
+    #[inline(never)]
     pub fn first_hit<'a>(
         &'a self,
         ray: &Ray,
