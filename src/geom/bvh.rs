@@ -44,8 +44,9 @@ struct Ref {
 
 /// An interior node as the walk reads it: both children's boxes side by side (one aligned
 /// load per axis and side for the paired slab test, where the builders' layout needed two
-/// scalar loads and a shuffle from two nodes apart), then the children themselves. 112
-/// bytes; half as many nodes as the builders' layout, so the same memory.
+/// scalar loads and a shuffle from two nodes apart), then the children themselves. 128
+/// bytes (112 and the padding of `Pair`'s 32-byte alignment); half as many nodes as the
+/// builders' layout, so about the same memory.
 #[derive(Clone, Copy, Debug)]
 #[repr(C)]
 struct Node {
@@ -87,7 +88,7 @@ mod walk;
 
 use build::{centroid, clamp_box, Builder};
 use slabs::Pair;
-pub use walk::{ray_recip, Recip};
+pub use walk::{ray_recip, Avx, Lanes, Recip, Sse};
 
 impl Bvh {
     /// Binned SAH (16 bins), leaves of at most 4 primitives; `bounds[i]` is primitive i's box.

@@ -148,9 +148,66 @@ impl<'a> Tracer<'a> {
 
     /// Light reaching `p` from a light `dist` away in direction `l`: zero behind an opaque
     /// object, filtered by each crossing of a transparent one. `slot` is the light's number,
-    /// for the cache of the last blocker.
+    /// for the cache of the last blocker. The copy compiled with AVX where the CPU has it, as
+    /// `Scene::first_hit` (the walk's node test and the set-up around it in three-operand
+    /// forms; the same operations, so the same bits). Not inlined, as before there were
+    /// copies: inlined, the choice grew `light_seen`'s frame.
+    #[inline(never)]
     pub(super) fn shadow(
         &self,
+        p: DVec3,
+        l: DVec3,
+        dist: f64,
+        slot: usize,
+        ctx: &mut TraceCtx<'a>,
+    ) -> DVec3 {
+        #[cfg(target_arch = "x86_64")]
+        if crate::math::has_avx() {
+            // SAFETY: the CPU has AVX.
+            return unsafe { self.shadow_avx(p, l, dist, slot, ctx) };
+        }
+        self.shadow_base(p, l, dist, slot, ctx)
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    fn shadow_avx(
+        &self,
+        p: DVec3,
+        l: DVec3,
+        dist: f64,
+        slot: usize,
+        ctx: &mut TraceCtx<'a>,
+    ) -> DVec3 {
+        // SAFETY: this copy is entered only where the CPU has AVX.
+        self.shadow_in(
+            unsafe { crate::geom::bvh::Avx::new() },
+            p,
+            l,
+            dist,
+            slot,
+            ctx,
+        )
+    }
+
+    /// `shadow_in` for CPUs without AVX.
+    #[inline(never)]
+    fn shadow_base(
+        &self,
+        p: DVec3,
+        l: DVec3,
+        dist: f64,
+        slot: usize,
+        ctx: &mut TraceCtx<'a>,
+    ) -> DVec3 {
+        self.shadow_in(crate::geom::bvh::Sse, p, l, dist, slot, ctx)
+    }
+
+    /// `shadow`'s work, inlined into each of its copies (`lanes`: the walk's node test).
+    #[inline(always)]
+    fn shadow_in(
+        &self,
+        lanes: impl crate::geom::bvh::Lanes,
         p: DVec3,
         l: DVec3,
         dist: f64,
@@ -215,91 +272,129 @@ impl<'a> Tracer<'a> {
         }
         let mut att = DVec3::ONE;
         let mut blocker = None;
-        self.scene.for_each_candidate_recip(&ray, &r, dist, |obj| {
-            // The cached blocker, opaque, was just found not to block.
-            if obj.no_shadow || tried.is_some_and(|t| std::ptr::eq(t, obj)) {
-                return false;
-            }
-            if !obj.transparent {
-                if leaf_any_hit(obj, &ray, dist, ctx) {
-                    att = DVec3::ZERO;
-                    blocker = Some(obj);
-                    return true;
+        // The opaque case inline (nearly every candidate: a sphere's or a plane's `any_hit`
+        // through `leaf_any_hit`), where the whole closure was called out of line for each
+        // leaf (~40 instructions a call); transparent objects in `through_transparent`.
+        self.scene.for_each_candidate_recip(
+            lanes,
+            &ray,
+            &r,
+            dist,
+            #[inline(always)]
+            |obj| {
+                // The cached blocker, opaque, was just found not to block.
+                if obj.no_shadow || tried.is_some_and(|t| std::ptr::eq(t, obj)) {
+                    return false;
                 }
-                return false;
-            }
-            let start = ctx.surface.len();
-            // Taken here, not for every shadow ray: only transparent objects need it.
-            let mut members = std::mem::take(&mut ctx.shadow_members);
-            members.clear();
-            if obj.union_members(&ray, dist, ctx, &mut members) {
-                // A union's crossings are its members' in member order. Any crossing that
-                // blocks makes the answer zero wherever it stands in that list, so the opaque
-                // members (most of a scene wrapped in a clear container, as advanced/abyss's
-                // media sphere) are asked first, each alone, and the first that blocks ends
-                // the ray; only when none does is the list gathered in order for the
-                // product below. A member without crossings is not asked twice.
-                let mut k = 0;
-                for i in 0..members.len() {
-                    let m = members[i];
-                    if !m.transparent {
-                        if self.member_blocks(m, &ray, l, dist, photons_only, ctx) {
-                            ctx.member_blockers[slot] = Some((obj, m));
-                            ctx.shadow_members = members;
-                            att = DVec3::ZERO;
-                            return true;
-                        }
-                        if ctx.surface.len() == start {
-                            continue;
-                        }
-                        ctx.surface.truncate(start);
+                if !obj.transparent {
+                    if leaf_any_hit(obj, &ray, dist, ctx) {
+                        att = DVec3::ZERO;
+                        blocker = Some(obj);
+                        return true;
                     }
-                    members[k] = m;
-                    k += 1;
+                    return false;
                 }
-                for &m in &members[..k] {
-                    m.all_hits(&ray, dist, ctx);
-                }
-            } else {
-                obj.all_hits(&ray, dist, ctx);
-            }
-            ctx.shadow_members = members;
-            for i in start..ctx.surface.len() {
-                let h = ctx.surface[i];
-                if self.crossing_blocks(&h, &ray, l, photons_only, Some(&mut att)) {
-                    att = DVec3::ZERO;
-                    break;
-                }
-            }
-            // Fading interiors and media dim the light over each stretch the ray spends
-            // inside them: from the last crossing (or the shaded point) to a crossing that
-            // leaves (povray: absorbing media in a transparent container always shadow).
-            if att != DVec3::ZERO
-                && ctx.surface[start..]
-                    .iter()
-                    .any(|h| h.obj.interior.is_some())
-            {
-                ctx.surface[start..].sort_by(|a, b| a.t.total_cmp(&b.t));
-                let mut last = 0.0;
-                for h in &ctx.surface[start..] {
-                    if let Some(int) = &h.obj.interior {
-                        if h.obj.normal(ray.at(h.t), h).dot(l) > 0.0 {
-                            att *= int.fade(h.t - last);
-                            if int.has_media() {
-                                att *= super::media::transmittance(&[int.media()], &ray, last, h.t);
-                            }
-                        }
-                    }
-                    last = h.t;
-                }
-            }
-            ctx.surface.truncate(start);
-            att == DVec3::ZERO
-        });
+                let way = Way {
+                    ray,
+                    l,
+                    dist,
+                    slot,
+                    photons_only,
+                };
+                self.through_transparent(obj, &way, ctx, &mut att)
+            },
+        );
         if blocker.is_some() {
             ctx.blockers[slot] = blocker;
         }
         att
+    }
+
+    /// A transparent candidate `obj` of the shadow ray `way`: whether it blocks the light
+    /// (then `att` is zero), else `att` filtered by its crossings. Out of line: rare, and
+    /// large beside the opaque test the walk inlines.
+    #[inline(never)]
+    fn through_transparent(
+        &self,
+        obj: &'a crate::scene::object::Object,
+        way: &Way,
+        ctx: &mut TraceCtx<'a>,
+        att: &mut DVec3,
+    ) -> bool {
+        let Way {
+            ray,
+            l,
+            dist,
+            slot,
+            photons_only,
+        } = *way;
+        let start = ctx.surface.len();
+        // Taken here, not for every shadow ray: only transparent objects need it.
+        let mut members = std::mem::take(&mut ctx.shadow_members);
+        members.clear();
+        if obj.union_members(&ray, dist, ctx, &mut members) {
+            // A union's crossings are its members' in member order. Any crossing that
+            // blocks makes the answer zero wherever it stands in that list, so the opaque
+            // members (most of a scene wrapped in a clear container, as advanced/abyss's
+            // media sphere) are asked first, each alone, and the first that blocks ends
+            // the ray; only when none does is the list gathered in order for the
+            // product below. A member without crossings is not asked twice.
+            let mut k = 0;
+            for i in 0..members.len() {
+                let m = members[i];
+                if !m.transparent {
+                    if self.member_blocks(m, &ray, l, dist, photons_only, ctx) {
+                        ctx.member_blockers[slot] = Some((obj, m));
+                        ctx.shadow_members = members;
+                        *att = DVec3::ZERO;
+                        return true;
+                    }
+                    if ctx.surface.len() == start {
+                        continue;
+                    }
+                    ctx.surface.truncate(start);
+                }
+                members[k] = m;
+                k += 1;
+            }
+            for &m in &members[..k] {
+                m.all_hits(&ray, dist, ctx);
+            }
+        } else {
+            obj.all_hits(&ray, dist, ctx);
+        }
+        ctx.shadow_members = members;
+        for i in start..ctx.surface.len() {
+            let h = ctx.surface[i];
+            if self.crossing_blocks(&h, &ray, l, photons_only, Some(att)) {
+                *att = DVec3::ZERO;
+                break;
+            }
+        }
+        // Fading interiors and media dim the light over each stretch the ray spends
+        // inside them: from the last crossing (or the shaded point) to a crossing that
+        // leaves (povray: absorbing media in a transparent container always shadow).
+        if *att != DVec3::ZERO
+            && ctx.surface[start..]
+                .iter()
+                .any(|h| h.obj.interior.is_some())
+        {
+            ctx.surface[start..].sort_by(|a, b| a.t.total_cmp(&b.t));
+            let mut last = 0.0;
+            for h in &ctx.surface[start..] {
+                if let Some(int) = &h.obj.interior {
+                    if h.obj.normal(ray.at(h.t), h).dot(l) > 0.0 {
+                        *att *= int.fade(h.t - last);
+                        if int.has_media() {
+                            *att *= super::media::transmittance(&[int.media()], &ray, last, h.t);
+                        }
+                    }
+                }
+                last = h.t;
+            }
+        }
+        ctx.surface.truncate(start);
+        *att == DVec3::ZERO
     }
 
     /// Whether a crossing of `m` (a member of a transparent union) within `dist` blocks the
@@ -373,6 +468,17 @@ impl<'a> Tracer<'a> {
         }
         false
     }
+}
+
+/// A shadow ray as `Tracer::through_transparent` needs it: the ray, its unit direction, how
+/// far it is tested, the light's number and whether refracting targets pass only photons.
+#[derive(Clone, Copy)]
+struct Way {
+    ray: Ray,
+    l: DVec3,
+    dist: f64,
+    slot: usize,
+    photons_only: bool,
 }
 
 /// One shaded point's walk over an area light's array (`area_seen`): each point's light

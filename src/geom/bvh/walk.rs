@@ -6,7 +6,7 @@ use std::mem::MaybeUninit;
 
 use crate::math::{DVec3, Ray};
 
-use super::slabs::{Crossing, Slabs2};
+use super::slabs::{Crossing, Plain2, Plain4, Slabs2};
 use super::{Bvh, Node, STACK};
 
 /// `1.0 / ray.dir`, each component read on its own. Callers have usually just written the ray
@@ -58,19 +58,56 @@ impl Recip {
     }
 }
 
+/// Which node test a walk may use: `Sse` anywhere, `Avx` (256-bit lanes, `Plain4`) only where
+/// the CPU has AVX, which making an `Avx` asserts. A walk is compiled for its caller's target
+/// features, so `Avx` pays only inside functions compiled with AVX (`Scene::first_hit`'s and
+/// the shadow ray's AVX copies); elsewhere its intrinsics would be calls.
+pub trait Lanes: Copy {
+    const AVX: bool;
+}
+
+/// The x86-64-v2 node test (`Plain2`).
+#[derive(Clone, Copy)]
+pub struct Sse;
+
+/// The AVX node test (`Plain4`), whose value says the CPU has AVX.
+#[derive(Clone, Copy)]
+pub struct Avx(());
+
+impl Avx {
+    /// # Safety
+    /// The CPU must have AVX.
+    #[inline(always)]
+    pub unsafe fn new() -> Avx {
+        Avx(())
+    }
+}
+
+impl Lanes for Sse {
+    const AVX: bool = false;
+}
+
+impl Lanes for Avx {
+    const AVX: bool = true;
+}
+
 impl Bvh {
     /// Visits primitives whose box the ray crosses within (0, tmax), nearest child first. The
     /// callback gets the primitive index and `&mut tmax` (it lowers it after a closer hit,
     /// pruning the rest); returning `true` stops the traversal (any-hit queries).
     #[inline]
     pub fn traverse(&self, ray: &Ray, tmax: f64, f: impl FnMut(usize, &mut f64) -> bool) {
-        self.traverse_recip(ray, &Recip::of(ray), tmax, f);
+        self.traverse_recip(Sse, ray, &Recip::of(ray), tmax, f);
     }
 
-    /// `traverse` with the ray's `Recip` already worked out.
-    #[inline]
-    pub fn traverse_recip(
+    /// `traverse` with the ray's `Recip` already worked out. Always inlined: the scene's
+    /// nearest-hit and shadow walks are each compiled twice (with and without AVX) around it,
+    /// and a call between the copies would cost what they save. `Avx` lanes test plain rays'
+    /// nodes in 256-bit lanes (`Plain4`, the same bits as `Plain2`).
+    #[inline(always)]
+    pub fn traverse_recip<L: Lanes>(
         &self,
+        _lanes: L,
         ray: &Ray,
         r: &Recip,
         tmax: f64,
@@ -89,13 +126,27 @@ impl Bvh {
         // than camera rays miss it, and the test cost about as much as a node's (unit test
         // `the_root_test_is_implied_by_its_children`).
         if cfg!(target_arch = "x86_64") && r.plain && self.paired {
-            let s = Slabs2::plain(origin, inv_dir);
-            return self.walk(tmax, f, |n, tmax| s.hit_pair_unflat(&n.boxes, tmax));
+            if L::AVX {
+                // SAFETY: `L` is `Avx`, whose value says the CPU has AVX.
+                let s = unsafe { Plain4::new(origin, inv_dir) };
+                return self.walk(tmax, f, |n, tmax| unsafe { s.hit_pair(&n.boxes, tmax) });
+            }
+            let s = Plain2::new(origin, inv_dir);
+            return self.walk(tmax, f, |n, tmax| s.hit_pair(&n.boxes, tmax));
         }
         if self.prims.is_empty() {
             return;
         }
-        // A tree of one leaf (a CSG node's few members) has no pair of boxes to test.
+        // A tree of one leaf (a CSG node's few members, a scene of one bounded object) has no
+        // pair of boxes to test: its root's box, then the leaf. A walk of its own, without
+        // the paired test's set-up below, which LLVM worked out ahead of the branch in the AVX
+        // copies (~30 instructions of every lights/soft shadow ray).
+        if self.nodes.is_empty() {
+            if self.root_box.hit(origin, inv_dir, tmax).is_some() {
+                self.walk(tmax, f, |_, _| Crossing::of(None, None));
+            }
+            return;
+        }
         let slabs = if self.paired {
             Slabs2::new(origin, inv_dir)
         } else {

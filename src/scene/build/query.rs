@@ -2,7 +2,7 @@
 //! (for shadow rays), and which solids hold a point. The walks over the BVH and the
 //! unbounded objects live here; building the scene is in the parent module.
 
-use crate::geom::bvh::Recip;
+use crate::geom::bvh::{Avx, Lanes, Recip, Sse};
 use crate::geom::plane::Plane;
 use crate::geom::Hit;
 use crate::math::{Aabb, DVec3, Ray};
@@ -57,9 +57,58 @@ impl Unbounded {
 }
 
 impl Scene {
-    /// Nearest crossing along the ray closer than `tmax`.
+    /// Nearest crossing along the ray closer than `tmax`: the copy compiled with AVX where the
+    /// CPU has it (`first_hit_avx`), else the build's own (x86-64-v2). Not inlined: a call
+    /// and a jump to the copy, where inlined into `Tracer::first_visible` it pushed that out of
+    /// `trace_seen` (a frame and two copies of the 56-byte answer, ~50 instructions a ray).
+    #[inline(never)]
     pub fn first_hit<'a>(
         &'a self,
+        ray: &Ray,
+        tmax: f64,
+        scratch: &mut Scratch<'a>,
+    ) -> Option<SurfaceHit<'a>> {
+        #[cfg(target_arch = "x86_64")]
+        if crate::math::has_avx() {
+            // SAFETY: the CPU has AVX.
+            return unsafe { self.first_hit_avx(ray, tmax, scratch) };
+        }
+        self.first_hit_base(ray, tmax, scratch)
+    }
+
+    /// `first_hit_in` in three-operand AVX encodings, no other change (no fused multiply-add:
+    /// the same operations, so the same bits). The walk's node test holds six broadcast
+    /// vectors, the distance limit and a zero across the loop; with SSE's two-operand forms
+    /// some were spilled and reloaded every node, and each minimum and maximum needed a copy
+    /// (`Plain2` also reads each face straight into the subtraction).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    fn first_hit_avx<'a>(
+        &'a self,
+        ray: &Ray,
+        tmax: f64,
+        scratch: &mut Scratch<'a>,
+    ) -> Option<SurfaceHit<'a>> {
+        // SAFETY: this copy is entered only where the CPU has AVX.
+        self.first_hit_in(unsafe { Avx::new() }, ray, tmax, scratch)
+    }
+
+    /// `first_hit_in` for CPUs without AVX.
+    #[inline(never)]
+    fn first_hit_base<'a>(
+        &'a self,
+        ray: &Ray,
+        tmax: f64,
+        scratch: &mut Scratch<'a>,
+    ) -> Option<SurfaceHit<'a>> {
+        self.first_hit_in(Sse, ray, tmax, scratch)
+    }
+
+    /// `first_hit`'s work, inlined into each of its copies (`lanes`: the walk's node test).
+    #[inline(always)]
+    fn first_hit_in<'a>(
+        &'a self,
+        lanes: impl Lanes,
         ray: &Ray,
         tmax: f64,
         scratch: &mut Scratch<'a>,
@@ -97,6 +146,7 @@ impl Scene {
         // Inlined into the walk, which LLVM stopped doing once the walk had two copies (one
         // for rays with a flat axis): a call per leaf otherwise.
         self.bvh.traverse_recip(
+            lanes,
             ray,
             &r,
             tmax,
@@ -122,13 +172,17 @@ impl Scene {
         tmax: f64,
         f: impl FnMut(&'a Object) -> bool,
     ) {
-        self.for_each_candidate_recip(ray, &Recip::of(ray), tmax, f);
+        self.for_each_candidate_recip(Sse, ray, &Recip::of(ray), tmax, f);
     }
 
     /// `for_each_candidate` with the ray's `Recip` already worked out: a shadow ray's caller
-    /// has it for its cached blocker's box.
+    /// has it for its cached blocker's box. Always inlined, so that the shadow ray's AVX copy
+    /// walks in AVX and its callback is not called out of line (`lanes`: see
+    /// `Bvh::traverse_recip`).
+    #[inline(always)]
     pub fn for_each_candidate_recip<'a>(
         &'a self,
+        lanes: impl Lanes,
         ray: &Ray,
         r: &Recip,
         tmax: f64,
@@ -141,8 +195,14 @@ impl Scene {
                 return;
             }
         }
-        self.bvh
-            .traverse_recip(ray, r, tmax, |prim, _| f(&self.objects[self.bounded[prim]]));
+        self.bvh.traverse_recip(
+            lanes,
+            ray,
+            r,
+            tmax,
+            #[inline(always)]
+            |prim, _| f(&self.objects[self.bounded[prim]]),
+        );
     }
 
     /// Whether any top-level object that may hold `p` (the unbounded ones past their cull
