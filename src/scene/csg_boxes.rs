@@ -352,4 +352,54 @@ mod tests {
         }
         assert!(inside > 10_000, "{inside}");
     }
+
+    /// Nodes whose members are all boxes (`boxes_first_hit`) answer as `all_hits` does: the
+    /// nearest crossing (t > EPSILON when clipped), bit for bit, with the same side, for
+    /// radiosity_37's column base, inverse members and nodes, merges, intersections and a
+    /// clipped difference, with rays from inside, outside and along faces.
+    #[test]
+    fn all_box_nodes_match_all_hits() {
+        let scene = built(
+            r#"
+            difference { box { <-4.7, 0, -4.7>, <4.7, 3.6, 4.7> } box { <-4.1, -0.1, -4.1>, <4.1, 4, 4.1> }
+                         box { <-5, 0.5, -5>, <5, 3.3, 5> } }
+            intersection { box { -1, 1 } box { 0, 2 } box { -0.5, 0.5 inverse } }
+            merge { box { -1, 1 } box { 0, 2 } box { <-1, 0, 0>, <1, 0, 1> } }
+            difference { box { -2, 2 } box { -1, 1 } inverse }
+            difference { box { -2, 2 } box { <-1, -3, -1>, <1, 3, 1> } clipped_by { plane { y, 1 } } }
+            "#,
+        );
+        let mut rng = Lcg(9);
+        let (mut sa, mut sb) = (Scratch::default(), Scratch::default());
+        let mut hits = 0;
+        for (n, o) in scene.objects.iter().enumerate() {
+            assert!(o.box_members().is_some_and(BoxMembers::all), "object {n}");
+            for k in 0..20_000 {
+                let mut from = rng.vec(8.0);
+                if k % 3 == 0 {
+                    from = from.round() * 0.5;
+                }
+                let d = match k % 4 {
+                    0 => [DVec3::X, DVec3::NEG_Y, DVec3::Z][k % 3],
+                    _ => rng.vec(2.0),
+                };
+                let ray = Ray::new(from, d);
+                let tmax = [f64::INFINITY, 3.0, rng.next() * 20.0][k % 3];
+                sb.surface.clear();
+                o.all_hits(&ray, tmax, &mut sb);
+                let want = sb
+                    .surface
+                    .iter()
+                    .filter(|h| o.clip.is_empty() || h.t > EPSILON)
+                    .min_by(|a, b| a.t.total_cmp(&b.t))
+                    .map(|h| (h.t.to_bits(), h.hit.part, h.flip, h.obj as *const Object));
+                let got = o
+                    .first_hit(&ray, tmax, &mut sa)
+                    .map(|h| (h.t.to_bits(), h.hit.part, h.flip, h.obj as *const Object));
+                assert_eq!(got, want, "object {n}, ray {k}");
+                hits += got.is_some() as usize;
+            }
+        }
+        assert!(hits > 15_000, "{hits}");
+    }
 }
