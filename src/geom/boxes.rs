@@ -47,6 +47,39 @@ impl BoxShape {
         }
         (near.0 <= far.0 && near.0.is_finite() && far.0.is_finite()).then_some((near, far))
     }
+
+    pub fn min(&self) -> DVec3 {
+        self.min
+    }
+
+    pub fn max(&self) -> DVec3 {
+        self.max
+    }
+
+    /// `any_kept` with the test known to the compiler (CSG searches of box members,
+    /// `scene::csg_boxes`): the same crossings asked in the same order.
+    #[inline(always)]
+    pub fn any_kept_by(&self, ray: &Ray, tmax: f64, mut keep: impl FnMut(f64) -> bool) -> bool {
+        let Some((near, far)) = self.slabs(ray) else {
+            return false;
+        };
+        (near.0 > EPSILON && near.0 < tmax && keep(near.0))
+            || (far.0 > EPSILON && far.0 < tmax && keep(far.0))
+    }
+
+    /// `intersect_all`'s crossings handed to `f` in its order (near, then far) instead of
+    /// pushed to a list: CSG searches of box members (`scene::csg_boxes`) take them straight
+    /// into their own list.
+    #[inline(always)]
+    pub fn each_crossing(&self, ray: &Ray, mut f: impl FnMut(Hit)) {
+        if let Some((near, far)) = self.slabs(ray) {
+            for (t, face) in [near, far] {
+                if t > EPSILON {
+                    f(Hit::with_part(t, face));
+                }
+            }
+        }
+    }
 }
 
 /// One axis of `BoxShape::slabs`: narrows `near` and `far` to the pair of faces across `axis`
@@ -90,13 +123,7 @@ impl Shape for BoxShape {
     }
 
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
-        if let Some((near, far)) = self.slabs(ray) {
-            for (t, face) in [near, far] {
-                if t > EPSILON {
-                    out.push(Hit::with_part(t, face));
-                }
-            }
-        }
+        self.each_crossing(ray, |h| out.push(h));
     }
 
     fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
@@ -105,6 +132,7 @@ impl Shape for BoxShape {
         (t > EPSILON && t < tmax).then(|| Hit::with_part(t, face))
     }
 
+    #[inline]
     fn inside(&self, p: DVec3) -> bool {
         !self.empty && p.cmpgt(self.min).all() && p.cmplt(self.max).all()
     }
@@ -118,11 +146,11 @@ impl Shape for BoxShape {
         _scratch: &mut Vec<Hit>,
         keep: &mut dyn FnMut(f64) -> bool,
     ) -> bool {
-        let Some((near, far)) = self.slabs(ray) else {
-            return false;
-        };
-        (near.0 > EPSILON && near.0 < tmax && keep(near.0))
-            || (far.0 > EPSILON && far.0 < tmax && keep(far.0))
+        self.any_kept_by(ray, tmax, keep)
+    }
+
+    fn solid_box(&self) -> Option<BoxShape> {
+        (!self.empty).then_some(*self)
     }
 
     fn normal(&self, _p: DVec3, hit: &Hit) -> DVec3 {

@@ -93,6 +93,11 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
     fn ball(&self) -> Option<(DVec3, f64)> {
         None
     }
+    /// This shape as a box (`BoxShape`, not empty), so that a CSG node may ask its box
+    /// members with the box's own code and no dispatch (`scene::csg_boxes`).
+    fn solid_box(&self) -> Option<boxes::BoxShape> {
+        None
+    }
     /// Bounds of the solid on the axes where it has them (infinite on the others), for
     /// unbounded shapes that are bounded across some axes (a quadric cylinder): clipping by
     /// them gives finite boxes. Only used to skip work, never as `bounds`.

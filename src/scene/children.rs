@@ -98,6 +98,7 @@ fn set_culls(o: &mut Object) {
                 aabb,
                 faces,
                 folds: false,
+                boxes: None,
             })
         });
     }
@@ -175,15 +176,21 @@ fn attach_indexes(o: &mut Object, opened: bool) {
         && children
             .iter()
             .any(|c| crate::scene::csg_hit::folded(c).is_some());
-    if folds {
-        cull.get_or_insert_with(|| {
+    // Box members asked without dispatch (`csg_boxes`); `csg_keeps_boxes` has no index path.
+    let boxes = (mine.is_none() && *op != CsgOp::Union)
+        .then(|| crate::scene::csg_boxes::BoxMembers::of(children))
+        .flatten();
+    if folds || boxes.is_some() {
+        let c = cull.get_or_insert_with(|| {
             Box::new(crate::scene::object::Cull {
                 aabb: None,
                 faces: None,
                 folds: false,
+                boxes: None,
             })
-        })
-        .folds = true;
+        });
+        c.folds = folds;
+        c.boxes = boxes;
     }
     *index = mine;
 }

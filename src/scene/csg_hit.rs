@@ -7,6 +7,7 @@ use std::cell::Cell;
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
+use crate::scene::csg_boxes::{box_hits, csg_keeps_boxes};
 use crate::scene::desc::CsgOp;
 use crate::scene::faces::{self, Face, Faces, MAX_ALL};
 use crate::scene::object::{
@@ -39,7 +40,7 @@ pub(super) fn folded(c: &Object) -> Option<(&[Object], Option<&Aabb>, Option<&Fa
 /// An integer that orders crossings' `t` as `f64::total_cmp` does (its own mapping of the
 /// bits), for sorting them by plain integer comparisons.
 #[inline(always)]
-fn order_key(t: f64) -> i64 {
+pub(super) fn order_key(t: f64) -> i64 {
     let b = t.to_bits() as i64;
     b ^ (((b >> 63) as u64) >> 1) as i64
 }
@@ -89,7 +90,7 @@ impl Object {
     /// so that their search pays nothing for the folding.
     #[allow(clippy::too_many_arguments)]
     #[inline(never)]
-    pub(super) fn csg_first_hit<'a, const FOLD: bool>(
+    pub(super) fn csg_first_hit<'a, const FOLD: bool, const BOXES: bool>(
         &'a self,
         op: CsgOp,
         children: &'a [Object],
@@ -99,6 +100,8 @@ impl Object {
         tmax: f64,
         s: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
+        // Read here, not passed: the instances without box members keep their arguments.
+        let boxes = BOXES.then(|| self.box_members()).flatten();
         let inv_dir = ray.dir.recip();
         if cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none()) {
             return None;
@@ -132,7 +135,11 @@ impl Object {
                 return;
             }
             let from = s.surface.len();
-            member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
+            match boxes.filter(|_| BOXES).and_then(|b| b.get(i)) {
+                // Box members without dispatch (`csg_boxes`): `member_hits`' leaf path.
+                Some(b) => box_hits(c, b, ray, tmax, s),
+                None => member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s),
+            }
             for j in from..s.surface.len() {
                 s.csg_order
                     .push((order_key(s.surface[j].t), j as u32, i as u32));
@@ -176,13 +183,17 @@ impl Object {
                 }
             };
             let clip_kept = || clip.is_empty() || (t > EPSILON && clip.iter().all(|c| c.inside(p)));
-            (leaf_kept() && csg_keeps(op, i, children, index, faces, p, &rejecter) && clip_kept())
-                .then(|| {
-                    let mut h = s.surface[j as usize];
-                    h.flip ^= op == CsgOp::Difference && i > 0;
-                    h.flip ^= self.inverse;
-                    h
-                })
+            let kept = || match boxes.filter(|_| BOXES) {
+                // Nodes with box members have no index (`children::attach_indexes`).
+                Some(b) => csg_keeps_boxes(op, i, children, faces, b, p, &rejecter),
+                None => csg_keeps(op, i, children, index, faces, p, &rejecter),
+            };
+            (leaf_kept() && kept() && clip_kept()).then(|| {
+                let mut h = s.surface[j as usize];
+                h.flip ^= op == CsgOp::Difference && i > 0;
+                h.flip ^= self.inverse;
+                h
+            })
         });
         s.csg_order.truncate(order_from);
         s.surface.truncate(start);
@@ -201,7 +212,7 @@ impl Object {
     /// questions), so the order of the crossings cannot change whether one is kept.
     #[allow(clippy::too_many_arguments)]
     #[inline(never)]
-    pub(super) fn csg_any_hit<'a>(
+    pub(super) fn csg_any_hit<'a, const BOXES: bool>(
         &'a self,
         op: CsgOp,
         children: &'a [Object],
@@ -211,6 +222,7 @@ impl Object {
         tmax: f64,
         s: &mut Scratch<'a>,
     ) -> bool {
+        let boxes = BOXES.then(|| self.box_members()).flatten();
         let inv_dir = ray.dir.recip();
         if cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none()) {
             return false;
@@ -227,9 +239,18 @@ impl Object {
             let face = ray_faces.and_then(|f| f.get(i));
             let mut keep = |t: f64| {
                 let p = ray.at(t);
-                csg_keeps(op, i, children, index, faces, p, &rejecter)
-                    && (clip.is_empty() || (t > EPSILON && clip.iter().all(|c| c.inside(p))))
+                (match boxes.filter(|_| BOXES) {
+                    Some(b) => csg_keeps_boxes(op, i, children, faces, b, p, &rejecter),
+                    None => csg_keeps(op, i, children, index, faces, p, &rejecter),
+                }) && (clip.is_empty() || (t > EPSILON && clip.iter().all(|c| c.inside(p))))
             };
+            // A box member (`csg_boxes`): the leaf case below without dispatch.
+            if let Some(b) = boxes.filter(|_| BOXES).and_then(|b| b.get(i)) {
+                let mut local = None;
+                let r = c.local_ray(ray, &mut local);
+                found = b.shape.any_kept_by(r, tmax, keep);
+                return;
+            }
             // A leaf without face, clipping or window (`member_hits`' own case): its crossings
             // asked as the shape finds them, so that a torus stops polishing at the first kept.
             if let (ObjKind::Shape(shape, None), None, true) = (&c.kind, face, c.clip.is_empty()) {
@@ -662,7 +683,7 @@ mod tests {
                     _ => f64::INFINITY,
                 };
                 let want = key(reference(o, &ray, tmax, &mut sb));
-                let general = o.csg_first_hit::<false>(
+                let general = o.csg_first_hit::<false, false>(
                     *op,
                     children,
                     index.as_deref(),

@@ -3,6 +3,7 @@
 pub mod atmosphere;
 pub mod build;
 pub mod children;
+pub mod csg_boxes;
 pub mod csg_hit;
 pub mod cull;
 pub mod desc;

@@ -40,6 +40,9 @@ pub struct Cull {
     /// `csg_first_hit` is the folding one. Set once the indexes are attached
     /// (`children::attach`), so that no search scans the members for it.
     pub folds: bool,
+    /// The members that are box leaves, of a node other than a union without index: its
+    /// searches ask them without dispatch (`scene::csg_boxes`).
+    pub boxes: Option<crate::scene::csg_boxes::BoxMembers>,
 }
 
 /// A shape's data with the textures of its parts (mesh triangles, blob components).
@@ -261,10 +264,12 @@ impl Object {
                 );
                 let index = index.as_deref();
                 // As `first_hit` chooses: the folding compiled out when nothing would fold.
-                if cull.as_ref().is_some_and(|c| c.folds) {
-                    self.csg_first_hit::<true>(*op, children, index, culls, ray, tmax, s)
+                if cull.as_ref().is_some_and(|c| c.boxes.is_some()) {
+                    self.boxes_search(*op, children, culls, ray, tmax, s)
+                } else if cull.as_ref().is_some_and(|c| c.folds) {
+                    self.csg_first_hit::<true, false>(*op, children, index, culls, ray, tmax, s)
                 } else {
-                    self.csg_first_hit::<false>(*op, children, index, culls, ray, tmax, s)
+                    self.csg_first_hit::<false, false>(*op, children, index, culls, ray, tmax, s)
                 }
             }
             _ => self.clipped_first_hit(ray, tmax, s, nearest),
@@ -327,12 +332,15 @@ impl Object {
                 }
                 // Members that are plain intersections are searched through (`csg_hit`).
                 let index = index.as_deref();
-                if cull.as_ref().is_some_and(|c| c.folds) {
-                    self.csg_first_hit::<true>(*op, children, index, culls, ray, tmax, s)
+                if cull.as_ref().is_some_and(|c| c.boxes.is_some()) {
+                    // Box members without dispatch (`csg_boxes`); such nodes have no index.
+                    self.boxes_search(*op, children, culls, ray, tmax, s)
+                } else if cull.as_ref().is_some_and(|c| c.folds) {
+                    self.csg_first_hit::<true, false>(*op, children, index, culls, ray, tmax, s)
                 } else {
                     // Without members to fold: the search's folding compiled out (through it,
                     // objects/csg/intee1 and cliptst2 cost 2-3 % more instructions).
-                    self.csg_first_hit::<false>(*op, children, index, culls, ray, tmax, s)
+                    self.csg_first_hit::<false, false>(*op, children, index, culls, ray, tmax, s)
                 }
             }
             ObjKind::Csg { .. } => {
@@ -504,7 +512,7 @@ impl Object {
 
     /// `p` in the object's own space (its shape's coordinates).
     #[inline(always)]
-    fn local_point(&self, p: DVec3) -> DVec3 {
+    pub(super) fn local_point(&self, p: DVec3) -> DVec3 {
         match &self.transform {
             Some(t) => t.inv_point(p),
             None => p,
@@ -643,7 +651,13 @@ impl Object {
                             .is_some();
                     }
                 }
-                return self.csg_any_hit(*op, children, index.as_deref(), culls, ray, tmax, s);
+                let index = index.as_deref();
+                return if cull.as_ref().is_some_and(|c| c.boxes.is_some()) {
+                    // Box members without dispatch (`csg_boxes`); such nodes have no index.
+                    self.csg_any_hit::<true>(*op, children, index, culls, ray, tmax, s)
+                } else {
+                    self.csg_any_hit::<false>(*op, children, index, culls, ray, tmax, s)
+                };
             }
         }
         if !self.clip.is_empty() {

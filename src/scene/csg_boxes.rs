@@ -1,0 +1,405 @@
+//! CSG members that are boxes, asked with the box's own code instead of through
+//! `Object::inside`, `all_hits` and the `Shape` vtable: radiosity_37's walls and column bases
+//! are differences of boxes, and their searches ask box members some 1.4 M times.
+//!
+//! A node without index whose members include box leaves without transform keeps a copy of
+//! each such member's `BoxShape` (`BoxMembers`, in its `Cull`), and its searches run an
+//! instance of `csg_first_hit`/`csg_any_hit` that asks those members here. The answers are the
+//! same bit for bit: `box_inside` is `Object::inside`'s leaf path (the bounds test, which
+//! such a box's bounds make redundant, and the box's own test) and `box_hits` is
+//! `member_hits`' leaf path (the box's `intersect_all` crossings in its order, those below
+//! `tmax` taken as surface hits),
+//! calling the very functions the general path reaches through the vtable. Only the dispatch
+//! is gone; a separate instance keeps nodes without box members on the code they had (code
+//! added to `csg_keeps` itself cost more than it saved three times: csg18, csg21). A node
+//! whose members are all boxes (radiosity_37's column bases) is searched on the stack
+//! (`boxes_first_hit`), without the general search's lists.
+
+use std::cell::Cell;
+
+use crate::geom::boxes::BoxShape;
+use crate::geom::{Hit, Shape};
+use crate::math::{Aabb, DVec3, Ray, Slabs, EPSILON};
+use crate::scene::csg_hit::order_key;
+use crate::scene::desc::CsgOp;
+use crate::scene::faces::{self, Faces};
+use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
+
+/// The most members a node whose members are all boxes may have for `boxes_first_hit`.
+pub const MAX_ALL: usize = 8;
+
+/// A box member: its shape, for a leaf without transform whose bounds hold the whole box, so
+/// that `Object::inside`'s bounds test can be left out: a point strictly inside the box is
+/// inside the bounds, and one outside the bounds is outside the box, so the box's own test
+/// gives the answer either way. (Transformed boxes stay with `Object::inside`: answered here
+/// they cost as much, and advanced/whiltile's tiles measured slower.)
+#[derive(Clone, Copy)]
+pub struct BoxMember {
+    pub(super) shape: BoxShape,
+}
+
+/// The box of each member that is a box leaf without clipping, by member number.
+pub struct BoxMembers {
+    boxes: Box<[Option<BoxMember>]>,
+    /// Every member is one, and there are at most `MAX_ALL` (`boxes_first_hit`).
+    all: bool,
+}
+
+impl BoxMembers {
+    /// The box members of `children`, when there is at least one.
+    pub fn of(children: &[Object]) -> Option<BoxMembers> {
+        let boxes: Box<[Option<BoxMember>]> = children
+            .iter()
+            .map(|c| match &c.kind {
+                // The leaves `member_hits` and `Object::inside` answer on their short path.
+                ObjKind::Shape(shape, None) if c.clip.is_empty() && c.transform.is_none() => shape
+                    .solid_box()
+                    .filter(|b| c.bounds.contains(b.min()) && c.bounds.contains(b.max()))
+                    .map(|shape| BoxMember { shape }),
+                _ => None,
+            })
+            .collect();
+        let all = boxes.len() <= MAX_ALL && boxes.iter().all(Option::is_some);
+        boxes
+            .iter()
+            .any(Option::is_some)
+            .then_some(BoxMembers { boxes, all })
+    }
+
+    #[inline(always)]
+    pub fn get(&self, i: usize) -> Option<&BoxMember> {
+        self.boxes.get(i).and_then(Option::as_ref)
+    }
+
+    /// Whether every member is a box (at most `MAX_ALL` of them).
+    #[inline(always)]
+    pub fn all(&self) -> bool {
+        self.all
+    }
+}
+
+/// `o.inside(p)` of a member `o` whose shape is the box `m`: `Object::inside`'s leaf path.
+#[inline(always)]
+pub(super) fn box_inside(o: &Object, m: &BoxMember, p: DVec3) -> bool {
+    m.shape.inside(p) != o.inverse
+}
+
+/// `member_hits(c, None, ray, tmax, s)` of a member `c` whose shape is the box `b`: its
+/// crossings in `intersect_all`'s order, those below `tmax` appended as `take_hits` does.
+#[inline(always)]
+pub(super) fn box_hits<'a>(
+    c: &'a Object,
+    m: &BoxMember,
+    ray: &Ray,
+    tmax: f64,
+    s: &mut Scratch<'a>,
+) {
+    m.shape.each_crossing(ray, |hit| {
+        if hit.t < tmax {
+            s.surface.push(SurfaceHit {
+                t: hit.t,
+                obj: c,
+                hit,
+                flip: c.inverse,
+            });
+        }
+    });
+}
+
+/// `csg_keeps` of a node without index whose box members are `boxes`: the same questions in
+/// the same order (the rejecter first), box members answered by `box_inside`.
+pub(super) fn csg_keeps_boxes(
+    op: CsgOp,
+    i: usize,
+    children: &[Object],
+    faces: Option<&Faces>,
+    boxes: &BoxMembers,
+    p: DVec3,
+    rejecter: &Cell<usize>,
+) -> bool {
+    if op == CsgOp::Union {
+        return true;
+    }
+    let faces = faces.filter(|_| faces::point_ok(p));
+    #[inline(always)]
+    fn member_wants(
+        op: CsgOp,
+        faces: Option<&Faces>,
+        boxes: &BoxMembers,
+        p: DVec3,
+        j: usize,
+        o: &Object,
+    ) -> bool {
+        let want_inside = match op {
+            CsgOp::Intersection => true,
+            CsgOp::Difference => j == 0,
+            CsgOp::Union | CsgOp::Merge => false,
+        };
+        let inside = match (faces.and_then(|f| f.get(j)), boxes.get(j)) {
+            (Some(f), _) if o.bounds.contains(p) => f.inside(p) != o.inverse,
+            (Some(_), _) => o.inverse,
+            (None, Some(b)) => box_inside(o, b, p),
+            (None, None) => o.inside(p),
+        };
+        inside == want_inside
+    }
+    let r = rejecter.get();
+    if r != i && r < children.len() && !member_wants(op, faces, boxes, p, r, &children[r]) {
+        return false;
+    }
+    for (j, o) in children.iter().enumerate() {
+        if j != i && j != r && !member_wants(op, faces, boxes, p, j, o) {
+            rejecter.set(j);
+            return false;
+        }
+    }
+    true
+}
+
+impl Object {
+    /// This node's box members, if it has any (`Cull::boxes`).
+    #[inline(always)]
+    pub(super) fn box_members(&self) -> Option<&BoxMembers> {
+        match &self.kind {
+            ObjKind::Csg { cull: Some(c), .. } => c.boxes.as_ref(),
+            _ => None,
+        }
+    }
+
+    /// `first_hit` of a node (not a union) with box members, and so without index: the
+    /// search on the stack when every member is a box, else `csg_first_hit`'s instance that
+    /// asks the box members without dispatch. Out of line, so that `first_hit` grows by one
+    /// test and call for the nodes without.
+    #[inline(never)]
+    pub(super) fn boxes_search<'a>(
+        &'a self,
+        op: CsgOp,
+        children: &'a [Object],
+        culls: (Option<&Aabb>, Option<&Faces>),
+        ray: &Ray,
+        tmax: f64,
+        s: &mut Scratch<'a>,
+    ) -> Option<SurfaceHit<'a>> {
+        match self.box_members() {
+            Some(b) if b.all() => self.boxes_first_hit(op, children, culls.0, b, ray, tmax),
+            _ if self.folds() => {
+                self.csg_first_hit::<true, true>(op, children, None, culls, ray, tmax, s)
+            }
+            _ => self.csg_first_hit::<false, true>(op, children, None, culls, ray, tmax, s),
+        }
+    }
+
+    /// Whether this node's search folds members (`Cull::folds`).
+    #[inline(always)]
+    fn folds(&self) -> bool {
+        matches!(&self.kind, ObjKind::Csg { cull: Some(c), .. } if c.folds)
+    }
+
+    /// `csg_first_hit::<false, _>` of a node (not a union, no index) whose members are all
+    /// boxes (`BoxMembers::all`): the same search on the stack. The same crossings in the
+    /// same order: each member's, after the same cull and slab tests, in `intersect_all`'s
+    /// order and below `tmax`, inserted as they come after every equal key (so sorted by
+    /// (order key, place in the gather), as `sort_crossings` sorts them). Each is kept by
+    /// the members' `box_inside` (`Object::inside`) and the clip exactly as `csg_keeps` asks,
+    /// with the same first question; no test has a side effect, so the answer is the same
+    /// crossing, bit for bit, with the same flip.
+    #[inline(never)]
+    pub(super) fn boxes_first_hit<'a>(
+        &'a self,
+        op: CsgOp,
+        children: &'a [Object],
+        cull: Option<&Aabb>,
+        boxes: &BoxMembers,
+        ray: &Ray,
+        tmax: f64,
+    ) -> Option<SurfaceHit<'a>> {
+        let inv_dir = ray.dir.recip();
+        if cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none()) {
+            return None;
+        }
+        let slabs = Slabs::new(ray.origin, inv_dir);
+        let members = &boxes.boxes[..children.len().min(MAX_ALL)];
+        // (order key, member << 8 | face): `t` is the key's inverse (`order_key` is an
+        // involution on the bits), and the box's hit is `Hit::with_part(t, face)`.
+        let mut order = [(0i64, 0u32); 2 * MAX_ALL];
+        let mut n = 0;
+        for (i, (c, m)) in children.iter().zip(members).enumerate() {
+            let Some(m) = m else { continue };
+            if !slabs.hits(&c.bounds, tmax) {
+                continue;
+            }
+            m.shape.each_crossing(ray, |hit| {
+                if hit.t < tmax {
+                    let key = order_key(hit.t);
+                    let mut k = n;
+                    while k > 0 && order[k - 1].0 > key {
+                        order[k] = order[k - 1];
+                        k -= 1;
+                    }
+                    order[k] = (key, (i as u32) << 8 | hit.part);
+                    n += 1;
+                }
+            });
+        }
+        #[inline(always)]
+        fn wants(op: CsgOp, j: usize, o: &Object, m: &Option<BoxMember>, p: DVec3) -> bool {
+            let want_inside = match op {
+                CsgOp::Intersection => true,
+                CsgOp::Difference => j == 0,
+                CsgOp::Union | CsgOp::Merge => false,
+            };
+            m.as_ref().is_some_and(|m| box_inside(o, m, p)) == want_inside
+        }
+        let wants = |j: usize, p: DVec3| wants(op, j, &children[j], &members[j], p);
+        let mut rejecter = usize::MAX;
+        let clip = &self.clip[..];
+        'crossings: for &(key, tag) in &order[..n] {
+            let i = (tag >> 8) as usize;
+            let hit = Hit::with_part(
+                f64::from_bits(order_key(f64::from_bits(key as u64)) as u64),
+                tag & 0xff,
+            );
+            let p = ray.at(hit.t);
+            // The member that turned the last crossing away first, as `csg_keeps` asks.
+            if rejecter != i && rejecter < members.len() && !wants(rejecter, p) {
+                continue;
+            }
+            for j in 0..members.len() {
+                if j != i && j != rejecter && !wants(j, p) {
+                    rejecter = j;
+                    continue 'crossings;
+                }
+            }
+            if clip.is_empty() || (hit.t > EPSILON && clip.iter().all(|c| c.inside(p))) {
+                let c = &children[i];
+                return Some(SurfaceHit {
+                    t: hit.t,
+                    obj: c,
+                    hit,
+                    flip: c.inverse ^ (op == CsgOp::Difference && i > 0) ^ self.inverse,
+                });
+            }
+        }
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::test_rng::Lcg;
+    use crate::sdl::{ParseOptions, Parser};
+
+    /// The built scene of `text`.
+    fn built(text: &str) -> crate::scene::build::Scene {
+        let mut p = Parser::new(ParseOptions::default());
+        p.parse_str("t.pov", text)
+            .map_err(|e| e.message.clone())
+            .unwrap();
+        crate::scene::build::build(&p.scene, 64, 48).scene
+    }
+
+    /// `box_inside` is `Object::inside` and `box_hits` is `member_hits`, bit for bit, for box
+    /// members plain, inverse and flat, with points on and near their faces; transformed
+    /// boxes and other shapes are left to `Object::inside`.
+    #[test]
+    fn box_members_answer_as_objects() {
+        let scene = built(
+            r#"
+            difference { box { <-10, -0.1, -10>, <10, 4, 10> } box { <-9, 0.3, -9>, <9, 3.5, 9> }
+                         box { -1, 1 inverse } box { -1, 1 scale <2, 0.5, 1> rotate <10, 20, 30> translate x }
+                         box { <-1, 0, -1>, <1, 0, 1> } sphere { 0, 1 } }
+            "#,
+        );
+        let o = &scene.objects[0];
+        let ObjKind::Csg { children, .. } = &o.kind else {
+            panic!("a CSG node")
+        };
+        let boxes = BoxMembers::of(children).expect("box members");
+        assert!(boxes.get(3).is_none() && boxes.get(5).is_none() && !boxes.all());
+        assert!((0..3).chain([4]).all(|j| boxes.get(j).is_some()));
+        let mut rng = Lcg(5);
+        let (mut sa, mut sb) = (Scratch::default(), Scratch::default());
+        let mut inside = 0;
+        for k in 0..40_000 {
+            let mut p = rng.vec(12.0);
+            if k % 3 == 0 {
+                // On a face's plane of the first boxes, or on an integer lattice.
+                p = p.round();
+            }
+            if k % 5 == 1 {
+                p.y = [-0.1, 4.0, 0.3, 3.5, 0.0][k % 5];
+            }
+            let d = match k % 4 {
+                0 => [DVec3::X, DVec3::NEG_Y, DVec3::Z][k % 3],
+                _ => rng.vec(2.0),
+            };
+            let ray = Ray::new(p, d);
+            let tmax = [f64::INFINITY, 3.0, rng.next() * 20.0][k % 3];
+            for (j, c) in children.iter().enumerate() {
+                let Some(b) = boxes.get(j) else { continue };
+                assert_eq!(box_inside(c, b, p), c.inside(p), "member {j}, point {p}");
+                inside += c.inside(p) as usize;
+                crate::scene::object::member_hits(c, None, &ray, tmax, &mut sa);
+                box_hits(c, b, &ray, tmax, &mut sb);
+                let key = |h: &SurfaceHit| (h.t.to_bits(), h.hit.part, h.flip);
+                let a: Vec<_> = sa.surface.iter().map(key).collect();
+                let b: Vec<_> = sb.surface.iter().map(key).collect();
+                assert_eq!(a, b, "member {j}, ray {k}");
+                sa.surface.clear();
+                sb.surface.clear();
+            }
+        }
+        assert!(inside > 10_000, "{inside}");
+    }
+
+    /// Nodes whose members are all boxes (`boxes_first_hit`) answer as `all_hits` does: the
+    /// nearest crossing (t > EPSILON when clipped), bit for bit, with the same side, for
+    /// radiosity_37's column base, inverse members and nodes, merges, intersections and a
+    /// clipped difference, with rays from inside, outside and along faces.
+    #[test]
+    fn all_box_nodes_match_all_hits() {
+        let scene = built(
+            r#"
+            difference { box { <-4.7, 0, -4.7>, <4.7, 3.6, 4.7> } box { <-4.1, -0.1, -4.1>, <4.1, 4, 4.1> }
+                         box { <-5, 0.5, -5>, <5, 3.3, 5> } }
+            intersection { box { -1, 1 } box { 0, 2 } box { -0.5, 0.5 inverse } }
+            merge { box { -1, 1 } box { 0, 2 } box { <-1, 0, 0>, <1, 0, 1> } }
+            difference { box { -2, 2 } box { -1, 1 } inverse }
+            difference { box { -2, 2 } box { <-1, -3, -1>, <1, 3, 1> } clipped_by { plane { y, 1 } } }
+            "#,
+        );
+        let mut rng = Lcg(9);
+        let (mut sa, mut sb) = (Scratch::default(), Scratch::default());
+        let mut hits = 0;
+        for (n, o) in scene.objects.iter().enumerate() {
+            assert!(o.box_members().is_some_and(BoxMembers::all), "object {n}");
+            for k in 0..20_000 {
+                let mut from = rng.vec(8.0);
+                if k % 3 == 0 {
+                    from = from.round() * 0.5;
+                }
+                let d = match k % 4 {
+                    0 => [DVec3::X, DVec3::NEG_Y, DVec3::Z][k % 3],
+                    _ => rng.vec(2.0),
+                };
+                let ray = Ray::new(from, d);
+                let tmax = [f64::INFINITY, 3.0, rng.next() * 20.0][k % 3];
+                sb.surface.clear();
+                o.all_hits(&ray, tmax, &mut sb);
+                let want = sb
+                    .surface
+                    .iter()
+                    .filter(|h| o.clip.is_empty() || h.t > EPSILON)
+                    .min_by(|a, b| a.t.total_cmp(&b.t))
+                    .map(|h| (h.t.to_bits(), h.hit.part, h.flip, h.obj as *const Object));
+                let got = o
+                    .first_hit(&ray, tmax, &mut sa)
+                    .map(|h| (h.t.to_bits(), h.hit.part, h.flip, h.obj as *const Object));
+                assert_eq!(got, want, "object {n}, ray {k}");
+                hits += got.is_some() as usize;
+            }
+        }
+        assert!(hits > 15_000, "{hits}");
+    }
+}
