@@ -288,16 +288,7 @@ impl Object {
 mod tests {
     use super::*;
     use crate::geom::test_rng::Lcg;
-    use crate::sdl::{ParseOptions, Parser};
-
-    /// The built scene of `text`.
-    fn built(text: &str) -> crate::scene::build::Scene {
-        let mut p = Parser::new(ParseOptions::default());
-        p.parse_str("t.pov", text)
-            .map_err(|e| e.message.clone())
-            .unwrap();
-        crate::scene::build::build(&p.scene, 64, 48).scene
-    }
+    use crate::scene::csg_hit::tests::built;
 
     /// `box_inside` is `Object::inside` and `box_hits` is `member_hits`, bit for bit, for box
     /// members plain, inverse and flat, with points on and near their faces; transformed

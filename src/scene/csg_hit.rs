@@ -434,15 +434,15 @@ impl Object {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::sort_crossings;
     use crate::geom::test_rng::Lcg;
     use crate::math::{DVec3, Ray, EPSILON};
     use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
     use crate::sdl::{ParseOptions, Parser};
 
-    /// The built scene of `text`.
-    fn built(text: &str) -> crate::scene::build::Scene {
+    /// The built scene of `text` (csg_boxes' tests use it too).
+    pub(in crate::scene) fn built(text: &str) -> crate::scene::build::Scene {
         let mut p = Parser::new(ParseOptions::default());
         p.parse_str("t.pov", text)
             .map_err(|e| e.message.clone())

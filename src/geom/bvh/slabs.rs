@@ -184,20 +184,33 @@ impl Slabs2 {
                 );
                 (_mm_min_pd(t0, t1), _mm_max_pd(t0, t1))
             };
-            let (nx, fx) = axis(0);
-            let (ny, fy) = axis(1);
-            let (nz, fz) = axis(2);
-            // max_element is x.max(y.max(z)), then .max(0.0); likewise for the far side. With
-            // no NaN in them maxima and minima may be taken in any grouping (the value is the
-            // same up to the sign of a zero, which no comparison sees): pairs first, for a
-            // chain of two operations instead of three before the comparison.
-            let near = _mm_max_pd(_mm_max_pd(nx, _mm_setzero_pd()), _mm_max_pd(ny, nz));
-            let far = _mm_min_pd(_mm_min_pd(fx, _mm_set1_pd(tmax)), _mm_min_pd(fy, fz));
-            let mask = _mm_movemask_pd(_mm_cmple_pd(near, far)) as u32;
-            let mut t = [0.0f64; 2];
-            _mm_storeu_pd(t.as_mut_ptr(), near);
-            Crossing { mask, near: t }
+            pair_crossing(axis(0), axis(1), axis(2), tmax)
         }
+    }
+}
+
+/// The pair's crossing from each axis's (near, far) slab distances: shared by `Slabs2` and
+/// `Plain2`. max_element is x.max(y.max(z)), then .max(0.0); likewise for the far side. With
+/// no NaN in them maxima and minima may be taken in any grouping (the value is the same up to
+/// the sign of a zero, which no comparison sees): pairs first, for a chain of two operations
+/// instead of three before the comparison.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn pair_crossing(
+    (nx, fx): (std::arch::x86_64::__m128d, std::arch::x86_64::__m128d),
+    (ny, fy): (std::arch::x86_64::__m128d, std::arch::x86_64::__m128d),
+    (nz, fz): (std::arch::x86_64::__m128d, std::arch::x86_64::__m128d),
+    tmax: f64,
+) -> Crossing {
+    use std::arch::x86_64::*;
+    // SAFETY: SSE2 is part of x86_64.
+    unsafe {
+        let near = _mm_max_pd(_mm_max_pd(nx, _mm_setzero_pd()), _mm_max_pd(ny, nz));
+        let far = _mm_min_pd(_mm_min_pd(fx, _mm_set1_pd(tmax)), _mm_min_pd(fy, fz));
+        let mask = _mm_movemask_pd(_mm_cmple_pd(near, far)) as u32;
+        let mut t = [0.0f64; 2];
+        _mm_storeu_pd(t.as_mut_ptr(), near);
+        Crossing { mask, near: t }
     }
 }
 
@@ -262,16 +275,7 @@ impl Plain2 {
                 );
                 (_mm_min_pd(t0, t1), _mm_max_pd(t0, t1))
             };
-            let (nx, fx) = axis(0);
-            let (ny, fy) = axis(1);
-            let (nz, fz) = axis(2);
-            // As in `Slabs2::pair_test`, in the same grouping.
-            let near = _mm_max_pd(_mm_max_pd(nx, _mm_setzero_pd()), _mm_max_pd(ny, nz));
-            let far = _mm_min_pd(_mm_min_pd(fx, _mm_set1_pd(tmax)), _mm_min_pd(fy, fz));
-            let mask = _mm_movemask_pd(_mm_cmple_pd(near, far)) as u32;
-            let mut t = [0.0f64; 2];
-            _mm_storeu_pd(t.as_mut_ptr(), near);
-            Crossing { mask, near: t }
+            pair_crossing(axis(0), axis(1), axis(2), tmax)
         }
     }
 }
