@@ -40,21 +40,11 @@ pub(super) struct HitView<'h, 'a> {
 /// opacity; its highlights only by what the layers above let through; reflections of all
 /// layers add up unweighted; what passes every layer goes on through the object.
 pub(super) struct LayerSum {
-    pub col: DVec3,
-    pub through: DVec3,
-    pub refl_amount: DVec3,
-    pub refl_tinted: DVec3,
-    /// Every reflection's tinted share, bent or not: what conserve_energy takes away.
-    pub refl_all_tinted: DVec3,
-    pub last: Rgbft,
-    pub conserve: bool,
+    /// The sums `Tracer::shade` traces on from.
+    pub out: Layered,
     /// Reflections off perturbed normals go their own ways: (direction, tint·amount).
     /// Inline for the few a hit has: a heap Vec cost an allocation per such hit.
     pub bent: smallvec::SmallVec<[(DVec3, DVec3); 4]>,
-    /// `exponent`: what a reflection brings back is raised to this power first.
-    pub refl_power: Option<f64>,
-    /// The first perturbed normal met decides refraction.
-    pub refract_n: Option<DVec3>,
     /// Radiosity's light at this point, gathered at most once (per normal with
     /// `normal on`), and only if some layer is diffuse.
     irr: Option<DVec3>,
@@ -65,51 +55,45 @@ pub(super) struct LayerSum {
 impl LayerSum {
     pub(super) fn new() -> LayerSum {
         LayerSum {
-            col: DVec3::ZERO,
-            through: DVec3::ONE,
-            refl_amount: DVec3::ZERO,
-            refl_tinted: DVec3::ZERO,
-            refl_all_tinted: DVec3::ZERO,
-            last: Rgbft::BLACK,
-            conserve: false,
+            out: Layered::START,
             bent: smallvec::SmallVec::new(),
-            refl_power: None,
-            refract_n: None,
             irr: None,
             layer_c: [0.0; 5],
         }
     }
 }
 
-impl LayerSum {
-    /// What `Tracer::shade` traces on from.
-    pub(super) fn layered(&self) -> Layered {
-        Layered {
-            col: self.col,
-            through: self.through,
-            refl_amount: self.refl_amount,
-            refl_tinted: self.refl_tinted,
-            refl_all_tinted: self.refl_all_tinted,
-            last: self.last,
-            conserve: self.conserve,
-            refl_power: self.refl_power,
-            refract_n: self.refract_n,
-        }
-    }
-}
-
 /// What `Tracer::shade` traces the reflected and transmitted rays from: `LayerSum` without
 /// the bent reflections (read from it in place) and the layer loop's own working values.
+#[derive(Clone, Copy)]
 pub(super) struct Layered {
     pub col: DVec3,
     pub through: DVec3,
     pub refl_amount: DVec3,
     pub refl_tinted: DVec3,
+    /// Every reflection's tinted share, bent or not: what conserve_energy takes away.
     pub refl_all_tinted: DVec3,
     pub last: Rgbft,
     pub conserve: bool,
+    /// `exponent`: what a reflection brings back is raised to this power first.
     pub refl_power: Option<f64>,
+    /// The first perturbed normal met decides refraction.
     pub refract_n: Option<DVec3>,
+}
+
+impl Layered {
+    /// Before any layer: nothing lit, everything let through.
+    const START: Layered = Layered {
+        col: DVec3::ZERO,
+        through: DVec3::ONE,
+        refl_amount: DVec3::ZERO,
+        refl_tinted: DVec3::ZERO,
+        refl_all_tinted: DVec3::ZERO,
+        last: Rgbft::BLACK,
+        conserve: false,
+        refl_power: None,
+        refract_n: None,
+    };
 }
 
 /// Whether `shade_single` serves a hit on `top`: one plain layer that does not perturb the
@@ -136,7 +120,7 @@ impl<'a> Tracer<'a> {
             // zero; transmission, `last` and `conserve` are only read when it is not), only
             // its reflection does: a layer that cannot reflect is not evaluated. Radiosity's
             // gathering has effects beyond this point, so it keeps every layer.
-            if sum.through == DVec3::ZERO
+            if sum.out.through == DVec3::ZERO
                 && self.rad.is_none()
                 && !(q.reflection && texture_map::may_reflect(tex))
             {
@@ -167,8 +151,8 @@ impl<'a> Tracer<'a> {
                 );
             }
             let c = Rgbft::from_array(sum.layer_c);
-            sum.through *= c.transmitted();
-            sum.last = c;
+            sum.out.through *= c.transmitted();
+            sum.out.last = c;
         }
     }
 
@@ -196,13 +180,8 @@ impl<'a> Tracer<'a> {
         let mut out = Layered {
             col,
             through,
-            refl_amount: DVec3::ZERO,
-            refl_tinted: DVec3::ZERO,
-            refl_all_tinted: DVec3::ZERO,
-            last: Rgbft::BLACK,
             conserve: fin.conserve_energy,
-            refl_power: None,
-            refract_n: None,
+            ..Layered::START
         };
         let refl = &fin.reflection;
         if !refl.is_zero() && q.reflection {
@@ -277,7 +256,7 @@ impl<'a> Tracer<'a> {
         let (pn, pmirror, pcos) = match &part.normal {
             Some(nd) if normal::perturbs(part.normal.as_deref()) => {
                 let pn = normal::perturb_in(nd, space, hv.p, nf);
-                sum.refract_n.get_or_insert(pn);
+                sum.out.refract_n.get_or_insert(pn);
                 (pn, reflect(dir, pn), (-dir.dot(pn)).clamp(0.0, 1.0))
             }
             _ => (nf, hv.mirror, hv.cos_i),
@@ -291,16 +270,16 @@ impl<'a> Tracer<'a> {
                     .get_or_insert_with(|| self.irradiance(hv.p, nf, hv.path, ctx)),
             ),
         };
-        sum.col +=
-            sum.through * w * self.layer_light(&c, fin, hv.p, dir, pn, pmirror, indirect, ctx);
+        sum.out.col +=
+            sum.out.through * w * self.layer_light(&c, fin, hv.p, dir, pn, pmirror, indirect, ctx);
         let refl = &fin.reflection;
         if !refl.is_zero() && self.quality.reflection {
-            sum.refl_power = refl.power().or(sum.refl_power);
+            sum.out.refl_power = refl.power().or(sum.out.refl_power);
             let (amount, tinted) = self.reflection_share(hv, refl, c.rgb, pcos, w);
-            sum.refl_all_tinted += tinted;
-            sum.refl_amount += amount;
+            sum.out.refl_all_tinted += tinted;
+            sum.out.refl_amount += amount;
             if pmirror == hv.mirror {
-                sum.refl_tinted += tinted;
+                sum.out.refl_tinted += tinted;
             } else {
                 // Measured (a sky coloured by direction seen in a plane with a steep normal
                 // pattern, tests/probes/reflect_below_surface.pov): where the perturbed
@@ -321,7 +300,7 @@ impl<'a> Tracer<'a> {
         for (l, v) in sum.layer_c.iter_mut().zip(c.to_array()) {
             *l += v * w;
         }
-        sum.conserve = fin.conserve_energy;
+        sum.out.conserve = fin.conserve_energy;
     }
 }
 
@@ -417,7 +396,7 @@ mod tests {
             let mut sum = LayerSum::new();
             tracer.shade_layers(top, &hv, &mut sum, &mut ctx);
             assert!(sum.bent.is_empty(), "case {case}");
-            let all = sum.layered();
+            let all = sum.out;
             for (a, b) in [
                 (one.col, all.col),
                 (one.through, all.through),

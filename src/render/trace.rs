@@ -581,7 +581,7 @@ impl<'a> Tracer<'a> {
             } else {
                 sum = LayerSum::new();
                 self.shade_layers(top, &view(), &mut sum, ctx);
-                (sum.layered(), &sum.bent)
+                (sum.out, &sum.bent)
             };
         let Layered {
             mut col,
