@@ -36,6 +36,7 @@ pub mod progressive;
 pub mod radiosity;
 mod radiosity_cache;
 mod shadow;
+mod sky;
 pub mod texture_map;
 mod tiling;
 pub mod trace;

@@ -136,13 +136,13 @@ fn shape(pat: &Pattern, v: f64) -> f64 {
 /// `shape` written into its caller: a normal's four samples (gradient, radial, the noises)
 /// paid its call and an array `map` on each (~30 instructions a sample on normavg).
 #[inline(always)]
-fn shape_inline(pat: &Pattern, v: f64) -> f64 {
+pub(super) fn shape_inline(pat: &Pattern, v: f64) -> f64 {
     if pat.is_block() {
         return v;
     }
     let x = v * pat.frequency + pat.phase;
-    // `%` would be the software fmod (see `pattern_wrap`).
-    let mut v = fmod(x, WRAP);
+    // Inside the period fmod's own first exit answers x, here before its call (not inlined).
+    let mut v = if x.abs() < WRAP { x } else { fmod(x, WRAP) };
     if v < 0.0 {
         // Measured: gradient x at x = -0.3 gives 0.7, so negatives wrap by 1, not WRAP.
         v += 1.0;
@@ -299,7 +299,7 @@ fn radial(q: DVec3) -> f64 {
 /// Gradient's value before the wave. Measured: gradient x gives 0.3 at x = 1.3, 1 at 1, 0 at
 /// 2, but 0.80009 at -9.2 (only values above 1 are reduced before the 1.00001 wrap).
 #[inline(always)]
-fn gradient(q: DVec3, a: DVec3) -> f64 {
+pub(super) fn gradient(q: DVec3, a: DVec3) -> f64 {
     let v = q.dot(a);
     if v > 1.0 && v < 2.0 {
         // fmod's exact result here (Sterbenz: v − 1 is exact for v in [1, 2]).

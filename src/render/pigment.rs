@@ -182,6 +182,13 @@ fn pigment_map(map: &[(f64, Pigment)], v: f64, lp: DVec3) -> Rgbft {
 
 /// Colour map lookup: flat beyond the first and last entries, linear in between.
 pub fn lookup(map: &ColorMap, v: f64) -> Rgbft {
+    lookup_inline(map, v)
+}
+
+/// `lookup` written into its caller (the sky's gradient: the call and the colour passed back
+/// through memory were ~25 instructions a ray).
+#[inline(always)]
+pub(super) fn lookup_inline(map: &ColorMap, v: f64) -> Rgbft {
     let Some(first) = map.first() else {
         return Rgbft::BLACK;
     };
@@ -205,10 +212,16 @@ pub fn lookup(map: &ColorMap, v: f64) -> Rgbft {
     let i = if map.len() > SMALL_MAP && !last.0.is_nan() && !v.is_nan() {
         first_at_or_above(map, v)
     } else {
-        match map.iter().skip(1).position(|e| v <= e.0) {
-            Some(i) => i + 1,
-            None => return last.1,
+        // A plain loop: `iter().skip(1).position(..)` stayed an out-of-line call (~40
+        // instructions a lookup in a three-entry map).
+        let mut i = 1;
+        while i < map.len() && !at_or_above(v, map[i].0) {
+            i += 1;
         }
+        if i == map.len() {
+            return last.1;
+        }
+        i
     };
     let (a, b) = (map[i - 1], map[i]);
     let span = b.0 - a.0;

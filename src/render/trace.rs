@@ -15,7 +15,7 @@ pub use crate::scene::scratch::LitBy;
 use super::camera::Camera;
 use super::layers::{single_plain, HitView, LayerSum, Layered};
 use super::legacy_sky::LegacySky;
-use super::{normal, pigment, texture_map};
+use super::{normal, sky, texture_map};
 
 /// Per-thread scratch buffers so tracing allocates nothing per ray.
 pub type TraceCtx<'a> = Scratch<'a>;
@@ -138,13 +138,6 @@ fn grey(c: DVec3) -> f64 {
     0.297 * c.x + 0.589 * c.y + 0.114 * c.z
 }
 
-/// The sky's direction of a ray. Not inlined: inlined, the compiler computed its square root
-/// and division for every ray before looking at the layers, plain colours too (most skies).
-#[inline(never)]
-fn unit_sky(dir: DVec3) -> DVec3 {
-    dir.normalize_or_zero()
-}
-
 /// Whether the crossing `h` is invisible to the ray (`first_visible`'s rules).
 #[inline(always)]
 fn hidden(h: &SurfaceHit, straight: bool, gather: bool) -> bool {
@@ -157,17 +150,12 @@ fn hidden(h: &SurfaceHit, straight: bool, gather: bool) -> bool {
     }
 }
 
-/// One sky_sphere layer's colour for a ray going `dir`; `d`, the sky direction, is worked out
-/// at most once per ray and only for a layer that is not a plain colour.
+/// A sky_sphere layer of colour `c` over what is `seen` below it (the 3.7 rule).
 #[inline(always)]
-fn sky_colour(
-    layer: &crate::scene::desc::Pigment,
-    dir: DVec3,
-    d: &mut Option<DVec3>,
-) -> crate::color::Rgbft {
-    match &layer.kind {
-        crate::scene::desc::PigmentKind::Solid(c) => *c,
-        _ => pigment::eval(layer, *d.get_or_insert_with(|| unit_sky(dir))),
+fn over(seen: Seen, c: crate::color::Rgbft) -> Seen {
+    Seen {
+        rgb: c.rgb * c.opacity() + seen.rgb * c.transmitted(),
+        clear: seen.clear * (c.filter * grey(c.rgb) + c.transmit),
     }
 }
 
@@ -178,7 +166,7 @@ fn legacy_sky(s: &Scene, dir: DVec3, mut seen: Seen) -> Seen {
     let mut d = None;
     let mut legacy = LegacySky::new(seen.rgb);
     for layer in &s.sky {
-        let c = sky_colour(layer, dir, &mut d);
+        let c = sky::layer_colour(layer, dir, &mut d);
         legacy.add(&c);
         seen.rgb = c.rgb * c.opacity() + seen.rgb * c.transmitted();
         seen.clear *= c.filter * grey(c.rgb) + c.transmit;
@@ -496,12 +484,14 @@ impl<'a> Tracer<'a> {
         if s.legacy_sky_filter {
             return legacy_sky(s, dir, seen);
         }
+        // Most skies are one layer: see `sky::only_layer_colour`.
+        if let [layer] = &s.sky[..] {
+            return over(seen, sky::only_layer_colour(layer, dir));
+        }
         // A plain colour needs no direction (most skies are one layer of one colour).
         let mut d = None;
         for layer in &s.sky {
-            let c = sky_colour(layer, dir, &mut d);
-            seen.rgb = c.rgb * c.opacity() + seen.rgb * c.transmitted();
-            seen.clear *= c.filter * grey(c.rgb) + c.transmit;
+            seen = over(seen, sky::layer_colour(layer, dir, &mut d));
         }
         seen
     }
