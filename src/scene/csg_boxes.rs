@@ -183,9 +183,9 @@ impl Object {
         match self.box_members() {
             Some(b) if b.all() => self.boxes_first_hit(op, children, culls.0, b, ray, tmax),
             _ if self.folds() => {
-                self.csg_first_hit::<true, true>(op, children, None, culls, ray, tmax, s)
+                self.csg_first_hit::<true, true, false>(op, children, None, culls, ray, tmax, s)
             }
-            _ => self.csg_first_hit::<false, true>(op, children, None, culls, ray, tmax, s),
+            _ => self.csg_first_hit::<false, true, false>(op, children, None, culls, ray, tmax, s),
         }
     }
 
