@@ -11,7 +11,7 @@
 
 use crate::geom::bvh::Bvh;
 use crate::math::{Aabb, DVec3, Ray, Slabs};
-use crate::scene::csg_shared::{Search, Shared};
+use crate::scene::csg_boxes::Search;
 use crate::scene::desc::CsgOp;
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
 
@@ -100,7 +100,6 @@ fn set_culls(o: &mut Object) {
                 faces,
                 folds: false,
                 boxes: None,
-                shared: None,
                 search: Search::Plain,
             })
         });
@@ -183,31 +182,23 @@ fn attach_indexes(o: &mut Object, opened: bool) {
     let boxes = (mine.is_none() && *op != CsgOp::Union)
         .then(|| crate::scene::csg_boxes::BoxMembers::of(children))
         .flatten();
-    // Members sharing a transform (`csg_shared`), in nodes that neither fold nor have box
-    // members; classes number members as `children` does, so not with an index either.
-    let shared = (mine.is_none() && *op != CsgOp::Union && !folds && boxes.is_none())
-        .then(|| Shared::of(children, cull.as_ref().and_then(|c| c.faces.as_ref())))
-        .flatten();
-    if folds || boxes.is_some() || shared.is_some() {
+    if folds || boxes.is_some() {
         let c = cull.get_or_insert_with(|| {
             Box::new(crate::scene::object::Cull {
                 aabb: None,
                 faces: None,
                 folds: false,
                 boxes: None,
-                shared: None,
                 search: Search::Plain,
             })
         });
-        c.search = match (folds, &boxes, &shared) {
-            (_, Some(_), _) => Search::Boxes,
-            (true, None, _) => Search::Folds,
-            (false, None, Some(_)) => Search::Shared,
-            (false, None, None) => Search::Plain,
+        c.search = match (folds, &boxes) {
+            (_, Some(_)) => Search::Boxes,
+            (true, None) => Search::Folds,
+            (false, None) => Search::Plain,
         };
         c.folds = folds;
         c.boxes = boxes;
-        c.shared = shared;
     }
     *index = mine;
 }

@@ -8,7 +8,6 @@ use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
 use crate::scene::csg_boxes::{box_hits, csg_keeps_boxes};
-use crate::scene::csg_shared::{shared_hits, LocalRay, NONE};
 use crate::scene::desc::CsgOp;
 use crate::scene::faces::{self, Face, Faces, MAX_ALL};
 use crate::scene::object::{
@@ -91,7 +90,7 @@ impl Object {
     /// so that their search pays nothing for the folding.
     #[allow(clippy::too_many_arguments)]
     #[inline(never)]
-    pub(super) fn csg_first_hit<'a, const FOLD: bool, const BOXES: bool, const SHARED: bool>(
+    pub(super) fn csg_first_hit<'a, const FOLD: bool, const BOXES: bool>(
         &'a self,
         op: CsgOp,
         children: &'a [Object],
@@ -103,13 +102,11 @@ impl Object {
     ) -> Option<SurfaceHit<'a>> {
         // Read here, not passed: the instances without box members keep their arguments.
         let boxes = BOXES.then(|| self.box_members()).flatten();
-        let shared = SHARED.then(|| self.shared_members()).flatten();
         let inv_dir = ray.dir.recip();
         if cull.is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none()) {
             return None;
         }
         let ray_faces = faces.filter(|_| faces::ray_ok(ray));
-        let mut local = LocalRay::new(ray);
         let start = s.surface.len();
         let order_from = s.csg_order.len();
         let slabs = Slabs::new(ray.origin, inv_dir);
@@ -138,12 +135,9 @@ impl Object {
                 return;
             }
             let from = s.surface.len();
-            let class = shared.filter(|_| SHARED).map_or(NONE, |m| m.class(i));
             match boxes.filter(|_| BOXES).and_then(|b| b.get(i)) {
                 // Box members without dispatch (`csg_boxes`): `member_hits`' leaf path.
                 Some(b) => box_hits(c, b, ray, tmax, s),
-                // Members sharing a transform (`csg_shared`): the ray made once per class.
-                None if SHARED && class != NONE => shared_hits(c, class, &mut local, ray, tmax, s),
                 None => member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s),
             }
             for j in from..s.surface.len() {
@@ -689,7 +683,7 @@ pub(super) mod tests {
                     _ => f64::INFINITY,
                 };
                 let want = key(reference(o, &ray, tmax, &mut sb));
-                let general = o.csg_first_hit::<false, false, false>(
+                let general = o.csg_first_hit::<false, false>(
                     *op,
                     children,
                     index.as_deref(),

@@ -5,7 +5,6 @@ pub mod build;
 pub mod children;
 pub mod csg_boxes;
 pub mod csg_hit;
-pub mod csg_shared;
 pub mod cull;
 pub mod desc;
 pub mod df3;

@@ -43,12 +43,9 @@ pub struct Cull {
     /// The members that are box leaves, of a node other than a union without index: its
     /// searches ask them without dispatch (`scene::csg_boxes`).
     pub boxes: Option<crate::scene::csg_boxes::BoxMembers>,
-    /// The members that share a transform, of such a node without box members or folding:
-    /// its searches transform the ray and points once per class (`scene::csg_shared`).
-    pub shared: Option<crate::scene::csg_shared::Shared>,
     /// Which search `first_hit` runs, set with the fields above: one byte read instead of a
     /// test per kind.
-    pub search: crate::scene::csg_shared::Search,
+    pub search: crate::scene::csg_boxes::Search,
 }
 
 /// A shape's data with the textures of its parts (mesh triangles, blob components).
@@ -330,7 +327,7 @@ impl Object {
                     }
                 }
                 // Members that are plain intersections are searched through (`csg_hit`), box
-                // members and shared transforms asked without dispatch (`csg_shared`).
+                // members asked without dispatch (`csg_boxes`).
                 self.node_search(*op, children, index.as_deref(), culls, ray, tmax, s)
             }
             ObjKind::Csg { .. } => {
@@ -512,7 +509,7 @@ impl Object {
     /// The shape crossings left in `s.hits` closer than `tmax`, as this object's surface hits
     /// (a leaf's part of `all_hits`, shared with the CSG searches' inlined leaf members).
     #[inline(always)]
-    pub(super) fn take_hits<'a>(&'a self, tmax: f64, s: &mut Scratch<'a>) {
+    fn take_hits<'a>(&'a self, tmax: f64, s: &mut Scratch<'a>) {
         s.surface
             .extend(s.hits.iter().filter(|h| h.t < tmax).map(|&hit| SurfaceHit {
                 t: hit.t,
