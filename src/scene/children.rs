@@ -11,6 +11,7 @@
 
 use crate::geom::bvh::Bvh;
 use crate::math::{Aabb, DVec3, Ray, Slabs};
+use crate::scene::csg_boxes::Search;
 use crate::scene::desc::CsgOp;
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
 
@@ -99,6 +100,7 @@ fn set_culls(o: &mut Object) {
                 faces,
                 folds: false,
                 boxes: None,
+                search: Search::Plain,
             })
         });
     }
@@ -187,8 +189,14 @@ fn attach_indexes(o: &mut Object, opened: bool) {
                 faces: None,
                 folds: false,
                 boxes: None,
+                search: Search::Plain,
             })
         });
+        c.search = match (folds, &boxes) {
+            (_, Some(_)) => Search::Boxes,
+            (true, None) => Search::Folds,
+            (false, None) => Search::Plain,
+        };
         c.folds = folds;
         c.boxes = boxes;
     }
@@ -414,6 +422,7 @@ mod tests {
     use crate::geom::test_rng::Lcg;
     use crate::math::{DVec3, Ray};
     use crate::scene::build::build;
+    use crate::scene::csg_boxes::Search;
     use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
     use crate::sdl::{ParseOptions, Parser};
 
@@ -602,7 +611,7 @@ mod tests {
     }
 
     /// `Cull::folds`, set once, says what scanning the members for `folded` ones at every
-    /// search said: nodes with and without members to fold, members that are not folded
+    /// search said, and `Cull::search` the search the two flags choose: nodes with and without members to fold, members that are not folded
     /// (inverse, clipped, indexed), nested nodes and clipping objects, nodes with an index.
     #[test]
     fn folds_flag_is_the_members_scan() {
@@ -643,6 +652,14 @@ mod tests {
                         .iter()
                         .any(|c| crate::scene::csg_hit::folded(c).is_some());
                 assert_eq!(cull.as_ref().is_some_and(|c| c.folds), scan);
+                // The kind byte names the search the tests on `boxes` and `folds` chose.
+                let boxes = cull.as_ref().is_some_and(|c| c.boxes.is_some());
+                let want = match (boxes, scan) {
+                    (true, _) => Search::Boxes,
+                    (false, true) => Search::Folds,
+                    (false, false) => Search::Plain,
+                };
+                assert_eq!(cull.as_ref().map_or(Search::Plain, |c| c.search), want);
                 seen[scan as usize] += 1;
                 children.iter().for_each(|c| check(c, seen));
             }

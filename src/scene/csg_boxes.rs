@@ -20,10 +20,24 @@ use std::cell::Cell;
 use crate::geom::boxes::BoxShape;
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, Slabs, EPSILON};
+use crate::scene::children::ChildIndex;
 use crate::scene::csg_hit::order_key;
 use crate::scene::desc::CsgOp;
 use crate::scene::faces::{self, Faces};
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
+
+/// Which search a node other than a union runs (`Object::node_search`), decided once the
+/// indexes are attached (`children::attach_indexes`).
+#[derive(Clone, Copy, PartialEq, Eq, Debug, Default)]
+pub enum Search {
+    /// `csg_first_hit` without folding or box members.
+    #[default]
+    Plain,
+    /// A member is folded (`Cull::folds`) and no member is a box.
+    Folds,
+    /// Some member is a box (`Cull::boxes`): `boxes_search`.
+    Boxes,
+}
 
 /// The most members a node whose members are all boxes may have for `boxes_first_hit`.
 pub const MAX_ALL: usize = 8;
@@ -157,6 +171,38 @@ pub(super) fn csg_keeps_boxes(
 }
 
 impl Object {
+    /// `first_hit` of a node other than a union, past its polyhedron case: the search its
+    /// `Cull::search` names, the folding and box code compiled out of the instances
+    /// that have none (through the folding one, objects/csg/intee1 and cliptst2 cost 2-3 %
+    /// more instructions).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    pub(super) fn node_search<'a>(
+        &'a self,
+        op: CsgOp,
+        children: &'a [Object],
+        index: Option<&ChildIndex>,
+        culls: (Option<&Aabb>, Option<&Faces>),
+        ray: &Ray,
+        tmax: f64,
+        s: &mut Scratch<'a>,
+    ) -> Option<SurfaceHit<'a>> {
+        let search = match &self.kind {
+            ObjKind::Csg { cull: Some(c), .. } => c.search,
+            _ => Search::Plain,
+        };
+        match search {
+            // Box members without dispatch (`csg_boxes`); such nodes have no index.
+            Search::Boxes => self.boxes_search(op, children, culls, ray, tmax, s),
+            Search::Folds => {
+                self.csg_first_hit::<true, false>(op, children, index, culls, ray, tmax, s)
+            }
+            Search::Plain => {
+                self.csg_first_hit::<false, false>(op, children, index, culls, ray, tmax, s)
+            }
+        }
+    }
+
     /// This node's box members, if it has any (`Cull::boxes`).
     #[inline(always)]
     pub(super) fn box_members(&self) -> Option<&BoxMembers> {

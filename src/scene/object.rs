@@ -43,6 +43,9 @@ pub struct Cull {
     /// The members that are box leaves, of a node other than a union without index: its
     /// searches ask them without dispatch (`scene::csg_boxes`).
     pub boxes: Option<crate::scene::csg_boxes::BoxMembers>,
+    /// Which search `first_hit` runs, set with the fields above: one byte read instead of a
+    /// test per kind.
+    pub search: crate::scene::csg_boxes::Search,
 }
 
 /// A shape's data with the textures of its parts (mesh triangles, blob components).
@@ -262,15 +265,8 @@ impl Object {
                     cull.as_ref().and_then(|c| c.aabb.as_ref()),
                     cull.as_ref().and_then(|c| c.faces.as_ref()),
                 );
-                let index = index.as_deref();
-                // As `first_hit` chooses: the folding compiled out when nothing would fold.
-                if cull.as_ref().is_some_and(|c| c.boxes.is_some()) {
-                    self.boxes_search(*op, children, culls, ray, tmax, s)
-                } else if cull.as_ref().is_some_and(|c| c.folds) {
-                    self.csg_first_hit::<true, false>(*op, children, index, culls, ray, tmax, s)
-                } else {
-                    self.csg_first_hit::<false, false>(*op, children, index, culls, ray, tmax, s)
-                }
+                // As `first_hit` chooses.
+                self.node_search(*op, children, index.as_deref(), culls, ray, tmax, s)
             }
             _ => self.clipped_first_hit(ray, tmax, s, nearest),
         }
@@ -330,18 +326,9 @@ impl Object {
                         return self.faces_first_hit(*op, children, (culls.0, f, all), ray, tmax);
                     }
                 }
-                // Members that are plain intersections are searched through (`csg_hit`).
-                let index = index.as_deref();
-                if cull.as_ref().is_some_and(|c| c.boxes.is_some()) {
-                    // Box members without dispatch (`csg_boxes`); such nodes have no index.
-                    self.boxes_search(*op, children, culls, ray, tmax, s)
-                } else if cull.as_ref().is_some_and(|c| c.folds) {
-                    self.csg_first_hit::<true, false>(*op, children, index, culls, ray, tmax, s)
-                } else {
-                    // Without members to fold: the search's folding compiled out (through it,
-                    // objects/csg/intee1 and cliptst2 cost 2-3 % more instructions).
-                    self.csg_first_hit::<false, false>(*op, children, index, culls, ray, tmax, s)
-                }
+                // Members that are plain intersections are searched through (`csg_hit`), box
+                // members asked without dispatch (`csg_boxes`).
+                self.node_search(*op, children, index.as_deref(), culls, ray, tmax, s)
             }
             ObjKind::Csg { .. } => {
                 let start = s.surface.len();
