@@ -13,8 +13,7 @@
 
 use crate::geom::bernstein::surely_no_root_quartic_from_zero;
 use crate::geom::poly::{
-    first_root_in_unchecked, first_root_with_unchecked, roots_in, roots_in_isolated,
-    sturm_roots_in, Roots,
+    first_root_with_unchecked, roots_in, roots_in_isolated, sturm_roots_in, Roots,
 };
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
@@ -75,12 +74,6 @@ impl Torus {
 
     /// Crossings as t values (ray units), increasing, with t > EPSILON.
     pub fn crossings(&self, ray: &Ray, out: &mut [f64; 4]) -> usize {
-        self.crossings_up_to(ray, out, false)
-    }
-
-    /// `crossings`, or with `first_only` only the first of them (the others neither found nor
-    /// polished: `first_root_in`), the same bits.
-    fn crossings_up_to(&self, ray: &Ray, out: &mut [f64; 4], first_only: bool) -> usize {
         let Some(q) = self.setup(ray) else {
             return 0;
         };
@@ -92,15 +85,6 @@ impl Torus {
             // The solvers' own `surely_no_root` shortcut, asked here written out for the
             // quartic on [0, hi] (the same answer), then the solvers without it.
             Poly::Quartic(c) if surely_no_root_quartic_from_zero(c, q.hi) => Roots::new(),
-            Poly::Quartic(c) if first_only => {
-                return match first_root_in_unchecked(c, 0.0, q.hi, |s| q.to_t(s) > EPSILON) {
-                    Some(s) => {
-                        out[0] = q.to_t(s);
-                        1
-                    }
-                    None => 0,
-                };
-            }
             Poly::Quartic(c) => roots_in_isolated(c, 0.0, q.hi),
         };
         let mut n = 0;
@@ -112,6 +96,38 @@ impl Torus {
             }
         }
         n
+    }
+
+    /// The first of `crossings` if it is below `tmax`, the same bits; the others neither
+    /// found nor polished (`first_root_with`). A root `s` of the shifted variable lies in its
+    /// bracket `[a, b]`, and `to_t` rounds monotonically (`s >= a` gives `t >= to_t(a)`), so a
+    /// walk that reaches a bracket starting at or past `tmax`, or an interval starting there,
+    /// has nothing below it to find: it stops unpolished (a shadow ray's light, or a nearer
+    /// hit, before the torus).
+    fn first_below(&self, ray: &Ray, tmax: f64) -> Option<f64> {
+        let q = self.setup(ray)?;
+        let c = match &q.poly {
+            Poly::Quartic(c) if !self.sturm => c,
+            _ => {
+                let mut t = [0.0; 4];
+                let n = self.crossings(ray, &mut t);
+                return t[..n].first().copied().filter(|&t| t < tmax);
+            }
+        };
+        if q.to_t(0.0) >= tmax || surely_no_root_quartic_from_zero(c, q.hi) {
+            return None;
+        }
+        let mut past = false;
+        let s = first_root_with_unchecked(c, 0.0, q.hi, |cand| {
+            if q.to_t(cand.a) >= tmax {
+                past = true;
+                return Some(cand.a);
+            }
+            let s = cand.root();
+            (q.to_t(s) > EPSILON).then_some(s)
+        })?;
+        let t = q.to_t(s);
+        (!past && t < tmax).then_some(t)
     }
 
     /// The polynomial whose roots in `[0, hi]` are the crossings, in the shifted and scaled
@@ -233,9 +249,7 @@ impl Shape for Torus {
     }
 
     fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
-        let mut t = [0.0; 4];
-        let n = self.crossings_up_to(ray, &mut t, true);
-        t[..n].first().filter(|&&t| t < tmax).map(|&t| Hit::new(t))
+        self.first_below(ray, tmax).map(Hit::new)
     }
 
     /// The crossings `intersect_all` lists, nearest first, each polished only when the walk
