@@ -97,6 +97,54 @@ pub(crate) fn surely_no_root(c: &[f64], lo: f64, hi: f64) -> bool {
     })
 }
 
+/// [`surely_no_root`] for a quartic on `[0, hi]` (a torus's interval, whose variable starts
+/// where the ray enters the bounds), written out: the same answer for every input. With
+/// `lo = 0` the Taylor shift adds `0·q` terms, which leave each `q_j` as it is (or turn a -0
+/// into +0: a zero's sign cannot take a sum across the margin), and every coefficient is
+/// finite past the check of `t`; the remaining operations are `surely_no_root`'s, in its
+/// order.
+#[inline]
+pub(crate) fn surely_no_root_quartic_from_zero(c: &[f64; 5], hi: f64) -> bool {
+    let (f_lo, f_hi) = (eval(c, 0.0), eval(c, hi));
+    if (f_lo > 0.0) != (f_hi > 0.0) || f_lo == 0.0 || f_hi == 0.0 {
+        return false;
+    }
+    let w = hi - 0.0;
+    let reach = 0.0 + w;
+    let mut t = 0.0;
+    let mut pw = 1.0;
+    for &cj in c {
+        t += cj.abs() * pw;
+        pw *= reach;
+    }
+    if !(t.is_finite() && w.is_finite()) {
+        return false;
+    }
+    let q0 = c[0];
+    let q1 = c[1] * w;
+    let w2 = w * w;
+    let q2 = c[2] * w2;
+    let w3 = w2 * w;
+    let q3 = c[3] * w3;
+    let q4 = c[4] * (w3 * w);
+    let margin = 1e-11 * t;
+    let b = &TO_BERNSTEIN[4];
+    // `q0` is `1·q0` (the first weight of every row is 1): b_0 = q0 = f(0), whose sign was
+    // checked above by the same value.
+    let sums = [
+        q0,
+        b[1][0] * q0 + b[1][1] * q1,
+        b[2][0] * q0 + b[2][1] * q1 + b[2][2] * q2,
+        b[3][0] * q0 + b[3][1] * q1 + b[3][2] * q2 + b[3][3] * q3,
+        b[4][0] * q0 + b[4][1] * q1 + b[4][2] * q2 + b[4][3] * q3 + b[4][4] * q4,
+    ];
+    if f_lo > 0.0 {
+        sums.iter().all(|&s| s > margin)
+    } else {
+        sums.iter().all(|&s| s < -margin)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -132,6 +180,37 @@ mod tests {
             }
         }
         assert!(skipped > 10_000, "{skipped}");
+    }
+
+    /// The written-out quartic certificate on [0, hi] answers as `surely_no_root` does:
+    /// random quartics (near-double roots among them), tori's own, and special values.
+    #[test]
+    fn quartic_from_zero_is_surely_no_root() {
+        let mut rng = crate::geom::test_rng::Lcg(41);
+        let specials = [0.0, -0.0, 1e-300, -1e-300, f64::INFINITY, f64::NAN, 1e300];
+        let (mut yes, mut total) = (0, 0);
+        for case in 0..200_000 {
+            let roots: Vec<f64> = (0..4).map(|_| rng.next() * 4.0 - 1.0).collect();
+            let mut c: [f64; 5] = from_roots(&roots).try_into().unwrap();
+            let k = rng.next();
+            c[0] += match case % 3 {
+                0 => k * 1e-12,
+                1 => k * 10.0 - 2.0,
+                _ => k * k * 100.0,
+            };
+            let mut hi = rng.next() * rng.next() * 3.0;
+            if case % 97 == 0 {
+                c[(case / 97) % 5] = specials[(case / 485) % specials.len()];
+            }
+            if case % 89 == 0 {
+                hi = specials[(case / 89) % specials.len()];
+            }
+            let want = surely_no_root(&c, 0.0, hi);
+            assert_eq!(surely_no_root_quartic_from_zero(&c, hi), want, "{c:?} {hi}");
+            yes += usize::from(want);
+            total += 1;
+        }
+        assert!(yes > total / 10 && yes < total * 9 / 10, "{yes} of {total}");
     }
 
     /// The table holds the quotients computed at run time, bit for bit.

@@ -344,6 +344,17 @@ pub fn first_root_in_unchecked(
     })
 }
 
+/// [`first_root_with`] without its [`surely_no_root`] shortcut, for a caller that has just
+/// asked its own (see [`first_root_in_unchecked`]).
+pub fn first_root_with_unchecked(
+    c: &[f64],
+    lo: f64,
+    hi: f64,
+    take: impl FnMut(Candidate) -> Option<f64>,
+) -> Option<f64> {
+    first_root_checked(c, lo, hi, false, take)
+}
+
 /// [`first_root_with`], the [`surely_no_root`] shortcut asked when `shortcut`.
 #[inline(always)]
 fn first_root_checked(
@@ -456,8 +467,9 @@ fn first_root_body(
     }
 }
 
-/// [`roots_in`] without the [`surely_no_root`] shortcut, for the tests of that shortcut.
-#[cfg(test)]
+/// [`roots_in`] without the [`surely_no_root`] shortcut, for the tests of that shortcut and
+/// for a caller that has just asked its own (the torus's written-out quartic certificate):
+/// the same roots, bit for bit, wherever the shortcut would not have answered.
 pub(crate) fn roots_in_isolated(c: &[f64], lo: f64, hi: f64) -> Roots {
     let mut out = Roots::new();
     if let Some(c) = trim(c) {

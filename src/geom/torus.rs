@@ -11,13 +11,26 @@
 //!   form (see `poly`). `sturm` adds a Sturm-sequence search for exact tangencies (double
 //!   roots without a sign change); it is slower and visually the same.
 
-use crate::geom::poly::{first_root_in, first_root_with, roots_in, sturm_roots_in};
+use crate::geom::bernstein::surely_no_root_quartic_from_zero;
+use crate::geom::poly::{
+    first_root_with_unchecked, roots_in, roots_in_isolated, sturm_roots_in, Roots,
+};
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
 
 /// Widening of the bounding interval, in units of the bounding radius, so a root lying
 /// exactly where the torus touches its bounds is not lost to the endpoint's rounding.
 const MARGIN: f64 = 1e-7;
+
+/// How far inside the hole's cylinder (`rho² < (major - minor)²`, in the unit-scaled
+/// variables) both ends of a ray's search interval must lie for `Torus::setup` to call it a
+/// miss without solving: `rho² <= (1 - HOLE_SLACK)·(major - minor)²`.
+const HOLE_SLACK: f64 = 1e-6;
+
+/// The least lower bound of the quartic on such an interval (`minor · (major - minor)² ·
+/// HOLE_SLACK`, see `Torus::new`) for which the hole test is used: far above the rounding of
+/// the quartic's coefficients and of its evaluations there (a few 1e-13 in these units).
+const HOLE_FLOOR: f64 = 1e-10;
 
 #[derive(Clone, Copy, Debug)]
 pub struct Torus {
@@ -26,6 +39,9 @@ pub struct Torus {
     sturm: bool,
     /// Non-positive or non-finite minor radius: nothing to hit.
     empty: bool,
+    /// `(1 - HOLE_SLACK)·(major - minor)²` in the unit-scaled variables, or -1 where the hole
+    /// test is not used (see `Torus::setup`).
+    hole2: f64,
 }
 
 impl Torus {
@@ -35,22 +51,29 @@ impl Torus {
     pub fn new(major: f64, minor: f64, sturm: bool) -> Torus {
         let (major, minor) = (major.abs(), minor.abs());
         let empty = !(minor > 0.0 && minor.is_finite() && major.is_finite());
+        // Inside the hole, at rho <= h·sqrt(1 - HOLE_SLACK) with h = major - minor (scaled so
+        // major + minor = 1), the quartic is ((rho - major)² + y² - minor²)·((rho + major)² +
+        // y² - minor²) >= (minor·h·HOLE_SLACK)·h: positive by far more than its rounding
+        // wherever that bound clears HOLE_FLOOR. Sturm tori keep their own search.
+        let scale = major + minor;
+        let (big, small) = (major / scale, minor / scale);
+        let h = big - small;
+        let hole2 = if !empty && !sturm && h > 0.0 && small * h * h * HOLE_SLACK >= HOLE_FLOOR {
+            (1.0 - HOLE_SLACK) * h * h
+        } else {
+            -1.0
+        };
         Torus {
             major,
             minor,
             sturm,
             empty,
+            hole2,
         }
     }
 
     /// Crossings as t values (ray units), increasing, with t > EPSILON.
     pub fn crossings(&self, ray: &Ray, out: &mut [f64; 4]) -> usize {
-        self.crossings_up_to(ray, out, false)
-    }
-
-    /// `crossings`, or with `first_only` only the first of them (the others neither found nor
-    /// polished: `first_root_in`), the same bits.
-    fn crossings_up_to(&self, ray: &Ray, out: &mut [f64; 4], first_only: bool) -> usize {
         let Some(q) = self.setup(ray) else {
             return 0;
         };
@@ -59,16 +82,10 @@ impl Torus {
             // sign-change search would miss.
             Poly::Sphere(c) => roots_in(c, 0.0, q.hi),
             Poly::Quartic(c) if self.sturm => sturm_roots_in(c, 0.0, q.hi),
-            Poly::Quartic(c) if first_only => {
-                return match first_root_in(c, 0.0, q.hi, |s| q.to_t(s) > EPSILON) {
-                    Some(s) => {
-                        out[0] = q.to_t(s);
-                        1
-                    }
-                    None => 0,
-                };
-            }
-            Poly::Quartic(c) => roots_in(c, 0.0, q.hi),
+            // The solvers' own `surely_no_root` shortcut, asked here written out for the
+            // quartic on [0, hi] (the same answer), then the solvers without it.
+            Poly::Quartic(c) if surely_no_root_quartic_from_zero(c, q.hi) => Roots::new(),
+            Poly::Quartic(c) => roots_in_isolated(c, 0.0, q.hi),
         };
         let mut n = 0;
         for &s in roots.iter() {
@@ -79,6 +96,38 @@ impl Torus {
             }
         }
         n
+    }
+
+    /// The first of `crossings` if it is below `tmax`, the same bits; the others neither
+    /// found nor polished (`first_root_with`). A root `s` of the shifted variable lies in its
+    /// bracket `[a, b]`, and `to_t` rounds monotonically (`s >= a` gives `t >= to_t(a)`), so a
+    /// walk that reaches a bracket starting at or past `tmax`, or an interval starting there,
+    /// has nothing below it to find: it stops unpolished (a shadow ray's light, or a nearer
+    /// hit, before the torus).
+    fn first_below(&self, ray: &Ray, tmax: f64) -> Option<f64> {
+        let q = self.setup(ray)?;
+        let c = match &q.poly {
+            Poly::Quartic(c) if !self.sturm => c,
+            _ => {
+                let mut t = [0.0; 4];
+                let n = self.crossings(ray, &mut t);
+                return t[..n].first().copied().filter(|&t| t < tmax);
+            }
+        };
+        if q.to_t(0.0) >= tmax || surely_no_root_quartic_from_zero(c, q.hi) {
+            return None;
+        }
+        let mut past = false;
+        let s = first_root_with_unchecked(c, 0.0, q.hi, |cand| {
+            if q.to_t(cand.a) >= tmax {
+                past = true;
+                return Some(cand.a);
+            }
+            let s = cand.root();
+            (q.to_t(s) > EPSILON).then_some(s)
+        })?;
+        let t = q.to_t(s);
+        (!past && t < tmax).then_some(t)
     }
 
     /// The polynomial whose roots in `[0, hi]` are the crossings, in the shifted and scaled
@@ -124,6 +173,13 @@ impl Torus {
 
         let shift = lo;
         let p = o + u * shift;
+        let span = hi - shift;
+        // Both ends of the interval in the hole's cylinder: so is all of it (rho² is convex
+        // along a line), where the quartic has no root and the solvers would find none.
+        let end = p + u * span;
+        if p.x * p.x + p.z * p.z < self.hole2 && end.x * end.x + end.z * end.z < self.hole2 {
+            return None;
+        }
         let poly = if big == 0.0 {
             let c = p.length_squared() - small * small;
             Poly::Sphere([c, 2.0 * p.dot(u), 1.0])
@@ -141,7 +197,7 @@ impl Torus {
         };
         Some(Setup {
             poly,
-            hi: hi - shift,
+            hi: span,
             shift,
             scale,
             len,
@@ -193,9 +249,7 @@ impl Shape for Torus {
     }
 
     fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
-        let mut t = [0.0; 4];
-        let n = self.crossings_up_to(ray, &mut t, true);
-        t[..n].first().filter(|&&t| t < tmax).map(|&t| Hit::new(t))
+        self.first_below(ray, tmax).map(Hit::new)
     }
 
     /// The crossings `intersect_all` lists, nearest first, each polished only when the walk
@@ -214,6 +268,9 @@ impl Shape for Torus {
             return false;
         };
         let c = match &q.poly {
+            Poly::Quartic(c) if !self.sturm && surely_no_root_quartic_from_zero(c, q.hi) => {
+                return false;
+            }
             Poly::Quartic(c) if !self.sturm => c,
             _ => {
                 scratch.clear();
@@ -222,7 +279,7 @@ impl Shape for Torus {
             }
         };
         let (mut last, mut listed, mut found) = (None, 0, false);
-        first_root_with(c, 0.0, q.hi, |cand| {
+        first_root_with_unchecked(c, 0.0, q.hi, |cand| {
             let s = cand.root();
             if last == Some(s) {
                 return None;
@@ -328,6 +385,97 @@ mod tests {
             kept > total / 10 && kept < total * 9 / 10,
             "{kept} of {total}"
         );
+    }
+
+    /// The crossings as the solvers find them with no hole test and their own shortcut
+    /// (`roots_in`), the code before both were added.
+    fn solved(s: &Torus, ray: &Ray) -> Vec<f64> {
+        let plain = Torus { hole2: -1.0, ..*s };
+        let Some(q) = plain.setup(ray) else {
+            return Vec::new();
+        };
+        let roots = match &q.poly {
+            Poly::Sphere(c) => roots_in(c, 0.0, q.hi),
+            Poly::Quartic(c) if s.sturm => sturm_roots_in(c, 0.0, q.hi),
+            Poly::Quartic(c) => roots_in(c, 0.0, q.hi),
+        };
+        let mut v: Vec<f64> = roots
+            .iter()
+            .map(|&r| q.to_t(r))
+            .filter(|&t| t > EPSILON)
+            .collect();
+        v.truncate(4);
+        v
+    }
+
+    /// The hole test and the written-out certificate change no crossing: rays through and
+    /// around the hole of thin, fat and near-spindle tori (and the kinds without the test),
+    /// against `solved`, to the bit, for `intersect_all`, `intersect_first` and `any_kept`.
+    #[test]
+    fn hole_test_and_certificate_keep_the_crossings() {
+        let mut rng = crate::geom::test_rng::Lcg(77);
+        let shapes = [
+            Torus::new(1.0, 0.25, false),
+            Torus::new(5.2, 0.5, false),
+            Torus::new(1.0, 0.9, false),
+            Torus::new(1.0, 0.999_999, false),
+            Torus::new(2.0, 1e-3, false),
+            Torus::new(2.0, 1e-6, false),
+            Torus::new(0.3, 0.6, false),
+            Torus::new(0.0, 0.5, false),
+            Torus::new(1.0, 0.25, true),
+        ];
+        let (mut holed, mut hits) = (0, 0);
+        for s in &shapes {
+            let h = s.major - s.minor;
+            for i in 0..20_000 {
+                // Starts in or near the hole, at the slab's faces or anywhere; aims near the
+                // inner wall, across the hole or anywhere.
+                let a = rng.next() * std::f64::consts::TAU;
+                let radial = DVec3::new(a.cos(), 0.0, a.sin());
+                let origin = match i % 3 {
+                    0 => {
+                        radial * (h.abs() * rng.next() * 1.01)
+                            + DVec3::Y * (s.minor * (2.0 * rng.next() - 1.0))
+                    }
+                    1 => {
+                        radial * (h.abs() * rng.next())
+                            + DVec3::Y * (s.minor * if rng.next() < 0.5 { -1.0 } else { 1.0 })
+                    }
+                    _ => rng.vec(3.0 * (s.major + s.minor)),
+                };
+                let b = rng.next() * std::f64::consts::TAU;
+                let aim = match i % 4 {
+                    0 => {
+                        DVec3::new(b.cos(), 0.0, b.sin()) * h * (0.999 + 0.002 * rng.next())
+                            + rng.vec(s.minor)
+                    }
+                    1 => {
+                        DVec3::new(b.cos(), 0.0, b.sin()) * h * rng.next()
+                            + DVec3::Y * (4.0 * s.minor * (rng.next() - 0.5))
+                    }
+                    _ => rng.vec(2.0 * (s.major + s.minor)),
+                };
+                let ray = Ray::new(origin, (aim - origin) * (0.2 + rng.next()));
+                let want = solved(s, &ray);
+                let got = all(s, &ray);
+                let bits = |v: &[f64]| v.iter().map(|t| t.to_bits()).collect::<Vec<_>>();
+                assert_eq!(bits(&got), bits(&want), "{s:?} {ray:?}");
+                let first = s.intersect_first(&ray, f64::INFINITY, &mut Vec::new());
+                assert_eq!(
+                    first.map(|h| h.t.to_bits()),
+                    want.first().map(|t| t.to_bits())
+                );
+                let cut = rng.next() * 2.0;
+                let kept = s.any_kept(&ray, f64::INFINITY, &mut Vec::new(), &mut |t| t > cut);
+                assert_eq!(kept, want.iter().any(|&t| t > cut), "{s:?} {ray:?}");
+                let plain = Torus { hole2: -1.0, ..*s };
+                holed += usize::from(plain.setup(&ray).is_some() && s.setup(&ray).is_none());
+                hits += usize::from(!want.is_empty());
+            }
+        }
+        // Both the hole test and real crossings are exercised.
+        assert!(holed > 10_000 && hits > 10_000, "{holed} {hits}");
     }
 
     fn close(a: &[f64], b: &[f64], tol: f64) -> bool {
