@@ -31,6 +31,9 @@ pub struct Tracer<'a> {
     pub quality: Quality,
     /// The photon map, when the scene shoots photons.
     pub photons: Option<&'a super::photons::PhotonMap>,
+    /// The scene has no fog, no atmospheric media and no object with media: what a ray
+    /// brings back is what it meets (`seen_past`'s four tests a ray, asked once).
+    pub clear_air: bool,
 }
 
 /// What POV-Ray's `+Q0..11` levels switch on (manual 3.2.8.3, each level checked against
@@ -211,6 +214,7 @@ impl<'a> Tracer<'a> {
             alpha,
             quality,
             photons: None,
+            clear_air: scene.fogs.is_empty() && scene.media.is_empty() && !scene.object_media,
         }
     }
 
@@ -272,7 +276,14 @@ impl<'a> Tracer<'a> {
         if path.depth > self.scene.max_trace_level {
             return Seen::default();
         }
-        let hit = self.first_visible(ray, path.straight, false, ctx);
+        // `first_visible` written out so that the hit stays where `first_hit` put it: a
+        // `match` of the two sources of its answer copied the 56-byte hit on every ray.
+        let mut hit = self.scene.first_hit(ray, f64::INFINITY, ctx);
+        if let Some(h) = hit {
+            if hidden(&h, path.straight, false) {
+                hit = self.visible_past(ray, h, path.straight, false, ctx);
+            }
+        }
         self.seen_past(ray, hit, path, ctx)
     }
 
@@ -285,6 +296,13 @@ impl<'a> Tracer<'a> {
         path: Path<'a>,
         ctx: &mut TraceCtx<'a>,
     ) -> Seen {
+        if self.clear_air {
+            // What the general path below does without fog and media: no inside test, the
+            // ray in no solid, nothing applied after.
+            let mut path = path;
+            path.in_solid = Some(false);
+            return self.seen_of(ray, &hit, path, ctx);
+        }
         let t = hit.as_ref().map_or(f64::INFINITY, |h| h.t);
         // No atmosphere and no media inside solid (not `hollow`) objects, povray's rule
         // (measured: a camera inside plane { z, 10 } sees the plane unfogged; a media box,
@@ -308,13 +326,7 @@ impl<'a> Tracer<'a> {
         // Set in place: a new `Path` from `..path` was a 14-instruction copy on every ray.
         let mut path = path;
         path.in_solid = Some(solid);
-        let mut seen = match &hit {
-            // Blobs with textured components aside, straight to `shade` (not through
-            // `shade_blended`'s frame).
-            Some(h) if h.obj.blob.is_none() => self.shade(ray, h, path, ctx),
-            Some(h) => self.shade_blended(ray, h, path, ctx),
-            None => self.background(ray.dir, path.straight),
-        };
+        let mut seen = self.seen_of(ray, &hit, path, ctx);
         if t.is_finite() && !solid && media {
             seen = self.media_segment(ray, t, seen, ctx);
         }
@@ -322,6 +334,24 @@ impl<'a> Tracer<'a> {
             seen
         } else {
             super::fog::apply(&self.scene.fogs, ray, t, seen)
+        }
+    }
+
+    /// The colour of the ray's first visible crossing `hit`, or of the background.
+    #[inline(always)]
+    fn seen_of(
+        &self,
+        ray: &Ray,
+        hit: &Option<SurfaceHit<'a>>,
+        path: Path<'a>,
+        ctx: &mut TraceCtx<'a>,
+    ) -> Seen {
+        match hit {
+            // Blobs with textured components aside, straight to `shade` (not through
+            // `shade_blended`'s frame).
+            Some(h) if h.obj.blob.is_none() => self.shade(ray, h, path, ctx),
+            Some(h) => self.shade_blended(ray, h, path, ctx),
+            None => self.background(ray.dir, path.straight),
         }
     }
 
