@@ -79,16 +79,15 @@ fn cube(q: DVec3, base: DVec3, metric: f64, k: usize) -> (f64, DVec3) {
 /// of the others, and most cubes are that far (one test instead of three).
 #[inline(always)]
 fn insert(d: &mut [f64; 3], nearest: &mut DVec3, sum: f64, pt: DVec3) {
-    if !(sum < d[2]) {
-        return;
-    }
-    if sum < d[0] {
-        *d = [sum, d[0], d[1]];
-        *nearest = pt;
-    } else if sum < d[1] {
-        *d = [d[0], sum, d[1]];
-    } else {
-        d[2] = sum;
+    if sum < d[2] {
+        if sum < d[0] {
+            *d = [sum, d[0], d[1]];
+            *nearest = pt;
+        } else if sum < d[1] {
+            *d = [d[0], sum, d[1]];
+        } else {
+            d[2] = sum;
+        }
     }
 }
 
