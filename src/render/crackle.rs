@@ -8,6 +8,7 @@
 
 use crate::math::DVec3;
 
+use super::cells_data::{CELL_HASH_OFFSET, CELL_HASH_X, CELL_HASH_Y, CELL_HASH_Z, CELL_POINT};
 use super::noise;
 
 /// Crackle: `form` weighs the distances to the nearest three points, the result clipped to
@@ -73,21 +74,93 @@ fn cube(q: DVec3, base: DVec3, metric: f64, k: usize) -> (f64, DVec3) {
     cube_at(q, base, metric, dx, dy, dz)
 }
 
-/// Keeps the three smallest sums in `d` (sorted) and the point of the first smallest.
+/// Keeps the three smallest sums in `d` (sorted) and the point of the first smallest. The
+/// third is asked first: d is sorted and never NaN, so a sum not below it is below neither
+/// of the others, and most cubes are that far (one test instead of three).
 #[inline(always)]
 fn insert(d: &mut [f64; 3], nearest: &mut DVec3, sum: f64, pt: DVec3) {
-    if sum < d[0] {
-        *d = [sum, d[0], d[1]];
-        *nearest = pt;
-    } else if sum < d[1] {
-        *d = [d[0], sum, d[1]];
-    } else if sum < d[2] {
-        d[2] = sum;
+    if sum < d[2] {
+        if sum < d[0] {
+            *d = [sum, d[0], d[1]];
+            *nearest = pt;
+        } else if sum < d[1] {
+            *d = [d[0], sum, d[1]];
+        } else {
+            d[2] = sum;
+        }
     }
 }
 
 /// The plain walk of all 27 cubes: the three smallest sums and the nearest point.
 fn walk(q: DVec3, metric: f64) -> ([f64; 3], DVec3) {
+    // Inside the i32 range (not NaN), the cubes' coordinates convert exactly either way.
+    let inside = |c: f64| c.abs() < 2147483648.0;
+    if inside(q.x) && inside(q.y) && inside(q.z) {
+        return walk_shared(q, metric);
+    }
+    walk_each(q, metric)
+}
+
+/// The first stages of `walk_shared`'s hash: the nine (x, y) columns' HASH_Y values (x
+/// fastest), the three z stage inputs, and the cubes' coordinates as floats per axis.
+#[inline(always)]
+fn shared_stages(base: DVec3) -> ([usize; 9], [usize; 3], [[f64; 3]; 3]) {
+    let (bx, by, bz) = (base.x as i64, base.y as i64, base.z as i64);
+    let m = |c: i64| (c.wrapping_add(CELL_HASH_OFFSET) & 4095) as usize;
+    let three = |b: i64| [m(b - 1), m(b), m(b + 1)];
+    let coords = |b: i64| [(b - 1) as f64, b as f64, (b + 1) as f64];
+    let my = three(by);
+    let hx = three(bx).map(|i| CELL_HASH_X[i] as usize);
+    let mut hxy = [0usize; 9];
+    for (k, h) in hxy.iter_mut().enumerate() {
+        *h = CELL_HASH_Y[(hx[k % 3] ^ my[k / 3]) & 4095] as usize;
+    }
+    (hxy, three(bz), [coords(bx), coords(by), coords(bz)])
+}
+
+/// `walk_each` for a point whose floors are inside the i32 range, where every cube's
+/// coordinate c (floor ± 1) and `c as f64` are exact: the cubes' three-stage hash shares its
+/// first stages (3 x and 9 (x, y) reads instead of 27 of each, with masks where each cube
+/// had bounds checks), and each cube's point and sum are `cube_at`'s operations on the same
+/// values, visited in the same order.
+fn walk_shared(q: DVec3, metric: f64) -> ([f64; 3], DVec3) {
+    let (hxy, mz, [fx, fy, fz]) = shared_stages(q.floor());
+    let mut d = [f64::INFINITY; 3];
+    let mut nearest = DVec3::ZERO;
+    for (dz, &mz) in mz.iter().enumerate() {
+        for (k, &h) in hxy.iter().enumerate() {
+            // SAFETY: h and mz are below 4096 (CELL_HASH_Y's values, asserted below, and a
+            // 12-bit mask), so their xor indexes CELL_HASH_Z, whose values (asserted) index
+            // CELL_POINT: a mask or a bounds check on each was an instruction or two a cube.
+            let p = unsafe {
+                let e = *CELL_HASH_Z.get_unchecked(h ^ mz) as usize;
+                *CELL_POINT.get_unchecked(e)
+            };
+            let pt = DVec3::new(fx[k % 3] + p[0], fy[k / 3] + p[1], fz[dz] + p[2]);
+            insert(&mut d, &mut nearest, metric_sum((pt - q).abs(), metric), pt);
+        }
+    }
+    (d, nearest)
+}
+
+/// Whether every value of a cells hash stage indexes 4096 entries (the next stage's, or
+/// CELL_POINT's).
+const fn all_below_4096(t: &[u16; 4096]) -> bool {
+    let mut i = 0;
+    while i < 4096 {
+        if t[i] >= 4096 {
+            return false;
+        }
+        i += 1;
+    }
+    true
+}
+
+// `walk_shared`'s unchecked reads rely on this (an unnamed constant is always evaluated).
+const _: () = assert!(all_below_4096(&CELL_HASH_Y) && all_below_4096(&CELL_HASH_Z));
+
+/// The walk of all 27 cubes, each hashed whole (any point).
+fn walk_each(q: DVec3, metric: f64) -> ([f64; 3], DVec3) {
     let base = q.floor();
     let mut d = [f64::INFINITY; 3];
     let mut nearest = DVec3::ZERO;
@@ -220,6 +293,44 @@ mod tests {
         for &p in &points {
             for m in metrics {
                 assert_eq!(bits(nearest3(p, m)), bits(walk(p, m)), "{p} {m}");
+            }
+        }
+    }
+
+    /// The walk with shared hash stages is the walk that hashes every cube, bit for bit,
+    /// from tiny coordinates to the edges of the i32 range, on lattice points and halves.
+    #[test]
+    fn shared_walk_is_the_walk() {
+        let bits =
+            |(d, p): ([f64; 3], DVec3)| (d.map(f64::to_bits), p.to_array().map(f64::to_bits));
+        let mut rng = Lcg(11);
+        let mut points = Vec::new();
+        for n in 0..8_000 {
+            let scale = [1.0, 10.0, 1e3, 1e6, 2e9, 1e-3][n % 6];
+            points.push(rng.vec(scale));
+        }
+        let edge = 2147483647.0;
+        for c in [
+            -edge,
+            edge,
+            -edge + 0.5,
+            edge - 0.5,
+            -2147483648.0 + 1e-6,
+            0.0,
+            -0.0,
+        ] {
+            points.push(DVec3::new(c, 0.25, -c));
+            points.push(DVec3::new(0.5, c, c));
+        }
+        for i in -4..4 {
+            for h in [0.0, 0.5, 1e-17, -1e-17, 0.25] {
+                let c = i as f64 + h;
+                points.push(DVec3::new(c, c, c));
+            }
+        }
+        for &p in &points {
+            for m in [2.0, 1.0, 2.5, 0.5] {
+                assert_eq!(bits(walk_shared(p, m)), bits(walk_each(p, m)), "{p} {m}");
             }
         }
     }
