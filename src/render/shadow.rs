@@ -281,13 +281,18 @@ impl<'a> Tracer<'a> {
             &r,
             dist,
             #[inline(always)]
-            |obj| {
+            |obj, sphere| {
                 // The cached blocker, opaque, was just found not to block.
                 if obj.no_shadow || tried.is_some_and(|t| std::ptr::eq(t, obj)) {
                     return false;
                 }
                 if !obj.transparent {
-                    if leaf_any_hit(obj, &ray, dist, ctx) {
+                    // A plain sphere's `any_hit` without the call through its table.
+                    let blocks = match sphere {
+                        Some(s) => s.blocks(&ray, dist),
+                        None => leaf_any_hit(obj, &ray, dist, ctx),
+                    };
+                    if blocks {
                         att = DVec3::ZERO;
                         blocker = Some(obj);
                         return true;

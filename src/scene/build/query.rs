@@ -2,13 +2,58 @@
 //! (for shadow rays), and which solids hold a point. The walks over the BVH and the
 //! unbounded objects live here; building the scene is in the parent module.
 
+use std::sync::Arc;
+
 use crate::geom::bvh::{Avx, Lanes, Recip, Sse};
 use crate::geom::plane::Plane;
+use crate::geom::sphere::Sphere;
 use crate::geom::Hit;
 use crate::math::{Aabb, DVec3, Ray};
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
 
 use super::Scene;
+
+/// A BVH primitive's name (`Bvh::rename`) has this bit set when its object is an
+/// untransformed, unclipped sphere, whose crossings the walks then ask inline; the other bits
+/// are the object's index in `Scene::objects`.
+const SPHERE: u32 = 1 << 31;
+
+/// The name of `objects[obj]` as a BVH primitive: its index, with `SPHERE` for a plain sphere
+/// (a shape that is one, `Shape::as_sphere`, whose `Arc` holds that very sphere).
+pub(super) fn leaf_name(objects: &[Object], obj: usize) -> u32 {
+    let name = u32::try_from(obj)
+        .ok()
+        .filter(|&n| n < SPHERE)
+        .expect("fewer than 2^31 objects");
+    let sphere = match (
+        &objects[obj].kind,
+        objects[obj].clip.is_empty(),
+        &objects[obj].transform,
+    ) {
+        (ObjKind::Shape(shape, _), true, None) => shape
+            .as_sphere()
+            .is_some_and(|s| std::ptr::addr_eq(s, Arc::as_ptr(shape))),
+        _ => false,
+    };
+    if sphere {
+        name | SPHERE
+    } else {
+        name
+    }
+}
+
+/// `Scene::first_hit`'s copies, chosen once per scene.
+pub(super) type FirstHit =
+    for<'a> unsafe fn(&'a Scene, &Ray, f64, &mut Scratch<'a>) -> Option<SurfaceHit<'a>>;
+
+/// The copy of `first_hit` for this CPU: with AVX where it has it.
+pub(super) fn first_hit_for_cpu() -> FirstHit {
+    #[cfg(target_arch = "x86_64")]
+    if crate::math::has_avx() {
+        return Scene::first_hit_avx;
+    }
+    Scene::first_hit_base
+}
 
 /// An object outside the BVH (unbounded: planes, quadrics, their CSG), tested by every ray
 /// before the walk.
@@ -58,22 +103,20 @@ impl Unbounded {
 
 impl Scene {
     /// Nearest crossing along the ray closer than `tmax`: the copy compiled with AVX where the
-    /// CPU has it (`first_hit_avx`), else the build's own (x86-64-v2). Not inlined: a call
-    /// and a jump to the copy, where inlined into `Tracer::first_visible` it pushed that out of
-    /// `trace_seen` (a frame and two copies of the 56-byte answer, ~50 instructions a ray).
-    #[inline(never)]
+    /// CPU has it (`first_hit_avx`), else the build's own (x86-64-v2), as chosen when the
+    /// scene was built. Inlined: a call through the pointer, where a function asking the CPU
+    /// and calling the copy cost ~20 instructions a ray (its frame and the 56-byte answer
+    /// passed through).
+    #[inline(always)]
     pub fn first_hit<'a>(
         &'a self,
         ray: &Ray,
         tmax: f64,
         scratch: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
-        #[cfg(target_arch = "x86_64")]
-        if crate::math::has_avx() {
-            // SAFETY: the CPU has AVX.
-            return unsafe { self.first_hit_avx(ray, tmax, scratch) };
-        }
-        self.first_hit_base(ray, tmax, scratch)
+        // SAFETY: `first_hit_fn` is `first_hit_for_cpu`'s choice: the AVX copy only where the
+        // CPU has AVX.
+        unsafe { (self.first_hit_fn)(self, ray, tmax, scratch) }
     }
 
     /// `first_hit_in` in three-operand AVX encodings, no other change (no fused multiply-add:
@@ -81,27 +124,53 @@ impl Scene {
     /// vectors, the distance limit and a zero across the loop; with SSE's two-operand forms
     /// some were spilled and reloaded every node, and each minimum and maximum needed a copy
     /// (`Plain2` also reads each face straight into the subtraction).
+    ///
+    /// # Safety
+    /// The CPU must have AVX.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx")]
-    fn first_hit_avx<'a>(
+    unsafe fn first_hit_avx<'a>(
         &'a self,
         ray: &Ray,
         tmax: f64,
         scratch: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
-        // SAFETY: this copy is entered only where the CPU has AVX.
+        // SAFETY: the caller says the CPU has AVX.
         self.first_hit_in(unsafe { Avx::new() }, ray, tmax, scratch)
     }
 
-    /// `first_hit_in` for CPUs without AVX.
-    #[inline(never)]
-    fn first_hit_base<'a>(
+    /// `first_hit_in` for CPUs without AVX (unsafe only to share `FirstHit`'s type).
+    unsafe fn first_hit_base<'a>(
         &'a self,
         ray: &Ray,
         tmax: f64,
         scratch: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
         self.first_hit_in(Sse, ray, tmax, scratch)
+    }
+
+    /// The object a BVH primitive's name (`leaf_name`) stands for, and its sphere when the
+    /// name says it is a plain one.
+    #[inline(always)]
+    fn leaf(&self, name: usize) -> (&Object, Option<&Sphere>) {
+        let obj = &self.objects[name & !(SPHERE as usize)];
+        if name & SPHERE as usize == 0 {
+            return (obj, None);
+        }
+        let ObjKind::Shape(shape, _) = &obj.kind else {
+            // SAFETY: `leaf_name` gives `SPHERE` only to shapes, and objects are not
+            // replaced once the scene is built.
+            unsafe { std::hint::unreachable_unchecked() }
+        };
+        debug_assert!(shape
+            .as_sphere()
+            .is_some_and(|s| std::ptr::addr_eq(s, Arc::as_ptr(shape))));
+        // SAFETY: `leaf_name` gave `SPHERE` only where the shape's `Arc` holds a `Sphere` at
+        // this address (`as_sphere` answered with it); an `Arc`'s value never changes.
+        (
+            obj,
+            Some(unsafe { &*(Arc::as_ptr(shape) as *const Sphere) }),
+        )
     }
 
     /// `first_hit`'s work, inlined into each of its copies (`lanes`: the walk's node test).
@@ -115,7 +184,7 @@ impl Scene {
     ) -> Option<SurfaceHit<'a>> {
         // Nothing to hit (a scene of sky, background or fog only): no reciprocal of the
         // direction, whose three divisions were a tenth of such a scene's time.
-        if self.unbounded.is_empty() && self.bounded.is_empty() {
+        if self.unbounded.is_empty() && self.bvh.is_empty() {
             return None;
         }
         let mut best: Option<SurfaceHit<'a>> = None;
@@ -152,9 +221,17 @@ impl Scene {
             tmax,
             #[inline(always)]
             |prim, tmax| {
-                if let Some(h) =
-                    leaf_first_hit(&self.objects[self.bounded[prim]], ray, *tmax, scratch)
-                {
+                let h = match self.leaf(prim) {
+                    // `Sphere::intersect_first`, inline.
+                    (obj, Some(s)) => s.first_t(ray, *tmax).map(|t| SurfaceHit {
+                        t,
+                        obj,
+                        hit: Hit::new(t),
+                        flip: obj.inverse,
+                    }),
+                    (obj, None) => leaf_first_hit(obj, ray, *tmax, scratch),
+                };
+                if let Some(h) = h {
                     *tmax = h.t;
                     best = Some(h);
                 }
@@ -172,13 +249,15 @@ impl Scene {
         tmax: f64,
         f: impl FnMut(&'a Object) -> bool,
     ) {
-        self.for_each_candidate_recip(Sse, ray, &Recip::of(ray), tmax, f);
+        let mut f = f;
+        self.for_each_candidate_recip(Sse, ray, &Recip::of(ray), tmax, |obj, _| f(obj));
     }
 
     /// `for_each_candidate` with the ray's `Recip` already worked out: a shadow ray's caller
     /// has it for its cached blocker's box. Always inlined, so that the shadow ray's AVX copy
     /// walks in AVX and its callback is not called out of line (`lanes`: see
-    /// `Bvh::traverse_recip`).
+    /// `Bvh::traverse_recip`). `f` also gets the object's sphere when it is a plain one (an
+    /// untransformed, unclipped sphere, whose `any_hit` is `Sphere::blocks`).
     #[inline(always)]
     pub fn for_each_candidate_recip<'a>(
         &'a self,
@@ -186,12 +265,12 @@ impl Scene {
         ray: &Ray,
         r: &Recip,
         tmax: f64,
-        mut f: impl FnMut(&'a Object) -> bool,
+        mut f: impl FnMut(&'a Object, Option<&'a Sphere>) -> bool,
     ) {
         for u in &self.unbounded {
             // An object the ray misses adds nothing, opaque or not: no crossing of it within
             // tmax to block or filter the light.
-            if !u.missed(ray, r, tmax) && f(&self.objects[u.obj]) {
+            if !u.missed(ray, r, tmax) && f(&self.objects[u.obj], None) {
                 return;
             }
         }
@@ -201,7 +280,10 @@ impl Scene {
             r,
             tmax,
             #[inline(always)]
-            |prim, _| f(&self.objects[self.bounded[prim]]),
+            |prim, _| {
+                let (obj, sphere) = self.leaf(prim);
+                f(obj, sphere)
+            },
         );
     }
 
@@ -217,7 +299,7 @@ impl Scene {
         }
         let mut found = false;
         self.bvh.visit_point(p, |k| {
-            found = test(&self.objects[self.bounded[k]]);
+            found = test(self.leaf(k).0);
             found
         });
         found
@@ -232,7 +314,7 @@ impl Scene {
             }
         }
         self.bvh.visit_point(p, |k| {
-            f(&self.objects[self.bounded[k]]);
+            f(self.leaf(k).0);
             false
         });
     }
