@@ -150,9 +150,10 @@ impl<'a> Tracer<'a> {
     /// object, filtered by each crossing of a transparent one. `slot` is the light's number,
     /// for the cache of the last blocker. The copy compiled with AVX where the CPU has it, as
     /// `Scene::first_hit` (the walk's node test and the set-up around it in three-operand
-    /// forms; the same operations, so the same bits). Not inlined, as before there were
-    /// copies: inlined, the choice grew `light_seen`'s frame.
-    #[inline(never)]
+    /// forms; the same operations, so the same bits). The choice is a flag the scene read
+    /// once (`Scene::avx`), here inlined: a function asking the CPU at every shadow ray, with
+    /// a frame for the call that asks it the first time, cost ~20 instructions a ray.
+    #[inline(always)]
     pub(super) fn shadow(
         &self,
         p: DVec3,
@@ -162,16 +163,19 @@ impl<'a> Tracer<'a> {
         ctx: &mut TraceCtx<'a>,
     ) -> DVec3 {
         #[cfg(target_arch = "x86_64")]
-        if crate::math::has_avx() {
-            // SAFETY: the CPU has AVX.
+        if self.scene.avx() {
+            // SAFETY: the scene found that the CPU has AVX.
             return unsafe { self.shadow_avx(p, l, dist, slot, ctx) };
         }
         self.shadow_base(p, l, dist, slot, ctx)
     }
 
+    /// # Safety
+    /// The CPU must have AVX.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx")]
-    fn shadow_avx(
+    #[inline(never)]
+    unsafe fn shadow_avx(
         &self,
         p: DVec3,
         l: DVec3,
@@ -179,7 +183,7 @@ impl<'a> Tracer<'a> {
         slot: usize,
         ctx: &mut TraceCtx<'a>,
     ) -> DVec3 {
-        // SAFETY: this copy is entered only where the CPU has AVX.
+        // SAFETY: the caller says the CPU has AVX.
         self.shadow_in(
             unsafe { crate::geom::bvh::Avx::new() },
             p,
@@ -281,14 +285,15 @@ impl<'a> Tracer<'a> {
             &r,
             dist,
             #[inline(always)]
-            |obj, sphere| {
+            |c| {
+                let obj = c.obj;
                 // The cached blocker, opaque, was just found not to block.
                 if obj.no_shadow || tried.is_some_and(|t| std::ptr::eq(t, obj)) {
                     return false;
                 }
                 if !obj.transparent {
                     // A plain sphere's `any_hit` without the call through its table.
-                    let blocks = match sphere {
+                    let blocks = match c.sphere() {
                         Some(s) => s.blocks(&ray, dist),
                         None => leaf_any_hit(obj, &ray, dist, ctx),
                     };

@@ -50,6 +50,9 @@ pub struct Scene {
     /// `first_hit`'s copy for this CPU (`query::first_hit_for_cpu`), chosen once here where
     /// every call asked the CPU (~20 instructions a ray with the frame around the choice).
     first_hit_fn: query::FirstHit,
+    /// Whether the CPU has AVX (`math::has_avx`), asked once: the renderer's shadow rays
+    /// choose their walk's copy by it (`Scene::avx`).
+    avx: bool,
     /// The objects outside the BVH.
     unbounded: Vec<query::Unbounded>,
     /// (address of a CSG member, address of its node), sorted: the way up from a leaf for
@@ -161,6 +164,7 @@ fn build_from<O: std::borrow::Borrow<ObjectDesc>>(
         objects,
         bvh,
         first_hit_fn: query::first_hit_for_cpu(),
+        avx: crate::math::has_avx(),
         unbounded,
         parents: Vec::new(),
         background: desc.background,

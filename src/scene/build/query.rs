@@ -42,6 +42,36 @@ pub(super) fn leaf_name(objects: &[Object], obj: usize) -> u32 {
     }
 }
 
+/// An object a walk offers (`Scene::for_each_candidate_recip`), and whether the BVH named it
+/// a plain sphere (`leaf_name`), whose crossings its `sphere` then asks inline.
+#[derive(Clone, Copy)]
+pub struct Candidate<'a> {
+    pub obj: &'a Object,
+    sphere: bool,
+}
+
+impl<'a> Candidate<'a> {
+    /// The object's sphere when it is a plain one. Asked where it is needed (after the cheap
+    /// tests of the object's flags), so the walk branches on the name's bit only there.
+    #[inline(always)]
+    pub fn sphere(self) -> Option<&'a Sphere> {
+        if !self.sphere {
+            return None;
+        }
+        let ObjKind::Shape(shape, _) = &self.obj.kind else {
+            // SAFETY: `leaf_name` names only shapes `SPHERE`, and objects are not replaced
+            // once the scene is built.
+            unsafe { std::hint::unreachable_unchecked() }
+        };
+        debug_assert!(shape
+            .as_sphere()
+            .is_some_and(|s| std::ptr::addr_eq(s, Arc::as_ptr(shape))));
+        // SAFETY: `leaf_name` named `SPHERE` only objects whose shape's `Arc` holds a `Sphere`
+        // at this address (`as_sphere` answered with it); an `Arc`'s value never changes.
+        Some(unsafe { &*(Arc::as_ptr(shape) as *const Sphere) })
+    }
+}
+
 /// `Scene::first_hit`'s copies, chosen once per scene.
 pub(super) type FirstHit =
     for<'a> unsafe fn(&'a Scene, &Ray, f64, &mut Scratch<'a>) -> Option<SurfaceHit<'a>>;
@@ -119,6 +149,13 @@ impl Scene {
         unsafe { (self.first_hit_fn)(self, ray, tmax, scratch) }
     }
 
+    /// Whether the CPU has AVX, as `math::has_avx` said when the scene was built: callers
+    /// with copies of their own (the shadow rays') choose by it without asking the CPU.
+    #[inline(always)]
+    pub fn avx(&self) -> bool {
+        self.avx
+    }
+
     /// `first_hit_in` in three-operand AVX encodings, no other change (no fused multiply-add:
     /// the same operations, so the same bits). The walk's node test holds six broadcast
     /// vectors, the distance limit and a zero across the loop; with SSE's two-operand forms
@@ -149,28 +186,14 @@ impl Scene {
         self.first_hit_in(Sse, ray, tmax, scratch)
     }
 
-    /// The object a BVH primitive's name (`leaf_name`) stands for, and its sphere when the
-    /// name says it is a plain one.
+    /// The object a BVH primitive's name (`leaf_name`) stands for, and whether it is a plain
+    /// sphere.
     #[inline(always)]
-    fn leaf(&self, name: usize) -> (&Object, Option<&Sphere>) {
-        let obj = &self.objects[name & !(SPHERE as usize)];
-        if name & SPHERE as usize == 0 {
-            return (obj, None);
+    fn leaf(&self, name: usize) -> Candidate<'_> {
+        Candidate {
+            obj: &self.objects[name & !(SPHERE as usize)],
+            sphere: name & SPHERE as usize != 0,
         }
-        let ObjKind::Shape(shape, _) = &obj.kind else {
-            // SAFETY: `leaf_name` gives `SPHERE` only to shapes, and objects are not
-            // replaced once the scene is built.
-            unsafe { std::hint::unreachable_unchecked() }
-        };
-        debug_assert!(shape
-            .as_sphere()
-            .is_some_and(|s| std::ptr::addr_eq(s, Arc::as_ptr(shape))));
-        // SAFETY: `leaf_name` gave `SPHERE` only where the shape's `Arc` holds a `Sphere` at
-        // this address (`as_sphere` answered with it); an `Arc`'s value never changes.
-        (
-            obj,
-            Some(unsafe { &*(Arc::as_ptr(shape) as *const Sphere) }),
-        )
     }
 
     /// `first_hit`'s work, inlined into each of its copies (`lanes`: the walk's node test).
@@ -221,15 +244,17 @@ impl Scene {
             tmax,
             #[inline(always)]
             |prim, tmax| {
-                let h = match self.leaf(prim) {
+                let c = self.leaf(prim);
+                let obj = c.obj;
+                let h = match c.sphere() {
                     // `Sphere::intersect_first`, inline.
-                    (obj, Some(s)) => s.first_t(ray, *tmax).map(|t| SurfaceHit {
+                    Some(s) => s.first_t(ray, *tmax).map(|t| SurfaceHit {
                         t,
                         obj,
                         hit: Hit::new(t),
                         flip: obj.inverse,
                     }),
-                    (obj, None) => leaf_first_hit(obj, ray, *tmax, scratch),
+                    None => leaf_first_hit(obj, ray, *tmax, scratch),
                 };
                 if let Some(h) = h {
                     *tmax = h.t;
@@ -250,14 +275,14 @@ impl Scene {
         f: impl FnMut(&'a Object) -> bool,
     ) {
         let mut f = f;
-        self.for_each_candidate_recip(Sse, ray, &Recip::of(ray), tmax, |obj, _| f(obj));
+        self.for_each_candidate_recip(Sse, ray, &Recip::of(ray), tmax, |c| f(c.obj));
     }
 
     /// `for_each_candidate` with the ray's `Recip` already worked out: a shadow ray's caller
     /// has it for its cached blocker's box. Always inlined, so that the shadow ray's AVX copy
     /// walks in AVX and its callback is not called out of line (`lanes`: see
-    /// `Bvh::traverse_recip`). `f` also gets the object's sphere when it is a plain one (an
-    /// untransformed, unclipped sphere, whose `any_hit` is `Sphere::blocks`).
+    /// `Bvh::traverse_recip`). `f` gets each object as a `Candidate`, which tells a plain
+    /// sphere (an untransformed, unclipped one, whose `any_hit` is `Sphere::blocks`).
     #[inline(always)]
     pub fn for_each_candidate_recip<'a>(
         &'a self,
@@ -265,12 +290,17 @@ impl Scene {
         ray: &Ray,
         r: &Recip,
         tmax: f64,
-        mut f: impl FnMut(&'a Object, Option<&'a Sphere>) -> bool,
+        mut f: impl FnMut(Candidate<'a>) -> bool,
     ) {
         for u in &self.unbounded {
             // An object the ray misses adds nothing, opaque or not: no crossing of it within
             // tmax to block or filter the light.
-            if !u.missed(ray, r, tmax) && f(&self.objects[u.obj], None) {
+            if !u.missed(ray, r, tmax)
+                && f(Candidate {
+                    obj: &self.objects[u.obj],
+                    sphere: false,
+                })
+            {
                 return;
             }
         }
@@ -280,10 +310,7 @@ impl Scene {
             r,
             tmax,
             #[inline(always)]
-            |prim, _| {
-                let (obj, sphere) = self.leaf(prim);
-                f(obj, sphere)
-            },
+            |prim, _| f(self.leaf(prim)),
         );
     }
 
@@ -299,7 +326,7 @@ impl Scene {
         }
         let mut found = false;
         self.bvh.visit_point(p, |k| {
-            found = test(self.leaf(k).0);
+            found = test(self.leaf(k).obj);
             found
         });
         found
@@ -314,7 +341,7 @@ impl Scene {
             }
         }
         self.bvh.visit_point(p, |k| {
-            f(self.leaf(k).0);
+            f(self.leaf(k).obj);
             false
         });
     }
