@@ -212,6 +212,20 @@ impl Bvh {
         }
     }
 
+    /// Whether the tree holds no primitive (none given, or all with empty boxes).
+    pub fn is_empty(&self) -> bool {
+        self.prims.is_empty()
+    }
+
+    /// Renames every primitive `i` to `name(i)`, which the walks and the point query then pass
+    /// to their callbacks instead of `i`: the scene names its objects by their index and what
+    /// kind of leaf they are, one lookup a leaf fewer than a table from `i` to the object.
+    pub fn rename(&mut self, name: impl Fn(u32) -> u32) {
+        for p in &mut self.prims {
+            *p = name(*p);
+        }
+    }
+
     /// Depth of the tree (1 for a single leaf); for tests and statistics.
     pub fn depth(&self) -> usize {
         fn rec(nodes: &[Node], r: Ref) -> usize {

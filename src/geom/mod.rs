@@ -93,6 +93,11 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
     fn ball(&self) -> Option<(DVec3, f64)> {
         None
     }
+    /// This shape as a `Sphere` (only `Sphere` answers): the scene's walks ask an untransformed
+    /// sphere's crossings inline (`scene::build::query`), without the call through the table.
+    fn as_sphere(&self) -> Option<&sphere::Sphere> {
+        None
+    }
     /// This shape as a box (`BoxShape`, not empty), so that a CSG node may ask its box
     /// members with the box's own code and no dispatch (`scene::csg_boxes`).
     fn solid_box(&self) -> Option<boxes::BoxShape> {

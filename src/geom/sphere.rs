@@ -68,6 +68,42 @@ impl Sphere {
         let c = oc.length_squared() - self.radius2;
         Some(Quadratic { a, b, c, disc })
     }
+
+    /// `intersect_first`'s crossing: the nearest in (EPSILON, tmax). Public and inlined so
+    /// that the scene's walk, which knows a leaf is an untransformed sphere, asks it without
+    /// the call through the shape's table (the same code, so the same bits).
+    #[inline(always)]
+    pub fn first_t(&self, ray: &Ray, tmax: f64) -> Option<f64> {
+        if self.behind(ray) {
+            return None;
+        }
+        self.quadratic(ray)?.first(tmax)
+    }
+
+    /// `any_hit`'s answer (`first_t(..).is_some()`), inlined into the shadow walk as
+    /// `first_t` is into the nearest-hit walk.
+    ///
+    /// Shadow rays inside a sky sphere (advanced/quilt1: every area-light sample) skip the
+    /// roots: a segment whose two ends lie well inside crosses nothing, and the margin (the
+    /// ends at most 0.9995 r from the centre, so each root at least 0.0005 r / |dir| beyond
+    /// them) is some 1e11 times the roots' rounding error, so `intersect_first` would find
+    /// no crossing either: the same answer, not an approximation.
+    #[inline(always)]
+    pub fn blocks(&self, ray: &Ray, tmax: f64) -> bool {
+        let inner = self.radius2 * 0.999;
+        let oc = ray.origin - self.center;
+        if oc.length_squared() < inner && (oc + ray.dir * tmax).length_squared() < inner {
+            return false;
+        }
+        if self.behind(ray) {
+            return false;
+        }
+        // `intersect_first(..).is_some()`, from one working of the equation.
+        let Some(q) = self.quadratic(ray) else {
+            return false;
+        };
+        q.surely_crossed(tmax) || q.first(tmax).is_some()
+    }
 }
 
 /// `a t² + 2 b t + c = 0` of a line and a sphere, and its discriminant `b² - a c` (worked out
@@ -149,31 +185,12 @@ impl Shape for Sphere {
     }
 
     fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
-        if self.behind(ray) {
-            return None;
-        }
-        self.quadratic(ray)?.first(tmax).map(Hit::new)
+        self.first_t(ray, tmax).map(Hit::new)
     }
 
-    /// Shadow rays inside a sky sphere (advanced/quilt1: every area-light sample) skip the
-    /// roots: a segment whose two ends lie well inside crosses nothing, and the margin (the
-    /// ends at most 0.9995 r from the centre, so each root at least 0.0005 r / |dir| beyond
-    /// them) is some 1e11 times the roots' rounding error, so `intersect_first` would find
-    /// no crossing either: the same answer, not an approximation.
+    /// `blocks`.
     fn any_hit(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> bool {
-        let inner = self.radius2 * 0.999;
-        let oc = ray.origin - self.center;
-        if oc.length_squared() < inner && (oc + ray.dir * tmax).length_squared() < inner {
-            return false;
-        }
-        if self.behind(ray) {
-            return false;
-        }
-        // `intersect_first(..).is_some()`, from one working of the equation.
-        let Some(q) = self.quadratic(ray) else {
-            return false;
-        };
-        q.surely_crossed(tmax) || q.first(tmax).is_some()
+        self.blocks(ray, tmax)
     }
 
     fn inside(&self, p: DVec3) -> bool {
@@ -182,6 +199,10 @@ impl Shape for Sphere {
 
     fn ball(&self) -> Option<(DVec3, f64)> {
         Some((self.center, self.radius))
+    }
+
+    fn as_sphere(&self) -> Option<&Sphere> {
+        Some(self)
     }
 
     fn normal(&self, p: DVec3, _hit: &Hit) -> DVec3 {

@@ -150,9 +150,10 @@ impl<'a> Tracer<'a> {
     /// object, filtered by each crossing of a transparent one. `slot` is the light's number,
     /// for the cache of the last blocker. The copy compiled with AVX where the CPU has it, as
     /// `Scene::first_hit` (the walk's node test and the set-up around it in three-operand
-    /// forms; the same operations, so the same bits). Not inlined, as before there were
-    /// copies: inlined, the choice grew `light_seen`'s frame.
-    #[inline(never)]
+    /// forms; the same operations, so the same bits). The choice is a flag the scene read
+    /// once (`Scene::avx`), here inlined: a function asking the CPU at every shadow ray, with
+    /// a frame for the call that asks it the first time, cost ~20 instructions a ray.
+    #[inline(always)]
     pub(super) fn shadow(
         &self,
         p: DVec3,
@@ -162,16 +163,17 @@ impl<'a> Tracer<'a> {
         ctx: &mut TraceCtx<'a>,
     ) -> DVec3 {
         #[cfg(target_arch = "x86_64")]
-        if crate::math::has_avx() {
-            // SAFETY: the CPU has AVX.
+        if self.scene.avx() {
+            // SAFETY: the scene found that the CPU has AVX.
             return unsafe { self.shadow_avx(p, l, dist, slot, ctx) };
         }
         self.shadow_base(p, l, dist, slot, ctx)
     }
 
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx")]
-    fn shadow_avx(
+    /// `shadow` out of line, for the area lights' walk: inlined there, its two calls grew
+    /// `AreaWalk::quad` (lights/soft +4.4 M instructions, more than the choice's call saves).
+    #[inline(never)]
+    fn shadow_apart(
         &self,
         p: DVec3,
         l: DVec3,
@@ -179,7 +181,23 @@ impl<'a> Tracer<'a> {
         slot: usize,
         ctx: &mut TraceCtx<'a>,
     ) -> DVec3 {
-        // SAFETY: this copy is entered only where the CPU has AVX.
+        self.shadow(p, l, dist, slot, ctx)
+    }
+
+    /// # Safety
+    /// The CPU must have AVX.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    #[inline(never)]
+    unsafe fn shadow_avx(
+        &self,
+        p: DVec3,
+        l: DVec3,
+        dist: f64,
+        slot: usize,
+        ctx: &mut TraceCtx<'a>,
+    ) -> DVec3 {
+        // SAFETY: the caller says the CPU has AVX.
         self.shadow_in(
             unsafe { crate::geom::bvh::Avx::new() },
             p,
@@ -281,13 +299,19 @@ impl<'a> Tracer<'a> {
             &r,
             dist,
             #[inline(always)]
-            |obj| {
+            |c| {
+                let obj = c.obj;
                 // The cached blocker, opaque, was just found not to block.
                 if obj.no_shadow || tried.is_some_and(|t| std::ptr::eq(t, obj)) {
                     return false;
                 }
                 if !obj.transparent {
-                    if leaf_any_hit(obj, &ray, dist, ctx) {
+                    // A plain sphere's `any_hit` without the call through its table.
+                    let blocks = match c.sphere() {
+                        Some(s) => s.blocks(&ray, dist),
+                        None => leaf_any_hit(obj, &ray, dist, ctx),
+                    };
+                    if blocks {
                         att = DVec3::ZERO;
                         blocker = Some(obj);
                         return true;
@@ -555,7 +579,7 @@ impl<'a> AreaWalk<'_, 'a> {
                     let v = if d <= 0.0 {
                         DVec3::ONE
                     } else {
-                        self.tracer.shadow(self.p, dir, d, self.slot, ctx)
+                        self.tracer.shadow_apart(self.p, dir, d, self.slot, ctx)
                     };
                     self.cache[at] = Some(v);
                     v

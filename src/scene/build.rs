@@ -44,9 +44,15 @@ pub struct Scene {
     /// no `light_group`.
     pub light_sets: Vec<LightSet>,
     pub objects: Vec<Object>,
+    /// Over the bounded objects; its primitives are named by `query::leaf_name` (the object's
+    /// index, and whether it is a plain sphere).
     bvh: Bvh,
-    /// BVH primitive index → object index.
-    bounded: Vec<usize>,
+    /// `first_hit`'s copy for this CPU (`query::first_hit_for_cpu`), chosen once here where
+    /// every call asked the CPU (~20 instructions a ray with the frame around the choice).
+    first_hit_fn: query::FirstHit,
+    /// Whether the CPU has AVX (`math::has_avx`), asked once: the renderer's shadow rays
+    /// choose their walk's copy by it (`Scene::avx`).
+    avx: bool,
     /// The objects outside the BVH.
     unbounded: Vec<query::Unbounded>,
     /// (address of a CSG member, address of its node), sorted: the way up from a leaf for
@@ -140,7 +146,9 @@ fn build_from<O: std::borrow::Borrow<ObjectDesc>>(
         .into_iter()
         .map(|i| query::Unbounded::of(&objects, i))
         .collect();
-    let bvh = Bvh::build(&boxes);
+    let mut bvh = Bvh::build(&boxes);
+    bvh.rename(|k| query::leaf_name(&objects, bounded[k as usize]));
+    drop(bounded);
     let mut sky = desc.sky_sphere.clone().unwrap_or_default();
     for p in &mut sky {
         ctx.pigment(p);
@@ -155,7 +163,8 @@ fn build_from<O: std::borrow::Borrow<ObjectDesc>>(
         light_sets: ctx.light_sets,
         objects,
         bvh,
-        bounded,
+        first_hit_fn: query::first_hit_for_cpu(),
+        avx: crate::math::has_avx(),
         unbounded,
         parents: Vec::new(),
         background: desc.background,

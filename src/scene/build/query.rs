@@ -2,13 +2,88 @@
 //! (for shadow rays), and which solids hold a point. The walks over the BVH and the
 //! unbounded objects live here; building the scene is in the parent module.
 
+use std::sync::Arc;
+
 use crate::geom::bvh::{Avx, Lanes, Recip, Sse};
 use crate::geom::plane::Plane;
+use crate::geom::sphere::Sphere;
 use crate::geom::Hit;
 use crate::math::{Aabb, DVec3, Ray};
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
 
 use super::Scene;
+
+/// A BVH primitive's name (`Bvh::rename`) has this bit set when its object is an
+/// untransformed, unclipped sphere, whose crossings the walks then ask inline; the other bits
+/// are the object's index in `Scene::objects`.
+const SPHERE: u32 = 1 << 31;
+
+/// The name of `objects[obj]` as a BVH primitive: its index, with `SPHERE` for a plain sphere
+/// (a shape that is one, `Shape::as_sphere`, whose `Arc` holds that very sphere).
+pub(super) fn leaf_name(objects: &[Object], obj: usize) -> u32 {
+    let name = u32::try_from(obj)
+        .ok()
+        .filter(|&n| n < SPHERE)
+        .expect("fewer than 2^31 objects");
+    let sphere = match (
+        &objects[obj].kind,
+        objects[obj].clip.is_empty(),
+        &objects[obj].transform,
+    ) {
+        (ObjKind::Shape(shape, _), true, None) => shape
+            .as_sphere()
+            .is_some_and(|s| std::ptr::addr_eq(s, Arc::as_ptr(shape))),
+        _ => false,
+    };
+    if sphere {
+        name | SPHERE
+    } else {
+        name
+    }
+}
+
+/// An object a walk offers (`Scene::for_each_candidate_recip`), and whether the BVH named it
+/// a plain sphere (`leaf_name`), whose crossings its `sphere` then asks inline.
+#[derive(Clone, Copy)]
+pub struct Candidate<'a> {
+    pub obj: &'a Object,
+    sphere: bool,
+}
+
+impl<'a> Candidate<'a> {
+    /// The object's sphere when it is a plain one. Asked where it is needed (after the cheap
+    /// tests of the object's flags), so the walk branches on the name's bit only there.
+    #[inline(always)]
+    pub fn sphere(self) -> Option<&'a Sphere> {
+        if !self.sphere {
+            return None;
+        }
+        let ObjKind::Shape(shape, _) = &self.obj.kind else {
+            // SAFETY: `leaf_name` names only shapes `SPHERE`, and objects are not replaced
+            // once the scene is built.
+            unsafe { std::hint::unreachable_unchecked() }
+        };
+        debug_assert!(shape
+            .as_sphere()
+            .is_some_and(|s| std::ptr::addr_eq(s, Arc::as_ptr(shape))));
+        // SAFETY: `leaf_name` named `SPHERE` only objects whose shape's `Arc` holds a `Sphere`
+        // at this address (`as_sphere` answered with it); an `Arc`'s value never changes.
+        Some(unsafe { &*(Arc::as_ptr(shape) as *const Sphere) })
+    }
+}
+
+/// `Scene::first_hit`'s copies, chosen once per scene.
+pub(super) type FirstHit =
+    for<'a> unsafe fn(&'a Scene, &Ray, f64, &mut Scratch<'a>) -> Option<SurfaceHit<'a>>;
+
+/// The copy of `first_hit` for this CPU: with AVX where it has it.
+pub(super) fn first_hit_for_cpu() -> FirstHit {
+    #[cfg(target_arch = "x86_64")]
+    if crate::math::has_avx() {
+        return Scene::first_hit_avx;
+    }
+    Scene::first_hit_base
+}
 
 /// An object outside the BVH (unbounded: planes, quadrics, their CSG), tested by every ray
 /// before the walk.
@@ -58,22 +133,27 @@ impl Unbounded {
 
 impl Scene {
     /// Nearest crossing along the ray closer than `tmax`: the copy compiled with AVX where the
-    /// CPU has it (`first_hit_avx`), else the build's own (x86-64-v2). Not inlined: a call
-    /// and a jump to the copy, where inlined into `Tracer::first_visible` it pushed that out of
-    /// `trace_seen` (a frame and two copies of the 56-byte answer, ~50 instructions a ray).
-    #[inline(never)]
+    /// CPU has it (`first_hit_avx`), else the build's own (x86-64-v2), as chosen when the
+    /// scene was built. Inlined: a call through the pointer, where a function asking the CPU
+    /// and calling the copy cost ~20 instructions a ray (its frame and the 56-byte answer
+    /// passed through).
+    #[inline(always)]
     pub fn first_hit<'a>(
         &'a self,
         ray: &Ray,
         tmax: f64,
         scratch: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
-        #[cfg(target_arch = "x86_64")]
-        if crate::math::has_avx() {
-            // SAFETY: the CPU has AVX.
-            return unsafe { self.first_hit_avx(ray, tmax, scratch) };
-        }
-        self.first_hit_base(ray, tmax, scratch)
+        // SAFETY: `first_hit_fn` is `first_hit_for_cpu`'s choice: the AVX copy only where the
+        // CPU has AVX.
+        unsafe { (self.first_hit_fn)(self, ray, tmax, scratch) }
+    }
+
+    /// Whether the CPU has AVX, as `math::has_avx` said when the scene was built: callers
+    /// with copies of their own (the shadow rays') choose by it without asking the CPU.
+    #[inline(always)]
+    pub fn avx(&self) -> bool {
+        self.avx
     }
 
     /// `first_hit_in` in three-operand AVX encodings, no other change (no fused multiply-add:
@@ -81,27 +161,39 @@ impl Scene {
     /// vectors, the distance limit and a zero across the loop; with SSE's two-operand forms
     /// some were spilled and reloaded every node, and each minimum and maximum needed a copy
     /// (`Plain2` also reads each face straight into the subtraction).
+    ///
+    /// # Safety
+    /// The CPU must have AVX.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx")]
-    fn first_hit_avx<'a>(
+    unsafe fn first_hit_avx<'a>(
         &'a self,
         ray: &Ray,
         tmax: f64,
         scratch: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
-        // SAFETY: this copy is entered only where the CPU has AVX.
+        // SAFETY: the caller says the CPU has AVX.
         self.first_hit_in(unsafe { Avx::new() }, ray, tmax, scratch)
     }
 
-    /// `first_hit_in` for CPUs without AVX.
-    #[inline(never)]
-    fn first_hit_base<'a>(
+    /// `first_hit_in` for CPUs without AVX (unsafe only to share `FirstHit`'s type).
+    unsafe fn first_hit_base<'a>(
         &'a self,
         ray: &Ray,
         tmax: f64,
         scratch: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
         self.first_hit_in(Sse, ray, tmax, scratch)
+    }
+
+    /// The object a BVH primitive's name (`leaf_name`) stands for, and whether it is a plain
+    /// sphere.
+    #[inline(always)]
+    fn leaf(&self, name: usize) -> Candidate<'_> {
+        Candidate {
+            obj: &self.objects[name & !(SPHERE as usize)],
+            sphere: name & SPHERE as usize != 0,
+        }
     }
 
     /// `first_hit`'s work, inlined into each of its copies (`lanes`: the walk's node test).
@@ -115,7 +207,7 @@ impl Scene {
     ) -> Option<SurfaceHit<'a>> {
         // Nothing to hit (a scene of sky, background or fog only): no reciprocal of the
         // direction, whose three divisions were a tenth of such a scene's time.
-        if self.unbounded.is_empty() && self.bounded.is_empty() {
+        if self.unbounded.is_empty() && self.bvh.is_empty() {
             return None;
         }
         let mut best: Option<SurfaceHit<'a>> = None;
@@ -129,18 +221,26 @@ impl Scene {
             }
             let obj = &self.objects[u.obj];
             // A plane's `leaf_first_hit` (its `intersect_first`), inline.
-            let h = match &u.plane {
-                Some(p) => p.hit_t(ray).filter(|&t| t < tmax).map(|t| SurfaceHit {
-                    t,
-                    obj,
-                    hit: Hit::new(t),
-                    flip: obj.inverse,
-                }),
-                None => leaf_first_hit(obj, ray, tmax, scratch),
-            };
-            if let Some(h) = h {
-                tmax = h.t;
-                best = Some(h);
+            // Each kind's answer is written into `best` where it is made: through one
+            // `Option` for both, it was built and then copied (~20 instructions a crossing).
+            match &u.plane {
+                Some(p) => {
+                    if let Some(t) = p.hit_t(ray).filter(|&t| t < tmax) {
+                        tmax = t;
+                        best = Some(SurfaceHit {
+                            t,
+                            obj,
+                            hit: Hit::new(t),
+                            flip: obj.inverse,
+                        });
+                    }
+                }
+                None => {
+                    if let Some(h) = leaf_first_hit(obj, ray, tmax, scratch) {
+                        tmax = h.t;
+                        best = Some(h);
+                    }
+                }
             }
         }
         // Inlined into the walk, which LLVM stopped doing once the walk had two copies (one
@@ -152,11 +252,27 @@ impl Scene {
             tmax,
             #[inline(always)]
             |prim, tmax| {
-                if let Some(h) =
-                    leaf_first_hit(&self.objects[self.bounded[prim]], ray, *tmax, scratch)
-                {
-                    *tmax = h.t;
-                    best = Some(h);
+                let c = self.leaf(prim);
+                let obj = c.obj;
+                match c.sphere() {
+                    // `Sphere::intersect_first`, inline.
+                    Some(s) => {
+                        if let Some(t) = s.first_t(ray, *tmax) {
+                            *tmax = t;
+                            best = Some(SurfaceHit {
+                                t,
+                                obj,
+                                hit: Hit::new(t),
+                                flip: obj.inverse,
+                            });
+                        }
+                    }
+                    None => {
+                        if let Some(h) = leaf_first_hit(obj, ray, *tmax, scratch) {
+                            *tmax = h.t;
+                            best = Some(h);
+                        }
+                    }
                 }
                 false
             },
@@ -172,13 +288,15 @@ impl Scene {
         tmax: f64,
         f: impl FnMut(&'a Object) -> bool,
     ) {
-        self.for_each_candidate_recip(Sse, ray, &Recip::of(ray), tmax, f);
+        let mut f = f;
+        self.for_each_candidate_recip(Sse, ray, &Recip::of(ray), tmax, |c| f(c.obj));
     }
 
     /// `for_each_candidate` with the ray's `Recip` already worked out: a shadow ray's caller
     /// has it for its cached blocker's box. Always inlined, so that the shadow ray's AVX copy
     /// walks in AVX and its callback is not called out of line (`lanes`: see
-    /// `Bvh::traverse_recip`).
+    /// `Bvh::traverse_recip`). `f` gets each object as a `Candidate`, which tells a plain
+    /// sphere (an untransformed, unclipped one, whose `any_hit` is `Sphere::blocks`).
     #[inline(always)]
     pub fn for_each_candidate_recip<'a>(
         &'a self,
@@ -186,12 +304,17 @@ impl Scene {
         ray: &Ray,
         r: &Recip,
         tmax: f64,
-        mut f: impl FnMut(&'a Object) -> bool,
+        mut f: impl FnMut(Candidate<'a>) -> bool,
     ) {
         for u in &self.unbounded {
             // An object the ray misses adds nothing, opaque or not: no crossing of it within
             // tmax to block or filter the light.
-            if !u.missed(ray, r, tmax) && f(&self.objects[u.obj]) {
+            if !u.missed(ray, r, tmax)
+                && f(Candidate {
+                    obj: &self.objects[u.obj],
+                    sphere: false,
+                })
+            {
                 return;
             }
         }
@@ -201,7 +324,7 @@ impl Scene {
             r,
             tmax,
             #[inline(always)]
-            |prim, _| f(&self.objects[self.bounded[prim]]),
+            |prim, _| f(self.leaf(prim)),
         );
     }
 
@@ -217,7 +340,7 @@ impl Scene {
         }
         let mut found = false;
         self.bvh.visit_point(p, |k| {
-            found = test(&self.objects[self.bounded[k]]);
+            found = test(self.leaf(k).obj);
             found
         });
         found
@@ -232,7 +355,7 @@ impl Scene {
             }
         }
         self.bvh.visit_point(p, |k| {
-            f(&self.objects[self.bounded[k]]);
+            f(self.leaf(k).obj);
             false
         });
     }
@@ -404,5 +527,78 @@ mod tests {
             );
         }
         assert!(crossed > 10_000 && missed > 10_000, "{crossed} {missed}");
+    }
+
+    /// Only untransformed, unclipped spheres are named `SPHERE`; the walks' inline sphere
+    /// tests answer as the objects do: the scene's `first_hit` is the nearest of every
+    /// object's (bit for bit), and each candidate's `sphere().blocks` is its `any_hit`.
+    #[test]
+    fn plain_spheres_answer_as_their_objects() {
+        let mut p = Parser::new(ParseOptions::default());
+        p.parse_str(
+            "t.pov",
+            r#"
+            sphere { <0, 1, 2>, 1 pigment { rgb 1 } }
+            sphere { <2, 0, 1>, 0.5 inverse pigment { rgb 1 } }
+            sphere { 0, 1 scale <1, 2, 1> translate <-2, 0, 0> pigment { rgb 1 } }
+            sphere { 0, 1 translate <0, -2, 0> pigment { rgb 1 } }
+            sphere { <1, 1, -2>, 1 clipped_by { plane { y, 1 } } pigment { rgb 1 } }
+            union { sphere { <3, 3, 3>, 1 } box { 2, 4 } pigment { rgb 1 } }
+            box { -1, 1 translate <-3, 2, 4> pigment { rgb 1 } }
+            sphere { <-1, -1, -1>, 0.7 pigment { rgbf <1, 1, 1, 0.5> } }
+        "#,
+        )
+        .map_err(|e| e.message.clone())
+        .unwrap();
+        let scene = crate::scene::build::build(&p.scene, 64, 48).scene;
+        let named: Vec<bool> = (0..scene.objects.len())
+            .map(|i| leaf_name(&scene.objects, i) & SPHERE != 0)
+            .collect();
+        // A transformed sphere (moved or stretched) keeps its transform: asked through its
+        // object, as are clipped ones and CSG members.
+        assert_eq!(
+            named,
+            [true, true, false, false, false, false, false, true],
+            "{named:?}"
+        );
+        let mut rng = Lcg(29);
+        let mut s = Scratch::default();
+        let (mut hits, mut blocked) = (0, 0);
+        for k in 0..20_000usize {
+            let origin = rng.vec(6.0);
+            let mut dir = rng.vec(2.0);
+            if k % 9 == 0 {
+                dir.y = 0.0;
+            }
+            let ray = Ray::new(origin, dir);
+            let tmax = if k % 3 == 0 {
+                f64::INFINITY
+            } else {
+                rng.next() * 8.0
+            };
+            let mut want: Option<(f64, *const Object, bool)> = None;
+            for o in &scene.objects {
+                if let Some(h) = o.first_hit(&ray, tmax, &mut s) {
+                    if want.is_none_or(|w| h.t < w.0) {
+                        want = Some((h.t, h.obj, h.flip));
+                    }
+                }
+            }
+            let got = scene
+                .first_hit(&ray, tmax, &mut s)
+                .map(|h| (h.t.to_bits(), h.obj as *const Object, h.flip));
+            assert_eq!(want.map(|w| (w.0.to_bits(), w.1, w.2)), got, "k={k}");
+            hits += usize::from(got.is_some());
+            let r = Recip::of(&ray);
+            scene.for_each_candidate_recip(Sse, &ray, &r, tmax, |c| {
+                if let Some(sp) = c.sphere() {
+                    let any = c.obj.any_hit(&ray, tmax, &mut s);
+                    assert_eq!(sp.blocks(&ray, tmax), any, "k={k}");
+                    blocked += usize::from(any);
+                }
+                false
+            });
+        }
+        assert!(hits > 2_000 && blocked > 1_000, "{hits} {blocked}");
     }
 }
