@@ -10,6 +10,7 @@ use crate::math::DVec3;
 
 use super::cells_data::{CELL_HASH_OFFSET, CELL_HASH_X, CELL_HASH_Y, CELL_HASH_Z, CELL_POINT};
 use super::noise;
+use super::noise_lattice::all_below_4096;
 
 /// Crackle: `form` weighs the distances to the nearest three points, the result clipped to
 /// [0, 1]; `offset` enters each distance as (Σ|d|^metric + offset^metric)^(1/metric). `solid`
@@ -141,19 +142,6 @@ fn walk_shared(q: DVec3, metric: f64) -> ([f64; 3], DVec3) {
         }
     }
     (d, nearest)
-}
-
-/// Whether every value of a cells hash stage indexes 4096 entries (the next stage's, or
-/// CELL_POINT's).
-const fn all_below_4096(t: &[u16; 4096]) -> bool {
-    let mut i = 0;
-    while i < 4096 {
-        if t[i] >= 4096 {
-            return false;
-        }
-        i += 1;
-    }
-    true
 }
 
 // `walk_shared`'s unchecked reads rely on this (an unnamed constant is always evaluated).

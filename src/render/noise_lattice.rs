@@ -385,8 +385,9 @@ unsafe fn entries_gather(
     }
 }
 
-/// Whether every value of a hash stage indexes the next stage's 4096 entries.
-const fn all_below_4096(t: &[u16; 4096]) -> bool {
+/// Whether every value of a hash stage indexes the next stage's 4096 entries (noise's
+/// stages here, and crackle's cells stages, whose unchecked reads rely on it too).
+pub(super) const fn all_below_4096(t: &[u16; 4096]) -> bool {
     let mut i = 0;
     while i < 4096 {
         if t[i] >= 4096 {
