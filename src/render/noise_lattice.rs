@@ -72,7 +72,7 @@ static ROWS: [Row; 256] = rows();
 /// of it in `PACKED`, whose rows are 128 bytes: an address's scale of 4). The lanes' cells
 /// keep these, so reading a row adds the offset to the table's address, where an index
 /// took a shift first (one instruction per corner and point).
-static HASH_Z32: Gather16 = padded(&hash_z32());
+static HASH_Z32: [u16; 4096] = hash_z32();
 
 const fn hash_z32() -> [u16; 4096] {
     let mut t = [0u16; 4096];
@@ -82,49 +82,6 @@ const fn hash_z32() -> [u16; 4096] {
         i += 1;
     }
     t
-}
-
-/// A hash stage for the AVX2 gathers (`entries_gather`), which read 32 bits at twice the
-/// index and keep the low 16: the two bytes after the last entry are there to be read.
-#[repr(C, align(64))]
-pub(super) struct Gather16 {
-    pub t: [u16; 4096],
-    pad: [u16; 2],
-}
-
-const fn padded(t: &[u16; 4096]) -> Gather16 {
-    Gather16 { t: *t, pad: [0; 2] }
-}
-
-/// HASH_X and HASH_Y for the gathers (their values, with the padding).
-static HASH_X16: Gather16 = padded(&HASH_X);
-static HASH_Y16: Gather16 = padded(&HASH_Y);
-
-/// HASH_Z widened to 16 bits for the gathers of `Cell`'s entries (`cell_avx`).
-static HASH_Z16: Gather16 = padded(&hash_z16());
-
-const fn hash_z16() -> [u16; 4096] {
-    let mut t = [0u16; 4096];
-    let mut i = 0;
-    while i < 4096 {
-        t[i] = HASH_Z[i] as u16;
-        i += 1;
-    }
-    t
-}
-
-/// Whether the CPU has AVX2 (and so AVX), for the walks whose hash stages are gathers. std
-/// caches the CPU query.
-#[inline(always)]
-fn has_avx2() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    {
-        std::arch::is_x86_feature_detected!("avx2")
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        false
-    }
 }
 
 /// What the eight corners share: the fractional position, the x·y weights of the four
@@ -251,13 +208,13 @@ pub(super) unsafe fn cell_lanes(p: DVec3) -> Option<CellLanes> {
 /// conversion and one s-curve for the three axes instead of three scalar ones (each scalar
 /// `as i64` is a conversion plus its saturation and NaN checks). The same operations per
 /// lane, so the same bits; coordinates whose floor is outside the i32 range (and NaN) take
-/// `cell`, whose saturating conversion they need. `G`: the hash walk by AVX2 gathers.
+/// `cell`, whose saturating conversion they need.
 ///
 /// # Safety
-/// The CPU must have AVX, and AVX2 if `G`.
+/// The CPU must have AVX.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn cell_avx<const G: bool>(p: DVec3) -> Cell {
+unsafe fn cell_avx(p: DVec3) -> Cell {
     use std::arch::x86_64::*;
     // SAFETY: the caller guarantees AVX.
     unsafe {
@@ -277,13 +234,7 @@ unsafe fn cell_avx<const G: bool>(p: DVec3) -> Cell {
         _mm256_storeu_pd(ta.as_mut_ptr(), t);
         _mm256_storeu_pd(sa.as_mut_ptr(), s);
         _mm256_storeu_pd(oa.as_mut_ptr(), o);
-        let entry = if G {
-            let mut e = [0u32; 8];
-            _mm256_storeu_si256(e.as_mut_ptr().cast(), entries_gather(f, &HASH_Z16));
-            e
-        } else {
-            entries_avx(f, &HASH_Z)
-        };
+        let entry = entries_avx(f, &HASH_Z);
         Cell {
             t: [ta[0], ta[1], ta[2]],
             wxy,
@@ -341,50 +292,6 @@ unsafe fn entries_avx<T: Copy + Into<u32>>(
     }
 }
 
-/// `entries_avx` with each hash stage one AVX2 gather (x and x + 1, the four (x, y), the
-/// eight corners), the indices combined in lanes: the same stages read at the same indices,
-/// so the same entries, from the tables' padded copies (`Gather16`; `last` is HASH_Z32 or
-/// HASH_Z16), in corner order. The walk was ~50 scalar instructions an octave or point: six
-/// extractions, fourteen loads and the xors between them.
-///
-/// # Safety
-/// The CPU must have AVX2.
-#[cfg(target_arch = "x86_64")]
-#[inline(always)]
-unsafe fn entries_gather(
-    f: std::arch::x86_64::__m256d,
-    last: &Gather16,
-) -> std::arch::x86_64::__m256i {
-    use std::arch::x86_64::*;
-    // SAFETY: the caller guarantees AVX2. Every index is masked to 12 bits (the first
-    // stage's) or is a xor of values below 4096 (asserted below for HASH_X and HASH_Y), so
-    // each 32-bit read at twice it lies inside its `Gather16`, padding included.
-    unsafe {
-        let m0 = _mm_add_epi32(_mm256_cvttpd_epi32(f), _mm_set1_epi32(HASH_OFFSET as i32));
-        let m1 = _mm_add_epi32(m0, _mm_set1_epi32(1));
-        let mask = _mm_set1_epi32(4095);
-        let (a0, a1) = (_mm_and_si128(m0, mask), _mm_and_si128(m1, mask));
-        let low = _mm_set1_epi32(0xffff);
-        // (mx0, mx1, my0, my1); the stage reads HASH_X at all four, using the first two.
-        let xy = _mm_unpacklo_epi32(a0, a1);
-        let hx = _mm_i32gather_epi32::<2>(HASH_X16.t.as_ptr().cast(), xy);
-        // hxy[k] = HASH_Y[hx[k & 1] ^ my[k >> 1]]
-        let iy = _mm_xor_si128(
-            _mm_shuffle_epi32::<0b01_00_01_00>(_mm_and_si128(hx, low)),
-            _mm_shuffle_epi32::<0b11_11_10_10>(xy),
-        );
-        let hxy = _mm_and_si128(
-            _mm_i32gather_epi32::<2>(HASH_Y16.t.as_ptr().cast(), iy),
-            low,
-        );
-        // entry[c] = last[hxy[c & 3] ^ mz[c >> 2]]
-        let z0 = _mm_xor_si128(hxy, _mm_shuffle_epi32::<0b10_10_10_10>(a0));
-        let z1 = _mm_xor_si128(hxy, _mm_shuffle_epi32::<0b10_10_10_10>(a1));
-        let e = _mm256_i32gather_epi32::<2>(last.t.as_ptr().cast(), _mm256_set_m128i(z1, z0));
-        _mm256_and_si256(e, _mm256_set1_epi32(0xffff))
-    }
-}
-
 /// Whether every value of a hash stage indexes the next stage's 4096 entries (noise's
 /// stages here, and crackle's cells stages, whose unchecked reads rely on it too).
 pub(super) const fn all_below_4096(t: &[u16; 4096]) -> bool {
@@ -439,24 +346,10 @@ pub const MAX_POINTS: usize = 40;
 #[inline]
 pub fn scalar_into(ps: &[DVec3], out: &mut [f64]) {
     #[cfg(target_arch = "x86_64")]
-    {
-        if has_avx2() {
-            // SAFETY: AVX2 (and so AVX) was detected.
-            return unsafe { scalar_into_gather(ps, out) };
-        }
-        if has_avx() {
-            // SAFETY: AVX was detected.
-            return unsafe { scalar_into_avx(ps, out) };
-        }
+    if has_avx() {
+        // SAFETY: AVX was detected.
+        return unsafe { scalar_into_avx(ps, out) };
     }
-    scalar_into_plain(ps, out)
-}
-
-/// `scalar_into` without AVX, out of line: inlined, its forty cells made the callers'
-/// stack frames 4 KB (a stack probe on every call).
-#[cold]
-#[inline(never)]
-fn scalar_into_plain(ps: &[DVec3], out: &mut [f64]) {
     scalar_into_with(ps, out, scalar_lanes)
 }
 
@@ -516,7 +409,7 @@ fn scalar_lanes(c: &Cell) -> f64 {
 #[path = "noise_scalar.rs"]
 mod scalar_lanes;
 #[cfg(target_arch = "x86_64")]
-use scalar_lanes::{scalar_into_avx, scalar_into_gather};
+use scalar_lanes::scalar_into_avx;
 
 /// `scalar`'s arithmetic with the four corners of each z layer as the lanes of one AVX
 /// register: their rows are transposed so that lane k holds corner k's numbers, each lane
@@ -574,15 +467,9 @@ fn vector_lanes(c: &Cell) -> [f64; 3] {
 #[inline]
 pub fn vector(p: DVec3) -> DVec3 {
     #[cfg(target_arch = "x86_64")]
-    {
-        if has_avx2() {
-            // SAFETY: AVX2 (and so AVX) was detected.
-            return unsafe { octaves_lanes::vector_gather(p) };
-        }
-        if has_avx() {
-            // SAFETY: AVX was detected.
-            return unsafe { octaves_lanes::vector(p) };
-        }
+    if has_avx() {
+        // SAFETY: AVX was detected.
+        return unsafe { octaves_lanes::vector(p) };
     }
     DVec3::from_array(vector_lanes(&cell(p)))
 }
@@ -593,15 +480,9 @@ pub fn vector(p: DVec3) -> DVec3 {
 #[inline]
 pub fn vector_many<const N: usize>(ps: &[DVec3; N], out: &mut [DVec3; N]) {
     #[cfg(target_arch = "x86_64")]
-    {
-        if has_avx2() {
-            // SAFETY: AVX2 (and so AVX) was detected.
-            return unsafe { octaves_lanes::vector_many_gather(ps, out) };
-        }
-        if has_avx() {
-            // SAFETY: AVX was detected.
-            return unsafe { octaves_lanes::vector_many(ps, out) };
-        }
+    if has_avx() {
+        // SAFETY: AVX was detected.
+        return unsafe { octaves_lanes::vector_many(ps, out) };
     }
     vector_many_with(ps, out, cell, vector_lanes)
 }
@@ -627,15 +508,9 @@ fn vector_many_with<const N: usize>(
 #[inline]
 pub fn abs_octaves(p: DVec3) -> DVec3 {
     #[cfg(target_arch = "x86_64")]
-    {
-        if has_avx2() {
-            // SAFETY: AVX2 (and so AVX) was detected.
-            return unsafe { octaves_lanes::abs_octaves_gather(p) };
-        }
-        if has_avx() {
-            // SAFETY: AVX was detected.
-            return unsafe { octaves_lanes::abs_octaves(p) };
-        }
+    if has_avx() {
+        // SAFETY: AVX was detected.
+        return unsafe { octaves_lanes::abs_octaves(p) };
     }
     abs_octaves_plain(p)
 }
@@ -717,15 +592,9 @@ fn octaves4_with(
 /// `vector_octaves` at four points (1 to 10 octaves).
 pub fn vector_octaves4(ps: [DVec3; 4], octaves: u32, omega: f64, lambda: f64) -> [DVec3; 4] {
     #[cfg(target_arch = "x86_64")]
-    {
-        if has_avx2() {
-            // SAFETY: AVX2 (and so AVX) was detected.
-            return unsafe { octaves_lanes::octaves4_gather(ps, octaves, omega, lambda) };
-        }
-        if has_avx() {
-            // SAFETY: AVX was detected.
-            return unsafe { octaves_lanes::octaves4(ps, octaves, omega, lambda) };
-        }
+    if has_avx() {
+        // SAFETY: AVX was detected.
+        return unsafe { octaves_lanes::octaves4(ps, octaves, omega, lambda) };
     }
     octaves4_with(ps, octaves, omega, lambda, cell, vector_lanes)
 }
@@ -735,15 +604,9 @@ pub fn vector_octaves4(ps: [DVec3; 4], octaves: u32, omega: f64, lambda: f64) ->
 #[inline]
 pub fn vector_octaves(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
     #[cfg(target_arch = "x86_64")]
-    {
-        if has_avx2() {
-            // SAFETY: AVX2 (and so AVX) was detected.
-            return unsafe { octaves_lanes::octaves_gather(p, octaves, omega, lambda) };
-        }
-        if has_avx() {
-            // SAFETY: AVX was detected.
-            return unsafe { octaves_lanes::octaves(p, octaves, omega, lambda) };
-        }
+    if has_avx() {
+        // SAFETY: AVX was detected.
+        return unsafe { octaves_lanes::octaves(p, octaves, omega, lambda) };
     }
     octaves_plain(p, octaves, omega, lambda)
 }

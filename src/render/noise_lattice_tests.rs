@@ -130,31 +130,18 @@ fn avx_cell_is_the_cell() {
             DVec3::new(b, c, a),
         ] {
             // SAFETY: AVX was detected above.
-            let got = unsafe { cell_avx::<false>(p) };
+            let got = unsafe { cell_avx(p) };
             let want = cell(p);
             assert_eq!(bits(&got), bits(&want), "{p:?}");
             // The weightless walk of the batched scalar noise: the same position and
             // corners, past the i32 range and at NaN too.
             // SAFETY: as above.
-            let lean = unsafe { scalar_lanes::corners_avx::<false>(p) };
+            let lean = unsafe { scalar_lanes::corners_avx(p) };
             assert_eq!(
                 (lean.t.map(f64::to_bits), lean.row),
                 (want.t.map(f64::to_bits), want.entry.map(|e| e * 32)),
                 "{p:?}"
             );
-            // The walks by gathers: the same entries.
-            if has_avx2() {
-                // SAFETY: AVX2 was detected.
-                let got = unsafe { cell_avx::<true>(p) };
-                assert_eq!(bits(&got), bits(&want), "{p:?}");
-                // SAFETY: as above.
-                let lean = unsafe { scalar_lanes::corners_avx::<true>(p) };
-                assert_eq!(
-                    (lean.t.map(f64::to_bits), lean.row),
-                    (want.t.map(f64::to_bits), want.entry.map(|e| e * 32)),
-                    "{p:?}"
-                );
-            }
         }
     }
 }
@@ -254,16 +241,6 @@ fn lane_octaves_are_the_octaves() {
             for (g, w) in got4.into_iter().zip(want4) {
                 assert!(same(g, w), "{ps:?} {oct}: {g:?} {w:?}");
             }
-            if has_avx2() {
-                // SAFETY: AVX2 was detected.
-                let got = unsafe { octaves_lanes::octaves_gather(p, oct, omega, lambda) };
-                assert!(same(got, want), "{p:?} {oct}: {got:?} {want:?}");
-                // SAFETY: as above.
-                let got4 = unsafe { octaves_lanes::octaves4_gather(ps, oct, omega, lambda) };
-                for (g, w) in got4.into_iter().zip(want4) {
-                    assert!(same(g, w), "{ps:?} {oct}: {g:?} {w:?}");
-                }
-            }
         }
     }
 }
@@ -294,17 +271,6 @@ fn lane_vectors_are_the_vectors() {
         for (g, q) in got10.into_iter().zip(ps) {
             let w = DVec3::from_array(vector_lanes(&cell(q)));
             assert!(same(g, w), "{q:?}: {g:?} {w:?}");
-        }
-        if has_avx2() {
-            // SAFETY: AVX2 was detected.
-            let got = unsafe { octaves_lanes::vector_gather(p) };
-            assert!(same(got, want), "{p:?}: {got:?} {want:?}");
-            // SAFETY: as above.
-            unsafe { octaves_lanes::vector_many_gather(&ps, &mut got10) };
-            for (g, q) in got10.into_iter().zip(ps) {
-                let w = DVec3::from_array(vector_lanes(&cell(q)));
-                assert!(same(g, w), "{q:?}: {g:?} {w:?}");
-            }
         }
     }
 }
@@ -338,11 +304,6 @@ fn abs_octaves_are_the_vectors_summed() {
             same(plain, want) && same(got, want),
             "{p:?}: {got:?} {plain:?} {want:?}"
         );
-        if has_avx2() {
-            // SAFETY: AVX2 was detected.
-            let got = unsafe { octaves_lanes::abs_octaves_gather(p) };
-            assert!(same(got, want), "{p:?}: {got:?} {want:?}");
-        }
     }
 }
 

@@ -16,8 +16,7 @@ use std::mem::MaybeUninit;
 use crate::math::DVec3;
 
 use super::{
-    cell, cell_lanes, entries_avx, entries_gather, Cell, CellLanes, CellList, HASH_Z32, MAX_POINTS,
-    PACKED,
+    cell, cell_lanes, entries_avx, Cell, CellLanes, CellList, HASH_Z32, MAX_POINTS, PACKED,
 };
 
 /// One octave's cell for the lanes: the fractional position's lanes (x, y, z, 0) and the
@@ -61,15 +60,14 @@ fn from_cell(c: &Cell) -> LaneCell {
     }
 }
 
-/// `cell_avx`'s operations, then the weights' and offsets' last steps in the lanes. `G`:
-/// the hash walk by AVX2 gathers (`entries_gather`, the same entries).
+/// `cell_avx`'s operations, then the weights' and offsets' last steps in the lanes.
 ///
 /// # Safety
-/// The CPU must have AVX, and AVX2 if `G`.
+/// The CPU must have AVX.
 #[inline(always)]
-unsafe fn lane_cell<const G: bool>(p: DVec3) -> LaneCell {
-    // SAFETY: the caller guarantees AVX (AVX2 if G); the stores go to 32-byte aligned
-    // fields of a `repr(C, align(32))` struct at offsets 0, 32, 64 and 96.
+unsafe fn lane_cell(p: DVec3) -> LaneCell {
+    // SAFETY: the caller guarantees AVX; the stores go to 32-byte aligned fields of a
+    // `repr(C, align(32))` struct at offsets 0, 32, 64 and 96.
     unsafe {
         let Some(CellLanes { f, t, s, o, wxy }) = cell_lanes(p) else {
             return from_cell(&cell(p));
@@ -81,13 +79,8 @@ unsafe fn lane_cell<const G: bool>(p: DVec3) -> LaneCell {
         let mut c = LaneCell {
             d: [[0.0; 4]; 2],
             w: [0.0; 8],
-            packed: [0; 8],
+            packed: entries_avx(f, &HASH_Z32),
         };
-        if G {
-            _mm256_store_si256(c.packed.as_mut_ptr().cast(), entries_gather(f, &HASH_Z32));
-        } else {
-            c.packed = entries_avx(f, &HASH_Z32.t);
-        }
         _mm256_store_pd(c.d[0].as_mut_ptr(), t);
         _mm256_store_pd(c.d[1].as_mut_ptr(), _mm256_sub_pd(t, _mm256_set1_pd(1.0)));
         _mm256_store_pd(c.w.as_mut_ptr(), _mm256_mul_pd(wxy, oz));
@@ -151,40 +144,16 @@ unsafe fn to_dvec3(v: __m256d) -> DVec3 {
 #[target_feature(enable = "avx")]
 pub(super) fn vector(p: DVec3) -> DVec3 {
     // SAFETY: this function only runs with AVX enabled.
-    unsafe { to_dvec3(lane_terms(&lane_cell::<false>(p))) }
-}
-
-/// `vector` with the walk's gathers.
-#[target_feature(enable = "avx,avx2")]
-pub(super) fn vector_gather(p: DVec3) -> DVec3 {
-    // SAFETY: this function only runs with AVX2 (and AVX) enabled.
-    unsafe { to_dvec3(lane_terms(&lane_cell::<true>(p))) }
+    unsafe { to_dvec3(lane_terms(&lane_cell(p))) }
 }
 
 /// `vector` at up to ten points (the wrinkles normal's octaves): every hash walk first.
 #[target_feature(enable = "avx")]
 pub(super) fn vector_many<const N: usize>(ps: &[DVec3; N], out: &mut [DVec3; N]) {
-    // SAFETY: this function only runs with AVX enabled.
-    unsafe { vector_many_lanes::<N, false>(ps, out) }
-}
-
-/// `vector_many` with the walks' gathers.
-#[target_feature(enable = "avx,avx2")]
-pub(super) fn vector_many_gather<const N: usize>(ps: &[DVec3; N], out: &mut [DVec3; N]) {
-    // SAFETY: this function only runs with AVX2 (and AVX) enabled.
-    unsafe { vector_many_lanes::<N, true>(ps, out) }
-}
-
-/// `vector_many`'s body (`G`: the walks by gathers).
-///
-/// # Safety
-/// The CPU must have AVX, and AVX2 if `G`.
-#[inline(always)]
-unsafe fn vector_many_lanes<const N: usize, const G: bool>(ps: &[DVec3; N], out: &mut [DVec3; N]) {
     let mut cells = CellList::<LaneCell, N>::new();
     for &p in ps {
-        // SAFETY: the caller guarantees AVX (and AVX2 if G).
-        cells.push(unsafe { lane_cell::<G>(p) });
+        // SAFETY: this function only runs with AVX enabled.
+        cells.push(unsafe { lane_cell(p) });
     }
     for (o, c) in out.iter_mut().zip(cells.as_slice()) {
         // SAFETY: as above.
@@ -198,31 +167,14 @@ unsafe fn vector_many_lanes<const N: usize, const G: bool>(ps: &[DVec3; N], out:
 /// plain sum divides by 2ᵏ: both round the same exact quotient, so the bits are the same.
 #[target_feature(enable = "avx")]
 pub(super) fn abs_octaves(p: DVec3) -> DVec3 {
-    // SAFETY: this function only runs with AVX enabled.
-    unsafe { abs_octaves_lanes::<false>(p) }
-}
-
-/// `abs_octaves` with the walks' gathers.
-#[target_feature(enable = "avx,avx2")]
-pub(super) fn abs_octaves_gather(p: DVec3) -> DVec3 {
-    // SAFETY: this function only runs with AVX2 (and AVX) enabled.
-    unsafe { abs_octaves_lanes::<true>(p) }
-}
-
-/// `abs_octaves`' body (`G`: the walks by gathers).
-///
-/// # Safety
-/// The CPU must have AVX, and AVX2 if `G`.
-#[inline(always)]
-unsafe fn abs_octaves_lanes<const G: bool>(p: DVec3) -> DVec3 {
     let mut cells = CellList::<LaneCell, 10>::new();
-    // SAFETY: the caller guarantees AVX (and AVX2 if G).
-    cells.push(unsafe { lane_cell::<G>(p) });
+    // SAFETY: this function only runs with AVX enabled.
+    cells.push(unsafe { lane_cell(p) });
     let mut scale = 1.0;
     for _ in 1..10 {
         scale *= 2.0;
         // SAFETY: as above.
-        cells.push(unsafe { lane_cell::<G>(p * scale) });
+        cells.push(unsafe { lane_cell(p * scale) });
     }
     // SAFETY: as above.
     unsafe {
@@ -265,29 +217,12 @@ unsafe fn weighted(cells: &[LaneCell], omega: f64) -> DVec3 {
 /// ~185), the stores through its buffer being able to alias it.
 #[target_feature(enable = "avx")]
 pub(super) fn octaves(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
-    // SAFETY: this function only runs with AVX enabled.
-    unsafe { octaves_lanes::<false>(p, octaves, omega, lambda) }
-}
-
-/// `octaves` with the walks' gathers.
-#[target_feature(enable = "avx,avx2")]
-pub(super) fn octaves_gather(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
-    // SAFETY: this function only runs with AVX2 (and AVX) enabled.
-    unsafe { octaves_lanes::<true>(p, octaves, omega, lambda) }
-}
-
-/// `octaves`' body (`G`: the walks by gathers).
-///
-/// # Safety
-/// The CPU must have AVX, and AVX2 if `G`.
-#[inline(always)]
-unsafe fn octaves_lanes<const G: bool>(p: DVec3, octaves: u32, omega: f64, lambda: f64) -> DVec3 {
     let n = octaves.min(10) as usize;
     let mut buf = [const { MaybeUninit::<LaneCell>::uninit() }; 10];
     let mut scale = 1.0;
     for cell in &mut buf[..n] {
-        // SAFETY: the caller guarantees AVX (and AVX2 if G).
-        cell.write(unsafe { lane_cell::<G>(p * scale) });
+        // SAFETY: this function only runs with AVX enabled.
+        cell.write(unsafe { lane_cell(p * scale) });
         scale *= lambda;
     }
     // SAFETY: the first n cells were written just above (n <= 10, the slice's bound);
@@ -301,35 +236,13 @@ unsafe fn octaves_lanes<const G: bool>(p: DVec3, octaves: u32, omega: f64, lambd
 /// `octaves4_with(ps, .., cell, vector_lanes)`: all four points' hash walks first.
 #[target_feature(enable = "avx")]
 pub(super) fn octaves4(ps: [DVec3; 4], octaves: u32, omega: f64, lambda: f64) -> [DVec3; 4] {
-    // SAFETY: this function only runs with AVX enabled.
-    unsafe { octaves4_lanes::<false>(ps, octaves, omega, lambda) }
-}
-
-/// `octaves4` with the walks' gathers.
-#[target_feature(enable = "avx,avx2")]
-pub(super) fn octaves4_gather(ps: [DVec3; 4], octaves: u32, omega: f64, lambda: f64) -> [DVec3; 4] {
-    // SAFETY: this function only runs with AVX2 (and AVX) enabled.
-    unsafe { octaves4_lanes::<true>(ps, octaves, omega, lambda) }
-}
-
-/// `octaves4`'s body (`G`: the walks by gathers).
-///
-/// # Safety
-/// The CPU must have AVX, and AVX2 if `G`.
-#[inline(always)]
-unsafe fn octaves4_lanes<const G: bool>(
-    ps: [DVec3; 4],
-    octaves: u32,
-    omega: f64,
-    lambda: f64,
-) -> [DVec3; 4] {
     let n = octaves.clamp(1, 10) as usize;
     let mut cells = CellList::<LaneCell, MAX_POINTS>::new();
     for p in &ps {
         let mut scale = 1.0;
         for _ in 0..n {
-            // SAFETY: the caller guarantees AVX (and AVX2 if G).
-            cells.push(unsafe { lane_cell::<G>(*p * scale) });
+            // SAFETY: this function only runs with AVX enabled.
+            cells.push(unsafe { lane_cell(*p * scale) });
             scale *= lambda;
         }
     }

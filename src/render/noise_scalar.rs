@@ -8,10 +8,7 @@ use std::mem::MaybeUninit;
 
 use crate::math::DVec3;
 
-use super::{
-    cell, cell_avx, entries_avx, entries_gather, floor_lanes, scalar_avx, HASH_Z32, MAX_POINTS,
-    ROWS,
-};
+use super::{cell, cell_avx, entries_avx, floor_lanes, scalar_avx, HASH_Z32, MAX_POINTS, ROWS};
 
 /// What `scalar_avx4` reads of a cell: the fractional position and the corners' rows
 /// (`Cell` without the weights, which the four-point lanes compute themselves). `row` holds
@@ -38,14 +35,13 @@ unsafe fn row_at(off: u32) -> *const f64 {
 /// `cell_avx`'s fractional position and hash walk without its weights: the batched scalar
 /// noise (wrinkles' ten octaves, granite's, a normal's four samples) computed and stored
 /// the weights of every point only for `scalar_avx4` to compute them again in its lanes.
-/// Coordinates outside the i32 range (and NaN) take `cell`, as `cell_avx` does. `G`: the
-/// hash walk by AVX2 gathers.
+/// Coordinates outside the i32 range (and NaN) take `cell`, as `cell_avx` does.
 ///
 /// # Safety
-/// The CPU must have AVX, and AVX2 if `G`.
+/// The CPU must have AVX.
 #[inline(always)]
-pub(super) unsafe fn corners_avx<const G: bool>(p: DVec3) -> Corners {
-    // SAFETY: the caller guarantees AVX (AVX2 if G).
+pub(super) unsafe fn corners_avx(p: DVec3) -> Corners {
+    // SAFETY: the caller guarantees AVX.
     unsafe {
         let Some((v, f)) = floor_lanes(p) else {
             let c = cell(p);
@@ -56,50 +52,26 @@ pub(super) unsafe fn corners_avx<const G: bool>(p: DVec3) -> Corners {
         };
         let mut ta = [0.0; 4];
         _mm256_storeu_pd(ta.as_mut_ptr(), _mm256_sub_pd(v, f));
-        let row = if G {
-            let mut r = [0u32; 8];
-            _mm256_storeu_si256(r.as_mut_ptr().cast(), entries_gather(f, &HASH_Z32));
-            r
-        } else {
-            entries_avx(f, &HASH_Z32.t)
-        };
         Corners {
             t: [ta[0], ta[1], ta[2]],
-            row,
+            row: entries_avx(f, &HASH_Z32),
         }
     }
 }
 
 #[target_feature(enable = "avx")]
 pub(super) fn scalar_into_avx(ps: &[DVec3], out: &mut [f64]) {
-    // SAFETY: this function only runs with AVX enabled.
-    unsafe { scalar_into_lanes::<false>(ps, out) }
-}
-
-/// `scalar_into_avx` with the walks' gathers.
-#[target_feature(enable = "avx,avx2")]
-pub(super) fn scalar_into_gather(ps: &[DVec3], out: &mut [f64]) {
-    // SAFETY: this function only runs with AVX2 (and AVX) enabled.
-    unsafe { scalar_into_lanes::<true>(ps, out) }
-}
-
-/// `scalar_into_avx`'s body (`G`: the walks by gathers).
-///
-/// # Safety
-/// The CPU must have AVX, and AVX2 if `G`.
-#[inline(always)]
-unsafe fn scalar_into_lanes<const G: bool>(ps: &[DVec3], out: &mut [f64]) {
     let n = ps.len().min(out.len()).min(MAX_POINTS);
     if n == 1 {
-        // SAFETY: the caller guarantees AVX (and AVX2 if G).
-        out[0] = unsafe { scalar_avx(&cell_avx::<G>(ps[0])) };
+        // SAFETY: this function only runs with AVX enabled.
+        out[0] = unsafe { scalar_avx(&cell_avx(ps[0])) };
         return;
     }
     // Every hash walk first (as `scalar_into_with`), without initialising the unused cells.
     let mut buf = [const { MaybeUninit::<Corners>::uninit() }; MAX_POINTS];
     for (b, &p) in buf.iter_mut().zip(&ps[..n]) {
-        // SAFETY: the caller guarantees AVX (and AVX2 if G).
-        b.write(unsafe { corners_avx::<G>(p) });
+        // SAFETY: this function only runs with AVX enabled.
+        b.write(unsafe { corners_avx(p) });
     }
     // SAFETY: the first n cells were written just above; Corners is Copy (nothing to drop).
     let cells = unsafe { std::slice::from_raw_parts(buf.as_ptr() as *const Corners, n) };
@@ -112,7 +84,7 @@ unsafe fn scalar_into_lanes<const G: bool>(ps: &[DVec3], out: &mut [f64]) {
             // A lone last point (5 or 9 octaves) takes the one-point lanes, which need the
             // weights: its whole cell again.
             // SAFETY: as above.
-            o[0] = unsafe { scalar_avx(&cell_avx::<G>(p[0])) };
+            o[0] = unsafe { scalar_avx(&cell_avx(p[0])) };
         } else if c.len() == 2 {
             // SAFETY: as above.
             unsafe { scalar_avx2(c, o) };
