@@ -47,11 +47,9 @@ pub struct Scene {
     /// Over the bounded objects; its primitives are named by `query::leaf_name` (the object's
     /// index, and whether it is a plain sphere).
     bvh: Bvh,
-    /// `first_hit`'s copy for this CPU (`query::first_hit_for_cpu`), chosen once here where
-    /// every call asked the CPU (~20 instructions a ray with the frame around the choice).
-    first_hit_fn: query::FirstHit,
-    /// Whether the CPU has AVX (`math::has_avx`), asked once: the renderer's shadow rays
-    /// choose their walk's copy by it (`Scene::avx`).
+    /// Whether the CPU has AVX (`math::has_avx`), asked once: `first_hit` and the renderer's
+    /// shadow rays choose their walk's copy by it (`Scene::avx`), where every call asked the
+    /// CPU (~20 instructions a ray with the frame around the choice).
     avx: bool,
     /// The objects outside the BVH.
     unbounded: Vec<query::Unbounded>,
@@ -163,7 +161,6 @@ fn build_from<O: std::borrow::Borrow<ObjectDesc>>(
         light_sets: ctx.light_sets,
         objects,
         bvh,
-        first_hit_fn: query::first_hit_for_cpu(),
         avx: crate::math::has_avx(),
         unbounded,
         parents: Vec::new(),

@@ -72,19 +72,6 @@ impl<'a> Candidate<'a> {
     }
 }
 
-/// `Scene::first_hit`'s copies, chosen once per scene.
-pub(super) type FirstHit =
-    for<'a> unsafe fn(&'a Scene, &Ray, f64, &mut Scratch<'a>) -> Option<SurfaceHit<'a>>;
-
-/// The copy of `first_hit` for this CPU: with AVX where it has it.
-pub(super) fn first_hit_for_cpu() -> FirstHit {
-    #[cfg(target_arch = "x86_64")]
-    if crate::math::has_avx() {
-        return Scene::first_hit_avx;
-    }
-    Scene::first_hit_base
-}
-
 /// An object outside the BVH (unbounded: planes, quadrics, their CSG), tested by every ray
 /// before the walk.
 pub(super) struct Unbounded {
@@ -133,10 +120,9 @@ impl Unbounded {
 
 impl Scene {
     /// Nearest crossing along the ray closer than `tmax`: the copy compiled with AVX where the
-    /// CPU has it (`first_hit_avx`), else the build's own (x86-64-v2), as chosen when the
-    /// scene was built. Inlined: a call through the pointer, where a function asking the CPU
-    /// and calling the copy cost ~20 instructions a ray (its frame and the 56-byte answer
-    /// passed through).
+    /// CPU has it (`first_hit_avx`), else the build's own (x86-64-v2), chosen by the flag the
+    /// scene read once (`avx`). Inlined: a function asking the CPU and calling the copy cost
+    /// ~20 instructions a ray (its frame and the 56-byte answer passed through).
     #[inline(always)]
     pub fn first_hit<'a>(
         &'a self,
@@ -144,9 +130,12 @@ impl Scene {
         tmax: f64,
         scratch: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
-        // SAFETY: `first_hit_fn` is `first_hit_for_cpu`'s choice: the AVX copy only where the
-        // CPU has AVX.
-        unsafe { (self.first_hit_fn)(self, ray, tmax, scratch) }
+        #[cfg(target_arch = "x86_64")]
+        if self.avx {
+            // SAFETY: the scene found that the CPU has AVX.
+            return unsafe { self.first_hit_avx(ray, tmax, scratch) };
+        }
+        self.first_hit_base(ray, tmax, scratch)
     }
 
     /// Whether the CPU has AVX, as `math::has_avx` said when the scene was built: callers
@@ -176,8 +165,9 @@ impl Scene {
         self.first_hit_in(unsafe { Avx::new() }, ray, tmax, scratch)
     }
 
-    /// `first_hit_in` for CPUs without AVX (unsafe only to share `FirstHit`'s type).
-    unsafe fn first_hit_base<'a>(
+    /// `first_hit_in` for CPUs without AVX.
+    #[inline(never)]
+    fn first_hit_base<'a>(
         &'a self,
         ray: &Ray,
         tmax: f64,
