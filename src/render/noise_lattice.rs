@@ -409,7 +409,31 @@ fn scalar_lanes(c: &Cell) -> f64 {
 #[path = "noise_scalar.rs"]
 mod scalar_lanes;
 #[cfg(target_arch = "x86_64")]
-use scalar_lanes::scalar_into_avx;
+use scalar_lanes::{granite_avx, scalar_into_avx, turbulence_avx};
+
+/// Granite's sum for generators 1 and 2 (`gen1`: the first) mapped in the lanes, or None
+/// without AVX (the caller then takes `scalar_into`'s values through memory).
+#[inline]
+pub fn granite(p: DVec3, gen1: bool) -> Option<f64> {
+    #[cfg(target_arch = "x86_64")]
+    if has_avx() {
+        // SAFETY: AVX was detected.
+        return Some(unsafe { granite_avx(p, gen1) });
+    }
+    None
+}
+
+/// Scalar turbulence's sum of `n` octaves (1 to 10; lambda and omega already rounded) for
+/// generators 1 and 2 (`gen1`: the first) mapped in the lanes, or None without AVX.
+#[inline]
+pub fn turbulence(p: DVec3, n: usize, omega: f64, lambda: f64, gen1: bool) -> Option<f64> {
+    #[cfg(target_arch = "x86_64")]
+    if has_avx() {
+        // SAFETY: AVX was detected.
+        return Some(unsafe { turbulence_avx(p, n, omega, lambda, gen1) });
+    }
+    None
+}
 
 /// `scalar`'s arithmetic with the four corners of each z layer as the lanes of one AVX
 /// register: their rows are transposed so that lane k holds corner k's numbers, each lane

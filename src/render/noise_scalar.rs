@@ -8,6 +8,7 @@ use std::mem::MaybeUninit;
 
 use crate::math::DVec3;
 
+use super::super::noise_data::{GEN2_A, GEN2_B};
 use super::{cell, cell_avx, entries_avx, floor_lanes, scalar_avx, HASH_Z32, MAX_POINTS, ROWS};
 
 /// What `scalar_avx4` reads of a cell: the fractional position and the corners' rows
@@ -105,6 +106,28 @@ pub(super) fn scalar_into_avx(ps: &[DVec3], out: &mut [f64]) {
 /// The CPU must have AVX.
 #[inline(always)]
 unsafe fn scalar_avx4(cells: &[Corners], out: &mut [f64]) {
+    // SAFETY: the caller guarantees AVX.
+    unsafe {
+        let acc = sum_avx4(cells);
+        if let Ok(o) = <&mut [f64; 4]>::try_from(&mut *out) {
+            // Four points (most chunks): one store, where the copy of a slice of variable
+            // length was a call to memcpy.
+            _mm256_storeu_pd(o.as_mut_ptr(), acc);
+        } else {
+            let mut res = [0.0; 4];
+            _mm256_storeu_pd(res.as_mut_ptr(), acc);
+            out.copy_from_slice(&res[..cells.len()]);
+        }
+    }
+}
+
+/// `scalar_avx4`'s sums left in their lanes (lane l for `cells[l]`; missing lanes repeat
+/// the last point), for callers that map them further in the lanes.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[inline(always)]
+unsafe fn sum_avx4(cells: &[Corners]) -> __m256d {
     let n = cells.len();
     // Missing lanes repeat the last point; their results are dropped.
     let lane = |l: usize| &cells[l.min(n - 1)];
@@ -155,15 +178,7 @@ unsafe fn scalar_avx4(cells: &[Corners], out: &mut [f64]) {
         corner!(5);
         corner!(6);
         corner!(7);
-        if let Ok(o) = <&mut [f64; 4]>::try_from(&mut *out) {
-            // Four points (most chunks): one store, where the copy of a slice of variable
-            // length was a call to memcpy.
-            _mm256_storeu_pd(o.as_mut_ptr(), acc);
-        } else {
-            let mut res = [0.0; 4];
-            _mm256_storeu_pd(res.as_mut_ptr(), acc);
-            out.copy_from_slice(&res[..n]);
-        }
+        acc
     }
 }
 
@@ -176,7 +191,16 @@ unsafe fn scalar_avx4(cells: &[Corners], out: &mut [f64]) {
 /// The CPU must have AVX (the caller's target feature; SSE2 would do).
 #[inline(always)]
 unsafe fn scalar_avx2(cells: &[Corners], out: &mut [f64]) {
-    let (a, b) = (&cells[0], &cells[1]);
+    // SAFETY: the caller guarantees AVX.
+    unsafe { _mm_storeu_pd(out.as_mut_ptr(), sum_avx2(&cells[0], &cells[1])) };
+}
+
+/// `scalar_avx2`'s sums left in their lanes (lane 0 for `a`, lane 1 for `b`).
+///
+/// # Safety
+/// The CPU must have AVX (the caller's target feature; SSE2 would do).
+#[inline(always)]
+unsafe fn sum_avx2(a: &Corners, b: &Corners) -> __m128d {
     // SAFETY: the caller guarantees AVX; every `row` is a row's offset (`corners_avx`),
     // and ROWS' rows are 32-byte aligned, so both their halves are 16-byte aligned, as the
     // aligned loads need.
@@ -215,6 +239,208 @@ unsafe fn scalar_avx2(cells: &[Corners], out: &mut [f64]) {
             let w = _mm_mul_pd(wxy[k & 3], wz[k >> 2]);
             acc = _mm_add_pd(acc, _mm_mul_pd(w, t));
         }
-        _mm_storeu_pd(out.as_mut_ptr(), acc);
+        acc
+    }
+}
+
+/// Granite's six octaves at `p` (generators 1 and 2; `gen1` picks the first): `noise::granite`'s
+/// value without its points, values and mapping going through memory. The octaves' points
+/// are `p·f` as there, their walks and sums `scalar_into_avx`'s (four points in
+/// `sum_avx4`, the last two in `sum_avx2`), and each lane maps its sum with the scalar
+/// code's operations in its order: the generator's value (`sum_noise`), the clamp to
+/// [0, 1], then |v − ½|·4/f; the six terms are added to 0 in octave order, as there.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[target_feature(enable = "avx")]
+pub(super) fn granite_avx(p: DVec3, gen1: bool) -> f64 {
+    const FREQS: [f64; 6] = [4.0, 8.0, 16.0, 32.0, 64.0, 128.0];
+    let mut cells = [const { MaybeUninit::<Corners>::uninit() }; 6];
+    for (c, f) in cells.iter_mut().zip(FREQS) {
+        // SAFETY: this function only runs with AVX enabled.
+        c.write(unsafe { corners_avx(p * f) });
+    }
+    // SAFETY: all six were written just above; Corners is Copy.
+    let cells = unsafe { &*(cells.as_ptr() as *const [Corners; 6]) };
+    // SAFETY: this function only runs with AVX enabled.
+    unsafe {
+        let lo = granite_terms4(sum_avx4(&cells[..4]), gen1, _mm256_loadu_pd(FREQS.as_ptr()));
+        let hi = granite_terms2(
+            sum_avx2(&cells[4], &cells[5]),
+            gen1,
+            _mm_loadu_pd(FREQS[4..].as_ptr()),
+        );
+        let (mut a, mut b) = ([0.0; 4], [0.0; 2]);
+        _mm256_storeu_pd(a.as_mut_ptr(), lo);
+        _mm_storeu_pd(b.as_mut_ptr(), hi);
+        let mut sum = 0.0;
+        for t in a.into_iter().chain(b) {
+            sum += t;
+        }
+        sum
+    }
+}
+
+/// `x.clamp(0.0, 1.0)` in lanes, NaN and −0 included: `max(0, x)` answers its second
+/// operand x for a NaN and for two zeros, and `min(1, y)` likewise.
+macro_rules! clamp01 {
+    ($max:ident, $min:ident, $set1:ident, $x:expr) => {
+        $min($set1(1.0), $max($set1(0.0), $x))
+    };
+}
+
+/// `noise::sum_noise` of generator 1 (`gen1`) or 2 per lane from the lattice sums `s`, with
+/// its operations in its order.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[inline(always)]
+unsafe fn sum_noise4(s: __m256d, gen1: bool) -> __m256d {
+    // SAFETY: the caller guarantees AVX.
+    unsafe {
+        let c = _mm256_set1_pd;
+        let u = _mm256_add_pd(c(0.5), s);
+        if gen1 {
+            clamp01!(_mm256_max_pd, _mm256_min_pd, _mm256_set1_pd, u)
+        } else {
+            let g = _mm256_add_pd(c(GEN2_A), _mm256_mul_pd(c(GEN2_B), u));
+            _mm256_sub_pd(_mm256_mul_pd(c(2.0), g), c(0.5))
+        }
+    }
+}
+
+/// `sum_noise4` in the two lanes of a 128-bit register.
+///
+/// # Safety
+/// The CPU must have AVX (SSE2 would do).
+#[inline(always)]
+unsafe fn sum_noise2(s: __m128d, gen1: bool) -> __m128d {
+    // SAFETY: the caller guarantees AVX.
+    unsafe {
+        let c = _mm_set1_pd;
+        let u = _mm_add_pd(c(0.5), s);
+        if gen1 {
+            clamp01!(_mm_max_pd, _mm_min_pd, _mm_set1_pd, u)
+        } else {
+            let g = _mm_add_pd(c(GEN2_A), _mm_mul_pd(c(GEN2_B), u));
+            _mm_sub_pd(_mm_mul_pd(c(2.0), g), c(0.5))
+        }
+    }
+}
+
+/// One octave's granite term per lane from the lattice sums `s` (see `granite_avx`).
+///
+/// # Safety
+/// The CPU must have AVX.
+#[inline(always)]
+unsafe fn granite_terms4(s: __m256d, gen1: bool, f: __m256d) -> __m256d {
+    // SAFETY: the caller guarantees AVX.
+    unsafe {
+        let c = _mm256_set1_pd;
+        let v = clamp01!(
+            _mm256_max_pd,
+            _mm256_min_pd,
+            _mm256_set1_pd,
+            sum_noise4(s, gen1)
+        );
+        let d = _mm256_andnot_pd(c(-0.0), _mm256_sub_pd(v, c(0.5)));
+        _mm256_div_pd(_mm256_mul_pd(d, c(4.0)), f)
+    }
+}
+
+/// `granite_terms4` in the two lanes of a 128-bit register.
+///
+/// # Safety
+/// The CPU must have AVX (SSE2 would do).
+#[inline(always)]
+unsafe fn granite_terms2(s: __m128d, gen1: bool, f: __m128d) -> __m128d {
+    // SAFETY: the caller guarantees AVX.
+    unsafe {
+        let c = _mm_set1_pd;
+        let v = clamp01!(_mm_max_pd, _mm_min_pd, _mm_set1_pd, sum_noise2(s, gen1));
+        let d = _mm_andnot_pd(c(-0.0), _mm_sub_pd(v, c(0.5)));
+        _mm_div_pd(_mm_mul_pd(d, c(4.0)), f)
+    }
+}
+
+/// Scalar turbulence's `n` octaves (1 to 10) at `p`, generators 1 and 2 (`gen1`: the
+/// first): `noise::turbulence`'s value with the octaves' points and values kept out of
+/// zeroed arrays and the generator's map done in lanes. The points are `p·scale` with
+/// scale multiplied by `lambda` per octave as there; the octaves go through
+/// `scalar_into_avx`'s kernels in its chunks (four points in `sum_avx4`, a last chunk of
+/// three too, of two in `sum_avx2`, of one, or one point alone, in `scalar_avx`), and the
+/// sum is the first value clamped plus each next one times omega's running product, in
+/// octave order.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[target_feature(enable = "avx")]
+pub(super) fn turbulence_avx(p: DVec3, n: usize, omega: f64, lambda: f64, gen1: bool) -> f64 {
+    let n = n.clamp(1, 10);
+    let mut pts = [const { MaybeUninit::<DVec3>::uninit() }; 10];
+    let mut cells = [const { MaybeUninit::<Corners>::uninit() }; 10];
+    let mut scale = 1.0;
+    for k in 0..n {
+        let q = if k == 0 {
+            p
+        } else {
+            scale *= lambda;
+            p * scale
+        };
+        pts[k].write(q);
+        // SAFETY: this function only runs with AVX enabled.
+        cells[k].write(unsafe { corners_avx(q) });
+    }
+    // SAFETY: the first n of each were written just above; both types are Copy.
+    let (pts, cells) = unsafe {
+        (
+            std::slice::from_raw_parts(pts.as_ptr() as *const DVec3, n),
+            std::slice::from_raw_parts(cells.as_ptr() as *const Corners, n),
+        )
+    };
+    let mut v = [0.0; 12];
+    let mut k = 0;
+    // SAFETY: this function only runs with AVX enabled.
+    unsafe {
+        if n == 1 {
+            v[0] = one_value(pts[0], gen1);
+        }
+        while n > 1 && k < n {
+            let m = (n - k).min(4);
+            if m == 1 {
+                v[k] = one_value(pts[k], gen1);
+            } else if m == 2 {
+                let s = sum_noise2(sum_avx2(&cells[k], &cells[k + 1]), gen1);
+                _mm_storeu_pd(v[k..].as_mut_ptr(), s);
+            } else {
+                let s = sum_noise4(sum_avx4(&cells[k..k + m]), gen1);
+                _mm256_storeu_pd(v[k..].as_mut_ptr(), s);
+            }
+            k += m;
+        }
+    }
+    let mut sum = v[0].clamp(0.0, 1.0);
+    let mut weight = 1.0;
+    for &x in &v[1..n] {
+        weight *= omega;
+        sum += weight * x;
+    }
+    sum
+}
+
+/// One point's `sum_noise` through `scalar_avx`, as `scalar_into_avx` takes a lone point.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[inline(always)]
+unsafe fn one_value(p: DVec3, gen1: bool) -> f64 {
+    // SAFETY: the caller guarantees AVX.
+    unsafe {
+        let s = scalar_avx(&cell_avx(p));
+        if gen1 {
+            (0.5 + s).clamp(0.0, 1.0)
+        } else {
+            2.0 * (GEN2_A + GEN2_B * (0.5 + s)) - 0.5
+        }
     }
 }
