@@ -38,6 +38,7 @@ pub(super) struct Powers {
 
 impl Powers {
     /// The first-order model of the field at this point (`linear`).
+    #[inline(always)]
     pub(super) fn lin(&self, se: &Superellipsoid) -> Lin {
         Lin::new(
             se,
@@ -47,6 +48,14 @@ impl Powers {
             (self.mc, self.ra, self.g, self.zc),
             self.v,
         )
+    }
+
+    /// `Line::new(&self.lin(se), ..)` in one function: with both inlined here `Lin` never
+    /// goes through memory (as an argument it was fifteen stores and their loads, and its
+    /// whole arithmetic ran before `Line::new`'s test for a zero coordinate).
+    #[inline(never)]
+    fn line(&self, se: &Superellipsoid, s: f64, p: DVec3, u: DVec3, eta: DVec3) -> Line {
+        Line::new(&self.lin(se), s, p, u, eta)
     }
 }
 
@@ -191,7 +200,7 @@ impl Superellipsoid {
         let base = 1.0 + ra;
         // Against the exact path's base: `ra`'s error and the two sums' roundings (base <= 2).
         let ebase = era + 4.5e-16;
-        let bk = self.b.exponent().abs();
+        let bk = self.lin.b.abs();
         if !(bk * ebase <= 1e-6) {
             return None;
         }
@@ -233,7 +242,7 @@ impl Reference {
     #[inline(always)]
     fn models(&mut self, se: &Superellipsoid, u: DVec3, eta: DVec3) -> (&Powers, &Line) {
         let Reference { pw, s, p, models } = self;
-        let line = models.get_or_insert_with(|| Line::new(&pw.lin(se), *s, *p, u, eta));
+        let line = models.get_or_insert_with(|| pw.line(se, *s, *p, u, eta));
         (pw, line)
     }
 }
@@ -306,22 +315,35 @@ impl Ends {
     /// the stack). Stops before the first step that needs more (the tolerance reached, a ratio
     /// not surely lopsided, a midpoint the line does not settle), which `refine` then takes
     /// from the same state, so every step is the one it would take.
+    ///
+    /// The bracket only shrinks, so where the line `covers` both ends at the start it
+    /// covers every midpoint of the run.
     #[inline(never)]
     fn bisect_run(&mut self, line: &Line, tol: f64) {
+        let line = *line;
+        if line.covers(self.ea.s, self.eb.s) {
+            self.run(tol, |m| line.at_between(m));
+        } else {
+            self.run(tol, |m| line.at(m));
+        }
+    }
+
+    /// `bisect_run`'s loop, with `at` the line's answer at a midpoint.
+    #[inline(always)]
+    fn run(&mut self, tol: f64, at: impl Fn(f64) -> Option<(f64, f64)>) {
         let Ends {
             mut ea,
             mut eb,
             mut side,
             mut steps,
         } = *self;
-        let line = *line;
         while steps < STEPS {
             let (a, b) = (ea.s, eb.s);
             if (b - a).abs() <= tol || !lopsided(&ea, &eb) {
                 break;
             }
             let m = 0.5 * (a + b);
-            let Some((v, err)) = line.at(m) else {
+            let Some((v, err)) = at(m) else {
                 break;
             };
             let em = End {
@@ -412,13 +434,11 @@ pub(super) fn refine(
         // The series where the model cannot settle the sign: it costs about 0.6 of an exact
         // evaluation and settles most of what the model leaves.
         let settles = |&(v, err): &(f64, f64)| v.abs() > err && v.abs() < 1e300;
-        let mut line_settled = None;
+        let mut line_settled = false;
         let estimate = reference.as_mut().and_then(|r| {
             let (pw, line) = r.models(se, u, eta);
             let at = line.at(m);
-            if at.is_some() {
-                line_settled = Some(*line);
-            }
+            line_settled = at.is_some();
             // Not `Lin::at` where the line does not settle: it settled ~1 in 10 of those
             // midpoints (superel2), each ask ~60 instructions, and the series most of them.
             at.or_else(|| se.near(pw, p()).filter(settles))
@@ -450,8 +470,15 @@ pub(super) fn refine(
         // An approximate value's sign is the exact one's (|v| > err).
         br.take(em);
         br.steps += 1;
-        if let Some(line) = line_settled {
-            br.bisect_run(&line, tol);
+        // The reference is the one the line came from: a settled midpoint needs no exact
+        // evaluation (and the line is read in place, not copied out of the closure).
+        if line_settled {
+            if let Some(Reference {
+                models: Some(line), ..
+            }) = &reference
+            {
+                br.bisect_run(line, tol);
+            }
         }
     }
     0.5 * (br.ea.s + br.eb.s)
