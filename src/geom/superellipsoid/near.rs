@@ -16,35 +16,38 @@ use super::linear::{Lin, Line};
 use super::{Power, Superellipsoid};
 use crate::math::DVec3;
 
-/// The powers `value` computes at a point (glibc's bits) and the reciprocals of their bases.
+/// The powers `value` computes at a point (glibc's bits), with the point and the value. The
+/// coordinates' sizes, the ratio, the base and the reciprocals the models need are computed
+/// again from `p` (`sizes`) by the same operations, so to the same bits: an exact evaluation
+/// copies this twice (into the answer, into `Reference`), and with its fourteen fields
+/// that was ~40 instructions of the ~490.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Powers {
-    m: f64,
-    inv_m: f64,
+    p: DVec3,
     mc: f64,
-    r: f64,
-    inv_r: f64,
     ra: f64,
-    base: f64,
-    inv_base: f64,
     g: f64,
-    z: f64,
-    inv_z: f64,
     zc: f64,
-    /// The smaller of |x| and |y|, and the value, for the first-order model.
-    n: f64,
     v: f64,
 }
 
 impl Powers {
+    /// max(|x|, |y|), min(|x|, |y|) and |z| at the point, as `value_powers` computed them.
+    #[inline(always)]
+    fn sizes(&self) -> (f64, f64, f64) {
+        let (x, y, z) = (self.p.x.abs(), self.p.y.abs(), self.p.z.abs());
+        (x.max(y), x.min(y), z)
+    }
+
     /// The first-order model of the field at this point (`linear`).
     #[inline(always)]
     pub(super) fn lin(&self, se: &Superellipsoid) -> Lin {
+        let (m, n, z) = self.sizes();
         Lin::new(
             se,
-            (self.m, self.inv_m),
-            self.n,
-            (self.z, self.inv_z),
+            (m, 1.0 / m),
+            n,
+            (z, 1.0 / z),
             (self.mc, self.ra, self.g, self.zc),
             self.v,
         )
@@ -54,8 +57,8 @@ impl Powers {
     /// goes through memory (as an argument it was fifteen stores and their loads, and its
     /// whole arithmetic ran before `Line::new`'s test for a zero coordinate).
     #[inline(never)]
-    fn line(&self, se: &Superellipsoid, s: f64, p: DVec3, u: DVec3, eta: DVec3) -> Line {
-        Line::new(&self.lin(se), s, p, u, eta)
+    fn line(&self, se: &Superellipsoid, s: f64, u: DVec3, eta: DVec3) -> Line {
+        Line::new(&self.lin(se), s, self.p, u, eta)
     }
 }
 
@@ -163,19 +166,11 @@ impl Superellipsoid {
         let zc = self.c.of(z);
         let v = xy + zc - 1.0;
         let powers = Powers {
-            m,
-            inv_m: 1.0 / m,
+            p,
             mc,
-            r,
-            inv_r: 1.0 / r,
             ra,
-            base,
-            inv_base: 1.0 / base,
             g,
-            z,
-            inv_z: 1.0 / z,
             zc,
-            n,
             v,
         };
         (v, Some(powers))
@@ -195,8 +190,12 @@ impl Superellipsoid {
             return None;
         }
         let r = x.min(y) / m;
-        let (mc, emc) = near_power(self.c, &self.sc, m, pw.m, pw.inv_m, pw.mc)?;
-        let (ra, era) = near_power(self.a, &self.sa, r, pw.r, pw.inv_r, pw.ra)?;
+        // The reference's sizes, ratio and base as `value_powers` computed them.
+        let (m0, n0, z0) = pw.sizes();
+        let r0 = n0 / m0;
+        let base0 = 1.0 + pw.ra;
+        let (mc, emc) = near_power(self.c, &self.sc, m, m0, 1.0 / m0, pw.mc)?;
+        let (ra, era) = near_power(self.a, &self.sa, r, r0, 1.0 / r0, pw.ra)?;
         let base = 1.0 + ra;
         // Against the exact path's base: `ra`'s error and the two sums' roundings (base <= 2).
         let ebase = era + 4.5e-16;
@@ -204,10 +203,10 @@ impl Superellipsoid {
         if !(bk * ebase <= 1e-6) {
             return None;
         }
-        let (g, eg0) = near_power(self.b, &self.sb, base, pw.base, pw.inv_base, pw.g)?;
+        let (g, eg0) = near_power(self.b, &self.sb, base, base0, 1.0 / base0, pw.g)?;
         // base >= 1, so base^b moves by at most b·ebase relative (1.01: the second order).
         let eg = eg0 + g * (bk * ebase * 1.01);
-        let (zc, ezc) = near_power(self.c, &self.sc, z, pw.z, pw.inv_z, pw.zc)?;
+        let (zc, ezc) = near_power(self.c, &self.sc, z, z0, 1.0 / z0, pw.zc)?;
         let xy = mc * g;
         let exy = mc * eg + g * emc + emc * eg + xy * 4.5e-16;
         let sum = xy + zc;
@@ -223,16 +222,14 @@ impl Superellipsoid {
 struct Reference {
     pw: Powers,
     s: f64,
-    p: DVec3,
     models: Option<Line>,
 }
 
 impl Reference {
-    fn new(pw: Powers, s: f64, p: DVec3) -> Reference {
+    fn new(pw: Powers, s: f64) -> Reference {
         Reference {
             pw,
             s,
-            p,
             models: None,
         }
     }
@@ -241,8 +238,8 @@ impl Reference {
     /// the point.
     #[inline(always)]
     fn models(&mut self, se: &Superellipsoid, u: DVec3, eta: DVec3) -> (&Powers, &Line) {
-        let Reference { pw, s, p, models } = self;
-        let line = models.get_or_insert_with(|| pw.line(se, *s, *p, u, eta));
+        let Reference { pw, s, models } = self;
+        let line = models.get_or_insert_with(|| pw.line(se, *s, u, eta));
         (pw, line)
     }
 }
@@ -414,7 +411,7 @@ pub(super) fn refine(
             }
             (end.v, end.err) = (v, 0.0);
             if let Some(pw) = pw {
-                *reference = Some(Reference::new(pw, end.s, p));
+                *reference = Some(Reference::new(pw, end.s));
             }
         }
     };
@@ -465,7 +462,7 @@ pub(super) fn refine(
                     return m;
                 }
                 if let Some(pw) = pw {
-                    reference = Some(Reference::new(pw, m, p));
+                    reference = Some(Reference::new(pw, m));
                 }
                 End {
                     s: m,
