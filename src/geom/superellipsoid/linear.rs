@@ -397,6 +397,49 @@ mod tests {
         assert!(worst < 0.75, "{worst}");
     }
 
+    /// Where `covers` accepts two ends, `at_between` answers as `at` at every midpoint a
+    /// bisection between them can reach (the midpoints of nested brackets).
+    #[test]
+    fn at_between_is_at_inside_covered_ends() {
+        let mut next = rng(0x3c6e_f372_fe94_f82b);
+        let (mut covered, mut settled) = (0, 0);
+        for (e, n) in SHAPES {
+            let s = Superellipsoid::new(e, n);
+            for _ in 0..4000 {
+                let target = on_surface(&s, DVec3::new(next(), next(), next()) * 2.0 - DVec3::ONE);
+                let o = DVec3::new(next(), next(), next()) * 2.0 - DVec3::ONE;
+                let u = (target - o).normalize();
+                let s_r = (target - o).length();
+                let p_r = o + u * s_r;
+                let Some(pw) = s.value_powers(p_r).1 else {
+                    continue;
+                };
+                let line = Line::new(&pw.lin(&s), s_r, p_r, u, Line::eta(o, u, 4.0));
+                let w = 10f64.powf(-1.0 - 8.0 * next());
+                let (mut a, mut b) = (s_r - w * next(), s_r + w * next());
+                if !line.covers(a, b) {
+                    continue;
+                }
+                covered += 1;
+                for _ in 0..60 {
+                    let m = 0.5 * (a + b);
+                    let (x, y) = (line.at(m), line.at_between(m));
+                    assert_eq!(
+                        x.map(|(v, e)| (v.to_bits(), e.to_bits())),
+                        y.map(|(v, e)| (v.to_bits(), e.to_bits()))
+                    );
+                    settled += usize::from(x.is_some());
+                    if next() < 0.5 {
+                        a = m;
+                    } else {
+                        b = m;
+                    }
+                }
+            }
+        }
+        assert!(covered > 10_000 && settled > 100_000, "{covered} {settled}");
+    }
+
     /// The model is within its bound of `value`, from references on and off the surface and
     /// relative moves from 1e-15 to past `dmax`; with offsets up to 1e-6 (most of the
     /// refinement's midpoints) it is used and decides most signs.
