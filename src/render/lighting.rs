@@ -23,14 +23,32 @@ impl<'a> Tracer<'a> {
         gathering: bool,
         ctx: &mut TraceCtx<'a>,
     ) {
-        let double = obj.double_illuminate;
-        let groups = self.scene.light_sets.len() > 1;
-        let set = &self.scene.light_sets[obj.light_set as usize];
-        let q = self.quality;
         // Pushed to in place: nothing the shadow rays do reads `ctx.lit` (taking the Vec out
         // and putting it back cost ~26 instructions a hit); only the area lights' closure,
         // which borrows `ctx` itself, takes it out.
         ctx.lit.clear();
+        self.gather_each(p, nf, all, obj, gathering, ctx, |lit, lb| lit.push(lb));
+    }
+
+    /// `gather_lights`' work: each light reaching `p`, in order, handed to `put` with the
+    /// list it would be pushed to (`ctx.lit`, or the area lights' own while `ctx` is lent
+    /// to their shadow rays). Every entry's `cos_n` is `nf·l` to the bit.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn gather_each(
+        &self,
+        p: DVec3,
+        nf: DVec3,
+        all: bool,
+        obj: &Object,
+        gathering: bool,
+        ctx: &mut TraceCtx<'a>,
+        mut put: impl FnMut(&mut Vec<LitBy>, LitBy),
+    ) {
+        let double = obj.double_illuminate;
+        let groups = self.scene.light_sets.len() > 1;
+        let set = &self.scene.light_sets[obj.light_set as usize];
+        let q = self.quality;
         for (slot, light) in self.scene.lights.iter().enumerate() {
             if groups && !set.sees(light.group) {
                 continue;
@@ -51,14 +69,17 @@ impl<'a> Tracer<'a> {
                         let cos_n = nf.dot(dir);
                         let back = cos_n <= 0.0 && double;
                         if (cos_n > 0.0 || all || back) && seen != DVec3::ZERO {
-                            lit.push(LitBy {
-                                color: lc * seen,
-                                l: dir,
-                                cos_n,
-                                shadowless: false,
-                                back,
-                                slot: slot as u32,
-                            });
+                            put(
+                                &mut lit,
+                                LitBy {
+                                    color: lc * seen,
+                                    l: dir,
+                                    cos_n,
+                                    shadowless: false,
+                                    back,
+                                    slot: slot as u32,
+                                },
+                            );
                         }
                     });
                     ctx.lit = lit;
@@ -96,18 +117,23 @@ impl<'a> Tracer<'a> {
                     }
                 }
             }
-            ctx.lit.push(LitBy {
-                color: lc,
-                l,
-                cos_n,
-                shadowless: light.shadowless,
-                back,
-                slot: slot as u32,
-            });
+            put(
+                &mut ctx.lit,
+                LitBy {
+                    color: lc,
+                    l,
+                    cos_n,
+                    shadowless: light.shadowless,
+                    back,
+                    slot: slot as u32,
+                },
+            );
         }
         if let Some(map) = self.photons {
             if let Some(c) = map.caustic(p, nf, obj, &mut ctx.photon_found) {
-                ctx.lit.push(c);
+                // The photons' own `cos_n` is 1, not `nf·nf`.
+                let cos_n = nf.dot(c.l);
+                put(&mut ctx.lit, LitBy { cos_n, ..c });
             }
         }
     }
@@ -128,6 +154,71 @@ impl<'a> Tracer<'a> {
         indirect: Option<DVec3>,
         ctx: &TraceCtx<'a>,
     ) -> DVec3 {
+        let mut col = self.own_light(c, fin, indirect);
+        if ctx.lit.is_empty() {
+            return col;
+        }
+        let f = Factors::new(c, fin, p, dir, nf, mirror);
+        if f.plain() {
+            lights_add::<true>(&f, &ctx.lit, &mut col);
+        } else {
+            lights_add::<false>(&f, &ctx.lit, &mut col);
+        }
+        col
+    }
+
+    /// `gather_lights` then `layer_light` (no radiosity) for a hit whose only layer has the
+    /// unperturbed normal `nf`: each light's share is added as its shadow ray answers, in the
+    /// order `ctx.lit` would have held it, so the list is neither written nor read again
+    /// (~30 instructions a light). The layer's colour `c` is found before the shadow rays,
+    /// which neither read nor change what it depends on (the surface a slope pigment reads
+    /// is set before both, and `plain_colour` leaves it as it found it). `ctx.lit` is left as
+    /// it was: nothing but `layer_light` reads it, always after filling it for its own hit.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    pub(super) fn layer_light_direct(
+        &self,
+        c: &Rgbft,
+        fin: &Finish,
+        p: DVec3,
+        dir: DVec3,
+        nf: DVec3,
+        mirror: DVec3,
+        (obj, gathering): (&Object, bool),
+        ctx: &mut TraceCtx<'a>,
+    ) -> DVec3 {
+        let mut col = self.own_light(c, fin, None);
+        let f = Factors::new(c, fin, p, dir, nf, mirror);
+        // `all` is false: the normal is not perturbed (the caller's `single_plain`).
+        if f.plain() {
+            self.gather_each(
+                p,
+                nf,
+                false,
+                obj,
+                gathering,
+                ctx,
+                #[inline(always)]
+                |_, lb| light_add::<true>(&f, &lb, lb.cos_n, &mut col),
+            );
+        } else {
+            self.gather_each(
+                p,
+                nf,
+                false,
+                obj,
+                gathering,
+                ctx,
+                #[inline(always)]
+                |_, lb| light_add::<false>(&f, &lb, lb.cos_n, &mut col),
+            );
+        }
+        col
+    }
+
+    /// A layer's ambient (or radiosity's `indirect`) and emission, by its colour and opacity.
+    #[inline(always)]
+    fn own_light(&self, c: &Rgbft, fin: &Finish, indirect: Option<DVec3>) -> DVec3 {
         let opacity = c.opacity();
         let ambient = fin.ambient * self.scene.ambient_light;
         let own = match (indirect, &self.rad) {
@@ -135,45 +226,7 @@ impl<'a> Tracer<'a> {
             (Some(e), _) => e * fin.diffuse,
             (None, _) => ambient,
         };
-        let mut col = (own + fin.emission) * c.rgb * opacity;
-        if ctx.lit.is_empty() {
-            return col;
-        }
-        // Decided once per layer, not per light. A factor that is exactly one (no irid, no
-        // metallic, no crand) is left out rather than multiplied in: x·1 is x to the bit.
-        let diffuse = fin.diffuse > 0.0;
-        let phong = fin.phong > 0.0;
-        let specular = fin.specular > 0.0;
-        let specular_exp = if specular {
-            1.0 / fin.roughness.max(1e-6)
-        } else {
-            0.0
-        };
-        let metallic = fin.metallic != 0.0 && (phong || specular);
-        // Most finishes have neither irid nor crand nor a metallic highlight and a brilliance
-        // of 1: their loop is compiled without those branches (and without the crand hash's
-        // point seed, which the compiler hoisted out of the loop for every light-lit layer).
-        let plain = fin.irid.is_none() && fin.crand == 0.0 && !metallic && fin.brilliance == 1.0;
-        let f = Factors {
-            c,
-            fin,
-            p,
-            dir,
-            nf,
-            mirror,
-            opacity,
-            diffuse,
-            phong,
-            specular,
-            specular_exp,
-            metallic,
-        };
-        if plain {
-            lights_add::<true>(&f, &ctx.lit, &mut col);
-        } else {
-            lights_add::<false>(&f, &ctx.lit, &mut col);
-        }
-        col
+        (own + fin.emission) * c.rgb * opacity
     }
 }
 
@@ -214,68 +267,118 @@ struct Factors<'f> {
     metallic: bool,
 }
 
+impl<'f> Factors<'f> {
+    /// Decided once per layer, not per light. A factor that is exactly one (no irid, no
+    /// metallic, no crand) is left out rather than multiplied in: x·1 is x to the bit.
+    #[inline(always)]
+    fn new(
+        c: &'f Rgbft,
+        fin: &'f Finish,
+        p: DVec3,
+        dir: DVec3,
+        nf: DVec3,
+        mirror: DVec3,
+    ) -> Factors<'f> {
+        let phong = fin.phong > 0.0;
+        let specular = fin.specular > 0.0;
+        Factors {
+            c,
+            fin,
+            p,
+            dir,
+            nf,
+            mirror,
+            opacity: c.opacity(),
+            diffuse: fin.diffuse > 0.0,
+            phong,
+            specular,
+            specular_exp: if specular {
+                1.0 / fin.roughness.max(1e-6)
+            } else {
+                0.0
+            },
+            metallic: fin.metallic != 0.0 && (phong || specular),
+        }
+    }
+
+    /// Most finishes have neither irid nor crand nor a metallic highlight and a brilliance
+    /// of 1: their loop is compiled without those branches (and without the crand hash's
+    /// point seed, which the compiler hoisted out of the loop for every light-lit layer).
+    #[inline(always)]
+    fn plain(&self) -> bool {
+        let fin = self.fin;
+        fin.irid.is_none() && fin.crand == 0.0 && !self.metallic && fin.brilliance == 1.0
+    }
+}
+
 /// Each gathered light's diffuse and highlight terms of one layer, added to `col`. `PLAIN`:
 /// the finish has no irid, no crand, no metallic highlight and brilliance 1 (the caller
 /// checked), so those branches are compiled out; the arithmetic is the same either way.
 #[inline(always)]
 fn lights_add<const PLAIN: bool>(f: &Factors, lit: &[LitBy], col: &mut DVec3) {
-    let (fin, c, p, dir, nf) = (f.fin, f.c, f.p, f.dir, f.nf);
-    let cos_view = -dir.dot(nf);
     for lb in lit {
-        let (lc, l) = (lb.color, lb.l);
-        // Iridescence scales the light's diffuse and highlight terms alike (measured).
-        let lc_irid = match &fin.irid {
-            Some(irid) if !PLAIN => lc * super::irid::factor(irid, p, nf.dot(l), cos_view),
-            _ => lc,
-        };
-        if f.diffuse {
-            // The same as lb.cos_n unless the normal was perturbed; a light behind a
-            // double-illuminated surface lights it as if from the front.
-            let cos_n = if lb.back { -nf.dot(l) } else { nf.dot(l) };
-            if cos_n > 0.0 {
-                let d = if PLAIN || fin.brilliance == 1.0 {
-                    cos_n
-                } else {
-                    cos_n.powf(fin.brilliance)
-                };
-                // crand darkens each light's diffuse term by its own random share
-                // (measured with povray: independent per light, uniform, ambient untouched).
-                // The share's hash is made here, for the few finishes with crand, not
-                // for every light of every hit as it once was (`gather_lights` shades the
-                // same point `p`, so the same seed).
-                let k = if !PLAIN && fin.crand != 0.0 {
-                    let g = grain(point_seed(p), lb.slot);
-                    fin.diffuse * d * f.opacity * (1.0 - fin.crand * g)
-                } else {
-                    fin.diffuse * d * f.opacity
-                };
-                *col += lc_irid * c.rgb * k;
-            }
+        light_add::<PLAIN>(f, lb, f.nf.dot(lb.l), col);
+    }
+}
+
+/// One light's diffuse and highlight terms (`lights_add`); `cos_n` is `nf·l`, which the
+/// caller may have at hand.
+#[inline(always)]
+fn light_add<const PLAIN: bool>(f: &Factors, lb: &LitBy, cos_n: f64, col: &mut DVec3) {
+    let (fin, c, p, dir, nf) = (f.fin, f.c, f.p, f.dir, f.nf);
+    let (lc, l) = (lb.color, lb.l);
+    // Iridescence scales the light's diffuse and highlight terms alike (measured).
+    let lc_irid = match &fin.irid {
+        Some(irid) if !PLAIN => lc * super::irid::factor(irid, p, cos_n, -dir.dot(nf)),
+        _ => lc,
+    };
+    if f.diffuse {
+        // The same as lb.cos_n unless the normal was perturbed; a light behind a
+        // double-illuminated surface lights it as if from the front.
+        let cos_n = if lb.back { -cos_n } else { cos_n };
+        if cos_n > 0.0 {
+            let d = if PLAIN || fin.brilliance == 1.0 {
+                cos_n
+            } else {
+                cos_n.powf(fin.brilliance)
+            };
+            // crand darkens each light's diffuse term by its own random share
+            // (measured with povray: independent per light, uniform, ambient untouched).
+            // The share's hash is made here, for the few finishes with crand, not
+            // for every light of every hit as it once was (`gather_lights` shades the
+            // same point `p`, so the same seed).
+            let k = if !PLAIN && fin.crand != 0.0 {
+                let g = grain(point_seed(p), lb.slot);
+                fin.diffuse * d * f.opacity * (1.0 - fin.crand * g)
+            } else {
+                fin.diffuse * d * f.opacity
+            };
+            *col += lc_irid * c.rgb * k;
         }
-        // POV-Ray 3.7 gives shadowless lights no highlights (tests/probes/shadowless_*),
-        // nor lights behind a double-illuminated surface (tests/probes/double_illuminate).
-        if lb.shadowless || lb.back || !(f.phong || f.specular) {
-            continue;
+    }
+    // POV-Ray 3.7 gives shadowless lights no highlights (tests/probes/shadowless_*),
+    // nor lights behind a double-illuminated surface (tests/probes/double_illuminate).
+    if lb.shadowless || lb.back || !(f.phong || f.specular) {
+        return;
+    }
+    // Highlights take the surface colour in proportion to `metallic`, less so as the
+    // light grazes the surface (measured: render::metallic).
+    let lc_tint = if !PLAIN && f.metallic {
+        lc_irid * super::metallic::tint(c.rgb, fin.metallic, cos_n)
+    } else {
+        lc_irid
+    };
+    if f.phong {
+        let cos_r = f.mirror.dot(l);
+        if cos_r > 0.0 {
+            *col += lc_tint * (fin.phong * cos_r.powf(fin.phong_size));
         }
-        // Highlights take the surface colour in proportion to `metallic`, less so as the
-        // light grazes the surface (measured: render::metallic).
-        let lc_tint = if !PLAIN && f.metallic {
-            lc_irid * super::metallic::tint(c.rgb, fin.metallic, nf.dot(l))
-        } else {
-            lc_irid
-        };
-        if f.phong {
-            let cos_r = f.mirror.dot(l);
-            if cos_r > 0.0 {
-                *col += lc_tint * (fin.phong * cos_r.powf(fin.phong_size));
-            }
-        }
-        if f.specular {
-            let hv = (l - dir).normalize_or_zero();
-            let cos_h = nf.dot(hv);
-            if cos_h > 0.0 {
-                *col += lc_tint * (fin.specular * cos_h.powf(f.specular_exp));
-            }
+    }
+    if f.specular {
+        let hv = (l - dir).normalize_or_zero();
+        let cos_h = nf.dot(hv);
+        if cos_h > 0.0 {
+            *col += lc_tint * (fin.specular * cos_h.powf(f.specular_exp));
         }
     }
 }

@@ -581,7 +581,13 @@ impl<'a> Tracer<'a> {
         // A perturbed normal may face lights the surface itself turns away from; POV-Ray
         // lights them (measured: a light just behind a plane whose normal leans towards it):
         // `bumpy`, whether any part of the texture perturbs the normal.
-        if self.rad.is_some_and(|r| r.probe) && path.rad_level == 0 {
+        // Most hits are on one plain layer: its sums in locals, `LayerSum` not made, and
+        // when lights reach it, each added as its shadow ray answers (`layer_light_direct`).
+        // Never under radiosity, so never in a pretrace's probe.
+        let single = single_plain(top, bumpy, self.rad.is_some(), mirror);
+        if single && lit {
+            // `shade_single` gathers the lights itself.
+        } else if self.rad.is_some_and(|r| r.probe) && path.rad_level == 0 {
             // A radiosity pretrace pass keeps the samples its camera rays gather, not their
             // colour: the lights of what they meet do not matter.
             ctx.lit.clear();
@@ -593,16 +599,15 @@ impl<'a> Tracer<'a> {
         } else {
             self.gather_lights(p, nf, bumpy, obj, path.rad_level > 0, ctx);
         }
-        // Most hits are on one plain layer: its sums in locals, `LayerSum` not made.
         let mut sum;
-        let (lay, bent): (Layered, &[(DVec3, DVec3)]) =
-            if single_plain(top, bumpy, self.rad.is_some(), mirror) {
-                (self.shade_single(top, &view(), ctx), &[])
-            } else {
-                sum = LayerSum::new();
-                self.shade_layers(top, &view(), &mut sum, ctx);
-                (sum.out, &sum.bent)
-            };
+        let (lay, bent): (Layered, &[(DVec3, DVec3)]) = if single {
+            let direct = lit.then_some(path.rad_level > 0);
+            (self.shade_single(top, &view(), direct, ctx), &[])
+        } else {
+            sum = LayerSum::new();
+            self.shade_layers(top, &view(), &mut sum, ctx);
+            (sum.out, &sum.bent)
+        };
         let Layered {
             mut col,
             through,
