@@ -124,10 +124,13 @@ mod tests {
             }
         }
         assert!(checked > 10_000, "{checked}");
+        // A -0 in the linear part would turn `0 * y`'s sign: refused like any other matrix.
+        let mut signed = Transform::translate(DVec3::ONE);
+        signed.inv.y_axis.x = -0.0;
         for t in [
             Transform::scale(DVec3::new(1.0, 2.0, 1.0)),
-            Transform::rotate(DVec3::ZERO),
             Transform::rotate(DVec3::new(0.0, 90.0, 0.0)),
+            signed,
         ] {
             assert!(!only_moved(&t));
         }
