@@ -21,6 +21,7 @@ use crate::scene::shapes::make_shape;
 
 pub use super::light::Light;
 
+mod moved;
 mod query;
 pub(crate) use query::leaf_any_hit;
 
