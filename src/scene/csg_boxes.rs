@@ -5,8 +5,9 @@
 //! A node without index whose members include box leaves without transform keeps a copy of
 //! each such member's `BoxShape` (`BoxMembers`, in its `Cull`), and its searches run an
 //! instance of `csg_first_hit`/`csg_any_hit` that asks those members here. The answers are the
-//! same bit for bit: `box_inside` is `Object::inside`'s leaf path (the bounds test, which
-//! such a box's bounds make redundant, and the box's own test) and `box_hits` is
+//! same bit for bit: a box member's inside test (`BoxTest`) is `Object::inside`'s leaf path
+//! (the bounds test, which such a box's bounds make redundant, and the box's own test),
+//! asked before the other members', and `box_hits` is
 //! `member_hits`' leaf path (the box's `intersect_all` crossings in its order, those below
 //! `tmax` taken as surface hits),
 //! calling the very functions the general path reaches through the vtable. Only the dispatch
@@ -18,10 +19,10 @@
 use std::cell::Cell;
 
 use crate::geom::boxes::BoxShape;
-use crate::geom::{Hit, Shape};
+use crate::geom::Hit;
 use crate::math::{Aabb, DVec3, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
-use crate::scene::csg_hit::order_key;
+use crate::scene::csg_hit::{order_key, push_crossing};
 use crate::scene::desc::CsgOp;
 use crate::scene::faces::{self, Faces};
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
@@ -141,14 +142,17 @@ impl BoxMembers {
     }
 }
 
-/// `o.inside(p)` of a member `o` whose shape is the box `m`: `Object::inside`'s leaf path.
-#[inline(always)]
-pub(super) fn box_inside(o: &Object, m: &BoxMember, p: DVec3) -> bool {
+/// `o.inside(p)` of a member `o` whose shape is the box `m`: `Object::inside`'s leaf path
+/// (what `BoxTest::holds` answers for the searches).
+#[cfg(test)]
+fn box_inside(o: &Object, m: &BoxMember, p: DVec3) -> bool {
+    use crate::geom::Shape;
     m.shape.inside(p) != o.inverse
 }
 
 /// `member_hits(c, None, ray, tmax, s)` of a member `c` whose shape is the box `b`: its
-/// crossings in `intersect_all`'s order, those below `tmax` appended as `take_hits` does.
+/// crossings in `intersect_all`'s order, those below `tmax` appended as `take_hits` does,
+/// each with its order entry tagged `tag` in `s.csg_order` (`csg_hit::push_crossing`).
 #[inline(always)]
 pub(super) fn box_hits<'a>(
     c: &'a Object,
@@ -156,15 +160,11 @@ pub(super) fn box_hits<'a>(
     ray: &Ray,
     tmax: f64,
     s: &mut Scratch<'a>,
+    tag: u32,
 ) {
     m.shape.each_crossing(ray, |hit| {
         if hit.t < tmax {
-            s.surface.push(SurfaceHit {
-                t: hit.t,
-                obj: c,
-                hit,
-                flip: c.inverse,
-            });
+            push_crossing(c, hit, s, tag);
         }
     });
 }
@@ -316,9 +316,9 @@ impl Object {
     /// same order: each member's, after the same cull and slab tests, in `intersect_all`'s
     /// order and below `tmax`, inserted as they come after every equal key (so sorted by
     /// (order key, place in the gather), as `sort_crossings` sorts them). Each is kept by
-    /// the members' `box_inside` (`Object::inside`) and the clip exactly as `csg_keeps` asks,
-    /// with the same first question; no test has a side effect, so the answer is the same
-    /// crossing, bit for bit, with the same flip.
+    /// the members' `BoxTest`s (`Object::inside`) and the clip as `csg_keeps` asks them; no
+    /// test has a side effect, so the order of the questions cannot change it: the answer is
+    /// the same crossing, bit for bit, with the same flip.
     #[inline(never)]
     pub(super) fn boxes_first_hit<'a>(
         &'a self,
@@ -357,34 +357,21 @@ impl Object {
                 }
             });
         }
-        #[inline(always)]
-        fn wants(op: CsgOp, j: usize, o: &Object, m: &Option<BoxMember>, p: DVec3) -> bool {
-            let want_inside = match op {
-                CsgOp::Intersection => true,
-                CsgOp::Difference => j == 0,
-                CsgOp::Union | CsgOp::Merge => false,
-            };
-            m.as_ref().is_some_and(|m| box_inside(o, m, p)) == want_inside
-        }
-        let wants = |j: usize, p: DVec3| wants(op, j, &children[j], &members[j], p);
-        let mut rejecter = usize::MAX;
         let clip = &self.clip[..];
-        'crossings: for &(key, tag) in &order[..n] {
+        for &(key, tag) in &order[..n] {
             let i = (tag >> 8) as usize;
             let hit = Hit::with_part(
                 f64::from_bits(order_key(f64::from_bits(key as u64)) as u64),
                 tag & 0xff,
             );
             let p = ray.at(hit.t);
-            // The member that turned the last crossing away first, as `csg_keeps` asks.
-            if rejecter != i && rejecter < members.len() && !wants(rejecter, p) {
+            // Every other member answers as `csg_keeps` needs (`BoxTest`: `box_inside`).
+            if !boxes
+                .tests
+                .iter()
+                .all(|b| b.member == i || b.holds(p) == b.need)
+            {
                 continue;
-            }
-            for j in 0..members.len() {
-                if j != i && j != rejecter && !wants(j, p) {
-                    rejecter = j;
-                    continue 'crossings;
-                }
             }
             if clip.is_empty() || (hit.t > EPSILON && clip.iter().all(|c| c.inside(p))) {
                 let c = &children[i];
@@ -446,9 +433,18 @@ mod tests {
             for (j, c) in children.iter().enumerate() {
                 let Some(b) = boxes.get(j) else { continue };
                 assert_eq!(box_inside(c, b, p), c.inside(p), "member {j}, point {p}");
+                let t = boxes.tests.iter().find(|t| t.member == j).expect("a test");
+                assert_eq!(
+                    t.holds(p) == t.need,
+                    c.inside(p) == want_inside(CsgOp::Difference, j),
+                    "member {j}, point {p}"
+                );
                 inside += c.inside(p) as usize;
                 crate::scene::object::member_hits(c, None, &ray, tmax, &mut sa);
-                box_hits(c, b, &ray, tmax, &mut sb);
+                box_hits(c, b, &ray, tmax, &mut sb, j as u32);
+                let places: Vec<_> = sb.csg_order.iter().map(|e| e.1 as usize).collect();
+                assert_eq!(places, (0..sb.surface.len()).collect::<Vec<_>>());
+                sb.csg_order.clear();
                 let key = |h: &SurfaceHit| (h.t.to_bits(), h.hit.part, h.flip);
                 let a: Vec<_> = sa.surface.iter().map(key).collect();
                 let b: Vec<_> = sb.surface.iter().map(key).collect();
