@@ -180,7 +180,7 @@ fn attach_indexes(o: &mut Object, opened: bool) {
             .any(|c| crate::scene::csg_hit::folded(c).is_some());
     // Box members asked without dispatch (`csg_boxes`); `csg_keeps_boxes` has no index path.
     let boxes = (mine.is_none() && *op != CsgOp::Union)
-        .then(|| crate::scene::csg_boxes::BoxMembers::of(children))
+        .then(|| crate::scene::csg_boxes::BoxMembers::of(*op, children))
         .flatten();
     if folds || boxes.is_some() {
         let c = cull.get_or_insert_with(|| {

@@ -5,8 +5,9 @@
 //! A node without index whose members include box leaves without transform keeps a copy of
 //! each such member's `BoxShape` (`BoxMembers`, in its `Cull`), and its searches run an
 //! instance of `csg_first_hit`/`csg_any_hit` that asks those members here. The answers are the
-//! same bit for bit: `box_inside` is `Object::inside`'s leaf path (the bounds test, which
-//! such a box's bounds make redundant, and the box's own test) and `box_hits` is
+//! same bit for bit: a box member's inside test (`BoxTest`) is `Object::inside`'s leaf path
+//! (the bounds test, which such a box's bounds make redundant, and the box's own test),
+//! asked before the other members', and `box_hits` is
 //! `member_hits`' leaf path (the box's `intersect_all` crossings in its order, those below
 //! `tmax` taken as surface hits),
 //! calling the very functions the general path reaches through the vtable. Only the dispatch
@@ -18,10 +19,10 @@
 use std::cell::Cell;
 
 use crate::geom::boxes::BoxShape;
-use crate::geom::{Hit, Shape};
+use crate::geom::Hit;
 use crate::math::{Aabb, DVec3, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
-use crate::scene::csg_hit::order_key;
+use crate::scene::csg_hit::{order_key, push_crossing};
 use crate::scene::desc::CsgOp;
 use crate::scene::faces::{self, Faces};
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
@@ -52,16 +53,47 @@ pub struct BoxMember {
     pub(super) shape: BoxShape,
 }
 
+/// A box member's question in `csg_keeps_boxes`: whether the point is strictly inside the
+/// box (`BoxShape::inside` of a box that is not empty) is what the node needs of it.
+#[derive(Clone, Copy)]
+struct BoxTest {
+    min: DVec3,
+    max: DVec3,
+    /// `member_wants`' wish for this member (inside for an intersection's, the first of a
+    /// difference's; outside otherwise) turned by its `inverse`: the box's own answer that
+    /// keeps a crossing.
+    need: bool,
+    member: usize,
+}
+
+impl BoxTest {
+    /// `BoxShape::inside` of a box that is not empty (`solid_box`): the same six
+    /// comparisons, joined without branches.
+    #[inline(always)]
+    fn holds(&self, p: DVec3) -> bool {
+        (p.x > self.min.x)
+            & (p.y > self.min.y)
+            & (p.z > self.min.z)
+            & (p.x < self.max.x)
+            & (p.y < self.max.y)
+            & (p.z < self.max.z)
+    }
+}
+
 /// The box of each member that is a box leaf without clipping, by member number.
 pub struct BoxMembers {
     boxes: Box<[Option<BoxMember>]>,
     /// Every member is one, and there are at most `MAX_ALL` (`boxes_first_hit`).
     all: bool,
+    /// The box members' questions, in member order (`csg_keeps_boxes` asks them first).
+    tests: Box<[BoxTest]>,
+    /// The other members, in member order.
+    rest: Box<[u32]>,
 }
 
 impl BoxMembers {
-    /// The box members of `children`, when there is at least one.
-    pub fn of(children: &[Object]) -> Option<BoxMembers> {
+    /// The box members of `children` of a node `op`, when there is at least one.
+    pub fn of(op: CsgOp, children: &[Object]) -> Option<BoxMembers> {
         let boxes: Box<[Option<BoxMember>]> = children
             .iter()
             .map(|c| match &c.kind {
@@ -74,10 +106,28 @@ impl BoxMembers {
             })
             .collect();
         let all = boxes.len() <= MAX_ALL && boxes.iter().all(Option::is_some);
-        boxes
+        let tests = boxes
             .iter()
-            .any(Option::is_some)
-            .then_some(BoxMembers { boxes, all })
+            .zip(children)
+            .enumerate()
+            .filter_map(|(j, (b, c))| {
+                b.map(|b| BoxTest {
+                    min: b.shape.min(),
+                    max: b.shape.max(),
+                    need: want_inside(op, j) != c.inverse,
+                    member: j,
+                })
+            })
+            .collect();
+        let rest = (0..boxes.len() as u32)
+            .filter(|&j| boxes[j as usize].is_none())
+            .collect();
+        boxes.iter().any(Option::is_some).then_some(BoxMembers {
+            boxes,
+            all,
+            tests,
+            rest,
+        })
     }
 
     #[inline(always)]
@@ -92,14 +142,17 @@ impl BoxMembers {
     }
 }
 
-/// `o.inside(p)` of a member `o` whose shape is the box `m`: `Object::inside`'s leaf path.
-#[inline(always)]
-pub(super) fn box_inside(o: &Object, m: &BoxMember, p: DVec3) -> bool {
+/// `o.inside(p)` of a member `o` whose shape is the box `m`: `Object::inside`'s leaf path
+/// (what `BoxTest::holds` answers for the searches).
+#[cfg(test)]
+fn box_inside(o: &Object, m: &BoxMember, p: DVec3) -> bool {
+    use crate::geom::Shape;
     m.shape.inside(p) != o.inverse
 }
 
 /// `member_hits(c, None, ray, tmax, s)` of a member `c` whose shape is the box `b`: its
-/// crossings in `intersect_all`'s order, those below `tmax` appended as `take_hits` does.
+/// crossings in `intersect_all`'s order, those below `tmax` appended as `take_hits` does,
+/// each with its order entry tagged `tag` in `s.csg_order` (`csg_hit::push_crossing`).
 #[inline(always)]
 pub(super) fn box_hits<'a>(
     c: &'a Object,
@@ -107,21 +160,32 @@ pub(super) fn box_hits<'a>(
     ray: &Ray,
     tmax: f64,
     s: &mut Scratch<'a>,
+    tag: u32,
 ) {
     m.shape.each_crossing(ray, |hit| {
         if hit.t < tmax {
-            s.surface.push(SurfaceHit {
-                t: hit.t,
-                obj: c,
-                hit,
-                flip: c.inverse,
-            });
+            push_crossing(c, hit, s, tag);
         }
     });
 }
 
-/// `csg_keeps` of a node without index whose box members are `boxes`: the same questions in
-/// the same order (the rejecter first), box members answered by `box_inside`.
+/// What `csg_keeps` wishes of member `j` of a node `op`: to hold the point (true) or not.
+#[inline(always)]
+fn want_inside(op: CsgOp, j: usize) -> bool {
+    match op {
+        CsgOp::Intersection => true,
+        CsgOp::Difference => j == 0,
+        CsgOp::Union | CsgOp::Merge => false,
+    }
+}
+
+/// `csg_keeps` of a node without index whose box members are `boxes`: whether every member
+/// but `i` answers as the node needs. The box members are asked first, each by six
+/// comparisons (`BoxTest`), then the others as `csg_keeps` asks them, the one that turned
+/// the last crossing away first. No question has a side effect, so their order cannot
+/// change the answer; asking the boxes first only spares the costlier members' questions
+/// (radiosity_37's walls: three boxes and the arches' intersection).
+#[inline(always)]
 pub(super) fn csg_keeps_boxes(
     op: CsgOp,
     i: usize,
@@ -134,35 +198,41 @@ pub(super) fn csg_keeps_boxes(
     if op == CsgOp::Union {
         return true;
     }
+    boxes
+        .tests
+        .iter()
+        .all(|b| b.member == i || b.holds(p) == b.need)
+        && (boxes.rest.is_empty() || keeps_rest(op, i, children, faces, boxes, p, rejecter))
+}
+
+/// `csg_keeps_boxes`' questions to the members that are not boxes.
+fn keeps_rest(
+    op: CsgOp,
+    i: usize,
+    children: &[Object],
+    faces: Option<&Faces>,
+    boxes: &BoxMembers,
+    p: DVec3,
+    rejecter: &Cell<usize>,
+) -> bool {
     let faces = faces.filter(|_| faces::point_ok(p));
+    // `csg_keeps`' `member_wants`.
     #[inline(always)]
-    fn member_wants(
-        op: CsgOp,
-        faces: Option<&Faces>,
-        boxes: &BoxMembers,
-        p: DVec3,
-        j: usize,
-        o: &Object,
-    ) -> bool {
-        let want_inside = match op {
-            CsgOp::Intersection => true,
-            CsgOp::Difference => j == 0,
-            CsgOp::Union | CsgOp::Merge => false,
+    fn member_wants(op: CsgOp, faces: Option<&Faces>, p: DVec3, j: usize, o: &Object) -> bool {
+        let inside = match faces.and_then(|f| f.get(j)) {
+            Some(f) if o.bounds.contains(p) => f.inside(p) != o.inverse,
+            Some(_) => o.inverse,
+            None => o.inside(p),
         };
-        let inside = match (faces.and_then(|f| f.get(j)), boxes.get(j)) {
-            (Some(f), _) if o.bounds.contains(p) => f.inside(p) != o.inverse,
-            (Some(_), _) => o.inverse,
-            (None, Some(b)) => box_inside(o, b, p),
-            (None, None) => o.inside(p),
-        };
-        inside == want_inside
+        inside == want_inside(op, j)
     }
     let r = rejecter.get();
-    if r != i && r < children.len() && !member_wants(op, faces, boxes, p, r, &children[r]) {
+    if r != i && r < children.len() && !member_wants(op, faces, p, r, &children[r]) {
         return false;
     }
-    for (j, o) in children.iter().enumerate() {
-        if j != i && j != r && !member_wants(op, faces, boxes, p, j, o) {
+    for &j in boxes.rest.iter() {
+        let j = j as usize;
+        if j != i && j != r && !member_wants(op, faces, p, j, &children[j]) {
             rejecter.set(j);
             return false;
         }
@@ -246,9 +316,9 @@ impl Object {
     /// same order: each member's, after the same cull and slab tests, in `intersect_all`'s
     /// order and below `tmax`, inserted as they come after every equal key (so sorted by
     /// (order key, place in the gather), as `sort_crossings` sorts them). Each is kept by
-    /// the members' `box_inside` (`Object::inside`) and the clip exactly as `csg_keeps` asks,
-    /// with the same first question; no test has a side effect, so the answer is the same
-    /// crossing, bit for bit, with the same flip.
+    /// the members' `BoxTest`s (`Object::inside`) and the clip as `csg_keeps` asks them; no
+    /// test has a side effect, so the order of the questions cannot change it: the answer is
+    /// the same crossing, bit for bit, with the same flip.
     #[inline(never)]
     pub(super) fn boxes_first_hit<'a>(
         &'a self,
@@ -287,34 +357,21 @@ impl Object {
                 }
             });
         }
-        #[inline(always)]
-        fn wants(op: CsgOp, j: usize, o: &Object, m: &Option<BoxMember>, p: DVec3) -> bool {
-            let want_inside = match op {
-                CsgOp::Intersection => true,
-                CsgOp::Difference => j == 0,
-                CsgOp::Union | CsgOp::Merge => false,
-            };
-            m.as_ref().is_some_and(|m| box_inside(o, m, p)) == want_inside
-        }
-        let wants = |j: usize, p: DVec3| wants(op, j, &children[j], &members[j], p);
-        let mut rejecter = usize::MAX;
         let clip = &self.clip[..];
-        'crossings: for &(key, tag) in &order[..n] {
+        for &(key, tag) in &order[..n] {
             let i = (tag >> 8) as usize;
             let hit = Hit::with_part(
                 f64::from_bits(order_key(f64::from_bits(key as u64)) as u64),
                 tag & 0xff,
             );
             let p = ray.at(hit.t);
-            // The member that turned the last crossing away first, as `csg_keeps` asks.
-            if rejecter != i && rejecter < members.len() && !wants(rejecter, p) {
+            // Every other member answers as `csg_keeps` needs (`BoxTest`: `box_inside`).
+            if !boxes
+                .tests
+                .iter()
+                .all(|b| b.member == i || b.holds(p) == b.need)
+            {
                 continue;
-            }
-            for j in 0..members.len() {
-                if j != i && j != rejecter && !wants(j, p) {
-                    rejecter = j;
-                    continue 'crossings;
-                }
             }
             if clip.is_empty() || (hit.t > EPSILON && clip.iter().all(|c| c.inside(p))) {
                 let c = &children[i];
@@ -352,7 +409,7 @@ mod tests {
         let ObjKind::Csg { children, .. } = &o.kind else {
             panic!("a CSG node")
         };
-        let boxes = BoxMembers::of(children).expect("box members");
+        let boxes = BoxMembers::of(CsgOp::Difference, children).expect("box members");
         assert!(boxes.get(3).is_none() && boxes.get(5).is_none() && !boxes.all());
         assert!((0..3).chain([4]).all(|j| boxes.get(j).is_some()));
         let mut rng = Lcg(5);
@@ -376,9 +433,18 @@ mod tests {
             for (j, c) in children.iter().enumerate() {
                 let Some(b) = boxes.get(j) else { continue };
                 assert_eq!(box_inside(c, b, p), c.inside(p), "member {j}, point {p}");
+                let t = boxes.tests.iter().find(|t| t.member == j).expect("a test");
+                assert_eq!(
+                    t.holds(p) == t.need,
+                    c.inside(p) == want_inside(CsgOp::Difference, j),
+                    "member {j}, point {p}"
+                );
                 inside += c.inside(p) as usize;
                 crate::scene::object::member_hits(c, None, &ray, tmax, &mut sa);
-                box_hits(c, b, &ray, tmax, &mut sb);
+                box_hits(c, b, &ray, tmax, &mut sb, j as u32);
+                let places: Vec<_> = sb.csg_order.iter().map(|e| e.1 as usize).collect();
+                assert_eq!(places, (0..sb.surface.len()).collect::<Vec<_>>());
+                sb.csg_order.clear();
                 let key = |h: &SurfaceHit| (h.t.to_bits(), h.hit.part, h.flip);
                 let a: Vec<_> = sa.surface.iter().map(key).collect();
                 let b: Vec<_> = sb.surface.iter().map(key).collect();
@@ -388,6 +454,59 @@ mod tests {
             }
         }
         assert!(inside > 10_000, "{inside}");
+    }
+
+    /// `csg_keeps_boxes` (box members first, by `BoxTest`) answers as `csg_keeps` does for
+    /// every member's crossing: differences, intersections and merges of boxes plain,
+    /// inverse and flat with spheres, moved boxes, planes (faces) and a nested node, at
+    /// points on and near the boxes' faces, whatever member turned the last point away.
+    #[test]
+    fn keeps_boxes_match_csg_keeps() {
+        let scene = built(
+            r#"
+            difference { box { <-10, -0.1, -10>, <10, 4, 10> } box { <-9, 0.3, -9>, <9, 3.5, 9> }
+                         box { <-4, 0.1, -4>, <4, 5, 4> }
+                         intersection { merge { cylinder { <0, 0.3, 0>, <0, 0.3, 12>, 2 }
+                                                cylinder { <0, 0.3, 0>, <0, 0.3, 12>, 2 rotate 90 * y } }
+                                        plane { y, 0.3 inverse } } }
+            intersection { box { -1, 1 } sphere { 0, 1.3 } box { -0.5, 0.5 inverse }
+                           plane { y, 0.5 } plane { x, 0.7 } box { -1, 1 scale 0.9 rotate <10, 20, 30> } }
+            merge { box { -1, 1 } sphere { x, 0.8 } box { <-1, 0, -1>, <1, 0, 1> } box { 0, 2 inverse } }
+            difference { sphere { 0, 2 } box { -1, 1 } box { <-3, -0.5, -0.5>, <3, 0.5, 0.5> } inverse }
+            "#,
+        );
+        let mut rng = Lcg(17);
+        let mut kept = 0;
+        for (n, o) in scene.objects.iter().enumerate() {
+            let ObjKind::Csg {
+                op,
+                children,
+                index: None,
+                cull,
+            } = &o.kind
+            else {
+                panic!("object {n}: a node without index");
+            };
+            let boxes = o.box_members().expect("box members");
+            let faces = cull.as_ref().and_then(|c| c.faces.as_ref());
+            let (a, b) = (Cell::new(usize::MAX), Cell::new(usize::MAX));
+            for k in 0..30_000 {
+                let mut p = rng.vec(6.0);
+                match k % 4 {
+                    0 => p = (p * 2.0).round() * 0.5,
+                    1 => p[k % 3] = [-1.0, 1.0, 0.3, 0.5, -0.1, 3.5, 4.0, 0.0][k % 8],
+                    _ => {}
+                }
+                for i in 0..children.len() {
+                    let want =
+                        crate::scene::object::csg_keeps(*op, i, children, None, faces, p, &a);
+                    let got = csg_keeps_boxes(*op, i, children, faces, boxes, p, &b);
+                    assert_eq!(got, want, "object {n}, member {i}, point {p}");
+                    kept += want as usize;
+                }
+            }
+        }
+        assert!(kept > 5_000, "{kept}");
     }
 
     /// Nodes whose members are all boxes (`boxes_first_hit`) answer as `all_hits` does: the

@@ -448,29 +448,37 @@ impl Object {
                 let slabs = Slabs::new(ray.origin, inv_dir);
                 // Member `i` is `c`; in a union's index `c` may be a leaf of an opened member
                 // union (its number then does not matter: a union keeps every crossing).
-                let member = |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
-                    // A child whose box the ray misses adds no crossings (transparent shadows
-                    // through a union of many parts would otherwise test every part).
-                    if !slabs.hits(&c.bounds, tmax) {
-                        return;
-                    }
-                    // Each child's crossings are appended, then filtered in place.
-                    let start = s.surface.len();
-                    member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
-                    let mut k = start;
-                    for j in start..s.surface.len() {
-                        let mut h = s.surface[j];
-                        if csg_keeps(*op, i, children, index, faces, ray.at(h.t), &rejecter) {
-                            // Surfaces of subtracted operands face into the result.
-                            h.flip ^= *op == CsgOp::Difference && i > 0;
-                            s.surface[k] = h;
-                            k += 1;
+                // In member order, as the scan: callers see crossings in this order. The
+                // closure inlined in the member loop (called, a frame per member visit).
+                each_member(
+                    children,
+                    index,
+                    ray,
+                    tmax,
+                    s,
+                    #[inline(always)]
+                    |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
+                        // A child whose box the ray misses adds no crossings (transparent shadows
+                        // through a union of many parts would otherwise test every part).
+                        if !slabs.hits(&c.bounds, tmax) {
+                            return;
                         }
-                    }
-                    s.surface.truncate(k);
-                };
-                // In member order, as the scan: callers see crossings in this order.
-                each_member(children, index, ray, tmax, s, member);
+                        // Each child's crossings are appended, then filtered in place.
+                        let start = s.surface.len();
+                        member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
+                        let mut k = start;
+                        for j in start..s.surface.len() {
+                            let mut h = s.surface[j];
+                            if csg_keeps(*op, i, children, index, faces, ray.at(h.t), &rejecter) {
+                                // Surfaces of subtracted operands face into the result.
+                                h.flip ^= *op == CsgOp::Difference && i > 0;
+                                s.surface[k] = h;
+                                k += 1;
+                            }
+                        }
+                        s.surface.truncate(k);
+                    },
+                );
                 if self.inverse {
                     s.surface[mine..].iter_mut().for_each(|h| h.flip = !h.flip);
                 }
