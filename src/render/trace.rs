@@ -595,14 +595,13 @@ impl<'a> Tracer<'a> {
         }
         // Most hits are on one plain layer: its sums in locals, `LayerSum` not made.
         let mut sum;
-        let (lay, bent): (Layered, &[(DVec3, DVec3)]) =
-            if single_plain(top, bumpy, self.rad.is_some(), mirror) {
-                (self.shade_single(top, &view(), ctx), &[])
-            } else {
-                sum = LayerSum::new();
-                self.shade_layers(top, &view(), &mut sum, ctx);
-                (sum.out, &sum.bent)
-            };
+        let (lay, bent): (Layered, &[(DVec3, DVec3)]) = if single_plain(top, bumpy, mirror) {
+            (self.shade_single(top, &view(), ctx), &[])
+        } else {
+            sum = LayerSum::new();
+            self.shade_layers(top, &view(), &mut sum, ctx);
+            (sum.out, &sum.bent)
+        };
         let Layered {
             mut col,
             through,
