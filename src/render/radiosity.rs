@@ -514,10 +514,11 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
     // on is valid where its lookups read the cache: they then saw the final cache's valid
     // samples, in its order.
     if fold {
+        let mut memo = cache.fold_memo();
         for (at, looked, before) in to_check {
             let unchanged = looked
                 .iter()
-                .all(|&(p, n)| !cache.any_valid(p, n, set.error_bound, before));
+                .all(|&(p, n)| !cache.any_valid_memo(p, n, set.error_bound, before, &mut memo));
             if !unchanged {
                 first[at] = None;
             }
