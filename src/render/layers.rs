@@ -97,12 +97,13 @@ impl Layered {
 }
 
 /// Whether `shade_single` serves a hit on `top`: one plain layer that does not perturb the
-/// normal (`bumpy`: some part of the texture does), no radiosity (whose irradiance the
-/// layer loop gathers), and a mirror direction without NaN (which equals nothing, so the
-/// general loop counts it a bent reflection).
+/// normal (`bumpy`: some part of the texture does), and a mirror direction without NaN
+/// (which equals nothing, so the general loop counts it a bent reflection). With radiosity
+/// the one layer asks the irradiance at the unperturbed normal, as the loop's first part
+/// would.
 #[inline(always)]
-pub(super) fn single_plain(top: &Texture, bumpy: bool, radiosity: bool, mirror: DVec3) -> bool {
-    top.under.is_none() && top.pattern.is_none() && !bumpy && !radiosity && !mirror.is_nan()
+pub(super) fn single_plain(top: &Texture, bumpy: bool, mirror: DVec3) -> bool {
+    top.under.is_none() && top.pattern.is_none() && !bumpy && !mirror.is_nan()
 }
 
 impl<'a> Tracer<'a> {
@@ -151,7 +152,7 @@ impl<'a> Tracer<'a> {
     }
 
     /// A texture of one plain layer (no pattern, no layer under it, no normal perturbation)
-    /// without radiosity, on a hit whose mirror direction is a number: `shade_layers` and
+    /// on a hit whose mirror direction is a number: `shade_layers` and
     /// `shade_part` with the weight 1 and nothing above the layer, written out with the
     /// sums in locals. In `LayerSum` (passed by reference, with its `SmallVec` of bent
     /// reflections) every sum lived in memory, initialised and read back on every hit.
@@ -160,7 +161,9 @@ impl<'a> Tracer<'a> {
     /// The caller's test: `single_plain`.
     ///
     /// `direct`: the lights are not gathered yet, and are found and added here in one loop
-    /// (`layer_light_direct`), `gathering` as `gather_lights` takes it.
+    /// (`layer_light_direct`), `gathering` as `gather_lights` takes it. Only without
+    /// radiosity: with it the caller gathers the lights first, and the irradiance is asked
+    /// between them and their sum, as the layer loop asks it.
     #[inline(always)]
     pub(super) fn shade_single(
         &self,
@@ -184,7 +187,17 @@ impl<'a> Tracer<'a> {
                 (hv.obj, gathering),
                 ctx,
             ),
-            None => self.layer_light(&c, fin, hv.p, hv.dir, hv.nf, hv.mirror, None, ctx),
+            None => {
+                // `shade_part`'s choice with the normal unperturbed: with `normal on` or off
+                // the irradiance is asked at `nf`, after the colour and before the lights, as
+                // there.
+                let indirect = match self.rad {
+                    None => None,
+                    Some(_) if fin.diffuse <= 0.0 => Some(DVec3::ZERO),
+                    Some(_) => Some(self.irradiance(hv.p, hv.nf, hv.path, ctx)),
+                };
+                self.layer_light(&c, fin, hv.p, hv.dir, hv.nf, hv.mirror, indirect, ctx)
+            }
         };
         let col = DVec3::ZERO + through * w * light;
         let mut out = Layered {
@@ -395,7 +408,7 @@ mod tests {
             let top = h.obj.texture_facing(&h, !entering);
             let mirror = reflect(dir, nf);
             let bumpy = normal::texture_perturbs(top);
-            if !single_plain(top, bumpy, false, mirror) || top.uses_uv() {
+            if !single_plain(top, bumpy, mirror) || top.uses_uv() {
                 continue;
             }
             let (n1, n2) = if entering {

@@ -514,10 +514,11 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
     // on is valid where its lookups read the cache: they then saw the final cache's valid
     // samples, in its order.
     if fold {
+        let mut memo = cache.fold_memo();
         for (at, looked, before) in to_check {
             let unchanged = looked
                 .iter()
-                .all(|&(p, n)| !cache.any_valid(p, n, set.error_bound, before));
+                .all(|&(p, n)| !cache.any_valid_memo(p, n, set.error_bound, before, &mut memo));
             if !unchanged {
                 first[at] = None;
             }
@@ -610,111 +611,5 @@ impl<'a> Tracer<'a> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn pool_is_cosine_weighted() {
-        let pool = direction_pool(4000);
-        // E[cos θ] over a cosine-weighted hemisphere is 2/3.
-        let mean: f64 = pool
-            .iter()
-            .map(|(x, y)| (1.0 - x * x - y * y).max(0.0).sqrt())
-            .sum::<f64>()
-            / pool.len() as f64;
-        assert!((mean - 2.0 / 3.0).abs() < 1e-3, "{mean}");
-    }
-
-    #[test]
-    fn pretrace_blocks_halve_to_the_end() {
-        let set = RadiositySettings::default();
-        assert_eq!(pretrace_blocks(&set, 160, 120), vec![12.8, 6.4]);
-    }
-
-    /// A scene from its text, built for a 24x18 picture, and its camera.
-    fn scene_24x18(text: &str) -> (Scene, crate::render::camera::Camera) {
-        let mut parser = crate::sdl::Parser::new(crate::sdl::ParseOptions::default());
-        parser.parse_str("test.pov", text).expect("parses");
-        let scene = crate::scene::build::build(&parser.scene, 24, 18).scene;
-        let camera = crate::render::camera::Camera::of_scene(&scene);
-        (scene, camera)
-    }
-
-    /// A point whose lookup misses gathers a sample, and the gathering rays shade hits of their
-    /// own: the point is still lit by its own lights. (They replaced its list: a point that
-    /// gathered was lit as the last gathering ray's hit saw the lights.) With `brightness 0`
-    /// and no ambient, every pixel is then what the scene gives without radiosity, to the bit.
-    #[test]
-    fn a_point_that_gathers_keeps_its_own_lights() {
-        let text = "#version 3.7;
-            global_settings { assumed_gamma 1 radiosity { count 20 brightness 0 } }
-            camera { location <0, 2, -4> look_at <0, 0, 0> }
-            light_source { <3, 20, -2> rgb 1 }
-            sphere { 0, 1000 hollow no_shadow pigment { rgb <0.3, 0.5, 1> }
-                     finish { ambient 0 diffuse 0 emission 1 } }
-            plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 0.8 } }
-            box { <-1, 1, -1>, <1, 1.2, 1> pigment { rgb <1, 0.5, 0.2> }
-                  finish { ambient 0 diffuse 0.8 } }";
-        let (scene, camera) = scene_24x18(text);
-        let plain = Tracer::new(
-            &scene,
-            &camera,
-            false,
-            crate::render::trace::Quality::level(9),
-        );
-        let set = scene.radiosity.as_ref().expect("radiosity");
-        // An empty cache: every lookup misses, so every lit point gathers.
-        let mut cache = Cache::with_pool(direction_pool(set.count), 2);
-        cache.file_new(set.error_bound, set.error_bound);
-        let gathering = final_tracer(&plain, set, &cache);
-        let mut ctx = Scratch::default();
-        for y in 0..18 {
-            for x in 0..24 {
-                let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);
-                let want = plain.trace_camera_at(px, py, &mut ctx).rgb;
-                let got = gathering.trace_camera_at(px, py, &mut ctx).rgb;
-                assert_eq!(got.to_array(), want.to_array(), "pixel ({x}, {y})");
-            }
-        }
-    }
-
-    /// A camera ray traced from the crossing the completion passes keep (`camera_hit`, found
-    /// with another scratch) sees what it sees traced whole, to the bit, gathering the same
-    /// samples.
-    #[test]
-    fn a_kept_crossing_traces_as_the_ray() {
-        let text = "#version 3.7;
-            global_settings { assumed_gamma 1 radiosity { count 20 } }
-            camera { location <0, 2, -4> look_at <0, 0, 0> }
-            light_source { <3, 20, -2> rgb 1 }
-            fog { fog_type 2 fog_alt 1 fog_offset 0 color rgb 0.8 distance 30 }
-            plane { y, 0 pigment { rgb 1 } finish { diffuse 0.8 reflection 0.2 } }
-            box { <-1, 0.5, -1>, <1, 1.2, 1> pigment { rgb <1, 0.5, 0.2> } }";
-        let (scene, camera) = scene_24x18(text);
-        let plain = Tracer::new(
-            &scene,
-            &camera,
-            false,
-            crate::render::trace::Quality::level(9),
-        );
-        let set = scene.radiosity.as_ref().expect("radiosity");
-        let mut cache = Cache::with_pool(direction_pool(set.count), 2);
-        cache.file_new(set.error_bound, set.error_bound);
-        let tracer = final_tracer(&plain, set, &cache);
-        let (mut ctx, mut own) = (Scratch::default(), Scratch::default());
-        for y in 0..18 {
-            for x in 0..24 {
-                let ray = camera.ray(x as f64 + 0.5, y as f64 + 0.5).expect("a ray");
-                ctx.rad_local.clear();
-                let want = tracer.trace_pretrace(Some(ray), &mut ctx);
-                let samples = ctx.rad_local.len();
-                ctx.rad_local.clear();
-                let hit = plain.camera_hit(&ray, &mut own);
-                let got = tracer.trace_pretrace_hit(&ray, hit, &mut ctx);
-                assert_eq!(got.rgb.to_array(), want.rgb.to_array(), "pixel ({x}, {y})");
-                assert_eq!(got.clear.to_bits(), want.clear.to_bits());
-                assert_eq!(ctx.rad_local.len(), samples);
-            }
-        }
-    }
-}
+#[path = "radiosity_tests.rs"]
+mod tests;

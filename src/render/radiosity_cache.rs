@@ -114,7 +114,7 @@ impl Scale {
     }
 
     /// `pack(cell_of(p))`, by `floors_key`.
-    #[inline(always)]
+    #[cfg(test)]
     fn key(&self, p: DVec3) -> u64 {
         floors_key(self.floors(p))
     }
@@ -252,8 +252,8 @@ impl Cache {
     /// Every sample from number `from` on whose reach at error bound `bound` covers `p`
     /// (`weight`'s distance test), each once, in the order of the scales and of their cells'
     /// lists (the blend's sums depend on it), leaving out scales holding no sample of level
-    /// `level` or less (none of which `weight` takes).
-    #[inline]
+    /// `level` or less (none of which `weight` takes). What the lookups read, for the tests.
+    #[cfg(test)]
     pub(super) fn near(
         &self,
         p: DVec3,
@@ -502,7 +502,7 @@ impl Cache {
     /// all found first, then read: each is a cache miss (the grids are megabytes), and asked
     /// one after another the misses overlap instead of each waiting on the scan of the
     /// scale before (cornell: the lookup's share of the time 29% -> 23%).
-    #[inline(always)]
+    #[cfg(test)]
     fn cells<'s>(
         &'s self,
         group: &'s [Scale],
@@ -533,6 +533,8 @@ impl Cache {
     /// at error bound `bound` (the fold check in `pretrace`). The few samples a last pass
     /// adds (none at all in most small scenes) are tested directly, not through the grids:
     /// which of them are asked, and in what order, does not change whether one is valid.
+    /// The check itself asks `any_valid_memo` (radiosity_fold.rs); this is its reference.
+    #[cfg(test)]
     pub(super) fn any_valid(&self, p: DVec3, n: DVec3, bound: f64, from: usize) -> bool {
         let new = &self.foot[from.min(self.foot.len())..];
         if new.len() <= FEW_NEW {
@@ -725,6 +727,9 @@ fn weight_tail(
 
 #[path = "radiosity_lanes.rs"]
 mod lanes;
+
+#[path = "radiosity_fold.rs"]
+mod fold;
 
 #[cfg(test)]
 #[path = "radiosity_cache_tests.rs"]

@@ -582,10 +582,13 @@ impl<'a> Tracer<'a> {
         // lights them (measured: a light just behind a plane whose normal leans towards it):
         // `bumpy`, whether any part of the texture perturbs the normal.
         // Most hits are on one plain layer: its sums in locals, `LayerSum` not made, and
-        // when lights reach it, each added as its shadow ray answers (`layer_light_direct`).
-        // Never under radiosity, so never in a pretrace's probe.
-        let single = single_plain(top, bumpy, self.rad.is_some(), mirror);
-        if single && lit {
+        // when lights reach it and radiosity is off, each added as its shadow ray answers
+        // (`layer_light_direct`). With radiosity the lights are gathered here first (or
+        // cleared for a pretrace's probe) and the irradiance asked between them and their
+        // sum, as the layer loop does.
+        let single = single_plain(top, bumpy, mirror);
+        let direct = single && lit && self.rad.is_none();
+        if direct {
             // `shade_single` gathers the lights itself.
         } else if self.rad.is_some_and(|r| r.probe) && path.rad_level == 0 {
             // A radiosity pretrace pass keeps the samples its camera rays gather, not their
@@ -601,7 +604,7 @@ impl<'a> Tracer<'a> {
         }
         let mut sum;
         let (lay, bent): (Layered, &[(DVec3, DVec3)]) = if single {
-            let direct = lit.then_some(path.rad_level > 0);
+            let direct = direct.then_some(path.rad_level > 0);
             (self.shade_single(top, &view(), direct, ctx), &[])
         } else {
             sum = LayerSum::new();
