@@ -23,6 +23,7 @@ use crate::geom::Hit;
 use crate::math::{Aabb, DVec3, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
 use crate::scene::csg_hit::{order_key, push_crossing};
+use crate::scene::csg_members::{member_wants, want_inside};
 use crate::scene::desc::CsgOp;
 use crate::scene::faces::{self, Faces};
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
@@ -169,16 +170,6 @@ pub(super) fn box_hits<'a>(
     });
 }
 
-/// What `csg_keeps` wishes of member `j` of a node `op`: to hold the point (true) or not.
-#[inline(always)]
-fn want_inside(op: CsgOp, j: usize) -> bool {
-    match op {
-        CsgOp::Intersection => true,
-        CsgOp::Difference => j == 0,
-        CsgOp::Union | CsgOp::Merge => false,
-    }
-}
-
 /// `csg_keeps` of a node without index whose box members are `boxes`: whether every member
 /// but `i` answers as the node needs. The box members are asked first, each by six
 /// comparisons (`BoxTest`), then the others as `csg_keeps` asks them, the one that turned
@@ -216,16 +207,6 @@ fn keeps_rest(
     rejecter: &Cell<usize>,
 ) -> bool {
     let faces = faces.filter(|_| faces::point_ok(p));
-    // `csg_keeps`' `member_wants`.
-    #[inline(always)]
-    fn member_wants(op: CsgOp, faces: Option<&Faces>, p: DVec3, j: usize, o: &Object) -> bool {
-        let inside = match faces.and_then(|f| f.get(j)) {
-            Some(f) if o.bounds.contains(p) => f.inside(p) != o.inverse,
-            Some(_) => o.inverse,
-            None => o.inside(p),
-        };
-        inside == want_inside(op, j)
-    }
     let r = rejecter.get();
     if r != i && r < children.len() && !member_wants(op, faces, p, r, &children[r]) {
         return false;

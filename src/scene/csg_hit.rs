@@ -8,6 +8,7 @@ use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
 use crate::scene::csg_boxes::{box_hits, csg_keeps_boxes};
+use crate::scene::csg_members::want_inside;
 use crate::scene::desc::CsgOp;
 use crate::scene::faces::{self, Face, Faces, MAX_ALL};
 use crate::scene::object::{
@@ -378,11 +379,6 @@ impl Object {
                 n += 1;
             }
         }
-        let want_inside = |j: usize| match op {
-            CsgOp::Intersection => true,
-            CsgOp::Difference => j == 0,
-            CsgOp::Union | CsgOp::Merge => false,
-        };
         let mut rejecter = usize::MAX;
         let kept_cell = Cell::new(usize::MAX);
         let &(t, i) = order[..n].iter().find(|&&(t, i)| {
@@ -394,7 +390,7 @@ impl Object {
             let wants = |j: usize| {
                 all[j]
                     .as_ref()
-                    .is_some_and(|f| (f.inside(p) != children[j].inverse) == want_inside(j))
+                    .is_some_and(|f| (f.inside(p) != children[j].inverse) == want_inside(op, j))
             };
             // The face that turned the last crossing away first, as `csg_keeps` does.
             if rejecter != i && rejecter < all.len() && !wants(rejecter) {

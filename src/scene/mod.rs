@@ -5,6 +5,7 @@ pub mod build;
 pub mod children;
 pub mod csg_boxes;
 pub mod csg_hit;
+mod csg_members;
 pub mod cull;
 pub mod desc;
 pub mod df3;
