@@ -275,9 +275,16 @@ fn turbulence_plain(p: DVec3, n: usize, omega: f64, lambda: f64, generator: u8) 
     }
     let mut v = [0.0; 10];
     sum_noise_into(&ps[..n], generator, &mut v[..n]);
+    octave_sum(&v[..n], omega)
+}
+
+/// Turbulence's sum of its octaves' noise values `v` (at least one): the first clamped to
+/// [0, 1], each later one weighted by the next power of `omega`, added in octave order.
+#[inline(always)]
+pub(super) fn octave_sum(v: &[f64], omega: f64) -> f64 {
     let mut sum = v[0].clamp(0.0, 1.0);
     let mut weight = 1.0;
-    for &x in &v[1..n] {
+    for &x in &v[1..] {
         weight *= omega;
         sum += weight * x;
     }
@@ -317,13 +324,7 @@ pub fn turbulence4(
     sum_noise_into(&qs[..4 * n], generator, &mut v[..4 * n]);
     let mut out = [0.0; 4];
     for (o, v) in out.iter_mut().zip(v.chunks(n)) {
-        let mut sum = v[0].clamp(0.0, 1.0);
-        let mut weight = 1.0;
-        for &x in &v[1..] {
-            weight *= omega;
-            sum += weight * x;
-        }
-        *o = sum;
+        *o = octave_sum(v, omega);
     }
     out
 }

@@ -419,13 +419,7 @@ pub(super) fn turbulence_avx(p: DVec3, n: usize, omega: f64, lambda: f64, gen1: 
             k += m;
         }
     }
-    let mut sum = v[0].clamp(0.0, 1.0);
-    let mut weight = 1.0;
-    for &x in &v[1..n] {
-        weight *= omega;
-        sum += weight * x;
-    }
-    sum
+    crate::render::noise::octave_sum(&v[..n], omega)
 }
 
 /// One point's `sum_noise` through `scalar_avx`, as `scalar_into_avx` takes a lone point.
