@@ -42,6 +42,26 @@ pub(crate) const TO_BERNSTEIN: [[[f64; 9]; 9]; 9] = {
     w
 };
 
+/// `surely_no_root`'s first questions, shared with its quartic copy: the values at the ends
+/// alike in sign and neither zero, the terms' bound `T` and the width finite. Gives whether the
+/// polynomial is positive there, the width `hi - lo` and the margin `1e-11·T`.
+#[inline(always)]
+fn ends_and_margin(c: &[f64], lo: f64, hi: f64) -> Option<(bool, f64, f64)> {
+    let (f_lo, f_hi) = (eval(c, lo), eval(c, hi));
+    if (f_lo > 0.0) != (f_hi > 0.0) || f_lo == 0.0 || f_hi == 0.0 {
+        return None;
+    }
+    let w = hi - lo;
+    let reach = lo.abs() + w;
+    let mut t = 0.0;
+    let mut pw = 1.0;
+    for &cj in c {
+        t += cj.abs() * pw;
+        pw *= reach;
+    }
+    (t.is_finite() && w.is_finite()).then_some((f_lo > 0.0, w, 1e-11 * t))
+}
+
 /// Whether the polynomial keeps one sign on `[lo, hi]` by a margin far above every rounding
 /// error of evaluating it there, so that `isolate` could find no change of sign and no exact
 /// zero: its Bernstein coefficients on the interval (whose hull holds the curve) all exceed,
@@ -55,21 +75,9 @@ pub(crate) fn surely_no_root(c: &[f64], lo: f64, hi: f64) -> bool {
     if !(3..=8).contains(&n) {
         return false;
     }
-    let (f_lo, f_hi) = (eval(c, lo), eval(c, hi));
-    if (f_lo > 0.0) != (f_hi > 0.0) || f_lo == 0.0 || f_hi == 0.0 {
+    let Some((positive, w, margin)) = ends_and_margin(c, lo, hi) else {
         return false;
-    }
-    let w = hi - lo;
-    let reach = lo.abs() + w;
-    let mut t = 0.0;
-    let mut pw = 1.0;
-    for &cj in c {
-        t += cj.abs() * pw;
-        pw *= reach;
-    }
-    if !(t.is_finite() && w.is_finite()) {
-        return false;
-    }
+    };
     // q(u) = p(lo + w u): a Taylor shift to `lo` (repeated synthetic division), then scaling.
     let mut q = [0.0f64; 9];
     q[..=n].copy_from_slice(c);
@@ -84,8 +92,6 @@ pub(crate) fn surely_no_root(c: &[f64], lo: f64, hi: f64) -> bool {
         scale *= w;
     }
     // Bernstein coefficients b_k = Σ_{i ≤ k} C(k, i) / C(n, i) · q_i.
-    let margin = 1e-11 * t;
-    let positive = f_lo > 0.0;
     let w = &TO_BERNSTEIN[n];
     (0..=n).all(|k| {
         let b: f64 = (0..=k).map(|i| w[k][i] * q[i]).sum();
@@ -105,21 +111,9 @@ pub(crate) fn surely_no_root(c: &[f64], lo: f64, hi: f64) -> bool {
 /// order.
 #[inline]
 pub(crate) fn surely_no_root_quartic_from_zero(c: &[f64; 5], hi: f64) -> bool {
-    let (f_lo, f_hi) = (eval(c, 0.0), eval(c, hi));
-    if (f_lo > 0.0) != (f_hi > 0.0) || f_lo == 0.0 || f_hi == 0.0 {
+    let Some((positive, w, margin)) = ends_and_margin(c, 0.0, hi) else {
         return false;
-    }
-    let w = hi - 0.0;
-    let reach = 0.0 + w;
-    let mut t = 0.0;
-    let mut pw = 1.0;
-    for &cj in c {
-        t += cj.abs() * pw;
-        pw *= reach;
-    }
-    if !(t.is_finite() && w.is_finite()) {
-        return false;
-    }
+    };
     let q0 = c[0];
     let q1 = c[1] * w;
     let w2 = w * w;
@@ -127,7 +121,6 @@ pub(crate) fn surely_no_root_quartic_from_zero(c: &[f64; 5], hi: f64) -> bool {
     let w3 = w2 * w;
     let q3 = c[3] * w3;
     let q4 = c[4] * (w3 * w);
-    let margin = 1e-11 * t;
     let b = &TO_BERNSTEIN[4];
     // `q0` is `1·q0` (the first weight of every row is 1): b_0 = q0 = f(0), whose sign was
     // checked above by the same value.
@@ -138,7 +131,7 @@ pub(crate) fn surely_no_root_quartic_from_zero(c: &[f64; 5], hi: f64) -> bool {
         b[3][0] * q0 + b[3][1] * q1 + b[3][2] * q2 + b[3][3] * q3,
         b[4][0] * q0 + b[4][1] * q1 + b[4][2] * q2 + b[4][3] * q3 + b[4][4] * q4,
     ];
-    if f_lo > 0.0 {
+    if positive {
         sums.iter().all(|&s| s > margin)
     } else {
         sums.iter().all(|&s| s < -margin)
