@@ -26,8 +26,8 @@ const BUCKETS: u64 = 4096;
 
 /// The thresholds of a non-decreasing step function of film values.
 pub(crate) struct Steps {
-    /// `t[k - 1]`: the least non-negative v with q(v) ≥ k.
-    t: Vec<f64>,
+    /// How many thresholds the table holds (at most `MAX_STEPS`): q above the last.
+    count: u16,
     /// q at zero and below (every curve clamps negative light to zero).
     base: u16,
     /// How many thresholds are zero (q of the smallest positive values).
@@ -43,7 +43,8 @@ pub(crate) struct Steps {
     /// The bits of the last threshold less `first`: a value whose bits less `first` are at
     /// most this lies in a range.
     span: u64,
-    /// `t`, then NaNs, where a lookup's count stops (NaN ≤ v is false for every v).
+    /// The thresholds, `scan[k - 1]` the least non-negative v with q(v) ≥ k, then NaNs,
+    /// where a lookup's count stops (NaN ≤ v is false for every v).
     scan: Box<[f64; 256]>,
 }
 
@@ -160,7 +161,7 @@ impl Steps {
             start,
             span,
             scan,
-            t,
+            count: t.len() as u16,
             base,
         }
     }
@@ -180,7 +181,7 @@ impl Steps {
             return if bits < self.first {
                 self.zeros
             } else {
-                self.t.len() as u16
+                self.count
             };
         }
         // d ≤ span: the range index is below BUCKETS (`from_thresholds`' shift), the mask
@@ -192,6 +193,12 @@ impl Steps {
             i += 1;
         }
         i as u16
+    }
+
+    /// The thresholds, in order (for the tests: lookups read `scan` and `count`).
+    #[cfg(test)]
+    fn thresholds(&self) -> &[f64] {
+        &self.scan[..self.count as usize]
     }
 
     /// `q` of a pixel's three channels, all computed before any is stored. (The table's
@@ -218,7 +225,7 @@ mod tests {
         let steps = Steps::new(srgb8, 255).expect("srgb is monotonic near its steps");
         let mut v = 0.0f64;
         // Every threshold, its neighbours, and a dense sweep.
-        for &t in &steps.t {
+        for &t in steps.thresholds() {
             for b in t.to_bits().saturating_sub(3)..t.to_bits() + 3 {
                 assert_eq!(steps.q(at(b)), srgb8(at(b)), "{}", at(b));
             }
@@ -266,7 +273,12 @@ mod tests {
         for (i, (q, guess, max)) in cases.into_iter().enumerate() {
             let plain = Steps::new(q, max).expect("a monotonic curve");
             let near = Steps::new_near(q, guess, max).expect("a monotonic curve");
-            let bits = |s: &Steps| s.t.iter().map(|t| t.to_bits()).collect::<Vec<_>>();
+            let bits = |s: &Steps| {
+                s.thresholds()
+                    .iter()
+                    .map(|t| t.to_bits())
+                    .collect::<Vec<_>>()
+            };
             assert_eq!(bits(&plain), bits(&near), "case {i}");
         }
     }
