@@ -42,6 +42,15 @@ pub struct Torus {
     /// `(1 - HOLE_SLACK)·(major - minor)²` in the unit-scaled variables, or -1 where the hole
     /// test is not used (see `Torus::setup`).
     hole2: f64,
+    /// `setup`'s constants of the torus, worked out once with the same operations instead of
+    /// on every ray (two divisions and three products of its chain): the bounding radius
+    /// `major + minor`, the radii in its units, their squares and `4·big²`.
+    scale: f64,
+    big: f64,
+    small: f64,
+    big2: f64,
+    small2: f64,
+    r2: f64,
 }
 
 impl Torus {
@@ -69,6 +78,12 @@ impl Torus {
             sturm,
             empty,
             hole2,
+            scale,
+            big,
+            small,
+            big2: big * big,
+            small2: small * small,
+            r2: 4.0 * big * big,
         }
     }
 
@@ -141,10 +156,10 @@ impl Torus {
         if !(len > 0.0 && len.is_finite()) {
             return None;
         }
-        let scale = self.major + self.minor;
+        let scale = self.scale;
         let u = ray.dir / len;
         let o = ray.origin / scale;
-        let (big, small) = (self.major / scale, self.minor / scale);
+        let (big, small) = (self.big, self.small);
 
         // Interval of the ray (unit-scaled distance) inside the bounding sphere and slab.
         let b = o.dot(u);
@@ -181,12 +196,12 @@ impl Torus {
             return None;
         }
         let poly = if big == 0.0 {
-            let c = p.length_squared() - small * small;
+            let c = p.length_squared() - self.small2;
             Poly::Sphere([c, 2.0 * p.dot(u), 1.0])
         } else {
-            let k = p.length_squared() + big * big - small * small;
+            let k = p.length_squared() + self.big2 - self.small2;
             let b = p.dot(u);
-            let r2 = 4.0 * big * big;
+            let r2 = self.r2;
             Poly::Quartic([
                 k * k - r2 * (p.x * p.x + p.z * p.z),
                 4.0 * b * k - 2.0 * r2 * (p.x * u.x + p.z * u.z),
