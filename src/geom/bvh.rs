@@ -88,7 +88,7 @@ mod walk;
 
 use build::{centroid, clamp_box, Builder};
 use slabs::Pair;
-pub use walk::{ray_recip, Avx, Deep, Lanes, Recip, Sse};
+pub use walk::{ray_recip, Avx, Lanes, Recip, Sse};
 
 impl Bvh {
     /// Binned SAH (16 bins), leaves of at most 4 primitives; `bounds[i]` is primitive i's box.
@@ -210,11 +210,6 @@ impl Bvh {
             sp -= 1;
             at = stack[sp];
         }
-    }
-
-    /// How many primitives the tree holds: no walk offers more.
-    pub fn len(&self) -> usize {
-        self.prims.len()
     }
 
     /// Whether the tree holds no primitive (none given, or all with empty boxes).

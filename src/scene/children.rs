@@ -9,7 +9,7 @@
 //! Also here: a union's nearest crossing through its index, and the in-order scan of a small
 //! union's members that has none.
 
-use crate::geom::bvh::{Bvh, Deep, Recip};
+use crate::geom::bvh::Bvh;
 use crate::math::{Aabb, DVec3, Ray, Slabs};
 use crate::scene::csg_boxes::Search;
 use crate::scene::desc::CsgOp;
@@ -295,27 +295,24 @@ impl ChildIndex {
     /// Leaves whose box the ray may cross within (0, tmax], as `f(leaf, &mut tmax)`, which
     /// may lower `tmax` (inclusive: a leaf whose box starts exactly at `tmax` is still
     /// offered, so ties can be settled by leaf order).
-    /// `r` is the ray's `Recip`, which callers share with their own box tests. The walks here
-    /// test many nodes a ray (~20 in whiltile's unions), so they pick each axis's faces once
-    /// per ray (`Deep`).
-    pub fn traverse(&self, ray: &Ray, r: &Recip, tmax: f64, mut f: impl FnMut(usize, &mut f64)) {
+    pub fn traverse(&self, ray: &Ray, tmax: f64, mut f: impl FnMut(usize, &mut f64)) {
         let mut t = tmax;
         for &i in &self.others {
             f(i as usize, &mut t);
         }
-        self.bvh.traverse_recip(Deep, ray, r, t, |i, t| {
+        self.bvh.traverse(ray, t, |i, t| {
             f(i, t);
             false
         });
     }
 
     /// Like `traverse` but stopping when `f` returns true.
-    pub fn any(&self, ray: &Ray, r: &Recip, tmax: f64, mut f: impl FnMut(usize) -> bool) -> bool {
+    pub fn any(&self, ray: &Ray, tmax: f64, mut f: impl FnMut(usize) -> bool) -> bool {
         if self.others.iter().any(|&i| f(i as usize)) {
             return true;
         }
         let mut found = false;
-        self.bvh.traverse_recip(Deep, ray, r, tmax, |i, _| {
+        self.bvh.traverse(ray, tmax, |i, _| {
             found = f(i);
             found
         });
@@ -327,20 +324,10 @@ impl ChildIndex {
     pub fn candidates(&self, ray: &Ray, tmax: f64, out: &mut Vec<u32>) {
         let start = out.len();
         out.extend_from_slice(&self.others);
-        // Room for every leaf first: a walk offers each at most once, and a `push` that may
-        // grow the vector is a call, around which the walk kept its node test's broadcasts
-        // on the stack and loaded them again at every node.
-        out.reserve(self.bvh.len());
-        let (spare, mut n) = (out.as_mut_ptr(), out.len());
-        self.bvh
-            .traverse_recip(Deep, ray, &Recip::of(ray), tmax, |i, _| {
-                // SAFETY: at most `bvh.len()` leaves are written, into the room reserved.
-                unsafe { spare.add(n).write(i as u32) };
-                n += 1;
-                false
-            });
-        // SAFETY: slots up to `n` are the old ones and those just written.
-        unsafe { out.set_len(n) };
+        self.bvh.traverse(ray, tmax, |i, _| {
+            out.push(i as u32);
+            false
+        });
         out[start..].sort_unstable();
     }
 
@@ -409,12 +396,9 @@ pub(crate) fn union_first_hit<'a>(
     tmax: f64,
     s: &mut Scratch<'a>,
 ) -> Option<SurfaceHit<'a>> {
-    // One reciprocal for the index's walk and the leaves' boxes (each made its own: three
-    // divisions and the finiteness tests again).
-    let r = Recip::of(ray);
-    let slabs = Slabs::known(ray.origin, r.inv, r.plain);
+    let slabs = Slabs::new(ray.origin, ray.dir.recip());
     let mut best: Option<(usize, SurfaceHit<'a>)> = None;
-    ix.traverse(ray, &r, tmax, |i, t| {
+    ix.traverse(ray, tmax, |i, t| {
         // An earlier member than the best so far also wins at the same distance.
         let limit = match &best {
             Some((bi, h)) if i < *bi => h.t.next_up(),

@@ -473,9 +473,8 @@ impl Object {
             true,
         ) = (&self.kind, self.clip.is_empty())
         {
-            let r = crate::geom::bvh::Recip::of(ray);
-            let slabs = Slabs::known(ray.origin, r.inv, r.plain);
-            return ix.any(ray, &r, tmax, |i| {
+            let slabs = Slabs::new(ray.origin, ray.dir.recip());
+            return ix.any(ray, tmax, |i| {
                 let c = ix.leaf(children, i);
                 slabs.hits(&c.bounds, tmax) && c.any_hit(ray, tmax, s)
             });

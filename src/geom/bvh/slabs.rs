@@ -352,76 +352,6 @@ impl Plain4 {
     }
 }
 
-/// `Plain2` with each axis's entering and leaving faces chosen once per ray, for walks that
-/// test many nodes a ray (a CSG node's index: whiltile's ~20 a walk). Along an axis the ray
-/// runs up (`inv > 0`), `lo`'s distance is the smaller of the two: `lo <= hi` in every stored
-/// box, so `o - lo >= o - hi` and, times the negative `-inv`, the order turns (rounding is
-/// monotonic; on a tie the two are equal numbers); down the axis it is `hi`'s. So each axis's
-/// `Plain2` minimum and maximum are the distances to the faces picked here, and the rest is
-/// `pair_crossing` on the same values: the mask and entry distances of `Plain2` (a zero's sign
-/// aside, which no comparison sees; unit test `the_plain_test_is_the_paired_test`). Six
-/// minima and maxima fewer a node, for ~10 instructions of set-up a ray; walk22 measured the
-/// same pick worse on mirror_spheres' shallow tree (3.75 nodes a ray), so only the deep
-/// walks take it.
-#[cfg(target_arch = "x86_64")]
-pub(super) struct Octant2 {
-    origin: [std::arch::x86_64::__m128d; 3],
-    neg_inv: [std::arch::x86_64::__m128d; 3],
-    /// Byte offsets in a `Pair` of each axis's entering faces and of its leaving faces.
-    near: [usize; 3],
-    far: [usize; 3],
-}
-
-#[cfg(target_arch = "x86_64")]
-impl Octant2 {
-    #[inline(always)]
-    pub(super) fn new(origin: DVec3, inv_dir: DVec3) -> Octant2 {
-        use std::arch::x86_64::_mm_set1_pd;
-        debug_assert!(Slabs2::new(origin, inv_dir).is_some_and(|s| !s.any_flat()));
-        // `lo[k]` lies at byte 16k of a `Pair`, `hi[k]` 48 bytes further.
-        let up = |k: usize| inv_dir[k] > 0.0;
-        let face = |k: usize, lo: bool| 16 * k + if lo { 0 } else { 48 };
-        // SAFETY: SSE2 is part of x86_64.
-        unsafe {
-            Octant2 {
-                origin: [
-                    _mm_set1_pd(origin.x),
-                    _mm_set1_pd(origin.y),
-                    _mm_set1_pd(origin.z),
-                ],
-                neg_inv: [
-                    _mm_set1_pd(-inv_dir.x),
-                    _mm_set1_pd(-inv_dir.y),
-                    _mm_set1_pd(-inv_dir.z),
-                ],
-                near: [face(0, up(0)), face(1, up(1)), face(2, up(2))],
-                far: [face(0, !up(0)), face(1, !up(1)), face(2, !up(2))],
-            }
-        }
-    }
-
-    /// `Plain2::hit_pair`: the same mask, the same entry distances as numbers.
-    #[inline(always)]
-    pub(super) fn hit_pair(&self, p: &Pair, tmax: f64) -> Crossing {
-        use std::arch::x86_64::*;
-        let faces = p as *const Pair as *const u8;
-        // SAFETY: SSE2 is part of x86_64; every offset is that of a 16-byte row `[f64; 2]` of
-        // the 16-byte aligned `Pair` (`new`), as `_mm_load_pd` needs.
-        unsafe {
-            let at = |off: usize| _mm_load_pd(faces.add(off) as *const f64);
-            let axis = |k: usize| {
-                let n = _mm_mul_pd(
-                    _mm_sub_pd(self.origin[k], at(self.near[k])),
-                    self.neg_inv[k],
-                );
-                let f = _mm_mul_pd(_mm_sub_pd(self.origin[k], at(self.far[k])), self.neg_inv[k]);
-                (n, f)
-            };
-            pair_crossing(axis(0), axis(1), axis(2), tmax)
-        }
-    }
-}
-
 /// Other targets take `Aabb::hit` for every ray.
 #[cfg(not(target_arch = "x86_64"))]
 pub(super) struct Slabs2;
@@ -455,19 +385,6 @@ impl Plain4 {
         Plain4
     }
     pub(super) unsafe fn hit_pair(&self, _: &Pair, _: f64) -> Crossing {
-        unreachable!()
-    }
-}
-
-#[cfg(not(target_arch = "x86_64"))]
-pub(super) struct Octant2;
-
-#[cfg(not(target_arch = "x86_64"))]
-impl Octant2 {
-    pub(super) fn new(_: DVec3, _: DVec3) -> Octant2 {
-        Octant2
-    }
-    pub(super) fn hit_pair(&self, _: &Pair, _: f64) -> Crossing {
         unreachable!()
     }
 }
@@ -736,13 +653,6 @@ mod tests {
             // sign may differ, which no comparison sees).
             let got = Plain2::new(origin, inv).hit_pair(&pair, tmax);
             assert_eq!(got.mask, want.mask, "k={k}");
-            // The faces picked per ray: `Plain2`'s answer to the bit but for a zero's sign.
-            let picked = Octant2::new(origin, inv).hit_pair(&pair, tmax);
-            assert_eq!(picked.mask, got.mask, "k={k}");
-            for b in 0..2 {
-                let (p, g) = (picked.near[b], got.near[b]);
-                assert!(p == g && (g == 0.0 || p.to_bits() == g.to_bits()), "k={k}");
-            }
             if crate::math::has_avx() {
                 // SAFETY: the CPU has AVX.
                 let wide = unsafe { Plain4::new(origin, inv).hit_pair(&pair, tmax) };

@@ -6,7 +6,7 @@ use std::mem::MaybeUninit;
 
 use crate::math::{DVec3, Ray};
 
-use super::slabs::{Crossing, Octant2, Plain2, Plain4, Slabs2};
+use super::slabs::{Crossing, Plain2, Plain4, Slabs2};
 use super::{Bvh, Node, STACK};
 
 /// `1.0 / ray.dir`, each component read on its own. Callers have usually just written the ray
@@ -64,9 +64,6 @@ impl Recip {
 /// the shadow ray's AVX copies); elsewhere its intrinsics would be calls.
 pub trait Lanes: Copy {
     const AVX: bool;
-    /// The faces each axis enters and leaves by picked once per ray (`Octant2`): for walks
-    /// that test many nodes a ray.
-    const DEEP: bool = false;
 }
 
 /// The x86-64-v2 node test (`Plain2`).
@@ -92,15 +89,6 @@ impl Lanes for Sse {
 
 impl Lanes for Avx {
     const AVX: bool = true;
-}
-
-/// The x86-64-v2 node test with the faces picked per ray (`Octant2`), for deep walks.
-#[derive(Clone, Copy)]
-pub struct Deep;
-
-impl Lanes for Deep {
-    const AVX: bool = false;
-    const DEEP: bool = true;
 }
 
 impl Bvh {
@@ -141,15 +129,10 @@ impl Bvh {
             if L::AVX {
                 // SAFETY: `L` is `Avx`, whose value says the CPU has AVX.
                 let s = unsafe { Plain4::new(origin, inv_dir) };
-                return self
-                    .walk::<false>(tmax, f, |n, tmax| unsafe { s.hit_pair(&n.boxes, tmax) });
-            }
-            if L::DEEP {
-                let s = Octant2::new(origin, inv_dir);
-                return self.walk::<true>(tmax, f, |n, tmax| s.hit_pair(&n.boxes, tmax));
+                return self.walk(tmax, f, |n, tmax| unsafe { s.hit_pair(&n.boxes, tmax) });
             }
             let s = Plain2::new(origin, inv_dir);
-            return self.walk::<false>(tmax, f, |n, tmax| s.hit_pair(&n.boxes, tmax));
+            return self.walk(tmax, f, |n, tmax| s.hit_pair(&n.boxes, tmax));
         }
         if self.prims.is_empty() {
             return;
@@ -160,7 +143,7 @@ impl Bvh {
         // copies (~30 instructions of every lights/soft shadow ray).
         if self.nodes.is_empty() {
             if self.root_box.hit(origin, inv_dir, tmax).is_some() {
-                self.walk::<false>(tmax, f, |_, _| Crossing::of(None, None));
+                self.walk(tmax, f, |_, _| Crossing::of(None, None));
             }
             return;
         }
@@ -178,7 +161,7 @@ impl Bvh {
         if root_missed {
             return;
         }
-        self.walk::<false>(tmax, f, |n, tmax| match &slabs {
+        self.walk(tmax, f, |n, tmax| match &slabs {
             Some(s) => s.hit_pair(&n.boxes, tmax),
             None => Crossing::of(
                 n.boxes.get(0).hit(origin, inv_dir, tmax).map(|t| t.0),
@@ -190,7 +173,7 @@ impl Bvh {
     /// `traverse_recip`'s walk from the root, each node's pair of boxes tested by `test` (which
     /// of them the ray crosses within tmax, and their entry distances).
     #[inline(always)]
-    fn walk<const BITS: bool>(
+    fn walk(
         &self,
         mut tmax: f64,
         mut f: impl FnMut(usize, &mut f64) -> bool,
@@ -218,59 +201,31 @@ impl Bvh {
                 // root is one only when `nodes` holds it (a tree with primitives).
                 let n = unsafe { self.nodes.get_unchecked(at.index as usize) };
                 let c = test(n, tmax);
-                // Bit 0: the first child's box is crossed, bit 1: the second's. The deep walks
-                // test it bit by bit: as a `match`, LLVM makes a jump table, whose load of the
-                // target waits for the mask; the shallow walks (`Scene::first_hit`'s) ran ~16
-                // instructions a ray more that way (camera/perspective), so keep the table.
-                if BITS {
-                    if c.mask & 1 != 0 {
-                        if c.mask & 2 != 0 {
-                            let (ta, tb) = (c.near[0], c.near[1]);
-                            let (near, far, tfar) = if ta <= tb {
-                                (n.child[0], n.child[1], tb)
-                            } else {
-                                (n.child[1], n.child[0], ta)
-                            };
-                            if sp < STACK {
-                                stack[sp].write((far, tfar));
-                                sp += 1;
-                            }
-                            at = near;
-                            continue;
+                // Bit 0: the first child's box is crossed, bit 1: the second's.
+                match c.mask {
+                    3 => {
+                        let (ta, tb) = (c.near[0], c.near[1]);
+                        let (near, far, tfar) = if ta <= tb {
+                            (n.child[0], n.child[1], tb)
+                        } else {
+                            (n.child[1], n.child[0], ta)
+                        };
+                        if sp < STACK {
+                            stack[sp].write((far, tfar));
+                            sp += 1;
                         }
+                        at = near;
+                        continue;
+                    }
+                    1 => {
                         at = n.child[0];
                         continue;
                     }
-                    if c.mask & 2 != 0 {
+                    2 => {
                         at = n.child[1];
                         continue;
                     }
-                } else {
-                    match c.mask {
-                        3 => {
-                            let (ta, tb) = (c.near[0], c.near[1]);
-                            let (near, far, tfar) = if ta <= tb {
-                                (n.child[0], n.child[1], tb)
-                            } else {
-                                (n.child[1], n.child[0], ta)
-                            };
-                            if sp < STACK {
-                                stack[sp].write((far, tfar));
-                                sp += 1;
-                            }
-                            at = near;
-                            continue;
-                        }
-                        1 => {
-                            at = n.child[0];
-                            continue;
-                        }
-                        2 => {
-                            at = n.child[1];
-                            continue;
-                        }
-                        _ => {}
-                    }
+                    _ => {}
                 }
             }
             loop {
