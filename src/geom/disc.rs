@@ -5,7 +5,7 @@
 
 use crate::geom::cylinder::circle_extent;
 use crate::geom::{Hit, Shape};
-use crate::math::{Aabb, DVec3, Ray, EPSILON};
+use crate::math::{dot_xy_z, Aabb, DVec3, Ray, EPSILON};
 
 #[derive(Clone, Copy, Debug)]
 pub struct Disc {
@@ -72,8 +72,11 @@ impl Shape for Disc {
         self.hit_t(ray).filter(|&t| t < tmax).map(Hit::new)
     }
 
+    /// `normal · (p - center) < 0` by `dot_xy_z` (a load of p that the caller's stores can
+    /// forward). A zero normal needs no test of its own: its products are zeros or NaN,
+    /// never below zero.
     fn inside(&self, p: DVec3) -> bool {
-        self.normal != DVec3::ZERO && self.normal.dot(p - self.center) < 0.0
+        dot_xy_z(self.normal, p - self.center) < 0.0
     }
 
     fn normal(&self, _p: DVec3, _hit: &Hit) -> DVec3 {

@@ -4,7 +4,7 @@
 //! `plane { 2*y, 4 }` is the plane y = 2. The normal points to the outside.
 
 use crate::geom::{Hit, Shape};
-use crate::math::{Aabb, DVec3, Ray, EPSILON};
+use crate::math::{dot_xy_z, Aabb, DVec3, Ray, EPSILON};
 
 #[derive(Clone, Copy, Debug)]
 pub struct Plane {
@@ -80,8 +80,11 @@ impl Shape for Plane {
         self.hit_t(ray).filter(|&t| t < tmax).map(Hit::new)
     }
 
+    /// `normal · p < distance` by `dot_xy_z` (a load of p that the caller's stores can
+    /// forward). A degenerate plane (zero normal, zero distance) needs no test of its own:
+    /// its products are zeros (or NaN for an infinite `p`), never below zero.
     fn inside(&self, p: DVec3) -> bool {
-        self.normal != DVec3::ZERO && self.normal.dot(p) < self.distance
+        dot_xy_z(self.normal, p) < self.distance
     }
 
     fn normal(&self, _p: DVec3, _hit: &Hit) -> DVec3 {
