@@ -7,7 +7,7 @@
 use std::cell::Cell;
 
 use crate::geom::Hit;
-use crate::math::{Aabb, DVec3, Ray};
+use crate::math::{DVec3, Ray};
 use crate::scene::children::ChildIndex;
 use crate::scene::desc::CsgOp;
 use crate::scene::faces::{self, Face, Faces};
@@ -37,33 +37,12 @@ pub(super) fn member_wants(
 ) -> bool {
     let inside = match faces.and_then(|f| f.get(j)) {
         // `Object::inside` of a leaf, with the face's test for its shape's.
-        Some(f) if holds(&o.bounds, p) => f.inside(p) != o.inverse,
+        Some(f) if o.bounds.holds(p) => f.inside(p) != o.inverse,
         Some(_) => o.inverse,
-        // `Object::inside`'s own leaf path, with the bounds test below.
-        None => match (&o.kind, o.clip.is_empty()) {
-            (ObjKind::Shape(s, _), true) if holds(&o.bounds, p) => {
-                s.inside(o.local_point(p)) != o.inverse
-            }
-            (ObjKind::Shape(_, _), true) => o.inverse,
-            _ => o.inside(p),
-        },
+        // A plain leaf's answer inlined here (`Object::inside` may be out of line).
+        None => o.leaf_inside(p).unwrap_or_else(|| o.inside(p)),
     };
     inside == want_inside(op, j)
-}
-
-/// `b.contains(p)` (`Aabb::contains`) by six scalar comparisons, each false for a NaN as
-/// there. By time: `Aabb::contains` inlined here read `p`'s y and z as one 16-byte load from
-/// the copy of `p` made for the shape's call, stored as x-y and z, and that load cannot be
-/// forwarded from two stores (a stall of ~30 % of `csg_keeps`' own samples on
-/// objects/csg/cliptst2).
-#[inline(always)]
-fn holds(b: &Aabb, p: DVec3) -> bool {
-    (p.x >= b.min.x)
-        & (p.y >= b.min.y)
-        & (p.z >= b.min.z)
-        & (p.x <= b.max.x)
-        & (p.y <= b.max.y)
-        & (p.z <= b.max.z)
 }
 
 /// Calls `f(member, i, s)` for every member of a CSG node a ray may cross within `tmax`: all of

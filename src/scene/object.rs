@@ -426,16 +426,22 @@ impl Object {
     /// Whether `p` is inside this object (`inverse` and `clipped_by` applied).
     #[inline]
     pub fn inside(&self, p: DVec3) -> bool {
-        // A leaf without clipping, the common CSG member: answered inline in the callers'
-        // loops (`csg_keeps`), without the frame of the recursive function below. The same
-        // tests as there: its bounds, the point in object space, the shape's own test.
-        if let (ObjKind::Shape(s, _), true) = (&self.kind, self.clip.is_empty()) {
-            if !self.bounds.contains(p) {
-                return self.inverse;
+        self.leaf_inside(p).unwrap_or_else(|| self.inside_node(p))
+    }
+
+    /// `inside` of a leaf without clipping, the common CSG member, answered inline in the
+    /// callers' loops (`inside`, `csg_keeps`) without the frame of the recursive
+    /// `inside_node`; None for any other object. The same tests as there: its bounds, the
+    /// point in object space, the shape's own test.
+    #[inline(always)]
+    pub(super) fn leaf_inside(&self, p: DVec3) -> Option<bool> {
+        match (&self.kind, self.clip.is_empty()) {
+            (ObjKind::Shape(s, _), true) if self.bounds.holds(p) => {
+                Some(s.inside(self.local_point(p)) != self.inverse)
             }
-            return s.inside(self.local_point(p)) != self.inverse;
+            (ObjKind::Shape(_, _), true) => Some(self.inverse),
+            _ => None,
         }
-        self.inside_node(p)
     }
 
     /// `inside` of a CSG node or a clipped leaf.

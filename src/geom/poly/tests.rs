@@ -246,8 +246,6 @@ fn low_roots_are_roots_ins() {
     }
 }
 
-/// The shortened Horner loops give the full loops' bits: random coefficients (zeros,
-/// signed zeros and huge values among them) at random, zero, huge and infinite points.
 /// A value's bits, every NaN as one: which NaN an operation on two NaNs (or a NaN and an
 /// invalid product) gives depends on the operands' order, which the optimiser may swap in a
 /// commutative product (`cargo test --release` differed from the test profile here), and no
@@ -260,6 +258,8 @@ fn same_bits(v: f64) -> u64 {
     }
 }
 
+/// The shortened Horner loops give the full loops' bits: random coefficients (zeros,
+/// signed zeros and huge values among them) at random, zero, huge and infinite points.
 #[test]
 fn shortened_horner_is_the_full_one() {
     let mut rng = crate::geom::test_rng::Lcg(3);
