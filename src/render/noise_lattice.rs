@@ -409,7 +409,7 @@ fn scalar_lanes(c: &Cell) -> f64 {
 #[path = "noise_scalar.rs"]
 mod scalar_lanes;
 #[cfg(target_arch = "x86_64")]
-use scalar_lanes::{granite_avx, scalar_into_avx, turbulence_avx};
+use scalar_lanes::{granite_avx, scalar_into_avx, turbulence_avx, wrinkles_avx};
 
 /// Granite's sum for generators 1 and 2 (`gen1`: the first) mapped in the lanes, or None
 /// without AVX (the caller then takes `scalar_into`'s values through memory).
@@ -419,6 +419,18 @@ pub fn granite(p: DVec3, gen1: bool) -> Option<f64> {
     if has_avx() {
         // SAFETY: AVX was detected.
         return Some(unsafe { granite_avx(p, gen1) });
+    }
+    None
+}
+
+/// Wrinkles' sum for generators 1 and 2 (`gen1`: the first) mapped in the lanes, or None
+/// without AVX (the caller then takes `scalar_into`'s values through memory).
+#[inline]
+pub fn wrinkles(p: DVec3, gen1: bool) -> Option<f64> {
+    #[cfg(target_arch = "x86_64")]
+    if has_avx() {
+        // SAFETY: AVX was detected.
+        return Some(unsafe { wrinkles_avx(p, gen1) });
     }
     None
 }

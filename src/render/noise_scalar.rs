@@ -438,3 +438,67 @@ unsafe fn one_value(p: DVec3, gen1: bool) -> f64 {
         }
     }
 }
+
+/// Wrinkles' ten octaves at `p` (generators 1 and 2; `gen1` picks the first):
+/// `noise::wrinkles`' value without its points and values going through memory. The
+/// octaves' points are `p·2ᵏ` as there, their walks and sums `scalar_into_avx`'s chunks
+/// (four, four and two points), and each lane maps its sum with the scalar code's
+/// operations in its order: the generator's value (`sum_noise`), the clamp to [0, 1], times
+/// the octave's weight 2⁻ᵏ⁻¹; the ten terms are added to 0 in octave order, as there.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[target_feature(enable = "avx")]
+pub(super) fn wrinkles_avx(p: DVec3, gen1: bool) -> f64 {
+    const WEIGHTS: [f64; 10] = [
+        0.5,
+        0.25,
+        0.125,
+        0.0625,
+        0.03125,
+        0.015625,
+        0.0078125,
+        0.00390625,
+        0.001953125,
+        0.0009765625,
+    ];
+    let mut cells = [const { MaybeUninit::<Corners>::uninit() }; 10];
+    let mut f = 1.0;
+    for c in cells.iter_mut() {
+        // SAFETY: this function only runs with AVX enabled.
+        c.write(unsafe { corners_avx(p * f) });
+        f *= 2.0;
+    }
+    // SAFETY: all ten were written just above; Corners is Copy.
+    let cells = unsafe { &*(cells.as_ptr() as *const [Corners; 10]) };
+    // SAFETY: this function only runs with AVX enabled.
+    unsafe {
+        let term4 = |s: __m256d, w: &[f64]| {
+            let v = clamp01!(
+                _mm256_max_pd,
+                _mm256_min_pd,
+                _mm256_set1_pd,
+                sum_noise4(s, gen1)
+            );
+            _mm256_mul_pd(_mm256_loadu_pd(w.as_ptr()), v)
+        };
+        let a = term4(sum_avx4(&cells[..4]), &WEIGHTS[..4]);
+        let b = term4(sum_avx4(&cells[4..8]), &WEIGHTS[4..8]);
+        let v = clamp01!(
+            _mm_max_pd,
+            _mm_min_pd,
+            _mm_set1_pd,
+            sum_noise2(sum_avx2(&cells[8], &cells[9]), gen1)
+        );
+        let c = _mm_mul_pd(_mm_loadu_pd(WEIGHTS[8..].as_ptr()), v);
+        let mut t = [0.0; 10];
+        _mm256_storeu_pd(t.as_mut_ptr(), a);
+        _mm256_storeu_pd(t[4..].as_mut_ptr(), b);
+        _mm_storeu_pd(t[8..].as_mut_ptr(), c);
+        let mut sum = 0.0;
+        for x in t {
+            sum += x;
+        }
+        sum
+    }
+}

@@ -140,8 +140,10 @@ fn local(nd: &Normal, lp: DVec3, ln: DVec3) -> DVec3 {
 fn slope(pat: &Pattern, map: Option<&[(f64, f64, f64)]>, lp: DVec3, accuracy: f64) -> DVec3 {
     // Warps and turbulence move the point once; the samples sit around the moved point.
     let centre = pattern::warped(pat, lp);
-    // The four samples' values together: a fractal steps their orbits at once.
-    let vs = pattern::values_warped4(pat, TETRA.map(|u| centre + ((lp + u * accuracy) - lp)));
+    // The four samples' values together: a fractal steps their orbits at once. By
+    // reference: passed by value, the array was copied in 16-byte pieces that straddled
+    // the points' 16 + 8-byte stores just made here, store-forwarding stalls (mist's brick).
+    let vs = pattern::values_warped4(pat, &TETRA.map(|u| centre + ((lp + u * accuracy) - lp)));
     // For a regular tetrahedron Σ uuᵀ = (4/3)·I, so this is the linear fit's gradient.
     let mut g = DVec3::ZERO;
     for (u, v) in TETRA.into_iter().zip(vs) {

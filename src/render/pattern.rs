@@ -393,27 +393,27 @@ fn agate(turb: f64, q: DVec3, t: f64) -> f64 {
 /// `values_warped4` of the noise patterns, whose samples' lattice walks go together; None
 /// for the others. Always inlined: its one caller's other checks had it moved out of line.
 #[inline(always)]
-fn noise_values4(pat: &Pattern, qs: [DVec3; 4]) -> Option<[f64; 4]> {
+fn noise_values4(pat: &Pattern, qs: &[DVec3; 4]) -> Option<[f64; 4]> {
     let gen = pat.noise_generator;
     let raw = match &pat.kind {
-        PatternKind::Bozo | PatternKind::Spotted => noise::noise4(qs, gen),
-        PatternKind::Dents => noise::noise4(qs, gen).map(|v| v.powi(3)),
-        PatternKind::Granite => noise::granite4(qs, gen),
+        PatternKind::Bozo | PatternKind::Spotted => noise::noise4(*qs, gen),
+        PatternKind::Dents => noise::noise4(*qs, gen).map(|v| v.powi(3)),
+        PatternKind::Granite => noise::granite4(*qs, gen),
         PatternKind::Agate { turb } => {
             let t = pat.turbulence.unwrap_or_default();
-            let ts = noise::turbulence4(qs, t.octaves, t.omega, t.lambda, gen);
+            let ts = noise::turbulence4(*qs, t.octaves, t.omega, t.lambda, gen);
             std::array::from_fn(|k| agate(*turb, qs[k], ts[k]))
         }
         PatternKind::Wood => match &pat.turbulence {
             Some(t) if t.amount != DVec3::ZERO => {
-                let vs = noise::turbulence_vec4(qs, t.octaves, t.omega, t.lambda);
+                let vs = noise::turbulence_vec4(*qs, t.octaves, t.omega, t.lambda);
                 std::array::from_fn(|k| wood(qs[k], t.amount, vs[k]))
             }
             _ => return None,
         },
         PatternKind::Marble => {
             let t = pat.turbulence?;
-            let ts = noise::turbulence4(qs, t.octaves, t.omega, t.lambda, gen);
+            let ts = noise::turbulence4(*qs, t.octaves, t.omega, t.lambda, gen);
             std::array::from_fn(|k| qs[k].x + t.amount.x * ts[k])
         }
         _ => return None,
@@ -437,7 +437,7 @@ fn tri(v: f64) -> f64 {
 
 /// `value_warped` at four points (a normal's samples): the same values, with z² + c
 /// fractals' orbits stepped together (`fractal2_lanes`).
-pub fn values_warped4(pat: &Pattern, qs: [DVec3; 4]) -> [f64; 4] {
+pub fn values_warped4(pat: &Pattern, qs: &[DVec3; 4]) -> [f64; 4] {
     if let PatternKind::Fractal(f) = &pat.kind {
         if f.magnet != 0 {
             return magnet_lanes4(f, qs.map(|q| (q.x, q.y))).map(|v| shape(pat, v));
@@ -461,17 +461,17 @@ pub fn values_warped4(pat: &Pattern, qs: [DVec3; 4]) -> [f64; 4] {
     let mut out = [0.0; 4];
     match &pat.kind {
         PatternKind::Gradient(a) => {
-            for (o, q) in out.iter_mut().zip(qs) {
+            for (o, &q) in out.iter_mut().zip(qs) {
                 *o = shape_inline(pat, gradient(q, *a));
             }
         }
         PatternKind::Radial => {
-            for (o, q) in out.iter_mut().zip(qs) {
+            for (o, &q) in out.iter_mut().zip(qs) {
                 *o = shape_inline(pat, radial(q));
             }
         }
         _ => {
-            for (o, q) in out.iter_mut().zip(qs) {
+            for (o, &q) in out.iter_mut().zip(qs) {
                 *o = value_warped(pat, q);
             }
         }
@@ -746,7 +746,7 @@ mod tests {
                     let c = DVec3::new(t.sin() * 3.0, t * 0.01, t.cos() - 2.0);
                     let qs = [0.0, 0.003, -0.004, 0.2].map(|d| c + DVec3::new(d, 2.0 * d, -d));
                     let want = qs.map(|q| value_warped(&p, q).to_bits());
-                    assert_eq!(values_warped4(&p, qs).map(f64::to_bits), want, "{kind:?}");
+                    assert_eq!(values_warped4(&p, &qs).map(f64::to_bits), want, "{kind:?}");
                 }
             }
         }
