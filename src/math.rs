@@ -380,8 +380,8 @@ impl Slabs {
         #[cfg(target_arch = "x86_64")]
         if self.clean {
             use std::arch::x86_64::*;
-            // SAFETY: SSE2 is part of x86_64; the store writes two doubles into a two-double
-            // array.
+            // SAFETY: SSE2 is part of x86_64; the volatile reads read initialised doubles
+            // through references.
             unsafe {
                 let axis = |o: f64, inv: f64, lo_a: f64, lo_b: f64, hi_a: f64, hi_b: f64| {
                     let (o, inv) = (_mm_set1_pd(o), _mm_set1_pd(inv));
@@ -389,10 +389,16 @@ impl Slabs {
                     let t1 = _mm_mul_pd(_mm_sub_pd(_mm_set_pd(hi_b, hi_a), o), inv);
                     (_mm_min_pd(t0, t1), _mm_max_pd(t0, t1))
                 };
-                let (o, inv) = (self.origin, self.inv_dir);
-                let (nx, fx) = axis(o.x, inv.x, a.min.x, b.min.x, a.max.x, b.max.x);
-                let (ny, fy) = axis(o.y, inv.y, a.min.y, b.min.y, a.max.y, b.max.y);
-                let (nz, fz) = axis(o.z, inv.z, a.min.z, b.min.z, a.max.z, b.max.z);
+                // Each component by an 8-byte load. The callers (a union's scan) build their
+                // `Slabs` just before, stored as the x-y pair and z it came in as; LLVM read
+                // y-z back as one 16-byte load spanning both stores, which the store buffer
+                // cannot forward (a fifth of `Object::first_hit`'s samples on
+                // camera/perspective). A volatile read keeps each load its own.
+                let (o, inv) = (&self.origin, &self.inv_dir);
+                let get = |v: &f64| std::ptr::read_volatile(v);
+                let (nx, fx) = axis(get(&o.x), get(&inv.x), a.min.x, b.min.x, a.max.x, b.max.x);
+                let (ny, fy) = axis(get(&o.y), get(&inv.y), a.min.y, b.min.y, a.max.y, b.max.y);
+                let (nz, fz) = axis(get(&o.z), get(&inv.z), a.min.z, b.min.z, a.max.z, b.max.z);
                 let near = _mm_max_pd(_mm_max_pd(nx, _mm_max_pd(ny, nz)), _mm_setzero_pd());
                 let far = _mm_min_pd(fx, _mm_min_pd(fy, fz));
                 // `far.min(tmax)`, which keeps `far` when `tmax` is NaN: minpd returns its

@@ -10,6 +10,7 @@
 //! union's members that has none.
 
 use crate::geom::bvh::Bvh;
+use crate::geom::Hit;
 use crate::math::{Aabb, DVec3, Ray, Slabs};
 use crate::scene::csg_boxes::Search;
 use crate::scene::desc::CsgOp;
@@ -345,6 +346,41 @@ impl ChildIndex {
     }
 }
 
+/// A copy of a crossing a call has just returned, field by field at the fields' own widths.
+/// The callee stores it field by field (`flip` as one byte, `part` as four, the others as
+/// eight, some pairs as sixteen); a copy of the whole struct read it as 8- and 16-byte pieces
+/// spanning several of those stores, which the store buffer cannot forward, so each such load
+/// waited for the callee's stores to reach the cache (a tenth of `Object::first_hit`'s samples
+/// on camera/perspective, in the inlined scan below). Volatile reads keep LLVM from merging
+/// the fields' loads back into those pieces.
+#[inline(always)]
+pub(crate) fn fresh_copy<'a>(h: &SurfaceHit<'a>) -> SurfaceHit<'a> {
+    use std::ptr::read_volatile as get;
+    // SAFETY: every read is of an initialised field through a reference.
+    unsafe {
+        SurfaceHit {
+            t: get(&h.t),
+            obj: get(&h.obj),
+            hit: fresh_hit(&h.hit),
+            flip: get(&h.flip),
+        }
+    }
+}
+
+/// `fresh_copy` of a shape's `Hit` (its `part` is stored as four bytes).
+#[inline(always)]
+pub(crate) fn fresh_hit(h: &Hit) -> Hit {
+    use std::ptr::read_volatile as get;
+    // SAFETY: every read is of an initialised field through a reference.
+    unsafe {
+        Hit {
+            t: get(&h.t),
+            part: get(&h.part),
+            uv: [get(&h.uv[0]), get(&h.uv[1])],
+        }
+    }
+}
+
 /// The nearest crossing of an unindexed union's members, scanned in order: the nearest, and of
 /// crossings at the same distance the earliest member's. Members' boxes are tested two at a
 /// time; the second is tested again when the first member's crossing lowered `tmax`, so each
@@ -362,14 +398,16 @@ pub(crate) fn union_scan_first_hit<'a>(
     for pair in &mut pairs {
         let (ha, mut hb) = slabs.hits2(&pair[0].bounds, &pair[1].bounds, tmax);
         if ha {
-            if let Some(h) = pair[0].first_hit(ray, tmax, s) {
+            if let Some(h) = &pair[0].first_hit(ray, tmax, s) {
+                let h = fresh_copy(h);
                 tmax = h.t;
                 best = Some(h);
                 hb = hb && slabs.hits(&pair[1].bounds, tmax);
             }
         }
         if hb {
-            if let Some(h) = pair[1].first_hit(ray, tmax, s) {
+            if let Some(h) = &pair[1].first_hit(ray, tmax, s) {
+                let h = fresh_copy(h);
                 tmax = h.t;
                 best = Some(h);
             }
@@ -377,7 +415,8 @@ pub(crate) fn union_scan_first_hit<'a>(
     }
     for c in pairs.remainder() {
         if slabs.hits(&c.bounds, tmax) {
-            if let Some(h) = c.first_hit(ray, tmax, s) {
+            if let Some(h) = &c.first_hit(ray, tmax, s) {
+                let h = fresh_copy(h);
                 tmax = h.t;
                 best = Some(h);
             }
@@ -409,7 +448,8 @@ pub(crate) fn union_first_hit<'a>(
         if !slabs.hits(&c.bounds, limit) {
             return;
         }
-        if let Some(h) = c.first_hit(ray, limit, s) {
+        if let Some(h) = &c.first_hit(ray, limit, s) {
+            let h = fresh_copy(h);
             *t = h.t;
             best = Some((i, h));
         }

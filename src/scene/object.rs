@@ -7,7 +7,7 @@ use std::sync::Arc;
 
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, Slabs, Transform};
-use crate::scene::children::{union_first_hit, union_scan_first_hit, ChildIndex};
+use crate::scene::children::{fresh_hit, union_first_hit, union_scan_first_hit, ChildIndex};
 use crate::scene::cull::{Range, Window};
 use crate::scene::desc::{CsgOp, MeshData, Texture};
 use crate::scene::faces::{self, Faces};
@@ -168,14 +168,15 @@ impl Object {
             ObjKind::Shape(shape, _) => {
                 let mut local = None;
                 let r = self.local_ray(ray, &mut local);
-                shape
-                    .intersect_first(r, tmax, &mut s.hits)
-                    .map(|hit| SurfaceHit {
-                        t: hit.t,
-                        obj: self,
-                        hit,
-                        flip: self.inverse,
-                    })
+                // Field by field (`fresh_hit`): the shape has just stored the crossing.
+                let found = shape.intersect_first(r, tmax, &mut s.hits);
+                let hit = fresh_hit(found.as_ref()?);
+                Some(SurfaceHit {
+                    t: hit.t,
+                    obj: self,
+                    hit,
+                    flip: self.inverse,
+                })
             }
             ObjKind::Csg {
                 op: CsgOp::Union,
