@@ -10,6 +10,7 @@
 //! adds a root only where the polynomial is zero to within its rounding error. So the answer
 //! "no root" is theirs to the bit.
 
+use super::eval;
 use crate::geom::bernstein::surely_no_root;
 
 /// Relative margin, against the size of the terms, that the polynomial's value must keep
@@ -60,10 +61,10 @@ pub fn surely_definite_quartic(c: &[f64; 5], lo: f64, hi: f64) -> bool {
             return true;
         }
         if x0 >= hi {
-            return surely_no_root(c, lo, hi);
+            return surely_no_root(c, lo, hi) || positive_around_near_well(&p, &a, lo, x0);
         }
         if !surely_no_root(c, lo, x0) {
-            return false;
+            return positive_around_near_well(&p, &a, lo, x0);
         }
         (x0, a, e)
     } else {
@@ -74,13 +75,94 @@ pub fn surely_definite_quartic(c: &[f64; 5], lo: f64, hi: f64) -> bool {
     };
     debug_assert!(center >= lo);
     // s >= 0 only: an odd term of the right sign only helps, and is dropped.
-    positive_for_u_ge_0(
+    let forward = positive_for_u_ge_0(
         a[4] - m * e[4],
         (m * e[3] - a[3]).max(0.0),
         a[2] - m * e[2],
         (m * e[1] - a[1]).max(0.0),
         a[0] - m * e[0],
+    );
+    forward || (center == x0 && positive_around_near_well(&p, &a, lo, x0))
+}
+
+/// Newton steps on `p'` towards the near well's floor from the guess: enough to centre the
+/// expansion of [`positive_around_near_well`] (the place need not be exact: any centre gives
+/// a valid answer, a good one a passing one).
+const WELL_STEPS: usize = 2;
+
+/// Whether `p` (`p[4] > 0`) is positive, by the margin, on the whole axis, by an expansion at
+/// the floor of the near well: for a ray that misses a quartic with two wells of different
+/// depth (objects/quartic/quarcyl: complex roots near 3.5 ± 0.4i and 273 ± 14i), neither
+/// the centroid `x0` nor the Bernstein test on `[lo, x0]` separates them, but at the near
+/// well's floor the linear term vanishes and the far well shows only as a large negative
+/// cubic term, which [`positive_by_quadratic_factor`] bounds on each half axis.
+///
+/// The centre: `p` expanded at `x0` (`a`, its cubic term nearly zero) is nearly
+/// `a4 s⁴ + a2 s² + ..`, whose wells lie near `s = ±sqrt(-a2 / 2a4)`; from the nearer one,
+/// a few Newton steps on `p'`.
+#[inline(never)]
+fn positive_around_near_well(p: &[f64; 5], a: &[f64; 5], lo: f64, x0: f64) -> bool {
+    // Two wells only where `4a4 s³ + 2a2 s + a1` has three real roots: `-8a2³ > 27a4·a1²`.
+    if !positive(-8.0 * a[2] * a[2] * a[2] - 27.0 * a[4] * a[1] * a[1]) {
+        return false;
+    }
+    let d = [p[1], 2.0 * p[2], 3.0 * p[3], 4.0 * p[4]];
+    let mut x = (x0 - (-a[2] / (2.0 * a[4])).max(0.0).sqrt()).max(lo);
+    for _ in 0..WELL_STEPS {
+        // A value at or below zero on the way answers at once (a ray that crosses the near
+        // well, most of those this test fails). Its chain runs beside the step's.
+        if !positive(eval(p, x)) {
+            return false;
+        }
+        let f = ((d[3] * x + d[2]) * x + d[1]) * x + d[0];
+        let df = (3.0 * d[3] * x + 2.0 * d[2]) * x + d[1];
+        if !positive(df) {
+            break;
+        }
+        x = (x - f / df).min(x0);
+    }
+    if !positive(eval(p, x)) {
+        return false;
+    }
+    let Some((a, e)) = shifted(p, x) else {
+        return false;
+    };
+    let m = 2.0 * MARGIN;
+    // Forward (s >= 0) and backward (s = -u, u >= 0: the odd terms change sign), each odd
+    // term at its own sign made worse by the margin.
+    positive_by_quadratic_factor(
+        a[4] - m * e[4],
+        (m * e[3] - a[3]).max(0.0),
+        a[2] - m * e[2],
+        (m * e[1] - a[1]).max(0.0),
+        a[0] - m * e[0],
+    ) && positive_by_quadratic_factor(
+        a[4] - m * e[4],
+        (m * e[3] + a[3]).max(0.0),
+        a[2] - m * e[2],
+        (m * e[1] + a[1]).max(0.0),
+        a[0] - m * e[0],
     )
+}
+
+/// `v > 0`, false for NaN (a test that fails on NaN).
+fn positive(v: f64) -> bool {
+    v > 0.0
+}
+
+/// Whether `q4 u⁴ - b3 u³ + q2 u² - b1 u + q0 > 0` for every `u >= 0` (`b3, b1 >= 0`), by
+/// `q4 u² - b3 u + q2 >= g = q2 - b3² / 4q4` (its least value, at `u = b3 / 2q4 >= 0`): the
+/// quartic is at least `g u² - b1 u + q0`, positive when `g, q0 > 0` and `b1² < 4 g q0`.
+/// Unlike [`positive_for_u_ge_0`] it pays for the cubic term only at the far well's place,
+/// which is what a centre at the near well's floor needs. Each rounded quantity is pushed
+/// by 1e-6 of its terms the safe way, far more than its rounding.
+fn positive_by_quadratic_factor(q4: f64, b3: f64, q2: f64, b1: f64, q0: f64) -> bool {
+    const SLACK: f64 = 1e-6;
+    if !(q4 > 0.0 && q0 > 0.0) {
+        return false;
+    }
+    let g = q2 - SLACK * q2.abs() - b3 * b3 / (4.0 * q4) * (1.0 + SLACK);
+    g > 0.0 && b1 * b1 * (1.0 + SLACK) < 4.0 * g * q0 * (1.0 - SLACK)
 }
 
 /// `p(x0 + s) = Σ a_k s^k` and the same shift of `Σ|p_j| y^j` to `|x0|`, `e`: the Horner
@@ -174,6 +256,60 @@ mod tests {
             }
         }
         assert!(certified > 20_000, "{certified}");
+    }
+
+    /// Two wells of different depth (quarcyl's misses: complex roots near 3.5 ± 0.4i and
+    /// 273 ± 14i, the interval from near 0 to Cauchy's bound) are certified by the expansion
+    /// at the near well, and every evaluation on a grid has the leading sign; moving the
+    /// near pair onto the axis (a double root, then two real roots) is not certified.
+    #[test]
+    fn two_wells_of_different_depth() {
+        let quartic = |m1: f64, w1: f64, m2: f64, w2: f64, k: f64| -> [f64; 5] {
+            let (p1, p2) = (
+                [m1 * m1 + w1 * w1, -2.0 * m1, 1.0],
+                [m2 * m2 + w2 * w2, -2.0 * m2, 1.0],
+            );
+            let mut c = [0.0; 5];
+            for i in 0..3 {
+                for j in 0..3 {
+                    c[i + j] += p1[i] * p2[j] * k;
+                }
+            }
+            c
+        };
+        let mut rng = Lcg(7);
+        let mut certified = 0;
+        for case in 0..4000 {
+            let m1 = 1.0 + rng.next() * 6.0;
+            let w1 = 0.05 + rng.next() * 0.8;
+            let m2 = 50.0 + rng.next() * 400.0;
+            let w2 = rng.next() * 30.0;
+            let k = if case % 2 == 0 { 1e-4 } else { -3.0 };
+            let c = quartic(m1, w1, m2, w2, k);
+            let hi = 1.0 + c[..4].iter().fold(0.0f64, |b, v| b.max(v.abs())) / c[4].abs();
+            let lo = rng.next() * 0.5;
+            if !surely_definite_quartic(&c, lo, hi) {
+                continue;
+            }
+            certified += 1;
+            assert!(roots_in_isolated(&c, lo, hi).is_empty(), "{c:?} {lo} {hi}");
+            let positive = c[4] > 0.0;
+            for i in 0..=2000 {
+                let x = lo + (m1 + 2.0 - lo) * (i as f64 + rng.next()) / 2001.0;
+                let v = eval(&c, x);
+                assert!(v != 0.0 && (v > 0.0) == positive, "{c:?} at {x}: {v}");
+            }
+        }
+        assert!(certified > 3000, "{certified}");
+        let c = quartic(3.5, 0.4, 273.0, 14.0, 1.0);
+        assert!(surely_definite_quartic(&c, 0.01, 1e4));
+        assert!(!surely_definite_quartic(
+            &quartic(3.5, 0.0, 273.0, 14.0, 1.0),
+            0.01,
+            1e4
+        ));
+        let real: [f64; 5] = from_roots(&[3.4, 3.6, 273.0, 274.0]).try_into().unwrap();
+        assert!(!surely_definite_quartic(&real, 0.01, 1e4));
     }
 
     #[test]
