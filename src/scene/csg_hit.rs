@@ -395,45 +395,56 @@ impl Object {
         if cull.is_some_and(|c| c.hit(ray.origin, ray.dir.recip(), tmax).is_none()) {
             return None;
         }
-        let mut order = [(0.0f64, 0u32); MAX_ALL];
+        // Order entries (`order_entry`: t's order key, member), moved by the insertion in
+        // 8-byte halves: as `(f64, u32)` they were stored as 8 + 4 bytes and moved as one
+        // 16-byte load, which waits for both stores (`sort_crossings`' stall).
+        let mut order = [0u128; MAX_ALL];
         let mut n = 0;
         for (k, f) in all.iter().enumerate().take(MAX_ALL) {
             if let Some(t) = f.as_ref().and_then(|f| f.hit(ray)).filter(|&t| t < tmax) {
-                // Later members go after equal `t`s: ties in member order.
+                // Later members go after equal `t`s: ties in member order (the member is the
+                // entry's low half, and larger than every member before it).
+                let e = order_entry(order_key(t), k as u32, 0);
                 let mut m = n;
-                while m > 0 && order[m - 1].0.total_cmp(&t).is_gt() {
+                while m > 0 && order[m - 1] > e {
                     order[m] = order[m - 1];
                     m -= 1;
                 }
-                order[m] = (t, k as u32);
+                order[m] = e;
                 n += 1;
             }
         }
         let mut rejecter = usize::MAX;
         let kept_cell = Cell::new(usize::MAX);
-        let &(t, i) = order[..n].iter().find(|&&(t, i)| {
-            let i = i as usize;
-            let p = ray.at(t);
-            if !faces::point_ok(p) {
-                return csg_keeps(op, i, children, None, Some(faces), p, &kept_cell);
-            }
-            let wants = |j: usize| {
-                all[j]
-                    .as_ref()
-                    .is_some_and(|f| (f.inside(p) != children[j].inverse) == want_inside(op, j))
-            };
-            // The face that turned the last crossing away first, as `csg_keeps` does.
-            if rejecter != i && rejecter < all.len() && !wants(rejecter) {
-                return false;
-            }
-            for j in 0..all.len() {
-                if j != i && j != rejecter && !wants(j) {
-                    rejecter = j;
+        // `order_key` is its own inverse: the entry's key gives back t's bits.
+        let t_of =
+            |e: u128| f64::from_bits(order_key(f64::from_bits((e >> 64) as u64 ^ 1 << 63)) as u64);
+        let (t, i) = order[..n]
+            .iter()
+            .map(|&e| (t_of(e), entry_place(e)))
+            .find(|&(t, i)| {
+                let i = i as usize;
+                let p = ray.at(t);
+                if !faces::point_ok(p) {
+                    return csg_keeps(op, i, children, None, Some(faces), p, &kept_cell);
+                }
+                let wants = |j: usize| {
+                    all[j]
+                        .as_ref()
+                        .is_some_and(|f| (f.inside(p) != children[j].inverse) == want_inside(op, j))
+                };
+                // The face that turned the last crossing away first, as `csg_keeps` does.
+                if rejecter != i && rejecter < all.len() && !wants(rejecter) {
                     return false;
                 }
-            }
-            true
-        })?;
+                for j in 0..all.len() {
+                    if j != i && j != rejecter && !wants(j) {
+                        rejecter = j;
+                        return false;
+                    }
+                }
+                true
+            })?;
         let c = &children[i as usize];
         Some(SurfaceHit {
             t,
