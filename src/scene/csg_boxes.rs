@@ -372,6 +372,7 @@ impl Object {
 mod tests {
     use super::*;
     use crate::geom::test_rng::Lcg;
+    use crate::scene::csg_hit::entry_place;
     use crate::scene::csg_hit::tests::built;
 
     /// `box_inside` is `Object::inside` and `box_hits` is `member_hits`, bit for bit, for box
@@ -423,7 +424,11 @@ mod tests {
                 inside += c.inside(p) as usize;
                 crate::scene::object::member_hits(c, None, &ray, tmax, &mut sa);
                 box_hits(c, b, &ray, tmax, &mut sb, j as u32);
-                let places: Vec<_> = sb.csg_order.iter().map(|e| e.1 as usize).collect();
+                let places: Vec<_> = sb
+                    .csg_order
+                    .iter()
+                    .map(|&e| entry_place(e) as usize)
+                    .collect();
                 assert_eq!(places, (0..sb.surface.len()).collect::<Vec<_>>());
                 sb.csg_order.clear();
                 let key = |h: &SurfaceHit| (h.t.to_bits(), h.hit.part, h.flip);

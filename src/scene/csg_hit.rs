@@ -46,12 +46,36 @@ pub(super) fn order_key(t: f64) -> i64 {
     b ^ (((b >> 63) as u64) >> 1) as i64
 }
 
-/// Sorts a search's crossings by (order key, place in the gather), the order
-/// `sort_unstable` gives them: no two entries share a place, so every sort gives this one
-/// order. A short list is sorted here by insertion, without the call into the library's
-/// sort (radiosity_37's walls sort 211 k lists, most of two to four crossings).
+/// A search's order entry: (order key, place in the gather, tag) packed into one integer whose
+/// order is the tuple's, the key in the high half (its sign bit flipped, so that unsigned order
+/// is the key's signed order), the place and the tag in the low. As an integer, the gather's
+/// pushes and the sort's loads and moves are all 8-byte halves: the tuple `(i64, u32, u32)`
+/// was pushed as 8 + 4 + 4 bytes and moved by the sort as one 16-byte load, which cannot be
+/// forwarded from the narrower stores still waiting behind the shapes' divisions (a stall of
+/// ~4 % of csg_first_hit's samples on incdemo/woods/wood_2).
 #[inline(always)]
-fn sort_crossings(order: &mut [(i64, u32, u32)]) {
+pub(super) fn order_entry(key: i64, place: u32, tag: u32) -> u128 {
+    ((key as u64 ^ 1 << 63) as u128) << 64 | (place as u128) << 32 | tag as u128
+}
+
+/// The place in the gather of an order entry (`order_entry`).
+#[inline(always)]
+pub(super) fn entry_place(e: u128) -> u32 {
+    (e >> 32) as u32
+}
+
+/// The tag of an order entry (`order_entry`).
+#[inline(always)]
+fn entry_tag(e: u128) -> u32 {
+    e as u32
+}
+
+/// Sorts a search's order entries, the order `sort_unstable` gives them: no two entries
+/// share a place, so every sort gives this one order, (order key, place). A short list is
+/// sorted here by insertion, without the call into the library's sort (radiosity_37's walls
+/// sort 211 k lists, most of two to four crossings).
+#[inline(always)]
+fn sort_crossings(order: &mut [u128]) {
     if order.len() > 8 {
         order.sort_unstable();
         return;
@@ -59,7 +83,7 @@ fn sort_crossings(order: &mut [(i64, u32, u32)]) {
     for k in 1..order.len() {
         let e = order[k];
         let mut m = k;
-        while m > 0 && (order[m - 1].0, order[m - 1].1) > (e.0, e.1) {
+        while m > 0 && order[m - 1] > e {
             order[m] = order[m - 1];
             m -= 1;
         }
@@ -73,11 +97,11 @@ fn member_at<'a>(children: &'a [Object], index: Option<&ChildIndex>, i: usize) -
 }
 
 /// Crossing `hit` of leaf `c` appended to `s.surface` as `take_hits` appends it, and its order
-/// entry (order key, place, `tag`) to `s.csg_order`.
+/// entry (order key, place, `tag`: `order_entry`) to `s.csg_order`.
 #[inline(always)]
 pub(super) fn push_crossing<'a>(c: &'a Object, hit: Hit, s: &mut Scratch<'a>, tag: u32) {
     s.csg_order
-        .push((order_key(hit.t), s.surface.len() as u32, tag));
+        .push(order_entry(order_key(hit.t), s.surface.len() as u32, tag));
     s.surface.push(SurfaceHit {
         t: hit.t,
         obj: c,
@@ -141,7 +165,8 @@ fn gather_hits<'a>(
             let from = s.surface.len();
             member_hits(c, face, ray, tmax, s);
             for j in from..s.surface.len() {
-                s.csg_order.push((order_key(s.surface[j].t), j as u32, tag));
+                s.csg_order
+                    .push(order_entry(order_key(s.surface[j].t), j as u32, tag));
             }
         }
     }
@@ -225,12 +250,13 @@ impl Object {
             },
         );
         let order = &mut s.csg_order[order_from..];
-        // By (t as `total_cmp` orders it, place in the gather): `j` differs between entries.
+        // By (t as `total_cmp` orders it, place in the gather): places differ between entries.
         sort_crossings(order);
         let rejecter = Cell::new(usize::MAX);
         let leaf_rejecter = Cell::new(usize::MAX);
         let clip = &self.clip[..];
-        let best = order.iter().find_map(|&(_, j, tag)| {
+        let best = order.iter().find_map(|&e| {
+            let (j, tag) = (entry_place(e), entry_tag(e));
             let t = s.surface[j as usize].t;
             // Without folding, tags are plain member numbers (a node may have more than
             // the tag's low bits hold).
@@ -369,45 +395,56 @@ impl Object {
         if cull.is_some_and(|c| c.hit(ray.origin, ray.dir.recip(), tmax).is_none()) {
             return None;
         }
-        let mut order = [(0.0f64, 0u32); MAX_ALL];
+        // Order entries (`order_entry`: t's order key, member), moved by the insertion in
+        // 8-byte halves: as `(f64, u32)` they were stored as 8 + 4 bytes and moved as one
+        // 16-byte load, which waits for both stores (`sort_crossings`' stall).
+        let mut order = [0u128; MAX_ALL];
         let mut n = 0;
         for (k, f) in all.iter().enumerate().take(MAX_ALL) {
             if let Some(t) = f.as_ref().and_then(|f| f.hit(ray)).filter(|&t| t < tmax) {
-                // Later members go after equal `t`s: ties in member order.
+                // Later members go after equal `t`s: ties in member order (the member is the
+                // entry's low half, and larger than every member before it).
+                let e = order_entry(order_key(t), k as u32, 0);
                 let mut m = n;
-                while m > 0 && order[m - 1].0.total_cmp(&t).is_gt() {
+                while m > 0 && order[m - 1] > e {
                     order[m] = order[m - 1];
                     m -= 1;
                 }
-                order[m] = (t, k as u32);
+                order[m] = e;
                 n += 1;
             }
         }
         let mut rejecter = usize::MAX;
         let kept_cell = Cell::new(usize::MAX);
-        let &(t, i) = order[..n].iter().find(|&&(t, i)| {
-            let i = i as usize;
-            let p = ray.at(t);
-            if !faces::point_ok(p) {
-                return csg_keeps(op, i, children, None, Some(faces), p, &kept_cell);
-            }
-            let wants = |j: usize| {
-                all[j]
-                    .as_ref()
-                    .is_some_and(|f| (f.inside(p) != children[j].inverse) == want_inside(op, j))
-            };
-            // The face that turned the last crossing away first, as `csg_keeps` does.
-            if rejecter != i && rejecter < all.len() && !wants(rejecter) {
-                return false;
-            }
-            for j in 0..all.len() {
-                if j != i && j != rejecter && !wants(j) {
-                    rejecter = j;
+        // `order_key` is its own inverse: the entry's key gives back t's bits.
+        let t_of =
+            |e: u128| f64::from_bits(order_key(f64::from_bits((e >> 64) as u64 ^ 1 << 63)) as u64);
+        let (t, i) = order[..n]
+            .iter()
+            .map(|&e| (t_of(e), entry_place(e)))
+            .find(|&(t, i)| {
+                let i = i as usize;
+                let p = ray.at(t);
+                if !faces::point_ok(p) {
+                    return csg_keeps(op, i, children, None, Some(faces), p, &kept_cell);
+                }
+                let wants = |j: usize| {
+                    all[j]
+                        .as_ref()
+                        .is_some_and(|f| (f.inside(p) != children[j].inverse) == want_inside(op, j))
+                };
+                // The face that turned the last crossing away first, as `csg_keeps` does.
+                if rejecter != i && rejecter < all.len() && !wants(rejecter) {
                     return false;
                 }
-            }
-            true
-        })?;
+                for j in 0..all.len() {
+                    if j != i && j != rejecter && !wants(j) {
+                        rejecter = j;
+                        return false;
+                    }
+                }
+                true
+            })?;
         let c = &children[i as usize];
         Some(SurfaceHit {
             t,

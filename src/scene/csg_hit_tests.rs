@@ -1,7 +1,7 @@
 //! Unit tests of `scene::csg_hit`: the searches against `all_hits` bit for bit, the short
 //! lists' sort against `sort_unstable`.
 
-use super::sort_crossings;
+use super::{order_entry, sort_crossings};
 use crate::geom::test_rng::Lcg;
 use crate::math::{DVec3, Ray, EPSILON};
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
@@ -22,7 +22,8 @@ fn key(h: &SurfaceHit) -> (u64, bool, u32) {
 }
 
 /// The short lists' insertion sort gives `sort_unstable`'s order: lists of every length
-/// up to past the cut-over, with ties in the key (and in the tag) broken by the place.
+/// up to past the cut-over, with ties in the key (and in the tag) broken by the place, the
+/// entries packed by `order_entry` (whose integer order must be the tuple's).
 #[test]
 fn crossings_sort_as_sort_unstable() {
     let mut rng = Lcg(3);
@@ -33,13 +34,24 @@ fn crossings_sort_as_sort_unstable() {
             for k in (1..places.len()).rev() {
                 places.swap(k, (rng.next() * (k + 1) as f64) as usize % (k + 1));
             }
-            let mut a: Vec<(i64, u32, u32)> = places
+            let b: Vec<(i64, u32, u32)> = places
                 .iter()
-                .map(|&j| ((rng.next() * 4.0) as i64 - 2, j, (rng.next() * 3.0) as u32))
+                .map(|&j| ((rng.next() * 5.0) as i64 - 2, j, (rng.next() * 3.0) as u32))
                 .collect();
-            let mut b = a.clone();
+            // Keys across the sign and at the ends, as `order_key` gives them.
+            let b: Vec<_> = b
+                .into_iter()
+                .map(|(k, j, g)| match k {
+                    -2 => (i64::MIN, j, g),
+                    2 => (i64::MAX, j, g),
+                    k => (k, j, g),
+                })
+                .collect();
+            let mut a: Vec<u128> = b.iter().map(|&(k, j, g)| order_entry(k, j, g)).collect();
+            let mut b = b;
             sort_crossings(&mut a);
             b.sort_unstable();
+            let b: Vec<u128> = b.iter().map(|&(k, j, g)| order_entry(k, j, g)).collect();
             assert_eq!(a, b);
         }
     }

@@ -32,8 +32,8 @@ pub struct Scratch<'a> {
     /// after their parent's and truncate back).
     pub members: Vec<u32>,
     /// A CSG node's member crossings for `first_hit`, nearest first: (t's order key, where in
-    /// `surface`, member). A stack like `members`.
-    pub csg_order: Vec<(i64, u32, u32)>,
+    /// `surface`, member), packed as `csg_hit::order_entry`. A stack like `members`.
+    pub csg_order: Vec<u128>,
     /// Per light, the opaque object that last blocked a shadow ray to it (POV-Ray's shadow
     /// cache): asked first, since neighbouring points are mostly shadowed by the same object.
     pub blockers: Vec<Option<&'a Object>>,
