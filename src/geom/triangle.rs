@@ -116,6 +116,11 @@ impl Shape for Triangle {
     fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
         self.geom?.intersect(ray, tmax).map(hit_of)
     }
+    /// Without the `Hit` and the default's call of `intersect_first` (cornell's shadow rays
+    /// test ~2 triangles each).
+    fn any_hit(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> bool {
+        self.geom.is_some_and(|g| g.intersect(ray, tmax).is_some())
+    }
     fn inside(&self, _p: DVec3) -> bool {
         false
     }
