@@ -318,12 +318,15 @@ impl Cache {
         // A normal no entry holds takes the last one, which lists nothing (a curved surface's
         // normals never come back); when its next lookup faces the same way it swaps into its
         // own entry, whose lists go. The normals of a room keep their lists through the
-        // curved surfaces met between them.
+        // curved surfaces met between them. Lookups of deeper levels (the gathering rays'
+        // hits, scattered over the scene) always take the probation entry and list nothing:
+        // listing their cells cost more than reading the lists back saved (cornell, irr27:
+        // 0.911 of the time by interleaved medians).
         let (ways, probation) = memo.entries.split_at_mut(MEMO_WAYS);
         let probation = &mut probation[0];
-        let fresh = if holds(&ways[slot]) {
+        let fresh = if level == 1 && holds(&ways[slot]) {
             false
-        } else if holds(probation) {
+        } else if level == 1 && holds(probation) {
             std::mem::swap(&mut ways[slot], probation);
             false
         } else {
