@@ -197,7 +197,7 @@ fn one_plain_layer_with_radiosity_is_the_layer_loop() {
                 n2,
                 entering,
                 obj: h.obj,
-                uv: None,
+                uv: &None,
                 path,
             };
             let deeper = path.rad_level > 0;

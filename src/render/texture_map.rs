@@ -45,7 +45,7 @@ fn blend_in(
         _ => p,
     };
     let Some(tp) = &tex.pattern else {
-        f(plain_colour(tex, p, uv, space, quick), tex, space, weight);
+        f(plain_colour(tex, p, &uv, space, quick), tex, space, weight);
         return;
     };
     // Below a uv-mapped texture the uv point has become the point and goes through the
@@ -112,15 +112,18 @@ fn blend_in(
 
 /// A plain texture's colour at world point `p`, as `blend` hands it on (`space` as there):
 /// what shading calls for a plain layer without going through `blend`'s callback.
+///
+/// `uv` by reference, its tag read alone: passed by value it was copied by 16-byte loads
+/// over the 8-byte tag store just made (a store-forwarding stall on every patterned hit).
 pub fn plain_colour(
     tex: &Texture,
     p: DVec3,
-    uv: Option<DVec3>,
+    uv: &Option<DVec3>,
     space: &Transform,
     quick: bool,
 ) -> Rgbft {
     let p = match uv {
-        Some(uvp) if tex.uv_mapping => uvp,
+        Some(uvp) if tex.uv_mapping => *uvp,
         _ => p,
     };
     if let (Some(q), true) = (tex.pigment.quick, quick) {
@@ -133,13 +136,13 @@ pub fn plain_colour(
             if let Some(s) = pattern::surface() {
                 let pn = normal::perturb_in(nd, space, p, s.normal);
                 pattern::set_surface(Some(pattern::Surface { normal: pn, ..s }));
-                let c = pigment::eval(&tex.pigment, pigment_point(tex, p, uv));
+                let c = pigment::eval(&tex.pigment, pigment_point(tex, p, *uv));
                 pattern::set_surface(Some(s));
                 return c;
             }
         }
     }
-    pigment::eval(&tex.pigment, pigment_point(tex, p, uv))
+    pigment::eval(&tex.pigment, pigment_point(tex, p, *uv))
 }
 
 /// Whether some plain texture `tex` (one layer) can be made of has a reflection.

@@ -565,6 +565,7 @@ impl<'a> Tracer<'a> {
             wave => super::dispersion::ior(obj, wave),
         };
         let (n1, n2) = if entering { (1.0, ior) } else { (ior, 1.0) };
+        let uv = &uv;
         let view = move || HitView {
             p,
             dir,
