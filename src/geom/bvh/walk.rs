@@ -113,7 +113,18 @@ impl Bvh {
         tmax: f64,
         f: impl FnMut(usize, &mut f64) -> bool,
     ) {
-        let origin = ray.origin;
+        // The origin's coordinates one by one: a ray built just before the walk (a shadow or
+        // reflected ray) was stored as x-y (16 bytes) and z (8), and `Plain4::new`'s rows read
+        // y-z as one 16-byte load across both stores, which the store buffer cannot forward
+        // (10-13 % of `shadow_avx`'s samples on radiosity/cornell and lights/arealit1).
+        // SAFETY: the pointers come from references to initialised doubles.
+        let origin = unsafe {
+            DVec3::new(
+                std::ptr::read_volatile(&ray.origin.x),
+                std::ptr::read_volatile(&ray.origin.y),
+                std::ptr::read_volatile(&ray.origin.z),
+            )
+        };
         let inv_dir = r.inv;
         // Nearly every ray: the walk compiled for the paired test without the flat axes' tests,
         // and without the root's own box. The root is then a node, whose two children's boxes
