@@ -151,21 +151,15 @@ fn box_inside(o: &Object, m: &BoxMember, p: DVec3) -> bool {
     m.shape.inside(p) != o.inverse
 }
 
-/// `member_hits(c, None, ray, tmax, s)` of a member `c` whose shape is the box `b`: its
-/// crossings in `intersect_all`'s order, those below `tmax` appended as `take_hits` does,
-/// each with its order entry tagged `tag` in `s.csg_order` (`csg_hit::push_crossing`).
+/// `member_hits(c, None, ray, tmax, s)` of a member `c` whose shape is the box `m`: its
+/// crossings in `intersect_all`'s order, those below `tmax` gathered as `csg_first_hit`
+/// gathers a leaf's (`csg_hit::push_crossing`: the `Hit` in `s.csg_hits`, its order entry
+/// tagged `tag` in `s.csg_order`; the surface hit, of `c`, built only if it is kept).
 #[inline(always)]
-pub(super) fn box_hits<'a>(
-    c: &'a Object,
-    m: &BoxMember,
-    ray: &Ray,
-    tmax: f64,
-    s: &mut Scratch<'a>,
-    tag: u32,
-) {
+pub(super) fn box_hits(m: &BoxMember, ray: &Ray, tmax: f64, s: &mut Scratch<'_>, tag: u32) {
     m.shape.each_crossing(ray, |hit| {
         if hit.t < tmax {
-            push_crossing(c, hit, s, tag);
+            push_crossing(hit, s, tag);
         }
     });
 }
@@ -423,20 +417,28 @@ mod tests {
                 );
                 inside += c.inside(p) as usize;
                 crate::scene::object::member_hits(c, None, &ray, tmax, &mut sa);
-                box_hits(c, b, &ray, tmax, &mut sb, j as u32);
+                box_hits(b, &ray, tmax, &mut sb, j as u32);
+                // Records in `csg_hits`, their places in gather order (`push_crossing`).
                 let places: Vec<_> = sb
                     .csg_order
                     .iter()
                     .map(|&e| entry_place(e) as usize)
                     .collect();
-                assert_eq!(places, (0..sb.surface.len()).collect::<Vec<_>>());
+                assert_eq!(
+                    places,
+                    (0..sb.csg_hits.len()).map(|k| k << 1).collect::<Vec<_>>()
+                );
                 sb.csg_order.clear();
                 let key = |h: &SurfaceHit| (h.t.to_bits(), h.hit.part, h.flip);
                 let a: Vec<_> = sa.surface.iter().map(key).collect();
-                let b: Vec<_> = sb.surface.iter().map(key).collect();
+                let b: Vec<_> = sb
+                    .csg_hits
+                    .iter()
+                    .map(|&hit| (hit.t.to_bits(), hit.part, c.inverse))
+                    .collect();
                 assert_eq!(a, b, "member {j}, ray {k}");
                 sa.surface.clear();
-                sb.surface.clear();
+                sb.csg_hits.clear();
             }
         }
         assert!(inside > 10_000, "{inside}");

@@ -64,6 +64,24 @@ pub(super) fn entry_place(e: u128) -> u32 {
     (e >> 32) as u32
 }
 
+/// The `t` an order entry's key was made from (`order_key` is its own inverse), bit for bit.
+#[inline(always)]
+fn entry_t(e: u128) -> f64 {
+    f64::from_bits(order_key(f64::from_bits((e >> 64) as u64 ^ 1 << 63)) as u64)
+}
+
+/// A search's place for its next crossing: twice the crossing's index in `s.csg_hits` (the
+/// order of the gather), plus one when the crossing was listed in `s.surface` (`LISTED`).
+/// Places are unique and grow with the gather, as the tie order needs.
+#[inline(always)]
+fn next_place(s: &Scratch<'_>) -> u32 {
+    (s.csg_hits.len() as u32) << 1
+}
+
+/// The low bit of a place (`next_place`): the crossing's surface hit is in `s.surface`, at
+/// the `part` of its `s.csg_hits` record.
+const LISTED: u32 = 1;
+
 /// The tag of an order entry (`order_entry`).
 #[inline(always)]
 fn entry_tag(e: u128) -> u32 {
@@ -96,18 +114,15 @@ fn member_at<'a>(children: &'a [Object], index: Option<&ChildIndex>, i: usize) -
     index.map_or(&children[i], |ix| ix.leaf(children, i))
 }
 
-/// Crossing `hit` of leaf `c` appended to `s.surface` as `take_hits` appends it, and its order
-/// entry (order key, place, `tag`: `order_entry`) to `s.csg_order`.
+/// Crossing `hit` of a leaf member (or folded leaf) appended to `s.csg_hits`, and its order
+/// entry (order key, place, `tag`: `order_entry`) to `s.csg_order`. Its surface hit (the leaf,
+/// `hit`, the leaf's `inverse`, as `take_hits` would list it) is built only if it is kept:
+/// the 32-byte `Hit` is stored instead of a 56-byte `SurfaceHit` for every crossing.
 #[inline(always)]
-pub(super) fn push_crossing<'a>(c: &'a Object, hit: Hit, s: &mut Scratch<'a>, tag: u32) {
+pub(super) fn push_crossing(hit: Hit, s: &mut Scratch<'_>, tag: u32) {
     s.csg_order
-        .push(order_entry(order_key(hit.t), s.surface.len() as u32, tag));
-    s.surface.push(SurfaceHit {
-        t: hit.t,
-        obj: c,
-        hit,
-        flip: c.inverse,
-    });
+        .push(order_entry(order_key(hit.t), next_place(s), tag));
+    s.csg_hits.push(hit);
 }
 
 /// `each_member`, with the loop of a node without index here, where `f` can be inlined in it.
@@ -130,11 +145,13 @@ fn each_member_inline<'a>(
     }
 }
 
-/// `member_hits(c, face, ray, tmax, s)` with each crossing's order entry `(order key, place
-/// in s.surface, tag)` pushed to `s.csg_order` as it is listed: a leaf without face, clip or
-/// window (`member_hits`' own case) takes the shape's crossings below `tmax` in one pass
-/// instead of listing them (`take_hits`) and reading them back for their keys. The same
-/// surface hits in the same places, and the same entries in the same order.
+/// `member_hits(c, face, ray, tmax, s)` with each crossing's order entry `(order key, place,
+/// tag)` pushed to `s.csg_order` as it is listed: a leaf without face, clip or window
+/// (`member_hits`' own case) has the shape list its crossings into `s.csg_hits` itself, and
+/// those below `tmax` get entries (their surface hits are built from the leaf and the record
+/// when kept: `push_crossing`); the others' surface hits are listed in `s.surface`, each
+/// with a record in `s.csg_hits` giving its place there. The same crossings in the same
+/// order as `member_hits` lists them.
 #[inline(always)]
 fn gather_hits<'a>(
     c: &'a Object,
@@ -148,16 +165,17 @@ fn gather_hits<'a>(
         (None, ObjKind::Shape(shape, None)) if c.clip.is_empty() => {
             let mut local = None;
             let r = c.local_ray(ray, &mut local);
-            s.hits.clear();
-            shape.intersect_all(r, &mut s.hits);
-            // Field by field: a copy of the whole `Hit` read `part` with its padding as one
-            // 8-byte load, which cannot be forwarded from the shape's 4-byte store of `part`
-            // (a stall of ~10 % of csg_first_hit's samples on objects/csg/cliptst2).
-            for k in 0..s.hits.len() {
-                let h = &s.hits[k];
-                let (t, part, uv) = (h.t, h.part, h.uv);
+            // The shape appends (`Shape::intersect_all`); crossings beyond `tmax` stay
+            // without an entry. Only `t` is read back: a copy of the whole `Hit` read `part`
+            // with its padding as one 8-byte load, which cannot be forwarded from the shape's
+            // 4-byte store of `part` (stall26).
+            let from = s.csg_hits.len();
+            shape.intersect_all(r, &mut s.csg_hits);
+            for k in from..s.csg_hits.len() {
+                let t = s.csg_hits[k].t;
                 if t < tmax {
-                    push_crossing(c, Hit { t, part, uv }, s, tag);
+                    s.csg_order
+                        .push(order_entry(order_key(t), (k as u32) << 1, tag));
                 }
             }
         }
@@ -165,8 +183,10 @@ fn gather_hits<'a>(
             let from = s.surface.len();
             member_hits(c, face, ray, tmax, s);
             for j in from..s.surface.len() {
+                let t = s.surface[j].t;
                 s.csg_order
-                    .push(order_entry(order_key(s.surface[j].t), j as u32, tag));
+                    .push(order_entry(order_key(t), next_place(s) | LISTED, tag));
+                s.csg_hits.push(Hit::with_part(t, j as u32));
             }
         }
     }
@@ -210,6 +230,7 @@ impl Object {
         let ray_faces = faces.filter(|_| faces::ray_ok(ray));
         let start = s.surface.len();
         let order_from = s.csg_order.len();
+        let hits_from = s.csg_hits.len();
         let slabs = Slabs::new(ray.origin, inv_dir);
         let fold = FOLD && index.is_none() && children.len() <= 1 << LEAF_SHIFT;
         // Inlined in the member loop: called, its frame cost ~20 instructions a member visit
@@ -242,7 +263,7 @@ impl Object {
                 }
                 match boxes.filter(|_| BOXES).and_then(|b| b.get(i)) {
                     // Box members without dispatch (`csg_boxes`): `member_hits`' leaf path.
-                    Some(b) => box_hits(c, b, ray, tmax, s, i as u32),
+                    Some(b) => box_hits(b, ray, tmax, s, i as u32),
                     None => {
                         gather_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s, i as u32)
                     }
@@ -257,7 +278,8 @@ impl Object {
         let clip = &self.clip[..];
         let best = order.iter().find_map(|&e| {
             let (j, tag) = (entry_place(e), entry_tag(e));
-            let t = s.surface[j as usize].t;
+            // From the key, not from the record: the keep tests read nothing else of it.
+            let t = entry_t(e);
             // Without folding, tags are plain member numbers (a node may have more than
             // the tag's low bits hold).
             let i = if FOLD {
@@ -265,12 +287,13 @@ impl Object {
             } else {
                 tag
             } as usize;
-            let p = ray.at(t);
-            let leaf_kept = || match if FOLD {
+            let leaf = if FOLD {
                 (tag >> LEAF_SHIFT) as usize
             } else {
                 0
-            } {
+            };
+            let p = ray.at(t);
+            let leaf_kept = || match leaf {
                 0 => true,
                 k => {
                     let (leaves, _, leaf_faces) = folded(member_at(children, index, i))
@@ -293,13 +316,34 @@ impl Object {
                 None => csg_keeps(op, i, children, index, faces, p, &rejecter),
             };
             (leaf_kept() && kept() && clip_kept()).then(|| {
-                let mut h = s.surface[j as usize];
+                let rec = s.csg_hits[(j >> 1) as usize];
+                let mut h = if j & LISTED != 0 {
+                    s.surface[rec.part as usize]
+                } else {
+                    // `push_crossing`'s leaf: member `i`, or its folded leaf.
+                    let c = member_at(children, index, i);
+                    let c = match leaf {
+                        0 => c,
+                        k => {
+                            &folded(c)
+                                .expect("tagged crossings come from folded members")
+                                .0[k - 1]
+                        }
+                    };
+                    SurfaceHit {
+                        t: rec.t,
+                        obj: c,
+                        hit: rec,
+                        flip: c.inverse,
+                    }
+                };
                 h.flip ^= op == CsgOp::Difference && i > 0;
                 h.flip ^= self.inverse;
                 h
             })
         });
         s.csg_order.truncate(order_from);
+        s.csg_hits.truncate(hits_from);
         s.surface.truncate(start);
         best
     }
@@ -416,12 +460,9 @@ impl Object {
         }
         let mut rejecter = usize::MAX;
         let kept_cell = Cell::new(usize::MAX);
-        // `order_key` is its own inverse: the entry's key gives back t's bits.
-        let t_of =
-            |e: u128| f64::from_bits(order_key(f64::from_bits((e >> 64) as u64 ^ 1 << 63)) as u64);
         let (t, i) = order[..n]
             .iter()
-            .map(|&e| (t_of(e), entry_place(e)))
+            .map(|&e| (entry_t(e), entry_place(e)))
             .find(|&(t, i)| {
                 let i = i as usize;
                 let p = ray.at(t);

@@ -139,7 +139,7 @@ fn searches_match_all_hits() {
                 want.is_some(),
                 "object {n}, ray {k}"
             );
-            assert!(sa.surface.is_empty() && sa.csg_order.is_empty());
+            assert!(sa.surface.is_empty() && sa.csg_order.is_empty() && sa.csg_hits.is_empty());
             hits += want.is_some() as usize;
         }
         assert!(hits > 100, "object {n}: {hits}");
@@ -278,7 +278,7 @@ fn polyhedra_match_the_general_search() {
                 want.is_some(),
                 "object {n}, ray {k}"
             );
-            assert!(sa.surface.is_empty() && sa.csg_order.is_empty());
+            assert!(sa.surface.is_empty() && sa.csg_order.is_empty() && sa.csg_hits.is_empty());
             if let Some(h) = got {
                 hits += 1;
                 on_surface = Some(ray.at(h.t)).filter(|p| p.abs().max_element() < 1e140);

@@ -32,8 +32,11 @@ pub struct Scratch<'a> {
     /// after their parent's and truncate back).
     pub members: Vec<u32>,
     /// A CSG node's member crossings for `first_hit`, nearest first: (t's order key, where in
-    /// `surface`, member), packed as `csg_hit::order_entry`. A stack like `members`.
+    /// `csg_hits`, member), packed as `csg_hit::order_entry`. A stack like `members`.
     pub csg_order: Vec<u128>,
+    /// The crossings `csg_order` points at, as the shapes listed them (`csg_hit::gather_hits`):
+    /// the search builds the surface hit of the kept one only. A stack like `members`.
+    pub csg_hits: Vec<Hit>,
     /// Per light, the opaque object that last blocked a shadow ray to it (POV-Ray's shadow
     /// cache): asked first, since neighbouring points are mostly shadowed by the same object.
     pub blockers: Vec<Option<&'a Object>>,
