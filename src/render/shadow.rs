@@ -551,9 +551,10 @@ struct AreaWalk<'t, 'a> {
 }
 
 impl<'a> AreaWalk<'_, 'a> {
-    /// The vector from `p` to array point (i, j), not normalised.
+    /// The shadow ray to array point (i, j): its unit direction and length (the length not
+    /// above zero when `p` is on the point, and then the direction is not used).
     #[inline(always)]
-    fn to_point(&self, i: u32, j: u32) -> DVec3 {
+    fn ray_to(&self, i: u32, j: u32) -> (DVec3, f64) {
         let jit = if self.jitter {
             (
                 super::jitter_hash(i, j, self.seed),
@@ -562,17 +563,18 @@ impl<'a> AreaWalk<'_, 'a> {
         } else {
             (0.0, 0.0)
         };
-        self.centre + self.grid.point(i, j, jit) - self.p
+        let to = self.centre + self.grid.point(i, j, jit) - self.p;
+        let d = to.length();
+        (to / d, d)
     }
 
-    /// `to_point` for a point not yet shot (any non-zero vector for one in the cache, whose
-    /// ray is not used).
+    /// `ray_to` for a point not yet shot (zeros for one in the cache, not used).
     #[inline(always)]
-    fn corner_to(&self, i: u32, j: u32) -> DVec3 {
+    fn corner_ray(&self, i: u32, j: u32) -> (DVec3, f64) {
         if self.cache[(j * self.n1 + i) as usize].is_some() {
-            DVec3::ONE
+            (DVec3::ZERO, 0.0)
         } else {
-            self.to_point(i, j)
+            self.ray_to(i, j)
         }
     }
 
@@ -591,12 +593,12 @@ impl<'a> AreaWalk<'_, 'a> {
         // behind the array iterator's machinery, in one of two shapes depending on inlining
         // elsewhere in the crate (lights/soft: 5 M instructions apart between two builds of
         // the same walk).
-        let rays = unit_rays([
-            self.corner_to(i0, j0),
-            self.corner_to(i1, j0),
-            self.corner_to(i0, j1),
-            self.corner_to(i1, j1),
-        ]);
+        let rays = [
+            self.corner_ray(i0, j0),
+            self.corner_ray(i1, j0),
+            self.corner_ray(i0, j1),
+            self.corner_ray(i1, j1),
+        ];
         let mut c = [DVec3::ZERO; 4];
         for (k, &(i, j)) in corners.iter().enumerate() {
             let at = (j * self.n1 + i) as usize;
@@ -643,44 +645,6 @@ impl<'a> AreaWalk<'_, 'a> {
         }
         sum / (ni * nj) as f64
     }
-}
-
-/// The four shadow rays to the vectors `to`: each one's unit direction `to / |to|` and length
-/// (the length not above zero when `p` is on the point, and then the direction is not used).
-/// The square roots two at a time and the divisions in pairs, each lane the scalar IEEE
-/// operation, so the same bits: one ray at a time, each ray's division waited on its square
-/// root and the next ray's work on the divider, a sixth of lights/arealit1's time.
-#[cfg(target_arch = "x86_64")]
-#[inline(always)]
-fn unit_rays(to: [DVec3; 4]) -> [(DVec3, f64); 4] {
-    use std::arch::x86_64::*;
-    // SAFETY: SSE2 is part of every x86_64 CPU.
-    unsafe {
-        let sq = |v: DVec3| v.dot(v);
-        let hi = |v: __m128d| _mm_cvtsd_f64(_mm_unpackhi_pd(v, v));
-        let d01 = _mm_sqrt_pd(_mm_set_pd(sq(to[1]), sq(to[0])));
-        let d23 = _mm_sqrt_pd(_mm_set_pd(sq(to[3]), sq(to[2])));
-        let z01 = _mm_div_pd(_mm_set_pd(to[1].z, to[0].z), d01);
-        let z23 = _mm_div_pd(_mm_set_pd(to[3].z, to[2].z), d23);
-        let d = [_mm_cvtsd_f64(d01), hi(d01), _mm_cvtsd_f64(d23), hi(d23)];
-        let z = [_mm_cvtsd_f64(z01), hi(z01), _mm_cvtsd_f64(z23), hi(z23)];
-        let ray = |k: usize| {
-            let xy = _mm_div_pd(_mm_set_pd(to[k].y, to[k].x), _mm_set1_pd(d[k]));
-            (DVec3::new(_mm_cvtsd_f64(xy), hi(xy), z[k]), d[k])
-        };
-        [ray(0), ray(1), ray(2), ray(3)]
-    }
-}
-
-/// `unit_rays` one at a time.
-#[cfg(not(target_arch = "x86_64"))]
-#[inline(always)]
-fn unit_rays(to: [DVec3; 4]) -> [(DVec3, f64); 4] {
-    let ray = |t: DVec3| {
-        let d = t.length();
-        (t / d, d)
-    };
-    [ray(to[0]), ray(to[1]), ray(to[2]), ray(to[3])]
 }
 
 /// The normal fake caustics are computed with: the surface's, perturbed by the first normal
