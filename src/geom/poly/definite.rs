@@ -83,7 +83,9 @@ pub fn surely_definite_quartic(c: &[f64; 5], lo: f64, hi: f64) -> bool {
         (m * e[1] - a[1]).max(0.0),
         a[0] - m * e[0],
     );
-    forward || (center == x0 && positive_around_near_well(c, lo, x0, a[0], a[1], a[2]))
+    // The near-well test is not asked here: after the Bernstein test on `[lo, x0]` passed it
+    // never certified a ray on the quartic scenes (0 of ~64,000 calls over eight of them).
+    forward
 }
 
 /// Newton steps on `p'` towards the near well's floor from the guess: enough to centre the
