@@ -61,10 +61,11 @@ pub fn surely_definite_quartic(c: &[f64; 5], lo: f64, hi: f64) -> bool {
             return true;
         }
         if x0 >= hi {
-            return surely_no_root(c, lo, hi) || positive_around_near_well(&p, &a, lo, x0);
+            return surely_no_root(c, lo, hi)
+                || positive_around_near_well(c, lo, x0, a[0], a[1], a[2]);
         }
         if !surely_no_root(c, lo, x0) {
-            return positive_around_near_well(&p, &a, lo, x0);
+            return positive_around_near_well(c, lo, x0, a[0], a[1], a[2]);
         }
         (x0, a, e)
     } else {
@@ -82,7 +83,9 @@ pub fn surely_definite_quartic(c: &[f64; 5], lo: f64, hi: f64) -> bool {
         (m * e[1] - a[1]).max(0.0),
         a[0] - m * e[0],
     );
-    forward || (center == x0 && positive_around_near_well(&p, &a, lo, x0))
+    // The near-well test is not asked here: after the Bernstein test on `[lo, x0]` passed it
+    // never certified a ray on the quartic scenes (0 of ~64,000 calls over eight of them).
+    forward
 }
 
 /// Newton steps on `p'` towards the near well's floor from the guess: enough to centre the
@@ -100,14 +103,24 @@ const WELL_STEPS: usize = 2;
 /// The centre: `p` expanded at `x0` (`a`, its cubic term nearly zero) is nearly
 /// `a4 s⁴ + a2 s² + ..`, whose wells lie near `s = ±sqrt(-a2 / 2a4)`; from the nearer one,
 /// a few Newton steps on `p'`.
+///
+/// It takes `c` (`c[4] != 0`) and the shifted terms it needs as scalars, and rebuilds `p`:
+/// given `&p` and `&a`, the caller wrote `p` to a stack slot and read its coefficients
+/// back on every ray's path, most of which never come here (taking them as scalars measured
+/// 0.97-0.99 by time on the quartic scenes; the instruction count is unchanged).
 #[inline(never)]
-fn positive_around_near_well(p: &[f64; 5], a: &[f64; 5], lo: f64, x0: f64) -> bool {
-    // Two wells only where `4a4 s³ + 2a2 s + a1` has three real roots: `-8a2³ > 27a4·a1²`.
-    if !positive(-8.0 * a[2] * a[2] * a[2] - 27.0 * a[4] * a[1] * a[1]) {
+fn positive_around_near_well(c: &[f64; 5], lo: f64, x0: f64, a0: f64, a1: f64, a2: f64) -> bool {
+    let p = if c[4] > 0.0 { *c } else { c.map(|v| -v) };
+    let a4 = p[4];
+    // Positive on the whole axis needs `p(x0) > 0` (`a0`, never certified otherwise on the
+    // quartic scenes); and two wells only where `4a4 s³ + 2a2 s + a1` has three real roots:
+    // `-8a2³ > 27a4·a1²`.
+    if !(positive(a0) && positive(-8.0 * a2 * a2 * a2 - 27.0 * a4 * a1 * a1)) {
         return false;
     }
+    let p = &p;
     let d = [p[1], 2.0 * p[2], 3.0 * p[3], 4.0 * p[4]];
-    let mut x = (x0 - (-a[2] / (2.0 * a[4])).max(0.0).sqrt()).max(lo);
+    let mut x = (x0 - (-a2 / (2.0 * a4)).max(0.0).sqrt()).max(lo);
     for _ in 0..WELL_STEPS {
         // A value at or below zero on the way answers at once (a ray that crosses the near
         // well, most of those this test fails). Its chain runs beside the step's.
