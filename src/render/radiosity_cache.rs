@@ -318,17 +318,15 @@ impl Cache {
         // A normal no entry holds takes the last one, which lists nothing (a curved surface's
         // normals never come back); when its next lookup faces the same way it swaps into its
         // own entry, whose lists go. The normals of a room keep their lists through the
-        // curved surfaces met between them. Lookups of level 3 and deeper (the gathering
-        // rays' hits of gathering rays, scattered over the scene) always take the probation
-        // entry and list nothing: listing their cells cost more than reading the lists back
-        // saved (cornell, irr27: 0.911 of the time). Level 2 keeps its lists: a first
-        // bounce's hits (gamma_showcase's spheres over a floor) come back to their cells
-        // (irrb27: gamma_showcase 0.98, cornell 0.89 against listing no deeper level).
+        // curved surfaces met between them. Lookups of deeper levels (the gathering rays'
+        // hits, scattered over the scene) always take the probation entry and list nothing:
+        // listing their cells cost more than reading the lists back saved (cornell, irr27:
+        // 0.911 of the time by interleaved medians).
         let (ways, probation) = memo.entries.split_at_mut(MEMO_WAYS);
         let probation = &mut probation[0];
-        let fresh = if level <= 2 && holds(&ways[slot]) {
+        let fresh = if level == 1 && holds(&ways[slot]) {
             false
-        } else if level <= 2 && holds(probation) {
+        } else if level == 1 && holds(probation) {
             std::mem::swap(&mut ways[slot], probation);
             false
         } else {
