@@ -22,18 +22,20 @@ fn unit_sky(dir: DVec3) -> DVec3 {
     dir.normalize_or_zero()
 }
 
-/// The colour of a sky_sphere's only layer for a ray going `dir`. Apart from
-/// `layer_colour`: in the layers' loop the direction is loop-invariant, and the compiler
-/// hoisted its square root and division above the plain colour's test.
+/// The colour of a sky_sphere's only layer for a ray going `dir`, handed to `f` (the
+/// background's blend) where it is made: a colour-map entry by reference to the map, not
+/// through a joined stack copy. Apart from `layer_colour`: in the layers' loop the direction
+/// is loop-invariant, and the compiler hoisted its square root and division above the plain
+/// colour's test.
 #[inline(always)]
-pub(super) fn only_layer_colour(layer: &Pigment, dir: DVec3) -> Rgbft {
+pub(super) fn only_layer_with<R>(layer: &Pigment, dir: DVec3, f: impl FnOnce(&Rgbft) -> R) -> R {
     match &layer.kind {
-        PigmentKind::Solid(c) => *c,
+        PigmentKind::Solid(c) => f(c),
         PigmentKind::Mapped { pattern: pat, map } => match plain_gradient(pat) {
-            Some(a) => mapped_gradient(layer, pat, a, map, dir.normalize_or_zero()),
-            None => pigment::eval(layer, unit_sky(dir)),
+            Some(a) => mapped_gradient(layer, pat, a, map, dir.normalize_or_zero(), f),
+            None => f(&pigment::eval(layer, unit_sky(dir))),
         },
-        _ => pigment::eval(layer, unit_sky(dir)),
+        _ => f(&pigment::eval(layer, unit_sky(dir))),
     }
 }
 
@@ -44,7 +46,10 @@ pub(super) fn layer_colour(layer: &Pigment, dir: DVec3, d: &mut Option<DVec3>) -
     match &layer.kind {
         PigmentKind::Solid(c) => *c,
         PigmentKind::Mapped { pattern: pat, map } => match plain_gradient(pat) {
-            Some(a) => mapped_gradient(layer, pat, a, map, *d.get_or_insert_with(|| unit_sky(dir))),
+            Some(a) => {
+                let w = *d.get_or_insert_with(|| unit_sky(dir));
+                mapped_gradient(layer, pat, a, map, w, |c| *c)
+            }
             None => pigment::eval(layer, *d.get_or_insert_with(|| unit_sky(dir))),
         },
         _ => pigment::eval(layer, *d.get_or_insert_with(|| unit_sky(dir))),
@@ -65,14 +70,21 @@ fn plain_gradient(pat: &Pattern) -> Option<DVec3> {
 /// steps in the same order: the pigment's point, gradient's value, frequency, phase and wave,
 /// the map's lookup.
 #[inline(always)]
-fn mapped_gradient(layer: &Pigment, pat: &Pattern, a: DVec3, map: &ColorMap, w: DVec3) -> Rgbft {
+fn mapped_gradient<R>(
+    layer: &Pigment,
+    pat: &Pattern,
+    a: DVec3,
+    map: &ColorMap,
+    w: DVec3,
+    f: impl FnOnce(&Rgbft) -> R,
+) -> R {
     let lp = if layer.transform.is_identity() {
         w
     } else {
         inv_point(&layer.transform, w)
     };
     let v = pattern::shape_inline(pat, pattern::gradient(lp, a));
-    pigment::lookup_inline(map, v)
+    pigment::lookup_with(map, v, f)
 }
 
 /// `Transform::inv_point` written out: as a call, with the point and result passed through
@@ -175,7 +187,11 @@ mod tests {
                     }
                     for dir in directions() {
                         let want = pigment::eval(&layer, dir.normalize_or_zero());
-                        assert_eq!(bits(only_layer_colour(&layer, dir)), bits(want), "{dir}");
+                        assert_eq!(
+                            bits(only_layer_with(&layer, dir, |c| *c)),
+                            bits(want),
+                            "{dir}"
+                        );
                         let mut d = None;
                         assert_eq!(bits(layer_colour(&layer, dir, &mut d)), bits(want), "{dir}");
                     }

@@ -155,7 +155,7 @@ fn hidden(h: &SurfaceHit, straight: bool, gather: bool) -> bool {
 
 /// A sky_sphere layer of colour `c` over what is `seen` below it (the 3.7 rule).
 #[inline(always)]
-fn over(seen: Seen, c: crate::color::Rgbft) -> Seen {
+fn over(seen: Seen, c: &crate::color::Rgbft) -> Seen {
     Seen {
         rgb: c.rgb * c.opacity() + seen.rgb * c.transmitted(),
         clear: seen.clear * (c.filter * grey(c.rgb) + c.transmit),
@@ -514,14 +514,14 @@ impl<'a> Tracer<'a> {
         if s.legacy_sky_filter {
             return legacy_sky(s, dir, seen);
         }
-        // Most skies are one layer: see `sky::only_layer_colour`.
+        // Most skies are one layer: see `sky::only_layer_with`.
         if let [layer] = &s.sky[..] {
-            return over(seen, sky::only_layer_colour(layer, dir));
+            return sky::only_layer_with(layer, dir, |c| over(seen, c));
         }
         // A plain colour needs no direction (most skies are one layer of one colour).
         let mut d = None;
         for layer in &s.sky {
-            seen = over(seen, sky::layer_colour(layer, dir, &mut d));
+            seen = over(seen, &sky::layer_colour(layer, dir, &mut d));
         }
         seen
     }
