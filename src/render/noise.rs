@@ -462,11 +462,10 @@ mod tests {
         );
     }
 
-    /// Granite's lanes (AVX, generators 1 and 2) are `sum_noise_into`'s values mapped in
-    /// memory, bit for bit: ordinary points, lattice points and halves, points whose higher
-    /// octaves leave the i32 range (the walk's fallback), infinities and NaN.
-    #[test]
-    fn granite_lanes_are_the_plain_granite() {
+    /// Asserts that a pattern's lanes (`lanes`) give `plain`'s bits, for both generators, at
+    /// ordinary points, lattice points and halves, points whose higher octaves leave the i32
+    /// range (the walk's fallback), infinities and NaN (any NaN matches any NaN).
+    fn same_as_plain(lanes: fn(DVec3, u8) -> f64, plain: fn(DVec3, u8) -> f64) {
         let mut points: Vec<DVec3> = (0..20_000)
             .map(|n| {
                 let t = n as f64 * 0.0917;
@@ -485,7 +484,7 @@ mod tests {
         }
         for p in points {
             for g in [1, 2] {
-                let (a, b) = (granite(p, g), granite_plain(p, g));
+                let (a, b) = (lanes(p, g), plain(p, g));
                 assert!(
                     a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()),
                     "{p} generator {g}: {a:e} against {b:e}"
@@ -494,36 +493,18 @@ mod tests {
         }
     }
 
+    /// Granite's lanes (AVX, generators 1 and 2) are `sum_noise_into`'s values mapped in
+    /// memory, bit for bit, at `same_as_plain`'s points.
+    #[test]
+    fn granite_lanes_are_the_plain_granite() {
+        same_as_plain(granite, granite_plain);
+    }
+
     /// Wrinkles' lanes are `sum_noise_into`'s values summed from memory, bit for bit, at
-    /// the granite test's points (lattice points, halves, octaves past the i32 range,
-    /// infinities, NaN) and both generators.
+    /// `same_as_plain`'s points and both generators.
     #[test]
     fn wrinkles_lanes_are_the_plain_wrinkles() {
-        let mut points: Vec<DVec3> = (0..20_000)
-            .map(|n| {
-                let t = n as f64 * 0.0917;
-                DVec3::new(t.sin() * 300.0, t * 0.013 - 40.0, (t * 0.3).cos() * 7.0)
-            })
-            .collect();
-        for c in [
-            0.0, -0.0, 0.5, -0.5, 1.0, -1.0, 3.25, 1.6e7, -1.7e7, 2e9, 1e300,
-        ] {
-            points.push(DVec3::splat(c));
-            points.push(DVec3::new(c, 0.25, -c));
-        }
-        for c in [f64::NAN, f64::INFINITY, -f64::INFINITY] {
-            points.push(DVec3::new(c, 1.0, 2.0));
-            points.push(DVec3::new(0.3, 1.0, c));
-        }
-        for p in points {
-            for g in [1, 2] {
-                let (a, b) = (wrinkles(p, g), wrinkles_plain(p, g));
-                assert!(
-                    a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()),
-                    "{p} generator {g}: {a:e} against {b:e}"
-                );
-            }
-        }
+        same_as_plain(wrinkles, wrinkles_plain);
     }
 
     /// Scalar turbulence's lanes are `sum_noise_into`'s values summed from memory, bit for
