@@ -260,18 +260,9 @@ impl<'a> Tracer<'a> {
         // The cached boxes' tests are `Aabb::hit(..).is_some()`, through plain comparisons
         // where no slab distance can be NaN (`Slabs`): most cached blockers are not in the
         // way, and the NaN-aware test was ~75 instructions of every such shadow ray.
-        // The origin from three 8-byte loads: copied as the ray's 16-byte (x, y) and 8-byte
-        // z, it was read back by `Slabs::hits` and the walk's set-up as a (y, z) pair, which
-        // no store forwards (a tenth of this function's samples on cornell, a fifth on
-        // lights/arealit1).
-        // SAFETY: the pointers come from references to initialised doubles.
-        let origin = unsafe {
-            DVec3::new(
-                std::ptr::read_volatile(&ray.origin.x),
-                std::ptr::read_volatile(&ray.origin.y),
-                std::ptr::read_volatile(&ray.origin.z),
-            )
-        };
+        // `Slabs::hits` read the just-built ray's origin as a (y, z) pair (a tenth of this
+        // function's samples on cornell, a fifth on lights/arealit1, before `by_coordinates`).
+        let origin = crate::math::by_coordinates(&ray.origin);
         let slabs = crate::math::Slabs::known(origin, r.inv, r.plain);
         let mut tried = None;
         if let Some(b) = ctx.blockers[slot] {

@@ -193,18 +193,10 @@ impl Light {
                 cos_falloff,
                 tightness,
             } => {
-                // glam's normalize_or_zero, with the length already known. `w` arrives
-                // through memory, just stored by the caller as an (x, y) pair and a z: read
-                // as LLVM chose, a (y, z) pair, the load spanned both stores and waited for
-                // them to reach the cache (a third of this function's samples on cornell).
-                // SAFETY: the pointers come from a reference to initialised doubles.
-                let (x, y, z) = unsafe {
-                    (
-                        std::ptr::read_volatile(&w.x),
-                        std::ptr::read_volatile(&w.y),
-                        std::ptr::read_volatile(&w.z),
-                    )
-                };
+                // glam's normalize_or_zero, with the length already known. `w` was just
+                // stored by the caller (a third of this function's samples on cornell waited
+                // on it before `by_coordinates`).
+                let DVec3 { x, y, z } = crate::math::by_coordinates(&w);
                 let rcp = 1.0 / len;
                 let unit = if rcp.is_finite() && rcp > 0.0 {
                     DVec3::new(x * rcp, y * rcp, z * rcp)

@@ -4,7 +4,7 @@
 
 use std::mem::MaybeUninit;
 
-use crate::math::{DVec3, Ray};
+use crate::math::{by_coordinates, DVec3, Ray};
 
 use super::slabs::{Crossing, Plain2, Plain4, Slabs2};
 use super::{Bvh, Node, STACK};
@@ -33,14 +33,7 @@ pub struct Recip {
 impl Recip {
     #[inline(always)]
     pub fn of(ray: &Ray) -> Recip {
-        // SAFETY: the pointers come from references to initialised doubles.
-        let (x, y, z) = unsafe {
-            (
-                std::ptr::read_volatile(&ray.dir.x),
-                std::ptr::read_volatile(&ray.dir.y),
-                std::ptr::read_volatile(&ray.dir.z),
-            )
-        };
+        let DVec3 { x, y, z } = by_coordinates(&ray.dir);
         let inv = DVec3::new(1.0 / x, 1.0 / y, 1.0 / z);
         // A component times its reciprocal is within a few ulps of 1 where both are finite and
         // nonzero; a zero, infinite or NaN component or reciprocal makes it NaN or +inf (the
@@ -113,18 +106,10 @@ impl Bvh {
         tmax: f64,
         f: impl FnMut(usize, &mut f64) -> bool,
     ) {
-        // The origin's coordinates one by one: a ray built just before the walk (a shadow or
-        // reflected ray) was stored as x-y (16 bytes) and z (8), and `Plain4::new`'s rows read
-        // y-z as one 16-byte load across both stores, which the store buffer cannot forward
-        // (10-13 % of `shadow_avx`'s samples on radiosity/cornell and lights/arealit1).
-        // SAFETY: the pointers come from references to initialised doubles.
-        let origin = unsafe {
-            DVec3::new(
-                std::ptr::read_volatile(&ray.origin.x),
-                std::ptr::read_volatile(&ray.origin.y),
-                std::ptr::read_volatile(&ray.origin.z),
-            )
-        };
+        // A ray built just before the walk (a shadow or reflected ray): `Plain4::new`'s rows
+        // read its origin's y-z as one load (10-13 % of `shadow_avx`'s samples on
+        // radiosity/cornell and lights/arealit1 before `by_coordinates`).
+        let origin = by_coordinates(&ray.origin);
         let inv_dir = r.inv;
         // Nearly every ray: the walk compiled for the paired test without the flat axes' tests,
         // and without the root's own box. The root is then a node, whose two children's boxes
