@@ -7,59 +7,31 @@
 //! exactly 1, such as `spherical` at its centre, at the top of the map), then the wave type.
 //! The formulas of the deterministic patterns were measured against the `povray` binary with
 //! 16-bit renders of each pattern on a plane (see tests/probes/pattern_*.pov).
+//!
+//! Parts of it live beside it: the block patterns in `pattern_blocks`, the normals' four
+//! samples together in `pattern_lanes`, the surface slope and aoi read in `pattern_surface`,
+//! ripples' and waves' sources in `pattern_waves`.
 
-use std::cell::Cell;
 use std::f64::consts::{PI, TAU};
 
 use crate::math::DVec3;
-use crate::scene::pattern::{Pattern, PatternKind, Slope, Wave};
+use crate::scene::pattern::{Pattern, PatternKind, Wave};
 
-use super::fractal::{fractal, fractal2_lanes4, magnet_lanes4};
+use super::fractal::fractal;
 use super::noise;
-use super::pattern_wrap::{fmod, rem_euclid};
+use super::pattern_blocks::{brick, checker, cubic, hexagon, square, triangular};
+use super::pattern_surface::{angle_value, slope};
+use super::pattern_waves::waves;
+use super::pattern_wrap::fmod;
 use super::warp;
 
-/// Keeps points that sit exactly on a checker boundary (a plane at y = 0 computed as -1e-17)
-/// on the same side every time.
-const CHECKER_EPS: f64 = 1e-9;
+pub use super::pattern_lanes::values_warped4;
+pub use super::pattern_surface::{set_surface, surface, uses_surface, Surface};
+pub use super::pattern_waves::{wave_count, WAVE_SOURCES};
 
 /// POV-Ray's period for frequency and phase: a hair over 1 (measured: `spherical frequency 2`
 /// keeps the centre at the top of the map).
 const WRAP: f64 = 1.00001;
-
-/// The surface a texture is being evaluated on, for the normal-dependent patterns (slope, aoi).
-#[derive(Clone, Copy, Debug)]
-pub struct Surface {
-    /// World point.
-    pub point: DVec3,
-    /// Unit normal in world space, turned to face the ray and perturbed by the texture's
-    /// normal where it has one (measured).
-    pub normal: DVec3,
-    /// Unit ray direction.
-    pub ray: DVec3,
-}
-
-thread_local! {
-    // A thread-local rather than an argument: slope and aoi are rare, and every pattern,
-    // pigment and texture evaluation would otherwise carry a surface it does not use.
-    static SURFACE: Cell<Option<Surface>> = const { Cell::new(None) };
-}
-
-/// Sets the surface the next pattern evaluations on this thread are for (None: no surface,
-/// as in functions, where slope and aoi are 0).
-pub fn set_surface(s: Option<Surface>) {
-    SURFACE.with(|c| c.set(s));
-}
-
-/// The surface set by `set_surface`.
-pub fn surface() -> Option<Surface> {
-    SURFACE.with(|c| c.get())
-}
-
-/// Whether a pattern reads the surface normal (slope, aoi).
-pub fn uses_surface(pat: &Pattern) -> bool {
-    matches!(pat.kind, PatternKind::Slope(_) | PatternKind::Aoi)
-}
 
 /// The pattern's value in [0, 1] at `p` (pattern space, before warps), ready for a map lookup.
 pub fn value(pat: &Pattern, p: DVec3) -> f64 {
@@ -129,7 +101,7 @@ fn warped_moved(pat: &Pattern, p: DVec3) -> DVec3 {
 }
 
 /// Frequency, phase and wave type.
-fn shape(pat: &Pattern, v: f64) -> f64 {
+pub(super) fn shape(pat: &Pattern, v: f64) -> f64 {
     shape_inline(pat, v)
 }
 
@@ -291,7 +263,7 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
 
 /// Radial's value before the wave: the angle about y from +x, in turns.
 #[inline(always)]
-fn radial(q: DVec3) -> f64 {
+pub(super) fn radial(q: DVec3) -> f64 {
     let a = (-q.z).atan2(q.x) / TAU;
     a - a.floor()
 }
@@ -331,54 +303,9 @@ pub fn quilted_vector(q: DVec3, c0: f64, c1: f64) -> DVec3 {
     d * (b * 2.0 / 3f64.sqrt())
 }
 
-/// 1 where a unit normal's cosine with a direction is 1, 0.5 at right angles, 0 opposite:
-/// linear in the angle (measured; not in the cosine).
-fn angle_value(cos: f64) -> f64 {
-    1.0 - cos.clamp(-1.0, 1.0).acos() / PI
-}
-
-/// Slope: the angle value of the surface normal against the direction (world space), scaled
-/// so `lo` gives 0 and `hi` 1 (not clipped: the usual wrap follows); with `altitude` mixed
-/// with the gradient `(q·â − lo)/(hi − lo)` in pattern space, the two weighted by the lengths
-/// of the direction and the altitude vector. All measured with scripts/measure_slope.py.
-fn slope(sl: &Slope, q: DVec3) -> f64 {
-    let Some(s) = surface() else {
-        return 0.0;
-    };
-    let d = if sl.point_at {
-        sl.dir - s.point
-    } else {
-        sl.dir
-    };
-    let span = |v: f64, lo: f64, hi: f64| {
-        if hi == lo {
-            0.0
-        } else {
-            (v - lo) / (hi - lo)
-        }
-    };
-    let v = span(
-        angle_value(s.normal.dot(d.normalize_or_zero())),
-        sl.lo,
-        sl.hi,
-    );
-    match sl.altitude {
-        Some((a, lo, hi)) if !sl.point_at => {
-            let (wd, wa) = (sl.dir.length(), a.length());
-            let g = span(q.dot(a.normalize_or_zero()), lo, hi);
-            if wd + wa == 0.0 {
-                0.0
-            } else {
-                (wd * v + wa * g) / (wd + wa)
-            }
-        }
-        _ => v,
-    }
-}
-
 /// Wood's rings under turbulence `amount`, v the vector turbulence at q. Measured: the rings'
 /// x and y are x + sin(2π a.x (x + v.x)) and y + sin(2π a.y (y + v.y)).
-fn wood(q: DVec3, amount: DVec3, v: DVec3) -> f64 {
+pub(super) fn wood(q: DVec3, amount: DVec3, v: DVec3) -> f64 {
     let x = q.x + (TAU * amount.x * (q.x + v.x)).sin();
     let y = q.y + (TAU * amount.y * (q.y + v.y)).sin();
     (x * x + y * y).sqrt()
@@ -386,43 +313,8 @@ fn wood(q: DVec3, amount: DVec3, v: DVec3) -> f64 {
 
 /// Agate from the scalar turbulence t at q. Measured: (1/2 + sin(2π(1.1 z + 1.3 agate_turb
 /// t))/2)^0.77, t with the pattern's octaves, omega and lambda.
-fn agate(turb: f64, q: DVec3, t: f64) -> f64 {
+pub(super) fn agate(turb: f64, q: DVec3, t: f64) -> f64 {
     (0.5 + 0.5 * (TAU * (1.1 * q.z + 1.3 * (turb as f32 as f64) * t)).sin()).powf(0.77)
-}
-
-/// `values_warped4` of the noise patterns, whose samples' lattice walks go together; None
-/// for the others. Always inlined: its one caller's other checks had it moved out of line.
-#[inline(always)]
-fn noise_values4(pat: &Pattern, qs: &[DVec3; 4]) -> Option<[f64; 4]> {
-    let gen = pat.noise_generator;
-    let raw = match &pat.kind {
-        PatternKind::Bozo | PatternKind::Spotted => noise::noise4(*qs, gen),
-        PatternKind::Dents => noise::noise4(*qs, gen).map(|v| v.powi(3)),
-        PatternKind::Granite => noise::granite4(*qs, gen),
-        PatternKind::Agate { turb } => {
-            let t = pat.turbulence.unwrap_or_default();
-            let ts = noise::turbulence4(*qs, t.octaves, t.omega, t.lambda, gen);
-            std::array::from_fn(|k| agate(*turb, qs[k], ts[k]))
-        }
-        PatternKind::Wood => match &pat.turbulence {
-            Some(t) if t.amount != DVec3::ZERO => {
-                let vs = noise::turbulence_vec4(*qs, t.octaves, t.omega, t.lambda);
-                std::array::from_fn(|k| wood(qs[k], t.amount, vs[k]))
-            }
-            _ => return None,
-        },
-        PatternKind::Marble => {
-            let t = pat.turbulence?;
-            let ts = noise::turbulence4(*qs, t.octaves, t.omega, t.lambda, gen);
-            std::array::from_fn(|k| qs[k].x + t.amount.x * ts[k])
-        }
-        _ => return None,
-    };
-    let mut out = [0.0; 4];
-    for (o, v) in out.iter_mut().zip(raw) {
-        *o = shape_inline(pat, v);
-    }
-    Some(out)
 }
 
 /// A triangle wave of period 1 from 0 (at integers) to 1 (at half-integers).
@@ -435,243 +327,12 @@ fn tri(v: f64) -> f64 {
     }
 }
 
-/// `value_warped` at four points (a normal's samples): the same values, with z² + c
-/// fractals' orbits stepped together (`fractal2_lanes`).
-pub fn values_warped4(pat: &Pattern, qs: &[DVec3; 4]) -> [f64; 4] {
-    if let PatternKind::Fractal(f) = &pat.kind {
-        if f.magnet != 0 {
-            return magnet_lanes4(f, qs.map(|q| (q.x, q.y))).map(|v| shape(pat, v));
-        }
-        if f.exponent == 2 {
-            let ps = qs.map(|q| (q.x, q.y));
-            let raw = if f.interior.0 == 1 {
-                fractal2_lanes4::<true>(f, ps)
-            } else {
-                fractal2_lanes4::<false>(f, ps)
-            };
-            return raw.map(|v| shape(pat, v));
-        }
-    }
-    if let Some(vs) = noise_values4(pat, qs) {
-        return vs;
-    }
-    // Gradient normals (normal maps of gradients, slope maps) read four samples of a dot
-    // product: `raw`'s call and dispatch per sample cost more than the pattern. Radial's
-    // samples, likewise, are `raw`'s angle and `shape`.
-    let mut out = [0.0; 4];
-    match &pat.kind {
-        PatternKind::Gradient(a) => {
-            for (o, &q) in out.iter_mut().zip(qs) {
-                *o = shape_inline(pat, gradient(q, *a));
-            }
-        }
-        PatternKind::Radial => {
-            for (o, &q) in out.iter_mut().zip(qs) {
-                *o = shape_inline(pat, radial(q));
-            }
-        }
-        _ => {
-            for (o, &q) in out.iter_mut().zip(qs) {
-                *o = value_warped(pat, q);
-            }
-        }
-    }
-    out
-}
-
-fn checker(q: DVec3) -> usize {
-    let s = (q.x + CHECKER_EPS).floor() + (q.y + CHECKER_EPS).floor() + (q.z + CHECKER_EPS).floor();
-    parity(s)
-}
-
-/// `s.rem_euclid(2.0) as usize` for a whole number `s` without the software fmod: its parity
-/// as an integer. Beyond i64's range (and for NaN and infinities, which `rem_euclid` makes NaN)
-/// the answer is 0, as there: doubles that large are even.
-fn parity(s: f64) -> usize {
-    if s.abs() < 9.0e18 {
-        (s as i64 & 1) as usize
-    } else {
-        0
-    }
-}
-
-/// Hexagons of side 1 in the x-z plane: the nearest centre of the lattice spanned by
-/// (1.5, √3/2) and (0, √3), coloured so that no two neighbours share an item (item 0 at the
-/// origin, item 1 at +z).
-fn hexagon(q: DVec3) -> usize {
-    let s3 = 3f64.sqrt();
-    let fi = q.x / 1.5;
-    let fj = (q.z - fi * s3 / 2.0) / s3;
-    let (i0, j0) = (fi.floor(), fj.floor());
-    let mut best = (f64::INFINITY, 0.0, 0.0);
-    // The basis vectors meet at 60°, so the nearest centre is a corner of the parallelogram.
-    for (di, dj) in [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)] {
-        let (i, j) = (i0 + di, j0 + dj);
-        let (cx, cz) = (i * 1.5, i * s3 / 2.0 + j * s3);
-        let d = (q.x - cx).powi(2) + (q.z - cz).powi(2);
-        if d < best.0 {
-            best = (d, i, j);
-        }
-    }
-    rem_euclid(best.2 - best.1, 3.0) as usize
-}
-
-/// Unit squares in the x-z plane: items 0 and 3 alternate along x where floor(z) is even,
-/// 1 and 2 where it is odd (measured).
-fn square(q: DVec3) -> usize {
-    let ix = rem_euclid(q.x.floor(), 2.0) as usize;
-    let iz = rem_euclid(q.z.floor(), 2.0) as usize;
-    [[0, 3], [1, 2]][iz][ix]
-}
-
-/// Triangles of side 1 in the x-z plane, one side along x. In the skewed coordinates
-/// u = x − z/√3, w = 2z/√3 each unit cell holds a lower and an upper triangle; the item depends
-/// on (⌊w⌋ − ⌊u⌋) mod 3 and which half (measured: six items around every vertex).
-fn triangular(q: DVec3) -> usize {
-    let s3 = 3f64.sqrt();
-    let u = q.x - q.z / s3;
-    let w = 2.0 * q.z / s3;
-    let (iu, iw) = (u.floor(), w.floor());
-    let upper = (u - iu) + (w - iw) > 1.0;
-    let d = rem_euclid(iw - iu, 3.0) as usize;
-    [[0, 3], [2, 1], [4, 5]][d.min(2)][upper as usize]
-}
-
-/// The half-axis the point is nearest: +x, +y, +z, −x, −y, −z give items 0 to 5.
-fn cubic(q: DVec3) -> usize {
-    let a = q.abs();
-    let (axis, v) = if a.x >= a.y && a.x >= a.z {
-        (0, q.x)
-    } else if a.y >= a.z {
-        (1, q.y)
-    } else {
-        (2, q.z)
-    };
-    axis + if v < 0.0 { 3 } else { 0 }
-}
-
-/// Bricks of `size` (mortar included) with the mortar on the high side of each brick; odd
-/// rows (in y) are shifted half a brick in x, even rows half a brick in z. Item 0 is the
-/// mortar.
-fn brick(q: DVec3, size: DVec3, mortar: f64) -> usize {
-    if size.min_element() <= 0.0 {
-        return 1;
-    }
-    let row = (q.y / size.y).floor();
-    // `rem_euclid(row, 2.0) != 0.0` for the whole number `row` without a remainder: its
-    // integer parity, finite rows past 2^53 even (remainder 0), and NaN or infinite rows odd
-    // (their remainder is NaN, which is not 0).
-    let odd = if row.abs() < 9.0e18 {
-        row as i64 & 1 != 0
-    } else {
-        !row.is_finite()
-    };
-    let x = if odd { q.x + size.x / 2.0 } else { q.x };
-    let z = if odd { q.z } else { q.z + size.z / 2.0 };
-    let xm = rem_euclid(x, size.x);
-    let ym = rem_euclid(q.y, size.y);
-    let zm = rem_euclid(z, size.z);
-    let in_mortar = xm >= size.x - mortar || ym >= size.y - mortar || zm >= size.z - mortar;
-    (!in_mortar) as usize
-}
-
-/// POV-Ray's ten wave sources (points on the unit sphere) that ripples and waves spread from,
-/// with each source's frequency in waves. Measured by scripts/measure_waves.py: with
-/// `number_of_waves N` the pigment adds source N, whose own field (N·v_N − (N−1)·v_(N−1)) fits
-/// sin(2π·d) for ripples and (0.4/f)·sin(2π·f·d) for waves with rms error below 1e-4.
-pub const WAVE_SOURCES: [(DVec3, f64); 10] = [
-    (DVec3::new(-0.60437, 0.49205, -0.62658), 0.91912),
-    (DVec3::new(-0.55258, -0.24607, -0.79631), 0.96004),
-    (DVec3::new(-0.44454, 0.62333, 0.64330), 0.43317),
-    (DVec3::new(0.49659, 0.66894, 0.55309), 0.70930),
-    (DVec3::new(-0.06437, -0.80595, -0.58848), 0.68919),
-    (DVec3::new(0.24619, -0.91456, -0.32090), 0.99144),
-    (DVec3::new(-0.66610, -0.59187, -0.45387), 0.78297),
-    (DVec3::new(-0.52050, -0.38602, -0.76162), 0.40067),
-    (DVec3::new(0.13794, -0.70465, -0.69602), 0.22967),
-    (DVec3::new(0.56490, 0.72204, -0.39943), 0.16851),
-];
-
-/// Ripples and waves: the mean of circular waves from the ten sources. Frequency and phase
-/// act inside the waves and then once more on the value like any pattern's (measured: both
-/// match povray's 16-bit values only so).
-fn waves(pat: &Pattern, q: DVec3) -> f64 {
-    let sources = &WAVE_SOURCES[..wave_count(pat)];
-    let mut sum = 0.0;
-    for &(c, f) in sources {
-        let d = (q - c).length();
-        sum += match pat.kind {
-            PatternKind::Ripples(_) => (TAU * (d * pat.frequency + pat.phase)).sin(),
-            _ => 0.4 / f * (TAU * (f * d * pat.frequency + pat.phase)).sin(),
-        };
-    }
-    0.5 + 0.5 * sum / sources.len() as f64
-}
-
-/// How many wave sources a ripples or waves pattern uses (`number_of_waves`).
-pub fn wave_count(pat: &Pattern) -> usize {
-    match pat.kind {
-        PatternKind::Ripples(n) | PatternKind::Waves(n) => {
-            (n as usize).clamp(1, WAVE_SOURCES.len())
-        }
-        _ => WAVE_SOURCES.len(),
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    #[test]
-    fn parity_is_rem_euclid() {
-        let mut vals = vec![
-            0.0,
-            -0.0,
-            1.0,
-            -1.0,
-            2.0,
-            -3.0,
-            9.0e15,
-            9.007_199_254_740_993e15,
-        ];
-        vals.extend([
-            1e18,
-            -1e18,
-            1e19,
-            -1e300,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::NAN,
-        ]);
-        vals.extend(
-            (-3000i32..3000)
-                .map(|i| (i as f64) * 1.000_37_f64.powi(i.abs() / 10))
-                .map(f64::floor),
-        );
-        for s in vals {
-            assert_eq!(parity(s), s.rem_euclid(2.0) as usize, "{s}");
-        }
-    }
-
     fn pat(kind: PatternKind) -> Pattern {
         Pattern::new(kind)
-    }
-
-    #[test]
-    fn checker_alternates_and_is_stable_at_zero() {
-        let p = pat(PatternKind::Checker);
-        assert_eq!(index(&p, DVec3::new(0.5, -1e-15, 0.5)), 0);
-        assert_eq!(index(&p, DVec3::new(1.5, 0.0, 0.5)), 1);
-        assert_eq!(index(&p, DVec3::new(-0.5, 0.0, 0.5)), 1);
-    }
-
-    #[test]
-    fn hexagon_items_around_the_origin() {
-        let p = pat(PatternKind::Hexagon);
-        let s3 = 3f64.sqrt();
-        assert_eq!(index(&p, DVec3::ZERO), 0);
-        assert_eq!(index(&p, DVec3::new(0.0, 0.0, s3)), 1);
-        assert_eq!(index(&p, DVec3::new(1.5, 0.0, s3 / 2.0)), 2);
     }
 
     #[test]
@@ -709,46 +370,6 @@ mod tests {
                 "{p}: {}",
                 value(&ramp, p)
             );
-        }
-    }
-
-    /// The noise patterns' four samples together are their values one at a time.
-    #[test]
-    fn noise_samples_together_are_the_values() {
-        use crate::scene::pattern::Turbulence;
-        let turb = Turbulence {
-            amount: DVec3::new(0.7, 0.2, 0.1),
-            ..Default::default()
-        };
-        let kinds = [
-            PatternKind::Bozo,
-            PatternKind::Spotted,
-            PatternKind::Dents,
-            PatternKind::Granite,
-            PatternKind::Agate { turb: 1.6 },
-            PatternKind::Marble,
-            PatternKind::Wood,
-            // Not noise, but with their own four-sample paths (`shape_inline`).
-            PatternKind::Gradient(DVec3::new(0.3, 1.0, -0.7)),
-            PatternKind::Radial,
-        ];
-        for kind in kinds {
-            for (gen, turbulence, wave) in [
-                (2, None, Wave::Ramp),
-                (1, Some(turb), Wave::Sine),
-                (3, Some(turb), Wave::Triangle),
-            ] {
-                let mut p = pat(kind.clone());
-                (p.noise_generator, p.turbulence, p.wave) = (gen, turbulence, wave);
-                p.frequency = 1.3;
-                for n in 0..500 {
-                    let t = n as f64 * 0.71;
-                    let c = DVec3::new(t.sin() * 3.0, t * 0.01, t.cos() - 2.0);
-                    let qs = [0.0, 0.003, -0.004, 0.2].map(|d| c + DVec3::new(d, 2.0 * d, -d));
-                    let want = qs.map(|q| value_warped(&p, q).to_bits());
-                    assert_eq!(values_warped4(&p, &qs).map(f64::to_bits), want, "{kind:?}");
-                }
-            }
         }
     }
 
