@@ -4,8 +4,11 @@
 
 use std::cell::Cell;
 
+#[cfg(target_arch = "x86_64")]
+use crate::geom::algebraic::crossings_lanes;
+use crate::geom::algebraic::{Algebraic, LANES};
 use crate::geom::{Hit, Shape};
-use crate::math::{Aabb, Ray, Slabs, EPSILON};
+use crate::math::{has_avx, Aabb, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
 use crate::scene::csg_boxes::{box_hits, csg_keeps_boxes};
 use crate::scene::csg_members::want_inside;
@@ -192,6 +195,85 @@ fn gather_hits<'a>(
     }
 }
 
+/// The members of a node of two to four plain quadric leaves (no face, clip or window) that
+/// `crossings_lanes` answers for, the last repeated into the unused lanes; `None` for any
+/// other node, or without AVX.
+#[inline(always)]
+fn quadric_members<'a>(
+    children: &'a [Object],
+    faces: Option<&Faces>,
+) -> Option<[&'a Algebraic; LANES]> {
+    if !(2..=LANES).contains(&children.len()) || !cfg!(target_arch = "x86_64") || !has_avx() {
+        return None;
+    }
+    let mut q = [None; LANES];
+    for (i, c) in children.iter().enumerate() {
+        match &c.kind {
+            ObjKind::Shape(shape, None)
+                if c.clip.is_empty() && faces.and_then(|f| f.get(i)).is_none() =>
+            {
+                q[i] = Some(shape.as_algebraic().filter(|a| a.lanes_ready())?);
+            }
+            _ => return None,
+        }
+    }
+    let first = q[0]?;
+    Some(q.map(|a| a.unwrap_or(first)))
+}
+
+/// `csg_first_hit`'s gather for the members `quadric_members` found: each member's crossings
+/// from its lane, pushed as `gather_hits` pushes a leaf's (the shape's `intersect_all` into
+/// `s.csg_hits`, an order entry for those below `tmax`), after the same slab tests, in member
+/// order; a lane the kernel leaves to the shape goes through `gather_hits` itself.
+#[inline(always)]
+fn gather_quadrics<'a>(
+    children: &'a [Object],
+    shapes: [&Algebraic; LANES],
+    ray: &Ray,
+    slabs: &Slabs,
+    tmax: f64,
+    s: &mut Scratch<'a>,
+) {
+    let mut rays = [*ray; LANES];
+    let mut live = [false; LANES];
+    for (j, c) in children.iter().enumerate() {
+        live[j] = slabs.hits(&c.bounds, tmax);
+        if let Some(t) = &c.transform {
+            rays[j] = t.inv_ray(ray);
+        }
+    }
+    if !live.contains(&true) {
+        return;
+    }
+    #[cfg(target_arch = "x86_64")]
+    {
+        // SAFETY: `quadric_members` answers only with AVX.
+        let got = unsafe { crossings_lanes(shapes, [&rays[0], &rays[1], &rays[2], &rays[3]]) };
+        for (j, c) in children.iter().enumerate() {
+            if !live[j] {
+                continue;
+            }
+            if got.defer >> j & 1 != 0 {
+                gather_hits(c, None, ray, tmax, s, j as u32);
+                continue;
+            }
+            for r in 0..2 {
+                if got.keep[r] >> j & 1 != 0 {
+                    let t = got.t[r][j];
+                    let k = s.csg_hits.len();
+                    s.csg_hits.push(Hit::new(t));
+                    if t < tmax {
+                        s.csg_order
+                            .push(order_entry(order_key(t), (k as u32) << 1, j as u32));
+                    }
+                }
+            }
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = (shapes, rays, s);
+}
+
 impl Object {
     /// `first_hit` of an intersection, difference or merge, with or without `clipped_by`: the
     /// nearest of the crossings `all_hits` would keep (and `first_hit` take: t > EPSILON when
@@ -233,43 +315,52 @@ impl Object {
         let hits_from = s.csg_hits.len();
         let slabs = Slabs::new(ray.origin, inv_dir);
         let fold = FOLD && index.is_none() && children.len() <= 1 << LEAF_SHIFT;
-        // Inlined in the member loop: called, its frame cost ~20 instructions a member visit
-        // (advanced/whiltile visits 325 k members).
-        each_member_inline(
-            children,
-            index,
-            ray,
-            tmax,
-            s,
-            #[inline(always)]
-            |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
-                if !slabs.hits(&c.bounds, tmax) {
-                    return;
-                }
-                if let Some((leaves, leaf_cull, leaf_faces)) = fold.then(|| folded(c)).flatten() {
-                    // `c.all_hits`'s own tests, in its order.
-                    if leaf_cull.is_some_and(|b| b.hit(ray.origin, inv_dir, tmax).is_none()) {
+        let quadrics = match index {
+            None if boxes.is_none() => quadric_members(children, faces),
+            _ => None,
+        };
+        if let Some(shapes) = quadrics {
+            gather_quadrics(children, shapes, ray, &slabs, tmax, s);
+        } else {
+            // Inlined in the member loop: called, its frame cost ~20 instructions a member visit
+            // (advanced/whiltile visits 325 k members).
+            each_member_inline(
+                children,
+                index,
+                ray,
+                tmax,
+                s,
+                #[inline(always)]
+                |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
+                    if !slabs.hits(&c.bounds, tmax) {
                         return;
                     }
-                    let leaf_faces = leaf_faces.filter(|_| faces::ray_ok(ray));
-                    for (k, g) in leaves.iter().enumerate() {
-                        if !slabs.hits(&g.bounds, tmax) {
-                            continue;
+                    if let Some((leaves, leaf_cull, leaf_faces)) = fold.then(|| folded(c)).flatten()
+                    {
+                        // `c.all_hits`'s own tests, in its order.
+                        if leaf_cull.is_some_and(|b| b.hit(ray.origin, inv_dir, tmax).is_none()) {
+                            return;
                         }
-                        let tag = i as u32 | (k as u32 + 1) << LEAF_SHIFT;
-                        gather_hits(g, leaf_faces.and_then(|f| f.get(k)), ray, tmax, s, tag);
+                        let leaf_faces = leaf_faces.filter(|_| faces::ray_ok(ray));
+                        for (k, g) in leaves.iter().enumerate() {
+                            if !slabs.hits(&g.bounds, tmax) {
+                                continue;
+                            }
+                            let tag = i as u32 | (k as u32 + 1) << LEAF_SHIFT;
+                            gather_hits(g, leaf_faces.and_then(|f| f.get(k)), ray, tmax, s, tag);
+                        }
+                        return;
                     }
-                    return;
-                }
-                match boxes.filter(|_| BOXES).and_then(|b| b.get(i)) {
-                    // Box members without dispatch (`csg_boxes`): `member_hits`' leaf path.
-                    Some(b) => box_hits(b, ray, tmax, s, i as u32),
-                    None => {
-                        gather_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s, i as u32)
+                    match boxes.filter(|_| BOXES).and_then(|b| b.get(i)) {
+                        // Box members without dispatch (`csg_boxes`): `member_hits`' leaf path.
+                        Some(b) => box_hits(b, ray, tmax, s, i as u32),
+                        None => {
+                            gather_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s, i as u32)
+                        }
                     }
-                }
-            },
-        );
+                },
+            );
+        }
         let order = &mut s.csg_order[order_from..];
         // By (t as `total_cmp` orders it, place in the gather): places differ between entries.
         sort_crossings(order);
