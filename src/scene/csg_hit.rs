@@ -274,6 +274,59 @@ fn gather_quadrics<'a>(
     let _ = (shapes, rays, s);
 }
 
+/// `csg_any_hit`'s member loop for the members `quadric_members` found: whether `keep(i, t)`
+/// holds for a crossing `t < tmax` of a member `i` that passes its slab test, each member's
+/// crossings from its lane (a lane the kernel leaves to the shape is asked as `csg_any_hit`
+/// asks a leaf: `any_kept`). The same crossings meet the same tests as there, and no test has
+/// a side effect on an answer, so the answer is the same.
+#[inline(always)]
+fn any_quadric_kept<'a>(
+    children: &'a [Object],
+    shapes: [&Algebraic; LANES],
+    ray: &Ray,
+    slabs: &Slabs,
+    tmax: f64,
+    s: &mut Scratch<'a>,
+    keep: impl Fn(usize, f64) -> bool,
+) -> bool {
+    let mut rays = [*ray; LANES];
+    let mut live = [false; LANES];
+    for (j, c) in children.iter().enumerate() {
+        live[j] = slabs.hits(&c.bounds, tmax);
+        if let Some(t) = &c.transform {
+            rays[j] = t.inv_ray(ray);
+        }
+    }
+    if !live.contains(&true) {
+        return false;
+    }
+    #[cfg(target_arch = "x86_64")]
+    {
+        // SAFETY: `quadric_members` answers only with AVX.
+        let got = unsafe { crossings_lanes(shapes, [&rays[0], &rays[1], &rays[2], &rays[3]]) };
+        for j in 0..children.len() {
+            if !live[j] {
+                continue;
+            }
+            if got.defer >> j & 1 != 0 {
+                if shapes[j].any_kept(&rays[j], tmax, &mut s.hits, &mut |t| keep(j, t)) {
+                    return true;
+                }
+                continue;
+            }
+            for r in 0..2 {
+                let t = got.t[r][j];
+                if got.keep[r] >> j & 1 != 0 && t < tmax && keep(j, t) {
+                    return true;
+                }
+            }
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = (shapes, s, keep);
+    false
+}
+
 impl Object {
     /// `first_hit` of an intersection, difference or merge, with or without `clipped_by`: the
     /// nearest of the crossings `all_hits` would keep (and `first_hit` take: t > EPSILON when
@@ -470,6 +523,17 @@ impl Object {
         let slabs = Slabs::new(ray.origin, inv_dir);
         let rejecter = Cell::new(usize::MAX);
         let clip = &self.clip[..];
+        let quadrics = match index {
+            None if boxes.is_none() => quadric_members(children, faces),
+            _ => None,
+        };
+        if let Some(shapes) = quadrics {
+            return any_quadric_kept(children, shapes, ray, &slabs, tmax, s, |i, t| {
+                let p = ray.at(t);
+                csg_keeps(op, i, children, None, faces, p, &rejecter)
+                    && (clip.is_empty() || (t > EPSILON && clip.iter().all(|c| c.inside(p))))
+            });
+        }
         let mut found = false;
         each_member(children, index, ray, tmax, s, |c, i, s| {
             if found || !slabs.hits(&c.bounds, tmax) {
