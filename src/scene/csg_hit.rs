@@ -8,7 +8,7 @@ use std::cell::Cell;
 use crate::geom::algebraic::crossings_lanes;
 use crate::geom::algebraic::{Algebraic, LANES};
 use crate::geom::{Hit, Shape};
-use crate::math::{has_avx, Aabb, Ray, Slabs, EPSILON};
+use crate::math::{has_avx, Aabb, DVec3, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
 use crate::scene::csg_boxes::{box_hits, csg_keeps_boxes};
 use crate::scene::csg_members::want_inside;
@@ -274,6 +274,44 @@ fn gather_quadrics<'a>(
     let _ = (shapes, rays, s);
 }
 
+/// `csg_keeps(op, i, children, None, faces, p, rejecter)` for the members `quadric_members`
+/// found: the same questions in the same order (none of them has a face, so each is asked as
+/// `member_wants` asks a plain leaf), each shape's `inside` called as the `Algebraic` it is,
+/// without the dispatch through the shape's table.
+#[inline(always)]
+fn quadric_keeps(
+    op: CsgOp,
+    i: usize,
+    children: &[Object],
+    shapes: [&Algebraic; LANES],
+    p: DVec3,
+    rejecter: &Cell<usize>,
+) -> bool {
+    if op == CsgOp::Union {
+        return true;
+    }
+    let wants = |j: usize| {
+        let c = &children[j];
+        let inside = if c.bounds.holds(p) {
+            shapes[j].lane_inside(c.local_point(p)) != c.inverse
+        } else {
+            c.inverse
+        };
+        inside == want_inside(op, j)
+    };
+    let r = rejecter.get();
+    if r != i && r < children.len() && !wants(r) {
+        return false;
+    }
+    for j in 0..children.len() {
+        if j != i && j != r && !wants(j) {
+            rejecter.set(j);
+            return false;
+        }
+    }
+    true
+}
+
 /// `csg_any_hit`'s member loop for the members `quadric_members` found: whether `keep(i, t)`
 /// holds for a crossing `t < tmax` of a member `i` that passes its slab test, each member's
 /// crossings from its lane (a lane the kernel leaves to the shape is asked as `csg_any_hit`
@@ -454,10 +492,11 @@ impl Object {
                 }
             };
             let clip_kept = || clip.is_empty() || (t > EPSILON && clip.iter().all(|c| c.inside(p)));
-            let kept = || match boxes.filter(|_| BOXES) {
+            let kept = || match (boxes.filter(|_| BOXES), quadrics) {
                 // Nodes with box members have no index (`children::attach_indexes`).
-                Some(b) => csg_keeps_boxes(op, i, children, faces, b, p, &rejecter),
-                None => csg_keeps(op, i, children, index, faces, p, &rejecter),
+                (Some(b), _) => csg_keeps_boxes(op, i, children, faces, b, p, &rejecter),
+                (None, Some(q)) => quadric_keeps(op, i, children, q, p, &rejecter),
+                (None, None) => csg_keeps(op, i, children, index, faces, p, &rejecter),
             };
             (leaf_kept() && kept() && clip_kept()).then(|| {
                 let rec = s.csg_hits[(j >> 1) as usize];
@@ -530,7 +569,7 @@ impl Object {
         if let Some(shapes) = quadrics {
             return any_quadric_kept(children, shapes, ray, &slabs, tmax, s, |i, t| {
                 let p = ray.at(t);
-                csg_keeps(op, i, children, None, faces, p, &rejecter)
+                quadric_keeps(op, i, children, shapes, p, &rejecter)
                     && (clip.is_empty() || (t > EPSILON && clip.iter().all(|c| c.inside(p))))
             });
         }

@@ -14,7 +14,7 @@
 use std::arch::x86_64::*;
 
 use super::{quadric::Diagonal, Algebraic, FAR};
-use crate::math::{Ray, EPSILON};
+use crate::math::{DVec3, Ray, EPSILON};
 
 /// What [`crossings_lanes`] answers: lane `j`'s crossings as `intersect_all` lists them are
 /// `t[0][j]` when bit `j` of `keep[0]` is set, then `t[1][j]` when that of `keep[1]` is;
@@ -50,6 +50,14 @@ impl Algebraic {
         self.diagonal.is_some_and(|d| d.in_order && d.n > 0)
     }
 
+    /// `inside` of a shape that is [`Algebraic::lanes_ready`]: `value` is its diagonal
+    /// form's, here without the call through the shape's table.
+    #[inline(always)]
+    pub fn lane_inside(&self, p: DVec3) -> bool {
+        self.lane_diagonal().value(p) < 0.0
+    }
+
+    #[inline(always)]
     fn lane_diagonal(&self) -> &Diagonal {
         self.diagonal
             .as_ref()
@@ -270,7 +278,6 @@ pub unsafe fn crossings_lanes(shapes: [&Algebraic; 4], rays: [&Ray; 4]) -> LaneH
 mod tests {
     use super::*;
     use crate::geom::{Hit, Shape};
-    use crate::math::DVec3;
 
     /// Each lane's crossings equal `intersect_all`'s bit for bit (or the lane defers), for
     /// quadrics of shapes.inc's kinds at many scales, rays through them, grazing them, along
@@ -340,6 +347,8 @@ mod tests {
                 )
             };
             for j in 0..4 {
+                let p = rays[j].at(pick(0.1));
+                assert_eq!(shapes[j].lane_inside(p), shapes[j].inside(p));
                 let mut want = Vec::new();
                 shapes[j].intersect_all(&rays[j], &mut want);
                 if let Some(ts) = got.lane(j) {
