@@ -14,8 +14,12 @@ use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
 
 mod expand;
+mod lanes;
 mod quadric;
 use expand::{add_term, along_quartic, powers_unrolled, quartic_term, QuarticTerm};
+#[cfg(target_arch = "x86_64")]
+pub use lanes::crossings_lanes;
+pub use lanes::{LaneHits, LANES};
 use quadric::Diagonal;
 
 /// Highest order accepted (POV-Ray allows 35; the root finder handles this many).
@@ -371,6 +375,10 @@ fn cauchy_per_coefficient(c: &[f64], lead: usize) -> f64 {
 impl Shape for Algebraic {
     fn bounds(&self) -> Aabb {
         Aabb::INFINITE
+    }
+
+    fn as_algebraic(&self) -> Option<&Algebraic> {
+        Some(self)
     }
 
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {

@@ -98,6 +98,11 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
     fn as_sphere(&self) -> Option<&sphere::Sphere> {
         None
     }
+    /// This shape as an `Algebraic` (only `Algebraic` answers): a CSG node of quadrics asks
+    /// its members' crossings four at a time (`algebraic::crossings_lanes`).
+    fn as_algebraic(&self) -> Option<&algebraic::Algebraic> {
+        None
+    }
     /// This shape as a box (`BoxShape`, not empty), so that a CSG node may ask its box
     /// members with the box's own code and no dispatch (`scene::csg_boxes`).
     fn solid_box(&self) -> Option<boxes::BoxShape> {

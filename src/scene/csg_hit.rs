@@ -4,8 +4,11 @@
 
 use std::cell::Cell;
 
+#[cfg(target_arch = "x86_64")]
+use crate::geom::algebraic::crossings_lanes;
+use crate::geom::algebraic::{Algebraic, LANES};
 use crate::geom::{Hit, Shape};
-use crate::math::{Aabb, Ray, Slabs, EPSILON};
+use crate::math::{has_avx, Aabb, DVec3, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
 use crate::scene::csg_boxes::{box_hits, csg_keeps_boxes};
 use crate::scene::csg_members::want_inside;
@@ -192,6 +195,176 @@ fn gather_hits<'a>(
     }
 }
 
+/// The members of a node of two to four plain quadric leaves (no face, clip or window) that
+/// `crossings_lanes` answers for, the last repeated into the unused lanes; `None` for any
+/// other node, or without AVX.
+#[inline(always)]
+fn quadric_members<'a>(
+    children: &'a [Object],
+    faces: Option<&Faces>,
+) -> Option<[&'a Algebraic; LANES]> {
+    if !(2..=LANES).contains(&children.len()) || !cfg!(target_arch = "x86_64") || !has_avx() {
+        return None;
+    }
+    let mut q = [None; LANES];
+    for (i, c) in children.iter().enumerate() {
+        match &c.kind {
+            ObjKind::Shape(shape, None)
+                if c.clip.is_empty() && faces.and_then(|f| f.get(i)).is_none() =>
+            {
+                q[i] = Some(shape.as_algebraic().filter(|a| a.lanes_ready())?);
+            }
+            _ => return None,
+        }
+    }
+    let first = q[0]?;
+    Some(q.map(|a| a.unwrap_or(first)))
+}
+
+/// `csg_first_hit`'s gather for the members `quadric_members` found: each member's crossings
+/// from its lane, pushed as `gather_hits` pushes a leaf's (the shape's `intersect_all` into
+/// `s.csg_hits`, an order entry for those below `tmax`), after the same slab tests, in member
+/// order; a lane the kernel leaves to the shape goes through `gather_hits` itself.
+#[inline(always)]
+fn gather_quadrics<'a>(
+    children: &'a [Object],
+    shapes: [&Algebraic; LANES],
+    ray: &Ray,
+    slabs: &Slabs,
+    tmax: f64,
+    s: &mut Scratch<'a>,
+) {
+    let mut rays = [*ray; LANES];
+    let mut live = [false; LANES];
+    for (j, c) in children.iter().enumerate() {
+        live[j] = slabs.hits(&c.bounds, tmax);
+        if let Some(t) = &c.transform {
+            rays[j] = t.inv_ray(ray);
+        }
+    }
+    if !live.contains(&true) {
+        return;
+    }
+    #[cfg(target_arch = "x86_64")]
+    {
+        // SAFETY: `quadric_members` answers only with AVX.
+        let got = unsafe { crossings_lanes(shapes, [&rays[0], &rays[1], &rays[2], &rays[3]]) };
+        for (j, c) in children.iter().enumerate() {
+            if !live[j] {
+                continue;
+            }
+            if got.defer >> j & 1 != 0 {
+                gather_hits(c, None, ray, tmax, s, j as u32);
+                continue;
+            }
+            for r in 0..2 {
+                if got.keep[r] >> j & 1 != 0 {
+                    let t = got.t[r][j];
+                    let k = s.csg_hits.len();
+                    s.csg_hits.push(Hit::new(t));
+                    if t < tmax {
+                        s.csg_order
+                            .push(order_entry(order_key(t), (k as u32) << 1, j as u32));
+                    }
+                }
+            }
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = (shapes, rays, s);
+}
+
+/// `csg_keeps(op, i, children, None, faces, p, rejecter)` for the members `quadric_members`
+/// found: the same questions in the same order (none of them has a face, so each is asked as
+/// `member_wants` asks a plain leaf), each shape's `inside` called as the `Algebraic` it is,
+/// without the dispatch through the shape's table.
+#[inline(always)]
+fn quadric_keeps(
+    op: CsgOp,
+    i: usize,
+    children: &[Object],
+    shapes: [&Algebraic; LANES],
+    p: DVec3,
+    rejecter: &Cell<usize>,
+) -> bool {
+    if op == CsgOp::Union {
+        return true;
+    }
+    let wants = |j: usize| {
+        let c = &children[j];
+        let inside = if c.bounds.holds(p) {
+            shapes[j].lane_inside(c.local_point(p)) != c.inverse
+        } else {
+            c.inverse
+        };
+        inside == want_inside(op, j)
+    };
+    let r = rejecter.get();
+    if r != i && r < children.len() && !wants(r) {
+        return false;
+    }
+    for j in 0..children.len() {
+        if j != i && j != r && !wants(j) {
+            rejecter.set(j);
+            return false;
+        }
+    }
+    true
+}
+
+/// `csg_any_hit`'s member loop for the members `quadric_members` found: whether `keep(i, t)`
+/// holds for a crossing `t < tmax` of a member `i` that passes its slab test, each member's
+/// crossings from its lane (a lane the kernel leaves to the shape is asked as `csg_any_hit`
+/// asks a leaf: `any_kept`). The same crossings meet the same tests as there, and no test has
+/// a side effect on an answer, so the answer is the same.
+#[inline(always)]
+fn any_quadric_kept<'a>(
+    children: &'a [Object],
+    shapes: [&Algebraic; LANES],
+    ray: &Ray,
+    slabs: &Slabs,
+    tmax: f64,
+    s: &mut Scratch<'a>,
+    keep: impl Fn(usize, f64) -> bool,
+) -> bool {
+    let mut rays = [*ray; LANES];
+    let mut live = [false; LANES];
+    for (j, c) in children.iter().enumerate() {
+        live[j] = slabs.hits(&c.bounds, tmax);
+        if let Some(t) = &c.transform {
+            rays[j] = t.inv_ray(ray);
+        }
+    }
+    if !live.contains(&true) {
+        return false;
+    }
+    #[cfg(target_arch = "x86_64")]
+    {
+        // SAFETY: `quadric_members` answers only with AVX.
+        let got = unsafe { crossings_lanes(shapes, [&rays[0], &rays[1], &rays[2], &rays[3]]) };
+        for j in 0..children.len() {
+            if !live[j] {
+                continue;
+            }
+            if got.defer >> j & 1 != 0 {
+                if shapes[j].any_kept(&rays[j], tmax, &mut s.hits, &mut |t| keep(j, t)) {
+                    return true;
+                }
+                continue;
+            }
+            for r in 0..2 {
+                let t = got.t[r][j];
+                if got.keep[r] >> j & 1 != 0 && t < tmax && keep(j, t) {
+                    return true;
+                }
+            }
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = (shapes, s, keep);
+    false
+}
+
 impl Object {
     /// `first_hit` of an intersection, difference or merge, with or without `clipped_by`: the
     /// nearest of the crossings `all_hits` would keep (and `first_hit` take: t > EPSILON when
@@ -233,43 +406,52 @@ impl Object {
         let hits_from = s.csg_hits.len();
         let slabs = Slabs::new(ray.origin, inv_dir);
         let fold = FOLD && index.is_none() && children.len() <= 1 << LEAF_SHIFT;
-        // Inlined in the member loop: called, its frame cost ~20 instructions a member visit
-        // (advanced/whiltile visits 325 k members).
-        each_member_inline(
-            children,
-            index,
-            ray,
-            tmax,
-            s,
-            #[inline(always)]
-            |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
-                if !slabs.hits(&c.bounds, tmax) {
-                    return;
-                }
-                if let Some((leaves, leaf_cull, leaf_faces)) = fold.then(|| folded(c)).flatten() {
-                    // `c.all_hits`'s own tests, in its order.
-                    if leaf_cull.is_some_and(|b| b.hit(ray.origin, inv_dir, tmax).is_none()) {
+        let quadrics = match index {
+            None if boxes.is_none() => quadric_members(children, faces),
+            _ => None,
+        };
+        if let Some(shapes) = quadrics {
+            gather_quadrics(children, shapes, ray, &slabs, tmax, s);
+        } else {
+            // Inlined in the member loop: called, its frame cost ~20 instructions a member visit
+            // (advanced/whiltile visits 325 k members).
+            each_member_inline(
+                children,
+                index,
+                ray,
+                tmax,
+                s,
+                #[inline(always)]
+                |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
+                    if !slabs.hits(&c.bounds, tmax) {
                         return;
                     }
-                    let leaf_faces = leaf_faces.filter(|_| faces::ray_ok(ray));
-                    for (k, g) in leaves.iter().enumerate() {
-                        if !slabs.hits(&g.bounds, tmax) {
-                            continue;
+                    if let Some((leaves, leaf_cull, leaf_faces)) = fold.then(|| folded(c)).flatten()
+                    {
+                        // `c.all_hits`'s own tests, in its order.
+                        if leaf_cull.is_some_and(|b| b.hit(ray.origin, inv_dir, tmax).is_none()) {
+                            return;
                         }
-                        let tag = i as u32 | (k as u32 + 1) << LEAF_SHIFT;
-                        gather_hits(g, leaf_faces.and_then(|f| f.get(k)), ray, tmax, s, tag);
+                        let leaf_faces = leaf_faces.filter(|_| faces::ray_ok(ray));
+                        for (k, g) in leaves.iter().enumerate() {
+                            if !slabs.hits(&g.bounds, tmax) {
+                                continue;
+                            }
+                            let tag = i as u32 | (k as u32 + 1) << LEAF_SHIFT;
+                            gather_hits(g, leaf_faces.and_then(|f| f.get(k)), ray, tmax, s, tag);
+                        }
+                        return;
                     }
-                    return;
-                }
-                match boxes.filter(|_| BOXES).and_then(|b| b.get(i)) {
-                    // Box members without dispatch (`csg_boxes`): `member_hits`' leaf path.
-                    Some(b) => box_hits(b, ray, tmax, s, i as u32),
-                    None => {
-                        gather_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s, i as u32)
+                    match boxes.filter(|_| BOXES).and_then(|b| b.get(i)) {
+                        // Box members without dispatch (`csg_boxes`): `member_hits`' leaf path.
+                        Some(b) => box_hits(b, ray, tmax, s, i as u32),
+                        None => {
+                            gather_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s, i as u32)
+                        }
                     }
-                }
-            },
-        );
+                },
+            );
+        }
         let order = &mut s.csg_order[order_from..];
         // By (t as `total_cmp` orders it, place in the gather): places differ between entries.
         sort_crossings(order);
@@ -310,10 +492,11 @@ impl Object {
                 }
             };
             let clip_kept = || clip.is_empty() || (t > EPSILON && clip.iter().all(|c| c.inside(p)));
-            let kept = || match boxes.filter(|_| BOXES) {
+            let kept = || match (boxes.filter(|_| BOXES), quadrics) {
                 // Nodes with box members have no index (`children::attach_indexes`).
-                Some(b) => csg_keeps_boxes(op, i, children, faces, b, p, &rejecter),
-                None => csg_keeps(op, i, children, index, faces, p, &rejecter),
+                (Some(b), _) => csg_keeps_boxes(op, i, children, faces, b, p, &rejecter),
+                (None, Some(q)) => quadric_keeps(op, i, children, q, p, &rejecter),
+                (None, None) => csg_keeps(op, i, children, index, faces, p, &rejecter),
             };
             (leaf_kept() && kept() && clip_kept()).then(|| {
                 let rec = s.csg_hits[(j >> 1) as usize];
@@ -379,6 +562,17 @@ impl Object {
         let slabs = Slabs::new(ray.origin, inv_dir);
         let rejecter = Cell::new(usize::MAX);
         let clip = &self.clip[..];
+        let quadrics = match index {
+            None if boxes.is_none() => quadric_members(children, faces),
+            _ => None,
+        };
+        if let Some(shapes) = quadrics {
+            return any_quadric_kept(children, shapes, ray, &slabs, tmax, s, |i, t| {
+                let p = ray.at(t);
+                quadric_keeps(op, i, children, shapes, p, &rejecter)
+                    && (clip.is_empty() || (t > EPSILON && clip.iter().all(|c| c.inside(p))))
+            });
+        }
         let mut found = false;
         each_member(children, index, ray, tmax, s, |c, i, s| {
             if found || !slabs.hits(&c.bounds, tmax) {

@@ -1,0 +1,367 @@
+//! Four quadrics' crossings at once, one per AVX lane: a CSG node of quadric members
+//! (objects/csg/intee1's four shapes.inc cylinders) asks each member on its own ray, and one
+//! member's path is a chain of dependent square roots and divisions (|dir|, dir / |dir|, the
+//! discriminant's root, the quadratic's quotients, t / |dir|) that left the core waiting:
+//! four members in lanes wait on one chain instead of four.
+//!
+//! Each lane runs `Algebraic::low_order_roots` (the certificate, `Diagonal::along` in kind
+//! order, `low_roots_in` with Cauchy's bound, `t / len`) with the same IEEE operations in the
+//! same order, so the same bits. Where a lane meets what the scalar code handles by cases this
+//! kernel leaves out (a coefficient, discriminant or quotient that is not finite, a direction
+//! length near the ends of the range), it answers `None` and the caller asks the shape itself.
+
+#[cfg(target_arch = "x86_64")]
+use std::arch::x86_64::*;
+
+use super::{quadric::Diagonal, Algebraic, FAR};
+use crate::math::{DVec3, Ray, EPSILON};
+
+/// What [`crossings_lanes`] answers: lane `j`'s crossings as `intersect_all` lists them are
+/// `t[0][j]` when bit `j` of `keep[0]` is set, then `t[1][j]` when that of `keep[1]` is;
+/// when bit `j` of `defer` is set, the shape must be asked instead (`intersect_all`).
+/// Read lane by lane from the stored vectors: a lane's crossings copied into an array of
+/// their own by 8-byte stores and read back as one 16-byte load stalled on every search.
+pub struct LaneHits {
+    pub t: [[f64; 4]; 2],
+    pub keep: [u32; 2],
+    pub defer: u32,
+}
+
+impl LaneHits {
+    /// Lane `j`'s crossings, `None` when the shape must be asked (tests).
+    #[cfg(test)]
+    fn lane(&self, j: usize) -> Option<Vec<f64>> {
+        (self.defer >> j & 1 == 0).then(|| {
+            (0..2)
+                .filter(|&r| self.keep[r] >> j & 1 != 0)
+                .map(|r| self.t[r][j])
+                .collect()
+        })
+    }
+}
+
+/// How many shapes [`crossings_lanes`] answers for at once.
+pub const LANES: usize = 4;
+
+impl Algebraic {
+    /// Whether [`crossings_lanes`] can answer for this shape: a quadric without cross terms
+    /// whose terms come in kind order (`Diagonal::in_order`: a `quadric { }`'s order).
+    pub fn lanes_ready(&self) -> bool {
+        self.diagonal.is_some_and(|d| d.in_order && d.n > 0)
+    }
+
+    /// `inside` of a shape that is [`Algebraic::lanes_ready`]: `value` is its diagonal
+    /// form's, here without the call through the shape's table.
+    #[inline(always)]
+    pub fn lane_inside(&self, p: DVec3) -> bool {
+        self.lane_diagonal().value(p) < 0.0
+    }
+
+    #[inline(always)]
+    fn lane_diagonal(&self) -> &Diagonal {
+        self.diagonal
+            .as_ref()
+            .expect("lanes only for shapes that are lanes_ready")
+    }
+}
+
+/// `intersect_all` of `shapes[j]` on `rays[j]`, for four shapes that are all
+/// [`Algebraic::lanes_ready`]; a lane whose answer is not wanted may repeat another's.
+///
+/// # Safety
+/// The CPU must have AVX (`math::has_avx`).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+pub unsafe fn crossings_lanes(shapes: [&Algebraic; 4], rays: [&Ray; 4]) -> LaneHits {
+    let d = shapes.map(|s| s.lane_diagonal());
+    let lane = |f: &dyn Fn(usize) -> f64| _mm256_set_pd(f(3), f(2), f(1), f(0));
+    let mask = |f: &dyn Fn(usize) -> bool| {
+        let m = |j: usize| if f(j) { -1i64 } else { 0 };
+        _mm256_castsi256_pd(_mm256_set_epi64x(m(3), m(2), m(1), m(0)))
+    };
+    let splat = _mm256_set1_pd;
+    let (add, sub, mul, div) = (_mm256_add_pd, _mm256_sub_pd, _mm256_mul_pd, _mm256_div_pd);
+    let and = _mm256_and_pd;
+    let sign = splat(-0.0);
+    let abs = |v: __m256d| _mm256_andnot_pd(sign, v);
+    let lt = |a: __m256d, b: __m256d| _mm256_cmp_pd::<_CMP_LT_OQ>(a, b);
+    let gt = |a: __m256d, b: __m256d| _mm256_cmp_pd::<_CMP_GT_OQ>(a, b);
+    let ge = |a: __m256d, b: __m256d| _mm256_cmp_pd::<_CMP_GE_OQ>(a, b);
+    let le = |a: __m256d, b: __m256d| _mm256_cmp_pd::<_CMP_LE_OQ>(a, b);
+    let eq = |a: __m256d, b: __m256d| _mm256_cmp_pd::<_CMP_EQ_OQ>(a, b);
+    // `!=` as Rust compares: true for NaN.
+    let ne = |a: __m256d, b: __m256d| _mm256_cmp_pd::<_CMP_NEQ_UQ>(a, b);
+    // `m ? a : b`.
+    let pick = |m: __m256d, a: __m256d, b: __m256d| _mm256_blendv_pd(b, a, m);
+    let inf = splat(f64::INFINITY);
+    let finite = |v: __m256d| lt(abs(v), inf);
+    let zero = _mm256_setzero_pd();
+
+    let (ox, oy, oz) = (
+        lane(&|j| rays[j].origin.x),
+        lane(&|j| rays[j].origin.y),
+        lane(&|j| rays[j].origin.z),
+    );
+    let (dx, dy, dz) = (
+        lane(&|j| rays[j].dir.x),
+        lane(&|j| rays[j].dir.y),
+        lane(&|j| rays[j].dir.z),
+    );
+    let (a0, a1, a2) = (
+        lane(&|j| d[j].sq[0]),
+        lane(&|j| d[j].sq[1]),
+        lane(&|j| d[j].sq[2]),
+    );
+    let (l0, l1, l2) = (
+        lane(&|j| d[j].lin[0]),
+        lane(&|j| d[j].lin[1]),
+        lane(&|j| d[j].lin[2]),
+    );
+    let k = lane(&|j| d[j].k);
+
+    // `Diagonal::surely_misses`, term for term.
+    let (ax, ay, az) = (mul(a0, ox), mul(a1, oy), mul(a2, oz));
+    let two = splat(2.0);
+    let four = splat(4.0);
+    let c2 = add(
+        add(mul(mul(a0, dx), dx), mul(mul(a1, dy), dy)),
+        mul(mul(a2, dz), dz),
+    );
+    let c1 = add(
+        add(
+            mul(add(mul(two, ax), l0), dx),
+            mul(add(mul(two, ay), l1), dy),
+        ),
+        mul(add(mul(two, az), l2), dz),
+    );
+    let c0 = add(
+        add(
+            add(mul(add(ax, l0), ox), mul(add(ay, l1), oy)),
+            mul(add(az, l2), oz),
+        ),
+        k,
+    );
+    let disc = sub(mul(c1, c1), mul(mul(four, c2), c0));
+    let (pax, pay, paz) = (abs(ax), abs(ay), abs(az));
+    let (bl0, bl1, bl2) = (abs(l0), abs(l1), abs(l2));
+    let (aox, aoy, aoz) = (abs(ox), abs(oy), abs(oz));
+    let (adx, ady, adz) = (abs(dx), abs(dy), abs(dz));
+    let m2 = add(
+        add(mul(mul(abs(a0), adx), adx), mul(mul(abs(a1), ady), ady)),
+        mul(mul(abs(a2), adz), adz),
+    );
+    let m1 = add(
+        add(
+            mul(add(mul(two, pax), bl0), adx),
+            mul(add(mul(two, pay), bl1), ady),
+        ),
+        mul(add(mul(two, paz), bl2), adz),
+    );
+    let m0 = add(
+        add(
+            add(mul(add(pax, bl0), aox), mul(add(pay, bl1), aoy)),
+            mul(add(paz, bl2), aoz),
+        ),
+        abs(k),
+    );
+    let scale = add(mul(m1, m1), mul(mul(four, m2), m0));
+    let len2 = add(add(mul(dx, dx), mul(dy, dy)), mul(dz, dz));
+    let miss = and(
+        and(
+            and(lt(disc, zero), lt(disc, mul(splat(-1e-12), scale))),
+            and(gt(scale, splat(1e-150)), lt(scale, splat(1e150))),
+        ),
+        and(gt(len2, splat(1e-50)), lt(len2, splat(1e50))),
+    );
+
+    // `low_order_solved`: the unit direction (`dir.length()` is the root of the same sum).
+    let len = _mm256_sqrt_pd(len2);
+    let (ux, uy, uz) = (div(dx, len), div(dy, len), div(dz, len));
+
+    // `Diagonal::along` in kind order.
+    let p1 = |o: __m256d, u: __m256d| [add(zero, o), add(zero, u)];
+    let p2 = |q: [__m256d; 2], o: __m256d, u: __m256d| {
+        [
+            add(zero, mul(q[0], o)),
+            add(add(zero, mul(q[0], u)), mul(q[1], o)),
+            add(zero, mul(q[1], u)),
+        ]
+    };
+    let (x1, y1, z1) = (p1(ox, ux), p1(oy, uy), p1(oz, uz));
+    let (x2, y2, z2) = (p2(x1, ox, ux), p2(y1, oy, uy), p2(z1, oz, uz));
+    let coef = |kind: usize| lane(&|j| d[j].coef[kind]);
+    let has = |kind: usize| mask(&|j| d[j].has[kind]);
+    let mut acc = [zero; 3];
+    let add_nonzero = |acc: &mut [__m256d; 3], kind: usize, p: &[__m256d]| {
+        let (c, h) = (coef(kind), has(kind));
+        for (a, &pa) in p.iter().enumerate() {
+            let v = add(zero, pa);
+            acc[a] = pick(and(h, ne(v, zero)), add(acc[a], mul(c, v)), acc[a]);
+        }
+    };
+    let add_all = |acc: &mut [__m256d; 3], kind: usize, p: &[__m256d]| {
+        let (c, h) = (coef(kind), has(kind));
+        for (b, &pb) in p.iter().enumerate() {
+            acc[b] = pick(h, add(acc[b], mul(c, pb)), acc[b]);
+        }
+    };
+    add_nonzero(&mut acc, 0, &x2);
+    add_nonzero(&mut acc, 1, &y2);
+    add_all(&mut acc, 2, &z2);
+    add_nonzero(&mut acc, 3, &x1);
+    add_nonzero(&mut acc, 4, &y1);
+    add_all(&mut acc, 5, &z1);
+    acc[0] = pick(has(6), add(acc[0], coef(6)), acc[0]);
+    let [cc, b, a] = acc;
+
+    // `low_roots_in` on `c[..=lead]`: a quadratic where `a != 0`, else a line where `b != 0`.
+    let quad = ne(a, zero);
+    let line = _mm256_andnot_pd(quad, ne(b, zero));
+    let d2 = sub(mul(b, b), mul(mul(four, a), cc));
+    let pos = gt(d2, zero);
+    let root = _mm256_sqrt_pd(pick(pos, d2, zero));
+    // `b.signum()` for a finite `b`.
+    let sgn = _mm256_or_pd(and(sign, b), splat(1.0));
+    let q = mul(splat(-0.5), add(b, mul(sgn, root)));
+    // `q / a`, `cc / q` (or `q / a` again when q is 0), `-0.5 * b / a`, `-c0 / c1` in two
+    // divisions.
+    let qa = and(quad, pos);
+    let num1 = pick(
+        quad,
+        pick(pos, q, mul(splat(-0.5), b)),
+        _mm256_xor_pd(sign, cc),
+    );
+    let den1 = pick(quad, a, b);
+    let r1 = div(num1, den1);
+    let qnz = ne(q, zero);
+    let r2 = div(pick(qnz, cc, q), pick(qnz, q, a));
+    // Neither quotient is NaN (finite numerators, finite nonzero denominators), where
+    // `min`/`max` agree with `f64::min`/`max` up to the sign of a zero, and a zero root is
+    // below `lo` either way.
+    let x0 = pick(qa, _mm256_min_pd(r1, r2), r1);
+    let x1r = _mm256_max_pd(r1, r2);
+    let two_roots = and(qa, ne(x1r, x0));
+    let one_root = _mm256_or_pd(line, and(quad, _mm256_or_pd(pos, eq(d2, zero))));
+
+    // Cauchy's bound (`cauchy`): the largest |c_i| below the lead over the lead's size.
+    let big = pick(quad, _mm256_max_pd(abs(cc), abs(b)), abs(cc));
+    let cq = div(big, abs(pick(quad, a, b)));
+    let m = pick(gt(cq, zero), cq, zero);
+    let hi = _mm256_min_pd(add(splat(1.0), m), splat(FAR));
+    let lo = mul(splat(EPSILON), len);
+    let keep0 = and(one_root, and(ge(x0, lo), le(x0, hi)));
+    let keep1 = and(two_roots, and(ge(x1r, lo), le(x1r, hi)));
+    let (t0, t1) = (div(x0, len), div(x1r, len));
+
+    // Lanes this kernel answers: coefficients, discriminant and q finite, |dir| well inside
+    // the range (so `lo` is positive and the roots' zeros fall below it).
+    let ok = and(
+        and(and(finite(cc), finite(b)), and(finite(a), finite(d2))),
+        and(
+            finite(q),
+            and(gt(len, splat(1e-200)), lt(len, splat(1e200))),
+        ),
+    );
+    let bits = |v: __m256d| _mm256_movemask_pd(v) as u32;
+    let (miss, ok) = (bits(miss), bits(ok));
+    let mut out = LaneHits {
+        t: [[0.0; 4]; 2],
+        keep: [bits(keep0) & ok & !miss, bits(keep1) & ok & !miss],
+        defer: !ok & !miss & 0xf,
+    };
+    _mm256_storeu_pd(out.t[0].as_mut_ptr(), t0);
+    _mm256_storeu_pd(out.t[1].as_mut_ptr(), t1);
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::{Hit, Shape};
+
+    /// Each lane's crossings equal `intersect_all`'s bit for bit (or the lane defers), for
+    /// quadrics of shapes.inc's kinds at many scales, rays through them, grazing them, along
+    /// their axes, from their surface, with zeros, tiny, huge, infinite and NaN values.
+    #[test]
+    fn lanes_are_intersect_all() {
+        if !crate::math::has_avx() {
+            return;
+        }
+        let mut rnd = crate::math::xorshift_unit(0x5851_f42d_4c95_7f2du64);
+        let special = [0.0, -0.0, 1.0, -1.0, 1e-300, 1e300, f64::INFINITY, f64::NAN];
+        let mut pick = move |p: f64| -> f64 {
+            let r = rnd();
+            if r < p {
+                special[((r / p) * special.len() as f64) as usize % special.len()]
+            } else {
+                (rnd() - 0.5) * 10f64.powi((rnd() * 10.0) as i32 - 5)
+            }
+        };
+        let (mut answered, mut crossings) = (0, 0);
+        for case in 0..60_000usize {
+            let p = if case % 10 == 0 { 0.2 } else { 0.0 };
+            let mut shapes = Vec::new();
+            let mut rays = Vec::new();
+            for _ in 0..4 {
+                let small = [-1.0, 0.0, 1.0, 0.25, -4.0];
+                let s = |r: f64| small[((r.abs() * 1e3) as usize) % small.len()];
+                let sq = [s(pick(0.0)), s(pick(0.0)), s(pick(0.0))];
+                let lin = [s(pick(0.0)) * 0.5, 0.0, s(pick(0.0))];
+                let kk = if p > 0.0 { pick(p) } else { s(pick(0.0)) * 3.0 };
+                let mut terms = Vec::new();
+                for (i, pw) in [[2, 0, 0], [0, 2, 0], [0, 0, 2]].into_iter().enumerate() {
+                    terms.push((pw, sq[i]));
+                }
+                for (i, pw) in [[1, 0, 0], [0, 1, 0], [0, 0, 1]].into_iter().enumerate() {
+                    terms.push((pw, lin[i]));
+                }
+                terms.push(([0, 0, 0], kk));
+                let q = Algebraic::new(2, &terms, false);
+                let mut origin = DVec3::new(pick(p), pick(p), pick(p)) * 10.0;
+                let mut dir = DVec3::new(pick(p), pick(p), pick(p));
+                match case % 4 {
+                    // From a point on the surface.
+                    1 if q.value(origin).is_finite() => {
+                        let g = q.normal(origin, &Hit::new(0.0));
+                        if g.length_squared() > 0.0 {
+                            origin += g * (-q.value(origin) / g.length_squared());
+                        }
+                    }
+                    // Along an axis.
+                    2 => dir = DVec3::new(0.0, 0.0, dir.z),
+                    _ => {}
+                }
+                if case % 7 == 0 {
+                    dir *= 1e-5;
+                }
+                shapes.push(q);
+                rays.push(Ray::new(origin, dir));
+            }
+            if !shapes.iter().all(|s| s.lanes_ready()) {
+                continue;
+            }
+            let got = unsafe {
+                crossings_lanes(
+                    [&shapes[0], &shapes[1], &shapes[2], &shapes[3]],
+                    [&rays[0], &rays[1], &rays[2], &rays[3]],
+                )
+            };
+            for j in 0..4 {
+                let p = rays[j].at(pick(0.1));
+                assert_eq!(shapes[j].lane_inside(p), shapes[j].inside(p));
+                let mut want = Vec::new();
+                shapes[j].intersect_all(&rays[j], &mut want);
+                if let Some(ts) = got.lane(j) {
+                    answered += 1;
+                    crossings += ts.len();
+                    assert_eq!(ts.len(), want.len(), "{:?} {:?}", shapes[j], rays[j]);
+                    for (t, h) in ts.iter().zip(&want) {
+                        assert_eq!(t.to_bits(), h.t.to_bits(), "{:?} {:?}", shapes[j], rays[j]);
+                    }
+                }
+            }
+        }
+        assert!(answered > 150_000, "{answered}");
+        assert!(crossings > 100_000, "{crossings}");
+    }
+}
