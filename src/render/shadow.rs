@@ -241,10 +241,22 @@ impl<'a> Tracer<'a> {
         if dist <= 0.0 {
             return DVec3::ONE;
         }
-        let ray = Ray::new(p, l);
+        // The callers pass `p` and `l` through memory, `l` often stored as three doubles
+        // just before the call; copied into the ray as an x-y pair and z, the pair's load
+        // spanned two of those stores and waited for them to reach the cache (a tenth of
+        // this function's samples on mirror_spheres, and the reciprocal's divisions after
+        // it). Read one by one, and the ray written as the walks read it (`ray_at`); `l` is
+        // `ray.dir` after, where a local copy of it for the closure was written as three
+        // doubles and read back as a pair again.
+        let (p, l) = (
+            crate::math::by_coordinates(&p),
+            crate::math::by_coordinates(&l),
+        );
+        let mut at = std::mem::MaybeUninit::uninit();
+        let ray = ray_at(&mut at, p, l);
         // `projected_through`: no light unless the path crosses the object, and only what
         // lies between the point and that crossing casts a shadow (manual 3.4.4.1.8).
-        let dist = match self.projected_dist(&ray, dist, slot, ctx) {
+        let dist = match self.projected_dist(ray, dist, slot, ctx) {
             Some(d) => d,
             None => return DVec3::ZERO,
         };
@@ -256,18 +268,18 @@ impl<'a> Tracer<'a> {
         // Once for the cached blocker's box and the walk (each took its own three divisions,
         // and its own tests of the ray for NaN-free slabs); the reciprocal is `recip` to the
         // bit, read so as to forward from the stores just made.
-        let r = crate::geom::bvh::Recip::of(&ray);
+        let r = crate::geom::bvh::Recip::of(ray);
         // The cached boxes' tests are `Aabb::hit(..).is_some()`, through plain comparisons
         // where no slab distance can be NaN (`Slabs`): most cached blockers are not in the
         // way, and the NaN-aware test was ~75 instructions of every such shadow ray.
         // `Slabs::hits` read the just-built ray's origin as a (y, z) pair (a tenth of this
-        // function's samples on cornell, a fifth on lights/arealit1, before `by_coordinates`).
-        let origin = crate::math::by_coordinates(&ray.origin);
-        let slabs = crate::math::Slabs::known(origin, r.inv, r.plain);
+        // function's samples on cornell, a fifth on lights/arealit1, before the origin was
+        // read one coordinate at a time): `p`, read so above.
+        let slabs = crate::math::Slabs::known(p, r.inv, r.plain);
         let mut tried = None;
         if let Some(b) = ctx.blockers[slot] {
             if slabs.hits(&b.bounds, dist) {
-                if opaque_blocks(b, &ray, &slabs, dist, ctx) {
+                if opaque_blocks(b, ray, &slabs, dist, ctx) {
                     return DVec3::ZERO;
                 }
                 tried = Some(b);
@@ -286,7 +298,7 @@ impl<'a> Tracer<'a> {
             let start = ctx.surface.len();
             if slabs.hits(&top.bounds, dist)
                 && slabs.hits(&m.bounds, dist)
-                && self.member_blocks(m, &ray, l, dist, photons_only, ctx)
+                && self.member_blocks(m, ray, ray.dir, dist, photons_only, ctx)
             {
                 return DVec3::ZERO;
             }
@@ -299,7 +311,7 @@ impl<'a> Tracer<'a> {
         // leaf (~40 instructions a call); transparent objects in `through_transparent`.
         self.scene.for_each_candidate_recip(
             lanes,
-            &ray,
+            ray,
             &r,
             dist,
             #[inline(always)]
@@ -312,8 +324,8 @@ impl<'a> Tracer<'a> {
                 if !obj.transparent {
                     // A plain sphere's `any_hit` without the call through its table.
                     let blocks = match c.sphere() {
-                        Some(s) => s.blocks(&ray, dist),
-                        None => opaque_blocks(obj, &ray, &slabs, dist, ctx),
+                        Some(s) => s.blocks(ray, dist),
+                        None => opaque_blocks(obj, ray, &slabs, dist, ctx),
                     };
                     if blocks {
                         att = DVec3::ZERO;
@@ -323,8 +335,8 @@ impl<'a> Tracer<'a> {
                     return false;
                 }
                 let way = Way {
-                    ray,
-                    l,
+                    ray: *ray,
+                    l: ray.dir,
                     dist,
                     slot,
                     photons_only,
@@ -513,6 +525,34 @@ fn opaque_blocks<'a>(
         Some(members) => Object::scan_any_hit(members, ray, slabs, dist, ctx),
         None => leaf_any_hit(obj, ray, dist, ctx),
     }
+}
+
+/// The ray from `p` along `l`, written into `at` as an x-y pair (one 16-byte store) and z for
+/// each vector: what the walks and the sphere test read (`by_coordinates`' 8-byte loads and
+/// x-y pairs), each load within one store, which the store buffer forwards. Built by value,
+/// LLVM wrote each vector as three doubles where it had them apart, and the pairs' loads
+/// spanning two stores waited for both to reach the cache.
+#[inline(always)]
+fn ray_at(at: &mut std::mem::MaybeUninit<Ray>, p: DVec3, l: DVec3) -> &Ray {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{_mm_set_pd, _mm_storeu_pd};
+        let r = at.as_mut_ptr();
+        // SAFETY: the stores write every field of the `Ray` behind `r` (two x-y pairs of
+        // doubles and two doubles, at their fields' places: `DVec3` is `repr(C)` x, y, z),
+        // after which it is initialised; SSE2 is part of x86_64.
+        unsafe {
+            let o = std::ptr::addr_of_mut!((*r).origin);
+            let d = std::ptr::addr_of_mut!((*r).dir);
+            _mm_storeu_pd(o.cast::<f64>(), _mm_set_pd(p.y, p.x));
+            std::ptr::addr_of_mut!((*o).z).write(p.z);
+            _mm_storeu_pd(d.cast::<f64>(), _mm_set_pd(l.y, l.x));
+            std::ptr::addr_of_mut!((*d).z).write(l.z);
+            at.assume_init_ref()
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    at.write(Ray::new(p, l))
 }
 
 /// A shadow ray as `Tracer::through_transparent` needs it: the ray, its unit direction, how
