@@ -149,11 +149,7 @@ impl<'a> Tracer<'a> {
 
     /// Light reaching `p` from a light `dist` away in direction `l`: zero behind an opaque
     /// object, filtered by each crossing of a transparent one. `slot` is the light's number,
-    /// for the cache of the last blocker. The copy compiled with AVX where the CPU has it, as
-    /// `Scene::first_hit` (the walk's node test and the set-up around it in three-operand
-    /// forms; the same operations, so the same bits). The choice is a flag the scene read
-    /// once (`Scene::avx`), here inlined: a function asking the CPU at every shadow ray, with
-    /// a frame for the call that asks it the first time, cost ~20 instructions a ray.
+    /// for the cache of the last blocker.
     #[inline(always)]
     pub(super) fn shadow(
         &self,
@@ -163,12 +159,44 @@ impl<'a> Tracer<'a> {
         slot: usize,
         ctx: &mut TraceCtx<'a>,
     ) -> DVec3 {
+        // `1 * x` is `x` to the bit: the answer itself.
+        self.shadowed(DVec3::ONE, p, l, dist, slot, ctx)
+    }
+
+    /// `lc * self.shadow(..)`, to the bit, with the answer's three cases multiplied apart:
+    /// joined first into one `DVec3`, the answer went through a stack slot written as an
+    /// x-y pair and z and read as x and a y-z pair, which the store buffer cannot forward
+    /// (`Shadowed`). Nothing in the way leaves `lc` as it is (`lc * 1` is `lc`).
+    ///
+    /// The shadow test is the copy compiled with AVX where the CPU has it, as
+    /// `Scene::first_hit` (the walk's node test and the set-up around it in three-operand
+    /// forms; the same operations, so the same bits). The choice is a flag the scene read
+    /// once (`Scene::avx`), here inlined: a function asking the CPU at every shadow ray, with
+    /// a frame for the call that asks it the first time, cost ~20 instructions a ray.
+    #[inline(always)]
+    pub(super) fn shadowed(
+        &self,
+        lc: DVec3,
+        p: DVec3,
+        l: DVec3,
+        dist: f64,
+        slot: usize,
+        ctx: &mut TraceCtx<'a>,
+    ) -> DVec3 {
         #[cfg(target_arch = "x86_64")]
-        if self.scene.avx() {
+        let answer = if self.scene.avx() {
             // SAFETY: the scene found that the CPU has AVX.
-            return unsafe { self.shadow_avx(p, l, dist, slot, ctx) };
+            unsafe { self.shadow_avx(p, l, dist, slot, ctx) }
+        } else {
+            self.shadow_base(p, l, dist, slot, ctx)
+        };
+        #[cfg(not(target_arch = "x86_64"))]
+        let answer = self.shadow_base(p, l, dist, slot, ctx);
+        match answer {
+            Shadowed::Dark => lc * DVec3::ZERO,
+            Shadowed::Lit => lc,
+            Shadowed::Filtered => lc * ctx.shadow_att,
         }
-        self.shadow_base(p, l, dist, slot, ctx)
     }
 
     /// `shadow` out of line, for the area lights' walk: inlined there, its two calls grew
@@ -197,7 +225,7 @@ impl<'a> Tracer<'a> {
         dist: f64,
         slot: usize,
         ctx: &mut TraceCtx<'a>,
-    ) -> DVec3 {
+    ) -> Shadowed {
         // SAFETY: the caller says the CPU has AVX.
         self.shadow_in(
             unsafe { crate::geom::bvh::Avx::new() },
@@ -218,7 +246,7 @@ impl<'a> Tracer<'a> {
         dist: f64,
         slot: usize,
         ctx: &mut TraceCtx<'a>,
-    ) -> DVec3 {
+    ) -> Shadowed {
         self.shadow_in(crate::geom::bvh::Sse, p, l, dist, slot, ctx)
     }
 
@@ -232,14 +260,14 @@ impl<'a> Tracer<'a> {
         dist: f64,
         slot: usize,
         ctx: &mut TraceCtx<'a>,
-    ) -> DVec3 {
+    ) -> Shadowed {
         ctx.rays += 1;
         // Surfaces at the light itself do not shadow it (radiosity/cornell's lights sit on the
         // ceiling). Measured: a light up to 2.85e-5 above a disc facing away from the lit
         // wall is unshadowed, 2.9e-5 is shadowed, the same at every angle and scale tried.
         let dist = dist - SHADOW_TOLERANCE;
         if dist <= 0.0 {
-            return DVec3::ONE;
+            return Shadowed::Lit;
         }
         // The callers pass `p` and `l` through memory, `l` often stored as three doubles
         // just before the call; copied into the ray as an x-y pair and z, the pair's load
@@ -258,7 +286,7 @@ impl<'a> Tracer<'a> {
         // lies between the point and that crossing casts a shadow (manual 3.4.4.1.8).
         let dist = match self.projected_dist(ray, dist, slot, ctx) {
             Some(d) => d,
-            None => return DVec3::ZERO,
+            None => return Shadowed::Dark,
         };
         // Any opaque blocker makes the answer exactly zero, whatever else the ray crosses, so
         // the last one is tried first. Its box test is the one the BVH would have made.
@@ -280,7 +308,7 @@ impl<'a> Tracer<'a> {
         if let Some(b) = ctx.blockers[slot] {
             if slabs.hits(&b.bounds, dist) {
                 if opaque_blocks(b, ray, &slabs, dist, ctx) {
-                    return DVec3::ZERO;
+                    return Shadowed::Dark;
                 }
                 tried = Some(b);
             }
@@ -300,12 +328,14 @@ impl<'a> Tracer<'a> {
                 && slabs.hits(&m.bounds, dist)
                 && self.member_blocks(m, ray, ray.dir, dist, photons_only, ctx)
             {
-                return DVec3::ZERO;
+                return Shadowed::Dark;
             }
             ctx.surface.truncate(start);
         }
         let mut att = DVec3::ONE;
         let mut blocker = None;
+        // Whether a transparent candidate filtered `att`: until one does, it is all light.
+        let mut filtered = false;
         // The opaque case inline (nearly every candidate: a sphere's or a plane's `any_hit`
         // through `leaf_any_hit`), where the whole closure was called out of line for each
         // leaf (~40 instructions a call); transparent objects in `through_transparent`.
@@ -341,13 +371,19 @@ impl<'a> Tracer<'a> {
                     slot,
                     photons_only,
                 };
+                filtered = true;
                 self.through_transparent(obj, &way, ctx, &mut att)
             },
         );
         if blocker.is_some() {
             ctx.blockers[slot] = blocker;
+            return Shadowed::Dark;
         }
-        att
+        if !filtered {
+            return Shadowed::Lit;
+        }
+        ctx.shadow_att = att;
+        Shadowed::Filtered
     }
 
     /// A transparent candidate `obj` of the shadow ray `way`: whether it blocks the light
@@ -508,6 +544,21 @@ impl<'a> Tracer<'a> {
         }
         false
     }
+}
+
+/// A shadow ray's answer as its out-of-line copies (`shadow_avx`, `shadow_base`) return it:
+/// a byte in a register. Returned as a `DVec3`, it went back through memory, written as an
+/// x-y pair and z and read by `gather_each` as x and a y-z pair, a load the store buffer
+/// cannot forward (8 % of `shade`'s samples on mirror_spheres sat right after it). Nearly
+/// every answer is all of the light or none; a filtered one waits in `ctx.shadow_att`.
+#[derive(Clone, Copy)]
+enum Shadowed {
+    /// An opaque blocker: no light (`DVec3::ZERO`).
+    Dark,
+    /// Nothing in the way: all of it (`DVec3::ONE`).
+    Lit,
+    /// Filtered by transparent crossings: `ctx.shadow_att`.
+    Filtered,
 }
 
 /// Whether the opaque object `obj` crosses the shadow ray within `dist`: `Object::any_hit`,
