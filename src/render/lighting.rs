@@ -107,10 +107,10 @@ impl<'a> Tracer<'a> {
                     // `light_seen`'s own first test, asked here: a point light without media
                     // attenuation (nearly every light) sends its shadow ray without that
                     // call's frame and arguments (~25 instructions a shadow ray).
-                    lc *= if light.area.is_none() && !light.media_attenuation {
-                        self.shadow(p, l, dist, slot, ctx)
+                    lc = if light.area.is_none() && !light.media_attenuation {
+                        self.shadowed(lc, p, l, dist, slot, ctx)
                     } else {
-                        self.light_seen(p, (slot, light), l, dist, gathering, ctx)
+                        lc * self.light_seen(p, (slot, light), l, dist, gathering, ctx)
                     };
                     if lc == DVec3::ZERO {
                         continue;

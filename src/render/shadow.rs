@@ -149,11 +149,7 @@ impl<'a> Tracer<'a> {
 
     /// Light reaching `p` from a light `dist` away in direction `l`: zero behind an opaque
     /// object, filtered by each crossing of a transparent one. `slot` is the light's number,
-    /// for the cache of the last blocker. The copy compiled with AVX where the CPU has it, as
-    /// `Scene::first_hit` (the walk's node test and the set-up around it in three-operand
-    /// forms; the same operations, so the same bits). The choice is a flag the scene read
-    /// once (`Scene::avx`), here inlined: a function asking the CPU at every shadow ray, with
-    /// a frame for the call that asks it the first time, cost ~20 instructions a ray.
+    /// for the cache of the last blocker.
     #[inline(always)]
     pub(super) fn shadow(
         &self,
@@ -163,12 +159,44 @@ impl<'a> Tracer<'a> {
         slot: usize,
         ctx: &mut TraceCtx<'a>,
     ) -> DVec3 {
+        // `1 * x` is `x` to the bit: the answer itself.
+        self.shadowed(DVec3::ONE, p, l, dist, slot, ctx)
+    }
+
+    /// `lc * self.shadow(..)`, to the bit, with the answer's three cases multiplied apart:
+    /// joined first into one `DVec3`, the answer went through a stack slot written as an
+    /// x-y pair and z and read as x and a y-z pair, which the store buffer cannot forward
+    /// (`Shadowed`). Nothing in the way leaves `lc` as it is (`lc * 1` is `lc`).
+    ///
+    /// The shadow test is the copy compiled with AVX where the CPU has it, as
+    /// `Scene::first_hit` (the walk's node test and the set-up around it in three-operand
+    /// forms; the same operations, so the same bits). The choice is a flag the scene read
+    /// once (`Scene::avx`), here inlined: a function asking the CPU at every shadow ray, with
+    /// a frame for the call that asks it the first time, cost ~20 instructions a ray.
+    #[inline(always)]
+    pub(super) fn shadowed(
+        &self,
+        lc: DVec3,
+        p: DVec3,
+        l: DVec3,
+        dist: f64,
+        slot: usize,
+        ctx: &mut TraceCtx<'a>,
+    ) -> DVec3 {
         #[cfg(target_arch = "x86_64")]
-        if self.scene.avx() {
+        let answer = if self.scene.avx() {
             // SAFETY: the scene found that the CPU has AVX.
-            return unsafe { self.shadow_avx(p, l, dist, slot, ctx) };
+            unsafe { self.shadow_avx(p, l, dist, slot, ctx) }
+        } else {
+            self.shadow_base(p, l, dist, slot, ctx)
+        };
+        #[cfg(not(target_arch = "x86_64"))]
+        let answer = self.shadow_base(p, l, dist, slot, ctx);
+        match answer {
+            Shadowed::Dark => lc * DVec3::ZERO,
+            Shadowed::Lit => lc,
+            Shadowed::Filtered => lc * ctx.shadow_att,
         }
-        self.shadow_base(p, l, dist, slot, ctx)
     }
 
     /// `shadow` out of line, for the area lights' walk: inlined there, its two calls grew
@@ -197,7 +225,7 @@ impl<'a> Tracer<'a> {
         dist: f64,
         slot: usize,
         ctx: &mut TraceCtx<'a>,
-    ) -> DVec3 {
+    ) -> Shadowed {
         // SAFETY: the caller says the CPU has AVX.
         self.shadow_in(
             unsafe { crate::geom::bvh::Avx::new() },
@@ -218,7 +246,7 @@ impl<'a> Tracer<'a> {
         dist: f64,
         slot: usize,
         ctx: &mut TraceCtx<'a>,
-    ) -> DVec3 {
+    ) -> Shadowed {
         self.shadow_in(crate::geom::bvh::Sse, p, l, dist, slot, ctx)
     }
 
@@ -232,21 +260,33 @@ impl<'a> Tracer<'a> {
         dist: f64,
         slot: usize,
         ctx: &mut TraceCtx<'a>,
-    ) -> DVec3 {
+    ) -> Shadowed {
         ctx.rays += 1;
         // Surfaces at the light itself do not shadow it (radiosity/cornell's lights sit on the
         // ceiling). Measured: a light up to 2.85e-5 above a disc facing away from the lit
         // wall is unshadowed, 2.9e-5 is shadowed, the same at every angle and scale tried.
         let dist = dist - SHADOW_TOLERANCE;
         if dist <= 0.0 {
-            return DVec3::ONE;
+            return Shadowed::Lit;
         }
-        let ray = Ray::new(p, l);
+        // The callers pass `p` and `l` through memory, `l` often stored as three doubles
+        // just before the call; copied into the ray as an x-y pair and z, the pair's load
+        // spanned two of those stores and waited for them to reach the cache (a tenth of
+        // this function's samples on mirror_spheres, and the reciprocal's divisions after
+        // it). Read one by one, and the ray written as the walks read it (`ray_at`); `l` is
+        // `ray.dir` after, where a local copy of it for the closure was written as three
+        // doubles and read back as a pair again.
+        let (p, l) = (
+            crate::math::by_coordinates(&p),
+            crate::math::by_coordinates(&l),
+        );
+        let mut at = std::mem::MaybeUninit::uninit();
+        let ray = ray_at(&mut at, p, l);
         // `projected_through`: no light unless the path crosses the object, and only what
         // lies between the point and that crossing casts a shadow (manual 3.4.4.1.8).
-        let dist = match self.projected_dist(&ray, dist, slot, ctx) {
+        let dist = match self.projected_dist(ray, dist, slot, ctx) {
             Some(d) => d,
-            None => return DVec3::ZERO,
+            None => return Shadowed::Dark,
         };
         // Any opaque blocker makes the answer exactly zero, whatever else the ray crosses, so
         // the last one is tried first. Its box test is the one the BVH would have made.
@@ -256,19 +296,19 @@ impl<'a> Tracer<'a> {
         // Once for the cached blocker's box and the walk (each took its own three divisions,
         // and its own tests of the ray for NaN-free slabs); the reciprocal is `recip` to the
         // bit, read so as to forward from the stores just made.
-        let r = crate::geom::bvh::Recip::of(&ray);
+        let r = crate::geom::bvh::Recip::of(ray);
         // The cached boxes' tests are `Aabb::hit(..).is_some()`, through plain comparisons
         // where no slab distance can be NaN (`Slabs`): most cached blockers are not in the
         // way, and the NaN-aware test was ~75 instructions of every such shadow ray.
         // `Slabs::hits` read the just-built ray's origin as a (y, z) pair (a tenth of this
-        // function's samples on cornell, a fifth on lights/arealit1, before `by_coordinates`).
-        let origin = crate::math::by_coordinates(&ray.origin);
-        let slabs = crate::math::Slabs::known(origin, r.inv, r.plain);
+        // function's samples on cornell, a fifth on lights/arealit1, before the origin was
+        // read one coordinate at a time): `p`, read so above.
+        let slabs = crate::math::Slabs::known(p, r.inv, r.plain);
         let mut tried = None;
         if let Some(b) = ctx.blockers[slot] {
             if slabs.hits(&b.bounds, dist) {
-                if opaque_blocks(b, &ray, &slabs, dist, ctx) {
-                    return DVec3::ZERO;
+                if opaque_blocks(b, ray, &slabs, dist, ctx) {
+                    return Shadowed::Dark;
                 }
                 tried = Some(b);
             }
@@ -286,20 +326,22 @@ impl<'a> Tracer<'a> {
             let start = ctx.surface.len();
             if slabs.hits(&top.bounds, dist)
                 && slabs.hits(&m.bounds, dist)
-                && self.member_blocks(m, &ray, l, dist, photons_only, ctx)
+                && self.member_blocks(m, ray, ray.dir, dist, photons_only, ctx)
             {
-                return DVec3::ZERO;
+                return Shadowed::Dark;
             }
             ctx.surface.truncate(start);
         }
         let mut att = DVec3::ONE;
         let mut blocker = None;
+        // Whether a transparent candidate filtered `att`: until one does, it is all light.
+        let mut filtered = false;
         // The opaque case inline (nearly every candidate: a sphere's or a plane's `any_hit`
         // through `leaf_any_hit`), where the whole closure was called out of line for each
         // leaf (~40 instructions a call); transparent objects in `through_transparent`.
         self.scene.for_each_candidate_recip(
             lanes,
-            &ray,
+            ray,
             &r,
             dist,
             #[inline(always)]
@@ -312,8 +354,8 @@ impl<'a> Tracer<'a> {
                 if !obj.transparent {
                     // A plain sphere's `any_hit` without the call through its table.
                     let blocks = match c.sphere() {
-                        Some(s) => s.blocks(&ray, dist),
-                        None => opaque_blocks(obj, &ray, &slabs, dist, ctx),
+                        Some(s) => s.blocks(ray, dist),
+                        None => opaque_blocks(obj, ray, &slabs, dist, ctx),
                     };
                     if blocks {
                         att = DVec3::ZERO;
@@ -323,19 +365,25 @@ impl<'a> Tracer<'a> {
                     return false;
                 }
                 let way = Way {
-                    ray,
-                    l,
+                    ray: *ray,
+                    l: ray.dir,
                     dist,
                     slot,
                     photons_only,
                 };
+                filtered = true;
                 self.through_transparent(obj, &way, ctx, &mut att)
             },
         );
         if blocker.is_some() {
             ctx.blockers[slot] = blocker;
+            return Shadowed::Dark;
         }
-        att
+        if !filtered {
+            return Shadowed::Lit;
+        }
+        ctx.shadow_att = att;
+        Shadowed::Filtered
     }
 
     /// A transparent candidate `obj` of the shadow ray `way`: whether it blocks the light
@@ -498,6 +546,21 @@ impl<'a> Tracer<'a> {
     }
 }
 
+/// A shadow ray's answer as its out-of-line copies (`shadow_avx`, `shadow_base`) return it:
+/// a byte in a register. Returned as a `DVec3`, it went back through memory, written as an
+/// x-y pair and z and read by `gather_each` as x and a y-z pair, a load the store buffer
+/// cannot forward (8 % of `shade`'s samples on mirror_spheres sat right after it). Nearly
+/// every answer is all of the light or none; a filtered one waits in `ctx.shadow_att`.
+#[derive(Clone, Copy)]
+enum Shadowed {
+    /// An opaque blocker: no light (`DVec3::ZERO`).
+    Dark,
+    /// Nothing in the way: all of it (`DVec3::ONE`).
+    Lit,
+    /// Filtered by transparent crossings: `ctx.shadow_att`.
+    Filtered,
+}
+
 /// Whether the opaque object `obj` crosses the shadow ray within `dist`: `Object::any_hit`,
 /// a small union's members tested through the ray's `slabs` (its own took three divisions,
 /// and `any_hit`'s frame for every union: cornell's walls and blocks).
@@ -513,6 +576,34 @@ fn opaque_blocks<'a>(
         Some(members) => Object::scan_any_hit(members, ray, slabs, dist, ctx),
         None => leaf_any_hit(obj, ray, dist, ctx),
     }
+}
+
+/// The ray from `p` along `l`, written into `at` as an x-y pair (one 16-byte store) and z for
+/// each vector: what the walks and the sphere test read (`by_coordinates`' 8-byte loads and
+/// x-y pairs), each load within one store, which the store buffer forwards. Built by value,
+/// LLVM wrote each vector as three doubles where it had them apart, and the pairs' loads
+/// spanning two stores waited for both to reach the cache.
+#[inline(always)]
+fn ray_at(at: &mut std::mem::MaybeUninit<Ray>, p: DVec3, l: DVec3) -> &Ray {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{_mm_set_pd, _mm_storeu_pd};
+        let r = at.as_mut_ptr();
+        // SAFETY: the stores write every field of the `Ray` behind `r` (two x-y pairs of
+        // doubles and two doubles, at their fields' places: `DVec3` is `repr(C)` x, y, z),
+        // after which it is initialised; SSE2 is part of x86_64.
+        unsafe {
+            let o = std::ptr::addr_of_mut!((*r).origin);
+            let d = std::ptr::addr_of_mut!((*r).dir);
+            _mm_storeu_pd(o.cast::<f64>(), _mm_set_pd(p.y, p.x));
+            std::ptr::addr_of_mut!((*o).z).write(p.z);
+            _mm_storeu_pd(d.cast::<f64>(), _mm_set_pd(l.y, l.x));
+            std::ptr::addr_of_mut!((*d).z).write(l.z);
+            at.assume_init_ref()
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    at.write(Ray::new(p, l))
 }
 
 /// A shadow ray as `Tracer::through_transparent` needs it: the ray, its unit direction, how

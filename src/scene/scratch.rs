@@ -43,6 +43,9 @@ pub struct Scratch<'a> {
     /// Per light, the member of a transparent union (and that union, a top-level object)
     /// whose crossing last blocked a shadow ray to it, asked first likewise.
     pub member_blockers: Vec<Option<(&'a Object, &'a Object)>>,
+    /// The light a shadow ray left after transparent crossings, when its test answers
+    /// `Filtered` (render::shadow: the answer itself is a byte, returned in a register).
+    pub shadow_att: DVec3,
     /// The members of a transparent union a shadow ray may cross (render::shadow).
     pub shadow_members: Vec<&'a Object>,
     /// Radiosity samples gathered while tracing the current camera sample, not yet in the
