@@ -6,8 +6,8 @@
 //! bits too. On the radiosity scenes most of a lookup's work is reading these lists
 //! (rad_def_test_37: ~800 k samples read, 45 % of them taken). Cells read
 //! whole (not listed, listed for the first time, or read by a probe's lookup) have their
-//! samples' reach and normal tested the same way (`quad_masks`) before the scalar code
-//! weighs or lists the few that pass.
+//! samples' reach and normal tested the same way (`quad_masks`); a whole read's weights are
+//! then worked out in the lanes too (`quad_weights`), a listing's by the scalar code.
 
 use crate::math::DVec3;
 
@@ -220,8 +220,67 @@ macro_rules! quad_masks {
             _mm256_mul_pd(at.nz, snz),
         );
         let facing = _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_NLT_UQ>(cos, at.half));
-        (s, reach, facing)
+        let lanes = Quad4 {
+            dx,
+            dy,
+            dz,
+            d2,
+            r,
+            cos,
+            snx,
+            sny,
+            snz,
+        };
+        (s, reach, facing, lanes)
     }};
+}
+
+/// What `quad_masks` worked out of a quad's four samples for a lookup, one lane each: the
+/// offsets from the samples to the point, their squared length, the samples' harmonic
+/// distances, normals, and cosines with the lookup's normal.
+#[cfg(target_arch = "x86_64")]
+struct Quad4 {
+    dx: std::arch::x86_64::__m256d,
+    dy: std::arch::x86_64::__m256d,
+    dz: std::arch::x86_64::__m256d,
+    d2: std::arch::x86_64::__m256d,
+    r: std::arch::x86_64::__m256d,
+    cos: std::arch::x86_64::__m256d,
+    snx: std::arch::x86_64::__m256d,
+    sny: std::arch::x86_64::__m256d,
+    snz: std::arch::x86_64::__m256d,
+}
+
+/// `weight_tail`'s operations in the lanes (after `quad_masks`' reach and normal tests):
+/// each lane's weight (the scalar's bits, NaN where it is NaN) and the mask of the lanes whose
+/// front and error tests pass. The same IEEE operations in the same order, no FMA; where
+/// the scalar code returns None on `<` or `>=`, the lane is kept on the unordered negation.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn quad_weights(at: &Lookup4, q: &Quad4) -> (std::arch::x86_64::__m256d, i32) {
+    use std::arch::x86_64::*;
+    let dist = _mm256_sqrt_pd(q.d2);
+    // Ward's front test: not (d · (n + s.n) · 0.5 < -0.05 · s.r).
+    let (mx, my, mz) = (
+        _mm256_add_pd(at.nx, q.snx),
+        _mm256_add_pd(at.ny, q.sny),
+        _mm256_add_pd(at.nz, q.snz),
+    );
+    let dot = _mm256_add_pd(
+        _mm256_add_pd(_mm256_mul_pd(q.dx, mx), _mm256_mul_pd(q.dy, my)),
+        _mm256_mul_pd(q.dz, mz),
+    );
+    let front = _mm256_mul_pd(_mm256_set1_pd(-0.05), q.r);
+    let behind = _mm256_cmp_pd::<_CMP_NLT_UQ>(_mm256_mul_pd(dot, at.half), front);
+    // `normal_err`: 2 · sqrt(max(1 - cos, 0)), `max` giving 0 for a NaN as `f64::max` does
+    // (`maxpd` returns its second operand when either is NaN).
+    let one = _mm256_set1_pd(1.0);
+    let turn = _mm256_max_pd(_mm256_sub_pd(one, q.cos), _mm256_setzero_pd());
+    let nerr = _mm256_mul_pd(_mm256_set1_pd(2.0), _mm256_sqrt_pd(turn));
+    let err = _mm256_add_pd(_mm256_div_pd(dist, q.r), nerr);
+    let inside = _mm256_cmp_pd::<_CMP_NGE_UQ>(err, at.bound);
+    let w = _mm256_sqrt_pd(_mm256_sub_pd(one, _mm256_div_pd(err, at.bound)));
+    (w, _mm256_movemask_pd(_mm256_and_pd(behind, inside)))
 }
 
 /// A lookup's point, normal and bound in every lane.
@@ -345,17 +404,30 @@ unsafe fn blend_taken_avx(
     b: &mut Blend,
     done: impl Fn(&Blend) -> bool,
 ) -> bool {
+    use std::arch::x86_64::_mm256_storeu_pd;
     let at = Lookup4::new(p, n, bound);
     let mut quads = ids.chunks_exact(4);
     for q in &mut quads {
-        let (s, reach, facing) = quad_masks!(foot, q, &at);
-        let take = reach & facing;
+        let (s, reach, facing, lanes) = quad_masks!(foot, q, &at);
+        // `weight`'s level test too: deeper lookups' cells hold samples of deeper levels.
+        let low = (0..4).fold(0, |m, k| m | (i32::from(s[k].level <= level) << k));
+        let near = reach & facing & low;
+        if near == 0 {
+            continue;
+        }
+        // The weights of the four at once: one chain of divisions and square roots instead
+        // of one per sample taken (radiosity2's curved surfaces read whole cells).
+        let (w, kept) = quad_weights(&at, &lanes);
+        let take = near & kept;
         if take == 0 {
             continue;
         }
+        let mut ws = [0.0; 4];
+        _mm256_storeu_pd(ws.as_mut_ptr(), w);
         for k in 0..4 {
+            // `Blend::take`'s operations, in the ids' order.
             if take & (1 << k) != 0 {
-                b.add(s[k], irr[q[k] as usize], p, n, level, bound);
+                b.take(irr[q[k] as usize], Some(ws[k]));
                 if done(b) {
                     return false;
                 }
@@ -482,7 +554,7 @@ unsafe fn list_cell_avx(
     let at = Lookup4::new(p, n, bound);
     let mut quads = ids.chunks_exact(4);
     for q in &mut quads {
-        let (_, _, facing) = quad_masks!(foot, q, &at);
+        let (_, _, facing, _) = quad_masks!(foot, q, &at);
         if facing == 0 {
             continue;
         }
