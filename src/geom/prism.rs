@@ -257,7 +257,7 @@ impl Prism {
             return Window::Linear {
                 o,
                 d,
-                dd: d.x * d.x + d.z * d.z,
+                inv_dd: Self::inv_dd(d),
                 y_lo,
                 y_hi,
             };
@@ -294,8 +294,10 @@ impl Prism {
     /// Bounds of the `t` any wall crossing of piece `pc` can get from `wall_t` (linear
     /// sweep): the least and the greatest of the linear `t(q)` over the piece's box, widened
     /// by a margin far above the rounding of `wall_t` and of the curve's points (a few ulps
-    /// of the terms).
-    fn wall_t_range(pc: &Piece, o: DVec3, d: DVec3, dd: f64) -> (f64, f64) {
+    /// of the terms). `inv_dd` is `1 / (d.x² + d.z²)`, taken once per ray: a product by it
+    /// differs from the quotient by an ulp, far inside the margin, and saves the piece its
+    /// four divisions.
+    fn wall_t_range(pc: &Piece, o: DVec3, d: DVec3, inv_dd: f64) -> (f64, f64) {
         let (x0, x1) = if d.x >= 0.0 {
             (pc.lo[0], pc.hi[0])
         } else {
@@ -306,17 +308,27 @@ impl Prism {
         } else {
             (pc.hi[1], pc.lo[1])
         };
-        let t0 = ((x0 - o.x) * d.x + (z0 - o.z) * d.z) / dd;
-        let t1 = ((x1 - o.x) * d.x + (z1 - o.z) * d.z) / dd;
+        let n0 = (x0 - o.x) * d.x + (z0 - o.z) * d.z;
+        let n1 = (x1 - o.x) * d.x + (z1 - o.z) * d.z;
         let size = (pc.hi[0] - pc.lo[0]).max(pc.hi[1] - pc.lo[1]);
         let mag = |x: f64, z: f64| {
-            ((x.abs() + o.x.abs() + size) * d.x.abs() + (z.abs() + o.z.abs() + size) * d.z.abs())
-                / dd
+            (x.abs() + o.x.abs() + size) * d.x.abs() + (z.abs() + o.z.abs() + size) * d.z.abs()
         };
         (
-            t0 - 1e-9 * (mag(x0, z0) + t0.abs()),
-            t1 + 1e-9 * (mag(x1, z1) + t1.abs()),
+            (n0 - 1e-9 * (mag(x0, z0) + n0.abs())) * inv_dd,
+            (n1 + 1e-9 * (mag(x1, z1) + n1.abs())) * inv_dd,
         )
+    }
+
+    /// `1 / (d.x² + d.z²)` for `wall_t_range`, or NaN (which prunes nothing) when the sum
+    /// is so small that its reciprocal could overflow where the quotients would not.
+    fn inv_dd(d: DVec3) -> f64 {
+        let dd = d.x * d.x + d.z * d.z;
+        if dd >= 1e-300 {
+            1.0 / dd
+        } else {
+            f64::NAN
+        }
     }
 
     /// The `t` range outside which `wall_t` surely finds the ray beyond the heights: where
@@ -349,14 +361,14 @@ impl Prism {
         let plane = self.cut_plane(ray);
         if let Some((nx, c0, nz)) = plane {
             let g = |q: P2| nx * q[0] + nz * q[1] + c0;
-            let dd = d.x * d.x + d.z * d.z;
+            let inv_dd = Self::inv_dd(d);
             // A crossing outside the heights is dropped by `wall_t`: pieces whose `t` range
             // misses the heights' are never refined (a steep ray crosses the heights over a
             // short stretch, and most pieces the cut plane meets lie outside it).
             let (y_lo, y_hi) = self.height_t_range(o, d);
             for (i, pc) in self.pieces.iter().enumerate() {
                 if Self::may_cut(pc, g) {
-                    let (floor, ceil) = Self::wall_t_range(pc, o, d, dd);
+                    let (floor, ceil) = Self::wall_t_range(pc, o, d, inv_dd);
                     if floor > y_hi || ceil < y_lo {
                         continue;
                     }
@@ -457,7 +469,7 @@ enum Window {
     Linear {
         o: DVec3,
         d: DVec3,
-        dd: f64,
+        inv_dd: f64,
         y_lo: f64,
         y_hi: f64,
     },
@@ -476,11 +488,11 @@ impl Window {
             Window::Linear {
                 o,
                 d,
-                dd,
+                inv_dd,
                 y_lo,
                 y_hi,
             } => {
-                let (floor, ceil) = Prism::wall_t_range(pc, o, d, dd);
+                let (floor, ceil) = Prism::wall_t_range(pc, o, d, inv_dd);
                 !(floor > y_hi || ceil < y_lo)
             }
             Window::Conic { lo, hi } => {
