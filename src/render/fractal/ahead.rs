@@ -55,6 +55,8 @@ impl Orbit {
 struct Ahead {
     key: [u64; 7],
     prev: Option<(f64, f64)>,
+    /// The step to `prev` from the point asked before it.
+    step: Option<(f64, f64)>,
     kept: [Option<Orbit>; L],
     /// Calls in a row whose point no earlier run had guessed.
     misses: u32,
@@ -62,7 +64,7 @@ struct Ahead {
 
 thread_local! {
     static AHEAD: RefCell<Ahead> = const {
-        RefCell::new(Ahead { key: [u64::MAX; 7], prev: None, kept: [None; L], misses: 0 })
+        RefCell::new(Ahead { key: [u64::MAX; 7], prev: None, step: None, kept: [None; L], misses: 0 })
     };
 }
 
@@ -93,11 +95,14 @@ impl Ahead {
         if self.key != key {
             self.key = key;
             self.prev = None;
+            self.step = None;
             self.kept = [None; L];
         }
         let kept = |q: (f64, f64)| self.kept.iter().flatten().find(|o| o.at(q)).copied();
         let own = kept(p);
         let prev = self.prev.replace(p);
+        let d = prev.map(|q| (p.0 - q.0, p.1 - q.1));
+        let step = std::mem::replace(&mut self.step, d);
         if let Some(Orbit { value: Some(v), .. }) = own {
             self.misses = 0;
             return v;
@@ -114,12 +119,18 @@ impl Ahead {
         }
         let mut lanes = [None; L];
         lanes[0] = Some(own.unwrap_or_else(|| Orbit::start(p)));
-        if let Some(q) = prev {
-            let d = (p.0 - q.0, p.1 - q.1);
-            let mut next = p;
-            for lane in &mut lanes[1..] {
-                next = (next.0 + d.0, next.1 + d.1);
-                *lane = Some(kept(next).unwrap_or_else(|| Orbit::start(next)));
+        if let Some(d) = d {
+            let add = |a: (f64, f64), b: (f64, f64)| (a.0 + b.0, a.1 + b.1);
+            let bits = |a: (f64, f64)| (a.0.to_bits(), a.1.to_bits());
+            let guesses = match step {
+                // Points rounded to a grid step by one of two amounts (the grid's spacing
+                // does not divide the rays' spacing; on fractals3's rotated pattern the
+                // last step repeats for 27 % of the points, one of the last two for 94 %).
+                Some(e) if bits(e) != bits(d) => [add(p, d), add(p, e), add(add(p, d), e)],
+                _ => [add(p, d), add(add(p, d), d), add(add(add(p, d), d), d)],
+            };
+            for (lane, q) in lanes[1..].iter_mut().zip(guesses) {
+                *lane = Some(kept(q).unwrap_or_else(|| Orbit::start(q)));
             }
         }
         run::<MIN>(f, &mut lanes);
