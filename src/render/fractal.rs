@@ -4,6 +4,8 @@
 
 use crate::scene::pattern::Fractal;
 
+mod ahead;
+
 /// Escape-time fractals. From z = c (mandel) or z = p (julia), z ← zⁿ + c; leaving the
 /// radius-2 disc at step k (from 0) gives the exterior value (type 1: k/N, measured), staying
 /// in for N steps the interior value (type 0: 1). Other types read the orbit as the manual
@@ -15,8 +17,8 @@ pub(super) fn fractal(f: &Fractal, p: (f64, f64)) -> f64 {
     match (f.exponent, f.interior.0) {
         // Only interior type 1 reads the orbit's smallest point; the loop without it is
         // shorter (same values either way).
-        (2, 1) => fractal2::<true>(f, p),
-        (2, _) => fractal2::<false>(f, p),
+        (2, 1) => ahead::fractal2_ahead::<true>(f, p),
+        (2, _) => ahead::fractal2_ahead::<false>(f, p),
         _ => fractal_n(f, p),
     }
 }
@@ -53,7 +55,8 @@ fn fractal_n(f: &Fractal, p: (f64, f64)) -> f64 {
 /// z·z's products zr·zr and zi·zi are the ones the escape test of the step before summed, so
 /// each is computed once, and zr·zi + zi·zr is zr·zi + zr·zi (the same product twice). The
 /// orbit is the same to the bit; the loop is about a sixth shorter. `MIN`: whether to keep
-/// the orbit's smallest |z|² (interior type 1 alone reads it).
+/// the orbit's smallest |z|² (interior type 1 alone reads it). `fractal` asks it through
+/// `ahead`, which steps the same orbit beside the ones the next calls are likely to ask.
 #[inline(always)]
 fn fractal2<const MIN: bool>(f: &Fractal, p: (f64, f64)) -> f64 {
     let c = f.julia.unwrap_or(p);
