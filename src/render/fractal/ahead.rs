@@ -351,7 +351,7 @@ mod tests {
         })
         .collect();
         let mut asked = Vec::new();
-        for (i, f) in fractals.iter().enumerate() {
+        for i in 0..fractals.len() {
             for row in 0..12 {
                 let y = -0.05 + 0.0173 * row as f64;
                 let mut px = -0.78;
