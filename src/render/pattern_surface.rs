@@ -55,10 +55,12 @@ pub(super) fn slope(sl: &Slope, q: DVec3) -> f64 {
     let Some(s) = surface() else {
         return 0.0;
     };
-    let d = if sl.point_at {
-        sl.dir - s.point
+    // `dir`'s unit vector and the weights are the pattern's constants (`Slope::new`); only
+    // `point_at`'s direction depends on the point.
+    let unit = if sl.point_at {
+        (sl.dir - s.point).normalize_or_zero()
     } else {
-        sl.dir
+        sl.unit_dir
     };
     let span = |v: f64, lo: f64, hi: f64| {
         if hi == lo {
@@ -67,15 +69,11 @@ pub(super) fn slope(sl: &Slope, q: DVec3) -> f64 {
             (v - lo) / (hi - lo)
         }
     };
-    let v = span(
-        angle_value(s.normal.dot(d.normalize_or_zero())),
-        sl.lo,
-        sl.hi,
-    );
+    let v = span(angle_value(s.normal.dot(unit)), sl.lo, sl.hi);
     match sl.altitude {
-        Some((a, lo, hi)) if !sl.point_at => {
-            let (wd, wa) = (sl.dir.length(), a.length());
-            let g = span(q.dot(a.normalize_or_zero()), lo, hi);
+        Some((_, lo, hi)) if !sl.point_at => {
+            let (wd, wa) = sl.weights;
+            let g = span(q.dot(sl.unit_altitude), lo, hi);
             if wd + wa == 0.0 {
                 0.0
             } else {

@@ -296,18 +296,31 @@ pub fn image(im: &ImageMap, lp: DVec3) -> Rgbft {
         let x0 = (fx - 0.5).floor();
         let y0 = (fy - 0.5).floor();
         let (tx, ty) = (fx - 0.5 - x0, fy - 0.5 - y0);
-        let px = |x: f64, y: f64| {
-            let xi = (x as i64).rem_euclid(im.width as i64) as usize;
-            let yi = (y as i64).rem_euclid(im.height as i64) as usize;
-            im.pixels.get(yi * im.width as usize + xi)
-        };
-        let top = px(x0, y0).lerp(px(x0 + 1.0, y0), tx);
-        let bottom = px(x0, y0 + 1.0).lerp(px(x0 + 1.0, y0 + 1.0), tx);
+        // The two columns and two rows wrapped once each, not once per corner: the four
+        // corners were an out-of-line closure (its colour returned through memory), each with
+        // two 64-bit remainders (interp: ~11 % of the time in the closure and its caller).
+        let (c0, c1) = (wrap(x0, im.width), wrap(x0 + 1.0, im.width));
+        let w = im.width as usize;
+        let (r0, r1) = (wrap(y0, im.height) * w, wrap(y0 + 1.0, im.height) * w);
+        let top = im.pixels.get(r0 + c0).lerp(im.pixels.get(r0 + c1), tx);
+        let bottom = im.pixels.get(r1 + c0).lerp(im.pixels.get(r1 + c1), tx);
         return top.lerp(bottom, ty);
     }
     let xi = (fx as usize).min(im.width as usize - 1);
     let yi = (fy as usize).min(im.height as usize - 1);
     im.pixels.get(yi * im.width as usize + xi)
+}
+
+/// `(x as i64).rem_euclid(n)`: the pixel index x (a whole number) wrapped into 0..n (n > 0).
+/// Inside the picture, where nearly every index is, without the division.
+#[inline(always)]
+fn wrap(x: f64, n: u32) -> usize {
+    let i = x as i64;
+    if (i as u64) < n as u64 {
+        i as usize
+    } else {
+        i.rem_euclid(n as i64) as usize
+    }
 }
 
 /// The pixel (row 0 at the top) a `material_map` reads at `lp`: the image's nearest pixel,
@@ -439,6 +452,31 @@ mod tests {
             items: vec![onion.clone(), aoi],
         };
         assert_eq!(Memo::for_pigment(&nested), Memo::NONE);
+    }
+
+    #[test]
+    fn wrapped_indices_are_the_remainders() {
+        let mut xs = vec![
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            1e300,
+            -1e300,
+            2f64.powi(63),
+        ];
+        xs.extend((-700..700).map(|i| i as f64));
+        xs.extend([
+            -2f64.powi(32),
+            2f64.powi(32),
+            2f64.powi(32) + 5.0,
+            -2f64.powi(53),
+        ]);
+        for n in [1u32, 2, 7, 320, 65535, u32::MAX] {
+            for &x in &xs {
+                let want = (x as i64).rem_euclid(n as i64) as usize;
+                assert_eq!(wrap(x, n), want, "{x} in {n}");
+            }
+        }
     }
 
     #[test]

@@ -200,6 +200,37 @@ pub struct Slope {
     pub hi: f64,
     /// `altitude <a>, lo, hi`: a gradient along a (pattern space) from lo to hi.
     pub altitude: Option<(DVec3, f64, f64)>,
+    /// Made by [`Slope::new`] from the fields above, so every hit does not redo them (four
+    /// square roots and three divisions a slope value): `dir`'s unit vector (unused with
+    /// `point_at`), the altitude's unit vector, and the lengths of `dir` and the altitude
+    /// that weigh the two.
+    pub unit_dir: DVec3,
+    pub unit_altitude: DVec3,
+    pub weights: (f64, f64),
+}
+
+impl Slope {
+    /// The slope with its derived fields, computed by the very operations the pattern used
+    /// to do per hit (`normalize_or_zero`, `length`), so the values keep their bits.
+    pub fn new(
+        dir: DVec3,
+        point_at: bool,
+        lo: f64,
+        hi: f64,
+        altitude: Option<(DVec3, f64, f64)>,
+    ) -> Slope {
+        let a = altitude.map_or(DVec3::ZERO, |(a, _, _)| a);
+        Slope {
+            dir,
+            point_at,
+            lo,
+            hi,
+            altitude,
+            unit_dir: dir.normalize_or_zero(),
+            unit_altitude: a.normalize_or_zero(),
+            weights: (dir.length(), a.length()),
+        }
+    }
 }
 
 #[derive(Clone, Debug)]

@@ -354,28 +354,17 @@ impl Parser {
     fn parse_slope(&mut self) -> PResult<Slope> {
         if !self.eat_sym(Sym::LBrace)? {
             // The old form without braces, `slope -z` (advanced/balcony/terrain.inc).
-            return Ok(Slope {
-                dir: self.parse_vector()?,
-                point_at: false,
-                lo: 0.0,
-                hi: 1.0,
-                altitude: None,
-            });
+            return Ok(Slope::new(self.parse_vector()?, false, 0.0, 1.0, None));
         }
         let point_at = self.eat_keyword("point_at")?;
         let dir = self.parse_vector()?;
-        let mut sl = Slope {
-            dir,
-            point_at,
-            lo: 0.0,
-            hi: 1.0,
-            altitude: None,
-        };
+        let (mut lo, mut hi) = (0.0, 1.0);
         if self.eat_sym(Sym::Comma)? {
-            sl.lo = self.parse_float()?;
+            lo = self.parse_float()?;
             self.skip_optional_comma()?;
-            sl.hi = self.parse_float()?;
+            hi = self.parse_float()?;
         }
+        let mut altitude = None;
         if !point_at && self.eat_keyword("altitude")? {
             let a = self.parse_vector()?;
             let (mut lo, mut hi) = (0.0, 1.0);
@@ -384,10 +373,10 @@ impl Parser {
                 self.skip_optional_comma()?;
                 hi = self.parse_float()?;
             }
-            sl.altitude = Some((a, lo, hi));
+            altitude = Some((a, lo, hi));
         }
         self.expect_sym(Sym::RBrace, "slope")?;
-        Ok(sl)
+        Ok(Slope::new(dir, point_at, lo, hi, altitude))
     }
 
     /// A pattern modifier just read as keyword `k`; false when `k` is not one. `space` is the
