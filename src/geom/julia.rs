@@ -244,6 +244,8 @@ pub struct Julia {
     /// norms. See `keep_radii`.
     keep: [f64; KEEP],
     keep_sq: [f64; KEEP],
+    /// `keep_thr[j]`: the largest squared norm whose square root is at most `keep[j]`.
+    keep_thr: [f64; KEEP],
     /// The slice is w = 0: n = (0, 0, 0, 1) (zeros of either sign) and d = +0 (see `lift`).
     flat_slice: bool,
 }
@@ -341,6 +343,7 @@ impl Julia {
             bail_sq: sqrt_threshold(bailout),
             keep,
             keep_sq,
+            keep_thr: keep.map(sqrt_threshold),
             flat_slice: slice.0[..3].iter().all(|&x| x == 0.0)
                 && slice.0[3] == 1.0
                 && slice.1.to_bits() == 0,
@@ -436,10 +439,16 @@ impl Julia {
             }
             return Orbit::Inside;
         }
-        let bail = self.bailout;
-        let mut r = qnorm(&h);
+        // The branches compare the squared norm `s` with the thresholds of the radii
+        // (`sqrt(s) > bailout` exactly when `s > bail_sq`, and `sqrt(s) <= keep[j]` exactly
+        // when `s <= keep_thr[j]`): the escape is then known before the square root, whose
+        // latency no longer delays the exit branch (mispredicted once an orbit) while `r`,
+        // which the estimate needs, is computed beside it.
+        let bail_sq = self.bail_sq;
+        let mut s = qnorm_sq(&h);
+        let mut r = s.sqrt();
         let mut dr = 1.0;
-        if r > bail {
+        if s > bail_sq {
             return Orbit::Outside { r, dr: 1.0 };
         }
         for k in 0..steps {
@@ -447,12 +456,13 @@ impl Julia {
             let f = if CUBE { qmul(&h, &h2) } else { h2 };
             h = qadd(&f, &self.param);
             dr *= if CUBE { 3.0 * r * r } else { 2.0 * r };
-            r = qnorm(&h);
-            if r > bail {
+            s = qnorm_sq(&h);
+            r = s.sqrt();
+            if s > bail_sq {
                 return Orbit::Outside { r, dr };
             }
             let left = (steps - 1 - k) as usize;
-            if left < KEEP && r <= self.keep[left] {
+            if left < KEEP && s <= self.keep_thr[left] {
                 return Orbit::Inside;
             }
         }
@@ -460,10 +470,10 @@ impl Julia {
     }
 
     fn hypercomplex_orbit<const DE: bool>(&self, h: Q) -> Orbit {
-        let bail = self.bailout;
-        let mut r = qnorm(&h);
+        let s = qnorm_sq(&h);
+        let mut r = s.sqrt();
         let mut dr = 1.0;
-        if r > bail {
+        if s > self.bail_sq {
             return Orbit::Outside { r, dr: 1.0 };
         }
         let steps = self.max_iteration.saturating_sub(1);
@@ -475,9 +485,11 @@ impl Julia {
             if DE {
                 dr *= 2.0 * r;
             }
-            r = (0.5 * (z1.norm_sqr() + z2.norm_sqr())).sqrt();
-            // NaN does not escape (POV-Ray compares `> bailout`).
-            if r > bail {
+            let s = 0.5 * (z1.norm_sqr() + z2.norm_sqr());
+            r = s.sqrt();
+            // NaN does not escape (POV-Ray compares `> bailout`); the squared norm is compared
+            // as in `quaternion_orbit`.
+            if s > self.bail_sq {
                 return Orbit::Outside { r, dr };
             }
         }

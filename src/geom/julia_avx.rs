@@ -148,11 +148,14 @@ pub(super) unsafe fn inside4<const CUBE: bool>(j: &Julia, h: [Q; 4]) -> [bool; 4
 #[target_feature(enable = "avx")]
 pub(super) unsafe fn orbits4<const CUBE: bool>(j: &Julia, h: [Q; 4]) -> (u32, [f64; 4], [f64; 4]) {
     let steps = j.max_iteration.saturating_sub(1);
-    let bail = _mm256_set1_pd(j.bailout);
+    // The masks compare squared norms with the radii's thresholds, as `quaternion_orbit`
+    // does, so the branches do not wait for the square roots.
+    let bail_sq = _mm256_set1_pd(j.bail_sq);
     let mut h = lanes(&h);
-    let mut r = _mm256_sqrt_pd(norm_sq(&h));
+    let mut s = norm_sq(&h);
+    let mut r = _mm256_sqrt_pd(s);
     let mut dr = _mm256_set1_pd(1.0);
-    let esc0 = _mm256_cmp_pd::<_CMP_GT_OQ>(r, bail);
+    let esc0 = _mm256_cmp_pd::<_CMP_GT_OQ>(s, bail_sq);
     let mut out = _mm256_movemask_pd(esc0) as u32;
     let mut decided = out;
     // Per lane, the `r` and `dr` of its escape once `decided`: the lanes escaped at the start
@@ -171,13 +174,14 @@ pub(super) unsafe fn orbits4<const CUBE: bool>(j: &Julia, h: [Q; 4]) -> (u32, [f
                     mul(two, r)
                 },
             );
-            r = _mm256_sqrt_pd(norm_sq(&h));
-            let esc_v = _mm256_cmp_pd::<_CMP_GT_OQ>(r, bail);
+            s = norm_sq(&h);
+            r = _mm256_sqrt_pd(s);
+            let esc_v = _mm256_cmp_pd::<_CMP_GT_OQ>(s, bail_sq);
             let esc = _mm256_movemask_pd(esc_v) as u32;
             let left = (steps - 1 - k) as usize;
             let kept = if left < KEEP {
-                let q = _mm256_set1_pd(j.keep[left]);
-                _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LE_OQ>(r, q)) as u32
+                let q = _mm256_set1_pd(j.keep_thr[left]);
+                _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LE_OQ>(s, q)) as u32
             } else {
                 0
             };

@@ -641,3 +641,62 @@ fn avx_lanes_are_the_scalar_code() {
         }
     }
 }
+
+/// The orbit's branches on squared norms against `bail_sq` and `keep_thr` answer as the
+/// comparisons of the norms themselves (the code before them), to the bit, for points on
+/// and beside the surface.
+#[test]
+fn squared_norm_branches_are_the_norm_ones() {
+    let mut rng = crate::geom::test_rng::Lcg(31);
+    for (c, func, n) in [
+        ([-0.083, 0.0, -0.83, -0.025], JuliaFn::Sqr, 8),
+        ([-0.03, 0.5, -0.2, -0.5], JuliaFn::Cube, 8),
+        (FRACTAL3, JuliaFn::Sqr, 7),
+        ([0.2, 0.1, -0.3, 0.0], JuliaFn::Sqr, 12),
+    ] {
+        let j = julia(c, Algebra::Quaternion, func, n, 20.0);
+        let by_norms = |p: DVec3| {
+            let (mut h, _) = j.lift(p);
+            let mut r = qnorm(&h);
+            let mut dr = 1.0;
+            if r > j.bailout {
+                return Some((r.to_bits(), 1f64.to_bits()));
+            }
+            let steps = j.max_iteration - 1;
+            for k in 0..steps {
+                let cube = func == JuliaFn::Cube;
+                h = j.quaternion_step(&h);
+                dr *= if cube { 3.0 * r * r } else { 2.0 * r };
+                r = qnorm(&h);
+                if r > j.bailout {
+                    return Some((r.to_bits(), dr.to_bits()));
+                }
+                let left = (steps - 1 - k) as usize;
+                if left < KEEP && r <= j.keep[left] {
+                    return None;
+                }
+            }
+            None
+        };
+        for i in 0..40_000 {
+            let mut p = rng.vec(2.5);
+            if i % 2 == 0 {
+                let (mut lo, mut hi) = (0.0, 1.0);
+                for _ in 0..40 {
+                    let m = 0.5 * (lo + hi);
+                    if j.is_in(p * m) {
+                        lo = m;
+                    } else {
+                        hi = m;
+                    }
+                }
+                p *= if i % 4 == 0 { lo } else { hi };
+            }
+            let got = match j.orbit(p) {
+                Orbit::Inside => None,
+                Orbit::Outside { r, dr } => Some((r.to_bits(), dr.to_bits())),
+            };
+            assert_eq!(got, by_norms(p), "{c:?} at {p:?}");
+        }
+    }
+}
