@@ -284,12 +284,50 @@ mod tests {
                 }
                 acc
             }
-            _ => unreachable!("not used here"),
+            Expr::Min(v) => v
+                .iter()
+                .map(|a| walk(a, slots))
+                .collect::<Vec<_>>()
+                .into_iter()
+                .fold(f64::INFINITY, f64::min),
+            Expr::Max(v) => v
+                .iter()
+                .map(|a| walk(a, slots))
+                .collect::<Vec<_>>()
+                .into_iter()
+                .fold(f64::NEG_INFINITY, f64::max),
+            Expr::Select(v) => {
+                let vals: Vec<f64> = v.iter().map(|a| walk(a, slots)).collect();
+                if vals[0] < 0.0 {
+                    vals[1]
+                } else if vals.len() == 3 || vals[0] == 0.0 {
+                    vals[2]
+                } else {
+                    vals[3]
+                }
+            }
+            Expr::Call(f, v) => {
+                let args: Vec<f64> = v.iter().map(|a| walk(a, slots)).collect();
+                f.eval(&args)
+            }
         }
     }
 
     fn bin(op: BinOp, a: Expr, b: Expr) -> Expr {
         Expr::Bin(op, Box::new(a), Box::new(b))
+    }
+
+    /// `a*a - b`: a callee with a two-slot product and a slot operand.
+    fn sq_sub() -> std::sync::Arc<Function> {
+        std::sync::Arc::new(Function::from_expr(
+            vec!["a".into(), "b".into()],
+            &bin(
+                BinOp::Sub,
+                bin(BinOp::Mul, Expr::Slot(0), Expr::Slot(0)),
+                Expr::Slot(1),
+            ),
+            2,
+        ))
     }
 
     #[test]
@@ -369,6 +407,66 @@ mod tests {
                 from: Box::new(x()),
                 to: Box::new(y()),
                 body: Box::new(S(3)),
+            },
+            // min/max of one to four values (NaN and signed zeros reach them), select with
+            // three and four values, comparisons, logic and `!`, deep enough to spill
+            bin(
+                Add,
+                bin(
+                    Sub,
+                    Expr::Min(vec![x(), bin(Mul, y(), K(0.0)), bin(Div, z(), x())]),
+                    Expr::Max(vec![bin(Sub, x(), x()), z()]),
+                ),
+                bin(
+                    Mul,
+                    Expr::Select(vec![
+                        bin(Sub, x(), y()),
+                        Expr::Min(vec![y()]),
+                        Expr::Not(Box::new(bin(Lt, x(), z()))),
+                        Expr::Max(vec![x(), y(), z(), bin(Mul, x(), y())]),
+                    ]),
+                    Expr::Select(vec![
+                        z(),
+                        bin(And, x(), bin(Ge, y(), K(0.5))),
+                        bin(Or, bin(Eq, x(), y()), bin(Ne, z(), K(0.0))),
+                    ]),
+                ),
+            ),
+            // calls of a compiled function with plain and computed arguments, and with none
+            bin(
+                Sub,
+                Expr::Call(
+                    std::sync::Arc::new(Function::from_expr(
+                        vec!["a".into(), "b".into(), "c".into()],
+                        &bin(Sub, bin(Mul, S(0), S(1)), bin(Div, S(2), K(3.0))),
+                        3,
+                    )),
+                    vec![z(), bin(Add, x(), K(1.0)), y()],
+                ),
+                bin(
+                    Mul,
+                    Expr::Call(
+                        std::sync::Arc::new(Function::from_expr(
+                            vec![],
+                            &Expr::Math1(f64::sin, Box::new(K(0.25))),
+                            0,
+                        )),
+                        vec![],
+                    ),
+                    Expr::Neg(Box::new(x())),
+                ),
+            ),
+            // a call in a loop body with the loop's variable as an argument, a call among
+            // another call's arguments, a constant argument, and a callee squaring its argument
+            Expr::Loop {
+                product: false,
+                var: 3,
+                from: Box::new(K(-1.0)),
+                to: Box::new(K(2.0)),
+                body: Box::new(Expr::Call(
+                    sq_sub(),
+                    vec![S(3), Expr::Call(sq_sub(), vec![bin(Mul, x(), y()), K(0.5)])],
+                )),
             },
         ];
         let mut rnd = crate::math::xorshift_unit(7);
