@@ -107,11 +107,12 @@ impl Emitter {
             }
             Expr::Math1(f, a) => {
                 self.expr(a);
-                // A pointer that only looks different (another copy of the same function)
-                // still calls the same function through `F1`.
-                let op = if std::ptr::fn_addr_eq(*f, f64::sqrt as fn(f64) -> f64) {
+                // Another copy of the same function (another address) still calls the same
+                // function through `F1`: the bits are the same, only slower.
+                let is = |g: fn(f64) -> f64| std::ptr::fn_addr_eq(*f, g);
+                let op = if is(super::SQRT) || is(f64::sqrt) {
                     Op::Sqrt
-                } else if std::ptr::fn_addr_eq(*f, f64::abs as fn(f64) -> f64) {
+                } else if is(super::ABS) || is(f64::abs) {
                     Op::Abs
                 } else {
                     Op::F1(*f)

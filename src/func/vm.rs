@@ -72,6 +72,12 @@ pub struct Code {
 }
 
 impl Code {
+    /// The instructions, for tests that check what the compiler made of a parsed body.
+    #[cfg(test)]
+    pub(crate) fn ops(&self) -> &[Op] {
+        &self.ops
+    }
+
     pub fn eval(&self, args: &[f64]) -> f64 {
         let need = self.slots + self.max_stack;
         // Zeroing the whole inline buffer showed as 7% of an isosurface render; most bodies
