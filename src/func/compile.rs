@@ -3,7 +3,7 @@
 use std::sync::Arc;
 
 use super::vm::{Code, Op};
-use super::{truth, BinOp, Expr, Function};
+use super::{truth, BinOp, Expr, FnKind, Function};
 
 struct Emitter {
     ops: Vec<Op>,
@@ -12,6 +12,21 @@ struct Emitter {
     max_depth: usize,
     /// Ops before this index may not be fused with the next one: a jump lands at or after it.
     label: usize,
+    /// The next slot free for an inlined call's computed argument (above the body's own
+    /// slots), and the most slots used.
+    next_slot: usize,
+    max_slots: usize,
+}
+
+/// Longest callee body copied into its caller: past that the call's own cost is small beside
+/// the body's, and copies would multiply.
+const INLINE_OPS: usize = 64;
+
+/// Where an inlined callee reads its parameter: a slot of the caller or a constant.
+#[derive(Clone, Copy)]
+enum Arg {
+    Slot(u32),
+    Const(f64),
 }
 
 impl Emitter {
@@ -72,6 +87,107 @@ impl Emitter {
         self.push(plain, -1);
     }
 
+    fn callee(&mut self, f: &Arc<Function>) -> u32 {
+        let i = match self.callees.iter().position(|c| Arc::ptr_eq(c, f)) {
+            Some(i) => i,
+            None => {
+                self.callees.push(f.clone());
+                self.callees.len() - 1
+            }
+        };
+        i as u32
+    }
+
+    /// A call of a compiled function without loops, emitted as the callee's own ops reading
+    /// the caller's slots: a plain slot or constant argument is read where the callee reads
+    /// its parameter, any other is computed first (in argument order, as the call would) into
+    /// a slot of its own. The callee's operations on the same values in the same order, with no
+    /// second evaluation set up (dispatch on the kind, buffer, argument copy, loop). False
+    /// (nothing emitted) when the call is not of that kind.
+    fn inline(&mut self, f: &Function, args: &[Expr]) -> bool {
+        let FnKind::Code(c) = &f.kind else {
+            return false;
+        };
+        // A callee that stores (loops) could read a slot before writing it; an argument with
+        // a loop could change a caller slot another argument reads later than the call would.
+        if c.slots != args.len()
+            || c.ops.len() > INLINE_OPS
+            || args.iter().any(has_loop)
+            || c.ops.iter().any(|op| {
+                matches!(
+                    op,
+                    Op::Store(_) | Op::Jump(_) | Op::JumpIfZero(_) | Op::Pick(_) | Op::Nip
+                )
+            })
+        {
+            return false;
+        }
+        let mark = self.next_slot;
+        let mut map = Vec::with_capacity(args.len());
+        for a in args {
+            if let Some(k) = fold(a) {
+                map.push(Arg::Const(k));
+            } else if let Expr::Slot(s) = a {
+                map.push(Arg::Slot(*s as u32));
+            } else {
+                self.expr(a);
+                let s = self.next_slot as u32;
+                self.next_slot += 1;
+                self.max_slots = self.max_slots.max(self.next_slot);
+                self.push(Op::Store(s), -1);
+                map.push(Arg::Slot(s));
+            }
+        }
+        let depth = self.depth;
+        self.max_depth = self.max_depth.max(depth + c.max_stack - 1);
+        for op in &c.ops {
+            let slot = |s: &u32| map[*s as usize];
+            let op = match op {
+                Op::Load(s) => match slot(s) {
+                    Arg::Slot(t) => Op::Load(t),
+                    Arg::Const(k) => Op::Const(k),
+                },
+                Op::AddS(s) => match slot(s) {
+                    Arg::Slot(t) => Op::AddS(t),
+                    Arg::Const(k) => Op::AddC(k),
+                },
+                Op::SubS(s) => match slot(s) {
+                    Arg::Slot(t) => Op::SubS(t),
+                    Arg::Const(k) => Op::SubC(k),
+                },
+                Op::MulS(s) => match slot(s) {
+                    Arg::Slot(t) => Op::MulS(t),
+                    Arg::Const(k) => Op::MulC(k),
+                },
+                Op::DivS(s) => match slot(s) {
+                    Arg::Slot(t) => Op::DivS(t),
+                    Arg::Const(k) => Op::DivC(k),
+                },
+                Op::MulSS(a, b) => match (slot(a), slot(b)) {
+                    (Arg::Slot(p), Arg::Slot(q)) => Op::MulSS(p, q),
+                    // The left factor pushed, then the product with the right one.
+                    (a, b) => {
+                        self.ops.push(match a {
+                            Arg::Slot(p) => Op::Load(p),
+                            Arg::Const(k) => Op::Const(k),
+                        });
+                        match b {
+                            Arg::Slot(q) => Op::MulS(q),
+                            Arg::Const(k) => Op::MulC(k),
+                        }
+                    }
+                },
+                Op::Call(i, n) => Op::Call(self.callee(&c.callees[*i as usize]), *n),
+                other => other.clone(),
+            };
+            self.ops.push(op);
+        }
+        self.depth = depth + 1;
+        self.max_depth = self.max_depth.max(self.depth);
+        self.next_slot = mark;
+        true
+    }
+
     fn expr(&mut self, e: &Expr) {
         if let Some(c) = fold(e) {
             self.push(Op::Const(c), 1);
@@ -107,11 +223,12 @@ impl Emitter {
             }
             Expr::Math1(f, a) => {
                 self.expr(a);
-                // A pointer that only looks different (another copy of the same function)
-                // still calls the same function through `F1`.
-                let op = if std::ptr::fn_addr_eq(*f, f64::sqrt as fn(f64) -> f64) {
+                // Another copy of the same function (another address) still calls the same
+                // function through `F1`: the bits are the same, only slower.
+                let is = |g: fn(f64) -> f64| std::ptr::fn_addr_eq(*f, g);
+                let op = if is(super::SQRT) || is(f64::sqrt) {
                     Op::Sqrt
-                } else if std::ptr::fn_addr_eq(*f, f64::abs as fn(f64) -> f64) {
+                } else if is(super::ABS) || is(f64::abs) {
                     Op::Abs
                 } else {
                     Op::F1(*f)
@@ -146,18 +263,15 @@ impl Emitter {
                 }
             }
             Expr::Call(f, v) => {
+                if self.inline(f, v) {
+                    return;
+                }
                 for a in v {
                     self.expr(a);
                 }
-                let i = match self.callees.iter().position(|c| Arc::ptr_eq(c, f)) {
-                    Some(i) => i,
-                    None => {
-                        self.callees.push(f.clone());
-                        self.callees.len() - 1
-                    }
-                };
+                let i = self.callee(f);
                 let n = v.len() as u32;
-                self.push(Op::Call(i as u32, n), 1 - n as isize);
+                self.push(Op::Call(i, n), 1 - n as isize);
             }
             Expr::Loop {
                 product,
@@ -192,6 +306,17 @@ impl Emitter {
                 self.push(Op::Nip, -1);
             }
         }
+    }
+}
+
+/// Whether a `sum` or `prod` (which stores into a slot) is anywhere in `e`.
+fn has_loop(e: &Expr) -> bool {
+    match e {
+        Expr::Const(_) | Expr::Slot(_) => false,
+        Expr::Loop { .. } => true,
+        Expr::Neg(a) | Expr::Not(a) | Expr::Math1(_, a) => has_loop(a),
+        Expr::Bin(_, a, b) | Expr::Math2(_, a, b) => has_loop(a) || has_loop(b),
+        Expr::Min(v) | Expr::Max(v) | Expr::Select(v) | Expr::Call(_, v) => v.iter().any(has_loop),
     }
 }
 
@@ -236,12 +361,14 @@ pub fn compile(body: &Expr, slots: usize) -> Code {
         depth: 0,
         max_depth: 0,
         label: 0,
+        next_slot: slots,
+        max_slots: slots,
     };
     e.expr(body);
     Code {
         ops: e.ops,
         callees: e.callees,
-        slots,
+        slots: e.max_slots,
         max_stack: e.max_depth + 1,
     }
 }
@@ -284,12 +411,50 @@ mod tests {
                 }
                 acc
             }
-            _ => unreachable!("not used here"),
+            Expr::Min(v) => v
+                .iter()
+                .map(|a| walk(a, slots))
+                .collect::<Vec<_>>()
+                .into_iter()
+                .fold(f64::INFINITY, f64::min),
+            Expr::Max(v) => v
+                .iter()
+                .map(|a| walk(a, slots))
+                .collect::<Vec<_>>()
+                .into_iter()
+                .fold(f64::NEG_INFINITY, f64::max),
+            Expr::Select(v) => {
+                let vals: Vec<f64> = v.iter().map(|a| walk(a, slots)).collect();
+                if vals[0] < 0.0 {
+                    vals[1]
+                } else if vals.len() == 3 || vals[0] == 0.0 {
+                    vals[2]
+                } else {
+                    vals[3]
+                }
+            }
+            Expr::Call(f, v) => {
+                let args: Vec<f64> = v.iter().map(|a| walk(a, slots)).collect();
+                f.eval(&args)
+            }
         }
     }
 
     fn bin(op: BinOp, a: Expr, b: Expr) -> Expr {
         Expr::Bin(op, Box::new(a), Box::new(b))
+    }
+
+    /// `a*a - b`: a callee with a two-slot product and a slot operand.
+    fn sq_sub() -> std::sync::Arc<Function> {
+        std::sync::Arc::new(Function::from_expr(
+            vec!["a".into(), "b".into()],
+            &bin(
+                BinOp::Sub,
+                bin(BinOp::Mul, Expr::Slot(0), Expr::Slot(0)),
+                Expr::Slot(1),
+            ),
+            2,
+        ))
     }
 
     #[test]
@@ -369,6 +534,66 @@ mod tests {
                 from: Box::new(x()),
                 to: Box::new(y()),
                 body: Box::new(S(3)),
+            },
+            // min/max of one to four values (NaN and signed zeros reach them), select with
+            // three and four values, comparisons, logic and `!`, deep enough to spill
+            bin(
+                Add,
+                bin(
+                    Sub,
+                    Expr::Min(vec![x(), bin(Mul, y(), K(0.0)), bin(Div, z(), x())]),
+                    Expr::Max(vec![bin(Sub, x(), x()), z()]),
+                ),
+                bin(
+                    Mul,
+                    Expr::Select(vec![
+                        bin(Sub, x(), y()),
+                        Expr::Min(vec![y()]),
+                        Expr::Not(Box::new(bin(Lt, x(), z()))),
+                        Expr::Max(vec![x(), y(), z(), bin(Mul, x(), y())]),
+                    ]),
+                    Expr::Select(vec![
+                        z(),
+                        bin(And, x(), bin(Ge, y(), K(0.5))),
+                        bin(Or, bin(Eq, x(), y()), bin(Ne, z(), K(0.0))),
+                    ]),
+                ),
+            ),
+            // calls of a compiled function with plain and computed arguments, and with none
+            bin(
+                Sub,
+                Expr::Call(
+                    std::sync::Arc::new(Function::from_expr(
+                        vec!["a".into(), "b".into(), "c".into()],
+                        &bin(Sub, bin(Mul, S(0), S(1)), bin(Div, S(2), K(3.0))),
+                        3,
+                    )),
+                    vec![z(), bin(Add, x(), K(1.0)), y()],
+                ),
+                bin(
+                    Mul,
+                    Expr::Call(
+                        std::sync::Arc::new(Function::from_expr(
+                            vec![],
+                            &Expr::Math1(f64::sin, Box::new(K(0.25))),
+                            0,
+                        )),
+                        vec![],
+                    ),
+                    Expr::Neg(Box::new(x())),
+                ),
+            ),
+            // a call in a loop body with the loop's variable as an argument, a call among
+            // another call's arguments, a constant argument, and a callee squaring its argument
+            Expr::Loop {
+                product: false,
+                var: 3,
+                from: Box::new(K(-1.0)),
+                to: Box::new(K(2.0)),
+                body: Box::new(Expr::Call(
+                    sq_sub(),
+                    vec![S(3), Expr::Call(sq_sub(), vec![bin(Mul, x(), y()), K(0.5)])],
+                )),
             },
         ];
         let mut rnd = crate::math::xorshift_unit(7);

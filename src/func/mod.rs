@@ -27,6 +27,13 @@ use std::sync::Arc;
 
 use crate::math::{DVec3, Transform};
 
+/// `sqrt` and `abs` as the function parser stores them, which the compiler turns into
+/// instructions. A path like `f64::sqrt` (an `#[inline]` function) named in two codegen units
+/// is two copies at two addresses, so the parser's pointer never equalled the compiler's and
+/// both ran as calls; one static read by both is one address.
+pub static SQRT: fn(f64) -> f64 = f64::sqrt;
+pub static ABS: fn(f64) -> f64 = f64::abs;
+
 /// Most parameters a function may declare (POV-Ray's limit).
 pub const MAX_PARAMS: usize = 56;
 

@@ -72,6 +72,12 @@ pub struct Code {
 }
 
 impl Code {
+    /// The instructions, for tests that check what the compiler made of a parsed body.
+    #[cfg(test)]
+    pub(crate) fn ops(&self) -> &[Op] {
+        &self.ops
+    }
+
     pub fn eval(&self, args: &[f64]) -> f64 {
         let need = self.slots + self.max_stack;
         // Zeroing the whole inline buffer showed as 7% of an isosurface render; most bodies
@@ -88,6 +94,11 @@ impl Code {
         }
     }
 
+    /// The top of the operand stack lives in a local (`top`), the values under it in
+    /// `stack[..sp]`: most ops read and write only the top, so they chain through a register
+    /// instead of a store and a reload. `stack[0]` holds whatever the top was when the first
+    /// value was pushed (nothing), so `sp` equals the depth and the deepest point
+    /// (`max_stack - 1`) still fits. The operations and their order are the plain stack's.
     fn run(&self, args: &[f64], buf: &mut [f64]) -> f64 {
         let (slots, stack) = buf.split_at_mut(self.slots);
         let n = args.len().min(slots.len());
@@ -101,101 +112,110 @@ impl Code {
             slots[..n].copy_from_slice(&args[..n]);
         }
         let mut sp = 0usize;
+        let mut top = 0.0f64;
         let mut pc = 0usize;
+        macro_rules! push {
+            ($v:expr) => {{
+                let v = $v;
+                stack[sp] = top;
+                sp += 1;
+                top = v;
+            }};
+        }
         macro_rules! bin {
             ($f:expr) => {{
                 sp -= 1;
-                let b = stack[sp];
-                let a = stack[sp - 1];
-                stack[sp - 1] = $f(a, b);
+                top = $f(stack[sp], top);
             }};
         }
         while let Some(op) = self.ops.get(pc) {
             pc += 1;
             match op {
-                Op::Const(c) => {
-                    stack[sp] = *c;
-                    sp += 1;
-                }
-                Op::Load(s) => {
-                    stack[sp] = slots[*s as usize];
-                    sp += 1;
-                }
+                Op::Const(c) => push!(*c),
+                Op::Load(s) => push!(slots[*s as usize]),
                 Op::Store(s) => {
+                    slots[*s as usize] = top;
                     sp -= 1;
-                    slots[*s as usize] = stack[sp];
+                    top = stack[sp];
                 }
-                Op::Neg => stack[sp - 1] = -stack[sp - 1],
-                Op::Not => stack[sp - 1] = truth(stack[sp - 1] == 0.0),
+                Op::Neg => top = -top,
+                Op::Not => top = truth(top == 0.0),
                 Op::Bin(o) => bin!(|a, b| o.apply(a, b)),
                 Op::Add => bin!(|a, b| a + b),
                 Op::Sub => bin!(|a, b| a - b),
                 Op::Mul => bin!(|a, b| a * b),
                 Op::Div => bin!(|a, b| a / b),
-                Op::AddS(s) => stack[sp - 1] += slots[*s as usize],
-                Op::SubS(s) => stack[sp - 1] -= slots[*s as usize],
-                Op::MulS(s) => stack[sp - 1] *= slots[*s as usize],
-                Op::DivS(s) => stack[sp - 1] /= slots[*s as usize],
-                Op::AddC(c) => stack[sp - 1] += *c,
-                Op::SubC(c) => stack[sp - 1] -= *c,
-                Op::MulC(c) => stack[sp - 1] *= *c,
-                Op::DivC(c) => stack[sp - 1] /= *c,
-                Op::MulSS(a, b) => {
-                    stack[sp] = slots[*a as usize] * slots[*b as usize];
-                    sp += 1;
-                }
-                Op::Sqrt => stack[sp - 1] = stack[sp - 1].sqrt(),
-                Op::Abs => stack[sp - 1] = stack[sp - 1].abs(),
-                Op::F1(f) => stack[sp - 1] = f(stack[sp - 1]),
+                Op::AddS(s) => top += slots[*s as usize],
+                Op::SubS(s) => top -= slots[*s as usize],
+                Op::MulS(s) => top *= slots[*s as usize],
+                Op::DivS(s) => top /= slots[*s as usize],
+                Op::AddC(c) => top += *c,
+                Op::SubC(c) => top -= *c,
+                Op::MulC(c) => top *= *c,
+                Op::DivC(c) => top /= *c,
+                Op::MulSS(a, b) => push!(slots[*a as usize] * slots[*b as usize]),
+                Op::Sqrt => top = top.sqrt(),
+                Op::Abs => top = top.abs(),
+                Op::F1(f) => top = f(top),
                 Op::F2(f) => bin!(f),
                 Op::Min(n) | Op::Max(n) => {
+                    // The values bottom to top: the `n - 1` under the top, then the top.
                     let n = *n as usize;
-                    let vals = &stack[sp - n..sp];
-                    let r = if matches!(op, Op::Min(_)) {
-                        vals.iter().copied().fold(f64::INFINITY, f64::min)
+                    if n == 0 {
+                        push!(if matches!(op, Op::Min(_)) {
+                            f64::INFINITY
+                        } else {
+                            f64::NEG_INFINITY
+                        });
+                        continue;
+                    }
+                    let under = &stack[sp + 1 - n..sp];
+                    top = if matches!(op, Op::Min(_)) {
+                        f64::min(under.iter().copied().fold(f64::INFINITY, f64::min), top)
                     } else {
-                        vals.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+                        f64::max(under.iter().copied().fold(f64::NEG_INFINITY, f64::max), top)
                     };
-                    sp -= n;
-                    stack[sp] = r;
-                    sp += 1;
+                    sp -= n - 1;
                 }
                 Op::Select3 => {
-                    sp -= 3;
-                    let (a, b, c) = (stack[sp], stack[sp + 1], stack[sp + 2]);
-                    stack[sp] = if a < 0.0 { b } else { c };
-                    sp += 1;
+                    sp -= 2;
+                    let (a, b) = (stack[sp], stack[sp + 1]);
+                    top = if a < 0.0 { b } else { top };
                 }
                 Op::Select4 => {
-                    sp -= 4;
-                    let (a, b, c, d) = (stack[sp], stack[sp + 1], stack[sp + 2], stack[sp + 3]);
-                    stack[sp] = if a < 0.0 {
+                    sp -= 3;
+                    let (a, b, c) = (stack[sp], stack[sp + 1], stack[sp + 2]);
+                    top = if a < 0.0 {
                         b
                     } else if a == 0.0 {
                         c
                     } else {
-                        d
+                        top
                     };
-                    sp += 1;
                 }
                 Op::Call(i, n) => {
+                    // The arguments contiguous in memory: the top goes above the others.
                     let n = *n as usize;
-                    sp -= n;
-                    stack[sp] = self.callees[*i as usize].eval(&stack[sp..sp + n]);
-                    sp += 1;
+                    stack[sp] = top;
+                    let from = sp + 1 - n;
+                    top = self.callees[*i as usize].eval(&stack[from..sp + 1]);
+                    sp = from;
                 }
                 Op::Pick(k) => {
-                    stack[sp] = stack[sp - 1 - *k as usize];
-                    sp += 1;
+                    let v = if *k == 0 {
+                        top
+                    } else {
+                        stack[sp - *k as usize]
+                    };
+                    push!(v);
                 }
-                Op::Nip => {
-                    stack[sp - 2] = stack[sp - 1];
-                    sp -= 1;
-                }
+                Op::Nip => sp -= 1,
                 Op::Jump(t) => pc = *t as usize,
                 Op::JumpIfZero(t) => {
+                    let c = top;
                     sp -= 1;
-                    if stack[sp] == 0.0 {
+                    top = stack[sp];
+                    if c == 0.0 {
                         pc = *t as usize;
                     }
                 }
@@ -204,7 +224,7 @@ impl Code {
         if sp == 0 {
             f64::NAN
         } else {
-            stack[sp - 1]
+            top
         }
     }
 }

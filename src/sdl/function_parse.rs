@@ -52,7 +52,7 @@ impl FnScope {
 
 fn math1(name: &str) -> Option<fn(f64) -> f64> {
     Some(match name {
-        "abs" => f64::abs,
+        "abs" => crate::func::ABS,
         "sin" => f64::sin,
         "cos" => f64::cos,
         "tan" => f64::tan,
@@ -65,7 +65,7 @@ fn math1(name: &str) -> Option<fn(f64) -> f64> {
         "asinh" => f64::asinh,
         "acosh" => f64::acosh,
         "atanh" => f64::atanh,
-        "sqrt" => f64::sqrt,
+        "sqrt" => crate::func::SQRT,
         "exp" => f64::exp,
         "ln" => f64::ln,
         "log" => f64::log10,
@@ -483,5 +483,36 @@ fn component_index(tok: &Tok) -> Option<u8> {
         "transmit" => Some(4),
         "gray" | "grey" => Some(5),
         _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::func::vm::Op;
+    use crate::func::FnKind;
+    use crate::sdl::value::Value;
+    use crate::sdl::{ParseOptions, Parser};
+
+    /// The parser's `sqrt` and `abs` are the pointers the compiler recognises: instructions,
+    /// not calls through `F1` (they were calls while the two named separate copies).
+    #[test]
+    fn parsed_sqrt_and_abs_become_instructions() {
+        let mut p = Parser::new(ParseOptions::default());
+        p.parse_str(
+            "t.pov",
+            "#declare F = function { sqrt(x*x + z*z) - abs(y) }",
+        )
+        .unwrap();
+        let Some(Value::Function(f)) = p.lookup("F") else {
+            panic!("F is a function");
+        };
+        let FnKind::Code(code) = &f.kind else {
+            panic!("F is compiled");
+        };
+        let ops = code.ops();
+        assert!(ops.iter().any(|o| matches!(o, Op::Sqrt)), "{ops:?}");
+        assert!(ops.iter().any(|o| matches!(o, Op::Abs)), "{ops:?}");
+        assert!(!ops.iter().any(|o| matches!(o, Op::F1(_))), "{ops:?}");
+        assert_eq!(f.eval(&[3.0, -2.0, 4.0]), 3.0);
     }
 }
