@@ -71,6 +71,18 @@ fn ends_and_margin(c: &[f64], lo: f64, hi: f64) -> Option<(bool, f64, f64)> {
 /// `degree · 2^-53 · T` (well below 1e-13 T up to degree 8). Most intervals a ray spends near a
 /// blob or quartic hold no crossing, and this is far cheaper than isolating the roots.
 pub(crate) fn surely_no_root(c: &[f64], lo: f64, hi: f64) -> bool {
+    // As in `poly::polish`: a quartic's test (a blob's stretch, a torus's) and a cubic's
+    // compiled with the length known, so the shift's and the sums' loops unroll: the same
+    // operations in the same order.
+    match c.len() {
+        5 => surely_no_root_body(<&[f64; 5]>::try_from(c).unwrap(), lo, hi),
+        4 => surely_no_root_body(<&[f64; 4]>::try_from(c).unwrap(), lo, hi),
+        _ => surely_no_root_body(c, lo, hi),
+    }
+}
+
+#[inline(always)]
+fn surely_no_root_body(c: &[f64], lo: f64, hi: f64) -> bool {
     let n = c.len().saturating_sub(1);
     if !(3..=8).contains(&n) {
         return false;
