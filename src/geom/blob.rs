@@ -414,8 +414,16 @@ impl Blob {
             .fold(f64::INFINITY, f64::min)
             .max(0.0);
         w.cuts.clear();
+        // A ray starting inside a component (shadow and reflected rays) has `shift == 0`, where
+        // the Taylor shift only adds `0·c` terms to finite coefficients: they change at most
+        // the sign of a zero coefficient, which the sums below never see (each starts at +0 or
+        // at `-threshold`, nonzero, so no partial sum is -0, and adding ±0 to anything else
+        // leaves it as it is).
+        let unshifted = shift == 0.0 && self.threshold != 0.0;
         for p in &mut w.pieces {
-            p.c = shifted(&p.c, shift);
+            if !(unshifted && p.c.iter().all(|x| x.is_finite())) {
+                p.c = shifted(&p.c, shift);
+            }
             p.lo -= shift;
             p.hi -= shift;
             w.cuts.push(p.lo);
