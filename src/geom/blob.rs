@@ -16,6 +16,7 @@
 
 use std::cell::RefCell;
 
+use crate::geom::bernstein::surely_no_root;
 use crate::geom::bvh::Bvh;
 use crate::geom::poly::{first_root_in, first_root_with, roots_in, sturm_roots_in, Candidate};
 use crate::geom::{Hit, Shape};
@@ -413,8 +414,16 @@ impl Blob {
             .fold(f64::INFINITY, f64::min)
             .max(0.0);
         w.cuts.clear();
+        // A ray starting inside a component (shadow and reflected rays) has `shift == 0`, where
+        // the Taylor shift only adds `0·c` terms to finite coefficients: they change at most
+        // the sign of a zero coefficient, which the sums below never see (each starts at +0 or
+        // at `-threshold`, nonzero, so no partial sum is -0, and adding ±0 to anything else
+        // leaves it as it is).
+        let unshifted = shift == 0.0 && self.threshold != 0.0;
         for p in &mut w.pieces {
-            p.c = shifted(&p.c, shift);
+            if !(unshifted && p.c.iter().all(|x| x.is_finite())) {
+                p.c = shifted(&p.c, shift);
+            }
             p.lo -= shift;
             p.hi -= shift;
             w.cuts.push(p.lo);
@@ -461,7 +470,16 @@ impl Blob {
                     continue;
                 }
                 let take = |cand: Candidate| {
-                    if behind(cand.b) {
+                    // A bracket reaching past `t = EPSILON` (the root at a shadow ray's
+                    // origin) whose root surely lies behind it is deferred as well.
+                    let bound = if behind(cand.b) {
+                        Some(cand.b)
+                    } else if behind(cand.a) {
+                        root_surely_behind(&cand, shift, len)
+                    } else {
+                        None
+                    };
+                    if let Some(bound) = bound {
                         let mut c = [0.0; 5];
                         c[..cand.c.len()].copy_from_slice(cand.c);
                         let item = Deferred::Root {
@@ -471,7 +489,7 @@ impl Blob {
                             b: cand.b,
                             neg_at_a: cand.neg_at_a,
                         };
-                        backlog.defer(item, cand.b);
+                        backlog.defer(item, bound);
                         return None;
                     }
                     let s = cand.root();
@@ -504,6 +522,34 @@ impl Blob {
             }
         }
     }
+}
+
+/// For a sign change's bracket `[a, b]` with `a` behind `t = EPSILON` and `b` beyond it (the
+/// root at a shadow ray's origin): a bound on the polished root whose `t` is at most
+/// `EPSILON`, when its sign settles that the root lies behind, so `keep_root` would reject it.
+///
+/// Why: `surely_no_root` on `[w, b]` (w between the root's expected place, the ray's start,
+/// and `t = EPSILON`) certifies that every evaluation at a point there has `b`'s sign, which
+/// is not `a`'s (the bracket is a change of sign). So every step of `polish` that evaluates a
+/// point `x >= w` moves the bracket's upper end to `x`, and its lower end stays below `w`.
+/// `polish` then returns an exact zero found below `w`, or a point within its tolerance
+/// (`2·2^-52·|r| + MIN_POSITIVE`, `|r| <= max(|a|, |b|)`) of a point evaluated below `w`
+/// or of its lower end: a Newton step from an `x >= w` is at least `1e-11·T / (4T/x)`
+/// (`|f| > 1e-11·T`, `|f'(x)| <= 4·T/x` with `T = Σ|c_j|·b^j`, the certificate's bound),
+/// far above that tolerance. So the root is below `w + 1e-14·max(|a|, |b|) + 1e-300`
+/// (given that `polish` converges within its 100 steps, as `window::edge_rules_out` assumes
+/// too), and rounding keeps the order through `(s + shift) / len`.
+#[inline]
+fn root_surely_behind(cand: &Candidate, shift: f64, len: f64) -> Option<f64> {
+    let (a, b) = (cand.a, cand.b);
+    let w = 0.5 * ((EPSILON * len - shift) + a.max(-shift));
+    let bound = w + 1e-14 * a.abs().max(b.abs()) + 1e-300;
+    let sure = w > a
+        && w < b
+        && w > 1e-290
+        && (bound + shift) / len <= EPSILON
+        && surely_no_root(cand.c, w, b);
+    sure.then_some(bound)
 }
 
 /// The quartic `c` in s re-expressed in s' = s − shift.

@@ -191,6 +191,64 @@ fn first_hit_leaving_the_surface() {
 }
 
 #[test]
+fn roots_surely_behind_are_behind() {
+    // Quartics with a root at a shadow ray's start (near s = 0, where a blob's surface is
+    // met again), brackets reaching past t = EPSILON: wherever the certificate gives a
+    // bound, the polished root lies below it and maps to t <= EPSILON.
+    let mut rng = Lcg(29);
+    let (mut sure, mut total) = (0, 0);
+    for case in 0..200_000 {
+        let r0 = (rng.next() - 0.5) * [1e-15, 1e-9, 1e-7, 1e-6][case % 4];
+        let roots = [
+            r0,
+            rng.next() * 6.0 - 3.0,
+            rng.next() * 6.0 - 3.0,
+            rng.next() * 6.0 - 3.0,
+        ];
+        let scale = (rng.next() - 0.5) * 8.0;
+        let c: Vec<f64> = crate::geom::test_rng::from_roots(&roots)
+            .iter()
+            .map(|x| x * scale)
+            .collect();
+        let len = 0.2 + rng.next() * 4.0;
+        let shift = if case % 5 == 0 {
+            rng.next() * 1e-6
+        } else {
+            0.0
+        };
+        let a = -rng.next() * 3.0 * rng.next() - shift;
+        let b = rng.next() * rng.next() * 3.0 + 1e-7;
+        let (fa, fb) = (
+            crate::geom::poly::eval(&c, a),
+            crate::geom::poly::eval(&c, b),
+        );
+        if (fa < 0.0) == (fb < 0.0) || fa == 0.0 || fb == 0.0 {
+            continue;
+        }
+        let cand = Candidate {
+            c: &c,
+            a,
+            b,
+            neg_at_a: fa < 0.0,
+        };
+        let behind = |s: f64| (s + shift) / len <= EPSILON;
+        if !behind(a) || behind(b) {
+            continue;
+        }
+        total += 1;
+        if let Some(bound) = root_surely_behind(&cand, shift, len) {
+            let r = cand.root();
+            assert!(
+                r <= bound && behind(r),
+                "{c:?} {a} {b} {len} {shift}: {r} {bound}"
+            );
+            sure += 1;
+        }
+    }
+    assert!(sure > total / 4 && total > 50_000, "{sure} of {total}");
+}
+
+#[test]
 fn any_kept_is_intersect_all() {
     // CSG and clipped shadow rays: `any_kept` asks exactly the listed crossings below
     // tmax, nearest first, bit for bit, up to the first kept one, for rays from the
