@@ -46,6 +46,10 @@ pub struct Cull {
     /// Which search `first_hit` runs, set with the fields above: one byte read instead of a
     /// test per kind.
     pub search: crate::scene::csg_boxes::Search,
+    /// The members' diagonal forms in AVX lanes, for a node without index or box members
+    /// whose two to four members are plain quadric leaves (`csg_hit::quadric_lanes_of`):
+    /// its searches solve them four at a time.
+    pub quadrics: Option<Box<crate::geom::algebraic::QuadricLanes>>,
 }
 
 /// A shape's data with the textures of its parts (mesh triangles, blob components).
