@@ -284,11 +284,29 @@ impl Object {
             return true;
         }
         let slabs = Slabs::new(ray.origin, inv_dir);
-        each_member(children, index.as_deref(), ray, tmax, s, |c, _, _| {
-            if slabs.hits(&c.bounds, tmax) {
-                out.push(c);
+        // `each_member`'s two loops written out here, the box test in them: through it, the
+        // test was a closure called per candidate (advanced/abyss's transparent container
+        // union asks it for every shadow ray of its media).
+        match index.as_deref() {
+            None => {
+                for c in children {
+                    if slabs.hits(&c.bounds, tmax) {
+                        out.push(c);
+                    }
+                }
             }
-        });
+            Some(ix) => {
+                let from = s.members.len();
+                ix.candidates(ray, tmax, &mut s.members);
+                for k in from..s.members.len() {
+                    let c = ix.leaf(children, s.members[k] as usize);
+                    if slabs.hits(&c.bounds, tmax) {
+                        out.push(c);
+                    }
+                }
+                s.members.truncate(from);
+            }
+        }
         true
     }
 
