@@ -294,7 +294,7 @@ impl ChildIndex {
     }
 
     /// Leaf `i` of the node whose members are `children`.
-    #[inline]
+    #[inline(always)]
     pub fn leaf<'a>(&self, children: &'a [Object], i: usize) -> &'a Object {
         if self.starts.is_empty() {
             return &children[i];
