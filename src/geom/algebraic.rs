@@ -19,7 +19,7 @@ mod quadric;
 use expand::{add_term, along_quartic, powers_unrolled, quartic_term, QuarticTerm};
 #[cfg(target_arch = "x86_64")]
 pub use lanes::crossings_lanes;
-pub use lanes::{LaneHits, LANES};
+pub use lanes::{LaneHits, QuadricLanes, LANES};
 use quadric::Diagonal;
 
 /// Highest order accepted (POV-Ray allows 35; the root finder handles this many).

@@ -102,6 +102,7 @@ fn set_culls(o: &mut Object) {
                 folds: false,
                 boxes: None,
                 search: Search::Plain,
+                quadrics: None,
             })
         });
     }
@@ -183,6 +184,7 @@ fn attach_indexes(o: &mut Object, opened: bool) {
     let boxes = (mine.is_none() && *op != CsgOp::Union)
         .then(|| crate::scene::csg_boxes::BoxMembers::of(*op, children))
         .flatten();
+    let boxes_none = boxes.is_none();
     if folds || boxes.is_some() {
         let c = cull.get_or_insert_with(|| {
             Box::new(crate::scene::object::Cull {
@@ -191,6 +193,7 @@ fn attach_indexes(o: &mut Object, opened: bool) {
                 folds: false,
                 boxes: None,
                 search: Search::Plain,
+                quadrics: None,
             })
         });
         c.search = match (folds, &boxes) {
@@ -200,6 +203,27 @@ fn attach_indexes(o: &mut Object, opened: bool) {
         };
         c.folds = folds;
         c.boxes = boxes;
+    }
+    // The same nodes and members as the searches asked for them on every ray before:
+    // without index or box members, the members (their windows set above) plain quadrics.
+    let quadrics = (mine.is_none() && *op != CsgOp::Union && boxes_none)
+        .then(|| {
+            let faces = cull.as_ref().and_then(|c| c.faces.as_ref());
+            crate::scene::csg_hit::quadric_lanes_of(children, faces)
+        })
+        .flatten();
+    if let Some(q) = quadrics {
+        let c = cull.get_or_insert_with(|| {
+            Box::new(crate::scene::object::Cull {
+                aabb: None,
+                faces: None,
+                folds: false,
+                boxes: None,
+                search: Search::Plain,
+                quadrics: None,
+            })
+        });
+        c.quadrics = Some(Box::new(q));
     }
     *index = mine;
 }
@@ -270,7 +294,7 @@ impl ChildIndex {
     }
 
     /// Leaf `i` of the node whose members are `children`.
-    #[inline]
+    #[inline(always)]
     pub fn leaf<'a>(&self, children: &'a [Object], i: usize) -> &'a Object {
         if self.starts.is_empty() {
             return &children[i];

@@ -6,7 +6,7 @@ use std::cell::Cell;
 
 #[cfg(target_arch = "x86_64")]
 use crate::geom::algebraic::crossings_lanes;
-use crate::geom::algebraic::{Algebraic, LANES};
+use crate::geom::algebraic::{QuadricLanes, LANES};
 use crate::geom::{Hit, Shape};
 use crate::math::{has_avx, Aabb, DVec3, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
@@ -195,40 +195,48 @@ fn gather_hits<'a>(
     }
 }
 
-/// The members of a node of two to four plain quadric leaves (no face, clip or window) that
-/// `crossings_lanes` answers for, the last repeated into the unused lanes; `None` for any
-/// other node, or without AVX.
-#[inline(always)]
-fn quadric_members<'a>(
-    children: &'a [Object],
-    faces: Option<&Faces>,
-) -> Option<[&'a Algebraic; LANES]> {
+/// The lanes (`QuadricLanes`) of a node's members when they are two to four plain quadric
+/// leaves (no face, clip or window) that `crossings_lanes` answers for; `None` for any other
+/// node, or without AVX. Asked once, when the node's index is attached
+/// (`children::attach_indexes`, `Cull::quadrics`): per search, it cost a call through each
+/// member's table (`as_algebraic`) and the kernel gathered the coefficients lane by lane.
+pub(super) fn quadric_lanes_of(children: &[Object], faces: Option<&Faces>) -> Option<QuadricLanes> {
     if !(2..=LANES).contains(&children.len()) || !cfg!(target_arch = "x86_64") || !has_avx() {
         return None;
     }
-    let mut q = [None; LANES];
+    let mut q = Vec::with_capacity(LANES);
     for (i, c) in children.iter().enumerate() {
         match &c.kind {
             ObjKind::Shape(shape, None)
                 if c.clip.is_empty() && faces.and_then(|f| f.get(i)).is_none() =>
             {
-                q[i] = Some(shape.as_algebraic().filter(|a| a.lanes_ready())?);
+                q.push(shape.as_algebraic()?);
             }
             _ => return None,
         }
     }
-    let first = q[0]?;
-    Some(q.map(|a| a.unwrap_or(first)))
+    QuadricLanes::of(&q)
 }
 
-/// `csg_first_hit`'s gather for the members `quadric_members` found: each member's crossings
+impl Object {
+    /// This node's members in lanes (`Cull::quadrics`), if it has them.
+    #[inline(always)]
+    fn quadric_lanes(&self) -> Option<&QuadricLanes> {
+        match &self.kind {
+            ObjKind::Csg { cull: Some(c), .. } => c.quadrics.as_deref(),
+            _ => None,
+        }
+    }
+}
+
+/// `csg_first_hit`'s gather for the members in lanes (`quadric_lanes_of`): each member's crossings
 /// from its lane, pushed as `gather_hits` pushes a leaf's (the shape's `intersect_all` into
 /// `s.csg_hits`, an order entry for those below `tmax`), after the same slab tests, in member
 /// order; a lane the kernel leaves to the shape goes through `gather_hits` itself.
 #[inline(always)]
 fn gather_quadrics<'a>(
     children: &'a [Object],
-    shapes: [&Algebraic; LANES],
+    shapes: &QuadricLanes,
     ray: &Ray,
     slabs: &Slabs,
     tmax: f64,
@@ -247,7 +255,7 @@ fn gather_quadrics<'a>(
     }
     #[cfg(target_arch = "x86_64")]
     {
-        // SAFETY: `quadric_members` answers only with AVX.
+        // SAFETY: `quadric_lanes_of` answers only with AVX.
         let got = unsafe { crossings_lanes(shapes, [&rays[0], &rays[1], &rays[2], &rays[3]]) };
         for (j, c) in children.iter().enumerate() {
             if !live[j] {
@@ -274,16 +282,16 @@ fn gather_quadrics<'a>(
     let _ = (shapes, rays, s);
 }
 
-/// `csg_keeps(op, i, children, None, faces, p, rejecter)` for the members `quadric_members`
-/// found: the same questions in the same order (none of them has a face, so each is asked as
-/// `member_wants` asks a plain leaf), each shape's `inside` called as the `Algebraic` it is,
-/// without the dispatch through the shape's table.
+/// `csg_keeps(op, i, children, None, faces, p, rejecter)` for the members in lanes
+/// (`quadric_lanes_of`): the same questions in the same order (none of them has a face, so
+/// each is asked as `member_wants` asks a plain leaf), each shape's `inside` answered by its
+/// diagonal form in the lanes, without the dispatch through the shape's table.
 #[inline(always)]
 fn quadric_keeps(
     op: CsgOp,
     i: usize,
     children: &[Object],
-    shapes: [&Algebraic; LANES],
+    shapes: &QuadricLanes,
     p: DVec3,
     rejecter: &Cell<usize>,
 ) -> bool {
@@ -293,7 +301,7 @@ fn quadric_keeps(
     let wants = |j: usize| {
         let c = &children[j];
         let inside = if c.bounds.holds(p) {
-            shapes[j].lane_inside(c.local_point(p)) != c.inverse
+            shapes.inside(j, c.local_point(p)) != c.inverse
         } else {
             c.inverse
         };
@@ -312,7 +320,7 @@ fn quadric_keeps(
     true
 }
 
-/// `csg_any_hit`'s member loop for the members `quadric_members` found: whether `keep(i, t)`
+/// `csg_any_hit`'s member loop for the members in lanes (`quadric_lanes_of`): whether `keep(i, t)`
 /// holds for a crossing `t < tmax` of a member `i` that passes its slab test, each member's
 /// crossings from its lane (a lane the kernel leaves to the shape is asked as `csg_any_hit`
 /// asks a leaf: `any_kept`). The same crossings meet the same tests as there, and no test has
@@ -320,7 +328,7 @@ fn quadric_keeps(
 #[inline(always)]
 fn any_quadric_kept<'a>(
     children: &'a [Object],
-    shapes: [&Algebraic; LANES],
+    shapes: &QuadricLanes,
     ray: &Ray,
     slabs: &Slabs,
     tmax: f64,
@@ -340,14 +348,18 @@ fn any_quadric_kept<'a>(
     }
     #[cfg(target_arch = "x86_64")]
     {
-        // SAFETY: `quadric_members` answers only with AVX.
+        // SAFETY: `quadric_lanes_of` answers only with AVX.
         let got = unsafe { crossings_lanes(shapes, [&rays[0], &rays[1], &rays[2], &rays[3]]) };
         for j in 0..children.len() {
             if !live[j] {
                 continue;
             }
             if got.defer >> j & 1 != 0 {
-                if shapes[j].any_kept(&rays[j], tmax, &mut s.hits, &mut |t| keep(j, t)) {
+                // The member's own shape (`quadric_lanes_of` took plain leaves only).
+                let ObjKind::Shape(shape, _) = &children[j].kind else {
+                    unreachable!("quadric lanes are leaves");
+                };
+                if shape.any_kept(&rays[j], tmax, &mut s.hits, &mut |t| keep(j, t)) {
                     return true;
                 }
                 continue;
@@ -406,10 +418,8 @@ impl Object {
         let hits_from = s.csg_hits.len();
         let slabs = Slabs::new(ray.origin, inv_dir);
         let fold = FOLD && index.is_none() && children.len() <= 1 << LEAF_SHIFT;
-        let quadrics = match index {
-            None if boxes.is_none() => quadric_members(children, faces),
-            _ => None,
-        };
+        // Set only for nodes without index or box members.
+        let quadrics = self.quadric_lanes();
         if let Some(shapes) = quadrics {
             gather_quadrics(children, shapes, ray, &slabs, tmax, s);
         } else {
@@ -562,11 +572,7 @@ impl Object {
         let slabs = Slabs::new(ray.origin, inv_dir);
         let rejecter = Cell::new(usize::MAX);
         let clip = &self.clip[..];
-        let quadrics = match index {
-            None if boxes.is_none() => quadric_members(children, faces),
-            _ => None,
-        };
-        if let Some(shapes) = quadrics {
+        if let Some(shapes) = self.quadric_lanes() {
             return any_quadric_kept(children, shapes, ray, &slabs, tmax, s, |i, t| {
                 let p = ray.at(t);
                 quadric_keeps(op, i, children, shapes, p, &rejecter)

@@ -46,6 +46,10 @@ pub struct Cull {
     /// Which search `first_hit` runs, set with the fields above: one byte read instead of a
     /// test per kind.
     pub search: crate::scene::csg_boxes::Search,
+    /// The members' diagonal forms in AVX lanes, for a node without index or box members
+    /// whose two to four members are plain quadric leaves (`csg_hit::quadric_lanes_of`):
+    /// its searches solve them four at a time.
+    pub quadrics: Option<Box<crate::geom::algebraic::QuadricLanes>>,
 }
 
 /// A shape's data with the textures of its parts (mesh triangles, blob components).
@@ -280,11 +284,29 @@ impl Object {
             return true;
         }
         let slabs = Slabs::new(ray.origin, inv_dir);
-        each_member(children, index.as_deref(), ray, tmax, s, |c, _, _| {
-            if slabs.hits(&c.bounds, tmax) {
-                out.push(c);
+        // `each_member`'s two loops written out here, the box test in them: through it, the
+        // test was a closure called per candidate (advanced/abyss's transparent container
+        // union asks it for every shadow ray of its media).
+        match index.as_deref() {
+            None => {
+                for c in children {
+                    if slabs.hits(&c.bounds, tmax) {
+                        out.push(c);
+                    }
+                }
             }
-        });
+            Some(ix) => {
+                let from = s.members.len();
+                ix.candidates(ray, tmax, &mut s.members);
+                for k in from..s.members.len() {
+                    let c = ix.leaf(children, s.members[k] as usize);
+                    if slabs.hits(&c.bounds, tmax) {
+                        out.push(c);
+                    }
+                }
+                s.members.truncate(from);
+            }
+        }
         true
     }
 
