@@ -99,10 +99,7 @@ fn set_culls(o: &mut Object) {
             Box::new(crate::scene::object::Cull {
                 aabb,
                 faces,
-                folds: false,
-                boxes: None,
-                search: Search::Plain,
-                quadrics: None,
+                ..Default::default()
             })
         });
     }
@@ -186,16 +183,7 @@ fn attach_indexes(o: &mut Object, opened: bool) {
         .flatten();
     let boxes_none = boxes.is_none();
     if folds || boxes.is_some() {
-        let c = cull.get_or_insert_with(|| {
-            Box::new(crate::scene::object::Cull {
-                aabb: None,
-                faces: None,
-                folds: false,
-                boxes: None,
-                search: Search::Plain,
-                quadrics: None,
-            })
-        });
+        let c = cull.get_or_insert_with(Box::default);
         c.search = match (folds, &boxes) {
             (_, Some(_)) => Search::Boxes,
             (true, None) => Search::Folds,
@@ -213,16 +201,7 @@ fn attach_indexes(o: &mut Object, opened: bool) {
         })
         .flatten();
     if let Some(q) = quadrics {
-        let c = cull.get_or_insert_with(|| {
-            Box::new(crate::scene::object::Cull {
-                aabb: None,
-                faces: None,
-                folds: false,
-                boxes: None,
-                search: Search::Plain,
-                quadrics: None,
-            })
-        });
+        let c = cull.get_or_insert_with(Box::default);
         c.quadrics = Some(Box::new(q));
     }
     *index = mine;

@@ -29,6 +29,7 @@ pub enum ObjKind {
 }
 
 /// What a CSG node keeps to skip work; one box for both, so nodes stay as small as before.
+#[derive(Default)]
 pub struct Cull {
     /// A box tighter than `bounds` holding the node's solid (before `inverse`), for
     /// intersections whose members are unbounded planes (`scene::cull`).
