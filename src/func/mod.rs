@@ -255,6 +255,16 @@ impl Function {
         )
     }
 
+    /// [`Function::eval`] of a point, for the isosurface search: compiled code (the common
+    /// case) runs without the dispatch through `eval` and `Code::eval`.
+    #[inline]
+    pub fn eval_point(&self, p: [f64; 3]) -> f64 {
+        match &self.kind {
+            FnKind::Code(c) => c.eval_small(&p),
+            _ => self.eval(&p),
+        }
+    }
+
     /// Evaluates a float function. `args` must have [`Function::arity`] values and the function
     /// must be supported (check [`Function::unsupported`] first); otherwise the result is
     /// meaningless (NaN), never a panic.

@@ -78,6 +78,20 @@ impl Code {
         &self.ops
     }
 
+    /// [`Code::eval`] for a hot caller (the isosurface search): a small body's buffer is set
+    /// up in the caller, which then calls `run` directly, one call instead of three
+    /// (`Function::eval`, `Code::eval`, `run`); bigger bodies take `eval`.
+    #[inline]
+    pub fn eval_small(&self, args: &[f64]) -> f64 {
+        let need = self.slots + self.max_stack;
+        if need <= SMALL {
+            let mut buf = [0.0; SMALL];
+            self.run(args, &mut buf[..need])
+        } else {
+            self.eval(args)
+        }
+    }
+
     pub fn eval(&self, args: &[f64]) -> f64 {
         let need = self.slots + self.max_stack;
         // Zeroing the whole inline buffer showed as 7% of an isosurface render; most bodies
@@ -99,6 +113,7 @@ impl Code {
     /// instead of a store and a reload. `stack[0]` holds whatever the top was when the first
     /// value was pushed (nothing), so `sp` equals the depth and the deepest point
     /// (`max_stack - 1`) still fits. The operations and their order are the plain stack's.
+    #[inline(never)]
     fn run(&self, args: &[f64], buf: &mut [f64]) -> f64 {
         let (slots, stack) = buf.split_at_mut(self.slots);
         let n = args.len().min(slots.len());

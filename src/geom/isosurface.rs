@@ -174,7 +174,7 @@ impl Isosurface {
     /// The function minus the threshold: negative inside. NaN counts as far outside, so the
     /// search drops it at once.
     fn f(&self, p: DVec3) -> f64 {
-        let v = self.data.function.eval(&[p.x, p.y, p.z]) - self.data.threshold;
+        let v = self.data.function.eval_point([p.x, p.y, p.z]) - self.data.threshold;
         if v.is_nan() {
             f64::INFINITY
         } else {
