@@ -102,15 +102,22 @@ impl Prepared {
     }
 
     /// Appends the stretches of the local ray `q0 + s v` inside the component, each with its
-    /// field as a quartic in s (ascending coefficients).
-    fn pieces(&self, q0: DVec3, v: DVec3, out: &mut Vec<Piece>) {
+    /// field as a quartic in s (ascending coefficients), those ending at or before `min_s`
+    /// left out (`crossings` would drop them).
+    fn pieces(&self, q0: DVec3, v: DVec3, min_s: f64, out: &mut Vec<Piece>) {
         // Squared distance to a point c: |q0 - c|² + 2 s (q0 - c)·v + s² v·v.
         let to_point = |c: DVec3| {
             let d = q0 - c;
             [d.length_squared(), 2.0 * d.dot(v), v.length_squared()]
         };
         if self.len == 0.0 {
-            self.push(to_point(self.a), f64::NEG_INFINITY, f64::INFINITY, out);
+            self.push(
+                to_point(self.a),
+                f64::NEG_INFINITY,
+                f64::INFINITY,
+                min_s,
+                out,
+            );
             return;
         }
         // Height along the axis, h0 + s h1; the body lies where 0 <= h <= len.
@@ -127,7 +134,7 @@ impl Prepared {
         let pa = to_point(self.a);
         let body = [pa[0] - h0 * h0, pa[1] - 2.0 * h0 * h1, pa[2] - h1 * h1];
         if !s_lo.is_nan() {
-            self.push(body, s_lo, s_hi, out);
+            self.push(body, s_lo, s_hi, min_s, out);
         }
         // The caps: before the body and after it along the ray; which end is which depends on
         // the ray's direction along the axis.
@@ -136,15 +143,23 @@ impl Prepared {
         if s_lo.is_nan() {
             // Parallel to the end planes, outside the body: only one cap can be reached.
             let end = if h0 < 0.0 { self.a } else { b };
-            self.push(to_point(end), f64::NEG_INFINITY, f64::INFINITY, out);
+            self.push(to_point(end), f64::NEG_INFINITY, f64::INFINITY, min_s, out);
         } else {
-            self.push(to_point(first), f64::NEG_INFINITY, s_lo, out);
-            self.push(to_point(last), s_hi, f64::INFINITY, out);
+            self.push(to_point(first), f64::NEG_INFINITY, s_lo, min_s, out);
+            self.push(to_point(last), s_hi, f64::INFINITY, min_s, out);
         }
     }
 
-    /// The stretch where the quadratic distance `d2` is below r², clipped to [lo, hi].
-    fn push(&self, d2: [f64; 3], lo: f64, hi: f64, out: &mut Vec<Piece>) {
+    /// The stretch where the quadratic distance `d2` is below r², clipped to [lo, hi], unless
+    /// it ends at or before `min_s`. Inlined into `pieces`, where the distances of a cap
+    /// that ends behind the ray's start are then never formed.
+    #[inline(always)]
+    fn push(&self, d2: [f64; 3], lo: f64, hi: f64, min_s: f64, out: &mut Vec<Piece>) {
+        // The clipped end is at most `hi`: a cap wholly behind the ray's start (a shadow
+        // ray's) needs neither its square root nor its quotients.
+        if hi <= min_s {
+            return;
+        }
         let [c, b, a] = d2;
         let (c0, c1) = if a > 0.0 {
             let disc = b * b - 4.0 * a * (c - self.r2);
@@ -160,7 +175,7 @@ impl Prepared {
             return;
         };
         let (lo, hi) = (lo.max(c0), hi.min(c1));
-        if !lo.is_finite() || !hi.is_finite() || lo >= hi {
+        if !lo.is_finite() || !hi.is_finite() || lo >= hi || hi <= min_s {
             return;
         }
         // strength · (1 - d2/r²)², with w = 1 - d2/r² a quadratic.
@@ -391,6 +406,8 @@ impl Blob {
         }
         let u = ray.dir / len;
         let unit = Ray::new(ray.origin, u);
+        // Stretches ending at or before `t = EPSILON` hold no crossing that counts.
+        let min_s = EPSILON * len;
         w.pieces.clear();
         self.bvh.traverse(&unit, f64::INFINITY, |i, _| {
             let c = &self.comps[i];
@@ -398,11 +415,9 @@ impl Blob {
                 Some(t) => (t.inv_point(ray.origin), t.inv_vector(u)),
                 None => (ray.origin, u),
             };
-            c.pieces(q0, v, &mut w.pieces);
+            c.pieces(q0, v, min_s, &mut w.pieces);
             false
         });
-        let min_s = EPSILON * len;
-        w.pieces.retain(|p| p.hi > min_s);
         if w.pieces.is_empty() {
             return;
         }
