@@ -480,6 +480,30 @@ pub fn has_avx() -> bool {
     }
 }
 
+/// `x` unchanged, through an empty `asm!` the optimiser cannot see into: a value it cannot
+/// pack with its neighbours into one vector register (where LLVM's SLP vectoriser would
+/// spend shuffles between the lanes on a loop's dependency chain).
+#[inline(always)]
+pub fn opaque(x: f64) -> f64 {
+    #[cfg(target_arch = "x86_64")]
+    {
+        let mut y = x;
+        // SAFETY: an empty template; the value stays in its register.
+        unsafe {
+            std::arch::asm!(
+                "/* {0} */",
+                inout(xmm_reg) y,
+                options(pure, nomem, nostack, preserves_flags)
+            );
+        }
+        y
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        x
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

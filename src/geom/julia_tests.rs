@@ -700,3 +700,47 @@ fn squared_norm_branches_are_the_norm_ones() {
         }
     }
 }
+
+/// `qsquare` (the orbit's scalar square) against `qmul(h, h)`, bit for bit: random
+/// quaternions over many scales, signed zeros, infinities and NaN.
+#[test]
+fn qsquare_is_qmul_to_the_bit() {
+    let mut seed = 0x1234_5678_9abc_def1u64;
+    let mut unit = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let edge = [
+        0.0,
+        -0.0,
+        1.0,
+        -1.0,
+        f64::MIN_POSITIVE,
+        1e-310,
+        1e300,
+        f64::INFINITY,
+    ];
+    let mut cases = Vec::new();
+    for _ in 0..200_000 {
+        let scale = 10f64.powf(8.0 * unit() - 4.0);
+        cases.push([0; 4].map(|_| scale * (2.0 * unit() - 1.0)));
+    }
+    for k in 0..4096usize {
+        cases.push(std::array::from_fn(|i| edge[(k >> (3 * i)) % edge.len()]));
+    }
+    cases.push([f64::NAN, 1.0, -2.0, 0.5]);
+    for h in cases {
+        let want = qmul(&h, &h);
+        let got = qsquare(&h);
+        for i in 0..4 {
+            assert!(
+                got[i].to_bits() == want[i].to_bits() || (got[i].is_nan() && want[i].is_nan()),
+                "{h:?} component {i}: {} against {}",
+                got[i],
+                want[i]
+            );
+        }
+    }
+}
