@@ -142,39 +142,24 @@ impl Emitter {
         self.max_depth = self.max_depth.max(depth + c.max_stack - 1);
         for op in &c.ops {
             let slot = |s: &u32| map[*s as usize];
+            // An operation on a callee's slot becomes the same operation on the caller's slot,
+            // or its constant form where the argument folded to a number.
+            let on = |a: Arg, by_slot: fn(u32) -> Op, by_const: fn(f64) -> Op| match a {
+                Arg::Slot(t) => by_slot(t),
+                Arg::Const(k) => by_const(k),
+            };
             let op = match op {
-                Op::Load(s) => match slot(s) {
-                    Arg::Slot(t) => Op::Load(t),
-                    Arg::Const(k) => Op::Const(k),
-                },
-                Op::AddS(s) => match slot(s) {
-                    Arg::Slot(t) => Op::AddS(t),
-                    Arg::Const(k) => Op::AddC(k),
-                },
-                Op::SubS(s) => match slot(s) {
-                    Arg::Slot(t) => Op::SubS(t),
-                    Arg::Const(k) => Op::SubC(k),
-                },
-                Op::MulS(s) => match slot(s) {
-                    Arg::Slot(t) => Op::MulS(t),
-                    Arg::Const(k) => Op::MulC(k),
-                },
-                Op::DivS(s) => match slot(s) {
-                    Arg::Slot(t) => Op::DivS(t),
-                    Arg::Const(k) => Op::DivC(k),
-                },
+                Op::Load(s) => on(slot(s), Op::Load, Op::Const),
+                Op::AddS(s) => on(slot(s), Op::AddS, Op::AddC),
+                Op::SubS(s) => on(slot(s), Op::SubS, Op::SubC),
+                Op::MulS(s) => on(slot(s), Op::MulS, Op::MulC),
+                Op::DivS(s) => on(slot(s), Op::DivS, Op::DivC),
                 Op::MulSS(a, b) => match (slot(a), slot(b)) {
                     (Arg::Slot(p), Arg::Slot(q)) => Op::MulSS(p, q),
                     // The left factor pushed, then the product with the right one.
                     (a, b) => {
-                        self.ops.push(match a {
-                            Arg::Slot(p) => Op::Load(p),
-                            Arg::Const(k) => Op::Const(k),
-                        });
-                        match b {
-                            Arg::Slot(q) => Op::MulS(q),
-                            Arg::Const(k) => Op::MulC(k),
-                        }
+                        self.ops.push(on(a, Op::Load, Op::Const));
+                        on(b, Op::MulS, Op::MulC)
                     }
                 },
                 Op::Call(i, n) => Op::Call(self.callee(&c.callees[*i as usize]), *n),
