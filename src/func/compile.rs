@@ -3,7 +3,7 @@
 use std::sync::Arc;
 
 use super::vm::{Code, Op};
-use super::{truth, BinOp, Expr, FnKind, Function};
+use super::{truth, BinOp, Expr, FnKind, Function, Math1};
 
 struct Emitter {
     ops: Vec<Op>,
@@ -208,15 +208,10 @@ impl Emitter {
             }
             Expr::Math1(f, a) => {
                 self.expr(a);
-                // Another copy of the same function (another address) still calls the same
-                // function through `F1`: the bits are the same, only slower.
-                let is = |g: fn(f64) -> f64| std::ptr::fn_addr_eq(*f, g);
-                let op = if is(super::SQRT) || is(f64::sqrt) {
-                    Op::Sqrt
-                } else if is(super::ABS) || is(f64::abs) {
-                    Op::Abs
-                } else {
-                    Op::F1(*f)
+                let op = match *f {
+                    Math1::Sqrt => Op::Sqrt,
+                    Math1::Abs => Op::Abs,
+                    Math1::Call(g) => Op::F1(g),
                 };
                 self.push(op, 0);
             }
@@ -312,7 +307,7 @@ fn fold(e: &Expr) -> Option<f64> {
         Expr::Slot(_) | Expr::Call(..) | Expr::Loop { .. } => return None,
         Expr::Neg(a) => -fold(a)?,
         Expr::Not(a) => truth(fold(a)? == 0.0),
-        Expr::Math1(f, a) => f(fold(a)?),
+        Expr::Math1(f, a) => f.apply(fold(a)?),
         Expr::Math2(f, a, b) => f(fold(a)?, fold(b)?),
         Expr::Bin(op, a, b) => op.apply(fold(a)?, fold(b)?),
         Expr::Min(v) => v
@@ -374,7 +369,7 @@ mod tests {
                 let a = walk(a, slots);
                 op.apply(a, walk(b, slots))
             }
-            Expr::Math1(f, a) => f(walk(a, slots)),
+            Expr::Math1(f, a) => f.apply(walk(a, slots)),
             Expr::Math2(f, a, b) => {
                 let a = walk(a, slots);
                 f(a, walk(b, slots))
@@ -447,7 +442,7 @@ mod tests {
         use BinOp::*;
         use Expr::{Const as K, Slot as S};
         let (x, y, z) = (|| S(0), || S(1), || S(2));
-        let sqrt = |a: Expr| Expr::Math1(f64::sqrt, Box::new(a));
+        let sqrt = |a: Expr| Expr::Math1(Math1::Sqrt, Box::new(a));
         let bodies = [
             // y - sin(x*4*pi)*0.1
             bin(
@@ -456,7 +451,7 @@ mod tests {
                 bin(
                     Mul,
                     Expr::Math1(
-                        f64::sin,
+                        Math1::Call(f64::sin),
                         Box::new(bin(Mul, bin(Mul, x(), K(4.0)), K(std::f64::consts::PI))),
                     ),
                     K(0.1),
@@ -476,7 +471,7 @@ mod tests {
                         )),
                         K(0.9),
                     ),
-                    Expr::Math1(f64::abs, Box::new(bin(Div, z(), y()))),
+                    Expr::Math1(Math1::Abs, Box::new(bin(Div, z(), y()))),
                 ),
                 bin(Div, K(3.0), x()),
             ),
@@ -560,7 +555,7 @@ mod tests {
                     Expr::Call(
                         std::sync::Arc::new(Function::from_expr(
                             vec![],
-                            &Expr::Math1(f64::sin, Box::new(K(0.25))),
+                            &Expr::Math1(Math1::Call(f64::sin), Box::new(K(0.25))),
                             0,
                         )),
                         vec![],

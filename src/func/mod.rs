@@ -27,12 +27,28 @@ use std::sync::Arc;
 
 use crate::math::{DVec3, Transform};
 
-/// `sqrt` and `abs` as the function parser stores them, which the compiler turns into
-/// instructions. A path like `f64::sqrt` (an `#[inline]` function) named in two codegen units
-/// is two copies at two addresses, so the parser's pointer never equalled the compiler's and
-/// both ran as calls; one static read by both is one address.
-pub static SQRT: fn(f64) -> f64 = f64::sqrt;
-pub static ABS: fn(f64) -> f64 = f64::abs;
+/// A one-argument maths built-in of the function language. `sqrt` and `abs` are named, not
+/// held as function pointers, because the compiler turns them into instructions: recognising
+/// them by pointer never worked reliably (an `#[inline]` function named in two codegen units is
+/// two copies at two addresses).
+#[derive(Clone, Copy, Debug)]
+pub enum Math1 {
+    Sqrt,
+    Abs,
+    /// Any other (`sin`, `exp`, `floor`, ...), called.
+    Call(fn(f64) -> f64),
+}
+
+impl Math1 {
+    #[inline]
+    pub fn apply(self, x: f64) -> f64 {
+        match self {
+            Math1::Sqrt => x.sqrt(),
+            Math1::Abs => x.abs(),
+            Math1::Call(f) => f(x),
+        }
+    }
+}
 
 /// Most parameters a function may declare (POV-Ray's limit).
 pub const MAX_PARAMS: usize = 56;
@@ -93,7 +109,7 @@ pub enum Expr {
     Not(Box<Expr>),
     Bin(BinOp, Box<Expr>, Box<Expr>),
     /// A one-argument maths built-in (`sin`, `sqrt`, ...).
-    Math1(fn(f64) -> f64, Box<Expr>),
+    Math1(Math1, Box<Expr>),
     /// A two-argument maths built-in (`pow`, `atan2`, `mod`, ...).
     Math2(fn(f64, f64) -> f64, Box<Expr>, Box<Expr>),
     Min(Vec<Expr>),
@@ -399,7 +415,7 @@ mod tests {
         let e = Expr::Bin(
             BinOp::Mul,
             c(2.0),
-            Box::new(Expr::Math1(f64::sqrt, c(16.0))),
+            Box::new(Expr::Math1(Math1::Sqrt, c(16.0))),
         );
         let f = Function::from_expr(vec!["x".into()], &e, 1);
         match &f.kind {

@@ -392,7 +392,7 @@ mod tests {
             add(mul(slot(0), slot(0)), mul(slot(1), slot(1))),
             mul(slot(2), slot(2)),
         );
-        let e = Expr::Math1(f64::sqrt, sq);
+        let e = Expr::Math1(crate::func::Math1::Sqrt, sq);
         Arc::new(Function::from_expr(
             vec!["x".into(), "y".into(), "z".into()],
             &e,

@@ -10,7 +10,7 @@
 use std::rc::Rc;
 use std::sync::Arc;
 
-use crate::func::{BinOp, Expr, Function, MAX_PARAMS};
+use crate::func::{BinOp, Expr, Function, Math1, MAX_PARAMS};
 
 use super::lexer::{Sym, Tok};
 use super::parser::{PResult, Parser};
@@ -50,9 +50,10 @@ impl FnScope {
     }
 }
 
-fn math1(name: &str) -> Option<fn(f64) -> f64> {
-    Some(match name {
-        "abs" => crate::func::ABS,
+fn math1(name: &str) -> Option<Math1> {
+    Some(Math1::Call(match name {
+        "abs" => return Some(Math1::Abs),
+        "sqrt" => return Some(Math1::Sqrt),
         "sin" => f64::sin,
         "cos" => f64::cos,
         "tan" => f64::tan,
@@ -65,7 +66,6 @@ fn math1(name: &str) -> Option<fn(f64) -> f64> {
         "asinh" => f64::asinh,
         "acosh" => f64::acosh,
         "atanh" => f64::atanh,
-        "sqrt" => crate::func::SQRT,
         "exp" => f64::exp,
         "ln" => f64::ln,
         "log" => f64::log10,
@@ -75,7 +75,7 @@ fn math1(name: &str) -> Option<fn(f64) -> f64> {
         "radians" => f64::to_radians,
         "degrees" => f64::to_degrees,
         _ => return None,
-    })
+    }))
 }
 
 fn math2(name: &str) -> Option<fn(f64, f64) -> f64> {
@@ -493,8 +493,8 @@ mod tests {
     use crate::sdl::value::Value;
     use crate::sdl::{ParseOptions, Parser};
 
-    /// The parser's `sqrt` and `abs` are the pointers the compiler recognises: instructions,
-    /// not calls through `F1` (they were calls while the two named separate copies).
+    /// The parser's `sqrt` and `abs` become instructions, not calls through `F1` (they were
+    /// calls while the compiler recognised them by function pointer).
     #[test]
     fn parsed_sqrt_and_abs_become_instructions() {
         let mut p = Parser::new(ParseOptions::default());
