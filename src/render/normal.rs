@@ -154,6 +154,11 @@ fn slope(pat: &Pattern, map: Option<&[(f64, f64, f64)]>, lp: DVec3, accuracy: f6
     // reference: passed by value, the array was copied in 16-byte pieces that straddled
     // the points' 16 + 8-byte stores just made here, store-forwarding stalls (mist's brick).
     let vs = pattern::values_warped4(pat, &TETRA.map(|u| centre + ((lp + u * accuracy) - lp)));
+    // Each value by its own 8-byte load: the four are returned through memory, stored one
+    // at a time, and a 16-byte load of two of them could not be forwarded (two fifths of
+    // this function's samples on normavg, after the call).
+    // SAFETY: reads of initialised doubles through references.
+    let vs = unsafe { [0, 1, 2, 3].map(|k| std::ptr::read_volatile(&vs[k])) };
     // For a regular tetrahedron Σ uuᵀ = (4/3)·I, so this is the linear fit's gradient.
     let mut g = DVec3::ZERO;
     for (u, v) in TETRA.into_iter().zip(vs) {
