@@ -18,7 +18,7 @@
 
 use std::f64::consts::TAU;
 
-use crate::math::{DVec3, Transform};
+use crate::math::{by_coordinates, DVec3, Transform};
 use crate::scene::desc::{ImageMap, Normal, NormalKind, Special, Texture, TextureEntries};
 use crate::scene::pattern::{Pattern, PatternKind};
 
@@ -72,12 +72,20 @@ fn perturb_with(nd: &Normal, t: &Transform, p: DVec3, n: DVec3) -> DVec3 {
     if matches!(nd.kind, NormalKind::Flat) {
         return n;
     }
+    // By coordinates too: `normal_map`'s nested calls store their normal as three 8-byte
+    // stores, and the transformed branch loaded its x-y pair as 16 bytes.
+    let n = by_coordinates(&n);
     let identity = t.is_identity();
-    let (lp, mut ln) = if identity {
+    let (lp, ln) = if identity {
         (p, n)
     } else {
         (t.inv_point(p), t.m.transpose().transform_vector3(n))
     };
+    // Read by coordinates: the two branches meet in one stack slot, which the transformed
+    // branch fills by three 8-byte stores (three dot products), and a 16-byte load of x-y
+    // spanning two of them cannot be forwarded from the store buffer (a tenth of this
+    // function's samples on normavg, on the instruction after that load).
+    let mut ln = by_coordinates(&ln);
     if !nd.no_bump_scale {
         ln = ln.normalize_or_zero();
     }
@@ -102,7 +110,9 @@ fn local(nd: &Normal, lp: DVec3, ln: DVec3) -> DVec3 {
             slope_map,
         } => match special {
             Special::Slope => {
-                let g = slope(pat, slope_map.as_deref(), lp, nd.accuracy);
+                // By coordinates: `slope` returns its vector stored as x (8 bytes) and y-z
+                // (16), and the x-y pair loaded as 16 bytes here could not be forwarded.
+                let g = by_coordinates(&slope(pat, slope_map.as_deref(), lp, nd.accuracy));
                 ln - g * (SLOPE_SCALE * amount)
             }
             Special::Bumps => {
@@ -144,6 +154,11 @@ fn slope(pat: &Pattern, map: Option<&[(f64, f64, f64)]>, lp: DVec3, accuracy: f6
     // reference: passed by value, the array was copied in 16-byte pieces that straddled
     // the points' 16 + 8-byte stores just made here, store-forwarding stalls (mist's brick).
     let vs = pattern::values_warped4(pat, &TETRA.map(|u| centre + ((lp + u * accuracy) - lp)));
+    // Each value by its own 8-byte load: the four are returned through memory, stored one
+    // at a time, and a 16-byte load of two of them could not be forwarded (two fifths of
+    // this function's samples on normavg, after the call).
+    // SAFETY: reads of initialised doubles through references.
+    let vs = unsafe { [0, 1, 2, 3].map(|k| std::ptr::read_volatile(&vs[k])) };
     // For a regular tetrahedron Σ uuᵀ = (4/3)·I, so this is the linear fit's gradient.
     let mut g = DVec3::ZERO;
     for (u, v) in TETRA.into_iter().zip(vs) {
