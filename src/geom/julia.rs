@@ -265,6 +265,10 @@ pub struct Julia {
     keep_thr: [f64; KEEP],
     /// The slice is w = 0: n = (0, 0, 0, 1) (zeros of either sign) and d = +0 (see `lift`).
     flat_slice: bool,
+    /// Every point the orbit calls inside lies within this radius (`inner_radius`; at most
+    /// the bailout, then up to the norm's rounding): the march leaves out rays and stretches
+    /// of rays outside it, with margins far above that rounding.
+    inner: f64,
 }
 
 /// Samples the march takes ahead after a least step with four lanes (`Julia::crossings`).
@@ -272,56 +276,6 @@ const AHEAD: usize = 3;
 
 /// How many of the last iterations an orbit may leave out (`Julia::keep`).
 const KEEP: usize = 4;
-
-/// The radii under which a quaternion orbit is sure to stay inside for `j` more iterations.
-///
-/// The quaternion norm is multiplicative, so |h^p + c| <= |h|^p + |c|: from |h| <= R_j the
-/// next iterate is within R_{j−1} when R_j^p + |c| <= R_{j−1}, and R_0 is the bailout. Each
-/// radius is shrunk by 1e-9 (relative) and |c| grown by 1e-12, which covers the iteration's
-/// roundings (a few units of 1e-16 of |h|^p + |c|, all below 2 + 8 here) and those of the
-/// computed norm the orbit compares (its square root, or the squared norm against
-/// `keep_sq`), so the computed iterates stay at or below `bail_sq` and the orbit would have
-/// ended `Inside`: leaving those iterations out changes no answer. A radius whose
-/// predecessor is within 1e-6 of |c| is not used.
-fn keep_radii(bailout: f64, c_norm: f64, cube: bool) -> ([f64; KEEP], [f64; KEEP]) {
-    let mut keep = [-1.0; KEEP];
-    let mut keep_sq = [-1.0; KEEP];
-    let c = c_norm * (1.0 + 1e-12);
-    let mut prev = bailout * (1.0 - 1e-9);
-    for j in 1..KEEP {
-        if !(prev.is_finite() && c.is_finite()) || prev - c <= 1e-6 {
-            break;
-        }
-        let room = prev - c;
-        let r = if cube { room.cbrt() } else { room.sqrt() } * (1.0 - 1e-9);
-        keep[j] = r;
-        keep_sq[j] = r * r * (1.0 - 1e-9);
-        prev = r;
-    }
-    (keep, keep_sq)
-}
-
-/// The largest non-negative `s` with `s.sqrt() <= b`, found on the bit patterns (ordered as
-/// integers for non-negative floats).
-fn sqrt_threshold(b: f64) -> f64 {
-    if b.is_nan() || b < 0.0 {
-        return -1.0;
-    }
-    if b == f64::INFINITY {
-        return f64::INFINITY;
-    }
-    // sqrt(lo) <= b < sqrt(hi) holds throughout.
-    let (mut lo, mut hi) = (0u64, f64::INFINITY.to_bits());
-    while hi - lo > 1 {
-        let mid = lo + (hi - lo) / 2;
-        if f64::from_bits(mid).sqrt() <= b {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    f64::from_bits(lo)
-}
 
 impl Julia {
     /// `slice` is normalised here; a zero 4th component is replaced by POV-Ray's default
@@ -349,6 +303,12 @@ impl Julia {
             Algebra::Quaternion => keep_radii(bailout, qnorm(&param), func == JuliaFn::Cube),
             Algebra::Hypercomplex => ([-1.0; KEEP], [-1.0; KEEP]),
         };
+        let inner = match algebra {
+            Algebra::Quaternion => {
+                inner_radius(bailout, qnorm(&param), func == JuliaFn::Cube, max_iteration)
+            }
+            Algebra::Hypercomplex => bailout,
+        };
         Julia {
             param,
             algebra,
@@ -364,6 +324,7 @@ impl Julia {
             flat_slice: slice.0[..3].iter().all(|&x| x == 0.0)
                 && slice.0[3] == 1.0
                 && slice.1.to_bits() == 0,
+            inner,
         }
     }
 
@@ -568,6 +529,20 @@ impl Julia {
         if exit <= 0.0 {
             return;
         }
+        // No sample beyond the inner radius is inside (`inner_radius`); a sample p = o + u·t is
+        // within ~1e-15·(|o| + |t|) of the exact point, and the ray's closest approach and exit
+        // from the ball within ~1e-7·|o| of their computed values (the square root of the
+        // discriminant's rounding), so the radius, the miss test and the exit take margins well
+        // above those: a ray that misses the ball has no crossing, and past the ball's exit
+        // every sample is outside, so once the last one was too no crossing can follow.
+        let o2 = o.length_squared();
+        let o_len = o2.sqrt();
+        let ri = self.inner + 1e-9 * (1.0 + o_len);
+        let disc_in = b * b - (o2 - ri * ri);
+        if disc_in < -1e-9 * (o2 + ri * ri) {
+            return;
+        }
+        let t_out = -b + disc_in.max(0.0).sqrt() + 1e-6 * (1.0 + o_len);
         let min_step = 1.0 / self.precision;
         let step = |orbit: &Orbit| march_step(orbit, min_step);
         let mut t = (entry + ENTRY_EPS).max(0.0);
@@ -591,6 +566,9 @@ impl Julia {
         let (mut next, mut n_ahead) = (0, 0);
         let mut least = false;
         while t <= exit {
+            if t > t_out && !matches!(prev, Some((_, true))) {
+                return;
+            }
             let orbit = if next < n_ahead && ahead[next].0.to_bits() == t.to_bits() {
                 next += 1;
                 ahead[next - 1].1
@@ -649,8 +627,33 @@ impl Julia {
                         {
                             Some(k) => k.1,
                             None => {
-                                let mr = 0.5 * (m + c);
-                                let ts = [m, 0.5 * (a + m), mr, 0.5 * (mr + c)];
+                                // The hit ends within [a, c] (module doc of the march): at
+                                // or below `tmin` it is turned away (`hit > tmin` fails after
+                                // the break), and for `any_hit` above it and before `tmax`
+                                // it is kept, which is all `any_hit` asks; either is known
+                                // before the next round of orbits.
+                                if c <= tmin {
+                                    break;
+                                }
+                                if let Some(st) = stop {
+                                    if st.any && a > tmin && c / st.len < st.tmax {
+                                        out(c);
+                                        return;
+                                    }
+                                }
+                                // A bracket still reaching down to `tmin` is most often a
+                                // ray leaving the surface it starts on, whose crossing lies
+                                // at the bracket's low end: its next four midpoints are each
+                                // the low half of the last, and a round that ends
+                                // `c <= tmin` takes four halvings, not two.
+                                let ts = if a <= tmin {
+                                    let m2 = 0.5 * (a + m);
+                                    let m3 = 0.5 * (a + m2);
+                                    [m, m2, m3, 0.5 * (a + m3)]
+                                } else {
+                                    let mr = 0.5 * (m + c);
+                                    [m, 0.5 * (a + m), mr, 0.5 * (mr + c)]
+                                };
                                 let ins = self.is_in_n(ts.map(|s| o + u * s));
                                 known = std::array::from_fn(|i| (ts[i], ins[i]));
                                 n_known = 4;
@@ -781,6 +784,10 @@ impl Shape for Julia {
 #[path = "julia_pair.rs"]
 mod pair;
 
+#[path = "julia_radii.rs"]
+mod radii;
+use radii::{inner_radius, keep_radii, sqrt_threshold};
+
 #[cfg(target_arch = "x86_64")]
 #[path = "julia_avx.rs"]
 mod avx;
@@ -788,3 +795,7 @@ mod avx;
 #[cfg(test)]
 #[path = "julia_tests.rs"]
 mod tests;
+
+#[cfg(test)]
+#[path = "julia_march_tests.rs"]
+mod march_tests;

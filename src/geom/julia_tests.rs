@@ -7,11 +7,11 @@
 
 use super::*;
 
-fn julia(c: [f64; 4], algebra: Algebra, func: JuliaFn, n: u32, prec: f64) -> Julia {
+pub(super) fn julia(c: [f64; 4], algebra: Algebra, func: JuliaFn, n: u32, prec: f64) -> Julia {
     Julia::new(c, algebra, func, n, prec, ([0.0, 0.0, 0.0, 1.0], 0.0))
 }
 
-const FRACTAL3: [f64; 4] = [0.49, 0.5, -0.34, 0.1];
+pub(super) const FRACTAL3: [f64; 4] = [0.49, 0.5, -0.34, 0.1];
 
 /// `inside()` of objects/fractal3's quaternion (max_iteration 7); povray's answers.
 #[test]
