@@ -13,6 +13,7 @@ pub mod color;
 pub mod compare;
 pub mod config;
 pub mod conformance;
+pub mod cpu;
 pub mod diag;
 pub mod func;
 pub mod geom;

@@ -466,18 +466,11 @@ pub fn dot_xy_z(a: DVec3, b: DVec3) -> f64 {
 }
 
 /// Whether the CPU has AVX, for the paths built with `#[target_feature(enable = "avx")]` (the
-/// build targets x86-64-v2, which lacks it): the noise lattice and the julia orbits. std
-/// caches the CPU query.
+/// build targets x86-64-v2, which lacks it): the noise lattice and the julia orbits. The
+/// query is made once (`cpu`).
 #[inline(always)]
 pub fn has_avx() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    {
-        std::arch::is_x86_feature_detected!("avx")
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        false
-    }
+    crate::cpu::avx()
 }
 
 /// `x` unchanged, through an empty `asm!` the optimiser cannot see into: a value it cannot

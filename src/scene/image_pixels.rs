@@ -87,6 +87,27 @@ impl ImagePixels {
         Self::tabled(table, idx)
     }
 
+    /// Pixels given as palette indices and the decode of an index; `decode` is called once
+    /// for each index used, and the table holds only those (every entry is some pixel's
+    /// value, as `any` needs).
+    pub fn from_indices(mut idx: Vec<u8>, mut decode: impl FnMut(u8) -> Rgbft) -> ImagePixels {
+        const UNSEEN: u16 = u16::MAX;
+        let mut slot = [UNSEEN; 256];
+        let mut table = Vec::new();
+        for i in idx.iter_mut() {
+            let s = &mut slot[*i as usize];
+            if *s == UNSEEN {
+                *s = table.len() as u16;
+                table.push(decode(*i));
+            }
+            // At most 256 entries: every slot fits a byte.
+            *i = *s as u8;
+        }
+        ImagePixels {
+            store: Store::Table8 { table, idx },
+        }
+    }
+
     /// Compacts whole pixels (distinct by their bits).
     pub fn from_vec(v: Vec<Rgbft>) -> ImagePixels {
         let mut seen: FxHashMap<[u64; 5], u16> = FxHashMap::default();
@@ -208,6 +229,25 @@ mod tests {
         let p = ImagePixels::from_keys(v.len(), 0..3000u32, |k| grey(k as f64));
         assert_eq!(p.heap_bytes(), 3000 * 40 + 3000 * 2);
         assert_eq!(p.to_vec(), v);
+    }
+
+    #[test]
+    fn indexed_pixels_read_back_as_their_keys_decode() {
+        let keys: Vec<u8> = (0..5000u32).map(|i| ((i * 37) % 251) as u8).collect();
+        let decode = |k: u8| grey(k as f64 / 3.0);
+        let by_key = ImagePixels::from_keys(keys.len(), keys.iter().copied(), decode);
+        let by_index = ImagePixels::from_indices(keys.clone(), decode);
+        assert_eq!(by_index.len(), keys.len());
+        assert_eq!(by_index.to_vec(), by_key.to_vec());
+        assert_eq!(by_index.heap_bytes(), by_key.heap_bytes());
+        let empty = ImagePixels::from_indices(Vec::new(), decode);
+        assert!(empty.is_empty() && !empty.any(|_| true));
+        let all: Vec<u8> = (0..=255u8).rev().collect();
+        let p = ImagePixels::from_indices(all.clone(), decode);
+        assert_eq!(
+            p.to_vec(),
+            all.iter().map(|&k| decode(k)).collect::<Vec<_>>()
+        );
     }
 
     #[test]

@@ -59,14 +59,8 @@ impl IntPow {
     }
 }
 
-#[cfg(target_arch = "x86_64")]
 fn has_fma() -> bool {
-    std::arch::is_x86_feature_detected!("fma")
-}
-
-#[cfg(not(target_arch = "x86_64"))]
-fn has_fma() -> bool {
-    false
+    crate::cpu::fma()
 }
 
 /// `a + b` as a rounded sum and its exact error, for `|a| >= |b|` (or a zero).

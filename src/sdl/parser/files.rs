@@ -43,6 +43,14 @@ pub struct Lexed {
     files: HashMap<PathBuf, CachedFile>,
 }
 
+impl Lexed {
+    /// Bytes the files' tokens take (their vectors' lengths, not the names they share).
+    pub fn token_bytes(&self) -> usize {
+        let token = std::mem::size_of::<Token>();
+        self.files.values().map(|f| f.tokens.len() * token).sum()
+    }
+}
+
 impl Parser {
     /// `Include_Header`: the file is read as if the scene's first line included it.
     pub(super) fn include_header(&mut self, name: &str) -> PResult<()> {
