@@ -701,7 +701,7 @@ impl Object {
     /// and lies inside every clipping object. The shape asks them in its own order
     /// (`Shape::any_kept`): a clipped torus stops polishing at the first one kept.
     #[inline(never)]
-    pub(super) fn clipped_leaf_any_hit(
+    pub(crate) fn clipped_leaf_any_hit(
         &self,
         shape: &dyn Shape,
         ray: &Ray,
