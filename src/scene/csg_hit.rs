@@ -728,8 +728,33 @@ impl Object {
         nearest: bool,
     ) -> Option<SurfaceHit<'a>> {
         let start = s.surface.len();
-        let kept =
-            |h: &SurfaceHit| h.t > EPSILON && self.clip.iter().all(|c| c.inside(ray.at(h.t)));
+        let kept_t = |t: f64| t > EPSILON && self.clip.iter().all(|c| c.inside(ray.at(t)));
+        let kept = |h: &SurfaceHit| kept_t(h.t);
+        if let (ObjKind::Shape(shape, window), true) = (&self.kind, nearest) {
+            // The running minimum below over the shape's own list, which `all_hits_unclipped`
+            // would copy into surface hits (those below `tmax`, in order): the surface hit is
+            // made only for the crossing kept (a clipped plane's camera rays pushed, read and
+            // dropped one each).
+            self.shape_hits(&**shape, window.as_deref(), ray, &mut s.hits);
+            let mut best: Option<Hit> = None;
+            for k in 0..s.hits.len() {
+                let h = &s.hits[k];
+                let t = h.t;
+                if t < tmax && best.is_none_or(|b| t.total_cmp(&b.t).is_lt()) && kept_t(t) {
+                    best = Some(Hit {
+                        t,
+                        part: h.part,
+                        uv: h.uv,
+                    });
+                }
+            }
+            return best.map(|hit| SurfaceHit {
+                t: hit.t,
+                obj: self,
+                hit,
+                flip: self.inverse,
+            });
+        }
         if let ObjKind::Csg {
             op: CsgOp::Union,
             children,
