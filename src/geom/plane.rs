@@ -84,6 +84,18 @@ impl Shape for Plane {
         self.hit_t(ray).filter(|&t| t < tmax).map(Hit::new)
     }
 
+    /// The one crossing `intersect_all` lists, asked without the list (a clipped plane's
+    /// shadow rays: the scratch's clear, push and read were half of this call).
+    fn any_kept(
+        &self,
+        ray: &Ray,
+        tmax: f64,
+        _scratch: &mut Vec<Hit>,
+        keep: &mut dyn FnMut(f64) -> bool,
+    ) -> bool {
+        self.hit_t(ray).is_some_and(|t| t < tmax && keep(t))
+    }
+
     /// `normal · p < distance` by `dot_xy_z` (a load of p that the caller's stores can
     /// forward). A degenerate plane (zero normal, zero distance) needs no test of its own:
     /// its products are zeros (or NaN for an infinite `p`), never below zero.
@@ -142,6 +154,32 @@ mod tests {
                 .then(|| (p.distance - p.normal.dot(ray.origin)) / denom)
                 .filter(|&t| t > EPSILON && t.is_finite());
             assert_eq!(p.hit_t(&ray).map(f64::to_bits), full.map(f64::to_bits));
+        }
+    }
+
+    /// `any_kept` without the list answers as the listing does (`any_listed_kept`), and asks
+    /// `keep` about the same `t`, bit for bit: rays towards, away from and along planes,
+    /// with limits below and beyond the crossing.
+    #[test]
+    fn any_kept_is_the_listing() {
+        let mut rng = crate::geom::test_rng::Lcg(77);
+        let mut rnd = move || rng.next() * 2.0 - 1.0;
+        for k in 0..20000 {
+            let p = Plane::new(DVec3::new(rnd(), rnd(), [rnd(), 0.0][k % 2]), rnd());
+            let d = DVec3::new(rnd(), [rnd(), 0.0, -0.0][k % 3], rnd());
+            let ray = Ray::new(DVec3::new(rnd(), rnd(), rnd()) * 3.0, d);
+            let tmax = [f64::INFINITY, 1.0, 0.0][k % 3];
+            let cut = rnd();
+            let (mut a, mut b) = (Vec::new(), Vec::new());
+            let fast = p.any_kept(&ray, tmax, &mut Vec::new(), &mut |t| {
+                a.push(t.to_bits());
+                t > cut
+            });
+            let listed = crate::geom::any_listed_kept(&p, &ray, tmax, &mut Vec::new(), &mut |t| {
+                b.push(t.to_bits());
+                t > cut
+            });
+            assert_eq!((fast, a), (listed, b), "ray {k}");
         }
     }
 

@@ -7,7 +7,7 @@ use std::cell::Cell;
 #[cfg(target_arch = "x86_64")]
 use crate::geom::algebraic::crossings_lanes;
 use crate::geom::algebraic::{QuadricLanes, LANES};
-use crate::geom::{Hit, Shape};
+use crate::geom::Hit;
 use crate::math::{has_avx, Aabb, DVec3, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
 use crate::scene::csg_boxes::{box_hits, csg_keeps_boxes};
@@ -693,94 +693,6 @@ impl Object {
             hit: Hit::new(t),
             flip: c.inverse ^ (op == CsgOp::Difference && i > 0) ^ self.inverse,
         })
-    }
-
-    /// `any_hit` of a leaf `shape` (this object's) with `clipped_by` and without window:
-    /// whether `clipped_first_hit` would find a crossing, that is whether any crossing
-    /// `all_hits_unclipped` lists (the shape's `intersect_all` below `tmax`) has t > EPSILON
-    /// and lies inside every clipping object. The shape asks them in its own order
-    /// (`Shape::any_kept`): a clipped torus stops polishing at the first one kept.
-    #[inline(never)]
-    pub(super) fn clipped_leaf_any_hit(
-        &self,
-        shape: &dyn Shape,
-        ray: &Ray,
-        tmax: f64,
-        s: &mut Scratch<'_>,
-    ) -> bool {
-        let mut local = None;
-        let r = self.local_ray(ray, &mut local);
-        shape.any_kept(r, tmax, &mut s.hits, &mut |t| {
-            t > EPSILON && self.clip.iter().all(|c| c.inside(ray.at(t)))
-        })
-    }
-
-    /// `first_hit` of a leaf or union with `clipped_by`: the nearest of its crossings with
-    /// t > EPSILON inside every clipping object (ties to the earlier in `all_hits`'s order, as
-    /// `min_by` over it), asking the clip only about crossings that would be nearer. With
-    /// `nearest` false, any such crossing (`any_hit`): a union's members are then asked one
-    /// at a time, stopping at the first crossing the clip keeps.
-    pub(super) fn clipped_first_hit<'a>(
-        &'a self,
-        ray: &Ray,
-        tmax: f64,
-        s: &mut Scratch<'a>,
-        nearest: bool,
-    ) -> Option<SurfaceHit<'a>> {
-        let start = s.surface.len();
-        let kept =
-            |h: &SurfaceHit| h.t > EPSILON && self.clip.iter().all(|c| c.inside(ray.at(h.t)));
-        if let ObjKind::Csg {
-            op: CsgOp::Union,
-            children,
-            index,
-            cull,
-        } = &self.kind
-        {
-            if !nearest {
-                // `all_hits_unclipped`'s tests of a union, member by member.
-                let inv_dir = ray.dir.recip();
-                if cull
-                    .as_ref()
-                    .and_then(|c| c.aabb.as_ref())
-                    .is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none())
-                {
-                    return None;
-                }
-                let slabs = Slabs::new(ray.origin, inv_dir);
-                // Plane members through their faces, as `all_hits_unclipped` asks them.
-                let faces = cull.as_ref().and_then(|c| c.faces.as_ref());
-                let ray_faces = faces.filter(|_| faces::ray_ok(ray));
-                let mut found = None;
-                each_member(children, index.as_deref(), ray, tmax, s, |c, i, s| {
-                    if found.is_some() || !slabs.hits(&c.bounds, tmax) {
-                        return;
-                    }
-                    let from = s.surface.len();
-                    member_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s);
-                    found = s.surface[from..].iter().find(|h| kept(h)).copied();
-                    s.surface.truncate(from);
-                });
-                return found;
-            }
-        }
-        self.all_hits_unclipped(ray, tmax, s);
-        let best = if nearest {
-            // A running minimum that asks the clip only about crossings nearer than the best
-            // so far: one that is not cannot become the minimum, kept or not, and the strict
-            // comparison keeps the earliest of equal ones.
-            let mut best: Option<SurfaceHit<'a>> = None;
-            for h in &s.surface[start..] {
-                if best.is_none_or(|b| h.t.total_cmp(&b.t).is_lt()) && kept(h) {
-                    best = Some(*h);
-                }
-            }
-            best
-        } else {
-            s.surface[start..].iter().find(|h| kept(h)).copied()
-        };
-        s.surface.truncate(start);
-        best
     }
 }
 

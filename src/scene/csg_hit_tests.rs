@@ -100,6 +100,8 @@ fn searches_match_all_hits() {
                 clipped_by { box { <-1.9, -0.1, -100>, <2.1, 100, 1> } } rotate -y * 2 }
         sphere { 0, 1 clipped_by { plane { y, 0.25 } } translate x }
         sphere { 0, 1 clipped_by { plane { y, 0.25 } plane { x, 0.1 } } inverse }
+        plane { z, 0.1 clipped_by { box { -2, 2 } } translate <-0.5, 0.3, 0> }
+        plane { <1, 1, 0>, 0.2 clipped_by { sphere { 0, 1.5 } } inverse rotate 30 * z }
         intersection { quadric { <0, 1, 1>, 0, 0, -1 } quadric { <1, 0, 1>, 0, 0, -1 }
                        quadric { <0, 1, 1>, 0, 0, -1 inverse scale <1, 0.5, 0.5> }
                        quadric { <1, 0, 1>, 0, 0, -1 inverse scale <0.5, 1, 0.5> } rotate y * 45 }

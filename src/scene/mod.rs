@@ -3,6 +3,7 @@
 pub mod atmosphere;
 pub mod build;
 pub mod children;
+mod clip_hit;
 pub mod csg_boxes;
 pub mod csg_hit;
 mod csg_members;

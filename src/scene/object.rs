@@ -317,19 +317,7 @@ impl Object {
     pub(super) fn all_hits_unclipped<'a>(&'a self, ray: &Ray, tmax: f64, s: &mut Scratch<'a>) {
         match &self.kind {
             ObjKind::Shape(shape, window) => {
-                let mut local = None;
-                let r = self.local_ray(ray, &mut local);
-                s.hits.clear();
-                match window {
-                    // Crossings outside the box are clipped away: the shape may leave them
-                    // out. The range is over the whole line, padded against rounding.
-                    Some(w) => match w.range(ray) {
-                        Range::Within(lo, hi) => shape.intersect_all_within(r, lo, hi, &mut s.hits),
-                        Range::Empty => {}
-                        Range::All => shape.intersect_all(r, &mut s.hits),
-                    },
-                    None => shape.intersect_all(r, &mut s.hits),
-                }
+                self.shape_hits(&**shape, window.as_deref(), ray, &mut s.hits);
                 self.take_hits(tmax, s);
             }
             ObjKind::Csg {
@@ -422,6 +410,31 @@ impl Object {
         match &self.transform {
             Some(t) => t.inv_point(p),
             None => p,
+        }
+    }
+
+    /// A leaf's shape crossings, all of them (`intersect_all`), into `hits`: `all_hits_unclipped`
+    /// of a leaf before its `take_hits`.
+    #[inline(always)]
+    pub(super) fn shape_hits(
+        &self,
+        shape: &dyn Shape,
+        window: Option<&Window>,
+        ray: &Ray,
+        hits: &mut Vec<Hit>,
+    ) {
+        let mut local = None;
+        let r = self.local_ray(ray, &mut local);
+        hits.clear();
+        match window {
+            // Crossings outside the box are clipped away: the shape may leave them
+            // out. The range is over the whole line, padded against rounding.
+            Some(w) => match w.range(ray) {
+                Range::Within(lo, hi) => shape.intersect_all_within(r, lo, hi, hits),
+                Range::Empty => {}
+                Range::All => shape.intersect_all(r, hits),
+            },
+            None => shape.intersect_all(r, hits),
         }
     }
 

@@ -510,6 +510,11 @@ pub(crate) fn leaf_any_hit<'a>(
 ) -> bool {
     match (&obj.kind, obj.clip.is_empty(), &obj.transform) {
         (ObjKind::Shape(shape, _), true, None) => shape.any_hit(ray, tmax, &mut scratch.hits),
+        // A clipped shape without a window, as `Object::any_hit` would ask it after its tests
+        // for unions and CSG nodes.
+        (ObjKind::Shape(shape, None), false, _) => {
+            obj.clipped_leaf_any_hit(&**shape, ray, tmax, scratch)
+        }
         _ => obj.any_hit(ray, tmax, scratch),
     }
 }
