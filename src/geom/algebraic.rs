@@ -517,6 +517,45 @@ impl Shape for Algebraic {
     }
 
     fn normal(&self, p: DVec3, _hit: &Hit) -> DVec3 {
+        // As in `value`: powers from tables the size of the order, not a `powi` call
+        // (`__powidf2`) per factor, which was most of a quartic's normal.
+        match self.order {
+            0..=2 => self.gradient_n::<3>(p),
+            3..=4 => self.gradient_n::<5>(p),
+            _ => self.gradient_n::<{ MAX_ORDER + 1 }>(p),
+        }
+    }
+}
+
+impl Algebraic {
+    /// The gradient for orders below `N`: each term's derivatives as `c·i·x^(i-1)·y^j·z^k`
+    /// in that order, the powers from `powi_table` (bit for bit `powi`'s, see there).
+    #[inline(always)]
+    fn gradient_n<const N: usize>(&self, p: DVec3) -> DVec3 {
+        let (x, y, z) = (
+            powi_table::<N>(p.x, self.order),
+            powi_table::<N>(p.y, self.order),
+            powi_table::<N>(p.z, self.order),
+        );
+        let mut g = DVec3::ZERO;
+        for ([i, j, k], c) in &self.terms {
+            let (i, j, k) = (*i as usize, *j as usize, *k as usize);
+            if i > 0 {
+                g.x += c * i as f64 * x[i - 1] * y[j] * z[k];
+            }
+            if j > 0 {
+                g.y += c * j as f64 * x[i] * y[j - 1] * z[k];
+            }
+            if k > 0 {
+                g.z += c * k as f64 * x[i] * y[j] * z[k - 1];
+            }
+        }
+        g
+    }
+
+    /// `normal` by `powi` calls: the reference its unit test compares with.
+    #[cfg(test)]
+    fn gradient_powi(&self, p: DVec3) -> DVec3 {
         let mut g = DVec3::ZERO;
         for ([i, j, k], c) in &self.terms {
             let (i, j, k) = (*i as i32, *j as i32, *k as i32);
