@@ -258,7 +258,8 @@ impl Algebraic {
         if self.order <= 2 {
             out[..3].copy_from_slice(&self.along_quadric(origin, dir));
         } else if self.order <= 4 {
-            out[..5].copy_from_slice(&along_quartic(&self.quartic, origin, dir));
+            let low = out.first_chunk_mut::<5>().expect("room for a quartic");
+            along_quartic(&self.quartic, origin, dir, low);
         } else if self.order < 8 {
             *out = self.along_in::<8>(origin, dir);
         } else {
