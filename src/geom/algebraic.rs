@@ -247,7 +247,7 @@ impl Algebraic {
     fn surely_misses(&self, c: &[f64; MAX_ORDER + 1], lo: f64, hi: f64) -> bool {
         self.order == 4
             && c[4] != 0.0
-            && surely_definite_quartic(&[c[0], c[1], c[2], c[3], c[4]], lo, hi)
+            && surely_definite_quartic(c.first_chunk::<5>().expect("a quartic"), lo, hi)
     }
 
     /// The polynomial along `origin + t·dir` (ascending coefficients in t).
