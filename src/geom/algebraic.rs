@@ -247,7 +247,7 @@ impl Algebraic {
     fn surely_misses(&self, c: &[f64; MAX_ORDER + 1], lo: f64, hi: f64) -> bool {
         self.order == 4
             && c[4] != 0.0
-            && surely_definite_quartic(&[c[0], c[1], c[2], c[3], c[4]], lo, hi)
+            && surely_definite_quartic(c.first_chunk::<5>().expect("a quartic"), lo, hi)
     }
 
     /// The polynomial along `origin + t·dir` (ascending coefficients in t).
@@ -258,7 +258,8 @@ impl Algebraic {
         if self.order <= 2 {
             out[..3].copy_from_slice(&self.along_quadric(origin, dir));
         } else if self.order <= 4 {
-            out[..5].copy_from_slice(&along_quartic(&self.quartic, origin, dir));
+            let low = out.first_chunk_mut::<5>().expect("room for a quartic");
+            along_quartic(&self.quartic, origin, dir, low);
         } else if self.order < 8 {
             *out = self.along_in::<8>(origin, dir);
         } else {
@@ -517,6 +518,45 @@ impl Shape for Algebraic {
     }
 
     fn normal(&self, p: DVec3, _hit: &Hit) -> DVec3 {
+        // As in `value`: powers from tables the size of the order, not a `powi` call
+        // (`__powidf2`) per factor, which was most of a quartic's normal.
+        match self.order {
+            0..=2 => self.gradient_n::<3>(p),
+            3..=4 => self.gradient_n::<5>(p),
+            _ => self.gradient_n::<{ MAX_ORDER + 1 }>(p),
+        }
+    }
+}
+
+impl Algebraic {
+    /// The gradient for orders below `N`: each term's derivatives as `c·i·x^(i-1)·y^j·z^k`
+    /// in that order, the powers from `powi_table` (bit for bit `powi`'s, see there).
+    #[inline(always)]
+    fn gradient_n<const N: usize>(&self, p: DVec3) -> DVec3 {
+        let (x, y, z) = (
+            powi_table::<N>(p.x, self.order),
+            powi_table::<N>(p.y, self.order),
+            powi_table::<N>(p.z, self.order),
+        );
+        let mut g = DVec3::ZERO;
+        for ([i, j, k], c) in &self.terms {
+            let (i, j, k) = (*i as usize, *j as usize, *k as usize);
+            if i > 0 {
+                g.x += c * i as f64 * x[i - 1] * y[j] * z[k];
+            }
+            if j > 0 {
+                g.y += c * j as f64 * x[i] * y[j - 1] * z[k];
+            }
+            if k > 0 {
+                g.z += c * k as f64 * x[i] * y[j] * z[k - 1];
+            }
+        }
+        g
+    }
+
+    /// `normal` by `powi` calls: the reference its unit test compares with.
+    #[cfg(test)]
+    fn gradient_powi(&self, p: DVec3) -> DVec3 {
         let mut g = DVec3::ZERO;
         for ([i, j, k], c) in &self.terms {
             let (i, j, k) = (*i as i32, *j as i32, *k as i32);

@@ -123,14 +123,22 @@ pub(super) fn quartic_term(p: [u8; 3]) -> Option<QuarticTerm> {
     )
 }
 
-/// The polynomial along `origin + t·dir` for the terms `plan` (in the shape's order): the
-/// powers, then each term's expansion added in turn.
+/// The polynomial along `origin + t·dir` for the terms `plan` (in the shape's order), into
+/// `out`: the powers, then each term's expansion added in turn.
+///
+/// The terms add into the caller's coefficients themselves. Summed in a local array that was
+/// then returned and copied, the array was read back with 16-byte loads right after the last
+/// term's 8-byte stores, which the store buffer cannot forward (a stall on every ray).
 #[inline(always)]
-pub(super) fn along_quartic(plan: &[(QuarticTerm, f64)], origin: DVec3, dir: DVec3) -> [f64; 5] {
+pub(super) fn along_quartic(
+    plan: &[(QuarticTerm, f64)],
+    origin: DVec3,
+    dir: DVec3,
+    out: &mut [f64; 5],
+) {
     let pw = powers_unrolled::<5>(origin, dir);
-    let mut acc = [0.0f64; 5];
+    *out = [0.0f64; 5];
     for (term, c) in plan {
-        term(*c, &pw, &mut acc);
+        term(*c, &pw, out);
     }
-    acc
 }
