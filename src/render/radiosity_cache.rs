@@ -9,7 +9,7 @@ use rustc_hash::FxHashMap;
 use smallvec::SmallVec;
 
 use crate::math::DVec3;
-use crate::scene::scratch::{MemoEntry, ProbeCell, ProbeMemo, RadiosityMemo};
+use crate::scene::scratch::{MemoEntry, ProbeMemo, RadiosityMemo};
 
 use super::trace::Seen;
 pub use crate::scene::scratch::RadiositySample as Sample;
@@ -137,7 +137,7 @@ impl Scale {
 }
 
 /// Sub-cells to a cell's side for the copies of a cell's list that lookups reading whole cells
-/// keep (`sift::sift`): a sample is filed under every cell its reach touches, and a point of
+/// keep (`sift::sift`, `Cache::sub_cell`): a sample is filed under every cell its reach touches, and a point of
 /// the cell is in reach of a few in ten of them (radiosity2: 84 % out of reach).
 const SPLIT: f64 = 4.0;
 
@@ -507,39 +507,6 @@ impl Cache {
             }
         }
         true
-    }
-
-    /// Readies `memo` for lookups at `bound` in this filing: its sub-cells emptied if made
-    /// for another, one per scale.
-    #[inline(always)]
-    fn sub_memo(&self, memo: &mut ProbeMemo, bound: f64) {
-        if memo.stamp != self.stamp || memo.bound != bound.to_bits() {
-            memo.stamp = self.stamp;
-            memo.bound = bound.to_bits();
-            for c in &mut memo.cells {
-                c.floors = [f64::NAN; 3];
-            }
-        }
-        if memo.cells.len() < self.scales.len() {
-            memo.cells.resize_with(self.scales.len(), Default::default);
-        }
-    }
-
-    /// `c` (the memo's copy for `scale`) made the sub-cell holding `p`, unless it is already:
-    /// the level-1 samples of its cell that can reach a point of it (`sift::sift`). A neighbouring
-    /// lookup mostly falls in the same sub-cell and reads the copy, without a key or a grid
-    /// probe, and meets fewer samples out of reach than the whole cell holds.
-    #[inline(always)]
-    fn sub_cell(&self, scale: &Scale, p: DVec3, bound: f64, c: &mut ProbeCell) {
-        let fine = scale.sub_floors(p);
-        // A NaN is equal to nothing: a point or a memo cell with one asks the grid.
-        if c.floors != fine {
-            c.floors = fine;
-            c.ids.clear();
-            if let Some(ids) = scale.grid1.get(&floors_key(scale.floors(p))) {
-                sift::sift(self, ids, fine, scale.cell / SPLIT, bound, &mut c.ids);
-            }
-        }
     }
 
     /// `near` from the first sample on, stopping as soon as `f` returns false (then false):

@@ -5,7 +5,44 @@
 //! as from the cell, to the bit; in AVX lanes where the CPU has them (a branchy scalar sift
 //! took more time than the copies saved: gamma_showcase 1.16 of the time).
 
-use super::{Cache, Footprint};
+use super::{floors_key, Cache, Footprint, Scale, SPLIT};
+use crate::math::DVec3;
+use crate::scene::scratch::{ProbeCell, ProbeMemo};
+
+impl Cache {
+    /// Readies `memo` for lookups at `bound` in this filing: its sub-cells emptied if made
+    /// for another, one per scale.
+    #[inline(always)]
+    pub(super) fn sub_memo(&self, memo: &mut ProbeMemo, bound: f64) {
+        if memo.stamp != self.stamp || memo.bound != bound.to_bits() {
+            memo.stamp = self.stamp;
+            memo.bound = bound.to_bits();
+            for c in &mut memo.cells {
+                c.floors = [f64::NAN; 3];
+            }
+        }
+        if memo.cells.len() < self.scales.len() {
+            memo.cells.resize_with(self.scales.len(), Default::default);
+        }
+    }
+
+    /// `c` (the memo's copy for `scale`) made the sub-cell holding `p`, unless it is already:
+    /// the level-1 samples of its cell that can reach a point of it (`sift`). A neighbouring
+    /// lookup mostly falls in the same sub-cell and reads the copy, without a key or a grid
+    /// probe, and meets fewer samples out of reach than the whole cell holds.
+    #[inline(always)]
+    pub(super) fn sub_cell(&self, scale: &Scale, p: DVec3, bound: f64, c: &mut ProbeCell) {
+        let fine = scale.sub_floors(p);
+        // A NaN is equal to nothing: a point or a memo cell with one asks the grid.
+        if c.floors != fine {
+            c.floors = fine;
+            c.ids.clear();
+            if let Some(ids) = scale.grid1.get(&floors_key(scale.floors(p))) {
+                sift(self, ids, fine, scale.cell / SPLIT, bound, &mut c.ids);
+            }
+        }
+    }
+}
 
 /// Into `out`, the samples of `ids` (a cell's list) whose reach at `bound` may cover a point
 /// of the sub-cell `fine` (its `sub_floors`, `sub` its size), in their order. Only samples
@@ -155,7 +192,6 @@ unsafe fn sift_avx(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::math::DVec3;
 
     /// The lanes keep what the scalar sift keeps, and neither leaves out a sample that
     /// reaches some point of the sub-cell (points on its faces and corners, and inside).
