@@ -114,6 +114,9 @@ pub struct RadiositySample {
 #[derive(Default)]
 pub struct RadiosityMemo {
     pub entries: Vec<MemoEntry>,
+    /// Per scale, the sub-cell the last level-1 lookup of a fresh normal (a curved surface's)
+    /// read whole, with its cell's level-1 samples that can reach it (`Cache::near_memo`).
+    pub whole: ProbeMemo,
 }
 
 /// One normal's cells (`RadiosityMemo`).
@@ -144,13 +147,17 @@ pub struct MemoEntry {
 /// the grids again.
 #[derive(Default)]
 pub struct ProbeMemo {
-    /// Which filing of which cache the cells are of (0: none).
+    /// Which filing of which cache the cells are of (0: none), for which error bound (bits:
+    /// `RadiosityMemo::whole`'s only, whose copies depend on it).
     pub stamp: u64,
+    pub bound: u64,
     pub cells: Vec<ProbeCell>,
 }
 
 /// A scale's cell in `ProbeMemo`: the floors of the point's coordinates in cells it was found
-/// from (NaN, equal to nothing, until one is read), and a copy of the cell's level-1 list.
+/// from (NaN, equal to nothing, until one is read), and a copy of the cell's level-1 list; in
+/// `RadiosityMemo::whole`, the floors in sub-cells and the samples of the cell's list that can
+/// reach a point of the sub-cell, in the list's order.
 pub struct ProbeCell {
     pub floors: [f64; 3],
     pub ids: Vec<u32>,
