@@ -9,12 +9,15 @@
 //!
 //! Rays are traced through a min/max pyramid over the cells (each level halves the grid), so a
 //! ray skips every block whose height range it passes above or below and only tests the
-//! triangles of the cells it actually reaches, nearest first.
+//! triangles of the cells it actually reaches, nearest first. When only the first crossing is
+//! wanted (camera and shadow rays), the same cells are found in the same order by stepping
+//! along the ray through blocks of 8×8 cells and the cells of the blocks it reaches (`cells`).
 //!
 //! `smooth` mixes the four corner normals of the cell bilinearly; the corner normals are made
 //! and kept the way POV-Ray keeps them, as 16-bit integers in grid units, whose rounding tilts
 //! them visibly on steep slopes (see `vertex_normal`).
 
+mod cells;
 mod walk;
 #[cfg(target_arch = "x86_64")]
 mod walk_avx;
@@ -129,6 +132,17 @@ struct GridRay<'a> {
     /// The crossings found, from `out[from]` on (what was there before is not this shape's).
     out: &'a mut Vec<Hit>,
     from: usize,
+}
+
+/// How `trace_by` walks a ray: along its cells (`walk_cells`, first crossings of rays with
+/// `walk::Signs`), through the pyramid by `visit_signed` (rays with `Signs`), or by `visit`;
+/// a ray the walk asked for does not allow takes the next.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Walk {
+    Cells,
+    #[cfg(test)]
+    Signed,
+    Pyramid,
 }
 
 /// The min/max pyramid of a grid of at least 2×2 vertices.
@@ -417,12 +431,12 @@ impl HeightField {
     }
 
     fn trace(&self, ray: &Ray, tmax: f64, first: bool, out: &mut Vec<Hit>) {
-        self.trace_by(ray, tmax, first, out, true);
+        self.trace_by(ray, tmax, first, out, Walk::Cells);
     }
 
-    /// `trace`, with `signed` false walking every ray with `visit` (for the tests that show
-    /// `visit_signed` finds the same crossings).
-    fn trace_by(&self, ray: &Ray, tmax: f64, first: bool, out: &mut Vec<Hit>, signed: bool) {
+    /// `trace` by the given walk where the ray allows it (for the tests that show the walks
+    /// find the same crossings).
+    fn trace_by(&self, ray: &Ray, tmax: f64, first: bool, out: &mut Vec<Hit>, walk: Walk) {
         if self.bounds.is_empty() {
             return;
         }
@@ -448,10 +462,12 @@ impl HeightField {
             && finite(r.d.x, r.inv.x)
             && finite(r.d.y, r.inv.y)
             && finite(r.d.z, r.inv.z);
-        if plain && top > 0 && signed {
+        if plain && top > 0 && walk != Walk::Pyramid {
             if let Some(s) = walk::Signs::new(&r) {
-                // Makes the root's test itself.
-                self.walk_signed(&mut r, &s);
+                // Both make the root's test themselves.
+                if !(first && walk == Walk::Cells && self.walk_cells(&mut r, &s)) {
+                    self.walk_signed(&mut r, &s);
+                }
                 return;
             }
         }

@@ -15,10 +15,10 @@ use super::{fmax, fmin, GridRay, HeightField};
 pub(super) struct Signs {
     /// 1 when the ray runs towards smaller x (z): a child's entry distance along x (z) is then
     /// that of its far face, index `k + 1` of the three face distances.
-    sx: usize,
-    sz: usize,
+    pub(super) sx: usize,
+    pub(super) sz: usize,
     /// Whether the ray rises: it then enters a block's height range through its low face.
-    up: bool,
+    pub(super) up: bool,
     /// The children's tests in AVX lanes (`walk_avx`).
     avx: bool,
 }
@@ -40,7 +40,7 @@ impl Signs {
 /// The right side of the walk's slab test (`slack_ok::<true>`): a block whose entry is above
 /// this function of its exit is missed.
 #[inline(always)]
-fn slack(t1: f64) -> f64 {
+pub(super) fn slack(t1: f64) -> f64 {
     t1 + 1e-9 * fmax::<true>(t1.abs(), 1.0)
 }
 
@@ -52,7 +52,14 @@ impl HeightField {
     // Negated: a NaN `water_level` leaves every block in, as `visit`'s early return does.
     #[allow(clippy::neg_cmp_op_on_partial_ord)]
     #[inline(always)]
-    fn reaches_signed(&self, r: &GridRay, s: &Signs, range: [f32; 2], key: f64, exit: f64) -> bool {
+    pub(super) fn reaches_signed(
+        &self,
+        r: &GridRay,
+        s: &Signs,
+        range: [f32; 2],
+        key: f64,
+        exit: f64,
+    ) -> bool {
         let [ylo, yhi] = range.map(f64::from);
         let (u, v) = ((ylo - r.o.y) * r.inv.y, (yhi - r.o.y) * r.inv.y);
         let (ye, yx) = if s.up { (u, v) } else { (v, u) };
@@ -247,7 +254,7 @@ impl HeightField {
 
 #[cfg(test)]
 mod tests {
-    use super::super::HeightData;
+    use super::super::{HeightData, Walk};
     use super::*;
     use crate::geom::Hit;
     use crate::math::{DVec3, Ray};
@@ -297,8 +304,8 @@ mod tests {
                 };
                 for first in [true, false] {
                     let (mut a, mut b) = (vec![], vec![]);
-                    hf.trace_by(&ray, tmax, first, &mut a, true);
-                    hf.trace_by(&ray, tmax, first, &mut b, false);
+                    hf.trace_by(&ray, tmax, first, &mut a, Walk::Signed);
+                    hf.trace_by(&ray, tmax, first, &mut b, Walk::Pyramid);
                     assert_eq!(bits(&a), bits(&b), "{ray:?} {tmax} {first}");
                     checked += a.len();
                 }
