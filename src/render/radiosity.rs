@@ -20,7 +20,7 @@ use crate::math::{DVec3, Ray};
 use crate::scene::build::Scene;
 use crate::scene::desc::RadiositySettings;
 use crate::scene::object::{Scratch, SurfaceHit};
-use crate::scene::scratch::{ProbeMemo, RadiosityMemo};
+use crate::scene::scratch::{ProbeMemo, RadiosityMemo, SkyKey};
 
 use smallvec::SmallVec;
 
@@ -161,19 +161,31 @@ impl<'a> Tracer<'a> {
         } else {
             0
         };
+        // Deeper samples shoot half as many rays per level (measured: povray's statistics
+        // for cornell.pov, 200 rays at depth 0 and about 100 below).
+        let count = (set.count >> (level - 1).min(31)).max(1) as usize;
+        // A sky that depends on the direction alone is remembered along each frame's rays.
+        let sky = (!self.scene.sky.is_empty() && !crate::scene::pattern::surface_patterns_made())
+            .then(|| SkyKey {
+                n: [n.x.to_bits(), n.y.to_bits(), n.z.to_bits()],
+                pool: rad.pool.as_ptr() as usize,
+                start: start as u32,
+                count: count as u32,
+            });
+        if let Some(key) = sky {
+            ctx.rad_sky.frame(key);
+        }
         let (t1, t2) = frame(n);
         let ray_path = path.gathering(level);
         let mut sum = DVec3::ZERO;
         let mut inv_dist = 0.0;
-        // Deeper samples shoot half as many rays per level (measured: povray's statistics
-        // for cornell.pov, 200 rays at depth 0 and about 100 below).
-        let count = (set.count >> (level - 1).min(31)).max(1) as usize;
         for i in 0..count {
             let (x, y) = rad.pool[(start + i) % rad.pool.len()];
             let z = (1.0 - x * x - y * y).max(0.0).sqrt();
             let dir = t1 * x + t2 * y + n * z;
             let share = i as f64 / count as f64;
-            let (mut c, t) = self.trace_gather(&Ray::new(p, dir), ray_path, share, ctx);
+            let sky = sky.as_ref().map(|k| (k, i));
+            let (mut c, t) = self.trace_gather(&Ray::new(p, dir), ray_path, share, sky, ctx);
             if set.max_sample > 0.0 {
                 let m = c.max_element();
                 if m > set.max_sample {

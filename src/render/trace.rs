@@ -11,6 +11,7 @@ use crate::scene::build::Scene;
 use crate::scene::desc::{Interior, Texture};
 use crate::scene::object::{Scratch, SurfaceHit};
 pub use crate::scene::scratch::LitBy;
+use crate::scene::scratch::SkyKey;
 
 use super::camera::Camera;
 use super::layers::{single_plain, HitView, LayerSum, Layered};
@@ -361,11 +362,16 @@ impl<'a> Tracer<'a> {
     /// `share`: the ray's place in its sample's sequence (index / count). An object of
     /// `radiosity { importance I }` is followed only by the first I of the sequence, which
     /// count 1/I times to make up for the others (manual 3.4.4.3.4.1).
+    ///
+    /// `sky`: the ray's frame and place in it, where the background it may reach is
+    /// remembered (`SkyMemo`).
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn trace_gather(
         &self,
         ray: &Ray,
         path: Path<'a>,
         share: f64,
+        sky: Option<(&SkyKey, usize)>,
         ctx: &mut TraceCtx<'a>,
     ) -> (DVec3, f64) {
         ctx.rays += 1;
@@ -383,7 +389,17 @@ impl<'a> Tracer<'a> {
                 (s, h.t)
             }
             Some(h) => (self.shade_blended(ray, &h, path, ctx), h.t),
-            None => (self.background(ray.dir, false), f64::INFINITY),
+            None => {
+                let bg = || {
+                    let s = self.background(ray.dir, false);
+                    (s.rgb, s.clear)
+                };
+                let (rgb, clear) = match sky {
+                    Some((key, i)) => ctx.rad_sky.seen(key, i, bg),
+                    None => bg(),
+                };
+                (Seen { rgb, clear }, f64::INFINITY)
+            }
         };
         let seen = if self.scene.fogs.is_empty() {
             seen

@@ -58,6 +58,8 @@ pub struct Scratch<'a> {
     pub rad_memo: RadiosityMemo,
     /// The cells this thread's last probe lookup (a pretrace camera ray's) read, per scale.
     pub rad_probe: ProbeMemo,
+    /// The background radiosity's gathering rays met, by their sample's frame of directions.
+    pub rad_sky: SkyMemo,
     /// Photons found around the point being shaded: (squared distance, index).
     pub photon_found: Vec<(f32, u32)>,
     /// The media lists along the ray stretch being sampled (render::media).
@@ -206,4 +208,108 @@ pub struct MemoCell {
     pub floors: [f64; 3],
     pub epoch: u64,
     pub at: (u32, u32),
+}
+
+/// What fixes the directions of a radiosity sample's gathering rays (render::radiosity's
+/// `gather`): its normal's bits, the direction pool (its address), the first ray's place in
+/// the pool and the number of rays. Ray i of two samples with one key has the same direction,
+/// to the bit.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub struct SkyKey {
+    pub n: [u64; 3],
+    pub pool: usize,
+    pub start: u32,
+    pub count: u32,
+}
+
+/// The background's colour (and clear share) along the gathering rays of the last few
+/// frames of directions (`SkyKey`), newest first: every sample facing one normal shoots the
+/// same directions, so a floor's samples see the same sky along the rays that miss
+/// everything, and the sky's colour depends on the direction alone (a sky that may read the
+/// surface, `slope` or `aoi`, is not remembered: the caller's test).
+#[derive(Default)]
+pub struct SkyMemo {
+    frames: Vec<SkyFrame>,
+}
+
+struct SkyFrame {
+    key: SkyKey,
+    seen: Vec<Option<(DVec3, f64)>>,
+}
+
+/// Frames kept: a floor's and those of the faces its neighbours' samples lie on.
+const SKY_FRAMES: usize = 8;
+
+impl SkyMemo {
+    /// Makes `key`'s frame the newest; a frame not kept starts with nothing seen.
+    pub fn frame(&mut self, key: SkyKey) {
+        if let Some(i) = self.frames.iter().position(|f| f.key == key) {
+            self.frames[..=i].rotate_right(1);
+            return;
+        }
+        let mut f = if self.frames.len() < SKY_FRAMES {
+            SkyFrame {
+                key,
+                seen: Vec::new(),
+            }
+        } else {
+            self.frames.pop().expect("SKY_FRAMES frames")
+        };
+        f.key = key;
+        f.seen.clear();
+        f.seen.resize(key.count as usize, None);
+        self.frames.insert(0, f);
+    }
+
+    /// What ray `i` of `key`'s frame sees of the background: remembered, or `f`'s answer
+    /// (kept while the frame is; a deeper sample gathered meanwhile may have dropped it).
+    #[inline]
+    pub fn seen(
+        &mut self,
+        key: &SkyKey,
+        i: usize,
+        f: impl FnOnce() -> (DVec3, f64),
+    ) -> (DVec3, f64) {
+        match self.frames.iter_mut().find(|fr| fr.key == *key) {
+            Some(fr) => *fr.seen[i].get_or_insert_with(f),
+            None => f(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn key(k: u64) -> SkyKey {
+        SkyKey {
+            n: [k, 0, 0],
+            pool: 0,
+            start: 0,
+            count: 3,
+        }
+    }
+
+    #[test]
+    fn a_sky_memo_answers_what_it_was_told_while_the_frame_is_kept() {
+        let mut m = SkyMemo::default();
+        let c = |v: f64| (DVec3::splat(v), v);
+        m.frame(key(1));
+        assert_eq!(m.seen(&key(1), 0, || c(1.0)), c(1.0));
+        // Remembered: the closure is not asked again.
+        assert_eq!(m.seen(&key(1), 0, || c(9.0)), c(1.0));
+        // A frame not made newest (a deeper sample's, dropped meanwhile) is asked every time.
+        assert_eq!(m.seen(&key(2), 0, || c(2.0)), c(2.0));
+        assert_eq!(m.seen(&key(2), 0, || c(3.0)), c(3.0));
+        // Frames beyond the kept number push the oldest out; the first is then empty again.
+        for k in 2..=SKY_FRAMES as u64 + 1 {
+            m.frame(key(k));
+        }
+        m.frame(key(1));
+        assert_eq!(m.seen(&key(1), 0, || c(4.0)), c(4.0));
+        m.frame(key(100));
+        m.frame(key(2));
+        assert_eq!(m.seen(&key(1), 0, || c(5.0)), c(4.0));
+        assert_eq!(m.frames.len(), SKY_FRAMES);
+    }
 }
