@@ -5,6 +5,7 @@
 
 mod aa;
 mod aa1;
+mod background;
 pub mod band;
 pub mod camera;
 mod cell_list;
