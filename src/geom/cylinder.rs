@@ -199,15 +199,10 @@ mod tests {
             ),
             Cylinder::new(DVec3::ZERO, DVec3::ZERO, 1.0, false),
         ];
-        // A small deterministic generator: origins and directions over a box, axis-aligned
-        // and rim-grazing rays among them (equal side and cap t).
-        let mut x = 0x2545_f491_4f6c_dd1du64;
-        let mut next = move || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            (x >> 11) as f64 / (1u64 << 53) as f64 * 8.0 - 4.0
-        };
+        // Origins and directions over a box, axis-aligned and rim-grazing rays among them
+        // (equal side and cap t).
+        let mut rng = crate::geom::test_rng::Lcg(0x2545_f491_4f6c_dd1d);
+        let mut next = move || rng.next() * 8.0 - 4.0;
         let mut rays = vec![
             Ray::new(DVec3::new(1.0, 5.0, 0.0), DVec3::NEG_Y),
             Ray::new(DVec3::new(-5.0, 2.0, 0.0), DVec3::X),

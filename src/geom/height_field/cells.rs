@@ -296,14 +296,10 @@ impl HeightField {
 mod tests {
     use super::super::{HeightData, Walk};
     use super::*;
-    use crate::geom::Hit;
     use crate::math::{DVec3, Ray};
     use std::sync::Arc;
 
-    fn bits(hits: &[Hit]) -> Vec<(u64, u32, u64, u64)> {
-        let b = |h: &Hit| (h.t.to_bits(), h.part, h.uv[0].to_bits(), h.uv[1].to_bits());
-        hits.iter().map(b).collect()
-    }
+    use super::super::walk::tests::bits;
 
     /// The cell walk against the pyramid walk, bit for bit and in order: grids whose sides are
     /// not powers of two, with water and flat steps (edge ties); rays from anywhere, from grid

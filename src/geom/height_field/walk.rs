@@ -253,7 +253,7 @@ impl HeightField {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::super::{HeightData, Walk};
     use super::*;
     use crate::geom::Hit;
@@ -261,7 +261,7 @@ mod tests {
     use std::sync::Arc;
 
     /// The hits as bits: the walks must agree on every crossing exactly, in order.
-    fn bits(hits: &[Hit]) -> Vec<(u64, u32, u64, u64)> {
+    pub(in crate::geom::height_field) fn bits(hits: &[Hit]) -> Vec<(u64, u32, u64, u64)> {
         let b = |h: &Hit| (h.t.to_bits(), h.part, h.uv[0].to_bits(), h.uv[1].to_bits());
         hits.iter().map(b).collect()
     }
