@@ -357,7 +357,10 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
     } else {
         Vec::new()
     };
-    let mut hits: Vec<Hit> = Vec::new();
+    // Room for a crossing per pixel from the start: grown by doubling, the buffer's copies
+    // faulted in their pages again (`memmove` 14 % of radiosity2's faults). Pages never
+    // written are never touched.
+    let mut hits: Vec<Hit> = Vec::with_capacity(hit_at.len());
     let rays = AtomicU64::new(0);
     let kept = Mutex::new(Vec::new());
     // A run's results (`RUN`), and a phase's new samples until the phase is done.
@@ -374,6 +377,7 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
             set.error_bound.max(bound)
         }
     };
+    let mut positions: Vec<(usize, usize)> = Vec::new();
     for (pass, block) in blocks.into_iter().chain(finishing).enumerate() {
         let pretrace = pass < pretrace_passes;
         let last = fold && pass + 1 == passes;
@@ -394,10 +398,12 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
         // 4579, povray takes 3463).
         for phase in PHASES {
             let lit = last;
-            let positions: Vec<(usize, usize)> = (0..nx * ny)
-                .map(|i| (i % nx, i / nx))
-                .filter(|&(ix, iy)| phase == (ix % 2, iy % 2))
-                .collect();
+            // The phase's positions in row order, stepped by parity (a division and a
+            // filter per position were ~12 % of `pretrace`'s own samples), into one buffer.
+            positions.clear();
+            for iy in (phase.1..ny).step_by(2) {
+                positions.extend((phase.0..nx).step_by(2).map(|ix| (ix, iy)));
+            }
             let before = cache.samples.len();
             {
                 let tracer = Tracer {
