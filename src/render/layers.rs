@@ -12,6 +12,7 @@ use crate::math::{DVec3, Transform};
 use crate::scene::desc::{PigmentKind, Reflection, Texture};
 use crate::scene::object::Object;
 
+use super::lighting::{SpecMemo, SPEC_MEMO_START};
 use super::trace::{fresnel, reflect, Path, TraceCtx, Tracer};
 use super::{normal, texture_map};
 
@@ -52,6 +53,8 @@ pub(super) struct LayerSum {
     irr: Option<DVec3>,
     /// The current layer's colour, its parts' weighted sum.
     layer_c: [f64; 5],
+    /// The layers' highlight powers per light (`lighting::SpecMemo`).
+    spec: SpecMemo,
 }
 
 impl LayerSum {
@@ -61,6 +64,7 @@ impl LayerSum {
             bent: smallvec::SmallVec::new(),
             irr: None,
             layer_c: [0.0; 5],
+            spec: SPEC_MEMO_START,
         }
     }
 }
@@ -208,7 +212,7 @@ impl<'a> Tracer<'a> {
                     Some(_) if fin.diffuse <= 0.0 => Some(DVec3::ZERO),
                     Some(_) => Some(self.irradiance(hv.p, hv.nf, hv.path, ctx)),
                 };
-                self.layer_light(c, fin, hv.p, hv.dir, hv.nf, hv.mirror, indirect, ctx)
+                self.layer_light(c, fin, hv.p, hv.dir, hv.nf, hv.mirror, indirect, ctx, None)
             }
         };
         let col = DVec3::ZERO + through * w * light;
@@ -318,8 +322,18 @@ impl<'a> Tracer<'a> {
                     .get_or_insert_with(|| self.irradiance(hv.p, nf, hv.path, ctx)),
             ),
         };
-        sum.out.col +=
-            sum.out.through * w * self.layer_light(&c, fin, hv.p, dir, pn, pmirror, indirect, ctx);
+        let light = self.layer_light(
+            &c,
+            fin,
+            hv.p,
+            dir,
+            pn,
+            pmirror,
+            indirect,
+            ctx,
+            Some(&mut sum.spec),
+        );
+        sum.out.col += sum.out.through * w * light;
         let refl = &fin.reflection;
         if !refl.is_zero() && self.quality.reflection {
             sum.out.refl_power = refl.power().or(sum.out.refl_power);

@@ -158,6 +158,7 @@ impl<'a> Tracer<'a> {
         mirror: DVec3,
         indirect: Option<DVec3>,
         ctx: &TraceCtx<'a>,
+        memo: Option<&mut SpecMemo>,
     ) -> DVec3 {
         let mut col = self.own_light(c, fin, indirect);
         if ctx.lit.is_empty() {
@@ -165,9 +166,9 @@ impl<'a> Tracer<'a> {
         }
         let f = Factors::new(c, fin, p, dir, nf, mirror);
         if f.plain() {
-            lights_add::<true>(&f, &ctx.lit, &mut col);
+            lights_add::<true>(&f, &ctx.lit, &mut col, memo);
         } else {
-            lights_add::<false>(&f, &ctx.lit, &mut col);
+            lights_add::<false>(&f, &ctx.lit, &mut col, memo);
         }
         col
     }
@@ -204,7 +205,7 @@ impl<'a> Tracer<'a> {
                 gathering,
                 ctx,
                 #[inline(always)]
-                |_, lb| light_add::<true>(&f, &lb, lb.cos_n, &mut col),
+                |_, lb| light_add::<true>(&f, &lb, lb.cos_n, &mut col, None),
             );
         } else {
             self.gather_each(
@@ -215,7 +216,7 @@ impl<'a> Tracer<'a> {
                 gathering,
                 ctx,
                 #[inline(always)]
-                |_, lb| light_add::<false>(&f, &lb, lb.cos_n, &mut col),
+                |_, lb| light_add::<false>(&f, &lb, lb.cos_n, &mut col, None),
             );
         }
         col
@@ -319,17 +320,71 @@ impl<'f> Factors<'f> {
 /// Each gathered light's diffuse and highlight terms of one layer, added to `col`. `PLAIN`:
 /// the finish has no irid, no crand, no metallic highlight and brilliance 1 (the caller
 /// checked), so those branches are compiled out; the arithmetic is the same either way.
+/// `memo`: the layer loop's highlight powers, one slot per light of the first
+/// `SPEC_MEMO_LIGHTS`, shared by the hit's layers.
 #[inline(always)]
-fn lights_add<const PLAIN: bool>(f: &Factors, lit: &[LitBy], col: &mut DVec3) {
-    for lb in lit {
-        light_add::<PLAIN>(f, lb, f.nf.dot(lb.l), col);
+fn lights_add<const PLAIN: bool>(
+    f: &Factors,
+    lit: &[LitBy],
+    col: &mut DVec3,
+    memo: Option<&mut SpecMemo>,
+) {
+    match memo {
+        None => {
+            for lb in lit {
+                light_add::<PLAIN>(f, lb, f.nf.dot(lb.l), col, None);
+            }
+        }
+        Some(m) => {
+            let mut slots = m.iter_mut();
+            for lb in lit {
+                light_add::<PLAIN>(f, lb, f.nf.dot(lb.l), col, slots.next());
+            }
+        }
+    }
+}
+
+/// How many lights of a hit have a slot in `SpecMemo`.
+pub(super) const SPEC_MEMO_LIGHTS: usize = 4;
+
+/// Per light: the last highlight cosine and exponent (their bits) and the cosine raised
+/// to that exponent. The layers of one hit under the same finish and an unperturbed
+/// normal raise the same cosine to the same power once per layer; `powf` is a function of
+/// its arguments' bits, so the answer kept is the answer it would give again. The start's
+/// cosine 0 is never looked up (only cosines above 0 are raised).
+pub(super) type SpecMemo = [[u64; 3]; SPEC_MEMO_LIGHTS];
+
+/// A memo with no power kept.
+pub(super) const SPEC_MEMO_START: SpecMemo = [[0; 3]; SPEC_MEMO_LIGHTS];
+
+/// `cos_h.powf(exp)`, through `slot` when there is one.
+#[inline(always)]
+fn spec_power(cos_h: f64, exp: f64, slot: Option<&mut [u64; 3]>) -> f64 {
+    match slot {
+        None => cos_h.powf(exp),
+        Some(s) => {
+            let key = [cos_h.to_bits(), exp.to_bits()];
+            if s[0] == key[0] && s[1] == key[1] {
+                f64::from_bits(s[2])
+            } else {
+                let v = cos_h.powf(exp);
+                *s = [key[0], key[1], v.to_bits()];
+                v
+            }
+        }
     }
 }
 
 /// One light's diffuse and highlight terms (`lights_add`); `cos_n` is `nf·l`, which the
 /// caller may have at hand.
 #[inline(always)]
-fn light_add<const PLAIN: bool>(f: &Factors, lb: &LitBy, cos_n: f64, col: &mut DVec3) {
+fn light_add<const PLAIN: bool>(
+    f: &Factors,
+    lb: &LitBy,
+    cos_n: f64,
+    col: &mut DVec3,
+    slot: Option<&mut [u64; 3]>,
+) {
     let (fin, c, p, dir, nf) = (f.fin, f.c, f.p, f.dir, f.nf);
     let (lc, l) = (lb.color, lb.l);
     // Iridescence scales the light's diffuse and highlight terms alike (measured).
@@ -383,7 +438,7 @@ fn light_add<const PLAIN: bool>(f: &Factors, lb: &LitBy, cos_n: f64, col: &mut D
         let hv = (l - dir).normalize_or_zero();
         let cos_h = nf.dot(hv);
         if cos_h > 0.0 {
-            *col += lc_tint * (fin.specular * cos_h.powf(f.specular_exp));
+            *col += lc_tint * (fin.specular * spec_power(cos_h, f.specular_exp, slot));
         }
     }
 }
@@ -471,9 +526,24 @@ mod tests {
                 metallic: false,
             };
             let (mut plain, mut general) = (DVec3::splat(0.1), DVec3::splat(0.1));
-            lights_add::<true>(&f, &lit, &mut plain);
-            lights_add::<false>(&f, &lit, &mut general);
+            lights_add::<true>(&f, &lit, &mut plain, None);
+            lights_add::<false>(&f, &lit, &mut general, None);
             assert_eq!(bits(plain), bits(general), "case {case}");
+            // Through a memo: first filled, then read back (the same layer again), then
+            // after another exponent or normal has replaced some slots.
+            let mut memo = SPEC_MEMO_START;
+            for round in 0..3 {
+                let other = Factors {
+                    specular_exp: f.specular_exp * 1.5,
+                    nf: if case % 2 == 0 { -nf } else { nf },
+                    ..f
+                };
+                let g = if round == 1 { &other } else { &f };
+                let (mut memoed, mut plain) = (DVec3::splat(0.1), DVec3::splat(0.1));
+                lights_add::<true>(g, &lit, &mut memoed, Some(&mut memo));
+                lights_add::<true>(g, &lit, &mut plain, None);
+                assert_eq!(bits(memoed), bits(plain), "case {case} round {round}");
+            }
         }
     }
 }
