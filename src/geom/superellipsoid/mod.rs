@@ -122,19 +122,34 @@ fn around(table: &[f64; STEPS + 1], x: f64) -> Option<(f64, f64)> {
 }
 
 /// A point's field value, or only its sign when that is certain without the whole value.
+/// A struct of a float and a flag, not an enum: `crossings` copies the last sample's `Field`
+/// each step, and the enum's copy went through odd stack offsets whose 8-byte reload of the
+/// value could not be forwarded from the stores (a stall on every sample).
 #[derive(Clone, Copy)]
-enum Field {
-    Value(f64),
-    /// Whether the value is negative.
-    Sign(bool),
+struct Field {
+    /// The value when `exact`; otherwise -1 or 1, carrying only the sign.
+    v: f64,
+    exact: bool,
 }
 
 impl Field {
-    fn negative(self) -> bool {
-        match self {
-            Field::Value(v) => v < 0.0,
-            Field::Sign(neg) => neg,
+    #[inline(always)]
+    fn value(v: f64) -> Field {
+        Field { v, exact: true }
+    }
+
+    #[inline(always)]
+    fn sign(negative: bool) -> Field {
+        Field {
+            v: if negative { -1.0 } else { 1.0 },
+            exact: false,
         }
+    }
+
+    /// `v < 0.0` for a value (false for NaN, as before), the sign otherwise.
+    #[inline(always)]
+    fn negative(self) -> bool {
+        self.v < 0.0
     }
 }
 
@@ -190,7 +205,7 @@ impl Superellipsoid {
         // false here and goes on as before. The tables (`around`) leave such points to the
         // exact powers, two `pow` calls each.
         if m > 1.0 || z > 1.0 {
-            return Field::Sign(false);
+            return Field::sign(false);
         }
         if m <= 0.0 || m.is_nan() {
             return self.field_powers(p, m, 0.0);
@@ -204,10 +219,10 @@ impl Superellipsoid {
             around(&self.pow_c, z),
         ) {
             if mc0 * g0 + zc0 > 1.0 + 1e-9 {
-                return Field::Sign(false);
+                return Field::sign(false);
             }
             if mc1 * g1 + zc1 < 1.0 - 1e-9 {
-                return Field::Sign(true);
+                return Field::sign(true);
             }
         }
         self.field_powers(p, m, r)
@@ -218,19 +233,19 @@ impl Superellipsoid {
     #[inline(never)]
     fn field_powers(&self, p: DVec3, m: f64, r: f64) -> Field {
         if m <= 0.0 || m.is_nan() {
-            return Field::Value(self.value(p));
+            return Field::value(self.value(p));
         }
         let z = p.z.abs();
         let (mc, zc) = (self.c.of(m), self.c.of(z));
         // Margins far above the rounding of these few operations.
         if mc + zc > 1.0 + 1e-9 {
-            return Field::Sign(false);
+            return Field::sign(false);
         }
         if mc * self.top + zc < 1.0 - 1e-9 {
-            return Field::Sign(true);
+            return Field::sign(true);
         }
         let xy = mc * self.b.of(1.0 + self.a.of(r));
-        Field::Value(xy + zc - 1.0)
+        Field::value(xy + zc - 1.0)
     }
 
     /// Crossings as distances along the unit direction `u` from `o`, within `[0, hi]`,
@@ -282,10 +297,7 @@ impl Superellipsoid {
         let f = |s: f64| self.value(o + u * s);
         // Samples need only their sign; the two ends of a change of sign get their values
         // (as `value` gives them) for the refinement.
-        let exact = |s: f64, v: Field| match v {
-            Field::Value(v) => v,
-            Field::Sign(_) => f(s),
-        };
+        let exact = |s: f64, v: Field| if v.exact { v.v } else { f(s) };
         let (mut s0, mut f0) = (lo, self.field(o + u * lo));
         for w in cuts.windows(2) {
             let (a, b) = (w[0], w[1]);
@@ -308,7 +320,7 @@ impl Superellipsoid {
                             if last(root) {
                                 return None;
                             }
-                            f1 = Field::Value(v1);
+                            f1 = Field::value(v1);
                         }
                         Bracket::Pass => {}
                         Bracket::Answer(hit) => return Some(hit),
@@ -617,9 +629,11 @@ mod tests {
                         p
                     };
                     let v = s.value(p);
-                    match s.field(p) {
-                        Field::Value(f) => assert_eq!(f.to_bits(), v.to_bits(), "{e} {n} {p}"),
-                        Field::Sign(neg) => assert_eq!(neg, v < 0.0, "{e} {n} {p}"),
+                    let f = s.field(p);
+                    if f.exact {
+                        assert_eq!(f.v.to_bits(), v.to_bits(), "{e} {n} {p}");
+                    } else {
+                        assert_eq!(f.negative(), v < 0.0, "{e} {n} {p}");
                     }
                 }
             }
