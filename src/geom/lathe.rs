@@ -124,8 +124,9 @@ impl Lathe {
         let b = o.x * u.x + o.z * u.z;
         let c = o.x * o.x + o.z * o.z;
         let dy = u.y;
+        let inv = [1.0 / dy, 1.0 / a];
         for (i, pc) in self.pieces.iter().enumerate() {
-            if !Self::may_cross(pc, o, [a, b, c], dy, t_lo, t_hi) {
+            if !Self::may_cross(pc, o, [a, b, c], dy, inv, t_lo, t_hi) {
                 continue;
             }
             if dy.abs() >= FLAT {
@@ -143,7 +144,22 @@ impl Lathe {
     /// two more): each bound only raises `lo` or lowers `hi` (`max` and `min` are exact, and
     /// ignore NaN in any order), so a stretch already empty after the band stays empty, and
     /// the answer is the one the whole test gives.
-    fn may_cross(pc: &Piece, o: DVec3, [a, b, c]: [f64; 3], dy: f64, t_lo: f64, t_hi: f64) -> bool {
+    ///
+    /// `inv` is `[1 / dy, 1 / a]`, taken once per ray: the bounds are products by it rather
+    /// than four quotients per piece. A product differs from the quotient by at most an ulp of
+    /// bounds near the stretch (t of order one in the scaled problem), far inside the 1e-9
+    /// margin the stretch is allowed; an infinite reciprocal (`dy` or `a` subnormal) gives
+    /// NaN or infinite bounds, which `max` and `min` drop or keep as the quotients would.
+    #[allow(clippy::too_many_arguments)]
+    fn may_cross(
+        pc: &Piece,
+        o: DVec3,
+        [a, b, c]: [f64; 3],
+        dy: f64,
+        [inv_dy, inv_a]: [f64; 2],
+        t_lo: f64,
+        t_hi: f64,
+    ) -> bool {
         let r_max = pc.lo[0].abs().max(pc.hi[0].abs());
         let disc = b * b - a * (c - r_max * r_max);
         if disc < 0.0 && c > r_max * r_max {
@@ -151,7 +167,7 @@ impl Lathe {
         }
         let (mut lo, mut hi) = (t_lo, t_hi);
         if dy != 0.0 {
-            let (y0, y1) = ((pc.lo[1] - o.y) / dy, (pc.hi[1] - o.y) / dy);
+            let (y0, y1) = ((pc.lo[1] - o.y) * inv_dy, (pc.hi[1] - o.y) * inv_dy);
             lo = lo.max(y0.min(y1));
             hi = hi.min(y0.max(y1));
             if lo > hi + 1e-9 {
@@ -162,8 +178,8 @@ impl Lathe {
         }
         if a > 0.0 {
             let h = disc.max(0.0).sqrt();
-            lo = lo.max((-b - h) / a);
-            hi = hi.min((-b + h) / a);
+            lo = lo.max((-b - h) * inv_a);
+            hi = hi.min((-b + h) * inv_a);
         }
         // A degenerate ray leaves NaN bounds: nothing to find.
         !(lo.is_nan() || hi.is_nan() || lo > hi + 1e-9)
@@ -189,8 +205,9 @@ impl Lathe {
         let c = o.x * o.x + o.z * o.z;
         let dy = u.y;
         cand.clear();
+        let inv = [1.0 / dy, 1.0 / a];
         for (i, pc) in self.pieces.iter().enumerate() {
-            if Self::may_cross(pc, o, [a, b, c], dy, t_lo, t_hi) {
+            if Self::may_cross(pc, o, [a, b, c], dy, inv, t_lo, t_hi) {
                 let (y0, y1) = ((pc.lo[1] - o.y) / dy, (pc.hi[1] - o.y) / dy);
                 let t = y0.min(y1);
                 let floor =

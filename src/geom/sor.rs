@@ -172,11 +172,14 @@ impl Sor {
             }
         };
         let last = self.segments.len() - 1;
+        // The stretch's heights, to skip the segments wholly above or below them before the
+        // divisions that put their ends on the ray.
+        let (y_a, y_b) = (o.y, o.y + u.y * span);
+        let (y_bot, y_top) = (y_a.min(y_b), y_a.max(y_b));
         for (j, s) in self.segments.iter().enumerate() {
-            // Height as w = w0 + w1 t.
-            let (w0, w1) = ((o.y - s.y0) / s.dh, u.y / s.dh);
             let (mut t_lo, mut t_hi, mut f_lo, mut f_hi);
             if u.y == 0.0 {
+                let w0 = (o.y - s.y0) / s.dh;
                 if !(0.0..=1.0).contains(&w0) || (w0 == 1.0 && j != last) {
                     continue;
                 }
@@ -184,6 +187,13 @@ impl Sor {
                 f_lo = f64::NAN;
                 f_hi = f64::NAN;
             } else {
+                // Clear of the stretch by a margin far above the rounding of `y_top`, `y_bot`
+                // and of the ends' quotients below: both ends' `t` then lie on one side of
+                // [0, span], and the test after them would skip the segment all the same.
+                let m = 1e-9 * (y_top.abs() + y_bot.abs() + s.y0.abs() + s.dh);
+                if s.y0 > y_top + m || s.y0 + s.dh < y_bot - m {
+                    continue;
+                }
                 // Segment ends in t; their values come from the exact end radii.
                 let (ta, tb) = ((s.y0 - o.y) / u.y, (s.y0 + s.dh - o.y) / u.y);
                 let (fa, fb) = (s.v[0] - q(ta), s.v[1] - q(tb));
@@ -193,7 +203,19 @@ impl Sor {
                     (tb, fb, ta, fa)
                 };
             }
-            // f(w(t)) − q(t) as a polynomial in t.
+            if t_lo < 0.0 {
+                (t_lo, f_lo) = (0.0, f64::NAN);
+            }
+            if t_hi > span {
+                (t_hi, f_hi) = (span, f64::NAN);
+            }
+            if t_lo > t_hi {
+                continue;
+            }
+            // f(w(t)) − q(t) as a polynomial in t, the height as w = w0 + w1 t: divided and
+            // expanded only once the stretch is known to meet the segment's band (most
+            // segments a ray passes are skipped above).
+            let (w0, w1) = ((o.y - s.y0) / s.dh, u.y / s.dh);
             let mut p = [0.0; 4];
             let mut pw = [1.0, 0.0, 0.0, 0.0];
             for k in 0..4 {
@@ -213,15 +235,6 @@ impl Sor {
             p[0] -= c;
             p[1] -= 2.0 * b;
             p[2] -= a;
-            if t_lo < 0.0 {
-                (t_lo, f_lo) = (0.0, f64::NAN);
-            }
-            if t_hi > span {
-                (t_hi, f_hi) = (span, f64::NAN);
-            }
-            if t_lo > t_hi {
-                continue;
-            }
             let f_lo = if f_lo.is_nan() { eval(&p, t_lo) } else { f_lo };
             let f_hi = if f_hi.is_nan() { eval(&p, t_hi) } else { f_hi };
             sign_changes(&p, t_lo, t_hi, f_lo, f_hi, |t| push(t, j as u32));
