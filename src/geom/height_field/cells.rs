@@ -47,7 +47,15 @@ impl Axis {
     /// The distance to face `b`, as `visit_body` finds it.
     #[inline(always)]
     fn face(&self, b: usize) -> f64 {
-        (b as f64 - self.o) * self.inv
+        // Through i64: one conversion instruction (a face index is far below 2^53, so the
+        // same value as `b as f64`, whose unsigned conversion takes five).
+        (b as i64 as f64 - self.o) * self.inv
+    }
+
+    /// The exit distance of cell `k` (`span(k, 0).1`: `k + 1` is within the grid).
+    #[inline(always)]
+    fn cell_exit(&self, k: usize) -> f64 {
+        self.face(if self.fwd { k + 1 } else { k })
     }
 
     /// The entry and exit distances of span `k` of cells `2^l` wide (clamped to the grid).
@@ -278,13 +286,14 @@ impl HeightField {
                     Some(k) if (ia..ib).contains(&k) => k,
                     _ => return Some(false),
                 };
-                (xe, xx) = ax.span(i, 0);
+                // The cell's entry face is the exit face of the one before: the same value.
+                (xe, xx) = (xx, ax.cell_exit(i));
             } else {
                 j = match az.next(j, nz) {
                     Some(k) if (ja..jb).contains(&k) => k,
                     _ => return Some(false),
                 };
-                (ze, zx) = az.span(j, 0);
+                (ze, zx) = (zx, az.cell_exit(j));
             }
             debug_assert!(xe <= exit && ze <= exit);
             key = exit;

@@ -391,7 +391,8 @@ impl HeightField {
         let d = &self.data;
         let (h00, h10, h01, h11) = (d.h(i, j), d.h(i + 1, j), d.h(i, j + 1), d.h(i + 1, j + 1));
         // Local cell coordinates u = x - i, v = z - j along the ray.
-        let (ou, ov) = (r.o.x - i as f64, r.o.z - j as f64);
+        // Through i64: one conversion instruction, the same value (see `cells::Axis::face`).
+        let (ou, ov) = (r.o.x - i as i64 as f64, r.o.z - j as i64 as f64);
         const TOL: f64 = 1e-9;
         for tri in 0..2u32 {
             // Height as a + b u + c v over the triangle.
