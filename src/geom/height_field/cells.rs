@@ -47,7 +47,15 @@ impl Axis {
     /// The distance to face `b`, as `visit_body` finds it.
     #[inline(always)]
     fn face(&self, b: usize) -> f64 {
-        (b as f64 - self.o) * self.inv
+        // Through i64: one conversion instruction (a face index is far below 2^53, so the
+        // same value as `b as f64`, whose unsigned conversion takes five).
+        (b as i64 as f64 - self.o) * self.inv
+    }
+
+    /// The exit distance of cell `k` (`span(k, 0).1`: `k + 1` is within the grid).
+    #[inline(always)]
+    fn cell_exit(&self, k: usize) -> f64 {
+        self.face(if self.fwd { k + 1 } else { k })
     }
 
     /// The entry and exit distances of span `k` of cells `2^l` wide (clamped to the grid).
@@ -59,6 +67,16 @@ impl Axis {
         } else {
             (self.face(b), self.face(a))
         }
+    }
+
+    /// The exit distance of span `k` of cells `2^l` wide (`span(k, l).1`).
+    #[inline(always)]
+    fn exit(&self, k: usize, l: usize) -> f64 {
+        self.face(if self.fwd {
+            ((k + 1) << l).min(self.n)
+        } else {
+            k << l
+        })
     }
 
     /// The span after `k` along the ray among `n`, if any.
@@ -163,8 +181,8 @@ impl HeightField {
         let tmax0 = r.tmax;
         // The axis the walk entered the current block by (none for the first).
         let mut by: Option<bool> = None;
+        let ((mut bxe, mut bxx), (mut bze, mut bzx)) = (ax.span(bi, lb), az.span(bj, lb));
         loop {
-            let ((bxe, bxx), (bze, bzx)) = (ax.span(bi, lb), az.span(bj, lb));
             // `visit_body`'s key and exit of the block.
             let k = if bxe > 0.0 { bxe } else { 0.0 };
             let bkey = if bze > k { bze } else { k };
@@ -173,7 +191,8 @@ impl HeightField {
             }
             let bexit = fmin::<true>(bxx, bzx);
             if self.reaches_signed(r, s, lv.range(bi, bj), bkey, bexit) {
-                match self.block_cells(r, s, (ax, az), (bi, bj), lb, by, t0, ystop) {
+                let entry = (by, if by == Some(true) { bxe } else { bze });
+                match self.block_cells(r, s, (ax, az), (bi, bj), lb, entry, t0, ystop) {
                     Some(true) => return true,
                     Some(false) => {}
                     None => {
@@ -196,18 +215,23 @@ impl HeightField {
                     return true;
                 };
                 (bi, by) = (k, Some(true));
+                // The block's entry face is the exit face of the one before (`k` is within
+                // the grid, so the clamp left that face alone): the same value.
+                (bxe, bxx) = (bxx, ax.exit(bi, lb));
             } else {
                 let Some(k) = az.next(bj, nbz) else {
                     return true;
                 };
                 (bj, by) = (k, Some(false));
+                (bze, bzx) = (bzx, az.exit(bj, lb));
             }
         }
     }
 
     /// The cells of block (bi, bj) at level `lb` along the ray, from its entry (by x if `by`
-    /// is `Some(true)`, by z if `Some(false)`) or from `t0` in the walk's first block: Some(true)
-    /// when the walk is over, Some(false) when the ray left the block, None when it gave up.
+    /// is `Some(true)`, by z if `Some(false)`, at distance `entry`, the block's face) or from
+    /// `t0` in the walk's first block: Some(true) when the walk is over, Some(false) when the
+    /// ray left the block, None when it gave up.
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn block_cells(
@@ -217,7 +241,7 @@ impl HeightField {
         (ax, az): (Axis, Axis),
         (bi, bj): (usize, usize),
         lb: usize,
-        by: Option<bool>,
+        (by, entry): (Option<bool>, f64),
         t0: f64,
         ystop: f64,
     ) -> Option<bool> {
@@ -229,14 +253,8 @@ impl HeightField {
         let (ja, jb) = (bj << lb, ((bj + 1) << lb).min(nz));
         let (mut i, mut j) = match by {
             None => (ax.locate(t0, 0, nx)?, az.locate(t0, 0, nz)?),
-            Some(true) => (
-                if ax.fwd { ia } else { ib - 1 },
-                az.locate(ax.span(bi, lb).0, 0, nz)?,
-            ),
-            Some(false) => (
-                ax.locate(az.span(bj, lb).0, 0, nx)?,
-                if az.fwd { ja } else { jb - 1 },
-            ),
+            Some(true) => (if ax.fwd { ia } else { ib - 1 }, az.locate(entry, 0, nz)?),
+            Some(false) => (ax.locate(entry, 0, nx)?, if az.fwd { ja } else { jb - 1 }),
         };
         let (mut xe, mut xx) = ax.span(i, 0);
         let (mut ze, mut zx) = az.span(j, 0);
@@ -278,13 +296,14 @@ impl HeightField {
                     Some(k) if (ia..ib).contains(&k) => k,
                     _ => return Some(false),
                 };
-                (xe, xx) = ax.span(i, 0);
+                // The cell's entry face is the exit face of the one before: the same value.
+                (xe, xx) = (xx, ax.cell_exit(i));
             } else {
                 j = match az.next(j, nz) {
                     Some(k) if (ja..jb).contains(&k) => k,
                     _ => return Some(false),
                 };
-                (ze, zx) = az.span(j, 0);
+                (ze, zx) = (zx, az.cell_exit(j));
             }
             debug_assert!(xe <= exit && ze <= exit);
             key = exit;

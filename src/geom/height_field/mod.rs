@@ -48,10 +48,24 @@ pub struct HeightData {
     /// anew for every call (advanced/landscape places 256 trees on a 500×500 field). It
     /// depends only on the grid, which is not changed once a shape uses it.
     pyramid: std::sync::OnceLock<std::sync::Arc<[Level]>>,
-    /// Every vertex's `vertex_normal` (whole numbers within ±32767, so kept exactly as
-    /// 16-bit integers), made on the first smooth normal asked for: a hit mixes four of them,
-    /// each the sum of four normalised cross products.
-    normals: std::sync::OnceLock<Box<[[i16; 3]]>>,
+    /// Every vertex's corner normal, made on the first smooth normal asked for: a hit mixes
+    /// four of them (see `CornerNormals`).
+    normals: std::sync::OnceLock<CornerNormals>,
+}
+
+/// The grids up to this many vertices keep their corner normals in object units (24 bytes a
+/// vertex: 24 MB at most); larger ones keep `vertex_normal`'s 6 bytes and take each corner to
+/// object units per hit.
+const UNIT_NORMALS_MAX: usize = 1 << 20;
+
+/// Every vertex's `vertex_normal`, each the sum of four normalised cross products.
+#[derive(Clone, Debug)]
+enum CornerNormals {
+    /// Taken to object units and normalised as a hit would (`HeightField::corner_unit`), the
+    /// same bits made once: a hit saves four square roots and divisions.
+    Unit(Box<[DVec3]>),
+    /// As made: whole numbers within ±32767, so kept exactly as 16-bit integers.
+    Grid(Box<[[i16; 3]]>),
 }
 
 impl HeightData {
@@ -377,7 +391,8 @@ impl HeightField {
         let d = &self.data;
         let (h00, h10, h01, h11) = (d.h(i, j), d.h(i + 1, j), d.h(i, j + 1), d.h(i + 1, j + 1));
         // Local cell coordinates u = x - i, v = z - j along the ray.
-        let (ou, ov) = (r.o.x - i as f64, r.o.z - j as f64);
+        // Through i64: one conversion instruction, the same value (see `cells::Axis::face`).
+        let (ou, ov) = (r.o.x - i as i64 as f64, r.o.z - j as i64 as f64);
         const TOL: f64 = 1e-9;
         for tri in 0..2u32 {
             // Height as a + b u + c v over the triangle.
@@ -484,6 +499,29 @@ impl HeightField {
         }
     }
 
+    /// Every vertex's corner normal, made on the first call.
+    fn corner_normals(&self) -> &CornerNormals {
+        let d = &self.data;
+        d.normals.get_or_init(|| {
+            let grid = (0..d.depth)
+                .flat_map(|j| (0..d.width).map(move |i| (i, j)))
+                .map(|(i, j)| self.vertex_normal(i, j).to_array().map(|c| c as i16));
+            if d.width * d.depth <= UNIT_NORMALS_MAX {
+                CornerNormals::Unit(grid.map(|n| self.corner_unit(n)).collect())
+            } else {
+                CornerNormals::Grid(grid.collect())
+            }
+        })
+    }
+
+    /// A vertex's `vertex_normal` (as kept) in object units, normalised.
+    #[inline(always)]
+    fn corner_unit(&self, n: [i16; 3]) -> DVec3 {
+        let (cx, cz) = self.cells();
+        let n = n.map(f64::from);
+        DVec3::new(n[0] * cx, n[1] * 65536.0, n[2] * cz).normalize_or_zero()
+    }
+
     /// The normal at vertex (i, j) as povray keeps it: in grid units (one per grid step, heights
     /// in 16-bit steps), the sum of the unit normals of the four triangles the vertex makes
     /// with its neighbours along x and z, normalised and truncated to 16-bit integers. Both
@@ -524,6 +562,19 @@ impl HeightField {
 #[inline(always)]
 fn slack_ok<const PLAIN: bool>(t0: f64, t1: f64) -> bool {
     t0 <= t1 + 1e-9 * fmax::<PLAIN>(t1.abs(), 1.0)
+}
+
+/// The corner normals of cell (i, j) mixed bilinearly at (u, v) within it.
+#[inline(always)]
+fn mix(
+    (i, j): (usize, usize),
+    (u, v): (f64, f64),
+    corner: impl Fn(usize, usize) -> DVec3,
+) -> DVec3 {
+    corner(i, j) * ((1.0 - u) * (1.0 - v))
+        + corner(i + 1, j) * (u * (1.0 - v))
+        + corner(i, j + 1) * ((1.0 - u) * v)
+        + corner(i + 1, j + 1) * (u * v)
 }
 
 /// `f64::min`, or with `PLAIN` one comparison: the same for numbers that are not NaN, but
@@ -601,20 +652,12 @@ impl Shape for HeightField {
             // (not by the triangle's barycentric weights): povray's trace() answers match this
             // exactly inside cells of a random grid.
             let [u, v] = hit.uv;
-            let normals = d.normals.get_or_init(|| {
-                (0..d.depth)
-                    .flat_map(|j| (0..d.width).map(move |i| (i, j)))
-                    .map(|(i, j)| self.vertex_normal(i, j).to_array().map(|c| c as i16))
-                    .collect()
-            });
-            let corner = |a: usize, b: usize| {
-                let n = normals[b * d.width + a].map(f64::from);
-                DVec3::new(n[0] * cx, n[1] * 65536.0, n[2] * cz).normalize_or_zero()
+            let n = match self.corner_normals() {
+                CornerNormals::Unit(n) => mix((i, j), (u, v), |a, b| n[b * d.width + a]),
+                CornerNormals::Grid(n) => {
+                    mix((i, j), (u, v), |a, b| self.corner_unit(n[b * d.width + a]))
+                }
             };
-            let n = corner(i, j) * ((1.0 - u) * (1.0 - v))
-                + corner(i + 1, j) * (u * (1.0 - v))
-                + corner(i, j + 1) * ((1.0 - u) * v)
-                + corner(i + 1, j + 1) * (u * v);
             if n != DVec3::ZERO {
                 return n;
             }

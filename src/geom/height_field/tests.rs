@@ -146,12 +146,52 @@ fn cached_vertex_normals_are_exact() {
         .intersect_first(&r, f64::INFINITY, &mut Vec::new())
         .unwrap();
     hf.normal(r.at(h.t), &h);
-    let cache = hf.data.normals.get().unwrap();
+    let CornerNormals::Unit(cache) = hf.data.normals.get().unwrap() else {
+        panic!("a small grid keeps its normals in object units");
+    };
     for j in 0..17 {
         for i in 0..23 {
-            let c = cache[j * 23 + i].map(f64::from);
-            assert_eq!(DVec3::from_array(c), hf.vertex_normal(i, j), "{i} {j}");
+            let n = hf.vertex_normal(i, j).to_array();
+            // Whole numbers within ±32767: `i16` keeps them exactly.
+            let grid = n.map(|c| c as i16);
+            assert_eq!(grid.map(f64::from), n, "{i} {j}");
+            let unit = hf.corner_unit(grid).to_array().map(f64::to_bits);
+            assert_eq!(
+                cache[j * 23 + i].to_array().map(f64::to_bits),
+                unit,
+                "{i} {j}"
+            );
         }
+    }
+    // A large grid's 16-bit normals, taken to object units per hit, give the same bits.
+    let mut data = (*hf.data).clone();
+    data.normals = std::sync::OnceLock::from(CornerNormals::Grid(
+        (0..17 * 23)
+            .map(|k| {
+                hf.vertex_normal(k % 23, k / 23)
+                    .to_array()
+                    .map(|c| c as i16)
+            })
+            .collect(),
+    ));
+    let big = HeightField::new(Arc::new(data));
+    let mut rng = crate::geom::test_rng::Lcg(7);
+    for _ in 0..2000 {
+        let o = DVec3::new(rng.next(), 5.0, rng.next());
+        let r = Ray::new(o, DVec3::new(rng.next() - 0.5, -1.0, rng.next() - 0.5));
+        let (a, b) = (&mut Vec::new(), &mut Vec::new());
+        let (Some(h), Some(g)) = (
+            hf.intersect_first(&r, f64::INFINITY, a),
+            big.intersect_first(&r, f64::INFINITY, b),
+        ) else {
+            continue;
+        };
+        let (n, m) = (hf.normal(r.at(h.t), &h), big.normal(r.at(g.t), &g));
+        assert_eq!(
+            n.to_array().map(f64::to_bits),
+            m.to_array().map(f64::to_bits),
+            "{r:?}"
+        );
     }
 }
 
