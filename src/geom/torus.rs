@@ -16,7 +16,7 @@ use crate::geom::poly::{
     first_root_with_unchecked, roots_in, roots_in_isolated, sturm_roots_in, Roots,
 };
 use crate::geom::{Hit, Shape};
-use crate::math::{Aabb, DVec3, Ray, EPSILON};
+use crate::math::{by_coordinates, Aabb, DVec3, Ray, EPSILON};
 
 /// Widening of the bounding interval, in units of the bounding radius, so a root lying
 /// exactly where the torus touches its bounds is not lost to the endpoint's rounding.
@@ -152,13 +152,17 @@ impl Torus {
         if self.empty {
             return None;
         }
-        let len = ray.dir.length();
+        // Each coordinate by its own 8-byte load: a transformed ray was just stored as an x-y
+        // pair and z, and the y-z pairs LLVM read back could not be forwarded from those two
+        // stores (a sixth of this function's samples on sign).
+        let (dir, origin) = (by_coordinates(&ray.dir), by_coordinates(&ray.origin));
+        let len = dir.length();
         if !(len > 0.0 && len.is_finite()) {
             return None;
         }
         let scale = self.scale;
-        let u = ray.dir / len;
-        let o = ray.origin / scale;
+        let u = dir / len;
+        let o = origin / scale;
         let (big, small) = (self.big, self.small);
 
         // Interval of the ray (unit-scaled distance) inside the bounding sphere and slab.
