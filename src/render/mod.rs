@@ -374,7 +374,7 @@ struct RowTracer<'t, 'a> {
     tracer: &'t Tracer<'a>,
     s: &'t RenderSettings,
     /// Radiosity's last completion pass lit some of these very rays (radiosity::pretrace).
-    lit: Option<&'t [Option<Seen>]>,
+    lit: Option<&'t radiosity::FirstPass>,
     progress: &'t (dyn Fn(u64) + Sync),
     rays: AtomicU64,
     camera_rays: AtomicU64,
@@ -389,7 +389,7 @@ impl<'t, 'a> RowTracer<'t, 'a> {
         let lit = tracer
             .rad
             .as_ref()
-            .and_then(|r| r.cache.first_pass.as_deref());
+            .and_then(|r| r.cache.first_pass.as_ref());
         RowTracer {
             tracer,
             s,
@@ -412,7 +412,7 @@ impl<'t, 'a> RowTracer<'t, 'a> {
                 Seen::default()
             } else {
                 traced += 1;
-                match self.lit.and_then(|l| l[y * w + x]) {
+                match self.lit.and_then(|l| l.get(y * w + x)) {
                     Some(seen) => seen,
                     None => self
                         .tracer

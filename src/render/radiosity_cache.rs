@@ -11,7 +11,6 @@ use smallvec::SmallVec;
 use crate::math::DVec3;
 use crate::scene::scratch::{MemoEntry, ProbeMemo, RadiosityMemo};
 
-use super::trace::Seen;
 pub use crate::scene::scratch::RadiositySample as Sample;
 
 /// The stamp of the last filing of any cache (`Cache::stamp`).
@@ -79,7 +78,7 @@ pub struct Cache {
     pub rays: u64,
     /// First-pass colours (one ray at each pixel's centre, row by row) the last completion
     /// pass lit exactly as the final trace would (`fold` in `pretrace`).
-    pub first_pass: Option<Vec<Option<Seen>>>,
+    pub first_pass: Option<super::radiosity::FirstPass>,
 }
 
 /// The samples a cell lists, in number order. Most cells list a few (stackernight, whose
