@@ -152,13 +152,22 @@ impl Torus {
         if self.empty {
             return None;
         }
-        let len = ray.dir.length();
+        // Each component by an 8-byte load: the callers' local rays (`Object::local_ray`) are
+        // stored as an x-y pair and z, and LLVM read the direction's y-z pair as one 16-byte
+        // load across both stores, which the store buffer cannot forward (`any_kept` on
+        // lights/soft). The same values, so the same operations on them.
+        // SAFETY: volatile reads of initialised doubles through references.
+        let get = |v: &f64| unsafe { std::ptr::read_volatile(v) };
+        let (ro, rd) = (&ray.origin, &ray.dir);
+        let dir = DVec3::new(get(&rd.x), get(&rd.y), get(&rd.z));
+        let origin = DVec3::new(get(&ro.x), get(&ro.y), get(&ro.z));
+        let len = dir.length();
         if !(len > 0.0 && len.is_finite()) {
             return None;
         }
         let scale = self.scale;
-        let u = ray.dir / len;
-        let o = ray.origin / scale;
+        let u = dir / len;
+        let o = origin / scale;
         let (big, small) = (self.big, self.small);
 
         // Interval of the ray (unit-scaled distance) inside the bounding sphere and slab.
