@@ -209,6 +209,9 @@ fn magnet(f: &Fractal, p: (f64, f64)) -> f64 {
     let (c1, c2, mut z, mut min_abs2) = magnet_start(f, p);
     for k in 0..f.iterations {
         z = magnet_step(f.magnet, z, c1, c2);
+        // Kept as two scalars: the vectoriser packed z's parts into one register, with
+        // shuffles (haddpd, addsubpd, unpck) on the orbit's chain.
+        z = (crate::math::opaque(z.0), crate::math::opaque(z.1));
         let a2 = z.0 * z.0 + z.1 * z.1;
         let d1 = (z.0 - 1.0) * (z.0 - 1.0) + z.1 * z.1;
         if a2 > 1e4 || d1 < 1e-4 {
