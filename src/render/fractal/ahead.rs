@@ -158,12 +158,12 @@ unsafe fn run_avx<const MIN: bool>(f: &Fractal, lanes: &mut [Option<Orbit>; L]) 
 }
 
 /// The orbits' state between runs of steps, a lane per orbit.
-struct State {
-    zr: Lanes<L>,
-    zi: Lanes<L>,
-    rr: Lanes<L>,
-    ii: Lanes<L>,
-    min_abs2: Lanes<L>,
+pub(super) struct State {
+    pub(super) zr: Lanes<L>,
+    pub(super) zi: Lanes<L>,
+    pub(super) rr: Lanes<L>,
+    pub(super) ii: Lanes<L>,
+    pub(super) min_abs2: Lanes<L>,
 }
 
 /// `fractal2`'s steps, a lane per orbit. Orbits start at different step counts, so the
@@ -281,7 +281,7 @@ fn steps<const MIN: bool>(
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx")]
 #[inline]
-unsafe fn steps_avx<const MIN: bool>(
+pub(super) unsafe fn steps_avx<const MIN: bool>(
     s: &mut State,
     (cr, ci): (Lanes<L>, Lanes<L>),
     live: u32,
