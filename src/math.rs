@@ -360,11 +360,7 @@ impl Slabs {
         // just before (the x-y pair and z as they came), and LLVM copied the origin for a
         // member loop as x and a y-z pair, a 16-byte load across two stores that the store
         // buffer cannot forward (csg_first_hit on advanced/whiltile).
-        // SAFETY: volatile reads of initialised doubles through references.
-        let get = |v: &f64| unsafe { std::ptr::read_volatile(v) };
-        let (o, inv) = (&self.origin, &self.inv_dir);
-        let origin = DVec3::new(get(&o.x), get(&o.y), get(&o.z));
-        let inv_dir = DVec3::new(get(&inv.x), get(&inv.y), get(&inv.z));
+        let (origin, inv_dir) = (by_coordinates(&self.origin), by_coordinates(&self.inv_dir));
         let t0 = (b.min - origin) * inv_dir;
         let t1 = (b.max - origin) * inv_dir;
         let tnear = hi(hi(lo(t0.x, t1.x), hi(lo(t0.y, t1.y), lo(t0.z, t1.z))), 0.0);
