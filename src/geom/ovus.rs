@@ -10,7 +10,7 @@
 
 use crate::geom::torus::Torus;
 use crate::geom::{Hit, Shape};
-use crate::math::{Aabb, DVec3, Ray};
+use crate::math::{by_coordinates, Aabb, DVec3, Ray};
 
 const PART_BOTTOM: u32 = 0;
 const PART_TOP: u32 = 1;
@@ -75,7 +75,8 @@ impl Ovus {
     }
 
     fn crossings(&self, ray: &Ray, mut push: impl FnMut(Hit)) {
-        let (o, d) = (ray.origin, ray.dir);
+        // By coordinates: see `Sor::each_hit` (a just-stored local ray read as a y-z pair).
+        let (o, d) = (by_coordinates(&ray.origin), by_coordinates(&ray.dir));
         let mut t2 = [0.0; 2];
         let top_c = DVec3::new(0.0, self.bottom, 0.0);
         let Some(l) = &self.lemon else {

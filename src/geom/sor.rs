@@ -12,7 +12,7 @@
 use crate::geom::poly::{eval, eval_with_derivative, roots_in};
 use crate::geom::spline2d::{sign_changes, P2};
 use crate::geom::{Hit, Shape};
-use crate::math::{Aabb, DVec3, Ray, EPSILON};
+use crate::math::{by_coordinates, Aabb, DVec3, Ray, EPSILON};
 
 const CAP_LOW: u32 = u32::MAX - 1;
 const CAP_HIGH: u32 = u32::MAX;
@@ -126,12 +126,16 @@ impl Sor {
         let Some([ylo, yhi]) = self.heights() else {
             return;
         };
-        let len = ray.dir.length();
+        // Each coordinate by its own 8-byte load: the caller's local ray was just stored as an
+        // x-y pair and z, which a 16-byte y-z load cannot be forwarded from (small31 saw it
+        // in the disassembly, as in the torus's set-up).
+        let (dir, origin) = (by_coordinates(&ray.dir), by_coordinates(&ray.origin));
+        let len = dir.length();
         if !(len > 0.0 && len.is_finite()) {
             return;
         }
-        let u = ray.dir / len;
-        let o = ray.origin / self.scale;
+        let u = dir / len;
+        let o = origin / self.scale;
         // The part of the ray inside the bounding cylinder.
         let a = u.x * u.x + u.z * u.z;
         let (b, c) = (o.x * u.x + o.z * u.z, o.x * o.x + o.z * o.z);
