@@ -494,7 +494,8 @@ impl Shooter<'_> {
             return false;
         }
         let dir = ray.dir.normalize_or_zero();
-        let n = obj.normal(p, &h);
+        // By coordinates, as in `shade`: `Object::normal` may store x and y apart.
+        let n = crate::math::by_coordinates(&obj.normal(p, &h));
         let entering = n.dot(dir) < 0.0;
         let nf = if entering { n } else { -n };
         let cos_i = (-dir.dot(nf)).clamp(0.0, 1.0);

@@ -459,7 +459,10 @@ impl<'a> Tracer<'a> {
             let mut last = 0.0;
             for h in &ctx.surface[start..] {
                 if let Some(int) = &h.obj.interior {
-                    if h.obj.normal(ray.at(h.t), h).dot(l) > 0.0 {
+                    // By coordinates here and below: `Object::normal` may store x and y
+                    // apart, and a pair load of them waits (place31: a quarter of this
+                    // function's samples on interior/caustic2).
+                    if crate::math::by_coordinates(&h.obj.normal(ray.at(h.t), h)).dot(l) > 0.0 {
                         *att *= int.fade(h.t - last);
                         if int.has_media() {
                             *att *= super::media::transmittance(&[int.media()], &ray, last, h.t);
@@ -516,7 +519,8 @@ impl<'a> Tracer<'a> {
         let hp = ray.at(h.t);
         // A shadow ray leaving through a wall meets its inside (measured: an open
         // box's interior_texture shadows its own far wall).
-        let inside = h.obj.interior_texture.is_some() && h.obj.normal(hp, h).dot(ray.dir) > 0.0;
+        let inside = h.obj.interior_texture.is_some()
+            && crate::math::by_coordinates(&h.obj.normal(hp, h)).dot(ray.dir) > 0.0;
         let top = h.obj.texture_facing(h, inside);
         let uv = if top.uses_uv() {
             h.obj.uv_point(hp, h)
@@ -537,7 +541,7 @@ impl<'a> Tracer<'a> {
         }
         if let Some(a) = att {
             if let Some(int) = h.obj.interior.as_deref().filter(|i| i.caustics > 0.0) {
-                let n = h.obj.normal(hp, h);
+                let n = crate::math::by_coordinates(&h.obj.normal(hp, h));
                 let n = if n.dot(l) > 0.0 { -n } else { n };
                 *a *= int.caustic_gain(caustic_normal(top, hp, uv, n).dot(l));
             }

@@ -487,7 +487,10 @@ impl<'a> Tracer<'a> {
         let obj = h.obj;
         let p = ray.at(h.t);
         let dir = ray.dir.normalize();
-        let n = obj.normal(p, h);
+        // One coordinate at a time: `Object::normal` returns through memory and some of its
+        // paths store x and y 8 bytes each, which the x-y pair load LLVM read it back with
+        // could not be forwarded from (a tenth of `shade`'s samples on mirror_spheres).
+        let n = crate::math::by_coordinates(&obj.normal(p, h));
         let entering = n.dot(dir) < 0.0;
         let nf = if entering { n } else { -n };
         // Only slope and aoi read the surface: without them the thread-local write is skipped.
