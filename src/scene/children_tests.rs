@@ -3,10 +3,9 @@
 
 use crate::geom::test_rng::Lcg;
 use crate::math::{DVec3, Ray};
-use crate::scene::build::build;
 use crate::scene::csg_boxes::Search;
+use crate::scene::csg_hit::tests::built;
 use crate::scene::object::{ObjKind, Object, Scratch, SurfaceHit};
-use crate::sdl::{ParseOptions, Parser};
 
 /// CSG nodes of many members, with exactly coincident surfaces (ties), unbounded and
 /// inverted members, nested nodes and clipping.
@@ -48,11 +47,7 @@ const SCENE: &str = r#"
 
 fn scene() -> crate::scene::build::Scene {
     // Nested unions, opened into their parent's index.
-    let mut p = Parser::new(ParseOptions::default());
-    p.parse_str("t.pov", SCENE)
-        .map_err(|e| e.message.clone())
-        .unwrap();
-    build(&p.scene, 64, 48).scene
+    built(SCENE)
 }
 
 fn strip(o: &mut Object) {
@@ -185,11 +180,7 @@ fn first_hit_is_the_least_of_all_hits() {
         intersection { object { Dodec } box { -0.9, 2 } sphere { 0, 1.3 } plane { x, 0 } }
         intersection { plane { y, 0 } plane { y, 0 } plane { -y, 0 } box { -1, 1 } }
     "#;
-    let mut p = Parser::new(ParseOptions::default());
-    p.parse_str("t.pov", POLY)
-        .map_err(|e| e.message.clone())
-        .unwrap();
-    let scene = build(&p.scene, 64, 48).scene;
+    let scene = built(POLY);
     let mut rng = Lcg(7);
     let mut s = Scratch::default();
     assert_eq!(scene.objects.len(), 6);
@@ -225,9 +216,7 @@ fn first_hit_is_the_least_of_all_hits() {
 /// (inverse, clipped, indexed), nested nodes and clipping objects, nodes with an index.
 #[test]
 fn folds_flag_is_the_members_scan() {
-    let mut p = Parser::new(ParseOptions::default());
-    p.parse_str(
-        "t.pov",
+    let scene = built(
         r#"
         difference { box { -1, 1 } intersection { sphere { 0, 1 } box { 0, 2 } } }
         difference { box { -1, 1 } intersection { sphere { 0, 1 } box { 0, 2 } inverse } }
@@ -241,10 +230,7 @@ fn folds_flag_is_the_members_scan() {
                      intersection { sphere { 0, 1 } intersection { box { 0, 2 } sphere { x, 1 } } } }
         union { intersection { sphere { 0, 1 } box { 0, 2 } } sphere { x, 1 } }
         "#,
-    )
-    .map_err(|e| e.message.clone())
-    .unwrap();
-    let scene = build(&p.scene, 64, 48).scene;
+    );
     fn check(o: &Object, seen: &mut [usize; 2]) {
         for c in &o.clip {
             check(c, seen);

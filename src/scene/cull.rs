@@ -584,7 +584,6 @@ mod tests {
         use crate::geom::test_rng::Lcg;
         use crate::math::Ray;
         use crate::scene::object::Scratch;
-        use crate::sdl::{ParseOptions, Parser};
         const SCENE: &str = r#"
             #declare B = blob { threshold 0.6 sphere { 0, 1, 1 } sphere { 0, 1, 1 scale <0.3, 0.45, 0.8> } }
             difference { object { B } plane { y, 0 } plane { z, 0 inverse } plane { x, 0 inverse } scale <2, 1, 3> }
@@ -592,13 +591,7 @@ mod tests {
             difference { object { B } plane { y, 0 clipped_by { sphere { 0, 0.5 } } } }
             difference { box { -1, 1 } plane { x, 0 } plane { -x, -0.5 } rotate <10, 20, 30> }
         "#;
-        let scene = || {
-            let mut p = Parser::new(ParseOptions::default());
-            p.parse_str("t.pov", SCENE)
-                .map_err(|e| e.message.clone())
-                .unwrap();
-            crate::scene::build::build(&p.scene, 64, 48).scene
-        };
+        let scene = || crate::scene::csg_hit::tests::built(SCENE);
         let culled = scene();
         let mut bare = scene();
         for o in &mut bare.objects {

@@ -4,7 +4,6 @@
 use crate::geom::test_rng::Lcg;
 use crate::math::Ray;
 use crate::scene::object::{ObjKind, Object, Scratch};
-use crate::sdl::{ParseOptions, Parser};
 
 /// trough's and monkey's saddles in turned boxes (moved, scaled unevenly, two boxes at once),
 /// and clipped by a turned box and by a squashed turned sphere beside a plane.
@@ -22,11 +21,7 @@ const SCENE: &str = r#"
 "#;
 
 fn scene() -> crate::scene::build::Scene {
-    let mut p = Parser::new(ParseOptions::default());
-    p.parse_str("t.pov", SCENE)
-        .map_err(|e| e.message.clone())
-        .unwrap();
-    crate::scene::build::build(&p.scene, 64, 48).scene
+    crate::scene::csg_hit::tests::built(SCENE)
 }
 
 /// Drops every window below `o`; counts those it dropped.

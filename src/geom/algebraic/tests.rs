@@ -96,6 +96,17 @@ fn quartic_term_order_matches_the_manuals_torus() {
     assert_eq!(pov_term_order(3).len(), 20);
 }
 
+/// A polynomial of `order` with every term of POV-Ray's order and coefficients from `rnd`;
+/// `sparse`: the negative ones left out (zero), for the expansions' zero-term paths.
+fn random_poly(order: usize, sparse: bool, rnd: &mut impl FnMut() -> f64) -> Algebraic {
+    let terms: Vec<([u8; 3], f64)> = pov_term_order(order)
+        .into_iter()
+        .map(|p| (p, rnd()))
+        .map(|(p, c)| (p, if sparse && c < 0.0 { 0.0 } else { c }))
+        .collect();
+    Algebraic::new(order, &terms, false)
+}
+
 /// The unrolled expansions and the power tables give the bits of the loops they replace.
 #[test]
 fn unrolled_expansion_matches_the_loops() {
@@ -104,12 +115,7 @@ fn unrolled_expansion_matches_the_loops() {
     for order in [2usize, 3, 4] {
         for case in 0..400 {
             // Every other case a sparse polynomial (zero terms left out).
-            let terms: Vec<([u8; 3], f64)> = pov_term_order(order)
-                .into_iter()
-                .map(|p| (p, rnd()))
-                .map(|(p, c)| (p, if case % 2 == 1 && c < 0.0 { 0.0 } else { c }))
-                .collect();
-            let a = Algebraic::new(order, &terms, false);
+            let a = random_poly(order, case % 2 == 1, &mut rnd);
             let (o, d) = if case % 4 < 2 {
                 (
                     DVec3::new(rnd(), rnd(), -0.0),
@@ -172,12 +178,7 @@ fn gradient_from_tables_matches_powi() {
     let mut checked = 0;
     for order in 1usize..=7 {
         for case in 0..200 {
-            let terms: Vec<([u8; 3], f64)> = pov_term_order(order)
-                .into_iter()
-                .map(|p| (p, rnd()))
-                .map(|(p, c)| (p, if case % 2 == 1 && c < 0.0 { 0.0 } else { c }))
-                .collect();
-            let a = Algebraic::new(order, &terms, false);
+            let a = random_poly(order, case % 2 == 1, &mut rnd);
             for k in 0..12 {
                 let mut p = DVec3::new(rnd(), rnd(), rnd());
                 if k >= 4 {

@@ -523,7 +523,6 @@ pub(crate) fn leaf_any_hit<'a>(
 mod tests {
     use super::*;
     use crate::geom::test_rng::Lcg;
-    use crate::sdl::{ParseOptions, Parser};
 
     /// Planes of every kind beside a few bounded objects: plain, `inverse`, tilted and far,
     /// no_shadow, filtering, turned and clipped ones.
@@ -540,11 +539,7 @@ mod tests {
     "#;
 
     fn scene() -> Scene {
-        let mut p = Parser::new(ParseOptions::default());
-        p.parse_str("t.pov", SCENE)
-            .map_err(|e| e.message.clone())
-            .unwrap();
-        crate::scene::build::build(&p.scene, 64, 48).scene
+        crate::scene::csg_hit::tests::built(SCENE)
     }
 
     /// A plane asked inline (`Unbounded::plane`) answers as its object does: `first_hit`'s
@@ -621,9 +616,7 @@ mod tests {
     /// direction, which the moved spheres' object-space rays must keep as the matrix does.
     #[test]
     fn plain_spheres_answer_as_their_objects() {
-        let mut p = Parser::new(ParseOptions::default());
-        p.parse_str(
-            "t.pov",
+        let scene = crate::scene::csg_hit::tests::built(
             r#"
             sphere { <0, 1, 2>, 1 pigment { rgb 1 } }
             sphere { <2, 0, 1>, 0.5 inverse pigment { rgb 1 } }
@@ -637,10 +630,7 @@ mod tests {
                 pigment { rgb 1 } }
             sphere { <0, 0, 0.3>, 0.6 translate <-1.3, 2.7, -0.4> pigment { rgbf 0.5 } }
         "#,
-        )
-        .map_err(|e| e.message.clone())
-        .unwrap();
-        let scene = crate::scene::build::build(&p.scene, 64, 48).scene;
+        );
         let named: Vec<u32> = (0..scene.objects.len())
             .map(|i| leaf_name(&scene.objects, i) >> 30)
             .collect();
