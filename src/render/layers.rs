@@ -53,7 +53,7 @@ pub(super) struct LayerSum {
     irr: Option<DVec3>,
     /// The current layer's colour, its parts' weighted sum.
     layer_c: [f64; 5],
-    /// The layers' highlight powers per light (`lighting::SpecMemo`).
+    /// The layers' half vectors and highlight powers per light (`lighting::SpecMemo`).
     spec: SpecMemo,
 }
 

@@ -320,7 +320,7 @@ impl<'f> Factors<'f> {
 /// Each gathered light's diffuse and highlight terms of one layer, added to `col`. `PLAIN`:
 /// the finish has no irid, no crand, no metallic highlight and brilliance 1 (the caller
 /// checked), so those branches are compiled out; the arithmetic is the same either way.
-/// `memo`: the layer loop's highlight powers, one slot per light of the first
+/// `memo`: the layer loop's half vectors and highlight powers, one slot per light of the first
 /// `SPEC_MEMO_LIGHTS`, shared by the hit's layers.
 #[inline(always)]
 fn lights_add<const PLAIN: bool>(
@@ -347,28 +347,65 @@ fn lights_add<const PLAIN: bool>(
 /// How many lights of a hit have a slot in `SpecMemo`.
 pub(super) const SPEC_MEMO_LIGHTS: usize = 4;
 
-/// Per light: the last highlight cosine and exponent (their bits) and the cosine raised
-/// to that exponent. The layers of one hit under the same finish and an unperturbed
-/// normal raise the same cosine to the same power once per layer; `powf` is a function of
-/// its arguments' bits, so the answer kept is the answer it would give again. The start's
-/// cosine 0 is never looked up (only cosines above 0 are raised).
-pub(super) type SpecMemo = [[u64; 3]; SPEC_MEMO_LIGHTS];
+/// Per light: the last half vector's input `l - dir` (its bits) and the half vector, and
+/// the last highlight cosine and exponent (their bits) and the cosine raised to that
+/// exponent. The layers of one hit see the same light from the same ray, so each layer made
+/// the same half vector (a square root and a division); under the same finish and an
+/// unperturbed normal they raise the same cosine to the same power. `normalize_or_zero` and
+/// `powf` are functions of their arguments' bits, so the answers kept are the answers they
+/// would give again. The start's keys are answered right too: `l - dir` = +0 has the half
+/// vector 0, and the cosine 0 is never looked up (only cosines above 0 are raised).
+#[derive(Clone, Copy)]
+pub(super) struct SpecSlot {
+    half_key: [u64; 3],
+    half: DVec3,
+    power_key: [u64; 2],
+    power: f64,
+}
 
-/// A memo with no power kept.
-pub(super) const SPEC_MEMO_START: SpecMemo = [[0; 3]; SPEC_MEMO_LIGHTS];
+/// The memo's slots, one per light of the first `SPEC_MEMO_LIGHTS`.
+pub(super) type SpecMemo = [SpecSlot; SPEC_MEMO_LIGHTS];
+
+/// A memo with nothing kept.
+pub(super) const SPEC_MEMO_START: SpecMemo = [SpecSlot {
+    half_key: [0; 3],
+    half: DVec3::ZERO,
+    power_key: [0; 2],
+    power: 0.0,
+}; SPEC_MEMO_LIGHTS];
+
+/// `d.normalize_or_zero()`, through `slot` when there is one.
+#[inline(always)]
+fn half_vector(d: DVec3, slot: Option<&mut SpecSlot>) -> DVec3 {
+    match slot {
+        None => d.normalize_or_zero(),
+        Some(s) => {
+            let key = [d.x.to_bits(), d.y.to_bits(), d.z.to_bits()];
+            if s.half_key == key {
+                s.half
+            } else {
+                let h = d.normalize_or_zero();
+                s.half_key = key;
+                s.half = h;
+                h
+            }
+        }
+    }
+}
 
 /// `cos_h.powf(exp)`, through `slot` when there is one.
 #[inline(always)]
-fn spec_power(cos_h: f64, exp: f64, slot: Option<&mut [u64; 3]>) -> f64 {
+fn spec_power(cos_h: f64, exp: f64, slot: Option<&mut SpecSlot>) -> f64 {
     match slot {
         None => cos_h.powf(exp),
         Some(s) => {
             let key = [cos_h.to_bits(), exp.to_bits()];
-            if s[0] == key[0] && s[1] == key[1] {
-                f64::from_bits(s[2])
+            if s.power_key == key {
+                s.power
             } else {
                 let v = cos_h.powf(exp);
-                *s = [key[0], key[1], v.to_bits()];
+                s.power_key = key;
+                s.power = v;
                 v
             }
         }
@@ -383,7 +420,7 @@ fn light_add<const PLAIN: bool>(
     lb: &LitBy,
     cos_n: f64,
     col: &mut DVec3,
-    slot: Option<&mut [u64; 3]>,
+    mut slot: Option<&mut SpecSlot>,
 ) {
     let (fin, c, p, dir, nf) = (f.fin, f.c, f.p, f.dir, f.nf);
     let (lc, l) = (lb.color, lb.l);
@@ -435,7 +472,7 @@ fn light_add<const PLAIN: bool>(
         }
     }
     if f.specular {
-        let hv = (l - dir).normalize_or_zero();
+        let hv = half_vector(l - dir, slot.as_deref_mut());
         let cos_h = nf.dot(hv);
         if cos_h > 0.0 {
             *col += lc_tint * (fin.specular * spec_power(cos_h, f.specular_exp, slot));
@@ -530,12 +567,13 @@ mod tests {
             lights_add::<false>(&f, &lit, &mut general, None);
             assert_eq!(bits(plain), bits(general), "case {case}");
             // Through a memo: first filled, then read back (the same layer again), then
-            // after another exponent or normal has replaced some slots.
+            // after another exponent, normal or ray direction has replaced some slots.
             let mut memo = SPEC_MEMO_START;
             for round in 0..3 {
                 let other = Factors {
                     specular_exp: f.specular_exp * 1.5,
                     nf: if case % 2 == 0 { -nf } else { nf },
+                    dir: if case % 3 == 0 { -dir } else { dir },
                     ..f
                 };
                 let g = if round == 1 { &other } else { &f };

@@ -22,7 +22,7 @@ use super::noise;
 use super::pattern_blocks::{brick, checker, cubic, hexagon, square, triangular};
 use super::pattern_surface::{angle_value, slope};
 use super::pattern_waves::waves;
-use super::pattern_wrap::fmod;
+use super::pattern_wrap::{fmod, fmod_by};
 use super::warp;
 
 pub use super::pattern_lanes::values_warped4;
@@ -32,6 +32,9 @@ pub use super::pattern_waves::{wave_count, WAVE_SOURCES};
 /// POV-Ray's period for frequency and phase: a hair over 1 (measured: `spherical frequency 2`
 /// keeps the centre at the top of the map).
 const WRAP: f64 = 1.00001;
+
+/// `1.0 / WRAP`, for `fmod_by`.
+const WRAP_RECIP: f64 = 1.0 / WRAP;
 
 /// The pattern's value in [0, 1] at `p` (pattern space, before warps), ready for a map lookup.
 pub fn value(pat: &Pattern, p: DVec3) -> f64 {
@@ -114,7 +117,11 @@ pub(super) fn shape_inline(pat: &Pattern, v: f64) -> f64 {
     }
     let x = v * pat.frequency + pat.phase;
     // Inside the period fmod's own first exit answers x, here before its call (not inlined).
-    let mut v = if x.abs() < WRAP { x } else { fmod(x, WRAP) };
+    let mut v = if x.abs() < WRAP {
+        x
+    } else {
+        fmod_by(x, WRAP, WRAP_RECIP)
+    };
     if v < 0.0 {
         // Measured: gradient x at x = -0.3 gives 0.7, so negatives wrap by 1, not WRAP.
         v += 1.0;
