@@ -187,6 +187,21 @@ fn attach_indexes(o: &mut Object, opened: bool) {
         .then(|| crate::scene::csg_boxes::BoxMembers::of(*op, children))
         .flatten();
     let boxes_none = boxes.is_none();
+    // Members that are all boxes under one transform (`csg_framed`): no member is folded
+    // or an untransformed box, and none is a plane (no faces).
+    let framed = (mine.is_none() && !folds && boxes_none)
+        .then(|| {
+            cull.as_ref()
+                .is_none_or(|c| c.faces.is_none())
+                .then(|| crate::scene::csg_framed::FramedBoxes::of(*op, children))
+                .flatten()
+        })
+        .flatten();
+    if let Some(f) = framed {
+        let c = cull.get_or_insert_with(Box::default);
+        c.search = Search::Framed;
+        c.framed = Some(Box::new(f));
+    }
     if folds || boxes.is_some() {
         let c = cull.get_or_insert_with(Box::default);
         c.search = match (folds, &boxes) {
@@ -199,7 +214,8 @@ fn attach_indexes(o: &mut Object, opened: bool) {
     }
     // The same nodes and members as the searches asked for them on every ray before:
     // without index or box members, the members (their windows set above) plain quadrics.
-    let quadrics = (mine.is_none() && *op != CsgOp::Union && boxes_none)
+    let framed_none = cull.as_ref().is_none_or(|c| c.framed.is_none());
+    let quadrics = (mine.is_none() && *op != CsgOp::Union && boxes_none && framed_none)
         .then(|| {
             let faces = cull.as_ref().and_then(|c| c.faces.as_ref());
             crate::scene::csg_hit::quadric_lanes_of(children, faces)

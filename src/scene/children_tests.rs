@@ -250,10 +250,12 @@ fn folds_flag_is_the_members_scan() {
             assert_eq!(cull.as_ref().is_some_and(|c| c.folds), scan);
             // The kind byte names the search the tests on `boxes` and `folds` chose.
             let boxes = cull.as_ref().is_some_and(|c| c.boxes.is_some());
-            let want = match (boxes, scan) {
-                (true, _) => Search::Boxes,
-                (false, true) => Search::Folds,
-                (false, false) => Search::Plain,
+            let framed = cull.as_ref().is_some_and(|c| c.framed.is_some());
+            let want = match (boxes, scan, framed) {
+                (true, _, _) => Search::Boxes,
+                (false, true, _) => Search::Folds,
+                (false, false, true) => Search::Framed,
+                (false, false, false) => Search::Plain,
             };
             assert_eq!(cull.as_ref().map_or(Search::Plain, |c| c.search), want);
             seen[scan as usize] += 1;

@@ -39,6 +39,8 @@ pub enum Search {
     Folds,
     /// Some member is a box (`Cull::boxes`): `boxes_search`.
     Boxes,
+    /// Every member is a box under one transform (`Cull::framed`): `framed_first_hit`.
+    Framed,
 }
 
 /// The most members a node whose members are all boxes may have for `boxes_first_hit`.
@@ -239,6 +241,12 @@ impl Object {
         match search {
             // Box members without dispatch (`csg_boxes`); such nodes have no index.
             Search::Boxes => self.boxes_search(op, children, culls, ray, tmax, s),
+            Search::Framed => match self.framed_boxes() {
+                Some(f) => self.framed_first_hit(children, culls.0, f, ray, tmax),
+                None => {
+                    self.csg_first_hit::<false, false>(op, children, index, culls, ray, tmax, s)
+                }
+            },
             Search::Folds => {
                 self.csg_first_hit::<true, false>(op, children, index, culls, ray, tmax, s)
             }
@@ -277,6 +285,15 @@ impl Object {
                 self.csg_first_hit::<true, true>(op, children, None, culls, ray, tmax, s)
             }
             _ => self.csg_first_hit::<false, true>(op, children, None, culls, ray, tmax, s),
+        }
+    }
+
+    /// This node's members as boxes under one transform, if they are (`Cull::framed`).
+    #[inline(always)]
+    pub(super) fn framed_boxes(&self) -> Option<&crate::scene::csg_framed::FramedBoxes> {
+        match &self.kind {
+            ObjKind::Csg { cull: Some(c), .. } => c.framed.as_deref(),
+            _ => None,
         }
     }
 

@@ -5,6 +5,7 @@ pub mod build;
 pub mod children;
 mod clip_hit;
 pub mod csg_boxes;
+mod csg_framed;
 pub mod csg_hit;
 mod csg_members;
 pub mod cull;

@@ -51,6 +51,9 @@ pub struct Cull {
     /// whose two to four members are plain quadric leaves (`csg_hit::quadric_lanes_of`):
     /// its searches solve them four at a time.
     pub quadrics: Option<Box<crate::geom::algebraic::QuadricLanes>>,
+    /// The members, when they are all boxes under one transform, of a node other than a
+    /// union without index, box members, folds or faces (`scene::csg_framed`).
+    pub framed: Option<Box<crate::scene::csg_framed::FramedBoxes>>,
 }
 
 /// A shape's data with the textures of its parts (mesh triangles, blob components).
@@ -566,6 +569,10 @@ impl Object {
                     }
                 }
                 let index = index.as_deref();
+                if let Some(f) = self.framed_boxes() {
+                    // Boxes under one transform (`csg_framed`).
+                    return self.framed_any_hit(culls.0, f, ray, tmax);
+                }
                 return if cull.as_ref().is_some_and(|c| c.boxes.is_some()) {
                     // Box members without dispatch (`csg_boxes`); such nodes have no index.
                     self.csg_any_hit::<true>(*op, children, index, culls, ray, tmax, s)
