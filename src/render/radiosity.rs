@@ -447,20 +447,24 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
                                 ctx.rad_seen.clear();
                                 let ray = base.camera.ray(x, y);
                                 let mut found = None;
-                                let seen = match ray {
+                                // By reference into the option (as `trace_pretrace`
+                                // reads it): moved out, the ray was copied in 16-byte
+                                // pieces straddling the camera's stores (origin.z with
+                                // dir.x, dir.y-z), two store-forwarding stalls a ray.
+                                let seen = match &ray {
                                     Some(ray) if reuse && !pretrace => {
                                         let at = y as usize * s.width as usize + x as usize;
                                         let hit = match hit_at_now[at] {
                                             u32::MAX => {
-                                                let hit = base.camera_hit(&ray, own);
+                                                let hit = base.camera_hit(ray, own);
                                                 found = keep.then_some((at, hit));
                                                 hit
                                             }
                                             k => hits_now[k as usize],
                                         };
-                                        tracer.trace_pretrace_hit(&ray, hit, ctx)
+                                        tracer.trace_pretrace_hit(ray, hit, ctx)
                                     }
-                                    ray => tracer.trace_pretrace(ray, ctx),
+                                    _ => tracer.trace_pretrace(ray, ctx),
                                 };
                                 rays.fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
                                 // Copied out, so the scratch keeps its buffers: most
