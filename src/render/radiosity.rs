@@ -341,10 +341,11 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
     } else {
         FirstPass::new(0)
     };
-    // The pixels the last pass lit that looked the cache up, to be checked once it is
-    // complete: (pixel, where its lookups read the cache, how many samples the cache held
-    // when its phase began). Their colours wait in `first`.
-    let mut to_check: Vec<(usize, Looked, usize)> = Vec::new();
+    // The points where the pixels the last pass lit looked the cache up, to be checked once
+    // it is complete (`Check`); their colours wait in `first`. Room for one a pixel from the
+    // start: grown by doubling, the list's copies faulted in fresh pages (with the entries'
+    // own pages, a third of rad_def_test_37's faults); pages never written are never touched.
+    let mut to_check: Vec<Check> = Vec::with_capacity(first.lit.len());
     // The completion passes trace pixel centres, and every later pass traces again the
     // pixels of those before it (the last traces them all): each camera ray's first crossing
     // is found once and kept, per pixel an index into `hits` (u32::MAX: none yet). Found with
@@ -446,20 +447,24 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
                                 ctx.rad_seen.clear();
                                 let ray = base.camera.ray(x, y);
                                 let mut found = None;
-                                let seen = match ray {
+                                // By reference into the option (as `trace_pretrace`
+                                // reads it): moved out, the ray was copied in 16-byte
+                                // pieces straddling the camera's stores (origin.z with
+                                // dir.x, dir.y-z), two store-forwarding stalls a ray.
+                                let seen = match &ray {
                                     Some(ray) if reuse && !pretrace => {
                                         let at = y as usize * s.width as usize + x as usize;
                                         let hit = match hit_at_now[at] {
                                             u32::MAX => {
-                                                let hit = base.camera_hit(&ray, own);
+                                                let hit = base.camera_hit(ray, own);
                                                 found = keep.then_some((at, hit));
                                                 hit
                                             }
                                             k => hits_now[k as usize],
                                         };
-                                        tracer.trace_pretrace_hit(&ray, hit, ctx)
+                                        tracer.trace_pretrace_hit(ray, hit, ctx)
                                     }
-                                    ray => tracer.trace_pretrace(ray, ctx),
+                                    _ => tracer.trace_pretrace(ray, ctx),
                                 };
                                 rays.fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
                                 // Copied out, so the scratch keeps its buffers: most
@@ -484,9 +489,8 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
                         if lit && v.is_empty() {
                             let at = iy * s.width as usize + ix;
                             first.set(at, seen);
-                            if !looked.is_empty() {
-                                to_check.push((at, looked, before));
-                            }
+                            to_check
+                                .extend(looked.iter().map(|&(p, n)| Check::new(at, p, n, before)));
                         }
                         gathered.extend(v);
                     }
@@ -550,17 +554,41 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
     // samples, in its order.
     if fold {
         let mut memo = cache.fold_memo();
-        for (at, looked, before) in to_check {
-            let unchanged = looked
-                .iter()
-                .all(|&(p, n)| !cache.any_valid_memo(p, n, set.error_bound, before, &mut memo));
-            if !unchanged {
+        for c in to_check {
+            let at = c.at as usize;
+            // A pixel's points in their order, up to the first where a new sample is valid.
+            if first.lit[at]
+                && cache.any_valid_memo(c.p, c.n, set.error_bound, c.before as usize, &mut memo)
+            {
                 first.lit[at] = false;
             }
         }
     }
     cache.first_pass = (!first.lit.is_empty()).then_some(first);
     Some(cache)
+}
+
+/// A point (`p`, facing `n`) where a pixel (`at`) the last completion pass lit looked the
+/// cache up, with how many samples the cache held when the pixel's phase began (`before`):
+/// the pixel keeps its colour if no sample added from then on is valid at any of its points.
+/// One entry a point, the pixel's in their order; 56 bytes (as `(usize, Looked, usize)`, 72).
+struct Check {
+    at: u32,
+    before: u32,
+    p: DVec3,
+    n: DVec3,
+}
+
+impl Check {
+    fn new(at: usize, p: DVec3, n: DVec3, before: usize) -> Check {
+        let id = |v: usize| u32::try_from(v).expect("pixels and samples are numbered in u32");
+        Check {
+            at: id(at),
+            before: id(before),
+            p,
+            n,
+        }
+    }
 }
 
 /// First-pass colours the last completion pass lit (`fold` in `pretrace`), per pixel row by
