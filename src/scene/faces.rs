@@ -17,6 +17,7 @@
 //!   four of them), so `0 · c` adds no NaN. Rays and points beyond 1e150 take the general path.
 
 use crate::math::{DVec3, Ray, EPSILON};
+use crate::scene::face_lanes::FaceLanes;
 use crate::scene::object::{ObjKind, Object};
 
 /// Components beyond this (rays, points, the inverse transform's entries) leave the short cut.
@@ -39,6 +40,8 @@ pub struct Faces {
     /// Every member is a face with unbounded bounds, and there are at most `MAX_ALL` of them
     /// (`csg_hit`'s search of polyhedra).
     all: bool,
+    /// With `all`, the faces four to a block for AVX (`face_lanes`).
+    lanes: Option<Box<FaceLanes>>,
 }
 
 /// The most members a node whose members are all faces may have for `Faces::all`.
@@ -53,7 +56,15 @@ impl Faces {
             && children
                 .iter()
                 .all(|c| c.bounds == crate::math::Aabb::INFINITE);
-        (faces.iter().flatten().count() >= 2).then_some(Faces { faces, all })
+        let inverse = children
+            .iter()
+            .enumerate()
+            .fold(0u32, |m, (j, c)| m | (c.inverse as u32) << (j % 32));
+        let lanes = all
+            .then(|| FaceLanes::of(&faces, inverse))
+            .flatten()
+            .map(Box::new);
+        (faces.iter().flatten().count() >= 2).then_some(Faces { faces, all, lanes })
     }
 
     /// Member `i`'s face, when it is one.
@@ -66,6 +77,12 @@ impl Faces {
     #[inline]
     pub fn all(&self) -> Option<&[Option<Face>]> {
         self.all.then_some(&self.faces[..])
+    }
+
+    /// With `all`, the faces four to a block (`face_lanes`).
+    #[inline]
+    pub fn lanes(&self) -> Option<&FaceLanes> {
+        self.lanes.as_deref()
     }
 }
 
@@ -148,6 +165,25 @@ impl Face {
         }
         let t = (self.distance - self.sign * self.point(ray.origin)) / denom;
         (t > EPSILON && t.is_finite()).then_some(t)
+    }
+
+    /// The row `point` and `vector` use (the axis's unit row without a transform), the sign
+    /// and the distance, for `face_lanes`.
+    pub fn lane_values(&self) -> ([f64; 4], f64, f64) {
+        let mut unit = [0.0; 4];
+        unit[self.axis] = 1.0;
+        (self.row.unwrap_or(unit), self.sign, self.distance)
+    }
+
+    /// A face made directly, for other modules' tests.
+    #[cfg(test)]
+    pub fn for_test(axis: usize, sign: f64, distance: f64, row: Option<[f64; 4]>) -> Face {
+        Face {
+            axis,
+            sign,
+            distance,
+            row,
+        }
     }
 
     /// `Plane::inside` of the local point. The point must be `point_ok`.

@@ -11,6 +11,7 @@ mod csg_members;
 pub mod cull;
 pub mod desc;
 pub mod df3;
+pub mod face_lanes;
 pub mod faces;
 pub mod focal;
 pub mod gif;
