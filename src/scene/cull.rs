@@ -55,8 +55,43 @@ pub struct Window {
 
 #[derive(Clone)]
 enum Edges {
+    /// None: the ball alone bounds the window.
+    Whole,
     Box(Aabb),
-    Planes(Vec<(DVec3, f64)>),
+    Planes(Planes),
+}
+
+/// Turned half-spaces: those paired with an opposite face (a turned box's six faces are three
+/// slabs) and the others.
+#[derive(Clone)]
+struct Planes {
+    /// `(n, hi, lo)`: `lo <= n·p <= hi`.
+    slabs: Vec<(DVec3, f64, f64)>,
+    /// `(n, d)`: `n·p <= d`.
+    single: Vec<(DVec3, f64)>,
+}
+
+impl Planes {
+    /// The padded half-spaces, each face paired with one whose normal is its exact opposite.
+    fn paired(planes: &[(DVec3, f64)]) -> Planes {
+        let mut used = vec![false; planes.len()];
+        let (mut slabs, mut single) = (Vec::new(), Vec::new());
+        for i in 0..planes.len() {
+            if used[i] {
+                continue;
+            }
+            used[i] = true;
+            let (n, d) = planes[i];
+            match (i + 1..planes.len()).find(|&j| !used[j] && planes[j].0 == -n) {
+                Some(j) => {
+                    used[j] = true;
+                    slabs.push((n, d, -planes[j].1));
+                }
+                None => single.push((n, d)),
+            }
+        }
+        Planes { slabs, single }
+    }
 }
 
 #[derive(Clone)]
@@ -81,22 +116,52 @@ impl Window {
         }
         let mut planes = Vec::new();
         window_half_spaces(o, &mut planes);
-        for c in &o.clip {
-            window_half_spaces(c, &mut planes);
+        let ball = o
+            .clip
+            .iter()
+            .enumerate()
+            .find_map(|(k, c)| Some((k, ball_of(c)?)));
+        for (k, c) in o.clip.iter().enumerate() {
+            // With a box to fall back on, the ball's own faces are left out: see `within`.
+            if boxed.is_none() || ball.as_ref().is_none_or(|b| b.0 != k) {
+                window_half_spaces(c, &mut planes);
+            }
         }
-        let ball = o.clip.iter().find_map(ball_of);
-        Window::choose(boxed, &planes).map(|w| w.with_ball(ball))
+        Window::choose(boxed, &planes).map(|w| w.with_ball(ball.map(|b| b.1)))
     }
 
     /// The window of an `intersection`'s member: every crossing the node keeps lies inside all
     /// its members, so inside their half-spaces, and inside the node's box `bx`.
     pub fn within(children: &[Object], bx: Aabb) -> Option<Window> {
+        let ball = children
+            .iter()
+            .enumerate()
+            .find_map(|(k, c)| Some((k, ball_of(c)?)));
         let mut planes = Vec::new();
-        for c in children {
-            window_half_spaces(c, &mut planes);
+        for (k, c) in children.iter().enumerate() {
+            // The ball's own member adds nothing but its box's faces (six turned planes when
+            // it is turned: folium's and witch's spheres), which hold the ball and so cut no
+            // chord shorter: a division and a mispredicted branch per face and ray, saved.
+            // Only the window's padding differs, and any window holding every crossing the
+            // node keeps gives the same kept roots (`roots_in_window`).
+            if ball.as_ref().is_none_or(|b| b.0 != k) {
+                window_half_spaces(c, &mut planes);
+            }
         }
-        let ball = children.iter().find_map(ball_of);
-        Window::choose(Some(bx), &planes).map(|w| w.with_ball(ball))
+        // Nothing else bounds the node and its box holds the whole ball: the box cuts no chord
+        // shorter either, so only the ball is asked.
+        if let Some((_, b)) = &ball {
+            if planes.is_empty() && b.inv.is_none() && {
+                let wb = b.world_box();
+                bx.min.cmple(wb.min).all() && bx.max.cmpge(wb.max).all()
+            } {
+                return Some(Window {
+                    edges: Edges::Whole,
+                    ball: ball.map(|b| b.1),
+                });
+            }
+        }
+        Window::choose(Some(bx), &planes).map(|w| w.with_ball(ball.map(|b| b.1)))
     }
 
     fn with_ball(self, ball: Option<Ball>) -> Window {
@@ -126,7 +191,8 @@ impl Window {
         } else {
             let scale = planes.iter().map(|h| h.1.abs()).fold(1.0, f64::max);
             let pad = 1e-6 * scale;
-            Edges::Planes(planes.iter().map(|&(n, d)| (n, d + pad)).collect())
+            let padded: Vec<_> = planes.iter().map(|&(n, d)| (n, d + pad)).collect();
+            Edges::Planes(Planes::paired(&padded))
         };
         Some(Window { edges, ball: None })
     }
@@ -135,6 +201,13 @@ impl Window {
     /// shares) holding every crossing the clipping keeps, padded against rounding.
     #[inline]
     pub fn range(&self, ray: &Ray) -> Range {
+        if let (Edges::Whole, Some(ball)) = (&self.edges, &self.ball) {
+            return match ball.chord(ray) {
+                Some((b0, b1)) if b0.is_finite() && b1.is_finite() => Range::Within(b0, b1),
+                Some(_) => Range::All,
+                None => Range::Empty,
+            };
+        }
         let range = self.edge_range(ray);
         match (&self.ball, range) {
             (Some(ball), Range::Within(lo, hi)) if !lo.is_nan() && !hi.is_nan() => {
@@ -158,6 +231,7 @@ impl Window {
     #[inline]
     fn edge_range(&self, ray: &Ray) -> Range {
         let (lo, hi) = match &self.edges {
+            Edges::Whole => return Range::All,
             Edges::Box(b) => {
                 let inv = ray.dir.recip();
                 let (t0, t1) = ((b.min - ray.origin) * inv, (b.max - ray.origin) * inv);
@@ -174,7 +248,29 @@ impl Window {
             }
             Edges::Planes(planes) => {
                 let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
-                for &(n, d) in planes {
+                // A slab's two faces share the products with the ray and one reciprocal, and
+                // its entry and exit come from a min and a max, not from branches on the
+                // direction's side (mispredicted on a third of trough's faces). The products by
+                // the reciprocal round once more than the quotients: a few ulps of `t`, far
+                // below the final padding (1e-7 of the reach), so the window still holds every
+                // kept crossing, which is all it must do (`roots_in_window`).
+                let mut nan = false;
+                for &(n, top, bottom) in &planes.slabs {
+                    let (nd, no) = (n.dot(ray.dir), n.dot(ray.origin));
+                    if nd == 0.0 {
+                        // Parallel: left unbounded, as by each face alone.
+                        continue;
+                    }
+                    let r = 1.0 / nd;
+                    let (ta, tb) = ((top - no) * r, (bottom - no) * r);
+                    nan |= ta.is_nan() | tb.is_nan();
+                    lo = lo.max(ta.min(tb));
+                    hi = hi.min(ta.max(tb));
+                }
+                if nan {
+                    return Range::All;
+                }
+                for &(n, d) in &planes.single {
                     // n·(o + t·dir) <= d; a ray parallel to a plane is left unbounded by it.
                     let (nd, no) = (n.dot(ray.dir), n.dot(ray.origin));
                     let t = (d - no) / nd;
@@ -215,14 +311,68 @@ fn ball_of(o: &Object) -> Option<Ball> {
         return None;
     }
     let (centre, r) = s.ball()?;
-    (r > 0.0 && r.is_finite() && centre.is_finite()).then(|| Ball {
-        inv: o.transform.as_ref().map(|t| t.inv),
-        centre,
-        radius: r * (1.0 + 1e-6),
+    if !(r > 0.0 && r.is_finite() && centre.is_finite()) {
+        return None;
+    }
+    let radius = r * (1.0 + 1e-6);
+    Some(match &o.transform {
+        None => Ball {
+            inv: None,
+            centre,
+            radius,
+        },
+        Some(t) => world_ball(&t.m, centre, radius).unwrap_or(Ball {
+            inv: Some(t.inv),
+            centre,
+            radius,
+        }),
+    })
+}
+
+/// The ball of `centre` and `radius` through `m` as a ball in world space, when `m` turns,
+/// moves and scales evenly (up to 1e-6): the ray then needs no map into the sphere's space,
+/// a matrix product at the head of `chord`'s chain of dependent steps on every ray.
+///
+/// It holds the mapped ball: a point `c + v` (`|v| <= radius`) maps to `m(c) + Mv`, and
+/// `|Mv| <= σ·|v|` with `σ²` the largest eigenvalue of `MᵀM`, at most the largest row sum
+/// of its absolute values (Gershgorin): `s2 + off` below. The roundings of those sums and of
+/// `m(c)` (a few ulps of `|M||c| + |m(0)|`) are covered by the padding.
+fn world_ball(m: &DMat4, centre: DVec3, radius: f64) -> Option<Ball> {
+    let cols = [
+        m.x_axis.truncate(),
+        m.y_axis.truncate(),
+        m.z_axis.truncate(),
+    ];
+    let len2 = cols.map(|c| c.length_squared());
+    let s2 = len2[0].max(len2[1]).max(len2[2]);
+    let off = (0..3)
+        .map(|i| {
+            (0..3)
+                .filter(|&j| j != i)
+                .map(|j| cols[i].dot(cols[j]).abs())
+                .sum::<f64>()
+        })
+        .fold(0.0, f64::max);
+    let low = len2[0].min(len2[1]).min(len2[2]);
+    if !(s2.is_finite() && low > 0.0 && low >= s2 * (1.0 - 1e-6) && off <= 1e-6 * s2) {
+        return None;
+    }
+    let world = m.transform_point3(centre);
+    let reach = s2.sqrt() * centre.abs().element_sum() + m.w_axis.truncate().abs().element_sum();
+    let radius = radius * ((s2 + off) * (1.0 + 1e-12)).sqrt() * (1.0 + 1e-9) + 1e-12 * reach;
+    (world.is_finite() && radius.is_finite()).then_some(Ball {
+        inv: None,
+        centre: world,
+        radius,
     })
 }
 
 impl Ball {
+    /// The box of the (world) ball.
+    fn world_box(&self) -> Aabb {
+        Aabb::new(self.centre - self.radius, self.centre + self.radius)
+    }
+
     /// The stretch of the ray (world `t`) inside the padded ball, itself padded by 1e-7 of
     /// its ends as boxes are; `None` when the ray misses it. From the point of the line
     /// nearest the centre (no cancellation between `b²` and `4ac`): every rounding here is a
@@ -243,7 +393,10 @@ impl Ball {
         if !near {
             return Some((f64::NEG_INFINITY, f64::INFINITY));
         }
-        let tm = -oc.dot(d) / a;
+        // One division, beside the dot product rather than after it: the two quotients by `a`
+        // of the chain become products, a rounding each more, far below the padding.
+        let inv_a = 1.0 / a;
+        let tm = -oc.dot(d) * inv_a;
         let h = oc + d * tm;
         let gap = r2 - h.length_squared();
         if gap < 0.0 {
@@ -252,7 +405,7 @@ impl Ball {
         if gap.is_nan() {
             return Some((f64::NEG_INFINITY, f64::INFINITY));
         }
-        let half = (gap / a).sqrt();
+        let half = (gap * inv_a).sqrt();
         let (b0, b1) = (tm - half, tm + half);
         let pad = 1e-7 * (b0.abs().max(b1.abs()) + 1.0);
         Some((b0 - pad, b1 + pad))
@@ -515,6 +668,41 @@ mod tests {
                     let (b0, b1) = chord.expect("a point inside, but no chord");
                     assert!(b0 <= t && t <= b1, "{t} {b0} {b1}");
                 }
+            }
+        }
+    }
+
+    /// A sphere's ball carried into world space through a turn, an even scale and a move (and
+    /// through maps that squash it by up to 1e-6) holds the map of every point of the padded
+    /// ball; a map that squashes it more keeps the ball in the sphere's space.
+    #[test]
+    fn world_ball_holds_the_mapped_ball() {
+        let mut unit = crate::math::xorshift_unit(0x5851_f42d_4c95_7f2d);
+        let mut rnd = move || unit() * 2.0 - 1.0;
+        for case in 0..3000 {
+            let axis = DVec3::new(rnd(), rnd(), rnd()).normalize();
+            let scale = 10f64.powf(3.0 * rnd());
+            let squash = match case % 3 {
+                0 => DVec3::ONE,
+                1 => DVec3::new(1.0, 1.0 + 2e-7 * rnd(), 1.0 - 2e-7 * rnd().abs()),
+                _ => DVec3::new(1.0, 1.0 + 1e-3 + rnd().abs(), 1.0),
+            };
+            let m = DMat4::from_scale_rotation_translation(
+                squash * scale,
+                glam::DQuat::from_axis_angle(axis, 3.0 * rnd()),
+                DVec3::new(rnd(), rnd(), rnd()) * 10f64.powf(4.0 * rnd()),
+            );
+            let centre = DVec3::new(rnd(), rnd(), rnd()) * 5.0;
+            let radius = (0.1 + rnd().abs() * 3.0) * (1.0 + 1e-6);
+            let Some(b) = world_ball(&m, centre, radius) else {
+                assert_eq!(case % 3, 2, "{m:?}");
+                continue;
+            };
+            assert_ne!(case % 3, 2, "{m:?}");
+            for _ in 0..200 {
+                let v = DVec3::new(rnd(), rnd(), rnd()).normalize() * radius;
+                let p = m.transform_point3(centre + v);
+                assert!((p - b.centre).length() <= b.radius, "{p} {:?}", b.centre);
             }
         }
     }
