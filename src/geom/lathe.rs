@@ -11,7 +11,9 @@
 //! The problem is scaled so the bounding cylinder has radius 1 and the ray origin moved to
 //! where the ray enters it, as the torus does, so the coefficients stay of order one.
 
-use crate::geom::spline2d::{inside_even_odd, sign_changes, Piece, SplineKind, P2};
+use crate::geom::spline2d::{
+    inside_even_odd, sign_changes, sign_changes_until, Piece, SplineKind, P2,
+};
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
 
@@ -130,7 +132,7 @@ impl Lathe {
                 continue;
             }
             if dy.abs() >= FLAT {
-                self.sloped(pc, i, o, [a, b, c], dy, found);
+                self.sloped(pc, i, o, [a, b, c], dy, None, found);
             } else {
                 self.flat(pc, i, o, [a, b, c], dy, found);
             }
@@ -223,23 +225,42 @@ impl Lathe {
                 break;
             }
             let pc = &self.pieces[i as usize];
-            self.sloped(pc, i as usize, o, [a, b, c], dy, &mut |t, i, s| {
-                let t = (t + shift) * back;
-                if t > EPSILON
-                    && t < tmax
-                    && best.is_none_or(|h| t < h.t || (t == h.t && (i as u32) < h.part))
-                {
-                    best = Some(Hit {
-                        t,
-                        part: i as u32,
-                        uv: [s, 0.0],
-                    });
-                }
-            });
+            // A crossing of this piece is kept only after EPSILON, before `tmax` and before
+            // the best (a tie with an earlier piece's cannot win, nor one of this piece's).
+            let leave = Leave {
+                shift,
+                back,
+                inv_dy: inv[0],
+                after: EPSILON,
+                before: tmax,
+                past: best.map_or(f64::INFINITY, |h| h.t),
+            };
+            self.sloped(
+                pc,
+                i as usize,
+                o,
+                [a, b, c],
+                dy,
+                Some(leave),
+                &mut |t, i, s| {
+                    let t = (t + shift) * back;
+                    if t > EPSILON
+                        && t < tmax
+                        && best.is_none_or(|h| t < h.t || (t == h.t && (i as u32) < h.part))
+                    {
+                        best = Some(Hit {
+                            t,
+                            part: i as u32,
+                            uv: [s, 0.0],
+                        });
+                    }
+                },
+            );
         }
         best
     }
 
+    #[allow(clippy::too_many_arguments)]
     fn sloped(
         &self,
         pc: &Piece,
@@ -247,15 +268,16 @@ impl Lathe {
         o: DVec3,
         [a, b, c]: [f64; 3],
         dy: f64,
+        leave: Option<Leave>,
         found: &mut impl FnMut(f64, usize, f64),
     ) {
         // dy²(c − r²) + 2 b dy (h − oy) + a (h − oy)², zero where the ray meets the surface.
         let mut hh = pc.y;
         hh[0] -= o.y;
         if pc.is_linear() && hh[0].is_finite() {
-            return self.sloped_linear(pc, i, o, [a, b, c], dy, hh, found);
+            return self.sloped_linear(pc, i, o, [a, b, c], dy, hh, leave, found);
         }
-        self.sloped_general(pc, i, o, [a, b, c], dy, hh, found);
+        self.sloped_general(pc, i, o, [a, b, c], dy, hh, leave, found);
     }
 
     /// `sloped` for any piece: `f` over all seven terms. Its own function so that the tests
@@ -270,6 +292,7 @@ impl Lathe {
         [a, b, c]: [f64; 3],
         dy: f64,
         hh: [f64; 4],
+        leave: Option<Leave>,
         found: &mut impl FnMut(f64, usize, f64),
     ) {
         let (r2, h2) = (&self.r2[i], mul(&hh, &hh));
@@ -281,7 +304,7 @@ impl Lathe {
             }
         }
         f[0] += dy * dy * c;
-        sloped_roots(&f, pc, i, o.y, [a, b, c], dy, found);
+        sloped_roots(&f, pc, i, o.y, [a, b, c], dy, leave, found);
     }
 
     /// `sloped` for a straight piece: `f`'s terms past the square are sums of zero products
@@ -300,6 +323,7 @@ impl Lathe {
         [a, b, c]: [f64; 3],
         dy: f64,
         hh: [f64; 4],
+        leave: Option<Leave>,
         found: &mut impl FnMut(f64, usize, f64),
     ) {
         let r2 = &self.r2[i];
@@ -314,7 +338,7 @@ impl Lathe {
             f[k] += 2.0 * b * dy * hh[k];
         }
         f[0] += dy * dy * c;
-        sloped_roots(&f, pc, i, o.y, [a, b, c], dy, found);
+        sloped_roots(&f, pc, i, o.y, [a, b, c], dy, leave, found);
     }
 
     fn flat(
@@ -491,6 +515,7 @@ impl Shape for Lathe {
 /// The crossings of a sloped piece whose equation in the piece's parameter is `f`: its roots
 /// in [0, 1] (the ends' values by the unexpanded form), each with the ray's distance.
 #[inline(always)]
+#[allow(clippy::too_many_arguments)]
 fn sloped_roots(
     f: &[f64],
     pc: &Piece,
@@ -498,16 +523,45 @@ fn sloped_roots(
     oy: f64,
     [a, b, c]: [f64; 3],
     dy: f64,
+    leave: Option<Leave>,
     found: &mut impl FnMut(f64, usize, f64),
 ) {
     let end = |q: P2| {
         let e = q[1] - oy;
         dy * dy * (c - q[0] * q[0]) + 2.0 * b * dy * e + a * e * e
     };
-    sign_changes(f, 0.0, 1.0, end(pc.p0), end(pc.p1), |s| {
-        let t = (crate::geom::poly::eval(&pc.y, s) - oy) / dy;
-        found(t, i, s);
+    // A crossing's `t` is linear in the piece's height: bounds of the height over a bracket
+    // bound it, widened far above the rounding of the quotient, the shift and the scaling
+    // (as `first_sloped`'s floors are).
+    let settle = |s0: f64, s1: f64| -> Option<()> {
+        let k = leave?;
+        let (y0, y1) = crate::geom::spline2d::hull_on(&pc.y, s0, s1);
+        let (t0, t1) = ((y0 - oy) * k.inv_dy, (y1 - oy) * k.inv_dy);
+        let (lo, hi) = (t0.min(t1), t0.max(t1));
+        let m = 1e-9
+            * (lo.abs() + hi.abs() + k.shift.abs() + (y0.abs() + y1.abs() + oy.abs()) / dy.abs());
+        let (lo, hi) = ((lo - m + k.shift) * k.back, (hi + m + k.shift) * k.back);
+        (hi <= k.after || lo >= k.before || lo > k.past).then_some(())
+    };
+    sign_changes_until(f, 0.0, 1.0, end(pc.p0), end(pc.p1), settle, |r| {
+        if let Ok(s) = r {
+            let t = (crate::geom::poly::eval(&pc.y, s) - oy) / dy;
+            found(t, i, s);
+        }
     });
+}
+
+/// The crossings `first_sloped` cannot keep, for `sloped_roots`: those whose `t`, taken back
+/// to the ray's (`(t + shift) · back`), is at or below `after`, at or past `before`, or past
+/// `past`. `inv_dy` is `1 / dy`.
+#[derive(Clone, Copy)]
+pub(super) struct Leave {
+    shift: f64,
+    back: f64,
+    inv_dy: f64,
+    after: f64,
+    before: f64,
+    past: f64,
 }
 
 #[cfg(test)]

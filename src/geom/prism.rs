@@ -7,7 +7,7 @@
 //! where a cubic in the piece's parameter changes sign. Caps and `inside` use the even-odd rule
 //! over all sub-outlines, so nested outlines make holes as in POV-Ray.
 
-use crate::geom::spline2d::{inside_even_odd, sign_changes, Piece, SplineKind, P2};
+use crate::geom::spline2d::{hull_on, inside_even_odd, sign_changes_until, Piece, SplineKind, P2};
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
 
@@ -199,8 +199,16 @@ impl Prism {
         !(c.iter().all(|&v| v > 0.0) || c.iter().all(|&v| v < 0.0))
     }
 
-    /// The wall crossings of piece `i`, in increasing s.
-    fn piece_hits(&self, ray: &Ray, plane: (f64, f64, f64), i: usize, mut found: impl FnMut(Hit)) {
+    /// The wall crossings of piece `i`, in increasing s; with `keep` (a linear sweep), only
+    /// those it may keep are refined to the end, the others may be left out.
+    fn piece_hits(
+        &self,
+        ray: &Ray,
+        plane: (f64, f64, f64),
+        i: usize,
+        keep: Option<Keep>,
+        mut found: impl FnMut(Hit),
+    ) {
         let (o, d) = (ray.origin, ray.dir);
         let (nx, c0, nz) = plane;
         let g = |q: P2| nx * q[0] + nz * q[1] + c0;
@@ -228,7 +236,29 @@ impl Prism {
         }
         let mut c: [f64; 4] = std::array::from_fn(|j| nx * pc.x[j] + nz * pc.y[j]);
         c[0] += c0;
-        sign_changes(&c, 0.0, 1.0, g0, g1, |s| hit(s, pc.at(s)));
+        // The numerator of `wall_t`'s linear `t` along the piece, and a margin far above its
+        // rounding and the curve's (as in `wall_t_range`), made at the first bracket asked.
+        let mut along: Option<([f64; 4], f64)> = None;
+        let settle = |a: f64, b: f64| -> Option<()> {
+            let k = keep?;
+            let (n, m) = *along.get_or_insert_with(|| {
+                let mut n: [f64; 4] = std::array::from_fn(|j| pc.x[j] * d.x + pc.y[j] * d.z);
+                n[0] -= o.x * d.x + o.z * d.z;
+                let size = (pc.hi[0] - pc.lo[0]).max(pc.hi[1] - pc.lo[1]);
+                let far = |i: usize| pc.lo[i].abs().max(pc.hi[i].abs()) + size;
+                let mag = (far(0) + o.x.abs()) * d.x.abs() + (far(1) + o.z.abs()) * d.z.abs();
+                (n, 1e-9 * mag)
+            });
+            let (lo, hi) = hull_on(&n, a, b);
+            let floor = (lo - (m + 1e-9 * lo.abs())) * k.inv_dd;
+            let ceil = (hi + (m + 1e-9 * hi.abs())) * k.inv_dd;
+            (ceil < k.lo || floor > k.hi || floor >= k.before).then_some(())
+        };
+        sign_changes_until(&c, 0.0, 1.0, g0, g1, settle, |r| {
+            if let Ok(s) = r {
+                hit(s, pc.at(s))
+            }
+        });
     }
 
     fn walls(&self, ray: &Ray, out: &mut Vec<Hit>) {
@@ -242,9 +272,10 @@ impl Prism {
         };
         let (nx, c0, nz) = plane;
         let g = |q: P2| nx * q[0] + nz * q[1] + c0;
+        let keep = window.keep();
         for (i, pc) in self.pieces.iter().enumerate() {
             if Self::may_cut(pc, g) && window.may_hold(pc) {
-                self.piece_hits(ray, plane, i, |h| out.push(h));
+                self.piece_hits(ray, plane, i, keep, |h| out.push(h));
             }
         }
     }
@@ -359,13 +390,13 @@ impl Prism {
         let (o, d) = (ray.origin, ray.dir);
         cand.clear();
         let plane = self.cut_plane(ray);
+        let inv_dd = Self::inv_dd(d);
+        // A crossing outside the heights is dropped by `wall_t`: pieces whose `t` range
+        // misses the heights' are never refined (a steep ray crosses the heights over a
+        // short stretch, and most pieces the cut plane meets lie outside it).
+        let (y_lo, y_hi) = self.height_t_range(o, d);
         if let Some((nx, c0, nz)) = plane {
             let g = |q: P2| nx * q[0] + nz * q[1] + c0;
-            let inv_dd = Self::inv_dd(d);
-            // A crossing outside the heights is dropped by `wall_t`: pieces whose `t` range
-            // misses the heights' are never refined (a steep ray crosses the heights over a
-            // short stretch, and most pieces the cut plane meets lie outside it).
-            let (y_lo, y_hi) = self.height_t_range(o, d);
             for (i, pc) in self.pieces.iter().enumerate() {
                 if Self::may_cut(pc, g) {
                     let (floor, ceil) = Self::wall_t_range(pc, o, d, inv_dd);
@@ -402,7 +433,16 @@ impl Prism {
             }
             if c.part < n_pieces {
                 if let Some(plane) = plane {
-                    self.piece_hits(ray, plane, c.part as usize, |h| offer(h, c.part, &mut best));
+                    // A crossing is offered only within the heights, and kept only before
+                    // `tmax` and the best (a tie cannot win: the best came earlier).
+                    let keep = Keep {
+                        lo: y_lo,
+                        hi: y_hi.min(best.map_or(f64::INFINITY, |(b, _)| b.t)),
+                        before: tmax,
+                        inv_dd,
+                    };
+                    let i = c.part as usize;
+                    self.piece_hits(ray, plane, i, Some(keep), |h| offer(h, c.part, &mut best));
                 }
             } else {
                 let (h, part) = if c.part == n_pieces {
@@ -460,6 +500,16 @@ impl Prism {
     }
 }
 
+/// The `t` a linear sweep's wall crossing must have for the caller: within `[lo, hi]` and
+/// below `before`; `inv_dd` as in `Prism::wall_t_range`.
+#[derive(Clone, Copy)]
+struct Keep {
+    lo: f64,
+    hi: f64,
+    before: f64,
+    inv_dd: f64,
+}
+
 /// Which outline pieces can hold a wall crossing that `wall_t` keeps (within the heights),
 /// for one ray: a cheap test before the crossings are solved and refined.
 enum Window {
@@ -482,6 +532,21 @@ enum Window {
 }
 
 impl Window {
+    /// The crossings a linear sweep keeps: those within the heights.
+    fn keep(&self) -> Option<Keep> {
+        match *self {
+            Window::Linear {
+                inv_dd, y_lo, y_hi, ..
+            } => Some(Keep {
+                lo: y_lo,
+                hi: y_hi,
+                before: f64::INFINITY,
+                inv_dd,
+            }),
+            _ => None,
+        }
+    }
+
     fn may_hold(&self, pc: &Piece) -> bool {
         match *self {
             Window::All => true,

@@ -139,7 +139,36 @@ impl Piece {
 /// Calls `found` with every s in [lo, hi] where the polynomial `c` changes sign, zero counting
 /// as positive. `f_lo` and `f_hi` stand for the polynomial's values at the ends: the caller
 /// computes them from exact data so that neighbouring pieces agree on them.
-pub fn sign_changes(c: &[f64], lo: f64, hi: f64, f_lo: f64, f_hi: f64, found: impl FnMut(f64)) {
+pub fn sign_changes(c: &[f64], lo: f64, hi: f64, f_lo: f64, f_hi: f64, mut found: impl FnMut(f64)) {
+    sign_changes_until(
+        c,
+        lo,
+        hi,
+        f_lo,
+        f_hi,
+        |_, _| None::<std::convert::Infallible>,
+        |r| match r {
+            Ok(s) => found(s),
+            Err(never) => match never {},
+        },
+    );
+}
+
+/// [`sign_changes`] for callers that may not need a root's last bits: before each of its
+/// Newton steps, `settle(a, b)` sees the bracket that holds the root the refinement would
+/// return (its iterates never leave it), and a `Some` ends that root's refinement, reported to
+/// `found` as `Err`. A root refined to the end is `Ok`, the same bits as `sign_changes`' (the
+/// same iterates). Callers answer from bounds of their own functions over the bracket (see
+/// [`hull_on`]): most roots a ray's pieces hold are beyond what the caller keeps.
+pub fn sign_changes_until<R>(
+    c: &[f64],
+    lo: f64,
+    hi: f64,
+    f_lo: f64,
+    f_hi: f64,
+    settle: impl FnMut(f64, f64) -> Option<R>,
+    found: impl FnMut(Result<f64, R>),
+) {
     let n = c.iter().rposition(|&v| v != 0.0).map_or(0, |i| i + 1);
     if lo.is_nan() || hi.is_nan() || lo > hi || n > 17 {
         return;
@@ -148,17 +177,26 @@ pub fn sign_changes(c: &[f64], lo: f64, hi: f64, f_lo: f64, f_hi: f64, found: im
     // constant length lets LLVM unroll the evaluations (the same operations in the same
     // order, so the same roots to the bit).
     let c = &c[..n];
+    let (s, f) = (settle, found);
     match n {
-        3 => changes_body(<&[f64; 3]>::try_from(c).unwrap(), lo, hi, f_lo, f_hi, found),
-        4 => changes_body(<&[f64; 4]>::try_from(c).unwrap(), lo, hi, f_lo, f_hi, found),
-        5 => changes_body(<&[f64; 5]>::try_from(c).unwrap(), lo, hi, f_lo, f_hi, found),
-        7 => changes_body(<&[f64; 7]>::try_from(c).unwrap(), lo, hi, f_lo, f_hi, found),
-        _ => changes_body(c, lo, hi, f_lo, f_hi, found),
+        3 => changes_body(<&[f64; 3]>::try_from(c).unwrap(), lo, hi, f_lo, f_hi, s, f),
+        4 => changes_body(<&[f64; 4]>::try_from(c).unwrap(), lo, hi, f_lo, f_hi, s, f),
+        5 => changes_body(<&[f64; 5]>::try_from(c).unwrap(), lo, hi, f_lo, f_hi, s, f),
+        7 => changes_body(<&[f64; 7]>::try_from(c).unwrap(), lo, hi, f_lo, f_hi, s, f),
+        _ => changes_body(c, lo, hi, f_lo, f_hi, s, f),
     }
 }
 
 #[inline(always)]
-fn changes_body(c: &[f64], lo: f64, hi: f64, f_lo: f64, f_hi: f64, mut found: impl FnMut(f64)) {
+fn changes_body<R>(
+    c: &[f64],
+    lo: f64,
+    hi: f64,
+    f_lo: f64,
+    f_hi: f64,
+    mut settle: impl FnMut(f64, f64) -> Option<R>,
+    mut found: impl FnMut(Result<f64, R>),
+) {
     let n = c.len();
     if n > 2 && lo == 0.0 && hi == 1.0 && no_sign_change(c, f_lo, f_hi) {
         return;
@@ -193,7 +231,7 @@ fn changes_body(c: &[f64], lo: f64, hi: f64, f_lo: f64, f_hi: f64, mut found: im
         .chain(std::iter::once((hi, f_hi)))
     {
         if (fa >= 0.0) != (fb >= 0.0) {
-            found(refine(c, a, b, fa < 0.0));
+            found(refine_until(c, a, b, fa < 0.0, &mut settle));
         }
         a = b;
         fa = fb;
@@ -222,14 +260,25 @@ fn no_sign_change(c: &[f64], f_lo: f64, f_hi: f64) -> bool {
     (0..=n).all(|k| if positive { b(k) > 0.0 } else { b(k) < 0.0 })
 }
 
-/// A root in the bracket `[a, b]` by Newton steps kept inside a shrinking bracket.
+/// A root in the bracket `[a, b]` by Newton steps kept inside a shrinking bracket, or
+/// `settle`'s answer for a bracket on the way (asked before each step; the iterates and the
+/// root returned never leave the bracket it is shown).
 #[inline(always)]
-fn refine(c: &[f64], mut a: f64, mut b: f64, neg_at_a: bool) -> f64 {
+fn refine_until<R>(
+    c: &[f64],
+    mut a: f64,
+    mut b: f64,
+    neg_at_a: bool,
+    mut settle: impl FnMut(f64, f64) -> Option<R>,
+) -> Result<f64, R> {
     let mut x = 0.5 * (a + b);
     for _ in 0..100 {
+        if let Some(r) = settle(a, b) {
+            return Err(r);
+        }
         let (f, df) = eval_with_derivative(c, x);
         if f == 0.0 {
-            return x;
+            return Ok(x);
         }
         if (f < 0.0) == neg_at_a {
             a = x;
@@ -244,11 +293,24 @@ fn refine(c: &[f64], mut a: f64, mut b: f64, neg_at_a: bool) -> f64 {
         };
         let tol = 4.0 * f64::EPSILON * next.abs().max(1e-300);
         if (next - x).abs() <= tol || b - a <= tol {
-            return next;
+            return Ok(next);
         }
         x = next;
     }
-    x
+    Ok(x)
+}
+
+/// Bounds of the cubic `p` (or a lower degree, zeros on top) over `[a, b]`, `a ≤ b`: the least
+/// and greatest of its Bézier control values there, from its values and slopes at the ends.
+/// Rounding can put them a few ulps of `Σ |p_i| max(1, |a|, |b|)³` inside the true bounds;
+/// callers widen them by far more.
+#[inline(always)]
+pub fn hull_on(p: &[f64; 4], a: f64, b: f64) -> (f64, f64) {
+    let (pa, da) = eval_with_derivative(p, a);
+    let (pb, db) = eval_with_derivative(p, b);
+    let h3 = (b - a) * (1.0 / 3.0);
+    let (c1, c2) = (pa + da * h3, pb - db * h3);
+    (pa.min(pb).min(c1.min(c2)), pa.max(pb).max(c1.max(c2)))
 }
 
 /// Whether the horizontal half-line from `p` towards +x crosses the pieces an odd number of
@@ -285,7 +347,27 @@ pub fn inside_even_odd(pieces: &[Piece], p: P2, radial: bool) -> bool {
         }
         let mut c = pc.y;
         c[0] -= p[1];
-        sign_changes(&c, 0.0, 1.0, g0, g1, |s| odd ^= right_of(eval(&pc.x, s)));
+        // A crossing's side is settled once the curve's x over its bracket is wholly on one
+        // side of p's (or, radially, of ±p's), by a margin far above the rounding of the hull
+        // and of `eval` at the root: the root itself is not needed then.
+        let m = 1e-9 * (pc.lo[0].abs().max(pc.hi[0].abs()) + p[0].abs());
+        let settle = |a: f64, b: f64| {
+            let (lo, hi) = hull_on(&pc.x, a, b);
+            let (lo, hi) = (lo - m, hi + m);
+            if lo > p[0] || (radial && hi < -p[0]) {
+                Some(true)
+            } else if hi < p[0] && !(radial && lo <= -p[0]) {
+                Some(false)
+            } else {
+                None
+            }
+        };
+        sign_changes_until(&c, 0.0, 1.0, g0, g1, settle, |r| {
+            odd ^= match r {
+                Ok(s) => right_of(eval(&pc.x, s)),
+                Err(right) => right,
+            }
+        });
     }
     odd
 }
@@ -370,13 +452,140 @@ mod tests {
             let mut fixed = Vec::new();
             sign_changes(&c, lo, hi, f_lo, f_hi, |s| fixed.push(s.to_bits()));
             let mut slice = Vec::new();
-            changes_body(std::hint::black_box(&c[..]), lo, hi, f_lo, f_hi, |s| {
-                slice.push(s.to_bits())
-            });
+            let never = |_, _| None::<()>;
+            changes_body(
+                std::hint::black_box(&c[..]),
+                lo,
+                hi,
+                f_lo,
+                f_hi,
+                never,
+                |s| slice.push(s.unwrap().to_bits()),
+            );
             assert_eq!(fixed, slice, "{c:?} on [{lo}, {hi}]");
             found += fixed.len();
         }
         assert!(found > 10_000, "{found}");
+    }
+
+    /// `sign_changes_until` shows `settle` only brackets that hold the root the refinement
+    /// returns, and with a `settle` that never answers it finds `sign_changes`' roots to the bit.
+    #[test]
+    fn settled_brackets_hold_the_root() {
+        let mut rng = crate::geom::test_rng::Lcg(0x5e7);
+        let mut shown = 0;
+        for case in 0..20_000 {
+            let len = [3, 4, 5, 7][case % 4];
+            let roots: Vec<f64> = (0..len - 1).map(|_| rng.next() * 1.6 - 0.3).collect();
+            let mut c = crate::geom::test_rng::from_roots(&roots);
+            c[0] += (rng.next() - 0.5) * if case % 3 == 0 { 1e-9 } else { 0.2 };
+            let (f_lo, f_hi) = (eval(&c, 0.0), eval(&c, 1.0));
+            let mut plain = Vec::new();
+            sign_changes(&c, 0.0, 1.0, f_lo, f_hi, |s| plain.push(s));
+            let (mut brackets, mut got) = (Vec::new(), Vec::new());
+            // Which root the brackets shown belong to: the count found so far.
+            let n = std::cell::Cell::new(0);
+            let settle = |a: f64, b: f64| {
+                brackets.push((a, b, n.get()));
+                None::<()>
+            };
+            sign_changes_until(&c, 0.0, 1.0, f_lo, f_hi, settle, |r| {
+                got.push(r.unwrap());
+                n.set(n.get() + 1);
+            });
+            let bits = |v: &[f64]| v.iter().map(|s| s.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&got), bits(&plain), "{c:?}");
+            for (a, b, k) in brackets {
+                assert!(
+                    a <= got[k] && got[k] <= b,
+                    "{c:?}: {} not in [{a}, {b}]",
+                    got[k]
+                );
+                shown += 1;
+            }
+        }
+        assert!(shown > 50_000, "{shown}");
+    }
+
+    /// The even-odd test as it was before crossings were settled by the hull of x: every
+    /// crossing refined, its x compared.
+    fn inside_refining_all(pieces: &[Piece], p: P2, radial: bool) -> bool {
+        let mut odd = false;
+        for pc in pieces {
+            if p[1] < pc.lo[1] || p[1] > pc.hi[1] {
+                continue;
+            }
+            let g0 = pc.p0[1] - p[1];
+            let g1 = pc.p1[1] - p[1];
+            let right_of = |x: f64| if radial { x.abs() > p[0] } else { x > p[0] };
+            let all_right = if radial {
+                pc.lo[0] > p[0] || -pc.hi[0] > p[0]
+            } else {
+                pc.lo[0] > p[0]
+            };
+            if all_right {
+                odd ^= (g0 >= 0.0) != (g1 >= 0.0);
+                continue;
+            }
+            if !radial && pc.hi[0] <= p[0] {
+                continue;
+            }
+            if pc.is_linear() {
+                if (g0 >= 0.0) != (g1 >= 0.0) {
+                    let s = g0 / (g0 - g1);
+                    odd ^= right_of(pc.p0[0] + s * (pc.p1[0] - pc.p0[0]));
+                }
+                continue;
+            }
+            let mut c = pc.y;
+            c[0] -= p[1];
+            sign_changes(&c, 0.0, 1.0, g0, g1, |s| odd ^= right_of(eval(&pc.x, s)));
+        }
+        odd
+    }
+
+    /// Random outlines of every kind and points near them (many level with a vertex or on the
+    /// curve's x): the settled even-odd test answers as the one that refines every crossing.
+    #[test]
+    fn settled_even_odd_is_the_refined_one() {
+        let mut rng = crate::geom::test_rng::Lcg(0xe0d);
+        let mut inside = 0;
+        for case in 0..3000 {
+            let pts: Vec<P2> = (0..9)
+                .map(|_| [rng.next() * 4.0 - 1.0, rng.next() * 4.0 - 2.0])
+                .collect();
+            let pieces: Vec<Piece> = (0..6)
+                .map(|i| {
+                    let (a, b, c, d) = (pts[i], pts[i + 1], pts[i + 2], pts[i + 3]);
+                    match (case + i) % 4 {
+                        0 => Piece::linear(b, c),
+                        1 => Piece::quadratic(a, b, c),
+                        2 => Piece::cubic(a, b, c, d),
+                        _ => Piece::bezier(a, b, c, d),
+                    }
+                })
+                .collect();
+            for k in 0..40 {
+                let pc = &pieces[k % 6];
+                let s = rng.next();
+                let mut p = match k % 4 {
+                    0 => [rng.next() * 5.0 - 2.0, rng.next() * 5.0 - 2.5],
+                    1 => pc.p0,
+                    _ => pc.at(s),
+                };
+                p[0] += (rng.next() - 0.5) * [0.0, 1e-12, 1e-3, 1.0][k % 4];
+                for radial in [false, true] {
+                    let want = inside_refining_all(&pieces, p, radial);
+                    assert_eq!(
+                        inside_even_odd(&pieces, p, radial),
+                        want,
+                        "{pieces:?} {p:?}"
+                    );
+                    inside += want as u32;
+                }
+            }
+        }
+        assert!(inside > 20_000, "{inside}");
     }
 
     #[test]

@@ -233,14 +233,14 @@ fn straight_pieces_match_the_general_path() {
             );
             for (i, pc) in l.pieces.iter().enumerate() {
                 let mut fast = Vec::new();
-                l.sloped(pc, i, o, [a, b, c], u.y, &mut |t, _, s| {
+                l.sloped(pc, i, o, [a, b, c], u.y, None, &mut |t, _, s| {
                     fast.push((t.to_bits(), s.to_bits()))
                 });
                 // The general path, as `sloped` computes it for any piece.
                 let mut hh = pc.y;
                 hh[0] -= o.y;
                 let mut slow = Vec::new();
-                l.sloped_general(pc, i, o, [a, b, c], u.y, hh, &mut |t, _, s| {
+                l.sloped_general(pc, i, o, [a, b, c], u.y, hh, None, &mut |t, _, s| {
                     slow.push((t.to_bits(), s.to_bits()))
                 });
                 assert_eq!(fast, slow);
