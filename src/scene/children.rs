@@ -100,10 +100,13 @@ fn set_culls(o: &mut Object) {
         // come cheaper through their faces (advanced/quilt1's clipped floor and wall). A union
         // given an index below drops them: the index numbers its leaves, not its members.
         let faces = crate::scene::faces::Faces::of(children);
-        *cull = (aabb.is_some() || faces.is_some()).then(|| {
+        let local = crate::scene::cull::LocalBox::of(*op, children, &aabb.unwrap_or(o.bounds))
+            .map(Box::new);
+        *cull = (aabb.is_some() || faces.is_some() || local.is_some()).then(|| {
             Box::new(crate::scene::object::Cull {
                 aabb,
                 faces,
+                local,
                 ..Default::default()
             })
         });

@@ -643,6 +643,10 @@ mod tests;
 #[path = "cull_polyhedron.rs"]
 mod polyhedron;
 
+#[path = "cull_local.rs"]
+mod local;
+pub use local::LocalBox;
+
 #[cfg(test)]
 #[path = "cull_window_tests.rs"]
 mod window_tests;

@@ -54,6 +54,9 @@ pub struct Cull {
     /// The members, when they are all boxes under one transform, of a node other than a
     /// union without index, box members, folds or faces (`scene::csg_framed`).
     pub framed: Option<Box<crate::scene::csg_framed::FramedBoxes>>,
+    /// A difference's box in its turned first member's space (`cull::LocalBox`), which a
+    /// ray listing the node's crossings must cross.
+    pub local: Option<Box<crate::scene::cull::LocalBox>>,
 }
 
 /// A shape's data with the textures of its parts (mesh triangles, blob components).
@@ -331,13 +334,16 @@ impl Object {
             } => {
                 let mine = s.surface.len();
                 let inv_dir = ray.dir.recip();
-                // Every crossing lies in the tight box.
-                if cull
-                    .as_ref()
-                    .and_then(|c| c.aabb.as_ref())
-                    .is_some_and(|c| c.hit(ray.origin, inv_dir, tmax).is_none())
-                {
-                    return;
+                // Every crossing lies in the tight box, and in a turned difference's box in
+                // its first member's space.
+                if let Some(c) = cull.as_deref() {
+                    if c.aabb
+                        .as_ref()
+                        .is_some_and(|b| b.hit(ray.origin, inv_dir, tmax).is_none())
+                        || c.local.as_deref().is_some_and(|l| l.misses(ray, tmax))
+                    {
+                        return;
+                    }
                 }
                 let index = index.as_deref();
                 let faces = cull.as_ref().and_then(|c| c.faces.as_ref());
