@@ -533,8 +533,15 @@ fn sloped_roots(
     // A crossing's `t` is linear in the piece's height: bounds of the height over a bracket
     // bound it, widened far above the rounding of the quotient, the shift and the scaling
     // (as `first_sloped`'s floors are).
+    let mut found_t = |s: f64| {
+        let t = (crate::geom::poly::eval(&pc.y, s) - oy) / dy;
+        found(t, i, s);
+    };
+    // Without a `Leave` (the CSG path) the plain search: no settle check in its Newton steps.
+    let Some(k) = leave else {
+        return sign_changes(f, 0.0, 1.0, end(pc.p0), end(pc.p1), found_t);
+    };
     let settle = |s0: f64, s1: f64| -> Option<()> {
-        let k = leave?;
         let (y0, y1) = crate::geom::spline2d::hull_on(&pc.y, s0, s1);
         let (t0, t1) = ((y0 - oy) * k.inv_dy, (y1 - oy) * k.inv_dy);
         let (lo, hi) = (t0.min(t1), t0.max(t1));
@@ -545,8 +552,7 @@ fn sloped_roots(
     };
     sign_changes_until(f, 0.0, 1.0, end(pc.p0), end(pc.p1), settle, |r| {
         if let Ok(s) = r {
-            let t = (crate::geom::poly::eval(&pc.y, s) - oy) / dy;
-            found(t, i, s);
+            found_t(s);
         }
     });
 }
