@@ -168,7 +168,9 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
             let c = super::pigment::eval(p, q);
             0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z
         }
-        PatternKind::Gradient(a) => gradient(q, *a),
+        // Read by coordinates for the same reason as onion and spherical below: `dot` and the
+        // three `abs` read y-z as one 16-byte load across the caller's x-y and z stores.
+        PatternKind::Gradient(a) => gradient(crate::math::by_coordinates(&q), *a),
         // `length` of the caller's copy of `q` read as three 8-byte loads (`by_coordinates`):
         // it read y-z as one 16-byte load across the caller's x-y and z stores, which cannot
         // be forwarded (34 % of `raw`'s samples on interior/media/media4). Only here: read so
@@ -177,7 +179,10 @@ fn raw(pat: &Pattern, q: DVec3) -> f64 {
         PatternKind::Radial => radial(q),
         PatternKind::Spherical => 1.0 - crate::math::by_coordinates(&q).length().min(1.0),
         PatternKind::Cylindrical => 1.0 - (q.x * q.x + q.z * q.z).sqrt().min(1.0),
-        PatternKind::Boxed => 1.0 - q.x.abs().max(q.y.abs()).max(q.z.abs()).min(1.0),
+        PatternKind::Boxed => {
+            let q = crate::math::by_coordinates(&q);
+            1.0 - q.x.abs().max(q.y.abs()).max(q.z.abs()).min(1.0)
+        }
         PatternKind::Planar => 1.0 - q.y.abs().min(1.0),
         PatternKind::Leopard => {
             let s = (q.x.sin() + q.y.sin() + q.z.sin()) / 3.0;
