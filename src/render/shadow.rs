@@ -371,7 +371,6 @@ impl<'a> Tracer<'a> {
                     return false;
                 }
                 let way = Way {
-                    ray: *ray,
                     l: ray.dir,
                     dist,
                     slot,
@@ -379,7 +378,7 @@ impl<'a> Tracer<'a> {
                     asked,
                 };
                 filtered = true;
-                self.through_transparent(obj, &way, ctx, &mut att)
+                self.through_transparent(obj, ray, &way, ctx, &mut att)
             },
         );
         if blocker.is_some() {
@@ -400,12 +399,12 @@ impl<'a> Tracer<'a> {
     fn through_transparent(
         &self,
         obj: &'a crate::scene::object::Object,
+        ray: &Ray,
         way: &Way<'a>,
         ctx: &mut TraceCtx<'a>,
         att: &mut DVec3,
     ) -> bool {
         let Way {
-            ray,
             l,
             dist,
             slot,
@@ -417,7 +416,7 @@ impl<'a> Tracer<'a> {
         // Taken here, not for every shadow ray: only transparent objects need it.
         let mut members = std::mem::take(&mut ctx.shadow_members);
         members.clear();
-        if obj.union_members(&ray, dist, ctx, &mut members) {
+        if obj.union_members(ray, dist, ctx, &mut members) {
             // A union's crossings are its members' in member order. Any crossing that
             // blocks makes the answer zero wherever it stands in that list, so the opaque
             // members (most of a scene wrapped in a clear container, as advanced/abyss's
@@ -431,7 +430,7 @@ impl<'a> Tracer<'a> {
                     let crossed = match asked {
                         Some((_, a, crossed)) if std::ptr::eq(a, m) => crossed,
                         _ => {
-                            if self.member_blocks(m, &ray, l, dist, photons_only, ctx) {
+                            if self.member_blocks(m, ray, l, dist, photons_only, ctx) {
                                 ctx.member_blockers[slot] = Some((obj, m));
                                 ctx.shadow_members = members;
                                 *att = DVec3::ZERO;
@@ -450,15 +449,15 @@ impl<'a> Tracer<'a> {
                 k += 1;
             }
             for &m in &members[..k] {
-                m.all_hits(&ray, dist, ctx);
+                m.all_hits(ray, dist, ctx);
             }
         } else {
-            obj.all_hits(&ray, dist, ctx);
+            obj.all_hits(ray, dist, ctx);
         }
         ctx.shadow_members = members;
         for i in start..ctx.surface.len() {
             let h = ctx.surface[i];
-            if self.crossing_blocks(&h, &ray, l, photons_only, Some(att)) {
+            if self.crossing_blocks(&h, ray, l, photons_only, Some(att)) {
                 *att = DVec3::ZERO;
                 break;
             }
@@ -481,7 +480,7 @@ impl<'a> Tracer<'a> {
                     if crate::math::by_coordinates(&h.obj.normal(ray.at(h.t), h)).dot(l) > 0.0 {
                         *att *= int.fade(h.t - last);
                         if int.has_media() {
-                            *att *= super::media::transmittance(&[int.media()], &ray, last, h.t);
+                            *att *= super::media::transmittance(&[int.media()], ray, last, h.t);
                         }
                     }
                 }
@@ -626,11 +625,14 @@ fn ray_at(at: &mut std::mem::MaybeUninit<Ray>, p: DVec3, l: DVec3) -> &Ray {
     at.write(Ray::new(p, l))
 }
 
-/// A shadow ray as `Tracer::through_transparent` needs it: the ray, its unit direction, how
-/// far it is tested, the light's number and whether refracting targets pass only photons.
+/// A shadow ray as `Tracer::through_transparent` needs it beside the ray itself: its unit
+/// direction, how far it is tested, the light's number and whether refracting targets pass
+/// only photons. The ray is passed as `shadow_in` wrote it (`ray_at`): a copy here was
+/// written in pieces that the walk's pair loads of its direction straddled, and each such
+/// load waited for the copy to reach the cache (a tenth of `union_members`' samples on
+/// advanced/abyss, on its first use of the direction).
 #[derive(Clone, Copy)]
 struct Way<'a> {
-    ray: Ray,
     l: DVec3,
     dist: f64,
     slot: usize,

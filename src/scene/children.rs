@@ -301,6 +301,13 @@ impl ChildIndex {
         }))
     }
 
+    /// Leaf `i`'s `bounds`, from the index's copy (the leaf itself is reached through its
+    /// member path, scattered in memory).
+    #[inline(always)]
+    pub fn leaf_box(&self, i: usize) -> &Aabb {
+        &self.leaf_bounds[i]
+    }
+
     /// Leaf `i` of the node whose members are `children`.
     #[inline(always)]
     pub fn leaf<'a>(&self, children: &'a [Object], i: usize) -> &'a Object {
