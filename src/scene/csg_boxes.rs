@@ -46,6 +46,35 @@ pub enum Search {
 /// The most members a node whose members are all boxes may have for `boxes_first_hit`.
 pub const MAX_ALL: usize = 8;
 
+/// Puts a box member's crossing into a search's `order` list, kept sorted by `order_key`
+/// (a later crossing with an equal key after the earlier ones), tagged `member << 8 | face`.
+#[inline(always)]
+pub(super) fn insert_crossing(
+    order: &mut [(i64, u32); 2 * MAX_ALL],
+    n: &mut usize,
+    i: usize,
+    hit: Hit,
+) {
+    let key = order_key(hit.t);
+    let mut k = *n;
+    while k > 0 && order[k - 1].0 > key {
+        order[k] = order[k - 1];
+        k -= 1;
+    }
+    order[k] = (key, (i as u32) << 8 | hit.part);
+    *n += 1;
+}
+
+/// The crossing an `order` entry holds: `t` is the key's inverse (`order_key` is an
+/// involution on the bits), the face the tag's low byte.
+#[inline(always)]
+pub(super) fn crossing_hit(key: i64, tag: u32) -> Hit {
+    Hit::with_part(
+        f64::from_bits(order_key(f64::from_bits(key as u64)) as u64),
+        tag & 0xff,
+    )
+}
+
 /// A box member: its shape, for a leaf without transform whose bounds hold the whole box, so
 /// that `Object::inside`'s bounds test can be left out: a point strictly inside the box is
 /// inside the bounds, and one outside the bounds is outside the box, so the box's own test
@@ -338,24 +367,14 @@ impl Object {
             }
             m.shape.each_crossing(ray, |hit| {
                 if hit.t < tmax {
-                    let key = order_key(hit.t);
-                    let mut k = n;
-                    while k > 0 && order[k - 1].0 > key {
-                        order[k] = order[k - 1];
-                        k -= 1;
-                    }
-                    order[k] = (key, (i as u32) << 8 | hit.part);
-                    n += 1;
+                    insert_crossing(&mut order, &mut n, i, hit);
                 }
             });
         }
         let clip = &self.clip[..];
         for &(key, tag) in &order[..n] {
             let i = (tag >> 8) as usize;
-            let hit = Hit::with_part(
-                f64::from_bits(order_key(f64::from_bits(key as u64)) as u64),
-                tag & 0xff,
-            );
+            let hit = crossing_hit(key, tag);
             let p = ray.at(hit.t);
             // Every other member answers as `csg_keeps` needs (`BoxTest`: `box_inside`).
             if !boxes

@@ -14,10 +14,8 @@
 //! box's inside test (`Object::leaf_inside`), the clip, the flips.
 
 use crate::geom::boxes::BoxShape;
-use crate::geom::Hit;
 use crate::math::{Aabb, DMat4, DVec3, Ray, Slabs, EPSILON};
-use crate::scene::csg_boxes::MAX_ALL;
-use crate::scene::csg_hit::order_key;
+use crate::scene::csg_boxes::{crossing_hit, insert_crossing, MAX_ALL};
 use crate::scene::csg_members::want_inside;
 use crate::scene::desc::CsgOp;
 use crate::scene::object::{ObjKind, Object, SurfaceHit};
@@ -182,24 +180,14 @@ impl Object {
             let r = local.get_or_insert_with(|| framed.local_ray(ray));
             m.shape.each_crossing(r, |hit| {
                 if hit.t < tmax {
-                    let key = order_key(hit.t);
-                    let mut k = n;
-                    while k > 0 && order[k - 1].0 > key {
-                        order[k] = order[k - 1];
-                        k -= 1;
-                    }
-                    order[k] = (key, (i as u32) << 8 | hit.part);
-                    n += 1;
+                    insert_crossing(&mut order, &mut n, i, hit);
                 }
             });
         }
         let clip = &self.clip[..];
         for &(key, tag) in &order[..n] {
             let i = (tag >> 8) as usize;
-            let hit = Hit::with_part(
-                f64::from_bits(order_key(f64::from_bits(key as u64)) as u64),
-                tag & 0xff,
-            );
+            let hit = crossing_hit(key, tag);
             let p = ray.at(hit.t);
             if !framed.keeps(i, p) {
                 continue;
