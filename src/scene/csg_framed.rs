@@ -289,13 +289,7 @@ mod tests {
                 };
                 let ray = Ray::new(from, d);
                 let tmax = [f64::INFINITY, 3.0, rng.next() * 20.0][k % 3];
-                sb.surface.clear();
-                o.all_hits(&ray, tmax, &mut sb);
-                let want = sb
-                    .surface
-                    .iter()
-                    .filter(|h| o.clip.is_empty() || h.t > EPSILON)
-                    .min_by(|a, b| a.t.total_cmp(&b.t))
+                let want = crate::scene::csg_hit::tests::reference(o, &ray, tmax, &mut sb)
                     .map(|h| (h.t.to_bits(), h.hit.part, h.flip, h.obj as *const Object));
                 let got = o
                     .first_hit(&ray, tmax, &mut sa)

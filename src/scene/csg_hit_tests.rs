@@ -58,8 +58,8 @@ fn crossings_sort_as_sort_unstable() {
 }
 
 /// `first_hit` as `all_hits` defines it: the nearest crossing (t > EPSILON when clipped),
-/// the earliest listed of equal ones.
-fn reference<'a>(
+/// the earliest listed of equal ones (csg_boxes' and csg_framed's tests use it too).
+pub(in crate::scene) fn reference<'a>(
     o: &'a Object,
     ray: &Ray,
     tmax: f64,
