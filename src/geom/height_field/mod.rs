@@ -611,6 +611,28 @@ impl Shape for HeightField {
         self.trace(ray, f64::INFINITY, false, out);
     }
 
+    /// The all-crossings walk bounded by a `tmax` a little past `hi` (a clipped field's
+    /// crossings beyond its clipping box): it visits the blocks `intersect_all` visits, in
+    /// the same order, less those the ray reaches only past that `tmax`, so the crossings up
+    /// to `hi` come out the same and in the same order. The margin (1e-6 of the reach) is far
+    /// above the edge merging's 1e-12: no crossing up to `hi` is merged with one the bounded
+    /// walk leaves out. Crossings before `lo` are kept (the walk has no lower bound).
+    fn intersect_all_within(&self, ray: &Ray, _lo: f64, hi: f64, out: &mut Vec<Hit>) {
+        let limit = hi + 1e-6 * (hi.abs() + 1.0);
+        // A NaN or infinite end bounds nothing.
+        if limit < f64::INFINITY {
+            self.trace(ray, limit, false, out);
+        } else {
+            self.intersect_all(ray, out);
+        }
+    }
+
+    /// A clipped field's rays that miss its clipping box skip the walk, and those that
+    /// cross it stop at its far side (`intersect_all_within`).
+    fn windowed(&self) -> bool {
+        true
+    }
+
     fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
         scratch.clear();
         self.trace(ray, tmax, true, scratch);
