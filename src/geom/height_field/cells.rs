@@ -386,8 +386,8 @@ mod tests {
                 let ray = Ray::new(o, target - o);
                 let tmax = [f64::INFINITY, rnd() * 2.0, 0.0][k % 3];
                 let (mut a, mut b) = (vec![], vec![]);
-                hf.trace_by(&ray, tmax, true, &mut a, Walk::Cells);
-                hf.trace_by(&ray, tmax, true, &mut b, Walk::Signed);
+                hf.trace_by(&ray, (f64::NEG_INFINITY, tmax), true, &mut a, Walk::Cells);
+                hf.trace_by(&ray, (f64::NEG_INFINITY, tmax), true, &mut b, Walk::Signed);
                 assert_eq!(bits(&a), bits(&b), "{ray:?} {tmax}");
                 checked += a.len();
                 // Whether the cells walked it themselves.
@@ -398,6 +398,7 @@ mod tests {
                     d,
                     inv: d.recip(),
                     tmax,
+                    tmin: f64::NEG_INFINITY,
                     first: true,
                     from: 0,
                     out: &mut out,

@@ -142,6 +142,9 @@ struct GridRay<'a> {
     inv: DVec3,
     /// Only crossings before this; shrinks as crossings are found when `first`.
     tmax: f64,
+    /// Crossings before this may be left out (a window's start; -inf for none): the pyramid
+    /// walk skips the children the ray leaves along x or z before it.
+    tmin: f64,
     first: bool,
     /// The crossings found, from `out[from]` on (what was there before is not this shape's).
     out: &'a mut Vec<Hit>,
@@ -446,12 +449,19 @@ impl HeightField {
     }
 
     fn trace(&self, ray: &Ray, tmax: f64, first: bool, out: &mut Vec<Hit>) {
-        self.trace_by(ray, tmax, first, out, Walk::Cells);
+        self.trace_by(ray, (f64::NEG_INFINITY, tmax), first, out, Walk::Cells);
     }
 
     /// `trace` by the given walk where the ray allows it (for the tests that show the walks
     /// find the same crossings).
-    fn trace_by(&self, ray: &Ray, tmax: f64, first: bool, out: &mut Vec<Hit>, walk: Walk) {
+    fn trace_by(
+        &self,
+        ray: &Ray,
+        (tmin, tmax): (f64, f64),
+        first: bool,
+        out: &mut Vec<Hit>,
+        walk: Walk,
+    ) {
         if self.bounds.is_empty() {
             return;
         }
@@ -466,6 +476,7 @@ impl HeightField {
             d,
             inv: d.recip(),
             tmax,
+            tmin,
             first,
             from: out.len(),
             out,
@@ -609,6 +620,42 @@ impl Shape for HeightField {
 
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
         self.trace(ray, f64::INFINITY, false, out);
+    }
+
+    /// The all-crossings walk bounded by a `tmax` a little past `hi` and a `tmin` a little
+    /// before `lo` (a clipped field's crossings outside its clipping box): it visits the
+    /// blocks `intersect_all` visits, in the same order, less those the ray reaches only past
+    /// that `tmax` or leaves along x or z before that `tmin`, so the crossings within the
+    /// window come out the same and in the same order. The margins: 1e-6 of the reach, far
+    /// above the slab tests' rounding and the edge merging's 1e-12 (no crossing in the window
+    /// is merged with one left out), plus how far along the ray a cell's reported crossing
+    /// may lie outside its cell (`cell_hits`' 1e-9 of a cell on each axis; the heights
+    /// extrapolated that far change by as little): 1e-8 of the largest `1 / d` in grid units.
+    /// A ray along an axis (an infinite `1 / d`) is not bounded.
+    fn intersect_all_within(&self, ray: &Ray, lo: f64, hi: f64, out: &mut Vec<Hit>) {
+        let (cx, cz) = self.cells();
+        let grid = DVec3::new(ray.dir.x * cx, ray.dir.y, ray.dir.z * cz);
+        let outside = 1e-8 * grid.recip().abs().max_element();
+        let limit = hi + (1e-6 * (hi.abs() + 1.0) + outside);
+        // A NaN end bounds nothing (NaN fails every comparison below).
+        let start = lo - (1e-6 * (lo.abs() + 1.0) + outside);
+        let start = if start > f64::NEG_INFINITY {
+            start
+        } else {
+            f64::NEG_INFINITY
+        };
+        let limit = if limit < f64::INFINITY {
+            limit
+        } else {
+            f64::INFINITY
+        };
+        self.trace_by(ray, (start, limit), false, out, Walk::Cells);
+    }
+
+    /// A clipped field's rays that miss its clipping box skip the walk, and those that
+    /// cross it stop at its far side (`intersect_all_within`).
+    fn windowed(&self) -> bool {
+        true
     }
 
     fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {

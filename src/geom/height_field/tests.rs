@@ -221,3 +221,57 @@ fn smooth_normals_follow_the_slopes() {
     let (_, b) = down(&hf, 0.7, 0.5).unwrap();
     assert!(-a.x / a.y > 0.5 && -b.x / b.y > -a.x / a.y);
 }
+
+/// `intersect_all_within` gives `intersect_all`'s crossings within its window, bit for bit
+/// and in the same order (a clipped field's running minimum takes the earliest of equal `t`):
+/// rays of every slope, along the axes and nearly so (where a cell's crossing found just
+/// outside it lies far along the ray), windows at crossings, inside and past the field, with
+/// NaN and infinite ends, on flat steps (edge ties) and with water.
+#[test]
+fn window_keeps_the_crossings_within_it() {
+    use super::walk::tests::bits;
+    let mut rng = crate::geom::test_rng::Lcg(31);
+    let mut rnd = move || rng.next();
+    let (mut checked, mut left_out) = (0, 0);
+    for (w, h, water) in [(2, 3, 0.0), (9, 6, 0.4), (37, 23, 0.0), (64, 65, 0.25)] {
+        let f = |i: usize, j: usize| {
+            let v = 0.5 + 0.45 * ((i as f64 * 0.8).sin() * (j as f64 * 0.4).cos());
+            (v * 7.0).floor() / 7.0
+        };
+        let hf = grid(w, h, f, water);
+        for k in 0..8000 {
+            let o = DVec3::new(rnd() * 1.6 - 0.3, rnd() * 2.0 - 0.2, rnd() * 1.6 - 0.3);
+            let mut d = DVec3::new(rnd(), rnd(), rnd()) - o;
+            match k % 7 {
+                // Along an axis (the pyramid's own walk) or nearly.
+                0 => d[k % 3] = 0.0,
+                1 => d[k % 3] = (rnd() - 0.5) * 1e-9,
+                _ => {}
+            }
+            let ray = Ray::new(o, d);
+            let mut all = Vec::new();
+            hf.intersect_all(&ray, &mut all);
+            let mut end = |e: usize| match (k / 5 + e) % 5 {
+                0 => f64::NAN,
+                1 => f64::INFINITY * if e == 0 { -1.0 } else { 1.0 },
+                // At a crossing: the window's end on the surface.
+                2 if !all.is_empty() => all[(k / 3 + e) % all.len()].t,
+                _ => rnd() * 2.0 - 0.2,
+            };
+            let (a, b) = (end(0), end(1));
+            let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
+            let mut within = Vec::new();
+            hf.intersect_all_within(&ray, lo, hi, &mut within);
+            let kept = |v: &[Hit]| {
+                let inside = |t: f64| (lo.is_nan() || t >= lo) && (hi.is_nan() || t <= hi);
+                let kept: Vec<Hit> = v.iter().filter(|c| inside(c.t)).copied().collect();
+                bits(&kept)
+            };
+            assert_eq!(kept(&within), kept(&all), "{ray:?} {lo} {hi}");
+            checked += kept(&all).len();
+            left_out += all.len() - within.len();
+        }
+    }
+    // The windows did leave crossings out.
+    assert!(checked > 1000 && left_out > 1000, "{checked} {left_out}");
+}

@@ -157,6 +157,7 @@ impl HeightField {
                 inv_y: r.inv.y,
                 up: s.up,
                 tmax: r.tmax,
+                tmin: r.tmin,
                 water: self.data.water_level,
             };
             // SAFETY: `AVX` is only true in `visit_avx`, compiled with AVX and called only
@@ -174,7 +175,11 @@ impl HeightField {
                 key[g] = if ze[dj] > k { ze[dj] } else { k };
                 exit[g] = fmin::<true>(xx[di], zx[dj]);
                 let ok = self.reaches_signed(r, s, quad[g], key[g], exit[g]);
-                mask |= ((ok & exists[g]) as u32) << g;
+                // `walk_avx::children`'s start test: a child left before `tmin` is skipped
+                // (negated as there: NaN leaves it in).
+                #[allow(clippy::neg_cmp_op_on_partial_ord)]
+                let started = !(exit[g] < r.tmin);
+                mask |= ((ok & exists[g] & started) as u32) << g;
             }
         }
         if mask == 0 {
@@ -304,8 +309,14 @@ pub(super) mod tests {
                 };
                 for first in [true, false] {
                     let (mut a, mut b) = (vec![], vec![]);
-                    hf.trace_by(&ray, tmax, first, &mut a, Walk::Signed);
-                    hf.trace_by(&ray, tmax, first, &mut b, Walk::Pyramid);
+                    hf.trace_by(&ray, (f64::NEG_INFINITY, tmax), first, &mut a, Walk::Signed);
+                    hf.trace_by(
+                        &ray,
+                        (f64::NEG_INFINITY, tmax),
+                        first,
+                        &mut b,
+                        Walk::Pyramid,
+                    );
                     assert_eq!(bits(&a), bits(&b), "{ray:?} {tmax} {first}");
                     checked += a.len();
                 }
@@ -354,6 +365,7 @@ pub(super) mod tests {
                             d,
                             inv: d.recip(),
                             tmax,
+                            tmin: f64::NEG_INFINITY,
                             first,
                             from: 0,
                             out,

@@ -24,13 +24,16 @@ pub(super) struct Children {
     pub mask: u32,
 }
 
-/// The ray's part of the tests: its y origin, `1 / d.y`, whether it rises, its `tmax`, and
-/// the water level.
+/// The ray's part of the tests: its y origin, `1 / d.y`, whether it rises, its `tmax` and
+/// `tmin`, and the water level.
 pub(super) struct RayY {
     pub oy: f64,
     pub inv_y: f64,
     pub up: bool,
     pub tmax: f64,
+    /// `GridRay::tmin`: a child the ray leaves along x or z before it holds no crossing the
+    /// caller wants (its exit along x and z is at least that of every point in it).
+    pub tmin: f64,
     pub water: f64,
 }
 
@@ -81,7 +84,9 @@ pub(super) unsafe fn children(
     );
     let dry = _mm256_cmp_pd::<_CMP_NLT_UQ>(yhi, _mm256_set1_pd(y.water));
     let within = _mm256_cmp_pd::<_CMP_LE_OQ>(t0, slack);
-    let mask = _mm256_movemask_pd(_mm256_and_pd(dry, within)) as u32;
+    // `!(exit < tmin)`: NaN and the default -inf leave every child in.
+    let started = _mm256_cmp_pd::<_CMP_NLT_UQ>(exit, _mm256_set1_pd(y.tmin));
+    let mask = _mm256_movemask_pd(_mm256_and_pd(_mm256_and_pd(dry, within), started)) as u32;
     let mut out = Children {
         key: [0.0; 4],
         exit: [0.0; 4],
