@@ -351,3 +351,104 @@ fn degenerate_input() {
     assert!(hits(&b, DVec3::splat(f64::NAN), DVec3::Z).is_empty());
     assert!(hits(&b, DVec3::ZERO, DVec3::ZERO).is_empty());
 }
+
+/// The normal, field and densities asked of the near components only (`each_near`) against
+/// every component's, bit for bit: blobs of spheres and cylinders, plain and transformed
+/// (rotations, uneven scales, shears), negative strengths, points anywhere about them and
+/// points on a component's boundary sphere to within a few units in the last place.
+#[test]
+fn near_components_answer_as_all() {
+    let mut rng = Lcg(0x5eed_b10b);
+    let mut checked = 0;
+    for blob in 0..60 {
+        let n = 8 + (rng.next() * 60.0) as usize;
+        let spread = [0.5, 4.0, 300.0][blob % 3];
+        let mut components = Vec::new();
+        for k in 0..n {
+            let r = 0.05 + rng.next() * spread * 0.3;
+            let s = if k % 5 == 4 { -0.7 } else { 0.5 + rng.next() };
+            let mut c = if k % 3 == 2 {
+                Component {
+                    kind: ComponentKind::Cylinder {
+                        a: rng.vec(spread),
+                        b: rng.vec(spread),
+                    },
+                    radius: r,
+                    strength: s,
+                    transform: Transform::IDENTITY,
+                }
+            } else {
+                sphere(rng.vec(spread), r, s)
+            };
+            match k % 4 {
+                1 => c.transform = Transform::rotate(rng.vec(720.0)),
+                3 => {
+                    let shear = Transform {
+                        m: DMat4::from_cols_array(&[
+                            1.0, 0.3, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.2, 0.0, 1.0, 0.0, 0.0, 0.0,
+                            0.0, 1.0,
+                        ]),
+                        inv: DMat4::IDENTITY,
+                    };
+                    let shear = Transform {
+                        inv: shear.m.inverse(),
+                        ..shear
+                    };
+                    c.transform = Transform::scale(DVec3::new(0.3, 2.0, 1.0) + rng.vec(1.0))
+                        .then(&shear)
+                        .then(&Transform::translate(rng.vec(spread)));
+                }
+                _ => {}
+            }
+            components.push(c);
+        }
+        let data = BlobData {
+            components,
+            threshold: 0.3,
+            sturm: false,
+        };
+        let near = Blob::new(&data);
+        assert!(near.near_pad.is_some());
+        let mut all = Blob::new(&data);
+        all.near_pad = None;
+        let mut points: Vec<DVec3> = (0..400).map(|_| rng.vec(spread * 2.5)).collect();
+        // On and about each component's boundary: its centre (or an end) plus r along a
+        // random direction, taken to blob space, nudged by a few units in the last place.
+        for c in &data.components {
+            let a = match c.kind {
+                ComponentKind::Sphere { center } => center,
+                ComponentKind::Cylinder { a, .. } => a,
+            };
+            for _ in 0..6 {
+                let dir = rng.vec(2.0).normalize_or_zero();
+                let q = c.transform.point(a + dir * c.radius);
+                for ulps in [-3i64, -1, 0, 1, 3] {
+                    let nudge = |x: f64| f64::from_bits((x.to_bits() as i64 + ulps) as u64);
+                    points.push(DVec3::new(nudge(q.x), nudge(q.y), nudge(q.z)));
+                }
+            }
+        }
+        let hit = Hit::new(0.0);
+        let (mut dn, mut da) = (Vec::new(), Vec::new());
+        for p in points {
+            let (a, b) = (near.normal(p, &hit), all.normal(p, &hit));
+            assert_eq!(
+                a.to_array().map(f64::to_bits),
+                b.to_array().map(f64::to_bits),
+                "{p}"
+            );
+            assert_eq!(near.inside(p), all.inside(p), "{p}");
+            let (fa, fb) = (near.field(p), all.field(p));
+            assert!(fa == fb && (fa != 0.0 || fb == 0.0), "{p}: {fa} {fb}");
+            near.densities(p, &mut dn);
+            all.densities(p, &mut da);
+            let bits = |v: &[(usize, f64)]| -> Vec<(usize, u64)> {
+                v.iter().map(|&(i, d)| (i, d.to_bits())).collect()
+            };
+            assert_eq!(bits(&dn), bits(&da), "{p}");
+            checked += usize::from(b != DVec3::ZERO);
+        }
+    }
+    // Most points must meet some component for the comparison to mean anything.
+    assert!(checked > 10_000, "{checked}");
+}

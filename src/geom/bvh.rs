@@ -212,6 +212,51 @@ impl Bvh {
         }
     }
 
+    /// Visits primitives whose box grown by `pad` on every side contains `p`, in no
+    /// particular order. A parent's box holds its children's, so the grown parent holds the
+    /// grown children and nothing within `pad` of a box is missed: a caller whose boxes are
+    /// exact only up to rounding asks with a `pad` above that rounding.
+    pub fn visit_near(&self, p: DVec3, pad: f64, mut f: impl FnMut(usize)) {
+        let near = |b: &Aabb| {
+            p.x >= b.min.x - pad
+                && p.y >= b.min.y - pad
+                && p.z >= b.min.z - pad
+                && p.x <= b.max.x + pad
+                && p.y <= b.max.y + pad
+                && p.z <= b.max.z + pad
+        };
+        if self.prims.is_empty() || !near(&self.root_box) {
+            return;
+        }
+        let mut stack = [Ref::default(); STACK];
+        let mut sp = 0;
+        let mut at = self.root;
+        loop {
+            if at.count > 0 {
+                let first = at.index as usize;
+                for &i in &self.prims[first..first + at.count as usize] {
+                    f(i as usize);
+                }
+            } else {
+                let n = &self.nodes[at.index as usize];
+                let (ina, inb) = (near(&n.boxes.get(0)), near(&n.boxes.get(1)));
+                if inb && sp < STACK {
+                    stack[sp] = n.child[1];
+                    sp += 1;
+                }
+                if ina {
+                    at = n.child[0];
+                    continue;
+                }
+            }
+            if sp == 0 {
+                return;
+            }
+            sp -= 1;
+            at = stack[sp];
+        }
+    }
+
     /// Whether the tree holds no primitive (none given, or all with empty boxes).
     pub fn is_empty(&self) -> bool {
         self.prims.is_empty()
