@@ -210,7 +210,7 @@ impl<'a> Tracer<'a> {
                 let indirect = match self.rad {
                     None => None,
                     Some(_) if fin.diffuse <= 0.0 => Some(DVec3::ZERO),
-                    Some(_) => Some(self.irradiance(hv.p, hv.nf, hv.path, ctx)),
+                    Some(_) => Some(self.indirect(hv.p, hv.nf, hv.path, ctx)),
                 };
                 self.layer_light(c, fin, hv.p, hv.dir, hv.nf, hv.mirror, indirect, ctx, None)
             }
@@ -316,10 +316,10 @@ impl<'a> Tracer<'a> {
         let indirect = match self.rad {
             None => None,
             Some(_) if fin.diffuse <= 0.0 => Some(DVec3::ZERO),
-            Some(r) if r.set.normal => Some(self.irradiance(hv.p, pn, hv.path, ctx)),
+            Some(r) if r.set.normal => Some(self.indirect(hv.p, pn, hv.path, ctx)),
             Some(_) => Some(
                 *sum.irr
-                    .get_or_insert_with(|| self.irradiance(hv.p, nf, hv.path, ctx)),
+                    .get_or_insert_with(|| self.indirect(hv.p, nf, hv.path, ctx)),
             ),
         };
         let light = self.layer_light(

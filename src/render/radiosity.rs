@@ -79,6 +79,23 @@ pub(super) fn mix(mut h: u64) -> u64 {
 }
 
 impl<'a> Tracer<'a> {
+    /// `irradiance`, its answer read back one coordinate at a time (`by_coordinates`): it is
+    /// returned through memory, stored as an x-y pair and z, and its callers (`shade`'s
+    /// layers, into which it is too large to be inlined) read it back as x and a y-z pair, a
+    /// 16-byte load spanning both stores that cannot be forwarded from them (11 % of
+    /// `shade`'s samples on raddem, on the instruction after that load). The same bits.
+    #[inline(always)]
+    pub(super) fn indirect(
+        &self,
+        p: DVec3,
+        n: DVec3,
+        path: Path<'a>,
+        ctx: &mut Scratch<'a>,
+    ) -> DVec3 {
+        let irr = self.irradiance(p, n, path, ctx);
+        crate::math::by_coordinates(&irr)
+    }
+
     /// The irradiance at `p` (facing `n`) for a ray at `path`: from the cache where samples are
     /// valid there, otherwise gathered afresh. Zero past `recursion_limit`.
     pub(super) fn irradiance(
