@@ -113,13 +113,15 @@ impl Lathe {
         }
     }
 
-    /// Calls `found(t, piece, s)` for each crossing, t in scaled unit-direction units from `o`.
+    /// Calls `found(t, piece, s)` for each crossing, t in scaled unit-direction units from `o`,
+    /// piece by piece until `done()` holds before one (`any_kept`'s stop; `|| false` lists all).
     fn crossings(
         &self,
         o: DVec3,
         u: DVec3,
         t_lo: f64,
         t_hi: f64,
+        done: impl Fn() -> bool,
         found: &mut impl FnMut(f64, usize, f64),
     ) {
         let a = u.x * u.x + u.z * u.z;
@@ -128,6 +130,9 @@ impl Lathe {
         let dy = u.y;
         let inv = [1.0 / dy, 1.0 / a];
         for (i, pc) in self.pieces.iter().enumerate() {
+            if done() {
+                return;
+            }
             if !Self::may_cross(pc, o, [a, b, c], dy, inv, t_lo, t_hi) {
                 continue;
             }
@@ -430,14 +435,16 @@ impl Lathe {
         (lo <= hi).then_some((o, u, lo, hi, self.scale / len))
     }
 
-    fn each_hit(&self, ray: &Ray, mut f: impl FnMut(Hit)) {
+    /// Calls `f` with each crossing `intersect_all` lists, in its order, until `done()` holds
+    /// before a piece.
+    fn each_hit(&self, ray: &Ray, done: impl Fn() -> bool, mut f: impl FnMut(Hit)) {
         let Some((o, u, lo, hi, back)) = self.setup(ray) else {
             return;
         };
         // Solve from the entry point so the coefficients do not depend on a far origin.
         let shift = lo;
         let o2 = o + u * shift;
-        self.crossings(o2, u, 0.0, hi - shift, &mut |t, i, s| {
+        self.crossings(o2, u, 0.0, hi - shift, done, &mut |t, i, s| {
             let t = (t + shift) * back;
             if t > EPSILON {
                 f(Hit {
@@ -463,7 +470,30 @@ impl Shape for Lathe {
     }
 
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
-        self.each_hit(ray, |h| out.push(h));
+        self.each_hit(ray, || false, |h| out.push(h));
+    }
+
+    /// The crossings `intersect_all` lists, in its order, each asked as it is found; the
+    /// pieces after the one holding the first kept crossing are not solved (a CSG shadow ray
+    /// through a lathe stops at its first kept wall instead of refining every crossing).
+    fn any_kept(
+        &self,
+        ray: &Ray,
+        tmax: f64,
+        _scratch: &mut Vec<Hit>,
+        keep: &mut dyn FnMut(f64) -> bool,
+    ) -> bool {
+        let kept = std::cell::Cell::new(false);
+        self.each_hit(
+            ray,
+            || kept.get(),
+            |h| {
+                if !kept.get() && h.t < tmax && keep(h.t) {
+                    kept.set(true);
+                }
+            },
+        );
+        kept.get()
     }
 
     fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
