@@ -198,11 +198,17 @@ impl Lathe {
     /// and the search stops beyond the best crossing found; a crossing replaces the best
     /// when its `t` is less, or equal and from an earlier piece, which is the default's
     /// choice (the first least `t` in `intersect_all`'s order) to the bit.
-    fn first_sloped(
+    ///
+    /// Only crossings `keep` holds for may be the best (`gather_kept`; `intersect_first`
+    /// keeps all): it is asked last, of a crossing that would replace the best. Without
+    /// `LEAVE` every crossing of a piece taken is refined to the end (no settle test in the
+    /// Newton steps; the pieces past the best are still left whole).
+    fn first_sloped<const LEAVE: bool>(
         &self,
         (o, u, lo, hi, back): (DVec3, DVec3, f64, f64, f64),
         tmax: f64,
         cand: &mut Vec<Hit>,
+        mut keep: impl FnMut(f64) -> bool,
     ) -> Option<Hit> {
         let shift = lo;
         let o = o + u * shift;
@@ -246,12 +252,13 @@ impl Lathe {
                 o,
                 [a, b, c],
                 dy,
-                Some(leave),
+                LEAVE.then_some(leave),
                 &mut |t, i, s| {
                     let t = (t + shift) * back;
                     if t > EPSILON
                         && t < tmax
                         && best.is_none_or(|h| t < h.t || (t == h.t && (i as u32) < h.part))
+                        && keep(t)
                     {
                         best = Some(Hit {
                             t,
@@ -499,7 +506,7 @@ impl Shape for Lathe {
     fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
         let setup = self.setup(ray)?;
         if setup.1.y.abs() >= FLAT {
-            return self.first_sloped(setup, tmax, scratch);
+            return self.first_sloped::<true>(setup, tmax, scratch, |_| true);
         }
         scratch.clear();
         self.intersect_all(ray, scratch);
@@ -508,6 +515,28 @@ impl Shape for Lathe {
             .filter(|h| h.t > EPSILON && h.t < tmax)
             .min_by(|a, b| a.t.total_cmp(&b.t))
             .copied()
+    }
+
+    /// A sloped ray's first kept crossing alone, by `first_sloped`'s search (pieces by their
+    /// height band's nearest `t`, none past the best refined to the end): it is the crossing
+    /// the listing's order would give first, `intersect_first`'s choice among the kept ones.
+    /// A nearly horizontal ray lists every crossing.
+    fn gather_kept(
+        &self,
+        ray: &Ray,
+        tmax: f64,
+        out: &mut Vec<Hit>,
+        scratch: &mut Vec<Hit>,
+        keep: &mut dyn FnMut(f64) -> bool,
+    ) {
+        let Some(setup) = self.setup(ray) else {
+            return;
+        };
+        if setup.1.y.abs() >= FLAT {
+            out.extend(self.first_sloped::<false>(setup, tmax, scratch, keep));
+        } else {
+            self.intersect_all(ray, out);
+        }
     }
 
     fn inside(&self, p: DVec3) -> bool {
