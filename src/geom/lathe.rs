@@ -113,13 +113,15 @@ impl Lathe {
         }
     }
 
-    /// Calls `found(t, piece, s)` for each crossing, t in scaled unit-direction units from `o`.
+    /// Calls `found(t, piece, s)` for each crossing, t in scaled unit-direction units from `o`,
+    /// piece by piece until `done()` holds before one (`any_kept`'s stop; `|| false` lists all).
     fn crossings(
         &self,
         o: DVec3,
         u: DVec3,
         t_lo: f64,
         t_hi: f64,
+        done: impl Fn() -> bool,
         found: &mut impl FnMut(f64, usize, f64),
     ) {
         let a = u.x * u.x + u.z * u.z;
@@ -128,6 +130,9 @@ impl Lathe {
         let dy = u.y;
         let inv = [1.0 / dy, 1.0 / a];
         for (i, pc) in self.pieces.iter().enumerate() {
+            if done() {
+                return;
+            }
             if !Self::may_cross(pc, o, [a, b, c], dy, inv, t_lo, t_hi) {
                 continue;
             }
@@ -193,11 +198,17 @@ impl Lathe {
     /// and the search stops beyond the best crossing found; a crossing replaces the best
     /// when its `t` is less, or equal and from an earlier piece, which is the default's
     /// choice (the first least `t` in `intersect_all`'s order) to the bit.
-    fn first_sloped(
+    ///
+    /// Only crossings `keep` holds for may be the best (`gather_kept`; `intersect_first`
+    /// keeps all): it is asked last, of a crossing that would replace the best. Without
+    /// `LEAVE` every crossing of a piece taken is refined to the end (no settle test in the
+    /// Newton steps; the pieces past the best are still left whole).
+    fn first_sloped<const LEAVE: bool>(
         &self,
         (o, u, lo, hi, back): (DVec3, DVec3, f64, f64, f64),
         tmax: f64,
         cand: &mut Vec<Hit>,
+        mut keep: impl FnMut(f64) -> bool,
     ) -> Option<Hit> {
         let shift = lo;
         let o = o + u * shift;
@@ -241,12 +252,13 @@ impl Lathe {
                 o,
                 [a, b, c],
                 dy,
-                Some(leave),
+                LEAVE.then_some(leave),
                 &mut |t, i, s| {
                     let t = (t + shift) * back;
                     if t > EPSILON
                         && t < tmax
                         && best.is_none_or(|h| t < h.t || (t == h.t && (i as u32) < h.part))
+                        && keep(t)
                     {
                         best = Some(Hit {
                             t,
@@ -430,14 +442,16 @@ impl Lathe {
         (lo <= hi).then_some((o, u, lo, hi, self.scale / len))
     }
 
-    fn each_hit(&self, ray: &Ray, mut f: impl FnMut(Hit)) {
+    /// Calls `f` with each crossing `intersect_all` lists, in its order, until `done()` holds
+    /// before a piece.
+    fn each_hit(&self, ray: &Ray, done: impl Fn() -> bool, mut f: impl FnMut(Hit)) {
         let Some((o, u, lo, hi, back)) = self.setup(ray) else {
             return;
         };
         // Solve from the entry point so the coefficients do not depend on a far origin.
         let shift = lo;
         let o2 = o + u * shift;
-        self.crossings(o2, u, 0.0, hi - shift, &mut |t, i, s| {
+        self.crossings(o2, u, 0.0, hi - shift, done, &mut |t, i, s| {
             let t = (t + shift) * back;
             if t > EPSILON {
                 f(Hit {
@@ -463,13 +477,36 @@ impl Shape for Lathe {
     }
 
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
-        self.each_hit(ray, |h| out.push(h));
+        self.each_hit(ray, || false, |h| out.push(h));
+    }
+
+    /// The crossings `intersect_all` lists, in its order, each asked as it is found; the
+    /// pieces after the one holding the first kept crossing are not solved (a CSG shadow ray
+    /// through a lathe stops at its first kept wall instead of refining every crossing).
+    fn any_kept(
+        &self,
+        ray: &Ray,
+        tmax: f64,
+        _scratch: &mut Vec<Hit>,
+        keep: &mut dyn FnMut(f64) -> bool,
+    ) -> bool {
+        let kept = std::cell::Cell::new(false);
+        self.each_hit(
+            ray,
+            || kept.get(),
+            |h| {
+                if !kept.get() && h.t < tmax && keep(h.t) {
+                    kept.set(true);
+                }
+            },
+        );
+        kept.get()
     }
 
     fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
         let setup = self.setup(ray)?;
         if setup.1.y.abs() >= FLAT {
-            return self.first_sloped(setup, tmax, scratch);
+            return self.first_sloped::<true>(setup, tmax, scratch, |_| true);
         }
         scratch.clear();
         self.intersect_all(ray, scratch);
@@ -478,6 +515,28 @@ impl Shape for Lathe {
             .filter(|h| h.t > EPSILON && h.t < tmax)
             .min_by(|a, b| a.t.total_cmp(&b.t))
             .copied()
+    }
+
+    /// A sloped ray's first kept crossing alone, by `first_sloped`'s search (pieces by their
+    /// height band's nearest `t`, none past the best refined to the end): it is the crossing
+    /// the listing's order would give first, `intersect_first`'s choice among the kept ones.
+    /// A nearly horizontal ray lists every crossing.
+    fn gather_kept(
+        &self,
+        ray: &Ray,
+        tmax: f64,
+        out: &mut Vec<Hit>,
+        scratch: &mut Vec<Hit>,
+        keep: &mut dyn FnMut(f64) -> bool,
+    ) {
+        let Some(setup) = self.setup(ray) else {
+            return;
+        };
+        if setup.1.y.abs() >= FLAT {
+            out.extend(self.first_sloped::<false>(setup, tmax, scratch, keep));
+        } else {
+            self.intersect_all(ray, out);
+        }
     }
 
     fn inside(&self, p: DVec3) -> bool {

@@ -50,6 +50,22 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
             .min_by(|a, b| a.t.total_cmp(&b.t))
             .copied()
     }
+    /// A CSG search's listing (`csg_first_hit`): appends to `out` crossings `intersect_all`
+    /// lists, as it lists them (the same bits, in its order), among them the first by `t`,
+    /// then by place in that list, of those with `t < tmax` that `keep` holds for, if any.
+    /// The search takes the least kept crossing over all members, so the others cannot matter.
+    /// The default lists them all; shapes that find their nearest crossings first may append
+    /// that one alone. `keep` has no side effect on the answer; `scratch` is the shape's.
+    fn gather_kept(
+        &self,
+        ray: &Ray,
+        _tmax: f64,
+        out: &mut Vec<Hit>,
+        _scratch: &mut Vec<Hit>,
+        _keep: &mut dyn FnMut(f64) -> bool,
+    ) {
+        self.intersect_all(ray, out)
+    }
     /// `intersect_first(..).is_some()` (shadow rays), for shapes that can tell sooner.
     fn any_hit(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> bool {
         self.intersect_first(ray, tmax, scratch).is_some()

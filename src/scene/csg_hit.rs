@@ -164,6 +164,7 @@ fn gather_hits<'a>(
     tmax: f64,
     s: &mut Scratch<'a>,
     tag: u32,
+    keeps: &impl Fn(u32, f64) -> bool,
 ) {
     match (face, &c.kind) {
         (None, ObjKind::Shape(shape, None)) if c.clip.is_empty() => {
@@ -174,7 +175,8 @@ fn gather_hits<'a>(
             // with its padding as one 8-byte load, which cannot be forwarded from the shape's
             // 4-byte store of `part` (stall26).
             let from = s.csg_hits.len();
-            shape.intersect_all(r, &mut s.csg_hits);
+            let keep = &mut |t| keeps(tag, t);
+            shape.gather_kept(r, tmax, &mut s.csg_hits, &mut s.hits, keep);
             for k in from..s.csg_hits.len() {
                 let t = s.csg_hits[k].t;
                 if t < tmax {
@@ -242,6 +244,7 @@ fn gather_quadrics<'a>(
     slabs: &Slabs,
     tmax: f64,
     s: &mut Scratch<'a>,
+    keeps: &impl Fn(u32, f64) -> bool,
 ) {
     let mut rays = [*ray; LANES];
     let mut live = [false; LANES];
@@ -263,7 +266,7 @@ fn gather_quadrics<'a>(
                 continue;
             }
             if got.defer >> j & 1 != 0 {
-                gather_hits(c, None, ray, tmax, s, j as u32);
+                gather_hits(c, None, ray, tmax, s, j as u32, keeps);
                 continue;
             }
             for r in 0..2 {
@@ -280,7 +283,7 @@ fn gather_quadrics<'a>(
         }
     }
     #[cfg(not(target_arch = "x86_64"))]
-    let _ = (shapes, rays, s);
+    let _ = (shapes, rays, s, keeps);
 }
 
 /// `csg_keeps(op, i, children, None, faces, p, rejecter)` for the members in lanes
@@ -421,58 +424,13 @@ impl Object {
         let fold = FOLD && index.is_none() && children.len() <= 1 << LEAF_SHIFT;
         // Set only for nodes without index or box members.
         let quadrics = self.quadric_lanes();
-        if let Some(shapes) = quadrics {
-            gather_quadrics(children, shapes, ray, &slabs, tmax, s);
-        } else {
-            // Inlined in the member loop: called, its frame cost ~20 instructions a member visit
-            // (advanced/whiltile visits 325 k members).
-            each_member_inline(
-                children,
-                index,
-                ray,
-                tmax,
-                s,
-                #[inline(always)]
-                |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
-                    if !slabs.hits(&c.bounds, tmax) {
-                        return;
-                    }
-                    if let Some((leaves, leaf_cull, leaf_faces)) = fold.then(|| folded(c)).flatten()
-                    {
-                        // `c.all_hits`'s own tests, in its order.
-                        if leaf_cull.is_some_and(|b| b.hit(ray.origin, inv_dir, tmax).is_none()) {
-                            return;
-                        }
-                        let leaf_faces = leaf_faces.filter(|_| faces::ray_ok(ray));
-                        for (k, g) in leaves.iter().enumerate() {
-                            if !slabs.hits(&g.bounds, tmax) {
-                                continue;
-                            }
-                            let tag = i as u32 | (k as u32 + 1) << LEAF_SHIFT;
-                            gather_hits(g, leaf_faces.and_then(|f| f.get(k)), ray, tmax, s, tag);
-                        }
-                        return;
-                    }
-                    match boxes.filter(|_| BOXES).and_then(|b| b.get(i)) {
-                        // Box members without dispatch (`csg_boxes`): `member_hits`' leaf path.
-                        Some(b) => box_hits(b, ray, tmax, s, i as u32),
-                        None => {
-                            gather_hits(c, ray_faces.and_then(|f| f.get(i)), ray, tmax, s, i as u32)
-                        }
-                    }
-                },
-            );
-        }
-        let order = &mut s.csg_order[order_from..];
-        // By (t as `total_cmp` orders it, place in the gather): places differ between entries.
-        sort_crossings(order);
         let rejecter = Cell::new(usize::MAX);
         let leaf_rejecter = Cell::new(usize::MAX);
         let clip = &self.clip[..];
-        let best = order.iter().find_map(|&e| {
-            let (j, tag) = (entry_place(e), entry_tag(e));
-            // From the key, not from the record: the keep tests read nothing else of it.
-            let t = entry_t(e);
+        // Whether the crossing at `t` of the member (or folded leaf) `tag` is on the node's
+        // surface: asked in the search below, and by shapes that find their first kept
+        // crossing themselves while they are gathered (`Shape::gather_kept`).
+        let keeps = |tag: u32, t: f64| {
             // Without folding, tags are plain member numbers (a node may have more than
             // the tag's low bits hold).
             let i = if FOLD {
@@ -509,7 +467,70 @@ impl Object {
                 (None, Some(q)) => quadric_keeps(op, i, children, q, p, &rejecter),
                 (None, None) => csg_keeps(op, i, children, index, faces, p, &rejecter),
             };
-            (leaf_kept() && kept() && clip_kept()).then(|| {
+            leaf_kept() && kept() && clip_kept()
+        };
+        if let Some(shapes) = quadrics {
+            gather_quadrics(children, shapes, ray, &slabs, tmax, s, &keeps);
+        } else {
+            // Inlined in the member loop: called, its frame cost ~20 instructions a member visit
+            // (advanced/whiltile visits 325 k members).
+            each_member_inline(
+                children,
+                index,
+                ray,
+                tmax,
+                s,
+                #[inline(always)]
+                |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
+                    if !slabs.hits(&c.bounds, tmax) {
+                        return;
+                    }
+                    if let Some((leaves, leaf_cull, leaf_faces)) = fold.then(|| folded(c)).flatten()
+                    {
+                        // `c.all_hits`'s own tests, in its order.
+                        if leaf_cull.is_some_and(|b| b.hit(ray.origin, inv_dir, tmax).is_none()) {
+                            return;
+                        }
+                        let leaf_faces = leaf_faces.filter(|_| faces::ray_ok(ray));
+                        for (k, g) in leaves.iter().enumerate() {
+                            if !slabs.hits(&g.bounds, tmax) {
+                                continue;
+                            }
+                            let tag = i as u32 | (k as u32 + 1) << LEAF_SHIFT;
+                            let face = leaf_faces.and_then(|f| f.get(k));
+                            gather_hits(g, face, ray, tmax, s, tag, &keeps);
+                        }
+                        return;
+                    }
+                    match boxes.filter(|_| BOXES).and_then(|b| b.get(i)) {
+                        // Box members without dispatch (`csg_boxes`): `member_hits`' leaf path.
+                        Some(b) => box_hits(b, ray, tmax, s, i as u32),
+                        None => {
+                            let face = ray_faces.and_then(|f| f.get(i));
+                            gather_hits(c, face, ray, tmax, s, i as u32, &keeps)
+                        }
+                    }
+                },
+            );
+        }
+        let order = &mut s.csg_order[order_from..];
+        // By (t as `total_cmp` orders it, place in the gather): places differ between entries.
+        sort_crossings(order);
+        let best = order.iter().find_map(|&e| {
+            let (j, tag) = (entry_place(e), entry_tag(e));
+            // From the key, not from the record: the keep tests read nothing else of it.
+            let t = entry_t(e);
+            let i = if FOLD {
+                tag & ((1 << LEAF_SHIFT) - 1)
+            } else {
+                tag
+            } as usize;
+            let leaf = if FOLD {
+                (tag >> LEAF_SHIFT) as usize
+            } else {
+                0
+            };
+            keeps(tag, t).then(|| {
                 let rec = s.csg_hits[(j >> 1) as usize];
                 let mut h = if j & LISTED != 0 {
                     s.surface[rec.part as usize]
