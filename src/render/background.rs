@@ -19,20 +19,26 @@ fn over(seen: Seen, c: &crate::color::Rgbft) -> Seen {
 
 /// `Tracer::background`'s sky for scenes older than 3.7 (`legacy_sky_filter`), out of the
 /// common path: the same blending as the 3.7 rule, then `LegacySky`'s where a layer filters.
+/// The colour below comes as numbers (a tuple went by reference) and is summed in locals:
+/// built in `sky_over` as a `Seen` and passed by value, its four 8-byte stores were read back
+/// as two 16-byte loads, and the result was copied out the same way (store-forwarding
+/// stalls, 4 % of slopemt_36's samples on those loads).
 #[inline(never)]
-fn legacy_sky(s: &Scene, dir: DVec3, mut seen: Seen) -> Seen {
+fn legacy_sky(s: &Scene, dir: DVec3, r: f64, g: f64, b: f64, clear: f64) -> Seen {
+    let mut rgb = DVec3::new(r, g, b);
+    let mut clear = clear;
     let mut d = None;
-    let mut legacy = LegacySky::new(seen.rgb);
+    let mut legacy = LegacySky::new(rgb);
     for layer in &s.sky {
         let c = sky::layer_colour(layer, dir, &mut d);
         legacy.add(&c);
-        seen.rgb = c.rgb * c.opacity() + seen.rgb * c.transmitted();
-        seen.clear *= c.filter * grey(c.rgb) + c.transmit;
+        rgb = c.rgb * c.opacity() + rgb * c.transmitted();
+        clear *= c.filter * grey(c.rgb) + c.transmit;
     }
-    if let Some(rgb) = legacy.filtered_rgb() {
-        seen.rgb = rgb;
+    if let Some(filtered) = legacy.filtered_rgb() {
+        rgb = filtered;
     }
-    seen
+    Seen { rgb, clear }
 }
 
 impl<'a> Tracer<'a> {
@@ -67,13 +73,13 @@ impl<'a> Tracer<'a> {
     fn sky_over(&self, r: f64, g: f64, b: f64, clear: f64, dir: &DVec3) -> Seen {
         let s = self.scene;
         let dir = *dir;
+        if s.legacy_sky_filter {
+            return legacy_sky(s, dir, r, g, b, clear);
+        }
         let mut seen = Seen {
             rgb: DVec3::new(r, g, b),
             clear,
         };
-        if s.legacy_sky_filter {
-            return legacy_sky(s, dir, seen);
-        }
         // Most skies are one layer: see `sky::only_layer_with`.
         if let [layer] = &s.sky[..] {
             return sky::only_layer_with(layer, dir, |c| over(seen, c));

@@ -8,7 +8,7 @@
 //! shading (ray21's finding, ~51 instructions a hit on mirror_spheres).
 
 use crate::color::Rgbft;
-use crate::math::{DVec3, Transform};
+use crate::math::{by_coordinates, DVec3, Transform};
 use crate::scene::desc::{PigmentKind, Reflection, Texture};
 use crate::scene::object::Object;
 
@@ -304,7 +304,10 @@ impl<'a> Tracer<'a> {
         ctx: &mut TraceCtx<'a>,
     ) {
         let fin = &part.finish;
-        let (dir, nf) = (hv.dir, hv.nf);
+        // By coordinates: `shade` writes the view's vectors from their spill slots 8 bytes at
+        // a time just before the layer loop, and `dir` and `nf` loaded as 16-byte pairs could
+        // not be forwarded (2-2.5 % of normmap, densfile and slopemap on the first one).
+        let (dir, nf) = (by_coordinates(&hv.dir), by_coordinates(&hv.nf));
         let (pn, pmirror, pcos) = match &part.normal {
             Some(nd) if normal::perturbs(part.normal.as_deref()) => {
                 let pn = normal::perturb_in(nd, space, hv.p, nf);

@@ -89,7 +89,10 @@ fn perturb_with(nd: &Normal, t: &Transform, p: DVec3, n: DVec3) -> DVec3 {
     if !nd.no_bump_scale {
         ln = ln.normalize_or_zero();
     }
-    let out = local(nd, lp, ln);
+    // By coordinates: `local`'s arms (inlined) leave their result in one stack slot by
+    // three 8-byte stores, and the merge loaded its x-y pair as 16 bytes, which the store
+    // buffer cannot forward (a tenth of this function's samples on slopemap, next to it).
+    let out = by_coordinates(&local(nd, lp, ln));
     let out = if identity { out } else { t.normal(out) };
     let out = out.normalize_or_zero();
     if out == DVec3::ZERO {
