@@ -159,17 +159,20 @@ pub fn turbulence_vec(p: DVec3, octaves: u32, omega: f64, lambda: f64, _generato
         omega.to_bits(),
         lambda.to_bits(),
     ];
+    // The last key is read out here and compared where `key` is still in registers: a
+    // closure doing both stayed an out-of-line `LocalKey::with` that read `key` back from the
+    // caller's stack in 16-byte loads over its 8-byte stores, a store-forwarding stall.
+    let (k, v) = LAST_TURBULENCE.with(|last| (last.key.get(), last.value.get()));
+    // Not `k == key`: that is a call to memcmp (1-4 % of a wood).
+    if k.iter().zip(&key).fold(0, |acc, (a, b)| acc | (a ^ b)) == 0 {
+        return v;
+    }
+    let v = noise_lattice::vector_octaves(p, octaves, omega, lambda);
     LAST_TURBULENCE.with(|last| {
-        // Not `k == key`: that is a call to memcmp (1-4 % of a wood).
-        let k = last.key.get();
-        if k.iter().zip(&key).fold(0, |acc, (a, b)| acc | (a ^ b)) == 0 {
-            return last.value.get();
-        }
-        let v = noise_lattice::vector_octaves(p, octaves, omega, lambda);
         last.key.set(key);
         last.value.set(v);
-        v
-    })
+    });
+    v
 }
 
 /// `turbulence_vec` without its per-thread cache (the same value), for callers whose points
