@@ -221,12 +221,21 @@ fn attach_indexes(o: &mut Object, opened: bool) {
     let quadrics = (mine.is_none() && *op != CsgOp::Union && boxes_none && framed_none)
         .then(|| {
             let faces = cull.as_ref().and_then(|c| c.faces.as_ref());
-            crate::scene::csg_hit::quadric_lanes_of(children, faces)
+            crate::scene::csg_quadrics::quadric_lanes_of(children, faces)
         })
         .flatten();
+    let quadrics_none = quadrics.is_none();
     if let Some(q) = quadrics {
         let c = cull.get_or_insert_with(Box::default);
         c.quadrics = Some(Box::new(q));
+    }
+    // The leaf every kept crossing lies in (`csg_lead`), for the searches that gather it first.
+    if mine.is_none() && quadrics_none {
+        let faces = cull.as_ref().and_then(|c| c.faces.as_ref());
+        let lead = crate::scene::csg_lead::lead_of(*op, children, faces);
+        if lead != crate::scene::csg_lead::Lead::None {
+            cull.get_or_insert_with(Box::default).lead = lead;
+        }
     }
     *index = mine;
 }

@@ -4,14 +4,13 @@
 
 use std::cell::Cell;
 
-#[cfg(target_arch = "x86_64")]
-use crate::geom::algebraic::crossings_lanes;
-use crate::geom::algebraic::{QuadricLanes, LANES};
 use crate::geom::Hit;
-use crate::math::{has_avx, Aabb, DVec3, Ray, Slabs, EPSILON};
+use crate::math::{has_avx, Aabb, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
 use crate::scene::csg_boxes::{box_hits, csg_keeps_boxes};
+use crate::scene::csg_lead::{beyond_before, lead_any_hit, lead_leaf, lead_reached, Lead};
 use crate::scene::csg_members::want_inside;
+use crate::scene::csg_quadrics::{any_quadric_kept, gather_quadrics, quadric_keeps};
 use crate::scene::desc::CsgOp;
 use crate::scene::face_lanes::FaceLanes;
 use crate::scene::faces::{self, Face, Faces, MAX_ALL};
@@ -157,7 +156,7 @@ fn each_member_inline<'a>(
 /// with a record in `s.csg_hits` giving its place there. The same crossings in the same
 /// order as `member_hits` lists them.
 #[inline(always)]
-fn gather_hits<'a>(
+pub(super) fn gather_hits<'a>(
     c: &'a Object,
     face: Option<&Face>,
     ray: &Ray,
@@ -196,189 +195,6 @@ fn gather_hits<'a>(
             }
         }
     }
-}
-
-/// The lanes (`QuadricLanes`) of a node's members when they are two to four plain quadric
-/// leaves (no face, clip or window) that `crossings_lanes` answers for; `None` for any other
-/// node, or without AVX. Asked once, when the node's index is attached
-/// (`children::attach_indexes`, `Cull::quadrics`): per search, it cost a call through each
-/// member's table (`as_algebraic`) and the kernel gathered the coefficients lane by lane.
-pub(super) fn quadric_lanes_of(children: &[Object], faces: Option<&Faces>) -> Option<QuadricLanes> {
-    if !(2..=LANES).contains(&children.len()) || !cfg!(target_arch = "x86_64") || !has_avx() {
-        return None;
-    }
-    let mut q = Vec::with_capacity(LANES);
-    for (i, c) in children.iter().enumerate() {
-        match &c.kind {
-            ObjKind::Shape(shape, None)
-                if c.clip.is_empty() && faces.and_then(|f| f.get(i)).is_none() =>
-            {
-                q.push(shape.as_algebraic()?);
-            }
-            _ => return None,
-        }
-    }
-    QuadricLanes::of(&q)
-}
-
-impl Object {
-    /// This node's members in lanes (`Cull::quadrics`), if it has them.
-    #[inline(always)]
-    fn quadric_lanes(&self) -> Option<&QuadricLanes> {
-        match &self.kind {
-            ObjKind::Csg { cull: Some(c), .. } => c.quadrics.as_deref(),
-            _ => None,
-        }
-    }
-}
-
-/// `csg_first_hit`'s gather for the members in lanes (`quadric_lanes_of`): each member's crossings
-/// from its lane, pushed as `gather_hits` pushes a leaf's (the shape's `intersect_all` into
-/// `s.csg_hits`, an order entry for those below `tmax`), after the same slab tests, in member
-/// order; a lane the kernel leaves to the shape goes through `gather_hits` itself.
-#[inline(always)]
-fn gather_quadrics<'a>(
-    children: &'a [Object],
-    shapes: &QuadricLanes,
-    ray: &Ray,
-    slabs: &Slabs,
-    tmax: f64,
-    s: &mut Scratch<'a>,
-    keeps: &impl Fn(u32, f64) -> bool,
-) {
-    let mut rays = [*ray; LANES];
-    let mut live = [false; LANES];
-    for (j, c) in children.iter().enumerate() {
-        live[j] = slabs.hits(&c.bounds, tmax);
-        if let Some(t) = &c.transform {
-            rays[j] = t.inv_ray(ray);
-        }
-    }
-    if !live.contains(&true) {
-        return;
-    }
-    #[cfg(target_arch = "x86_64")]
-    {
-        // SAFETY: `quadric_lanes_of` answers only with AVX.
-        let got = unsafe { crossings_lanes(shapes, [&rays[0], &rays[1], &rays[2], &rays[3]]) };
-        for (j, c) in children.iter().enumerate() {
-            if !live[j] {
-                continue;
-            }
-            if got.defer >> j & 1 != 0 {
-                gather_hits(c, None, ray, tmax, s, j as u32, keeps);
-                continue;
-            }
-            for r in 0..2 {
-                if got.keep[r] >> j & 1 != 0 {
-                    let t = got.t[r][j];
-                    let k = s.csg_hits.len();
-                    s.csg_hits.push(Hit::new(t));
-                    if t < tmax {
-                        s.csg_order
-                            .push(order_entry(order_key(t), (k as u32) << 1, j as u32));
-                    }
-                }
-            }
-        }
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = (shapes, rays, s, keeps);
-}
-
-/// `csg_keeps(op, i, children, None, faces, p, rejecter)` for the members in lanes
-/// (`quadric_lanes_of`): the same questions in the same order (none of them has a face, so
-/// each is asked as `member_wants` asks a plain leaf), each shape's `inside` answered by its
-/// diagonal form in the lanes, without the dispatch through the shape's table.
-#[inline(always)]
-fn quadric_keeps(
-    op: CsgOp,
-    i: usize,
-    children: &[Object],
-    shapes: &QuadricLanes,
-    p: DVec3,
-    rejecter: &Cell<usize>,
-) -> bool {
-    if op == CsgOp::Union {
-        return true;
-    }
-    let wants = |j: usize| {
-        let c = &children[j];
-        let inside = if c.bounds.holds(p) {
-            shapes.inside(j, c.local_point(p)) != c.inverse
-        } else {
-            c.inverse
-        };
-        inside == want_inside(op, j)
-    };
-    let r = rejecter.get();
-    if r != i && r < children.len() && !wants(r) {
-        return false;
-    }
-    for j in 0..children.len() {
-        if j != i && j != r && !wants(j) {
-            rejecter.set(j);
-            return false;
-        }
-    }
-    true
-}
-
-/// `csg_any_hit`'s member loop for the members in lanes (`quadric_lanes_of`): whether `keep(i, t)`
-/// holds for a crossing `t < tmax` of a member `i` that passes its slab test, each member's
-/// crossings from its lane (a lane the kernel leaves to the shape is asked as `csg_any_hit`
-/// asks a leaf: `any_kept`). The same crossings meet the same tests as there, and no test has
-/// a side effect on an answer, so the answer is the same.
-#[inline(always)]
-fn any_quadric_kept<'a>(
-    children: &'a [Object],
-    shapes: &QuadricLanes,
-    ray: &Ray,
-    slabs: &Slabs,
-    tmax: f64,
-    s: &mut Scratch<'a>,
-    keep: impl Fn(usize, f64) -> bool,
-) -> bool {
-    let mut rays = [*ray; LANES];
-    let mut live = [false; LANES];
-    for (j, c) in children.iter().enumerate() {
-        live[j] = slabs.hits(&c.bounds, tmax);
-        if let Some(t) = &c.transform {
-            rays[j] = t.inv_ray(ray);
-        }
-    }
-    if !live.contains(&true) {
-        return false;
-    }
-    #[cfg(target_arch = "x86_64")]
-    {
-        // SAFETY: `quadric_lanes_of` answers only with AVX.
-        let got = unsafe { crossings_lanes(shapes, [&rays[0], &rays[1], &rays[2], &rays[3]]) };
-        for j in 0..children.len() {
-            if !live[j] {
-                continue;
-            }
-            if got.defer >> j & 1 != 0 {
-                // The member's own shape (`quadric_lanes_of` took plain leaves only).
-                let ObjKind::Shape(shape, _) = &children[j].kind else {
-                    unreachable!("quadric lanes are leaves");
-                };
-                if shape.any_kept(&rays[j], tmax, &mut s.hits, &mut |t| keep(j, t)) {
-                    return true;
-                }
-                continue;
-            }
-            for r in 0..2 {
-                let t = got.t[r][j];
-                if got.keep[r] >> j & 1 != 0 && t < tmax && keep(j, t) {
-                    return true;
-                }
-            }
-        }
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = (shapes, s, keep);
-    false
 }
 
 impl Object {
@@ -469,6 +285,89 @@ impl Object {
             };
             leaf_kept() && kept() && clip_kept()
         };
+        // Whether order entry `e` is kept, and its surface hit if so. Inlined at both of its
+        // calls: as a call, its frame and arguments cost more than the lead's search saved.
+        let accept = std::convert::identity(
+            #[inline(always)]
+            |e: u128, hits: &[Hit], surface: &[SurfaceHit<'a>]| {
+                let (j, tag) = (entry_place(e), entry_tag(e));
+                // From the key, not from the record: the keep tests read nothing else of it.
+                let t = entry_t(e);
+                let i = if FOLD {
+                    tag & ((1 << LEAF_SHIFT) - 1)
+                } else {
+                    tag
+                } as usize;
+                let leaf = if FOLD {
+                    (tag >> LEAF_SHIFT) as usize
+                } else {
+                    0
+                };
+                keeps(tag, t).then(|| {
+                    let rec = hits[(j >> 1) as usize];
+                    let mut h = if j & LISTED != 0 {
+                        surface[rec.part as usize]
+                    } else {
+                        // `push_crossing`'s leaf: member `i`, or its folded leaf.
+                        let c = member_at(children, index, i);
+                        let c = match leaf {
+                            0 => c,
+                            k => {
+                                &folded(c)
+                                    .expect("tagged crossings come from folded members")
+                                    .0[k - 1]
+                            }
+                        };
+                        SurfaceHit {
+                            t: rec.t,
+                            obj: c,
+                            hit: rec,
+                            flip: c.inverse,
+                        }
+                    };
+                    h.flip ^= op == CsgOp::Difference && i > 0;
+                    h.flip ^= self.inverse;
+                    h
+                })
+            },
+        );
+        // The lead (`csg_lead`) gathered first, as the gather below would: when its nearest
+        // crossing is kept and every point before it lies outside the lead's bounds (where no
+        // other crossing is kept), that crossing is the answer, the others not listed.
+        let lead = self.lead();
+        let led = match lead {
+            Lead::None => false,
+            Lead::Folded if !fold => false,
+            _ => lead_reached(lead, children, ray, inv_dir, &slabs, tmax),
+        };
+        if led {
+            let leaf = lead_leaf(lead, children);
+            let tag = if lead == Lead::Folded {
+                1 << LEAF_SHIFT
+            } else {
+                0
+            };
+            gather_hits(leaf, None, ray, tmax, s, tag, &keeps);
+            let first = (order_from..s.csg_order.len()).min_by_key(|&k| s.csg_order[k]);
+            if let Some(k) =
+                first.filter(|&k| beyond_before(ray, &leaf.bounds, entry_t(s.csg_order[k])))
+            {
+                match accept(s.csg_order[k], &s.csg_hits, &s.surface) {
+                    Some(h) => {
+                        s.csg_order.truncate(order_from);
+                        s.csg_hits.truncate(hits_from);
+                        s.surface.truncate(start);
+                        return Some(h);
+                    }
+                    // Not kept, so not the answer: the search need not ask it again (the
+                    // entries are sorted below, so their order here does not matter).
+                    None => {
+                        s.csg_order.swap_remove(k);
+                    }
+                }
+            }
+        }
+        let skip = if led { lead } else { Lead::None };
         if let Some(shapes) = quadrics {
             gather_quadrics(children, shapes, ray, &slabs, tmax, s, &keeps);
         } else {
@@ -482,6 +381,10 @@ impl Object {
                 s,
                 #[inline(always)]
                 |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
+                    // The lead is gathered already.
+                    if skip == Lead::Member && i == 0 {
+                        return;
+                    }
                     if !slabs.hits(&c.bounds, tmax) {
                         return;
                     }
@@ -493,6 +396,9 @@ impl Object {
                         }
                         let leaf_faces = leaf_faces.filter(|_| faces::ray_ok(ray));
                         for (k, g) in leaves.iter().enumerate() {
+                            if skip == Lead::Folded && i == 0 && k == 0 {
+                                continue;
+                            }
                             if !slabs.hits(&g.bounds, tmax) {
                                 continue;
                             }
@@ -516,47 +422,9 @@ impl Object {
         let order = &mut s.csg_order[order_from..];
         // By (t as `total_cmp` orders it, place in the gather): places differ between entries.
         sort_crossings(order);
-        let best = order.iter().find_map(|&e| {
-            let (j, tag) = (entry_place(e), entry_tag(e));
-            // From the key, not from the record: the keep tests read nothing else of it.
-            let t = entry_t(e);
-            let i = if FOLD {
-                tag & ((1 << LEAF_SHIFT) - 1)
-            } else {
-                tag
-            } as usize;
-            let leaf = if FOLD {
-                (tag >> LEAF_SHIFT) as usize
-            } else {
-                0
-            };
-            keeps(tag, t).then(|| {
-                let rec = s.csg_hits[(j >> 1) as usize];
-                let mut h = if j & LISTED != 0 {
-                    s.surface[rec.part as usize]
-                } else {
-                    // `push_crossing`'s leaf: member `i`, or its folded leaf.
-                    let c = member_at(children, index, i);
-                    let c = match leaf {
-                        0 => c,
-                        k => {
-                            &folded(c)
-                                .expect("tagged crossings come from folded members")
-                                .0[k - 1]
-                        }
-                    };
-                    SurfaceHit {
-                        t: rec.t,
-                        obj: c,
-                        hit: rec,
-                        flip: c.inverse,
-                    }
-                };
-                h.flip ^= op == CsgOp::Difference && i > 0;
-                h.flip ^= self.inverse;
-                h
-            })
-        });
+        let best = order
+            .iter()
+            .find_map(|&e| accept(e, &s.csg_hits, &s.surface));
         s.csg_order.truncate(order_from);
         s.csg_hits.truncate(hits_from);
         s.surface.truncate(start);
@@ -601,19 +469,25 @@ impl Object {
                     && (clip.is_empty() || (t > EPSILON && clip.iter().all(|c| c.inside(p))))
             });
         }
+        let keep_at = |i: usize, t: f64| {
+            let p = ray.at(t);
+            (match boxes.filter(|_| BOXES) {
+                Some(b) => csg_keeps_boxes(op, i, children, faces, b, p, &rejecter),
+                None => csg_keeps(op, i, children, index, faces, p, &rejecter),
+            }) && (clip.is_empty() || (t > EPSILON && clip.iter().all(|c| c.inside(p))))
+        };
+        // Beyond the lead's bounds from `EPSILON` on, only its crossings can be kept.
+        let lead = self.lead();
+        if let Some(found) = lead_any_hit(lead, children, ray, inv_dir, &slabs, tmax, s, keep_at) {
+            return found;
+        }
         let mut found = false;
         each_member(children, index, ray, tmax, s, |c, i, s| {
             if found || !slabs.hits(&c.bounds, tmax) {
                 return;
             }
             let face = ray_faces.and_then(|f| f.get(i));
-            let mut keep = |t: f64| {
-                let p = ray.at(t);
-                (match boxes.filter(|_| BOXES) {
-                    Some(b) => csg_keeps_boxes(op, i, children, faces, b, p, &rejecter),
-                    None => csg_keeps(op, i, children, index, faces, p, &rejecter),
-                }) && (clip.is_empty() || (t > EPSILON && clip.iter().all(|c| c.inside(p))))
-            };
+            let mut keep = |t: f64| keep_at(i, t);
             // A box member (`csg_boxes`): the leaf case below without dispatch.
             if let Some(b) = boxes.filter(|_| BOXES).and_then(|b| b.get(i)) {
                 let mut local = None;

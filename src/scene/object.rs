@@ -44,12 +44,10 @@ pub struct Cull {
     /// The members that are box leaves, of a node other than a union without index: its
     /// searches ask them without dispatch (`scene::csg_boxes`).
     pub boxes: Option<crate::scene::csg_boxes::BoxMembers>,
-    /// Which search `first_hit` runs, set with the fields above: one byte read instead of a
-    /// test per kind.
+    /// Which search `first_hit` runs, set with the fields above (one byte, not a test a kind).
     pub search: crate::scene::csg_boxes::Search,
     /// The members' diagonal forms in AVX lanes, for a node without index or box members
-    /// whose two to four members are plain quadric leaves (`csg_hit::quadric_lanes_of`):
-    /// its searches solve them four at a time.
+    /// whose 2-4 members are plain quadric leaves (`csg_quadrics`), solved four at a time.
     pub quadrics: Option<Box<crate::geom::algebraic::QuadricLanes>>,
     /// The members, when they are all boxes under one transform, of a node other than a
     /// union without index, box members, folds or faces (`scene::csg_framed`).
@@ -57,6 +55,8 @@ pub struct Cull {
     /// A difference's box in its turned first member's space (`cull::LocalBox`), which a
     /// ray listing the node's crossings must cross.
     pub local: Option<Box<crate::scene::cull::LocalBox>>,
+    /// The leaf every kept point lies in, for nodes without index or quadric lanes.
+    pub lead: crate::scene::csg_lead::Lead,
 }
 
 /// A shape's data with the textures of its parts (mesh triangles, blob components).

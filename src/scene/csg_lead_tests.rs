@@ -1,0 +1,130 @@
+//! Unit tests of `scene::csg_lead`: nodes with a lead answer `first_hit` and `any_hit` as
+//! `all_hits` does, bit for bit, for rays starting on their surfaces (where the lead's
+//! certificates hold) as well as from anywhere.
+
+use super::{beyond_after, beyond_before, lead_leaf, Lead};
+use crate::geom::test_rng::Lcg;
+use crate::math::{DVec3, Ray, EPSILON};
+use crate::scene::csg_hit::tests::{built, reference};
+use crate::scene::object::{Object, Scratch, SurfaceHit};
+
+/// The woods' boards (a folded lead, moved, turned, scaled), a difference and an
+/// intersection whose first member is the lead (a box, a cylinder), a clipped one, a lead
+/// under a turn (bounds wider than the box) and an inverted node.
+const SCENE: &str = r#"
+    #declare Disk_X = cylinder { x, -x, 1 }
+    #declare Disk_Y = cylinder { y, -y, 1 }
+    #declare Test = intersection {
+        intersection { box { -1, 1 scale <1, 1, 0.95> } object { Disk_X scale 1.15 } }
+        object { Disk_Y scale 1.15 } }
+    object { Test translate <-2.1, 4.2, 0> }
+    object { Test rotate <10, 20, 30> translate <0.5, -1, 3> }
+    object { Test scale <1e-3, 2e-3, 1e-3> translate <1e3, 0, 0> }
+    difference { box { -1, 1 } cylinder { -2 * z, 2 * z, 0.5 } sphere { y, 0.7 } }
+    intersection { cylinder { -x, x, 1 } box { <-2, -0.5, -0.5>, <2, 0.5, 2> } sphere { 0, 1.3 } }
+    intersection { box { -1, 1 } object { Disk_X } clipped_by { plane { y, 0.3 } } }
+    intersection { box { -1, 1 rotate 30 * z } sphere { x, 1.2 } }
+    intersection { box { -1, 1 } sphere { 0, 1.2 } inverse }
+"#;
+
+fn key(h: Option<SurfaceHit>) -> Option<(u64, bool, *const Object, u32)> {
+    h.map(|h| (h.t.to_bits(), h.flip, h.obj as *const Object, h.hit.part))
+}
+
+#[test]
+fn leads_answer_as_all_hits() {
+    let scene = built(SCENE);
+    let leads: Vec<Lead> = scene.objects.iter().map(Object::lead).collect();
+    assert_eq!(
+        leads,
+        [
+            Lead::Folded,
+            Lead::Folded,
+            Lead::Folded,
+            Lead::Member,
+            Lead::Member,
+            Lead::Member,
+            Lead::Member,
+            Lead::Member
+        ]
+    );
+    let mut rng = Lcg(33);
+    let (mut sa, mut sb) = (Scratch::default(), Scratch::default());
+    for (n, o) in scene.objects.iter().enumerate() {
+        let super::super::object::ObjKind::Csg { children, .. } = &o.kind else {
+            panic!("object {n} is a node");
+        };
+        let lead = lead_leaf(leads[n], children);
+        // Around the lead (an inverted node's own bounds are infinite).
+        let c = lead.bounds.center();
+        let size = (lead.bounds.max - lead.bounds.min).max_element();
+        let (mut on_surface, mut after, mut before) = (0, 0, 0);
+        for k in 0..20000 {
+            // Aimed near the object, so that most rays meet it.
+            let from = c + rng.vec(3.0 * size);
+            let mut ray = Ray::new(from, c + rng.vec(size) - from);
+            let tmax = if rng.next() < 0.2 {
+                size
+            } else {
+                f64::INFINITY
+            };
+            // Every other ray leaves the surface where a first ray met it, as shadow rays do.
+            if k % 2 == 1 {
+                match reference(o, &ray, f64::INFINITY, &mut sb) {
+                    Some(h) => {
+                        ray = Ray::new(ray.at(h.t), rng.vec(2.0));
+                        on_surface += 1;
+                    }
+                    None => continue,
+                }
+            }
+            after += beyond_after(&ray, &lead.bounds, EPSILON) as usize;
+            if let Some(h) = reference(o, &ray, tmax, &mut sb) {
+                before += beyond_before(&ray, &lead.bounds, h.t) as usize;
+            }
+            let want = key(reference(o, &ray, tmax, &mut sb));
+            assert_eq!(
+                key(o.first_hit(&ray, tmax, &mut sa)),
+                want,
+                "object {n}, ray {k}"
+            );
+            assert_eq!(
+                o.any_hit(&ray, tmax, &mut sa),
+                want.is_some(),
+                "object {n}, ray {k}"
+            );
+            assert!(sa.surface.is_empty() && sa.csg_order.is_empty() && sa.csg_hits.is_empty());
+        }
+        // Rays from the surface on every object; the certificates put to the test on the
+        // boards whose box is not turned (a turned box's bounds are wider than it).
+        assert!(on_surface > 1000, "object {n}: {on_surface}");
+        if n == 0 {
+            assert!(after > 200 && before > 50, "object {n}: {after} {before}");
+        }
+    }
+}
+
+/// `beyond_after` and `beyond_before` at the doubles next to a face: the point at `t0` must
+/// be strictly past it, as `Aabb::holds` counts a point on a face as held.
+#[test]
+fn certificates_at_the_faces() {
+    let b = crate::math::Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0));
+    let ray = Ray::new(DVec3::new(0.0, 0.0, -1.0), DVec3::new(0.0, 0.0, -1.0));
+    assert!(!beyond_after(&ray, &b, 0.0));
+    assert!(beyond_after(&ray, &b, 1e-15));
+    // -3 + 2 (1 - 2^-53) is -1 - 2^-52, short of the face; -3 + 2 (1 + 2^-52) is past it.
+    let ray = Ray::new(DVec3::new(0.0, 0.0, -3.0), DVec3::new(0.0, 0.0, 2.0));
+    assert!(beyond_before(&ray, &b, 1.0));
+    assert!(!beyond_before(
+        &ray,
+        &b,
+        f64::from_bits(1.0f64.to_bits() + 2)
+    ));
+    // -2 + (1 - 2^-53) rounds to -1 itself: on the face, held, so no certificate.
+    let ray = Ray::new(DVec3::new(0.0, 0.0, -2.0), DVec3::Z);
+    assert!(!beyond_before(&ray, &b, 1.0));
+    assert!(!beyond_before(&ray, &b, 0.0));
+    assert!(!beyond_before(&ray, &b, f64::NAN));
+    let ray = Ray::new(DVec3::new(0.0, 0.0, -2.0), DVec3::X);
+    assert!(!beyond_before(&ray, &b, 1.0) && !beyond_after(&ray, &b, 1.0));
+}
