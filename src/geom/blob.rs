@@ -702,6 +702,30 @@ impl Shape for Blob {
         scratch.first().is_some_and(|h| h.t < tmax)
     }
 
+    /// The listing's least kept crossing below `tmax` alone (`any_kept`'s walk: crossings
+    /// nearest first, the same bits and part, each polished only when reached): the CSG
+    /// search takes a member's least kept crossing, so the others cannot change its answer.
+    /// `sturm` blobs list.
+    fn gather_kept(
+        &self,
+        ray: &Ray,
+        tmax: f64,
+        out: &mut Vec<Hit>,
+        scratch: &mut Vec<Hit>,
+        keep: &mut dyn FnMut(f64) -> bool,
+    ) {
+        if self.sturm {
+            return self.intersect_all(ray, out);
+        }
+        scratch.clear();
+        let accept = |t: f64| t >= tmax || keep(t);
+        WORK.with(|w| match w.try_borrow_mut() {
+            Ok(mut w) => self.crossings(ray, &mut w, scratch, true, tmax, accept),
+            Err(_) => self.crossings(ray, &mut Work::default(), scratch, true, tmax, accept),
+        });
+        out.extend(scratch.first().filter(|h| h.t < tmax));
+    }
+
     fn inside(&self, p: DVec3) -> bool {
         self.field(p) > self.threshold
     }

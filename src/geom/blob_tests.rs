@@ -250,7 +250,7 @@ fn roots_surely_behind_are_behind() {
 
 #[test]
 fn any_kept_is_intersect_all() {
-    // CSG and clipped shadow rays: `any_kept` asks exactly the listed crossings below
+    // CSG and clipped shadow rays (and `gather_kept`, the CSG camera search): `any_kept` asks exactly the listed crossings below
     // tmax, nearest first, bit for bit, up to the first kept one, for rays from the
     // surface (roots at t <= EPSILON deferred) and from anywhere.
     let mut arm = leaning_arm();
@@ -301,6 +301,22 @@ fn any_kept_is_intersect_all() {
                     test(t)
                 });
                 assert_eq!(got, want.is_some(), "{ray:?} {tmax} {listed:?}");
+                // `gather_kept`: the least kept crossing it appends is the listing's first
+                // kept one below `tmax` (the listing is nearest first), bits and part.
+                let mut out = Vec::new();
+                b.gather_kept(&ray, tmax, &mut out, &mut scratch, &mut |t| test(t));
+                let least = out
+                    .iter()
+                    .filter(|h| h.t < tmax && test(h.t))
+                    .min_by(|a, b| a.t.total_cmp(&b.t))
+                    .map(|h| (h.t.to_bits(), h.part));
+                let mut all = Vec::new();
+                b.intersect_all(&ray, &mut all);
+                let first = all
+                    .iter()
+                    .find(|h| h.t < tmax && test(h.t))
+                    .map(|h| (h.t.to_bits(), h.part));
+                assert_eq!(least, first, "{ray:?} {tmax}");
                 if !sturm {
                     let upto = want.map_or(below.len(), |k| k + 1);
                     let bits = |v: &[f64]| v.iter().map(|t| t.to_bits()).collect::<Vec<_>>();

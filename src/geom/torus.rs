@@ -145,6 +145,51 @@ impl Torus {
         (!past && t < tmax).then_some(t)
     }
 
+    /// The first of `crossings` below `tmax` that `keep` holds for, asking `keep` of those
+    /// before it in order; `None` when the walk does not apply (`sturm`, a sphere's square),
+    /// where the caller lists. Roots come nearest first, each polished only when the walk
+    /// reaches it (`first_root_with`, the same bits as `roots_in`), with `crossings`' filters
+    /// replayed on the way: `Roots::push`'s merge of a root equal to the one before,
+    /// `t > EPSILON`, and at most four crossings.
+    #[inline(always)]
+    fn first_kept(
+        &self,
+        ray: &Ray,
+        tmax: f64,
+        keep: &mut dyn FnMut(f64) -> bool,
+    ) -> Option<Option<f64>> {
+        let Some(q) = self.setup(ray) else {
+            return Some(None);
+        };
+        let c = match &q.poly {
+            Poly::Quartic(c) if !self.sturm && surely_no_root_quartic_from_zero(c, q.hi) => {
+                return Some(None);
+            }
+            Poly::Quartic(c) if !self.sturm => c,
+            _ => return None,
+        };
+        let (mut last, mut listed, mut found) = (None, 0, None);
+        first_root_with_unchecked(c, 0.0, q.hi, |cand| {
+            let s = cand.root();
+            if last == Some(s) {
+                return None;
+            }
+            last = Some(s);
+            let t = q.to_t(s);
+            if t.is_nan() || t <= EPSILON {
+                return None;
+            }
+            // Roots increase, and `t` with them: none after this one is below `tmax`.
+            if listed == 4 || t >= tmax {
+                return Some(s);
+            }
+            listed += 1;
+            found = keep(t).then_some(t);
+            found.map(|_| s)
+        });
+        Some(found)
+    }
+
     /// The polynomial whose roots in `[0, hi]` are the crossings, in the shifted and scaled
     /// variable of the module's notes; None when the ray misses the bounds.
     #[inline(always)]
@@ -271,11 +316,9 @@ impl Shape for Torus {
         self.first_below(ray, tmax).map(Hit::new)
     }
 
-    /// The crossings `intersect_all` lists, nearest first, each polished only when the walk
-    /// reaches it (`first_root_with`, the same bits as `roots_in`): a CSG shadow ray whose
-    /// first kept crossing is the torus's nearest does not polish the other two or three.
-    /// `crossings`' filters are replayed on the way: `Roots::push`'s merge of a root equal
-    /// to the one before, `t > EPSILON`, and at most four crossings.
+    /// The crossings `intersect_all` lists, nearest first, to the first kept (`first_kept`):
+    /// a CSG shadow ray whose first kept crossing is the torus's nearest does not polish the
+    /// other two or three.
     fn any_kept(
         &self,
         ray: &Ray,
@@ -283,40 +326,30 @@ impl Shape for Torus {
         scratch: &mut Vec<Hit>,
         keep: &mut dyn FnMut(f64) -> bool,
     ) -> bool {
-        let Some(q) = self.setup(ray) else {
-            return false;
-        };
-        let c = match &q.poly {
-            Poly::Quartic(c) if !self.sturm && surely_no_root_quartic_from_zero(c, q.hi) => {
-                return false;
-            }
-            Poly::Quartic(c) if !self.sturm => c,
-            _ => {
+        match self.first_kept(ray, tmax, keep) {
+            Some(found) => found.is_some(),
+            None => {
                 scratch.clear();
                 self.intersect_all(ray, scratch);
-                return scratch.iter().any(|h| h.t < tmax && keep(h.t));
+                scratch.iter().any(|h| h.t < tmax && keep(h.t))
             }
-        };
-        let (mut last, mut listed, mut found) = (None, 0, false);
-        first_root_with_unchecked(c, 0.0, q.hi, |cand| {
-            let s = cand.root();
-            if last == Some(s) {
-                return None;
-            }
-            last = Some(s);
-            let t = q.to_t(s);
-            if t.is_nan() || t <= EPSILON {
-                return None;
-            }
-            // Roots increase, and `t` with them: none after this one is below `tmax`.
-            if listed == 4 || t >= tmax {
-                return Some(s);
-            }
-            listed += 1;
-            found = keep(t);
-            found.then_some(s)
-        });
-        found
+        }
+    }
+
+    /// The least kept crossing below `tmax` alone (`first_kept`): the CSG search takes a
+    /// member's least kept crossing, so the others cannot change its answer.
+    fn gather_kept(
+        &self,
+        ray: &Ray,
+        tmax: f64,
+        out: &mut Vec<Hit>,
+        _scratch: &mut Vec<Hit>,
+        keep: &mut dyn FnMut(f64) -> bool,
+    ) {
+        match self.first_kept(ray, tmax, keep) {
+            Some(found) => out.extend(found.map(Hit::new)),
+            None => self.intersect_all(ray, out),
+        }
     }
 
     fn inside(&self, p: DVec3) -> bool {

@@ -1,4 +1,4 @@
-//! Unit tests of `geom::torus`: `any_kept` against `intersect_all`, known crossings, far and
+//! Unit tests of `geom::torus`: `any_kept` and `gather_kept` against `intersect_all`, known crossings, far and
 //! degenerate tori, and silhouettes and tangent rays against a signed-distance reference.
 
 use super::*;
@@ -9,7 +9,7 @@ fn all(s: &Torus, r: &Ray) -> Vec<f64> {
     v.iter().map(|h| h.t).collect()
 }
 
-/// `any_kept` answers as `intersect_all`'s crossings below `tmax` do, for keep tests
+/// `any_kept` (and `gather_kept`) answers as `intersect_all`'s crossings below `tmax` do, for keep tests
 /// that take some crossings and not others, and asks only crossings that list has (the
 /// same bits): rays from inside and outside, grazing ones, spindle and degenerate tori.
 #[test]
@@ -52,6 +52,23 @@ fn any_kept_is_intersect_all() {
             for t in &asked {
                 assert!(listed.iter().any(|l| l.to_bits() == t.to_bits()));
             }
+            // `gather_kept`: the listing's least kept crossing below `tmax`, to the bit, is
+            // the least kept one it appends (the CSG search's answer from this member).
+            let least = |v: &[f64]| {
+                v.iter()
+                    .copied()
+                    .filter(|&t| t < tmax && t > cut)
+                    .min_by(f64::total_cmp)
+                    .map(f64::to_bits)
+            };
+            let mut out = Vec::new();
+            s.gather_kept(&ray, tmax, &mut out, &mut Vec::new(), &mut |t| t > cut);
+            let gathered: Vec<f64> = out.iter().map(|h| h.t).collect();
+            assert_eq!(
+                least(&gathered),
+                least(&listed),
+                "{s:?} {ray:?} {tmax} {cut}"
+            );
             kept += usize::from(got);
             total += 1;
         }
