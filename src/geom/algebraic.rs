@@ -18,7 +18,7 @@ mod lanes;
 mod quadric;
 use expand::{add_term, along_quartic, powers_unrolled, quartic_term, QuarticTerm};
 #[cfg(target_arch = "x86_64")]
-pub use lanes::crossings_lanes;
+pub use lanes::{crossings_lanes, crossings_pair};
 pub use lanes::{LaneHits, QuadricLanes, LANES};
 use quadric::Diagonal;
 

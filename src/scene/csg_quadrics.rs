@@ -5,7 +5,7 @@
 use std::cell::Cell;
 
 #[cfg(target_arch = "x86_64")]
-use crate::geom::algebraic::crossings_lanes;
+use crate::geom::algebraic::{crossings_lanes, crossings_pair};
 use crate::geom::algebraic::{QuadricLanes, LANES};
 use crate::geom::Hit;
 use crate::math::{has_avx, DVec3, Ray, Slabs};
@@ -77,7 +77,14 @@ pub(super) fn gather_quadrics<'a>(
     #[cfg(target_arch = "x86_64")]
     {
         // SAFETY: `quadric_lanes_of` answers only with AVX.
-        let got = unsafe { crossings_lanes(shapes, [&rays[0], &rays[1], &rays[2], &rays[3]]) };
+        // Two members in two 128-bit lanes: four would spend half their work on copies.
+        let got = unsafe {
+            if children.len() == 2 {
+                crossings_pair(shapes, [&rays[0], &rays[1]])
+            } else {
+                crossings_lanes(shapes, [&rays[0], &rays[1], &rays[2], &rays[3]])
+            }
+        };
         for (j, c) in children.iter().enumerate() {
             if !live[j] {
                 continue;
@@ -170,7 +177,14 @@ pub(super) fn any_quadric_kept<'a>(
     #[cfg(target_arch = "x86_64")]
     {
         // SAFETY: `quadric_lanes_of` answers only with AVX.
-        let got = unsafe { crossings_lanes(shapes, [&rays[0], &rays[1], &rays[2], &rays[3]]) };
+        // Two members in two 128-bit lanes: four would spend half their work on copies.
+        let got = unsafe {
+            if children.len() == 2 {
+                crossings_pair(shapes, [&rays[0], &rays[1]])
+            } else {
+                crossings_lanes(shapes, [&rays[0], &rays[1], &rays[2], &rays[3]])
+            }
+        };
         for j in 0..children.len() {
             if !live[j] {
                 continue;

@@ -10,11 +10,8 @@
 //! kernel leaves out (a coefficient, discriminant or quotient that is not finite, a direction
 //! length near the ends of the range), it answers `None` and the caller asks the shape itself.
 
-#[cfg(target_arch = "x86_64")]
-use std::arch::x86_64::*;
-
 use super::{quadric::Diagonal, Algebraic, FAR};
-use crate::math::{DVec3, Ray, EPSILON};
+use crate::math::DVec3;
 
 /// What [`crossings_lanes`] answers: lane `j`'s crossings as `intersect_all` lists them are
 /// `t[0][j]` when bit `j` of `keep[0]` is set, then `t[1][j]` when that of `keep[1]` is;
@@ -105,211 +102,273 @@ impl QuadricLanes {
     }
 }
 
-/// `intersect_all` of lane `j`'s shape of `q` on `rays[j]`; a lane whose answer is not
-/// wanted may repeat another's.
-///
-/// # Safety
-/// The CPU must have AVX (`math::has_avx`).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-pub unsafe fn crossings_lanes(q: &QuadricLanes, rays: [&Ray; 4]) -> LaneHits {
-    let lane = |f: &dyn Fn(usize) -> f64| _mm256_set_pd(f(3), f(2), f(1), f(0));
-    let load = |v: &[f64; 4]| _mm256_loadu_pd(v.as_ptr());
-    let splat = _mm256_set1_pd;
-    let (add, sub, mul, div) = (_mm256_add_pd, _mm256_sub_pd, _mm256_mul_pd, _mm256_div_pd);
-    let and = _mm256_and_pd;
-    let sign = splat(-0.0);
-    let abs = |v: __m256d| _mm256_andnot_pd(sign, v);
-    let lt = |a: __m256d, b: __m256d| _mm256_cmp_pd::<_CMP_LT_OQ>(a, b);
-    let gt = |a: __m256d, b: __m256d| _mm256_cmp_pd::<_CMP_GT_OQ>(a, b);
-    let ge = |a: __m256d, b: __m256d| _mm256_cmp_pd::<_CMP_GE_OQ>(a, b);
-    let le = |a: __m256d, b: __m256d| _mm256_cmp_pd::<_CMP_LE_OQ>(a, b);
-    let eq = |a: __m256d, b: __m256d| _mm256_cmp_pd::<_CMP_EQ_OQ>(a, b);
-    // `!=` as Rust compares: true for NaN.
-    let ne = |a: __m256d, b: __m256d| _mm256_cmp_pd::<_CMP_NEQ_UQ>(a, b);
-    // `m ? a : b`.
-    let pick = |m: __m256d, a: __m256d, b: __m256d| _mm256_blendv_pd(b, a, m);
-    let inf = splat(f64::INFINITY);
-    let finite = |v: __m256d| lt(abs(v), inf);
-    let zero = _mm256_setzero_pd();
+/// The kernel's body, written once for both widths: it is expanded in `x4` and `x2`, each of
+/// which names its own width's intrinsics `add`, `cmp`, `loadu`, ... and the vector type `V`
+/// (a macro's function and type names resolve where it is expanded), so both run the same
+/// IEEE operations in the same order.
+macro_rules! quadric_kernel {
+    ($(#[$m:meta])* $name:ident, $n:literal, $lane:expr) => {
+        $(#[$m])*
+        ///
+        /// # Safety
+        /// The CPU must have AVX (`math::has_avx`).
+        #[target_feature(enable = "avx")]
+        pub unsafe fn $name(q: &QuadricLanes, rays: [&Ray; $n]) -> LaneHits {
+            let lane = $lane;
+            let load = |v: &[f64; 4]| loadu(v.as_ptr());
+            let splat = set1;
+            let sign = splat(-0.0);
+            let abs = |v: V| andnot(sign, v);
+            let lt = |a: V, b: V| cmp::<_CMP_LT_OQ>(a, b);
+            let gt = |a: V, b: V| cmp::<_CMP_GT_OQ>(a, b);
+            let ge = |a: V, b: V| cmp::<_CMP_GE_OQ>(a, b);
+            let le = |a: V, b: V| cmp::<_CMP_LE_OQ>(a, b);
+            let eq = |a: V, b: V| cmp::<_CMP_EQ_OQ>(a, b);
+            // `!=` as Rust compares: true for NaN.
+            let ne = |a: V, b: V| cmp::<_CMP_NEQ_UQ>(a, b);
+            // `m ? a : b`.
+            let pick = |m: V, a: V, b: V| blendv(b, a, m);
+            let inf = splat(f64::INFINITY);
+            let finite = |v: V| lt(abs(v), inf);
+            let zero = setzero();
 
-    let (ox, oy, oz) = (
-        lane(&|j| rays[j].origin.x),
-        lane(&|j| rays[j].origin.y),
-        lane(&|j| rays[j].origin.z),
-    );
-    let (dx, dy, dz) = (
-        lane(&|j| rays[j].dir.x),
-        lane(&|j| rays[j].dir.y),
-        lane(&|j| rays[j].dir.z),
-    );
-    let (a0, a1, a2) = (load(&q.sq[0]), load(&q.sq[1]), load(&q.sq[2]));
-    let (l0, l1, l2) = (load(&q.lin[0]), load(&q.lin[1]), load(&q.lin[2]));
-    let k = load(&q.k);
+            let (ox, oy, oz) = (
+                lane(&|j| rays[j].origin.x),
+                lane(&|j| rays[j].origin.y),
+                lane(&|j| rays[j].origin.z),
+            );
+            let (dx, dy, dz) = (
+                lane(&|j| rays[j].dir.x),
+                lane(&|j| rays[j].dir.y),
+                lane(&|j| rays[j].dir.z),
+            );
+            let (a0, a1, a2) = (load(&q.sq[0]), load(&q.sq[1]), load(&q.sq[2]));
+            let (l0, l1, l2) = (load(&q.lin[0]), load(&q.lin[1]), load(&q.lin[2]));
+            let k = load(&q.k);
 
-    // `Diagonal::surely_misses`, term for term.
-    let (ax, ay, az) = (mul(a0, ox), mul(a1, oy), mul(a2, oz));
-    let two = splat(2.0);
-    let four = splat(4.0);
-    let c2 = add(
-        add(mul(mul(a0, dx), dx), mul(mul(a1, dy), dy)),
-        mul(mul(a2, dz), dz),
-    );
-    let c1 = add(
-        add(
-            mul(add(mul(two, ax), l0), dx),
-            mul(add(mul(two, ay), l1), dy),
-        ),
-        mul(add(mul(two, az), l2), dz),
-    );
-    let c0 = add(
-        add(
-            add(mul(add(ax, l0), ox), mul(add(ay, l1), oy)),
-            mul(add(az, l2), oz),
-        ),
-        k,
-    );
-    let disc = sub(mul(c1, c1), mul(mul(four, c2), c0));
-    let (pax, pay, paz) = (abs(ax), abs(ay), abs(az));
-    let (bl0, bl1, bl2) = (abs(l0), abs(l1), abs(l2));
-    let (aox, aoy, aoz) = (abs(ox), abs(oy), abs(oz));
-    let (adx, ady, adz) = (abs(dx), abs(dy), abs(dz));
-    let m2 = add(
-        add(mul(mul(abs(a0), adx), adx), mul(mul(abs(a1), ady), ady)),
-        mul(mul(abs(a2), adz), adz),
-    );
-    let m1 = add(
-        add(
-            mul(add(mul(two, pax), bl0), adx),
-            mul(add(mul(two, pay), bl1), ady),
-        ),
-        mul(add(mul(two, paz), bl2), adz),
-    );
-    let m0 = add(
-        add(
-            add(mul(add(pax, bl0), aox), mul(add(pay, bl1), aoy)),
-            mul(add(paz, bl2), aoz),
-        ),
-        abs(k),
-    );
-    let scale = add(mul(m1, m1), mul(mul(four, m2), m0));
-    let len2 = add(add(mul(dx, dx), mul(dy, dy)), mul(dz, dz));
-    let miss = and(
-        and(
-            and(lt(disc, zero), lt(disc, mul(splat(-1e-12), scale))),
-            and(gt(scale, splat(1e-150)), lt(scale, splat(1e150))),
-        ),
-        and(gt(len2, splat(1e-50)), lt(len2, splat(1e50))),
-    );
+            // `Diagonal::surely_misses`, term for term.
+            let (ax, ay, az) = (mul(a0, ox), mul(a1, oy), mul(a2, oz));
+            let two = splat(2.0);
+            let four = splat(4.0);
+            let c2 = add(
+                add(mul(mul(a0, dx), dx), mul(mul(a1, dy), dy)),
+                mul(mul(a2, dz), dz),
+            );
+            let c1 = add(
+                add(
+                    mul(add(mul(two, ax), l0), dx),
+                    mul(add(mul(two, ay), l1), dy),
+                ),
+                mul(add(mul(two, az), l2), dz),
+            );
+            let c0 = add(
+                add(
+                    add(mul(add(ax, l0), ox), mul(add(ay, l1), oy)),
+                    mul(add(az, l2), oz),
+                ),
+                k,
+            );
+            let disc = sub(mul(c1, c1), mul(mul(four, c2), c0));
+            let (pax, pay, paz) = (abs(ax), abs(ay), abs(az));
+            let (bl0, bl1, bl2) = (abs(l0), abs(l1), abs(l2));
+            let (aox, aoy, aoz) = (abs(ox), abs(oy), abs(oz));
+            let (adx, ady, adz) = (abs(dx), abs(dy), abs(dz));
+            let m2 = add(
+                add(mul(mul(abs(a0), adx), adx), mul(mul(abs(a1), ady), ady)),
+                mul(mul(abs(a2), adz), adz),
+            );
+            let m1 = add(
+                add(
+                    mul(add(mul(two, pax), bl0), adx),
+                    mul(add(mul(two, pay), bl1), ady),
+                ),
+                mul(add(mul(two, paz), bl2), adz),
+            );
+            let m0 = add(
+                add(
+                    add(mul(add(pax, bl0), aox), mul(add(pay, bl1), aoy)),
+                    mul(add(paz, bl2), aoz),
+                ),
+                abs(k),
+            );
+            let scale = add(mul(m1, m1), mul(mul(four, m2), m0));
+            let len2 = add(add(mul(dx, dx), mul(dy, dy)), mul(dz, dz));
+            let miss = and(
+                and(
+                    and(lt(disc, zero), lt(disc, mul(splat(-1e-12), scale))),
+                    and(gt(scale, splat(1e-150)), lt(scale, splat(1e150))),
+                ),
+                and(gt(len2, splat(1e-50)), lt(len2, splat(1e50))),
+            );
 
-    // `low_order_solved`: the unit direction (`dir.length()` is the root of the same sum).
-    let len = _mm256_sqrt_pd(len2);
-    let (ux, uy, uz) = (div(dx, len), div(dy, len), div(dz, len));
+            // `low_order_solved`: the unit direction (`dir.length()` is the root of the same sum).
+            let len = sqrt(len2);
+            let (ux, uy, uz) = (div(dx, len), div(dy, len), div(dz, len));
 
-    // `Diagonal::along` in kind order.
-    let p1 = |o: __m256d, u: __m256d| [add(zero, o), add(zero, u)];
-    let p2 = |q: [__m256d; 2], o: __m256d, u: __m256d| {
-        [
-            add(zero, mul(q[0], o)),
-            add(add(zero, mul(q[0], u)), mul(q[1], o)),
-            add(zero, mul(q[1], u)),
-        ]
-    };
-    let (x1, y1, z1) = (p1(ox, ux), p1(oy, uy), p1(oz, uz));
-    let (x2, y2, z2) = (p2(x1, ox, ux), p2(y1, oy, uy), p2(z1, oz, uz));
-    let coef = |kind: usize| load(&q.coef[kind]);
-    let has = |kind: usize| _mm256_castsi256_pd(_mm256_loadu_si256(q.has[kind].as_ptr().cast()));
-    let mut acc = [zero; 3];
-    let add_nonzero = |acc: &mut [__m256d; 3], kind: usize, p: &[__m256d]| {
-        let (c, h) = (coef(kind), has(kind));
-        for (a, &pa) in p.iter().enumerate() {
-            let v = add(zero, pa);
-            acc[a] = pick(and(h, ne(v, zero)), add(acc[a], mul(c, v)), acc[a]);
+            // `Diagonal::along` in kind order.
+            let p1 = |o: V, u: V| [add(zero, o), add(zero, u)];
+            let p2 = |q: [V; 2], o: V, u: V| {
+                [
+                    add(zero, mul(q[0], o)),
+                    add(add(zero, mul(q[0], u)), mul(q[1], o)),
+                    add(zero, mul(q[1], u)),
+                ]
+            };
+            let (x1, y1, z1) = (p1(ox, ux), p1(oy, uy), p1(oz, uz));
+            let (x2, y2, z2) = (p2(x1, ox, ux), p2(y1, oy, uy), p2(z1, oz, uz));
+            let coef = |kind: usize| load(&q.coef[kind]);
+            let has = |kind: usize| casti(loadi(q.has[kind].as_ptr().cast()));
+            let mut acc = [zero; 3];
+            let add_nonzero = |acc: &mut [V; 3], kind: usize, p: &[V]| {
+                let (c, h) = (coef(kind), has(kind));
+                for (a, &pa) in p.iter().enumerate() {
+                    let v = add(zero, pa);
+                    acc[a] = pick(and(h, ne(v, zero)), add(acc[a], mul(c, v)), acc[a]);
+                }
+            };
+            let add_all = |acc: &mut [V; 3], kind: usize, p: &[V]| {
+                let (c, h) = (coef(kind), has(kind));
+                for (b, &pb) in p.iter().enumerate() {
+                    acc[b] = pick(h, add(acc[b], mul(c, pb)), acc[b]);
+                }
+            };
+            add_nonzero(&mut acc, 0, &x2);
+            add_nonzero(&mut acc, 1, &y2);
+            add_all(&mut acc, 2, &z2);
+            add_nonzero(&mut acc, 3, &x1);
+            add_nonzero(&mut acc, 4, &y1);
+            add_all(&mut acc, 5, &z1);
+            acc[0] = pick(has(6), add(acc[0], coef(6)), acc[0]);
+            let [cc, b, a] = acc;
+
+            // `low_roots_in` on `c[..=lead]`: a quadratic where `a != 0`, else a line where `b != 0`.
+            let quad = ne(a, zero);
+            let line = andnot(quad, ne(b, zero));
+            let d2 = sub(mul(b, b), mul(mul(four, a), cc));
+            let pos = gt(d2, zero);
+            let root = sqrt(pick(pos, d2, zero));
+            // `b.signum()` for a finite `b`.
+            let sgn = or(and(sign, b), splat(1.0));
+            let q = mul(splat(-0.5), add(b, mul(sgn, root)));
+            // `q / a`, `cc / q` (or `q / a` again when q is 0), `-0.5 * b / a`, `-c0 / c1` in two
+            // divisions.
+            let qa = and(quad, pos);
+            let num1 = pick(
+                quad,
+                pick(pos, q, mul(splat(-0.5), b)),
+                xor(sign, cc),
+            );
+            let den1 = pick(quad, a, b);
+            let r1 = div(num1, den1);
+            let qnz = ne(q, zero);
+            let r2 = div(pick(qnz, cc, q), pick(qnz, q, a));
+            // Neither quotient is NaN (finite numerators, finite nonzero denominators), where
+            // `min`/`max` agree with `f64::min`/`max` up to the sign of a zero, and a zero root is
+            // below `lo` either way.
+            let x0 = pick(qa, min(r1, r2), r1);
+            let x1r = max(r1, r2);
+            let two_roots = and(qa, ne(x1r, x0));
+            let one_root = or(line, and(quad, or(pos, eq(d2, zero))));
+
+            // Cauchy's bound (`cauchy`): the largest |c_i| below the lead over the lead's size.
+            let big = pick(quad, max(abs(cc), abs(b)), abs(cc));
+            let cq = div(big, abs(pick(quad, a, b)));
+            let m = pick(gt(cq, zero), cq, zero);
+            let hi = min(add(splat(1.0), m), splat(FAR));
+            let lo = mul(splat(EPSILON), len);
+            let keep0 = and(one_root, and(ge(x0, lo), le(x0, hi)));
+            let keep1 = and(two_roots, and(ge(x1r, lo), le(x1r, hi)));
+            let (t0, t1) = (div(x0, len), div(x1r, len));
+
+            // Lanes this kernel answers: coefficients, discriminant and q finite, |dir| well inside
+            // the range (so `lo` is positive and the roots' zeros fall below it).
+            let ok = and(
+                and(and(finite(cc), finite(b)), and(finite(a), finite(d2))),
+                and(
+                    finite(q),
+                    and(gt(len, splat(1e-200)), lt(len, splat(1e200))),
+                ),
+            );
+            let bits = |v: V| movemask(v) as u32;
+            let (miss, ok) = (bits(miss), bits(ok));
+            let mut out = LaneHits {
+                t: [[0.0; 4]; 2],
+                keep: [bits(keep0) & ok & !miss, bits(keep1) & ok & !miss],
+                defer: !ok & !miss & ((1 << $n) - 1),
+            };
+            storeu(out.t[0].as_mut_ptr(), t0);
+            storeu(out.t[1].as_mut_ptr(), t1);
+            out
         }
     };
-    let add_all = |acc: &mut [__m256d; 3], kind: usize, p: &[__m256d]| {
-        let (c, h) = (coef(kind), has(kind));
-        for (b, &pb) in p.iter().enumerate() {
-            acc[b] = pick(h, add(acc[b], mul(c, pb)), acc[b]);
-        }
-    };
-    add_nonzero(&mut acc, 0, &x2);
-    add_nonzero(&mut acc, 1, &y2);
-    add_all(&mut acc, 2, &z2);
-    add_nonzero(&mut acc, 3, &x1);
-    add_nonzero(&mut acc, 4, &y1);
-    add_all(&mut acc, 5, &z1);
-    acc[0] = pick(has(6), add(acc[0], coef(6)), acc[0]);
-    let [cc, b, a] = acc;
-
-    // `low_roots_in` on `c[..=lead]`: a quadratic where `a != 0`, else a line where `b != 0`.
-    let quad = ne(a, zero);
-    let line = _mm256_andnot_pd(quad, ne(b, zero));
-    let d2 = sub(mul(b, b), mul(mul(four, a), cc));
-    let pos = gt(d2, zero);
-    let root = _mm256_sqrt_pd(pick(pos, d2, zero));
-    // `b.signum()` for a finite `b`.
-    let sgn = _mm256_or_pd(and(sign, b), splat(1.0));
-    let q = mul(splat(-0.5), add(b, mul(sgn, root)));
-    // `q / a`, `cc / q` (or `q / a` again when q is 0), `-0.5 * b / a`, `-c0 / c1` in two
-    // divisions.
-    let qa = and(quad, pos);
-    let num1 = pick(
-        quad,
-        pick(pos, q, mul(splat(-0.5), b)),
-        _mm256_xor_pd(sign, cc),
-    );
-    let den1 = pick(quad, a, b);
-    let r1 = div(num1, den1);
-    let qnz = ne(q, zero);
-    let r2 = div(pick(qnz, cc, q), pick(qnz, q, a));
-    // Neither quotient is NaN (finite numerators, finite nonzero denominators), where
-    // `min`/`max` agree with `f64::min`/`max` up to the sign of a zero, and a zero root is
-    // below `lo` either way.
-    let x0 = pick(qa, _mm256_min_pd(r1, r2), r1);
-    let x1r = _mm256_max_pd(r1, r2);
-    let two_roots = and(qa, ne(x1r, x0));
-    let one_root = _mm256_or_pd(line, and(quad, _mm256_or_pd(pos, eq(d2, zero))));
-
-    // Cauchy's bound (`cauchy`): the largest |c_i| below the lead over the lead's size.
-    let big = pick(quad, _mm256_max_pd(abs(cc), abs(b)), abs(cc));
-    let cq = div(big, abs(pick(quad, a, b)));
-    let m = pick(gt(cq, zero), cq, zero);
-    let hi = _mm256_min_pd(add(splat(1.0), m), splat(FAR));
-    let lo = mul(splat(EPSILON), len);
-    let keep0 = and(one_root, and(ge(x0, lo), le(x0, hi)));
-    let keep1 = and(two_roots, and(ge(x1r, lo), le(x1r, hi)));
-    let (t0, t1) = (div(x0, len), div(x1r, len));
-
-    // Lanes this kernel answers: coefficients, discriminant and q finite, |dir| well inside
-    // the range (so `lo` is positive and the roots' zeros fall below it).
-    let ok = and(
-        and(and(finite(cc), finite(b)), and(finite(a), finite(d2))),
-        and(
-            finite(q),
-            and(gt(len, splat(1e-200)), lt(len, splat(1e200))),
-        ),
-    );
-    let bits = |v: __m256d| _mm256_movemask_pd(v) as u32;
-    let (miss, ok) = (bits(miss), bits(ok));
-    let mut out = LaneHits {
-        t: [[0.0; 4]; 2],
-        keep: [bits(keep0) & ok & !miss, bits(keep1) & ok & !miss],
-        defer: !ok & !miss & 0xf,
-    };
-    _mm256_storeu_pd(out.t[0].as_mut_ptr(), t0);
-    _mm256_storeu_pd(out.t[1].as_mut_ptr(), t1);
-    out
 }
+
+/// Four lanes in 256-bit vectors: nodes of three or four members.
+#[cfg(target_arch = "x86_64")]
+mod x4 {
+    use super::{LaneHits, QuadricLanes, FAR};
+    use crate::math::{Ray, EPSILON};
+    use std::arch::x86_64::{
+        __m256d as V, _mm256_add_pd as add, _mm256_and_pd as and, _mm256_andnot_pd as andnot,
+        _mm256_blendv_pd as blendv, _mm256_castsi256_pd as casti, _mm256_cmp_pd as cmp,
+        _mm256_div_pd as div, _mm256_loadu_pd as loadu, _mm256_loadu_si256 as loadi,
+        _mm256_max_pd as max, _mm256_min_pd as min, _mm256_movemask_pd as movemask,
+        _mm256_mul_pd as mul, _mm256_or_pd as or, _mm256_set1_pd as set1, _mm256_set_pd,
+        _mm256_setzero_pd as setzero, _mm256_sqrt_pd as sqrt, _mm256_storeu_pd as storeu,
+        _mm256_sub_pd as sub, _mm256_xor_pd as xor, _CMP_EQ_OQ, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LE_OQ,
+        _CMP_LT_OQ, _CMP_NEQ_UQ,
+    };
+
+    quadric_kernel!(
+        /// `intersect_all` of lane `j`'s shape of `q` on `rays[j]`; a lane whose answer is not
+        /// wanted may repeat another's.
+        crossings_lanes,
+        4,
+        |f: &dyn Fn(usize) -> f64| _mm256_set_pd(f(3), f(2), f(1), f(0))
+    );
+}
+
+/// Two lanes in 128-bit vectors: nodes of two members (textures/finishes/arches' differences
+/// of two paraboloids), whose four-lane search spent half its lanes, and the 256-bit square
+/// roots' and divisions' second halves, on copies of the first member.
+#[cfg(target_arch = "x86_64")]
+mod x2 {
+    use super::{LaneHits, QuadricLanes, FAR};
+    use crate::math::{Ray, EPSILON};
+    use std::arch::x86_64::{
+        __m128d as V, _mm_add_pd as add, _mm_and_pd as and, _mm_andnot_pd as andnot,
+        _mm_blendv_pd as blendv, _mm_castsi128_pd as casti, _mm_cmp_pd as cmp, _mm_div_pd as div,
+        _mm_loadu_pd as loadu, _mm_loadu_si128 as loadi, _mm_max_pd as max, _mm_min_pd as min,
+        _mm_movemask_pd as movemask, _mm_mul_pd as mul, _mm_or_pd as or, _mm_set1_pd as set1,
+        _mm_set_pd, _mm_setzero_pd as setzero, _mm_sqrt_pd as sqrt, _mm_storeu_pd as storeu,
+        _mm_sub_pd as sub, _mm_xor_pd as xor, _CMP_EQ_OQ, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LE_OQ,
+        _CMP_LT_OQ, _CMP_NEQ_UQ,
+    };
+
+    quadric_kernel!(
+        /// `intersect_all` of the first two lanes' shapes of `q` on `rays[0]` and `rays[1]`
+        /// (lanes 2 and 3 of the answer are empty).
+        crossings_pair,
+        2,
+        |f: &dyn Fn(usize) -> f64| _mm_set_pd(f(1), f(0))
+    );
+}
+
+#[cfg(target_arch = "x86_64")]
+pub use x2::crossings_pair;
+#[cfg(target_arch = "x86_64")]
+pub use x4::crossings_lanes;
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::geom::{Hit, Shape};
+    use crate::math::Ray;
 
     /// Each lane's crossings equal `intersect_all`'s bit for bit (or the lane defers), for
     /// quadrics of shapes.inc's kinds at many scales, rays through them, grazing them, along
-    /// their axes, from their surface, with zeros, tiny, huge, infinite and NaN values.
+    /// their axes, from their surface, with zeros, tiny, huge, infinite and NaN values; the
+    /// two-lane kernel's lanes equal the four-lane one's.
     #[test]
     fn lanes_are_intersect_all() {
         if !crate::math::has_avx() {
@@ -373,6 +432,16 @@ mod tests {
             let refs: Vec<&Algebraic> = shapes.iter().take(n).collect();
             let lanes = QuadricLanes::of(&refs).expect("lanes_ready shapes");
             let got = unsafe { crossings_lanes(&lanes, [&rays[0], &rays[1], &rays[2], &rays[3]]) };
+            // The two-lane kernel answers as the four-lane one for the first two, bit for bit.
+            let pair = unsafe { crossings_pair(&lanes, [&rays[0], &rays[1]]) };
+            for j in 0..2 {
+                let (a, b) = (pair.lane(j), got.lane(j));
+                let bits = |v: Option<Vec<f64>>| {
+                    v.map(|v| v.iter().map(|t| t.to_bits()).collect::<Vec<_>>())
+                };
+                assert_eq!(bits(a), bits(b), "{:?} {:?}", shapes[j], rays[j]);
+            }
+            assert_eq!((pair.keep[0] | pair.keep[1] | pair.defer) >> 2, 0);
             for j in 0..n {
                 let p = rays[j].at(pick(0.1));
                 assert_eq!(lanes.inside(j, p), shapes[j].inside(p));
