@@ -90,6 +90,11 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
     fn intersect_all_within(&self, ray: &Ray, _lo: f64, _hi: f64, out: &mut Vec<Hit>) {
         self.intersect_all(ray, out)
     }
+    /// `intersect_all`, but crossings with `t` at or past `tmax`, or at most `EPSILON`, may be
+    /// left out (the caller drops them): a sphere's shadow ray with both ends well inside it.
+    fn intersect_all_before(&self, ray: &Ray, _tmax: f64, out: &mut Vec<Hit>) {
+        self.intersect_all(ray, out)
+    }
     /// Whether `intersect_all_within` saves work (the scene then finds the boxes for it).
     fn windowed(&self) -> bool {
         false

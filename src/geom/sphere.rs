@@ -80,6 +80,15 @@ impl Sphere {
         self.quadratic(ray)?.first(tmax)
     }
 
+    /// Whether both ends of the segment `[0, tmax]` lie well inside (see `blocks`): then no
+    /// root falls in (EPSILON, tmax).
+    #[inline(always)]
+    fn holds(&self, ray: &Ray, tmax: f64) -> bool {
+        let inner = self.radius2 * 0.999;
+        let oc = ray.origin - self.center;
+        oc.length_squared() < inner && (oc + ray.dir * tmax).length_squared() < inner
+    }
+
     /// `any_hit`'s answer (`first_t(..).is_some()`), inlined into the shadow walk as
     /// `first_t` is into the nearest-hit walk.
     ///
@@ -90,9 +99,7 @@ impl Sphere {
     /// no crossing either: the same answer, not an approximation.
     #[inline(always)]
     pub fn blocks(&self, ray: &Ray, tmax: f64) -> bool {
-        let inner = self.radius2 * 0.999;
-        let oc = ray.origin - self.center;
-        if oc.length_squared() < inner && (oc + ray.dir * tmax).length_squared() < inner {
+        if self.holds(ray, tmax) {
             return false;
         }
         if self.behind(ray) {
@@ -182,6 +189,16 @@ impl Shape for Sphere {
                 }
             }
         }
+    }
+
+    /// A segment whose two ends lie well inside crosses nothing in (EPSILON, tmax): `blocks`'
+    /// certificate (advanced/abyss: every media sample's shadow ray listed the roots of the
+    /// media sphere around it, both beyond the segment's ends).
+    fn intersect_all_before(&self, ray: &Ray, tmax: f64, out: &mut Vec<Hit>) {
+        if self.holds(ray, tmax) {
+            return;
+        }
+        self.intersect_all(ray, out)
     }
 
     fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {

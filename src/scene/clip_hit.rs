@@ -50,7 +50,7 @@ impl Object {
             // would copy into surface hits (those below `tmax`, in order): the surface hit is
             // made only for the crossing kept (a clipped plane's camera rays pushed, read and
             // dropped one each).
-            self.shape_hits(&**shape, window.as_deref(), ray, &mut s.hits);
+            self.shape_hits(&**shape, window.as_deref(), ray, tmax, &mut s.hits);
             let mut best: Option<Hit> = None;
             for k in 0..s.hits.len() {
                 let h = &s.hits[k];

@@ -326,7 +326,7 @@ impl Object {
     pub(super) fn all_hits_unclipped<'a>(&'a self, ray: &Ray, tmax: f64, s: &mut Scratch<'a>) {
         match &self.kind {
             ObjKind::Shape(shape, window) => {
-                self.shape_hits(&**shape, window.as_deref(), ray, &mut s.hits);
+                self.shape_hits(&**shape, window.as_deref(), ray, tmax, &mut s.hits);
                 self.take_hits(tmax, s);
             }
             ObjKind::Csg {
@@ -425,14 +425,16 @@ impl Object {
         }
     }
 
-    /// A leaf's shape crossings, all of them (`intersect_all`), into `hits`: `all_hits_unclipped`
-    /// of a leaf before its `take_hits`.
+    /// A leaf's shape crossings, all of them (`intersect_all`) but those the shape may leave out
+    /// at or past `tmax` (the callers keep only `t < tmax`), into `hits`:
+    /// `all_hits_unclipped` of a leaf before its `take_hits`.
     #[inline(always)]
     pub(super) fn shape_hits(
         &self,
         shape: &dyn Shape,
         window: Option<&Window>,
         ray: &Ray,
+        tmax: f64,
         hits: &mut Vec<Hit>,
     ) {
         let mut local = None;
@@ -446,7 +448,8 @@ impl Object {
                 Range::Empty => {}
                 Range::All => shape.intersect_all(r, hits),
             },
-            None => shape.intersect_all(r, hits),
+            // Crossings at or past `tmax` are dropped by the caller.
+            None => shape.intersect_all_before(r, tmax, hits),
         }
     }
 
