@@ -49,6 +49,15 @@ fn plain_leaf(c: &Object, has_face: bool) -> bool {
         && c.bounds.is_finite()
 }
 
+/// Whether leaf `c` is a box: its bounds are its own faces (or hold them closely when it is
+/// turned), so a ray's points pass beyond them as soon as they leave the box, and the leads'
+/// certificates hold for most rays. A round lead's bounds leave corners where they fail and
+/// every ray pays the test for nothing (advanced/whiltile, swirlbox, objects/csg/cliptst2
+/// were 3-8 % slower with leads on every plain first leaf).
+fn boxed(c: &Object) -> bool {
+    matches!(&c.kind, ObjKind::Shape(shape, None) if shape.solid_box().is_some())
+}
+
 /// The lead of a node `op` over `children` (its plane members' `faces`), for a node without
 /// index or quadric lanes (whose searches gather member 0 first, in leaf order, through the
 /// leaf path).
@@ -59,14 +68,14 @@ pub fn lead_of(op: CsgOp, children: &[Object], faces: Option<&Faces>) -> Lead {
     let Some(first) = children.first() else {
         return Lead::None;
     };
-    if plain_leaf(first, faces.and_then(|f| f.get(0)).is_some()) {
+    if plain_leaf(first, faces.and_then(|f| f.get(0)).is_some()) && boxed(first) {
         return Lead::Member;
     }
     match folded(first) {
         Some((leaves, _, leaf_faces))
-            if leaves
-                .first()
-                .is_some_and(|l| plain_leaf(l, leaf_faces.and_then(|f| f.get(0)).is_some())) =>
+            if leaves.first().is_some_and(|l| {
+                plain_leaf(l, leaf_faces.and_then(|f| f.get(0)).is_some()) && boxed(l)
+            }) =>
         {
             Lead::Folded
         }
