@@ -176,40 +176,8 @@ impl Bvh {
 
     /// Visits primitives whose box contains `p`, in no particular order; `f` returns `true` to
     /// stop. For point-in-solid queries over many objects.
-    pub fn visit_point(&self, p: DVec3, mut f: impl FnMut(usize) -> bool) {
-        if self.prims.is_empty() || !self.root_box.contains(p) {
-            return;
-        }
-        // Depth first, the first child's subtree before the second's.
-        let mut stack = [Ref::default(); STACK];
-        let mut sp = 0;
-        let mut at = self.root;
-        loop {
-            if at.count > 0 {
-                let first = at.index as usize;
-                for &i in &self.prims[first..first + at.count as usize] {
-                    if f(i as usize) {
-                        return;
-                    }
-                }
-            } else {
-                let n = &self.nodes[at.index as usize];
-                let (ina, inb) = (n.boxes.get(0).contains(p), n.boxes.get(1).contains(p));
-                if inb && sp < STACK {
-                    stack[sp] = n.child[1];
-                    sp += 1;
-                }
-                if ina {
-                    at = n.child[0];
-                    continue;
-                }
-            }
-            if sp == 0 {
-                return;
-            }
-            sp -= 1;
-            at = stack[sp];
-        }
+    pub fn visit_point(&self, p: DVec3, f: impl FnMut(usize) -> bool) {
+        self.visit_holding(|b| b.contains(p), f);
     }
 
     /// Visits primitives whose box grown by `pad` on every side contains `p`, in no
@@ -225,7 +193,18 @@ impl Bvh {
                 && p.y <= b.max.y + pad
                 && p.z <= b.max.z + pad
         };
-        if self.prims.is_empty() || !near(&self.root_box) {
+        self.visit_holding(near, |i| {
+            f(i);
+            false
+        });
+    }
+
+    /// `visit_point`'s and `visit_near`'s walk: the primitives of every leaf whose path of
+    /// boxes all `holds`, depth first (the first child's subtree before the second's); `f`
+    /// returns `true` to stop.
+    #[inline(always)]
+    fn visit_holding(&self, holds: impl Fn(&Aabb) -> bool, mut f: impl FnMut(usize) -> bool) {
+        if self.prims.is_empty() || !holds(&self.root_box) {
             return;
         }
         let mut stack = [Ref::default(); STACK];
@@ -235,11 +214,13 @@ impl Bvh {
             if at.count > 0 {
                 let first = at.index as usize;
                 for &i in &self.prims[first..first + at.count as usize] {
-                    f(i as usize);
+                    if f(i as usize) {
+                        return;
+                    }
                 }
             } else {
                 let n = &self.nodes[at.index as usize];
-                let (ina, inb) = (near(&n.boxes.get(0)), near(&n.boxes.get(1)));
+                let (ina, inb) = (holds(&n.boxes.get(0)), holds(&n.boxes.get(1)));
                 if inb && sp < STACK {
                     stack[sp] = n.child[1];
                     sp += 1;

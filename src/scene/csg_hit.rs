@@ -22,6 +22,21 @@ use crate::scene::object::{
 /// member folded in (`folded`) with the leaf's number plus one above this shift.
 const LEAF_SHIFT: u32 = 16;
 
+/// A gathered crossing's tag as (member, leaf + 1 or 0 for the member itself). Without
+/// folding, tags are plain member numbers (a node may have more members than the tag's low
+/// bits hold).
+#[inline(always)]
+fn split_tag<const FOLD: bool>(tag: u32) -> (usize, usize) {
+    if FOLD {
+        (
+            (tag & ((1 << LEAF_SHIFT) - 1)) as usize,
+            (tag >> LEAF_SHIFT) as usize,
+        )
+    } else {
+        (tag as usize, 0)
+    }
+}
+
 /// The leaves, tight box and faces of member `c` when the search may test its crossings itself
 /// instead of through `c.all_hits`: an intersection without `clipped_by`, `inverse` or an index,
 /// whose `all_hits` is the leaves' crossings, in leaf order, that every other leaf contains.
@@ -247,18 +262,7 @@ impl Object {
         // surface: asked in the search below, and by shapes that find their first kept
         // crossing themselves while they are gathered (`Shape::gather_kept`).
         let keeps = |tag: u32, t: f64| {
-            // Without folding, tags are plain member numbers (a node may have more than
-            // the tag's low bits hold).
-            let i = if FOLD {
-                tag & ((1 << LEAF_SHIFT) - 1)
-            } else {
-                tag
-            } as usize;
-            let leaf = if FOLD {
-                (tag >> LEAF_SHIFT) as usize
-            } else {
-                0
-            };
+            let (i, leaf) = split_tag::<FOLD>(tag);
             let p = ray.at(t);
             let leaf_kept = || match leaf {
                 0 => true,
@@ -293,16 +297,7 @@ impl Object {
                 let (j, tag) = (entry_place(e), entry_tag(e));
                 // From the key, not from the record: the keep tests read nothing else of it.
                 let t = entry_t(e);
-                let i = if FOLD {
-                    tag & ((1 << LEAF_SHIFT) - 1)
-                } else {
-                    tag
-                } as usize;
-                let leaf = if FOLD {
-                    (tag >> LEAF_SHIFT) as usize
-                } else {
-                    0
-                };
+                let (i, leaf) = split_tag::<FOLD>(tag);
                 keeps(tag, t).then(|| {
                     let rec = hits[(j >> 1) as usize];
                     let mut h = if j & LISTED != 0 {
