@@ -57,6 +57,26 @@ fn crossings_sort_as_sort_unstable() {
     }
 }
 
+/// Asserts that `o.first_hit` and `o.any_hit` answer as `reference` does, bit for bit (the
+/// crossing's `t`, side, object and part), and that the search leaves `sa` as it found it;
+/// whether there is a hit. `what` names the case in a failure.
+pub(in crate::scene) fn answers_as_reference<'a>(
+    o: &'a Object,
+    ray: &Ray,
+    tmax: f64,
+    (sa, sb): (&mut Scratch<'a>, &mut Scratch<'a>),
+    what: &str,
+) -> bool {
+    let key = |h: Option<SurfaceHit>| {
+        h.map(|h| (h.t.to_bits(), h.flip, h.obj as *const Object, h.hit.part))
+    };
+    let want = key(reference(o, ray, tmax, sb));
+    assert_eq!(key(o.first_hit(ray, tmax, sa)), want, "{what}");
+    assert_eq!(o.any_hit(ray, tmax, sa), want.is_some(), "{what}");
+    assert!(sa.surface.is_empty() && sa.csg_order.is_empty() && sa.csg_hits.is_empty());
+    want.is_some()
+}
+
 /// `first_hit` as `all_hits` defines it: the nearest crossing (t > EPSILON when clipped),
 /// the earliest listed of equal ones (csg_boxes' and csg_framed's tests use it too).
 pub(in crate::scene) fn reference<'a>(
@@ -127,22 +147,8 @@ fn searches_match_all_hits() {
                 Ray::new(rng.vec(5.0), rng.vec(2.0))
             };
             let tmax = if rng.next() < 0.3 { 2.5 } else { f64::INFINITY };
-            let key = |h: Option<SurfaceHit>| {
-                h.map(|h| (h.t.to_bits(), h.flip, h.obj as *const Object, h.hit.part))
-            };
-            let want = key(reference(o, &ray, tmax, &mut sb));
-            assert_eq!(
-                key(o.first_hit(&ray, tmax, &mut sa)),
-                want,
-                "object {n}, ray {k}"
-            );
-            assert_eq!(
-                o.any_hit(&ray, tmax, &mut sa),
-                want.is_some(),
-                "object {n}, ray {k}"
-            );
-            assert!(sa.surface.is_empty() && sa.csg_order.is_empty() && sa.csg_hits.is_empty());
-            hits += want.is_some() as usize;
+            let what = format!("object {n}, ray {k}");
+            hits += answers_as_reference(o, &ray, tmax, (&mut sa, &mut sb), &what) as usize;
         }
         assert!(hits > 100, "object {n}: {hits}");
     }

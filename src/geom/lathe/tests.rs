@@ -251,12 +251,11 @@ fn straight_pieces_match_the_general_path() {
     assert!(found > 1000, "{found}");
 }
 
-/// `any_kept` answers as the default's listing does and asks `keep` about the same crossings
-/// in the same order up to the first kept: every spline kind, sloped and nearly flat rays,
-/// random cuts `tmax` and keep tests.
-#[test]
-fn any_kept_is_the_listing() {
-    let mut rng = Lcg(0xa11_c0de);
+/// The lathe tests' rays: for each spline kind a vase-shaped lathe, and 6000 rays from
+/// around it at points inside its hull (every seventh nearly flat), with a `tmax` of
+/// infinity, a short cut or a random one; `each` may draw more numbers from `rng`.
+fn vase_rays(seed: u64, mut each: impl FnMut(&mut Lcg, SplineKind, &Lathe, Ray, f64)) {
+    let mut rng = Lcg(seed);
     let vase = [
         [0.0, -0.2],
         [1.0, 0.0],
@@ -268,7 +267,6 @@ fn any_kept_is_the_listing() {
         [1.0, 0.0],
         [1.4, 0.8],
     ];
-    let (mut kept, mut asked) = (0, 0);
     for (kind, pts) in [
         (SplineKind::Linear, &vase[1..8]),
         (SplineKind::Quadratic, &vase[..8]),
@@ -293,21 +291,32 @@ fn any_kept_is_the_listing() {
             }
             let ray = Ray::new(o, d);
             let tmax = [f64::INFINITY, 0.5 + rng.next(), rng.next() * 8.0][k % 3];
-            let cut = rng.next() * 8.0;
-            let (mut got_asked, mut want_asked) = (Vec::new(), Vec::new());
-            let got = l.any_kept(&ray, tmax, &mut Vec::new(), &mut |t| {
-                got_asked.push(t.to_bits());
-                t > cut
-            });
-            let want = crate::geom::any_listed_kept(&l, &ray, tmax, &mut Vec::new(), &mut |t| {
-                want_asked.push(t.to_bits());
-                t > cut
-            });
-            assert_eq!((got, &got_asked), (want, &want_asked), "{kind:?} {ray:?}");
-            kept += got as usize;
-            asked += got_asked.len();
+            each(&mut rng, kind, &l, ray, tmax);
         }
     }
+}
+
+/// `any_kept` answers as the default's listing does and asks `keep` about the same crossings
+/// in the same order up to the first kept: every spline kind, sloped and nearly flat rays,
+/// random cuts `tmax` and keep tests.
+#[test]
+fn any_kept_is_the_listing() {
+    let (mut kept, mut asked) = (0, 0);
+    vase_rays(0xa11_c0de, |rng, kind, l, ray, tmax| {
+        let cut = rng.next() * 8.0;
+        let (mut got_asked, mut want_asked) = (Vec::new(), Vec::new());
+        let got = l.any_kept(&ray, tmax, &mut Vec::new(), &mut |t| {
+            got_asked.push(t.to_bits());
+            t > cut
+        });
+        let want = crate::geom::any_listed_kept(l, &ray, tmax, &mut Vec::new(), &mut |t| {
+            want_asked.push(t.to_bits());
+            t > cut
+        });
+        assert_eq!((got, &got_asked), (want, &want_asked), "{kind:?} {ray:?}");
+        kept += got as usize;
+        asked += got_asked.len();
+    });
     assert!(kept > 2000 && asked > 10_000, "{kept} {asked}");
 }
 
@@ -316,69 +325,33 @@ fn any_kept_is_the_listing() {
 /// that `keep` holds for. Every spline kind, sloped and nearly flat rays, random `tmax`.
 #[test]
 fn gathered_first_kept_is_the_listings() {
-    let mut rng = Lcg(0x6a7_4e12);
-    let vase = [
-        [0.0, -0.2],
-        [1.0, 0.0],
-        [1.4, 0.8],
-        [0.6, 1.6],
-        [0.9, 2.4],
-        [1.3, 3.0],
-        [0.0, 3.2],
-        [1.0, 0.0],
-        [1.4, 0.8],
-    ];
     let key = |h: &Hit| (h.t.to_bits(), h.part, h.uv[0].to_bits(), h.uv[1].to_bits());
     let mut found = 0;
-    for (kind, pts) in [
-        (SplineKind::Linear, &vase[1..8]),
-        (SplineKind::Quadratic, &vase[..8]),
-        (SplineKind::Cubic, &vase[..]),
-        (SplineKind::Bezier, &vase[1..9]),
-    ] {
-        let l = Lathe::new(profile(kind, pts).unwrap());
-        for k in 0..6000 {
-            let o = DVec3::new(
-                6.0 * rng.next() - 3.0,
-                5.0 * rng.next() - 1.0,
-                6.0 * rng.next() - 3.0,
-            );
-            let target = DVec3::new(
-                2.0 * rng.next() - 1.0,
-                3.2 * rng.next(),
-                2.0 * rng.next() - 1.0,
-            );
-            let mut d = target - o;
-            if k % 7 == 0 {
-                d.y = d.length() * 1e-4 * (rng.next() - 0.5);
-            }
-            let ray = Ray::new(o, d);
-            let tmax = [f64::INFINITY, 0.5 + rng.next(), rng.next() * 8.0][k % 3];
-            // A keep test of the point, as a CSG node's is (here: outside a slab).
-            let (lo, hi) = (rng.next() * 4.0 - 1.0, rng.next() * 4.0 - 1.0);
-            let keep = |t: f64| {
-                let y = ray.at(t).y;
-                !(y > lo.min(hi) && y < lo.max(hi))
-            };
-            let mut all = Vec::new();
-            l.intersect_all(&ray, &mut all);
-            let first = |v: &[Hit]| {
-                v.iter()
-                    .enumerate()
-                    .filter(|(_, h)| h.t < tmax && keep(h.t))
-                    .min_by(|(i, a), (j, b)| a.t.total_cmp(&b.t).then(i.cmp(j)))
-                    .map(|(_, h)| key(h))
-            };
-            let mut got = Vec::new();
-            l.gather_kept(&ray, tmax, &mut got, &mut Vec::new(), &mut |t| keep(t));
-            let listed: Vec<_> = all.iter().map(key).collect();
-            assert!(
-                got.iter().all(|h| listed.contains(&key(h))),
-                "{kind:?} {ray:?}"
-            );
-            assert_eq!(first(&got), first(&all), "{kind:?} {ray:?}");
-            found += first(&all).is_some() as usize;
-        }
-    }
+    vase_rays(0x6a7_4e12, |rng, kind, l, ray, tmax| {
+        // A keep test of the point, as a CSG node's is (here: outside a slab).
+        let (lo, hi) = (rng.next() * 4.0 - 1.0, rng.next() * 4.0 - 1.0);
+        let keep = |t: f64| {
+            let y = ray.at(t).y;
+            !(y > lo.min(hi) && y < lo.max(hi))
+        };
+        let mut all = Vec::new();
+        l.intersect_all(&ray, &mut all);
+        let first = |v: &[Hit]| {
+            v.iter()
+                .enumerate()
+                .filter(|(_, h)| h.t < tmax && keep(h.t))
+                .min_by(|(i, a), (j, b)| a.t.total_cmp(&b.t).then(i.cmp(j)))
+                .map(|(_, h)| key(h))
+        };
+        let mut got = Vec::new();
+        l.gather_kept(&ray, tmax, &mut got, &mut Vec::new(), &mut |t| keep(t));
+        let listed: Vec<_> = all.iter().map(key).collect();
+        assert!(
+            got.iter().all(|h| listed.contains(&key(h))),
+            "{kind:?} {ray:?}"
+        );
+        assert_eq!(first(&got), first(&all), "{kind:?} {ray:?}");
+        found += first(&all).is_some() as usize;
+    });
     assert!(found > 4000, "{found}");
 }
