@@ -304,25 +304,29 @@ mod tests {
         assert!(certified > 20_000, "{certified}");
     }
 
+    /// `k` times the quartic with complex root pairs `m1 ± w1 i` and `m2 ± w2 i`, lowest
+    /// coefficient first (a product by `k = 1` is exact).
+    fn two_wells(m1: f64, w1: f64, m2: f64, w2: f64, k: f64) -> [f64; 5] {
+        let (p1, p2) = (
+            [m1 * m1 + w1 * w1, -2.0 * m1, 1.0],
+            [m2 * m2 + w2 * w2, -2.0 * m2, 1.0],
+        );
+        let mut c = [0.0; 5];
+        for i in 0..3 {
+            for j in 0..3 {
+                c[i + j] += p1[i] * p2[j] * k;
+            }
+        }
+        c
+    }
+
     /// Two wells of different depth (quarcyl's misses: complex roots near 3.5 ± 0.4i and
     /// 273 ± 14i, the interval from near 0 to Cauchy's bound) are certified by the expansion
     /// at the near well, and every evaluation on a grid has the leading sign; moving the
     /// near pair onto the axis (a double root, then two real roots) is not certified.
     #[test]
     fn two_wells_of_different_depth() {
-        let quartic = |m1: f64, w1: f64, m2: f64, w2: f64, k: f64| -> [f64; 5] {
-            let (p1, p2) = (
-                [m1 * m1 + w1 * w1, -2.0 * m1, 1.0],
-                [m2 * m2 + w2 * w2, -2.0 * m2, 1.0],
-            );
-            let mut c = [0.0; 5];
-            for i in 0..3 {
-                for j in 0..3 {
-                    c[i + j] += p1[i] * p2[j] * k;
-                }
-            }
-            c
-        };
+        let quartic = two_wells;
         let mut rng = Lcg(7);
         let mut certified = 0;
         for case in 0..4000 {
@@ -376,16 +380,7 @@ mod tests {
                 m1 + 10f64.powf(rng.next() * 3.0)
             };
             let w2 = rng.next() * rng.next() * 40.0;
-            let (p1, p2) = (
-                [m1 * m1 + w1 * w1, -2.0 * m1, 1.0],
-                [m2 * m2 + w2 * w2, -2.0 * m2, 1.0],
-            );
-            let mut c = [0.0; 5];
-            for i in 0..3 {
-                for j in 0..3 {
-                    c[i + j] += p1[i] * p2[j];
-                }
-            }
+            let mut c = two_wells(m1, w1, m2, w2, 1.0);
             if case % 5 == 4 {
                 // Grazing: the near well lowered to (nearly) touch the axis, or through it.
                 c[0] -= (w1 * w1) * (m2 - m1).powi(2) * (1.0 - 1e-3 * rng.next());
