@@ -292,6 +292,7 @@ impl<'a> Tracer<'a> {
         // the last one is tried first. Its box test is the one the BVH would have made.
         if ctx.blockers.len() <= slot {
             ctx.blockers.resize(slot + 1, None);
+            ctx.leaf_blockers.resize(slot + 1, None);
         }
         // Once for the cached blocker's box and the walk (each took its own three divisions,
         // and its own tests of the ray for NaN-free slabs); the reciprocal is `recip` to the
@@ -304,10 +305,20 @@ impl<'a> Tracer<'a> {
         // function's samples on cornell, a fifth on lights/arealit1, before the origin was
         // read one coordinate at a time): `p`, read so above.
         let slabs = crate::math::Slabs::known(p, r.inv, r.plain);
+        // The leaf of an indexed union that blocked the last ray, before the union itself:
+        // neighbouring samples of an area light are mostly blocked by the same torus or
+        // cylinder, and the union's walk down to it cost more than the leaf's own test. A
+        // leaf that blocks makes the union block (its box holds the leaf's), and the union
+        // is a top-level object that the walk below would reach (as `member_blockers`).
+        if let Some(leaf) = ctx.leaf_blockers[slot] {
+            if slabs.hits(&leaf.bounds, dist) && leaf_any_hit(leaf, ray, dist, ctx) {
+                return Shadowed::Dark;
+            }
+        }
         let mut tried = None;
         if let Some(b) = ctx.blockers[slot] {
             if slabs.hits(&b.bounds, dist) {
-                if opaque_blocks(b, ray, &slabs, dist, ctx) {
+                if opaque_blocks(b, ray, &slabs, dist, slot, ctx) {
                     return Shadowed::Dark;
                 }
                 tried = Some(b);
@@ -361,7 +372,7 @@ impl<'a> Tracer<'a> {
                     // A plain sphere's `any_hit` without the call through its table.
                     let blocks = match c.sphere() {
                         Some(s) => s.blocks(ray, dist),
-                        None => opaque_blocks(obj, ray, &slabs, dist, ctx),
+                        None => opaque_blocks(obj, ray, &slabs, dist, slot, ctx),
                     };
                     if blocks {
                         att = DVec3::ZERO;
@@ -582,19 +593,51 @@ enum Shadowed {
 
 /// Whether the opaque object `obj` crosses the shadow ray within `dist`: `Object::any_hit`,
 /// a small union's members tested through the ray's `slabs` (its own took three divisions,
-/// and `any_hit`'s frame for every union: cornell's walls and blocks).
+/// and `any_hit`'s frame for every union: cornell's walls and blocks). An indexed union is
+/// walked here as `Object::any_hit` walks it, through the same `slabs` (`Slabs::known` is
+/// `Slabs::new` of the reciprocal, bit for bit), without light `slot`'s cached leaf, which
+/// `shadow_in` has just asked; the leaf that blocks becomes the cached one.
 #[inline(always)]
 fn opaque_blocks<'a>(
     obj: &'a Object,
     ray: &Ray,
     slabs: &Slabs,
     dist: f64,
+    slot: usize,
     ctx: &mut TraceCtx<'a>,
 ) -> bool {
-    match obj.scanned_union() {
-        Some(members) => Object::scan_any_hit(members, ray, slabs, dist, ctx),
-        None => leaf_any_hit(obj, ray, dist, ctx),
+    if let Some(members) = obj.scanned_union() {
+        return Object::scan_any_hit(members, ray, slabs, dist, ctx);
     }
+    let (
+        crate::scene::object::ObjKind::Csg {
+            op: crate::scene::desc::CsgOp::Union,
+            children,
+            index: Some(ix),
+            ..
+        },
+        true,
+    ) = (&obj.kind, obj.clip.is_empty())
+    else {
+        return leaf_any_hit(obj, ray, dist, ctx);
+    };
+    let asked = ctx.leaf_blockers[slot];
+    let mut found = None;
+    let blocks = ix.any(ray, dist, |i| {
+        let c = ix.leaf(children, i);
+        if asked.is_some_and(|a| std::ptr::eq(a, c)) {
+            return false;
+        }
+        let blocks = slabs.hits(&c.bounds, dist) && leaf_any_hit(c, ray, dist, ctx);
+        if blocks {
+            found = Some(c);
+        }
+        blocks
+    });
+    if blocks {
+        ctx.leaf_blockers[slot] = found;
+    }
+    blocks
 }
 
 /// The ray from `p` along `l`, written into `at` as an x-y pair (one 16-byte store) and z for

@@ -40,6 +40,9 @@ pub struct Scratch<'a> {
     /// Per light, the opaque object that last blocked a shadow ray to it (POV-Ray's shadow
     /// cache): asked first, since neighbouring points are mostly shadowed by the same object.
     pub blockers: Vec<Option<&'a Object>>,
+    /// Per light, the leaf of an indexed union whose crossing last blocked a shadow ray to it
+    /// (render::shadow): asked before the union, whose walk down to that leaf it saves.
+    pub leaf_blockers: Vec<Option<&'a Object>>,
     /// Per light, the member of a transparent union (and that union, a top-level object)
     /// whose crossing last blocked a shadow ray to it, asked first likewise.
     pub member_blockers: Vec<Option<(&'a Object, &'a Object)>>,
