@@ -123,6 +123,15 @@ impl Prepared {
         // Height along the axis, h0 + s h1; the body lies where 0 <= h <= len.
         let d = q0 - self.a;
         let (h0, h1) = (d.dot(self.axis), v.dot(self.axis));
+        let pa = to_point(self.a);
+        let b = self.a + self.axis * self.len;
+        let pb = to_point(b);
+        let body = [pa[0] - h0 * h0, pa[1] - 2.0 * h0 * h1, pa[2] - h1 * h1];
+        // A ray wide of the body's and both caps' spheres (`push` would return at each one's
+        // discriminant) pushes nothing: leave before the end planes' two quotients.
+        if self.wide(body) && self.wide(pa) && self.wide(pb) {
+            return;
+        }
         let (s_lo, s_hi) = if h1 != 0.0 {
             let (s0, s1) = (-h0 / h1, (self.len - h0) / h1);
             (s0.min(s1), s0.max(s1))
@@ -131,23 +140,28 @@ impl Prepared {
         } else {
             (f64::NAN, f64::NAN)
         };
-        let pa = to_point(self.a);
-        let body = [pa[0] - h0 * h0, pa[1] - 2.0 * h0 * h1, pa[2] - h1 * h1];
         if !s_lo.is_nan() {
             self.push(body, s_lo, s_hi, min_s, out);
         }
         // The caps: before the body and after it along the ray; which end is which depends on
         // the ray's direction along the axis.
-        let b = self.a + self.axis * self.len;
-        let (first, last) = if h1 >= 0.0 { (self.a, b) } else { (b, self.a) };
+        let (first, last) = if h1 >= 0.0 { (pa, pb) } else { (pb, pa) };
         if s_lo.is_nan() {
             // Parallel to the end planes, outside the body: only one cap can be reached.
-            let end = if h0 < 0.0 { self.a } else { b };
-            self.push(to_point(end), f64::NEG_INFINITY, f64::INFINITY, min_s, out);
+            let end = if h0 < 0.0 { pa } else { pb };
+            self.push(end, f64::NEG_INFINITY, f64::INFINITY, min_s, out);
         } else {
-            self.push(to_point(first), f64::NEG_INFINITY, s_lo, min_s, out);
-            self.push(to_point(last), s_hi, f64::INFINITY, min_s, out);
+            self.push(first, f64::NEG_INFINITY, s_lo, min_s, out);
+            self.push(last, s_hi, f64::INFINITY, min_s, out);
         }
+    }
+
+    /// Whether `push` returns at the discriminant of the quadratic distance `d2` (the same
+    /// operations), whatever the stretch it is given.
+    #[inline(always)]
+    fn wide(&self, d2: [f64; 3]) -> bool {
+        let [c, b, a] = d2;
+        a > 0.0 && b * b - 4.0 * a * (c - self.r2) <= 0.0
     }
 
     /// The stretch where the quadratic distance `d2` is below r², clipped to [lo, hi], unless
@@ -516,7 +530,9 @@ impl Blob {
             w.cuts.push(p.lo);
             w.cuts.push(p.hi);
         }
-        w.cuts.sort_by(f64::total_cmp);
+        // `total_cmp` holds two cuts equal only when their bits are, so the unstable sort
+        // leaves them in the one order a stable sort would.
+        w.cuts.sort_unstable_by(f64::total_cmp);
         w.cuts.dedup();
         let Work {
             pieces,

@@ -468,3 +468,70 @@ fn near_components_answer_as_all() {
     // Most points must meet some component for the comparison to mean anything.
     assert!(checked > 10_000, "{checked}");
 }
+
+/// `pieces` leaves a cylinder before its end planes' quotients when the ray is wide of the
+/// body's and both caps' spheres (`Prepared::wide`): then `push` pushes nothing for any of the
+/// three, whatever its stretch. Checked on random cylinders (plain, long, short, tiny radius)
+/// and rays passing their surfaces at random, tangent, and within a few units in the last
+/// place of tangent, where the rounding of the discriminants decides.
+#[test]
+fn wide_cylinders_push_nothing() {
+    let mut rng = Lcg(0xc1_1ade);
+    let mut wide = 0;
+    for k in 0..3000 {
+        let spread = [0.5, 4.0, 300.0][k % 3];
+        let (a, b) = (rng.vec(spread), rng.vec(spread));
+        let r = 0.01 + rng.next() * spread * 0.3;
+        let blob = Blob::new(&BlobData {
+            components: vec![Component {
+                kind: ComponentKind::Cylinder { a, b },
+                radius: r,
+                strength: 1.0,
+                transform: Transform::IDENTITY,
+            }],
+            threshold: 0.5,
+            sturm: false,
+        });
+        let c = blob.comps[0];
+        for j in 0..12 {
+            let v = rng.vec(2.0).normalize_or(DVec3::X);
+            // A point at distance about r from the axis (or a cap's centre), then the ray
+            // through it: tangent or nearly so, nudged by a few ulps of its origin.
+            let side = (v.cross(c.axis) + rng.vec(0.1)).normalize_or(DVec3::Y);
+            let centre = c.a + c.axis * (c.len * (rng.next() * 1.4 - 0.2));
+            let at = [0.0, 1e-12, 1e-3, 0.3][j % 4] * (rng.next() - 0.5);
+            let mut q0 = centre + side * (r * (1.0 + at)) - v * spread;
+            if j % 3 == 0 {
+                let nudge =
+                    |x: f64| f64::from_bits((x.to_bits() as i64 + (j as i64 % 7 - 3)) as u64);
+                q0 = DVec3::new(nudge(q0.x), nudge(q0.y), nudge(q0.z));
+            }
+            let to_point = |p: DVec3| {
+                let d = q0 - p;
+                [d.length_squared(), 2.0 * d.dot(v), v.length_squared()]
+            };
+            let d = q0 - c.a;
+            let (h0, h1) = (d.dot(c.axis), v.dot(c.axis));
+            let pa = to_point(c.a);
+            let pb = to_point(c.a + c.axis * c.len);
+            let body = [pa[0] - h0 * h0, pa[1] - 2.0 * h0 * h1, pa[2] - h1 * h1];
+            if !(c.wide(body) && c.wide(pa) && c.wide(pb)) {
+                continue;
+            }
+            wide += 1;
+            let mut out = Vec::new();
+            for d2 in [body, pa, pb] {
+                c.push(
+                    d2,
+                    f64::NEG_INFINITY,
+                    f64::INFINITY,
+                    f64::NEG_INFINITY,
+                    &mut out,
+                );
+            }
+            c.pieces(q0, v, f64::NEG_INFINITY, &mut out);
+            assert!(out.is_empty(), "{a} {b} {r} {q0} {v}");
+        }
+    }
+    assert!(wide > 5_000, "{wide}");
+}
