@@ -23,6 +23,7 @@ use crate::geom::Hit;
 use crate::math::{Aabb, DVec3, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
 use crate::scene::csg_hit::{order_key, push_crossing};
+use crate::scene::csg_lead::Lead;
 use crate::scene::csg_members::{member_wants, want_inside};
 use crate::scene::desc::CsgOp;
 use crate::scene::faces::{self, Faces};
@@ -263,24 +264,29 @@ impl Object {
         tmax: f64,
         s: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
-        let search = match &self.kind {
-            ObjKind::Csg { cull: Some(c), .. } => c.search,
-            _ => Search::Plain,
+        let (search, led) = match &self.kind {
+            ObjKind::Csg { cull: Some(c), .. } => (c.search, c.lead != Lead::None),
+            _ => (Search::Plain, false),
         };
-        match search {
+        match (search, led) {
             // Box members without dispatch (`csg_boxes`); such nodes have no index.
-            Search::Boxes => self.boxes_search(op, children, culls, ray, tmax, s),
-            Search::Framed => match self.framed_boxes() {
+            (Search::Boxes, _) => self.boxes_search(op, children, culls, ray, tmax, s),
+            (Search::Framed, _) => match self.framed_boxes() {
                 Some(f) => self.framed_first_hit(children, culls.0, f, ray, tmax),
-                None => {
-                    self.csg_first_hit::<false, false>(op, children, index, culls, ray, tmax, s)
-                }
+                None => self
+                    .csg_first_hit::<false, false, false>(op, children, index, culls, ray, tmax, s),
             },
-            Search::Folds => {
-                self.csg_first_hit::<true, false>(op, children, index, culls, ray, tmax, s)
+            (Search::Folds, true) => {
+                self.csg_first_hit::<true, false, true>(op, children, index, culls, ray, tmax, s)
             }
-            Search::Plain => {
-                self.csg_first_hit::<false, false>(op, children, index, culls, ray, tmax, s)
+            (Search::Folds, false) => {
+                self.csg_first_hit::<true, false, false>(op, children, index, culls, ray, tmax, s)
+            }
+            (Search::Plain, true) => {
+                self.csg_first_hit::<false, false, true>(op, children, index, culls, ray, tmax, s)
+            }
+            (Search::Plain, false) => {
+                self.csg_first_hit::<false, false, false>(op, children, index, culls, ray, tmax, s)
             }
         }
     }
@@ -308,12 +314,22 @@ impl Object {
         tmax: f64,
         s: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
+        let led = self.lead() != Lead::None;
         match self.box_members() {
             Some(b) if b.all() => self.boxes_first_hit(op, children, culls.0, b, ray, tmax),
-            _ if self.folds() => {
-                self.csg_first_hit::<true, true>(op, children, None, culls, ray, tmax, s)
-            }
-            _ => self.csg_first_hit::<false, true>(op, children, None, culls, ray, tmax, s),
+            _ => match (self.folds(), led) {
+                (true, true) => {
+                    self.csg_first_hit::<true, true, true>(op, children, None, culls, ray, tmax, s)
+                }
+                (true, false) => {
+                    self.csg_first_hit::<true, true, false>(op, children, None, culls, ray, tmax, s)
+                }
+                (false, true) => {
+                    self.csg_first_hit::<false, true, true>(op, children, None, culls, ray, tmax, s)
+                }
+                (false, false) => self
+                    .csg_first_hit::<false, true, false>(op, children, None, culls, ray, tmax, s),
+            },
         }
     }
 

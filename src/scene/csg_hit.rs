@@ -228,10 +228,11 @@ impl Object {
     /// order, as `min_by` over `all_hits` does: the answer is the same crossing, bit for bit.
     ///
     /// `FOLD` false: no member is folded, for nodes that have none to fold (the common case),
-    /// so that their search pays nothing for the folding.
+    /// so that their search pays nothing for the folding. `LEAD` false: the node has no lead
+    /// (`csg_lead`, most nodes since `csg_lead::pays`), and its search none of the lead's code.
     #[allow(clippy::too_many_arguments)]
     #[inline(never)]
-    pub(super) fn csg_first_hit<'a, const FOLD: bool, const BOXES: bool>(
+    pub(super) fn csg_first_hit<'a, const FOLD: bool, const BOXES: bool, const LEAD: bool>(
         &'a self,
         op: CsgOp,
         children: &'a [Object],
@@ -329,7 +330,7 @@ impl Object {
         // The lead (`csg_lead`) gathered first, as the gather below would: when its nearest
         // crossing is kept and every point before it lies outside the lead's bounds (where no
         // other crossing is kept), that crossing is the answer, the others not listed.
-        let lead = self.lead();
+        let lead = if LEAD { self.lead() } else { Lead::None };
         let led = match lead {
             Lead::None => false,
             Lead::Folded if !fold => false,

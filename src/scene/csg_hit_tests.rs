@@ -269,7 +269,7 @@ fn polyhedra_match_the_general_search() {
                 _ => f64::INFINITY,
             };
             let want = key(reference(o, &ray, tmax, &mut sb));
-            let general = o.csg_first_hit::<false, false>(
+            let general = o.csg_first_hit::<false, false, false>(
                 *op,
                 children,
                 index.as_deref(),

@@ -11,7 +11,8 @@ use crate::scene::object::{Object, Scratch};
 /// The woods' boards (a folded lead, moved, turned, scaled), a difference whose first
 /// member, a box, is the lead, an intersection whose first member is a cylinder (no lead:
 /// only boxes lead, `csg_lead::boxed`), a clipped one, a lead under a turn (bounds wider
-/// than the box) and an inverted node.
+/// than the box), an inverted node, and two nodes a box would lead where it does not pay
+/// (`csg_lead::pays`): a difference of boxes, and a box whose faces a cylinder cuts away.
 const SCENE: &str = r#"
     #declare Disk_X = cylinder { x, -x, 1 }
     #declare Disk_Y = cylinder { y, -y, 1 }
@@ -23,9 +24,11 @@ const SCENE: &str = r#"
     object { Test scale <1e-3, 2e-3, 1e-3> translate <1e3, 0, 0> }
     difference { box { -1, 1 } cylinder { -2 * z, 2 * z, 0.5 } sphere { y, 0.7 } }
     intersection { cylinder { -x, x, 1 } box { <-2, -0.5, -0.5>, <2, 0.5, 2> } sphere { 0, 1.3 } }
-    intersection { box { -1, 1 } object { Disk_X } clipped_by { plane { y, 0.3 } } }
-    intersection { box { -1, 1 rotate 30 * z } sphere { x, 1.2 } }
-    intersection { box { -1, 1 } sphere { 0, 1.2 } inverse }
+    intersection { box { -1, 1 } object { Disk_X scale 1.4 } clipped_by { plane { y, 0.3 } } }
+    intersection { box { -1, 1 rotate 30 * z } sphere { 0.3 * x, 1.5 } }
+    intersection { box { -1, 1 } sphere { 0, 1.35 } inverse }
+    difference { box { -1, 1 } box { -0.5, 0.5 } }
+    intersection { box { -1, 1 } object { Disk_X scale 0.9 } }
 "#;
 
 #[test]
@@ -42,7 +45,9 @@ fn leads_answer_as_all_hits() {
             Lead::None,
             Lead::Member,
             Lead::Member,
-            Lead::Member
+            Lead::Member,
+            Lead::None,
+            Lead::None
         ]
     );
     let mut rng = Lcg(33);
