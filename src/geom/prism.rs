@@ -630,6 +630,48 @@ impl Shape for Prism {
         self.first_linear(ray, tmax, scratch)
     }
 
+    /// Whether `intersect_first` finds a crossing. A conic sweep's `intersect_first` solves
+    /// every piece the window lets through before it picks the nearest; a shadow ray stops
+    /// at the first piece with a wall crossing before `tmax`, and asks the caps (their
+    /// even-odd tests) only when no wall is crossed. A linear sweep's nearest-first search
+    /// already stops early.
+    fn any_hit(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> bool {
+        if !self.conic {
+            return self.first_linear(ray, tmax, scratch).is_some();
+        }
+        let window = self.window(ray);
+        if let Some(plane) = self.cut_plane(ray) {
+            let (nx, c0, nz) = plane;
+            let g = |q: P2| nx * q[0] + nz * q[1] + c0;
+            let keep = window.keep();
+            for (i, pc) in self.pieces.iter().enumerate() {
+                if Self::may_cut(pc, g) && window.may_hold(pc) {
+                    // `wall_t` gives only `t > EPSILON`, as `intersect_first` keeps.
+                    let mut found = false;
+                    self.piece_hits(ray, plane, i, keep, |h| found |= h.t < tmax);
+                    if found {
+                        return true;
+                    }
+                }
+            }
+        }
+        // No wall crossing: `intersect_first` takes a cap below `tmax` (`t >= tmax` skips it
+        // there, NaN `tmax` included).
+        let (o, d) = (ray.origin, ray.dir);
+        if self.open || d.y == 0.0 {
+            return false;
+        }
+        self.h.iter().any(|&h| {
+            let t = (h - o.y) / d.y;
+            if t.is_nan() || t <= EPSILON || t >= tmax {
+                return false;
+            }
+            let p = o + d * t;
+            self.unswept(p.x, p.z, h)
+                .is_some_and(|q| inside_even_odd(&self.pieces, q, false))
+        })
+    }
+
     fn inside(&self, p: DVec3) -> bool {
         self.in_heights(p.y)
             && self

@@ -122,7 +122,9 @@ impl Sor {
         Some([a.y0, b.y0 + b.dh])
     }
 
-    fn each_hit(&self, ray: &Ray, mut found: impl FnMut(Hit)) {
+    /// Hands each crossing (`t > EPSILON`) to `found`, segment by segment, then the caps;
+    /// once `found` has said stop (true), no further segment or cap is solved.
+    fn each_hit(&self, ray: &Ray, mut found: impl FnMut(Hit) -> bool) {
         let Some([ylo, yhi]) = self.heights() else {
             return;
         };
@@ -169,11 +171,10 @@ impl Sor {
         let b = o.x * u.x + o.z * u.z;
         let (span, back) = (hi - lo, self.scale / len);
         let q = |t: f64| a * t * t + 2.0 * b * t + c;
+        // Whether `found` said stop.
         let mut push = |t: f64, part: u32| {
             let t = (t + lo) * back;
-            if t > EPSILON {
-                found(Hit::with_part(t, part));
-            }
+            t > EPSILON && found(Hit::with_part(t, part))
         };
         let last = self.segments.len() - 1;
         // The stretch's heights, to skip the segments wholly above or below them before the
@@ -241,14 +242,18 @@ impl Sor {
             p[2] -= a;
             let f_lo = if f_lo.is_nan() { eval(&p, t_lo) } else { f_lo };
             let f_hi = if f_hi.is_nan() { eval(&p, t_hi) } else { f_hi };
-            sign_changes(&p, t_lo, t_hi, f_lo, f_hi, |t| push(t, j as u32));
+            let mut stop = false;
+            sign_changes(&p, t_lo, t_hi, f_lo, f_hi, |t| stop |= push(t, j as u32));
+            if stop {
+                return;
+            }
         }
         if !self.open && u.y != 0.0 {
             let (first, end) = (&self.segments[0], &self.segments[last]);
             for (y, r2, part) in [(ylo, first.v[0], CAP_LOW), (yhi, end.v[1], CAP_HIGH)] {
                 let t = (y - o.y) / u.y;
-                if t >= 0.0 && q(t) <= r2 {
-                    push(t, part);
+                if t >= 0.0 && q(t) <= r2 && push(t, part) {
+                    return;
                 }
             }
         }
@@ -265,7 +270,22 @@ impl Shape for Sor {
     }
 
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
-        self.each_hit(ray, |h| out.push(h));
+        self.each_hit(ray, |h| {
+            out.push(h);
+            false
+        });
+    }
+
+    /// Whether the default `intersect_first` finds a crossing (one listed with
+    /// `EPSILON < t < tmax`): a shadow ray stops at the segment holding the first such, where
+    /// the listing solved every segment the ray's stretch meets.
+    fn any_hit(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> bool {
+        let mut any = false;
+        self.each_hit(ray, |h| {
+            any |= h.t < tmax;
+            any
+        });
+        any
     }
 
     fn inside(&self, p: DVec3) -> bool {
@@ -366,5 +386,53 @@ mod tests {
         assert!(check(&[[0.0, 0.0], [-1.0, 1.0], [1.0, 2.0], [1.0, 3.0]]).is_err());
         // Control points may lie anywhere in height.
         check(&[[0.0, 5.0], [1.0, 1.0], [1.0, 2.0], [1.0, 1.5]]).unwrap();
+    }
+
+    /// `any_hit` (which stops at the first segment holding a crossing before `tmax`) says
+    /// whether the default `intersect_first` finds one: open and closed vases, rays from
+    /// outside, from a crossing and level ones, `tmax` before, at, past and beyond it.
+    #[test]
+    fn any_hit_is_whether_there_is_a_first() {
+        let p = [
+            [0.0, 0.0],
+            [0.118143, 0.0],
+            [0.620253, 0.540084],
+            [0.210970, 0.827004],
+            [0.194093, 0.962025],
+            [0.286920, 1.0],
+            [0.468354, 1.033755],
+        ];
+        let mut rng = crate::geom::test_rng::Lcg(29);
+        let mut seen = [0; 2];
+        for open in [false, true] {
+            let s = Sor::new(&p, open);
+            for k in 0..4000 {
+                let o = DVec3::new(0.0, 0.5, 0.0) + rng.vec(4.0);
+                let mut d = DVec3::new(0.0, 0.5, 0.0) + rng.vec(0.8) - o;
+                if k % 10 == 0 {
+                    d.y = 0.0;
+                }
+                let ray = Ray::new(o, d);
+                let first = s.intersect_first(&ray, f64::INFINITY, &mut Vec::new());
+                let near = first.map_or(1.0, |h| h.t);
+                let on = Ray::new(ray.at(near), rng.vec(1.0));
+                let up = f64::from_bits(near.to_bits() + 1);
+                for r in [ray, on] {
+                    for tmax in [
+                        f64::INFINITY,
+                        near,
+                        up,
+                        near * 0.5,
+                        rng.next() * 3.0,
+                        f64::NAN,
+                    ] {
+                        let want = s.intersect_first(&r, tmax, &mut Vec::new()).is_some();
+                        seen[want as usize] += 1;
+                        assert_eq!(s.any_hit(&r, tmax, &mut Vec::new()), want, "{r:?} {tmax}");
+                    }
+                }
+            }
+        }
+        assert!(seen[0] > 5000 && seen[1] > 5000, "{seen:?}");
     }
 }
