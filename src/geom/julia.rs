@@ -229,10 +229,14 @@ fn march_step(orbit: &Orbit, min_step: f64) -> f64 {
         {
             min_step
         }
+        // `de.max(min_step)` for a finite `de`, else `min_step`, as a branch: `maxsd` and the
+        // NaN blend of `f64::max` (or a compare and blend) sat on the march's chain (each
+        // sample waits for its step), where a predicted branch adds no latency. `opaque`
+        // keeps LLVM from turning the branch back into a select.
         Orbit::Outside { r, dr } => {
             let de = r.ln() / dr;
-            if de.is_finite() {
-                de.max(min_step)
+            if de > min_step && de < f64::INFINITY {
+                crate::math::opaque(de)
             } else {
                 min_step
             }
@@ -375,8 +379,27 @@ impl Julia {
         qadd(&f, &self.param)
     }
 
+    /// `orbit_with::<true>`, out of line: its point and answer pass in registers
+    /// (`orbit_regs`), not through memory as a `DVec3` and an `Orbit` would, whose store and
+    /// reload sat on the march's chain.
+    #[inline(always)]
     fn orbit(&self, p: DVec3) -> Orbit {
-        self.orbit_with::<true>(p)
+        let (r, dr) = self.orbit_regs(p.x, p.y, p.z);
+        // An escape's `r` is a square root above the bailout's, so positive.
+        if r < 0.0 {
+            Orbit::Inside
+        } else {
+            Orbit::Outside { r, dr }
+        }
+    }
+
+    /// `orbit_with::<true>` of (x, y, z), `Inside` as r = −1.
+    #[inline(never)]
+    fn orbit_regs(&self, x: f64, y: f64, z: f64) -> (f64, f64) {
+        match self.orbit_with::<true>(DVec3::new(x, y, z)) {
+            Orbit::Inside => (-1.0, 0.0),
+            Orbit::Outside { r, dr } => (r, dr),
+        }
     }
 
     /// The orbit of `p`; with `DE` false the distance estimate is left out (0), which saves
