@@ -44,99 +44,6 @@ pub enum Algebra {
     Hypercomplex,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum JuliaFn {
-    Sqr,
-    Cube,
-    Exp,
-    Reciprocal,
-    Sin,
-    Asin,
-    Sinh,
-    Asinh,
-    Cos,
-    Acos,
-    Cosh,
-    Acosh,
-    Tan,
-    Atan,
-    Tanh,
-    Atanh,
-    Ln,
-    Pwr(f64, f64),
-}
-
-/// POV-Ray's complex arc cosine (not the principal one: acos(−0.5) = −2.094, measured).
-fn acos_pov(z: C) -> C {
-    -C::i() * (z + (z * z - 1.0).sqrt()).ln()
-}
-
-impl JuliaFn {
-    /// Functions whose hypercomplex form reads the 3-D point as (x, y, y).
-    fn transcendental(self) -> bool {
-        !matches!(self, JuliaFn::Sqr | JuliaFn::Cube | JuliaFn::Reciprocal)
-    }
-
-    /// The complex function on one half of a hypercomplex number (cube is the square).
-    fn apply(self, z: C) -> C {
-        match self {
-            JuliaFn::Sqr | JuliaFn::Cube => z * z,
-            JuliaFn::Exp => z.exp(),
-            JuliaFn::Reciprocal => z.inv(),
-            JuliaFn::Sin => z.sin(),
-            JuliaFn::Asin => z.asin(),
-            JuliaFn::Sinh => z.sinh(),
-            JuliaFn::Asinh => z.asinh(),
-            JuliaFn::Cos => z.cos(),
-            JuliaFn::Acos => acos_pov(z),
-            JuliaFn::Cosh => z.cosh(),
-            JuliaFn::Acosh => C::i() * acos_pov(z),
-            JuliaFn::Tan => z.tan(),
-            JuliaFn::Atan => z.atan(),
-            JuliaFn::Tanh => z.tanh(),
-            JuliaFn::Atanh => z.atanh(),
-            JuliaFn::Ln => z.ln(),
-            JuliaFn::Pwr(x, y) => {
-                if z == C::new(0.0, 0.0) {
-                    z
-                } else {
-                    (C::new(x, y) * z.ln()).exp()
-                }
-            }
-        }
-    }
-
-    /// The derivative of `apply` at z, given its value `f` there.
-    fn derivative(self, z: C, f: C) -> C {
-        let one = C::new(1.0, 0.0);
-        match self {
-            JuliaFn::Sqr | JuliaFn::Cube => 2.0 * z,
-            JuliaFn::Exp => f,
-            JuliaFn::Reciprocal => -(f * f),
-            JuliaFn::Sin => z.cos(),
-            JuliaFn::Asin => (one - z * z).sqrt().inv(),
-            JuliaFn::Sinh => z.cosh(),
-            JuliaFn::Asinh => (one + z * z).sqrt().inv(),
-            JuliaFn::Cos => -z.sin(),
-            JuliaFn::Acos => -C::i() * (z * z - 1.0).sqrt().inv(),
-            JuliaFn::Cosh => z.sinh(),
-            JuliaFn::Acosh => (z * z - 1.0).sqrt().inv(),
-            JuliaFn::Tan => (z.cos() * z.cos()).inv(),
-            JuliaFn::Atan => (one + z * z).inv(),
-            JuliaFn::Tanh => (z.cosh() * z.cosh()).inv(),
-            JuliaFn::Atanh => (one - z * z).inv(),
-            JuliaFn::Ln => z.inv(),
-            JuliaFn::Pwr(x, y) => {
-                if z == C::new(0.0, 0.0) {
-                    z
-                } else {
-                    C::new(x, y) * f / z
-                }
-            }
-        }
-    }
-}
-
 type Q = [f64; 4];
 
 #[inline(always)]
@@ -229,10 +136,14 @@ fn march_step(orbit: &Orbit, min_step: f64) -> f64 {
         {
             min_step
         }
+        // `de.max(min_step)` for a finite `de`, else `min_step`, as a branch: `maxsd` and the
+        // NaN blend of `f64::max` (or a compare and blend) sat on the march's chain (each
+        // sample waits for its step), where a predicted branch adds no latency. `opaque`
+        // keeps LLVM from turning the branch back into a select.
         Orbit::Outside { r, dr } => {
             let de = r.ln() / dr;
-            if de.is_finite() {
-                de.max(min_step)
+            if de > min_step && de < f64::INFINITY {
+                crate::math::opaque(de)
             } else {
                 min_step
             }
@@ -375,8 +286,27 @@ impl Julia {
         qadd(&f, &self.param)
     }
 
+    /// `orbit_with::<true>`, out of line: its point and answer pass in registers
+    /// (`orbit_regs`), not through memory as a `DVec3` and an `Orbit` would, whose store and
+    /// reload sat on the march's chain.
+    #[inline(always)]
     fn orbit(&self, p: DVec3) -> Orbit {
-        self.orbit_with::<true>(p)
+        let (r, dr) = self.orbit_regs(p.x, p.y, p.z);
+        // An escape's `r` is a square root above the bailout's, so positive.
+        if r < 0.0 {
+            Orbit::Inside
+        } else {
+            Orbit::Outside { r, dr }
+        }
+    }
+
+    /// `orbit_with::<true>` of (x, y, z), `Inside` as r = −1.
+    #[inline(never)]
+    fn orbit_regs(&self, x: f64, y: f64, z: f64) -> (f64, f64) {
+        match self.orbit_with::<true>(DVec3::new(x, y, z)) {
+            Orbit::Inside => (-1.0, 0.0),
+            Orbit::Outside { r, dr } => (r, dr),
+        }
     }
 
     /// The orbit of `p`; with `DE` false the distance estimate is left out (0), which saves
@@ -390,7 +320,10 @@ impl Julia {
                 self.quaternion_orbit::<true, DE>(h)
             }
             Algebra::Quaternion => self.quaternion_orbit::<false, DE>(h),
-            Algebra::Hypercomplex => self.hypercomplex_orbit::<DE>(h),
+            Algebra::Hypercomplex if matches!(self.func, JuliaFn::Sqr | JuliaFn::Cube) => {
+                self.hypercomplex_orbit::<true, DE>(h)
+            }
+            Algebra::Hypercomplex => self.hypercomplex_orbit::<false, DE>(h),
         }
     }
 
@@ -447,7 +380,11 @@ impl Julia {
         Orbit::Inside
     }
 
-    fn hypercomplex_orbit<const DE: bool>(&self, h: Q) -> Orbit {
+    /// With `SQR` (sqr and cube, which iterates the square) each half's step is `z * z`,
+    /// `JuliaFn::apply`'s own expression, in the loop: the call, its dispatch and the halves'
+    /// trips through memory around it sat on the orbit's chain.
+    #[inline(always)]
+    fn hypercomplex_orbit<const SQR: bool, const DE: bool>(&self, h: Q) -> Orbit {
         let s = qnorm_sq(&h);
         let mut r = s.sqrt();
         let mut dr = 1.0;
@@ -457,9 +394,10 @@ impl Julia {
         let steps = self.max_iteration.saturating_sub(1);
         let (mut z1, mut z2) = split(&h);
         let (c1, c2) = split(&self.param);
+        let f = |z: C| if SQR { z * z } else { self.func.apply(z) };
         for _ in 0..steps {
-            z1 = self.func.apply(z1) + c1;
-            z2 = self.func.apply(z2) + c2;
+            z1 = f(z1) + c1;
+            z2 = f(z2) + c2;
             if DE {
                 dr *= 2.0 * r;
             }
@@ -780,6 +718,10 @@ impl Shape for Julia {
         }
     }
 }
+
+#[path = "julia_fn.rs"]
+mod func;
+pub use func::JuliaFn;
 
 #[path = "julia_pair.rs"]
 mod pair;

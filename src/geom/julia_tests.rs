@@ -744,3 +744,46 @@ fn qsquare_is_qmul_to_the_bit() {
         }
     }
 }
+
+/// The hypercomplex orbit with the square inlined (`SQR`) against the one through
+/// `JuliaFn::apply`, bit for bit, with and without the estimate: points near the surface, far
+/// out and at edge values (signed zeros, subnormals, overflowing squares, NaN).
+#[test]
+fn hypercomplex_square_inlined_is_apply() {
+    let mut rng = crate::geom::test_rng::Lcg(29);
+    let bits = |o: Orbit| match o {
+        Orbit::Inside => None,
+        Orbit::Outside { r, dr } => Some((r.to_bits(), dr.to_bits())),
+    };
+    let edge = [0.0, -0.0, 1e-310, -1.0, 0.5, 2.0, 1e160, -1e300, f64::NAN];
+    for (c, func, n) in [
+        ([-0.745, 0.0, 0.113, 0.05], JuliaFn::Sqr, 9),
+        ([0.2, 0.1, 0.59, -0.2], JuliaFn::Sqr, 7),
+        ([0.4, 0.2, 0.1, 0.0], JuliaFn::Cube, 6),
+    ] {
+        let j = julia(c, Algebra::Hypercomplex, func, n, 20.0);
+        let mut points: Vec<[f64; 4]> = (0..50_000)
+            .map(|i| {
+                let p = rng.vec(if i % 2 == 0 { 1.5 } else { 4.0 });
+                [p.x, p.y, p.z, 0.1 * p.x]
+            })
+            .collect();
+        for k in 0..edge.len().pow(3) {
+            points.push(std::array::from_fn(|i| {
+                edge[(k / edge.len().pow(i.min(2) as u32)) % edge.len()]
+            }));
+        }
+        for h in points {
+            assert_eq!(
+                bits(j.hypercomplex_orbit::<true, true>(h)),
+                bits(j.hypercomplex_orbit::<false, true>(h)),
+                "{c:?} at {h:?}"
+            );
+            assert_eq!(
+                bits(j.hypercomplex_orbit::<true, false>(h)),
+                bits(j.hypercomplex_orbit::<false, false>(h)),
+                "{c:?} at {h:?}"
+            );
+        }
+    }
+}
