@@ -3,8 +3,12 @@
 //!
 //! The 27 cubes around the point are walked in a fixed order and the three smallest sums of
 //! |d|^metric kept; the cubes whose sum cannot be among those three are skipped without
-//! hashing their point or taking their powers (`nearest3`), which gives the walk's own
+//! hashing their point or taking their powers (`nearest3`), or, inside the i32 range, all
+//! 27 points are hashed and only the cubes whose sums may be among the three smallest by
+//! cheap bounds take their exact powers (`nearest3_bounded`): either gives the walk's own
 //! answer bit for bit.
+
+mod bounds;
 
 use crate::math::DVec3;
 
@@ -184,6 +188,10 @@ fn nearest3(q: DVec3, metric: f64) -> ([f64; 3], DVec3) {
     if !(powers && small(q.x) && small(q.y) && small(q.z)) {
         return walk(q, metric);
     }
+    let inside = |c: f64| c.abs() < 2147483648.0;
+    if bounds::metric_in_range(metric) && inside(q.x) && inside(q.y) && inside(q.z) {
+        return nearest3_bounded(q, metric);
+    }
     let base = q.floor();
     let mut sums = [0.0; 27];
     let mut pts = [DVec3::ZERO; 27];
@@ -219,6 +227,53 @@ fn nearest3(q: DVec3, metric: f64) -> ([f64; 3], DVec3) {
             cube(q, base, metric, k)
         };
         insert(&mut d, &mut nearest, sum, pt);
+    }
+    (d, nearest)
+}
+
+/// `walk_shared`'s answer (q inside the i32 range, the metric in `bounds::metric_in_range`)
+/// with the exact powers taken only where they may matter. Every cube's point is hashed (a
+/// few table reads) and its sum bounded by `bounds::sum_bounds`; at least three cubes have
+/// sums at most the third smallest upper bound u, so the third smallest sum is at most u,
+/// and a cube whose lower bound is above u has a sum above it: it is neither among the three
+/// smallest nor the nearest, and the walk, kept in its order, leaves it out. The cubes that
+/// remain (about three) are summed and inserted as `walk_shared` does, on the same values.
+fn nearest3_bounded(q: DVec3, metric: f64) -> ([f64; 3], DVec3) {
+    let (hxy, mz, [fx, fy, fz]) = shared_stages(q.floor());
+    // Built element by element (arrays zeroed first cost a memset per evaluation).
+    let pts: [DVec3; 27] = std::array::from_fn(|i| {
+        let (dz, k) = (i / 9, i % 9);
+        // SAFETY: as in `walk_shared` (hxy's and mz's values below 4096, CELL_HASH_Z's too).
+        let p = unsafe {
+            let e = *CELL_HASH_Z.get_unchecked(hxy[k] ^ mz[dz]) as usize;
+            *CELL_POINT.get_unchecked(e)
+        };
+        DVec3::new(fx[k % 3] + p[0], fy[k / 3] + p[1], fz[dz] + p[2])
+    });
+    // The differences by axis ((pt - q).abs()'s components), a 28th cube's as a pad for the
+    // bounds' lanes.
+    let diff: [[f64; 28]; 3] = std::array::from_fn(|a| {
+        std::array::from_fn(|i| {
+            if i < 27 {
+                (pts[i][a] - q[a]).abs()
+            } else {
+                1.0
+            }
+        })
+    });
+    let (low, high) = bounds::sum_bounds(&diff, metric);
+    // The three smallest upper bounds, sorted, by selects (no NaN here).
+    let mut u = [f64::INFINITY; 3];
+    for &h in &high[..27] {
+        u = [u[0].min(h), u[1].min(u[0].max(h)), u[2].min(u[1].max(h))];
+    }
+    let mut d = [f64::INFINITY; 3];
+    let mut nearest = DVec3::ZERO;
+    for i in 0..27 {
+        if low[i] <= u[2] {
+            let a = DVec3::new(diff[0][i], diff[1][i], diff[2][i]);
+            insert(&mut d, &mut nearest, metric_sum(a, metric), pts[i]);
+        }
     }
     (d, nearest)
 }
@@ -280,6 +335,48 @@ mod tests {
         ]);
         for &p in &points {
             for m in metrics {
+                assert_eq!(bits(nearest3(p, m)), bits(walk(p, m)), "{p} {m}");
+            }
+        }
+    }
+
+    /// The walk that takes exact powers only where the bounds allow is the full walk bit for
+    /// bit: random points at several scales up to the i32 edges, lattice points, faces and
+    /// half-way points (ties between cubes), every scene's metric and the range's ends.
+    #[test]
+    fn bounded_walk_is_the_full_walk() {
+        let bits =
+            |(d, p): ([f64; 3], DVec3)| (d.map(f64::to_bits), p.to_array().map(f64::to_bits));
+        let mut rng = Lcg(13);
+        let mut metrics = vec![0.25, 16.0, 1.5, 2.2, 2.5, 3.0, 0.5, 1.6, 4.0, 1.0 / 3.0];
+        for _ in 0..6 {
+            metrics.push(0.25 + 15.75 * rng.next());
+        }
+        let mut points = Vec::new();
+        for n in 0..6_000 {
+            let scale = [1.0, 10.0, 1e3, 1e6, 4e9, 1e-3][n % 6];
+            points.push(rng.vec(scale));
+        }
+        for i in -4..4 {
+            for h in [0.0, 0.5, 1e-17, -1e-17, 0.25, 1e-300] {
+                let c = i as f64 + h;
+                points.push(DVec3::new(c, c, c));
+                points.push(DVec3::new(c, 0.5, -c));
+                points.push(DVec3::new(0.5, 0.5, c));
+            }
+        }
+        for c in [-2147483647.0, 2147483647.5, -2147483648.0 + 1e-6, -0.0] {
+            points.push(DVec3::new(c, 0.25, -c));
+        }
+        // Cube points themselves (a difference of 0 on every axis) and points near them.
+        for x in -2..2 {
+            for y in -2..2 {
+                let p = noise::cell_point(x, y, 1);
+                points.extend([p, p + DVec3::splat(1e-12), p - DVec3::new(0.0, 1e-20, 0.0)]);
+            }
+        }
+        for &p in &points {
+            for &m in &metrics {
                 assert_eq!(bits(nearest3(p, m)), bits(walk(p, m)), "{p} {m}");
             }
         }
