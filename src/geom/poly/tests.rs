@@ -331,3 +331,50 @@ fn certified_intervals_need_no_sturm_search() {
     }
     assert!(certified > 1000, "{certified}");
 }
+
+/// `newton`'s stepped polish, alone and raced beside another bracket (either finishing
+/// first), gives `polish`'s bits: random polynomials of degree 3 to 6 (some with a special
+/// coefficient), random brackets with either sign at `a`, narrow, wide, empty and reversed.
+#[test]
+fn raced_polish_is_polish() {
+    let mut rng = crate::geom::test_rng::Lcg(34);
+    let special = [0.0, -0.0, 1e300, -1e-300, f64::INFINITY, f64::NAN];
+    let bracket = |rng: &mut crate::geom::test_rng::Lcg| {
+        let a = rng.next() * 20.0 - 10.0;
+        let w = match (rng.next() * 4.0) as usize {
+            0 => rng.next() * 1e-12,
+            1 => rng.next() * 1e3,
+            2 => 0.0,
+            _ => rng.next() * 4.0 - 1.0,
+        };
+        (a, a + w, rng.next() < 0.5)
+    };
+    for case in 0..40_000 {
+        let n = 4 + case % 4;
+        let mut c: Vec<f64> = if case % 2 == 0 {
+            let roots: Vec<f64> = (1..n).map(|_| rng.next() * 12.0 - 6.0).collect();
+            from_roots(&roots)
+        } else {
+            (0..n).map(|_| rng.next() * 8.0 - 4.0).collect()
+        };
+        if case % 11 == 0 {
+            let k = (rng.next() * n as f64) as usize;
+            c[k] = special[(rng.next() * 6.0) as usize];
+        }
+        let (a0, b0, n0) = bracket(&mut rng);
+        let (a1, b1, n1) = bracket(&mut rng);
+        let (p, q) = (Newton::new(a0, b0, n0), Newton::new(a1, b1, n1));
+        let (want0, want1) = (polish(&c, a0, b0, n0), polish(&c, a1, b1, n1));
+        assert_eq!(same_bits(p.finish(&c)), same_bits(want0), "{c:?} {a0} {b0}");
+        let (got0, ahead) = p.race(q, &c);
+        let got1 = match ahead {
+            Ahead::Root(r) => r,
+            Ahead::Part(rest) => rest.finish(&c),
+        };
+        assert_eq!(
+            (same_bits(got0), same_bits(got1)),
+            (same_bits(want0), same_bits(want1)),
+            "{c:?} [{a0}, {b0}] [{a1}, {b1}]"
+        );
+    }
+}
