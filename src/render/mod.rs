@@ -41,6 +41,7 @@ pub mod progressive;
 pub mod radiosity;
 mod radiosity_cache;
 mod shadow;
+mod shadow_area;
 mod sky;
 pub mod texture_map;
 mod tiling;

@@ -26,6 +26,7 @@ pub mod media;
 pub mod mesh_camera;
 pub mod mesh_triangles;
 pub mod object;
+mod object_surface;
 pub mod pattern;
 pub mod photon;
 pub mod scratch;
