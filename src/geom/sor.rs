@@ -348,18 +348,21 @@ mod tests {
         );
     }
 
+    /// The manual's vase, shared by the profile and the shadow-test tests.
+    const VASE: [[f64; 2]; 7] = [
+        [0.0, 0.0],
+        [0.118143, 0.0],
+        [0.620253, 0.540084],
+        [0.210970, 0.827004],
+        [0.194093, 0.962025],
+        [0.286920, 1.0],
+        [0.468354, 1.033755],
+    ];
+
     #[test]
     fn vase_matches_its_profile() {
         // The manual's vase; a horizontal ray at each height meets x² = f(y).
-        let p = [
-            [0.0, 0.0],
-            [0.118143, 0.0],
-            [0.620253, 0.540084],
-            [0.210970, 0.827004],
-            [0.194093, 0.962025],
-            [0.286920, 1.0],
-            [0.468354, 1.033755],
-        ];
+        let p = VASE;
         let s = Sor::new(&p, true);
         for k in 1..50 {
             let y = k as f64 / 50.0;
@@ -393,15 +396,7 @@ mod tests {
     /// outside, from a crossing and level ones, `tmax` before, at, past and beyond it.
     #[test]
     fn any_hit_is_whether_there_is_a_first() {
-        let p = [
-            [0.0, 0.0],
-            [0.118143, 0.0],
-            [0.620253, 0.540084],
-            [0.210970, 0.827004],
-            [0.194093, 0.962025],
-            [0.286920, 1.0],
-            [0.468354, 1.033755],
-        ];
+        let p = VASE;
         let mut rng = crate::geom::test_rng::Lcg(29);
         let mut seen = [0; 2];
         for open in [false, true] {
