@@ -15,10 +15,8 @@
 use std::ops::Deref;
 
 use crate::geom::bernstein::surely_no_root;
-use newton::{Ahead, Newton};
 
 mod definite;
-mod newton;
 mod sturm_first;
 mod window;
 pub use definite::surely_definite_quartic;
@@ -425,30 +423,11 @@ fn first_root_body(
     let mut fa = eval(c, a);
     let (mut last, mut count) = (None, 0);
     let mut k = 0;
-    // The next bracket's polish when it was started beside this one's (see `newton`).
-    let mut ahead = None;
     loop {
         let b = if k < m {
             let (x0, x1, neg) = cands[k];
             k += 1;
-            let x = match ahead.take() {
-                Some(Ahead::Root(x)) => x,
-                _ if x0 == x1 => x0,
-                started => {
-                    let now = match started {
-                        Some(Ahead::Part(p)) => p,
-                        _ => Newton::new(x0, x1, neg),
-                    };
-                    match cands[..m].get(k) {
-                        Some(&(y0, y1, neg_y)) if y0 != y1 => {
-                            let (x, next) = now.race(Newton::new(y0, y1, neg_y), d);
-                            ahead = Some(next);
-                            x
-                        }
-                        _ => now.finish(d),
-                    }
-                }
-            };
+            let x = if x0 == x1 { x0 } else { polish(d, x0, x1, neg) };
             if count >= MAX_DEGREE || last == Some(x) {
                 continue;
             }
