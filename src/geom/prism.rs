@@ -171,6 +171,14 @@ impl Prism {
         }
     }
 
+    /// Whether the point `p` of the cap plane at height `h` lies on the cap: inside the
+    /// outline there (even-odd).
+    #[inline]
+    fn on_cap(&self, p: DVec3, h: f64) -> bool {
+        self.unswept(p.x, p.z, h)
+            .is_some_and(|q| inside_even_odd(&self.pieces, q, false))
+    }
+
     /// The plane holding the ray and the sweep direction, `g(q) = n · (q, 1) + k`, as
     /// (nx, ny + k, nz); None when the ray runs along the sweep direction.
     fn cut_plane(&self, ray: &Ray) -> Option<(f64, f64, f64)> {
@@ -450,11 +458,8 @@ impl Prism {
                 } else {
                     (self.h[1], CAP_HIGH)
                 };
-                let p = o + d * c.t;
-                if let Some(q) = self.unswept(p.x, p.z, h) {
-                    if inside_even_odd(&self.pieces, q, false) {
-                        offer(Hit::with_part(c.t, part), c.part, &mut best);
-                    }
+                if self.on_cap(o + d * c.t, h) {
+                    offer(Hit::with_part(c.t, part), c.part, &mut best);
                 }
             }
         }
@@ -490,11 +495,8 @@ impl Prism {
             if t.is_nan() || t <= EPSILON {
                 continue;
             }
-            let p = o + d * t;
-            if let Some(q) = self.unswept(p.x, p.z, h) {
-                if inside_even_odd(&self.pieces, q, false) {
-                    out.push(Hit::with_part(t, part));
-                }
+            if self.on_cap(o + d * t, h) {
+                out.push(Hit::with_part(t, part));
             }
         }
     }
@@ -617,11 +619,8 @@ impl Shape for Prism {
                     if t.is_nan() || t <= EPSILON || t >= best.map_or(tmax, |b| b.t) {
                         continue;
                     }
-                    let p = o + d * t;
-                    if let Some(q) = self.unswept(p.x, p.z, h) {
-                        if inside_even_odd(&self.pieces, q, false) {
-                            best = Some(Hit::with_part(t, part));
-                        }
+                    if self.on_cap(o + d * t, h) {
+                        best = Some(Hit::with_part(t, part));
                     }
                 }
             }
@@ -666,9 +665,7 @@ impl Shape for Prism {
             if t.is_nan() || t <= EPSILON || t >= tmax {
                 return false;
             }
-            let p = o + d * t;
-            self.unswept(p.x, p.z, h)
-                .is_some_and(|q| inside_even_odd(&self.pieces, q, false))
+            self.on_cap(o + d * t, h)
         })
     }
 

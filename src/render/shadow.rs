@@ -572,16 +572,7 @@ fn opaque_blocks<'a>(
     if let Some(members) = obj.scanned_union() {
         return Object::scan_any_hit(members, ray, slabs, dist, ctx);
     }
-    let (
-        crate::scene::object::ObjKind::Csg {
-            op: crate::scene::desc::CsgOp::Union,
-            children,
-            index: Some(ix),
-            ..
-        },
-        true,
-    ) = (&obj.kind, obj.clip.is_empty())
-    else {
+    let Some((children, ix)) = obj.indexed_union() else {
         return leaf_any_hit(obj, ray, dist, ctx);
     };
     let asked = ctx.leaf_blockers[slot];

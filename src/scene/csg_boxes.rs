@@ -268,25 +268,46 @@ impl Object {
             ObjKind::Csg { cull: Some(c), .. } => (c.search, c.lead != Lead::None),
             _ => (Search::Plain, false),
         };
-        match (search, led) {
+        let fold = match search {
             // Box members without dispatch (`csg_boxes`); such nodes have no index.
-            (Search::Boxes, _) => self.boxes_search(op, children, culls, ray, tmax, s),
-            (Search::Framed, _) => match self.framed_boxes() {
-                Some(f) => self.framed_first_hit(children, culls.0, f, ray, tmax),
-                None => self
-                    .csg_first_hit::<false, false, false>(op, children, index, culls, ray, tmax, s),
+            Search::Boxes => return self.boxes_search(op, children, culls, ray, tmax, s),
+            Search::Framed => match self.framed_boxes() {
+                Some(f) => return self.framed_first_hit(children, culls.0, f, ray, tmax),
+                None => false,
             },
-            (Search::Folds, true) => {
-                self.csg_first_hit::<true, false, true>(op, children, index, culls, ray, tmax, s)
+            Search::Folds => true,
+            Search::Plain => false,
+        };
+        self.csg_first_hit_as::<false>((fold, led), op, children, index, culls, ray, tmax, s)
+    }
+
+    /// `csg_first_hit`'s instance for `(fold, led)`: its `FOLD` and `LEAD` parameters from
+    /// the node's folding and lead (`BOXES` the caller's).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn csg_first_hit_as<'a, const BOXES: bool>(
+        &'a self,
+        (fold, led): (bool, bool),
+        op: CsgOp,
+        children: &'a [Object],
+        index: Option<&ChildIndex>,
+        culls: (Option<&Aabb>, Option<&Faces>),
+        ray: &Ray,
+        tmax: f64,
+        s: &mut Scratch<'a>,
+    ) -> Option<SurfaceHit<'a>> {
+        match (fold, led) {
+            (true, true) => {
+                self.csg_first_hit::<true, BOXES, true>(op, children, index, culls, ray, tmax, s)
             }
-            (Search::Folds, false) => {
-                self.csg_first_hit::<true, false, false>(op, children, index, culls, ray, tmax, s)
+            (true, false) => {
+                self.csg_first_hit::<true, BOXES, false>(op, children, index, culls, ray, tmax, s)
             }
-            (Search::Plain, true) => {
-                self.csg_first_hit::<false, false, true>(op, children, index, culls, ray, tmax, s)
+            (false, true) => {
+                self.csg_first_hit::<false, BOXES, true>(op, children, index, culls, ray, tmax, s)
             }
-            (Search::Plain, false) => {
-                self.csg_first_hit::<false, false, false>(op, children, index, culls, ray, tmax, s)
+            (false, false) => {
+                self.csg_first_hit::<false, BOXES, false>(op, children, index, culls, ray, tmax, s)
             }
         }
     }
@@ -317,19 +338,16 @@ impl Object {
         let led = self.lead() != Lead::None;
         match self.box_members() {
             Some(b) if b.all() => self.boxes_first_hit(op, children, culls.0, b, ray, tmax),
-            _ => match (self.folds(), led) {
-                (true, true) => {
-                    self.csg_first_hit::<true, true, true>(op, children, None, culls, ray, tmax, s)
-                }
-                (true, false) => {
-                    self.csg_first_hit::<true, true, false>(op, children, None, culls, ray, tmax, s)
-                }
-                (false, true) => {
-                    self.csg_first_hit::<false, true, true>(op, children, None, culls, ray, tmax, s)
-                }
-                (false, false) => self
-                    .csg_first_hit::<false, true, false>(op, children, None, culls, ray, tmax, s),
-            },
+            _ => self.csg_first_hit_as::<true>(
+                (self.folds(), led),
+                op,
+                children,
+                None,
+                culls,
+                ray,
+                tmax,
+                s,
+            ),
         }
     }
 

@@ -535,16 +535,7 @@ impl Object {
     /// Whether the ray crosses this object within (EPSILON, tmax): `first_hit(..).is_some()`,
     /// but a union stops at the first member it finds crossed (shadow rays).
     pub fn any_hit<'a>(&'a self, ray: &Ray, tmax: f64, s: &mut Scratch<'a>) -> bool {
-        if let (
-            ObjKind::Csg {
-                op: CsgOp::Union,
-                children,
-                index: Some(ix),
-                ..
-            },
-            true,
-        ) = (&self.kind, self.clip.is_empty())
-        {
+        if let Some((children, ix)) = self.indexed_union() {
             let slabs = Slabs::new(ray.origin, ray.dir.recip());
             return ix.any(ray, tmax, |i| {
                 let c = ix.leaf(children, i);
@@ -600,6 +591,24 @@ impl Object {
             return self.clipped_hit(ray, tmax, s, false).is_some();
         }
         self.first_hit(ray, tmax, s).is_some()
+    }
+
+    /// The members of a union that `any_hit` walks through its index (no clipping), and the
+    /// index.
+    #[inline(always)]
+    pub fn indexed_union(&self) -> Option<(&[Object], &ChildIndex)> {
+        match (&self.kind, self.clip.is_empty()) {
+            (
+                ObjKind::Csg {
+                    op: CsgOp::Union,
+                    children,
+                    index: Some(ix),
+                    ..
+                },
+                true,
+            ) => Some((children, ix)),
+            _ => None,
+        }
     }
 
     /// The members of a union that `any_hit` scans box by box (no index, no clipping).
