@@ -362,8 +362,7 @@ mod tests {
     #[test]
     fn vase_matches_its_profile() {
         // The manual's vase; a horizontal ray at each height meets x² = f(y).
-        let p = VASE;
-        let s = Sor::new(&p, true);
+        let s = Sor::new(&VASE, true);
         for k in 1..50 {
             let y = k as f64 / 50.0;
             for dy in [0.0, 1e-7, 1e-3] {
@@ -384,7 +383,7 @@ mod tests {
                 }
             }
         }
-        assert!(check(&p[..3]).unwrap_err().contains("four"));
+        assert!(check(&VASE[..3]).unwrap_err().contains("four"));
         assert!(check(&[[0.0, 0.0], [1.0, 1.0], [1.0, 0.5], [1.0, 3.0]]).is_err());
         assert!(check(&[[0.0, 0.0], [-1.0, 1.0], [1.0, 2.0], [1.0, 3.0]]).is_err());
         // Control points may lie anywhere in height.
@@ -396,11 +395,10 @@ mod tests {
     /// outside, from a crossing and level ones, `tmax` before, at, past and beyond it.
     #[test]
     fn any_hit_is_whether_there_is_a_first() {
-        let p = VASE;
         let mut rng = crate::geom::test_rng::Lcg(29);
         let mut seen = [0; 2];
         for open in [false, true] {
-            let s = Sor::new(&p, open);
+            let s = Sor::new(&VASE, open);
             for k in 0..4000 {
                 let o = DVec3::new(0.0, 0.5, 0.0) + rng.vec(4.0);
                 let mut d = DVec3::new(0.0, 0.5, 0.0) + rng.vec(0.8) - o;

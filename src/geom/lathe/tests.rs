@@ -154,17 +154,7 @@ fn every_spline_kind_matches_reference() {
 #[test]
 fn nearest_crossing_is_the_defaults() {
     let mut rng = Lcg(0x5eed_1a7e);
-    let vase = [
-        [0.0, -0.2],
-        [1.0, 0.0],
-        [1.4, 0.8],
-        [0.6, 1.6],
-        [0.9, 2.4],
-        [1.3, 3.0],
-        [0.0, 3.2],
-        [1.0, 0.0],
-        [1.4, 0.8],
-    ];
+    let vase = VASE;
     let mut hits = 0;
     for (kind, pts) in [
         (SplineKind::Linear, &vase[1..8]),
@@ -251,22 +241,26 @@ fn straight_pieces_match_the_general_path() {
     assert!(found > 1000, "{found}");
 }
 
+/// The vase profile the lathe tests' rays are drawn around (the slices of it each spline
+/// kind takes: `vase_rays`).
+const VASE: [[f64; 2]; 9] = [
+    [0.0, -0.2],
+    [1.0, 0.0],
+    [1.4, 0.8],
+    [0.6, 1.6],
+    [0.9, 2.4],
+    [1.3, 3.0],
+    [0.0, 3.2],
+    [1.0, 0.0],
+    [1.4, 0.8],
+];
+
 /// The lathe tests' rays: for each spline kind a vase-shaped lathe, and 6000 rays from
 /// around it at points inside its hull (every seventh nearly flat), with a `tmax` of
 /// infinity, a short cut or a random one; `each` may draw more numbers from `rng`.
 fn vase_rays(seed: u64, mut each: impl FnMut(&mut Lcg, SplineKind, &Lathe, Ray, f64)) {
     let mut rng = Lcg(seed);
-    let vase = [
-        [0.0, -0.2],
-        [1.0, 0.0],
-        [1.4, 0.8],
-        [0.6, 1.6],
-        [0.9, 2.4],
-        [1.3, 3.0],
-        [0.0, 3.2],
-        [1.0, 0.0],
-        [1.4, 0.8],
-    ];
+    let vase = VASE;
     for (kind, pts) in [
         (SplineKind::Linear, &vase[1..8]),
         (SplineKind::Quadratic, &vase[..8]),
