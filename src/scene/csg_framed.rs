@@ -1,4 +1,4 @@
-//! CSG nodes whose members are all boxes under one transform: advanced/blocks' stacker blocks
+//! CSG nodes whose members are all transformed boxes: advanced/blocks' stacker blocks
 //! (a box minus three bars, the block rotated and placed), ~29 % of stackerday's time through
 //! the general search (`csg_first_hit`: a local ray, a vtable call and a list per member; every
 //! keep question a member's `Object::inside`, each taking the point back through its own copy
@@ -7,7 +7,11 @@
 //! The members' transforms are the same numbers to the bit (each member's copy of the node's
 //! transform), and `Object::local_ray` and `Object::local_point` read only the inverse matrix:
 //! the ray is taken into the members' space once per search and each crossing's point once
-//! per keep test, and the results are the ones each member's own product gives. Everything
+//! per keep test, and the results are the ones each member's own product gives. Members whose
+//! transforms differ (advanced/swirlbox's rings: `intersection { box, box inverse }`, each
+//! box with its own scale under the ring's) keep their own inverse matrices (`Frames::Own`),
+//! and the ray and points are taken into each member's space by its own, as
+//! `Object::local_ray` and `local_point` take them: the same products. Everything
 //! else is the general search's steps: the same cull and slab tests (world space), the box's
 //! own crossings (`BoxShape::each_crossing`, what its `intersect_all` lists) in the same
 //! order, the keep test at the world point `ray.at(t)` with each member's bounds test and its
@@ -52,15 +56,27 @@ impl Member {
     }
 }
 
-/// A node's box members and their shared frame (`FramedBoxes::of`), in one block: a search
-/// reads nothing of the members' `Object`s (scattered, 192 bytes each, with their transforms
-/// out of line) until it returns a crossing.
+/// A node's box members and their frames (`FramedBoxes::of`), in one block (with the
+/// members' own matrices, when they differ, in another): a search reads nothing of the
+/// members' `Object`s (scattered, 192 bytes each, with their transforms out of line) until it
+/// returns a crossing.
 pub struct FramedBoxes {
-    /// The members' inverse matrix (world to box space), the same bits in each; what
-    /// `Transform::inv_ray` and `inv_point` read.
+    /// The first member's inverse matrix (world to box space); what `Transform::inv_ray` and
+    /// `inv_point` read.
     inv: DMat4,
+    /// Each member's inverse matrix, when some member's is not `inv`'s bits.
+    own: Option<Box<[DMat4]>>,
     n: usize,
     members: [Member; MAX_ALL],
+}
+
+/// `Transform::inv_ray` of a transform whose inverse matrix is `inv`.
+#[inline(always)]
+fn local_ray(inv: &DMat4, ray: &Ray) -> Ray {
+    Ray {
+        origin: inv.transform_point3(ray.origin),
+        dir: inv.transform_vector3(ray.dir),
+    }
 }
 
 /// The bits of a matrix, for comparing transforms as the products read them (`==` takes -0
@@ -71,8 +87,8 @@ fn bits(m: &DMat4) -> [u64; 16] {
 
 impl FramedBoxes {
     /// The members of a node `op` (not a union, no index, no faces) when there are one to
-    /// `MAX_ALL` of them and each is a non-empty box leaf without clip or window whose
-    /// transform's inverse is the same bits as the others'.
+    /// `MAX_ALL` of them and each is a non-empty box leaf with a transform and without clip
+    /// or window.
     pub fn of(op: CsgOp, children: &[Object]) -> Option<FramedBoxes> {
         if op == CsgOp::Union || children.is_empty() || children.len() > MAX_ALL {
             return None;
@@ -86,14 +102,16 @@ impl FramedBoxes {
             flip: false,
         };
         let mut members = [empty; MAX_ALL];
+        let mut shared = true;
         for (j, c) in children.iter().enumerate() {
             let ObjKind::Shape(shape, None) = &c.kind else {
                 return None;
             };
             let t = c.transform.as_deref()?;
-            if !c.clip.is_empty() || bits(&t.inv) != bits(&inv) {
+            if !c.clip.is_empty() {
                 return None;
             }
+            shared &= bits(&t.inv) == bits(&inv);
             members[j] = Member {
                 bounds: c.bounds,
                 shape: shape.solid_box()?,
@@ -102,11 +120,24 @@ impl FramedBoxes {
                 flip: c.inverse ^ (op == CsgOp::Difference && j > 0),
             };
         }
+        let own = (!shared).then(|| {
+            children
+                .iter()
+                .filter_map(|c| c.transform.as_deref().map(|t| t.inv))
+                .collect()
+        });
         Some(FramedBoxes {
             inv,
+            own,
             n: children.len(),
             members,
         })
+    }
+
+    /// Whether the members have their own matrices (`own`), not one shared.
+    #[inline(always)]
+    fn shared(&self) -> bool {
+        self.own.is_none()
     }
 
     #[inline(always)]
@@ -114,19 +145,23 @@ impl FramedBoxes {
         &self.members[..self.n.min(MAX_ALL)]
     }
 
-    /// `Transform::inv_ray` of each member's transform.
+    /// `Transform::inv_ray` of each member's transform, when they share one.
     #[inline(always)]
     fn local_ray(&self, ray: &Ray) -> Ray {
-        Ray {
-            origin: self.inv.transform_point3(ray.origin),
-            dir: self.inv.transform_vector3(ray.dir),
-        }
+        local_ray(&self.inv, ray)
+    }
+
+    /// Member `j`'s own inverse matrix (`own`; `inv` when they share one).
+    #[inline(always)]
+    fn inv_of(&self, j: usize) -> &DMat4 {
+        self.own.as_deref().map_or(&self.inv, |own| &own[j])
     }
 
     /// `csg_keeps(op, i, children, None, None, p, _)` of the node: every member but `i`
     /// answers at the world point `p` as the node needs. The point is taken into box space
     /// once (`Transform::inv_point`), when a member's bounds hold it (`leaf_inside`'s order
     /// of tests per member).
+    /// With their own matrices, each member's point is its own product (`local_point`).
     #[inline(always)]
     fn keeps(&self, i: usize, p: DVec3) -> bool {
         let mut local = None;
@@ -135,7 +170,10 @@ impl FramedBoxes {
                 continue;
             }
             let ok = if m.bounds.holds(p) {
-                let q = *local.get_or_insert_with(|| self.inv.transform_point3(p));
+                let q = match &self.own {
+                    None => *local.get_or_insert_with(|| self.inv.transform_point3(p)),
+                    Some(own) => own[j].transform_point3(p),
+                };
                 m.holds(q) == m.need
             } else {
                 m.outside_keeps
@@ -177,7 +215,14 @@ impl Object {
             if !slabs.hits(&m.bounds, tmax) {
                 continue;
             }
-            let r = local.get_or_insert_with(|| framed.local_ray(ray));
+            let own;
+            let r = match framed.shared() {
+                true => local.get_or_insert_with(|| framed.local_ray(ray)),
+                false => {
+                    own = local_ray(framed.inv_of(i), ray);
+                    &own
+                }
+            };
             m.shape.each_crossing(r, |hit| {
                 if hit.t < tmax {
                     insert_crossing(&mut order, &mut n, i, hit);
@@ -227,7 +272,14 @@ impl Object {
             if !slabs.hits(&m.bounds, tmax) {
                 continue;
             }
-            let r = local.get_or_insert_with(|| framed.local_ray(ray));
+            let own;
+            let r = match framed.shared() {
+                true => local.get_or_insert_with(|| framed.local_ray(ray)),
+                false => {
+                    own = local_ray(framed.inv_of(i), ray);
+                    &own
+                }
+            };
             let keep = |t: f64| {
                 let p = ray.at(t);
                 framed.keeps(i, p)
@@ -269,6 +321,10 @@ mod tests {
             difference { box { -2, 2 } box { -1, 1 } inverse rotate 30 * z }
             difference { box { -2, 2 } box { <-1, -3, -1>, <1, 3, 1> } rotate 25 * y
                          clipped_by { plane { y, 1 } } }
+            intersection { box { -1, 1 scale <5, 0.1, 5> } box { -1, 1 scale <4.75, 1.1, 4.75> inverse }
+                           scale 0.4 translate <1, 0.5, -2> rotate <10, 35, 5> }
+            difference { box { -1, 1 rotate 20 * z } box { 0, 2 scale <0.5, 3, 0.5> translate -x }
+                         box { -0.5, 0.5 translate 0.8 * z rotate 45 * x } rotate 30 * y }
             "#,
         );
         let mut rng = Lcg(21);
