@@ -440,6 +440,8 @@ impl Cache {
             }
             for (j, c) in cells.iter_mut().enumerate() {
                 match found[j] {
+                    // An empty list (rad_def_test_37: 178 k of 413 k reads) costs no call.
+                    None if c.at.1 == 0 => {}
                     None => {
                         let (at, len) = (c.at.0 as usize, c.at.1 as usize);
                         lanes::blend_listed(self, &listed[at..at + len], p, bound, b);
