@@ -520,7 +520,7 @@ impl<'a> Tracer<'a> {
             return true;
         }
         for layer in top.layers() {
-            let c = texture_map::color_at(layer, hp, uv, false);
+            let c = fresh_colour(&texture_map::color_at(layer, hp, uv, false));
             if c.is_opaque() {
                 return true;
             }
@@ -662,5 +662,27 @@ fn caustic_normal(
             break;
         }
     }
-    pn.unwrap_or(n)
+    // By coordinates: `perturb_in`'s answer was stored as an x-y pair and z, and read back as
+    // x and a y-z pair for the dot product with the light, a load the store buffer cannot
+    // forward (a fifth of `crossing_blocks`'s samples on interior/caustic2).
+    match &pn {
+        Some(v) => crate::math::by_coordinates(v),
+        None => n,
+    }
+}
+
+/// A colour a call has just returned through memory, read field by field: `is_opaque` read
+/// its filter and transmit as one 16-byte load over the callee's separate stores, which the
+/// store buffer cannot forward (an eighth of `crossing_blocks`'s samples on
+/// interior/caustic2). The same values.
+#[inline(always)]
+fn fresh_colour(c: &crate::color::Rgbft) -> crate::color::Rgbft {
+    // SAFETY: reads of initialised fields through a reference.
+    unsafe {
+        crate::color::Rgbft {
+            rgb: crate::math::by_coordinates(&c.rgb),
+            filter: std::ptr::read_volatile(&c.filter),
+            transmit: std::ptr::read_volatile(&c.transmit),
+        }
+    }
 }
