@@ -239,6 +239,11 @@ impl Julia {
         }
     }
 
+    /// A hypercomplex set whose orbit iterates the square (sqr, and cube: module doc).
+    fn squares(&self) -> bool {
+        self.algebra == Algebra::Hypercomplex && matches!(self.func, JuliaFn::Sqr | JuliaFn::Cube)
+    }
+
     fn mangled(&self) -> bool {
         self.algebra == Algebra::Hypercomplex && self.func.transcendental()
     }
@@ -320,9 +325,7 @@ impl Julia {
                 self.quaternion_orbit::<true, DE>(h)
             }
             Algebra::Quaternion => self.quaternion_orbit::<false, DE>(h),
-            Algebra::Hypercomplex if matches!(self.func, JuliaFn::Sqr | JuliaFn::Cube) => {
-                self.hypercomplex_orbit::<true, DE>(h)
-            }
+            Algebra::Hypercomplex if self.squares() => self.hypercomplex_orbit::<true, DE>(h),
             Algebra::Hypercomplex => self.hypercomplex_orbit::<false, DE>(h),
         }
     }
@@ -495,10 +498,12 @@ impl Julia {
         // After a least step the next one is likely least too (the march is near the
         // surface), so the samples after this one are taken with it (`orbit_n`) and kept for
         // when the march arrives there: `t + min_step` is what `t += step` then gives. Three
-        // ahead where four quaternion orbits take one AVX register per component (about the
-        // instructions of two), else one (three measured the same as one in time when the
-        // lanes were SSE2 pairs: fractal1 170.9/169.7 ms against 170.1/169.1).
-        let wide = self.algebra == Algebra::Quaternion && crate::math::has_avx();
+        // ahead where four quaternion (or hypercomplex sqr) orbits take one AVX register per
+        // component (about the instructions of two), else one (three measured the same as
+        // one in time when the lanes were SSE2 pairs: fractal1 170.9/169.7 ms against
+        // 170.1/169.1).
+        let wide =
+            (self.algebra == Algebra::Quaternion || self.squares()) && crate::math::has_avx();
         let mut ahead = [(0.0f64, Orbit::Inside); AHEAD];
         // `ahead[next..n_ahead]` are the samples still to come, in order.
         let (mut next, mut n_ahead) = (0, 0);
