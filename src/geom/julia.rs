@@ -218,6 +218,10 @@ impl Julia {
             Algebra::Quaternion => {
                 inner_radius(bailout, qnorm(&param), func == JuliaFn::Cube, max_iteration)
             }
+            Algebra::Hypercomplex if matches!(func, JuliaFn::Sqr | JuliaFn::Cube) => {
+                let (c1, c2) = split(&param);
+                hyper_inner_radius(bailout, c1.norm(), c2.norm(), max_iteration)
+            }
             Algebra::Hypercomplex => bailout,
         };
         Julia {
@@ -733,7 +737,7 @@ mod pair;
 
 #[path = "julia_radii.rs"]
 mod radii;
-use radii::{inner_radius, keep_radii, sqrt_threshold};
+use radii::{hyper_inner_radius, inner_radius, keep_radii, sqrt_threshold};
 
 #[cfg(target_arch = "x86_64")]
 #[path = "julia_avx.rs"]
