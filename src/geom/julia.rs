@@ -218,6 +218,10 @@ impl Julia {
             Algebra::Quaternion => {
                 inner_radius(bailout, qnorm(&param), func == JuliaFn::Cube, max_iteration)
             }
+            Algebra::Hypercomplex if matches!(func, JuliaFn::Sqr | JuliaFn::Cube) => {
+                let (c1, c2) = split(&param);
+                hyper_inner_radius(bailout, c1.norm(), c2.norm(), max_iteration)
+            }
             Algebra::Hypercomplex => bailout,
         };
         Julia {
@@ -237,6 +241,11 @@ impl Julia {
                 && slice.1.to_bits() == 0,
             inner,
         }
+    }
+
+    /// A hypercomplex set whose orbit iterates the square (sqr, and cube: module doc).
+    fn squares(&self) -> bool {
+        self.algebra == Algebra::Hypercomplex && matches!(self.func, JuliaFn::Sqr | JuliaFn::Cube)
     }
 
     fn mangled(&self) -> bool {
@@ -320,9 +329,7 @@ impl Julia {
                 self.quaternion_orbit::<true, DE>(h)
             }
             Algebra::Quaternion => self.quaternion_orbit::<false, DE>(h),
-            Algebra::Hypercomplex if matches!(self.func, JuliaFn::Sqr | JuliaFn::Cube) => {
-                self.hypercomplex_orbit::<true, DE>(h)
-            }
+            Algebra::Hypercomplex if self.squares() => self.hypercomplex_orbit::<true, DE>(h),
             Algebra::Hypercomplex => self.hypercomplex_orbit::<false, DE>(h),
         }
     }
@@ -495,10 +502,12 @@ impl Julia {
         // After a least step the next one is likely least too (the march is near the
         // surface), so the samples after this one are taken with it (`orbit_n`) and kept for
         // when the march arrives there: `t + min_step` is what `t += step` then gives. Three
-        // ahead where four quaternion orbits take one AVX register per component (about the
-        // instructions of two), else one (three measured the same as one in time when the
-        // lanes were SSE2 pairs: fractal1 170.9/169.7 ms against 170.1/169.1).
-        let wide = self.algebra == Algebra::Quaternion && crate::math::has_avx();
+        // ahead where four quaternion (or hypercomplex sqr) orbits take one AVX register per
+        // component (about the instructions of two), else one (three measured the same as
+        // one in time when the lanes were SSE2 pairs: fractal1 170.9/169.7 ms against
+        // 170.1/169.1).
+        let wide =
+            (self.algebra == Algebra::Quaternion || self.squares()) && crate::math::has_avx();
         let mut ahead = [(0.0f64, Orbit::Inside); AHEAD];
         // `ahead[next..n_ahead]` are the samples still to come, in order.
         let (mut next, mut n_ahead) = (0, 0);
@@ -728,7 +737,7 @@ mod pair;
 
 #[path = "julia_radii.rs"]
 mod radii;
-use radii::{inner_radius, keep_radii, sqrt_threshold};
+use radii::{hyper_inner_radius, inner_radius, keep_radii, sqrt_threshold};
 
 #[cfg(target_arch = "x86_64")]
 #[path = "julia_avx.rs"]

@@ -1,5 +1,6 @@
 //! Four quaternion orbits in 256-bit AVX registers, written with the intrinsics: the julia
-//! bisection's four midpoints (`inside4`) and the march's samples ahead (`orbits4`).
+//! bisection's four midpoints (`inside4`) and the march's samples ahead (`orbits4`); the
+//! same for hypercomplex sqr and cube (`hyper_inside4`, `hyper_orbits4`).
 //!
 //! The generic lane code (`julia_pair.rs`) compiled with AVX enabled still used 128-bit
 //! registers, two per lane vector, plus shuffles between their halves (objdump of main's
@@ -205,6 +206,113 @@ pub(super) unsafe fn orbits4<const CUBE: bool>(j: &Julia, h: [Q; 4]) -> (u32, [f
     (out, fr, fdr)
 }
 
+/// Four hypercomplex orbits' halves (z1, z2 of `split`): real and imaginary parts of each,
+/// lane `l` holding point `l`.
+#[inline(always)]
+unsafe fn hyper_halves(h: &Q4) -> Q4 {
+    [
+        sub(h[0], h[3]),
+        add(h[1], h[2]),
+        add(h[0], h[3]),
+        sub(h[1], h[2]),
+    ]
+}
+
+/// One hypercomplex sqr step of both halves, `z * z + c` with num_complex's association
+/// (re·re − im·im, re·im + im·re: the two products of the imaginary part are one rounded
+/// number), and the step's `0.5 * (|z1|² + |z2|²)`.
+#[inline(always)]
+unsafe fn hyper_step(z: &Q4, c: &Q4, half: __m256d) -> (Q4, __m256d) {
+    let [ar, ai, br, bi] = *z;
+    let (p, q) = (mul(ar, ai), mul(br, bi));
+    let z = [
+        add(sub(mul(ar, ar), mul(ai, ai)), c[0]),
+        add(add(p, p), c[1]),
+        add(sub(mul(br, br), mul(bi, bi)), c[2]),
+        add(add(q, q), c[3]),
+    ];
+    let n1 = add(mul(z[0], z[0]), mul(z[1], z[1]));
+    let n2 = add(mul(z[2], z[2]), mul(z[3], z[3]));
+    (z, mul(half, add(n1, n2)))
+}
+
+/// The parameter's halves, each part in all four lanes.
+#[inline(always)]
+unsafe fn hyper_param(j: &Julia) -> Q4 {
+    let (c1, c2) = super::split(&j.param);
+    [c1.re, c1.im, c2.re, c2.im].map(|x| _mm256_set1_pd(x))
+}
+
+/// `hypercomplex_orbit::<true, false>` of four points (sqr, and cube, which iterates the
+/// square), as inside-ness. A NaN orbit never escapes, as there.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[target_feature(enable = "avx")]
+pub(super) unsafe fn hyper_inside4(j: &Julia, h: [Q; 4]) -> [bool; 4] {
+    let steps = j.max_iteration.saturating_sub(1);
+    let bail_sq = _mm256_set1_pd(j.bail_sq);
+    let h = lanes(&h);
+    let mut out = _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_GT_OQ>(norm_sq(&h), bail_sq)) as u32;
+    if out != 15 {
+        let c = hyper_param(j);
+        let half = _mm256_set1_pd(0.5);
+        let mut z = hyper_halves(&h);
+        for _ in 0..steps {
+            let s;
+            (z, s) = hyper_step(&z, &c, half);
+            out |= _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_GT_OQ>(s, bail_sq)) as u32;
+            if out == 15 {
+                break;
+            }
+        }
+    }
+    std::array::from_fn(|i| out >> i & 1 == 0)
+}
+
+/// `hypercomplex_orbit::<true, true>` of four points (`Julia::orbit_n`), as `orbits4`: lane
+/// bits of the escapes, and per lane the `r` and `dr` of its escape.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[target_feature(enable = "avx")]
+pub(super) unsafe fn hyper_orbits4(j: &Julia, h: [Q; 4]) -> (u32, [f64; 4], [f64; 4]) {
+    let steps = j.max_iteration.saturating_sub(1);
+    let bail_sq = _mm256_set1_pd(j.bail_sq);
+    let h = lanes(&h);
+    let s = norm_sq(&h);
+    let mut r = _mm256_sqrt_pd(s);
+    let mut dr = _mm256_set1_pd(1.0);
+    let mut out = _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_GT_OQ>(s, bail_sq)) as u32;
+    let (mut found_r, mut found_dr) = (r, dr);
+    if out != 15 {
+        let c = hyper_param(j);
+        let (half, two) = (_mm256_set1_pd(0.5), _mm256_set1_pd(2.0));
+        let mut z = hyper_halves(&h);
+        for _ in 0..steps {
+            let s;
+            (z, s) = hyper_step(&z, &c, half);
+            dr = mul(dr, mul(two, r));
+            r = _mm256_sqrt_pd(s);
+            let esc = _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_GT_OQ>(s, bail_sq)) as u32;
+            let new = esc & !out;
+            if new != 0 {
+                let mask = lane_mask(new);
+                found_r = _mm256_blendv_pd(found_r, r, mask);
+                found_dr = _mm256_blendv_pd(found_dr, dr, mask);
+                out |= new;
+                if out == 15 {
+                    break;
+                }
+            }
+        }
+    }
+    let (mut fr, mut fdr) = ([0.0; 4], [0.0; 4]);
+    _mm256_storeu_pd(fr.as_mut_ptr(), found_r);
+    _mm256_storeu_pd(fdr.as_mut_ptr(), found_dr);
+    (out, fr, fdr)
+}
+
 /// A set sign bit in the lanes whose bit is set (for `blendv`, which reads only the sign).
 #[inline(always)]
 unsafe fn lane_mask(bits: u32) -> __m256d {
@@ -266,4 +374,94 @@ pub(super) unsafe fn tangents<const CUBE: bool>(
         h,
         std::array::from_fn(|i| std::array::from_fn(|k| out[k][i])),
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::tests::julia;
+    use super::super::{Algebra, JuliaFn, Orbit};
+    use super::*;
+
+    /// `hyper_inside4` and `hyper_orbits4` give each lane the scalar hypercomplex orbit's
+    /// answer, `r` and `dr` to the bit: points on the surface (bisected along the line to the
+    /// origin), beside it and far out, and lifted points of edge values (signed zeros,
+    /// subnormals, overflowing squares, infinities, NaN), each beside three others.
+    #[test]
+    fn hypercomplex_lanes_are_the_scalar_orbit() {
+        if !crate::math::has_avx() {
+            return;
+        }
+        let mut rng = crate::geom::test_rng::Lcg(41);
+        let edge = [
+            0.0,
+            -0.0,
+            1e-310,
+            -1.0,
+            0.5,
+            2.0,
+            1e160,
+            -1e300,
+            f64::INFINITY,
+            f64::NAN,
+        ];
+        let key = |o: Orbit| match o {
+            Orbit::Inside => None,
+            Orbit::Outside { r, dr } => {
+                let b = |x: f64| if x.is_nan() { 1 } else { x.to_bits() };
+                Some((b(r), b(dr)))
+            }
+        };
+        for (c, func, n) in [
+            ([-0.745, 0.0, 0.113, 0.05], JuliaFn::Sqr, 9),
+            ([0.2, 0.1, 0.59, -0.2], JuliaFn::Sqr, 7),
+            ([0.4, 0.2, 0.1, 0.0], JuliaFn::Cube, 6),
+            ([-0.5, 0.5, 0.0, 0.1], JuliaFn::Sqr, 1),
+            ([0.0; 4], JuliaFn::Sqr, 30),
+        ] {
+            let j = julia(c, Algebra::Hypercomplex, func, n, 20.0);
+            let mut points: Vec<Q> = Vec::new();
+            let mut inside = 0;
+            for i in 0..40_000 {
+                let mut p = rng.vec(if i % 3 == 0 { 4.5 } else { 2.0 });
+                if i % 3 == 1 {
+                    let (mut lo, mut hi) = (0.0, 1.0);
+                    for _ in 0..40 {
+                        let m = 0.5 * (lo + hi);
+                        if j.is_in(p * m) {
+                            lo = m;
+                        } else {
+                            hi = m;
+                        }
+                    }
+                    p *= if i % 2 == 0 { lo } else { hi };
+                }
+                points.push(j.lift(p).0);
+            }
+            for k in 0..edge.len().pow(4) {
+                points.push(std::array::from_fn(|i| {
+                    edge[(k / edge.len().pow(i as u32)) % edge.len()]
+                }));
+            }
+            for (i, four) in points.chunks_exact(4).enumerate() {
+                // Rotate the lanes so an edge point sits beside ordinary ones too.
+                let h: [Q; 4] = std::array::from_fn(|l| four[(l + i) % 4]);
+                // SAFETY: the CPU has AVX (checked above).
+                let (ins, (out, r, dr)) = unsafe { (hyper_inside4(&j, h), hyper_orbits4(&j, h)) };
+                for l in 0..4 {
+                    let lone = j.hypercomplex_orbit::<true, true>(h[l]);
+                    let want_in =
+                        matches!(j.hypercomplex_orbit::<true, false>(h[l]), Orbit::Inside);
+                    assert_eq!(ins[l], want_in, "{c:?} at {:?}", h[l]);
+                    let got = if out >> l & 1 == 1 {
+                        Orbit::Outside { r: r[l], dr: dr[l] }
+                    } else {
+                        Orbit::Inside
+                    };
+                    assert_eq!(key(got), key(lone), "{c:?} at {:?}", h[l]);
+                    inside += want_in as usize;
+                }
+            }
+            assert!(inside > 1000, "{c:?}: {inside}");
+        }
+    }
 }

@@ -59,7 +59,7 @@ fn plain_crossings(j: &Julia, o: DVec3, u: DVec3, tmin: f64) -> Vec<f64> {
 /// `intersect_all`, `intersect_first` and `any_hit` against the plain march, on rays from
 /// afar and on rays leaving points of the surface (shadow and reflected rays, whose crossing
 /// at their start the bisection turns away early), for quaternion sets of the sample scenes,
-/// a sliced one and one whose inner radius is the bailout.
+/// a sliced one, one whose inner radius is the bailout, and hypercomplex sqr and cube sets.
 #[test]
 fn march_short_cuts_answer_as_the_plain_march() {
     let mut rng = crate::geom::test_rng::Lcg(41);
@@ -86,6 +86,20 @@ fn march_short_cuts_answer_as_the_plain_march() {
             Algebra::Quaternion,
             JuliaFn::Sqr,
             5,
+            20.0,
+        ),
+        julia(
+            [-0.745, 0.0, 0.113, 0.05],
+            Algebra::Hypercomplex,
+            JuliaFn::Sqr,
+            9,
+            20.0,
+        ),
+        julia(
+            [0.4, 0.2, 0.1, 0.0],
+            Algebra::Hypercomplex,
+            JuliaFn::Cube,
+            6,
             20.0,
         ),
     ];
@@ -140,17 +154,28 @@ fn march_short_cuts_answer_as_the_plain_march() {
     assert!(hits > 500 && surface > 500, "{hits} {surface}");
 }
 
-/// No point beyond the inner radius is inside: points of the surface and just beyond it.
+/// No point beyond the inner radius is inside: points of the surface and just beyond it, for
+/// quaternion and hypercomplex sets (the latter's radius below the bailout, asserted).
 #[test]
 fn inner_radius_holds_the_set() {
+    use Algebra::{Hypercomplex as H, Quaternion as Q};
     let mut rng = crate::geom::test_rng::Lcg(43);
-    for (c, func, n) in [
-        ([-0.083, 0.0, -0.83, -0.025], JuliaFn::Sqr, 8),
-        ([-0.03, 0.5, -0.2, -0.5], JuliaFn::Cube, 8),
-        (FRACTAL3, JuliaFn::Sqr, 7),
-        ([0.0; 4], JuliaFn::Sqr, 12),
+    for (c, algebra, func, n) in [
+        ([-0.083, 0.0, -0.83, -0.025], Q, JuliaFn::Sqr, 8),
+        ([-0.03, 0.5, -0.2, -0.5], Q, JuliaFn::Cube, 8),
+        (FRACTAL3, Q, JuliaFn::Sqr, 7),
+        ([0.0; 4], Q, JuliaFn::Sqr, 12),
+        ([-0.745, 0.0, 0.113, 0.05], H, JuliaFn::Sqr, 9),
+        ([0.2, 0.1, 0.59, -0.2], H, JuliaFn::Sqr, 7),
+        ([0.4, 0.2, 0.1, 0.0], H, JuliaFn::Cube, 6),
+        ([0.0; 4], H, JuliaFn::Sqr, 2),
+        ([0.0; 4], H, JuliaFn::Sqr, 12),
+        ([-1.2, 0.3, 0.6, -0.4], H, JuliaFn::Sqr, 4),
     ] {
-        let j = julia(c, Algebra::Quaternion, func, n, 20.0);
+        let j = julia(c, algebra, func, n, 20.0);
+        if algebra == H {
+            assert!(j.inner < j.bailout, "{c:?}: {}", j.inner);
+        }
         for _ in 0..20_000 {
             let dir = rng.vec(2.0).normalize();
             // A point of the surface along the direction, where one lies inside at `lo`.

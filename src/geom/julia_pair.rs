@@ -7,8 +7,9 @@
 //! products and sums, no fused multiply-add, no reassociation), so each lane's answer is the
 //! lone orbit's to the bit. The lanes run in lockstep until all have decided; a lane that has
 //! decided goes on iterating unread (an escaped one may overflow, harmlessly). Where the CPU
-//! has AVX, quaternion orbits of up to four lanes go to `julia_avx.rs` instead (the same
-//! operations, one 256-bit register per component); the code here serves the rest.
+//! has AVX, quaternion orbits of up to four lanes, and four hypercomplex sqr or cube ones, go
+//! to `julia_avx.rs` instead (the same operations, one 256-bit register per component); the
+//! code here serves the rest.
 
 #[cfg(target_arch = "x86_64")]
 use super::avx;
@@ -83,6 +84,18 @@ fn bits<const N: usize>(b: [bool; N]) -> u32 {
         .fold(0, |m, (i, &x)| m | (x as u32) << i)
 }
 
+/// The first `N` lanes of an AVX orbit function's answer (escape bits, `r`, `dr`).
+#[inline(always)]
+fn lane_orbits<const N: usize>(out: u32, r: [f64; 4], dr: [f64; 4]) -> [Orbit; N] {
+    std::array::from_fn(|i| {
+        if out >> i & 1 == 1 {
+            Orbit::Outside { r: r[i], dr: dr[i] }
+        } else {
+            Orbit::Inside
+        }
+    })
+}
+
 impl Julia {
     /// `p.map(|p| self.is_in(p))`, the orbits run side by side where they are quaternion
     /// ones.
@@ -98,6 +111,13 @@ impl Julia {
                     avx::inside4::<false>(self, h)
                 }
             };
+            return std::array::from_fn(|i| ins[i]);
+        }
+        #[cfg(target_arch = "x86_64")]
+        if N == 4 && self.squares() && has_avx() {
+            let h: [Q; 4] = std::array::from_fn(|i| self.lift(p[i]).0);
+            // SAFETY: the CPU has AVX (checked just above).
+            let ins = unsafe { avx::hyper_inside4(self, h) };
             return std::array::from_fn(|i| ins[i]);
         }
         match self.algebra {
@@ -124,13 +144,14 @@ impl Julia {
                     avx::orbits4::<false>(self, h)
                 }
             };
-            return std::array::from_fn(|i| {
-                if out >> i & 1 == 1 {
-                    Orbit::Outside { r: r[i], dr: dr[i] }
-                } else {
-                    Orbit::Inside
-                }
-            });
+            return lane_orbits(out, r, dr);
+        }
+        #[cfg(target_arch = "x86_64")]
+        if (1..=4).contains(&N) && self.squares() && has_avx() {
+            let h: [Q; 4] = std::array::from_fn(|i| self.lift(p[i.min(N - 1)]).0);
+            // SAFETY: the CPU has AVX (checked just above).
+            let (out, r, dr) = unsafe { avx::hyper_orbits4(self, h) };
+            return lane_orbits(out, r, dr);
         }
         match self.algebra {
             super::Algebra::Quaternion if self.func == JuliaFn::Cube => {

@@ -1,6 +1,7 @@
 //! The radii a quaternion julia set is bounded by, for `Julia::new`: those under which an orbit
 //! is sure to stay inside for its last iterations (`keep_radii`), the ball every inside point
-//! lies in (`inner_radius`), and the squared norms their comparisons take (`sqrt_threshold`).
+//! lies in (`inner_radius`; `hyper_inner_radius` for hypercomplex sqr and cube), and the
+//! squared norms their comparisons take (`sqrt_threshold`).
 
 use super::KEEP;
 
@@ -55,6 +56,39 @@ pub(super) fn inner_radius(bailout: f64, c_norm: f64, cube: bool, max_iteration:
         rho = r;
     }
     rho.min(bailout)
+}
+
+/// `inner_radius` for a hypercomplex set whose orbit iterates the square (sqr and cube), with
+/// parameter halves of norms `c1_norm` and `c2_norm` (`split`).
+///
+/// The halves z1, z2 of h iterate apart, z ← z² + c_k, and |h|² = (|z1|² + |z2|²)/2 (the
+/// orbit compares this `s` with the bailout's square). So |h| > R puts one half beyond R, and
+/// once a half is beyond √2·bailout, `s` is beyond the bailout's square. As for quaternions,
+/// |z² + c| >= |z|² − |c|: a half beyond R_j = (R_{j−1} + |c|)^(1/2) is beyond R_{j−1} one
+/// iterate later, from R_0 = √2·bailout, with the same margins (1e-9 relative a radius, 1e-12
+/// on |c|) over the roundings of the split, the iterations and `s`. Before its escape an orbit
+/// stays within s <= bailout², so nothing overflows. Each R_j is a radius beyond which the
+/// orbit escapes within j iterations; the least of those within `max_iteration − 1` and the
+/// bailout (an escape before any iteration) is returned.
+pub(super) fn hyper_inner_radius(
+    bailout: f64,
+    c1_norm: f64,
+    c2_norm: f64,
+    max_iteration: u32,
+) -> f64 {
+    let c = c1_norm.max(c2_norm) * (1.0 + 1e-12);
+    let mut rho = 2f64.sqrt() * bailout * (1.0 + 1e-9);
+    let mut least = bailout;
+    for _ in 1..max_iteration {
+        let r = ((rho + c) * (1.0 + 1e-9)).sqrt() * (1.0 + 1e-9);
+        // From here on the radii would grow, or are NaN.
+        if r >= rho || r.is_nan() {
+            break;
+        }
+        rho = r;
+        least = least.min(rho);
+    }
+    least
 }
 
 /// The largest non-negative `s` with `s.sqrt() <= b`, found on the bit patterns (ordered as
