@@ -23,10 +23,26 @@ const FAR: f64 = 2e10;
 
 /// `seen` along `ray` up to distance `t` (in units of the ray's direction; infinite for the
 /// background), after every fog layer.
+///
+/// Inlined, with the colour handed on as four numbers: `Seen` by value went through a copy the
+/// caller made with 16-byte loads, and the one of (rgb.z, clear) straddled the two 8-byte
+/// stores that `shade` or the background had just made, a store-forwarding stall on every
+/// fogged ray (half of `trace_seen`'s samples on fog_f). Scalars are loaded one by one.
+#[inline(always)]
 pub fn apply(fogs: &[FogDesc], ray: &Ray, t: f64, seen: Seen) -> Seen {
+    apply_parts(fogs, ray, t, seen.rgb.x, seen.rgb.y, seen.rgb.z, seen.clear)
+}
+
+/// `apply` of the colour (r, g, b) with clearness `clear`.
+#[inline(never)]
+fn apply_parts(fogs: &[FogDesc], ray: &Ray, t: f64, r: f64, g: f64, b: f64, clear: f64) -> Seen {
     let len = ray.dir.length();
     let d = if t.is_finite() { t * len } else { FAR };
-    let dir = ray.dir / len;
+    // The unit direction only for the fogs that ask for it (rainbows, ground fog,
+    // turbulence): a plain fog needs the length alone, and the three divisions were made for
+    // every fogged ray. The same quotients whenever they are made.
+    let mut unit = None;
+    let mut dir = || *unit.get_or_insert_with(|| ray.dir / len);
     let mut added = DVec3::ZERO;
     // The rainbows' jitter depends on the direction only: hashed once per ray, by the first
     // rainbow with jitter (rainbow1's two rainbows hashed it twice).
@@ -35,16 +51,17 @@ pub fn apply(fogs: &[FogDesc], ray: &Ray, t: f64, seen: Seen) -> Seen {
     // `seen` (passed and returned through memory), z's 8-byte store was read back at once by
     // the 16-byte copy of (z, clear) into the result, a store-forwarding stall (~20 % of
     // this function's time on nufog2).
-    let (mut rgb, mut clear) = (seen.rgb, seen.clear);
+    let (mut rgb, mut clear) = (DVec3::new(r, g, b), clear);
     for f in fogs {
         let color = match &f.rainbow {
-            Some(rb) => match rainbow_color(rb, dir, &mut jitter) {
+            Some(rb) => match rainbow_color(rb, dir(), &mut jitter) {
                 Some(c) => c,
                 None => continue,
             },
             None => f.color,
         };
-        let optical = stirred(f, ray.origin, dir, d, depth_along(f, ray.origin, dir, d));
+        let optical = depth_along(f, ray.origin, &mut dir, d);
+        let optical = stirred(f, ray.origin, &mut dir, d, optical);
         let a = fade(-optical / f.distance).max(color.transmit);
         let fc = color.rgb;
         let mut filter = DVec3::splat(1.0 - color.filter) + fc * color.filter;
@@ -72,9 +89,9 @@ pub fn kept(fogs: &[FogDesc], ray: &Ray, d: f64) -> f64 {
             let optical = stirred(
                 f,
                 ray.origin,
-                ray.dir,
+                || ray.dir,
                 d,
-                depth_along(f, ray.origin, ray.dir, d),
+                depth_along(f, ray.origin, || ray.dir, d),
             );
             fade(-optical / f.distance).max(f.color.transmit)
         })
@@ -94,11 +111,12 @@ fn fade(x: f64) -> f64 {
 
 /// The fog a ray `d` long meets, before turbulence: its length, or for ground fog its
 /// length times the mean density. Inlined: called, it read `dir`'s (y, z) as 16 bytes that
-/// `apply` had just stored as (x, y) and z, a store-forwarding stall (nufog2).
+/// `apply` had just stored as (x, y) and z, a store-forwarding stall (nufog2). `dir` gives the
+/// ray's unit direction, asked only for ground fog.
 #[inline(always)]
-fn depth_along(f: &FogDesc, origin: DVec3, dir: DVec3, d: f64) -> f64 {
+fn depth_along(f: &FogDesc, origin: DVec3, dir: impl FnOnce() -> DVec3, d: f64) -> f64 {
     if f.ground {
-        ground_depth(f, origin, dir, d)
+        ground_depth(f, origin, dir(), d)
     } else {
         d
     }
@@ -116,11 +134,14 @@ fn depth_along(f: &FogDesc, origin: DVec3, dir: DVec3, d: f64) -> f64 {
 /// rounded product is too, and 1 minus a number that small rounds to 1 (a sky plane 10000
 /// away under a fog of distance 50: exp(−200)). An infinite reach fails the test and takes
 /// the full formula; a NaN bound leaves reach 1, which still bounds min(NaN·…, 1) = 1.
-fn stirred(f: &FogDesc, origin: DVec3, dir: DVec3, d: f64, optical: f64) -> f64 {
+///
+/// `dir` gives the ray's unit direction, asked only where the fog has turbulence.
+#[inline(always)]
+fn stirred(f: &FogDesc, origin: DVec3, dir: impl FnOnce() -> DVec3, d: f64, optical: f64) -> f64 {
     let Some(tb) = f.turbulence.as_deref().filter(|t| t.on) else {
         return optical;
     };
-    stir(tb, f.distance, origin, dir, d, optical)
+    stir(tb, f.distance, origin, dir(), d, optical)
 }
 
 /// `stirred` of a fog with turbulence. Out of line: inlined into `apply`, its midpoint's
@@ -306,7 +327,7 @@ mod tests {
                 let d = 10f64.powf(n as f64 / 600.0);
                 let optical = d * 0.37;
                 let full = stirred_in_full(&f, origin, dir, d, optical);
-                let got = stirred(&f, origin, dir, d, optical);
+                let got = stirred(&f, origin, || dir, d, optical);
                 assert_eq!(
                     got.to_bits(),
                     full.to_bits(),
