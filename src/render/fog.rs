@@ -168,11 +168,29 @@ const NEGLIGIBLE: f64 = 1.0 / (1u64 << 55) as f64;
 /// Out of line: inlined into `apply`, its jitter's hash of the direction was hoisted above the
 /// loop over the fogs and computed for every fogged ray, rainbow or not (radiosity_37: ~80
 /// instructions of each of its 127 k fogged rays).
+///
+/// Rays whose cosine to the rainbow's direction lies outside `cos_band` are certainly outside
+/// its band, jitter included, and get None without the `acos` (most of rainbow1's rays).
 #[inline(never)]
 fn rainbow_color(rb: &RainbowDesc, dir: DVec3, jitter: &mut Option<f64>) -> Option<Rgbft> {
+    let c = dir.dot(rb.direction).clamp(-1.0, 1.0);
+    let (c_hi, c_lo) = rb.cos_band();
+    if c < c_hi || c > c_lo {
+        return None;
+    }
+    rainbow_color_at(rb, c, dir, jitter)
+}
+
+/// `rainbow_color` for a ray whose cosine to the direction is `c`, without the band test.
+fn rainbow_color_at(
+    rb: &RainbowDesc,
+    c: f64,
+    dir: DVec3,
+    jitter: &mut Option<f64>,
+) -> Option<Rgbft> {
     // Unit, and `up` perpendicular to it, since the scene was built.
     let d = rb.direction;
-    let angle = dir.dot(d).clamp(-1.0, 1.0).acos().to_degrees();
+    let angle = c.acos().to_degrees();
     let mut index = (angle - (rb.angle - rb.width * 0.5)) / rb.width.max(1e-12);
     if rb.jitter != 0.0 {
         index += rb.jitter * (*jitter.get_or_insert_with(|| jitter_noise(dir)) - 0.5);
@@ -339,6 +357,91 @@ mod tests {
         }
         // The shortcut is taken for a good share of the rays.
         assert!(skipped > 3_000, "{skipped}");
+    }
+
+    /// `rainbow_color`'s band test never changes an answer: against `rainbow_color_at` (the
+    /// `acos` for every ray) bit for bit, for rainbows with odd angles, widths and jitters
+    /// (zero, negative, huge, NaN, infinite), arcs, and rays spread over the sphere and
+    /// packed close to each band edge.
+    #[test]
+    fn rainbow_band_test_is_the_full_colour() {
+        let map = vec![
+            (0.0, Rgbft::new(1.0, 0.5, 1.0, 1.0, 0.0)),
+            (0.45, Rgbft::new(0.2, 1.0, 0.2, 0.8, 0.1)),
+            (0.9, Rgbft::new(1.0, 0.2, 0.2, 1.0, 0.0)),
+        ];
+        let bits = |c: Option<Rgbft>| {
+            c.map(|c| [c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit].map(f64::to_bits))
+        };
+        let angles = [
+            42.5,
+            37.0,
+            0.0,
+            2.0,
+            90.0,
+            178.0,
+            180.0,
+            200.0,
+            -5.0,
+            f64::NAN,
+            1e200,
+        ];
+        let widths = [5.0, 0.0, 1e-12, 40.0, -3.0, 400.0, f64::NAN, f64::INFINITY];
+        let jitters = [0.0, 0.01, 1.0, 50.0, -0.3, f64::NAN, f64::INFINITY];
+        let (mut skipped, mut shown) = (0, 0);
+        for (k, &angle) in angles.iter().enumerate() {
+            for &width in &widths {
+                for &jitter in &jitters {
+                    let direction = DVec3::new(-0.2, -0.2, 1.0).normalize();
+                    let up = (DVec3::Y - direction * DVec3::Y.dot(direction)).normalize();
+                    let rb = RainbowDesc {
+                        direction,
+                        angle,
+                        width,
+                        up,
+                        arc_angle: if k % 2 == 0 { 360.0 } else { 200.0 },
+                        falloff_angle: 120.0,
+                        jitter,
+                        color_map: map.clone(),
+                        ..RainbowDesc::default()
+                    };
+                    // Angles to the direction: spread, and within 1e-6 degree of each edge.
+                    let mut thetas: Vec<f64> = (0..400).map(|n| n as f64 * 0.45).collect();
+                    let (w, s) = (width.max(1e-12), angle - width * 0.5);
+                    for edge in [
+                        s,
+                        s + w,
+                        s - w * jitter.abs() * 0.5,
+                        s + w + w * jitter.abs() * 0.5,
+                    ] {
+                        for n in -50..=50 {
+                            thetas.push(edge + n as f64 * 2e-8);
+                        }
+                    }
+                    let side = direction.cross(up);
+                    for (n, th) in thetas.into_iter().enumerate() {
+                        let (th, phi) = (th.to_radians(), n as f64 * 0.37);
+                        let dir =
+                            direction * th.cos() + (up * phi.cos() + side * phi.sin()) * th.sin();
+                        let c = dir.dot(rb.direction).clamp(-1.0, 1.0);
+                        let want = rainbow_color_at(&rb, c, dir, &mut None);
+                        let got = rainbow_color(&rb, dir, &mut None);
+                        assert_eq!(
+                            bits(got),
+                            bits(want),
+                            "angle {angle} width {width} jitter {jitter} theta {th}"
+                        );
+                        let (c_hi, c_lo) = rb.cos_band();
+                        if c < c_hi || c > c_lo {
+                            skipped += 1;
+                        }
+                        shown += usize::from(want.is_some());
+                    }
+                }
+            }
+        }
+        // Both the shortcut and the colour are exercised.
+        assert!(skipped > 50_000 && shown > 10_000, "{skipped} {shown}");
     }
 
     /// `ground_depth` with its remembered starting integral against the formula in full, for
