@@ -23,10 +23,26 @@ const FAR: f64 = 2e10;
 
 /// `seen` along `ray` up to distance `t` (in units of the ray's direction; infinite for the
 /// background), after every fog layer.
+///
+/// Inlined, with the colour handed on as four numbers: `Seen` by value went through a copy the
+/// caller made with 16-byte loads, and the one of (rgb.z, clear) straddled the two 8-byte
+/// stores that `shade` or the background had just made, a store-forwarding stall on every
+/// fogged ray (half of `trace_seen`'s samples on fog_f). Scalars are loaded one by one.
+#[inline(always)]
 pub fn apply(fogs: &[FogDesc], ray: &Ray, t: f64, seen: Seen) -> Seen {
+    apply_parts(fogs, ray, t, seen.rgb.x, seen.rgb.y, seen.rgb.z, seen.clear)
+}
+
+/// `apply` of the colour (r, g, b) with clearness `clear`.
+#[inline(never)]
+fn apply_parts(fogs: &[FogDesc], ray: &Ray, t: f64, r: f64, g: f64, b: f64, clear: f64) -> Seen {
     let len = ray.dir.length();
     let d = if t.is_finite() { t * len } else { FAR };
-    let dir = ray.dir / len;
+    // The unit direction only for the fogs that ask for it (rainbows, ground fog,
+    // turbulence): a plain fog needs the length alone, and the three divisions were made for
+    // every fogged ray. The same quotients whenever they are made.
+    let mut unit = None;
+    let mut dir = || *unit.get_or_insert_with(|| ray.dir / len);
     let mut added = DVec3::ZERO;
     // The rainbows' jitter depends on the direction only: hashed once per ray, by the first
     // rainbow with jitter (rainbow1's two rainbows hashed it twice).
@@ -35,16 +51,17 @@ pub fn apply(fogs: &[FogDesc], ray: &Ray, t: f64, seen: Seen) -> Seen {
     // `seen` (passed and returned through memory), z's 8-byte store was read back at once by
     // the 16-byte copy of (z, clear) into the result, a store-forwarding stall (~20 % of
     // this function's time on nufog2).
-    let (mut rgb, mut clear) = (seen.rgb, seen.clear);
+    let (mut rgb, mut clear) = (DVec3::new(r, g, b), clear);
     for f in fogs {
         let color = match &f.rainbow {
-            Some(rb) => match rainbow_color(rb, dir, &mut jitter) {
+            Some(rb) => match rainbow_color(rb, dir(), &mut jitter) {
                 Some(c) => c,
                 None => continue,
             },
             None => f.color,
         };
-        let optical = stirred(f, ray.origin, dir, d, depth_along(f, ray.origin, dir, d));
+        let optical = depth_along(f, ray.origin, &mut dir, d);
+        let optical = stirred(f, ray.origin, &mut dir, d, optical);
         let a = fade(-optical / f.distance).max(color.transmit);
         let fc = color.rgb;
         let mut filter = DVec3::splat(1.0 - color.filter) + fc * color.filter;
@@ -72,9 +89,9 @@ pub fn kept(fogs: &[FogDesc], ray: &Ray, d: f64) -> f64 {
             let optical = stirred(
                 f,
                 ray.origin,
-                ray.dir,
+                || ray.dir,
                 d,
-                depth_along(f, ray.origin, ray.dir, d),
+                depth_along(f, ray.origin, || ray.dir, d),
             );
             fade(-optical / f.distance).max(f.color.transmit)
         })
@@ -94,11 +111,12 @@ fn fade(x: f64) -> f64 {
 
 /// The fog a ray `d` long meets, before turbulence: its length, or for ground fog its
 /// length times the mean density. Inlined: called, it read `dir`'s (y, z) as 16 bytes that
-/// `apply` had just stored as (x, y) and z, a store-forwarding stall (nufog2).
+/// `apply` had just stored as (x, y) and z, a store-forwarding stall (nufog2). `dir` gives the
+/// ray's unit direction, asked only for ground fog.
 #[inline(always)]
-fn depth_along(f: &FogDesc, origin: DVec3, dir: DVec3, d: f64) -> f64 {
+fn depth_along(f: &FogDesc, origin: DVec3, dir: impl FnOnce() -> DVec3, d: f64) -> f64 {
     if f.ground {
-        ground_depth(f, origin, dir, d)
+        ground_depth(f, origin, dir(), d)
     } else {
         d
     }
@@ -116,11 +134,14 @@ fn depth_along(f: &FogDesc, origin: DVec3, dir: DVec3, d: f64) -> f64 {
 /// rounded product is too, and 1 minus a number that small rounds to 1 (a sky plane 10000
 /// away under a fog of distance 50: exp(−200)). An infinite reach fails the test and takes
 /// the full formula; a NaN bound leaves reach 1, which still bounds min(NaN·…, 1) = 1.
-fn stirred(f: &FogDesc, origin: DVec3, dir: DVec3, d: f64, optical: f64) -> f64 {
+///
+/// `dir` gives the ray's unit direction, asked only where the fog has turbulence.
+#[inline(always)]
+fn stirred(f: &FogDesc, origin: DVec3, dir: impl FnOnce() -> DVec3, d: f64, optical: f64) -> f64 {
     let Some(tb) = f.turbulence.as_deref().filter(|t| t.on) else {
         return optical;
     };
-    stir(tb, f.distance, origin, dir, d, optical)
+    stir(tb, f.distance, origin, dir(), d, optical)
 }
 
 /// `stirred` of a fog with turbulence. Out of line: inlined into `apply`, its midpoint's
@@ -147,11 +168,29 @@ const NEGLIGIBLE: f64 = 1.0 / (1u64 << 55) as f64;
 /// Out of line: inlined into `apply`, its jitter's hash of the direction was hoisted above the
 /// loop over the fogs and computed for every fogged ray, rainbow or not (radiosity_37: ~80
 /// instructions of each of its 127 k fogged rays).
+///
+/// Rays whose cosine to the rainbow's direction lies outside `cos_band` are certainly outside
+/// its band, jitter included, and get None without the `acos` (most of rainbow1's rays).
 #[inline(never)]
 fn rainbow_color(rb: &RainbowDesc, dir: DVec3, jitter: &mut Option<f64>) -> Option<Rgbft> {
+    let c = dir.dot(rb.direction).clamp(-1.0, 1.0);
+    let (c_hi, c_lo) = rb.cos_band();
+    if c < c_hi || c > c_lo {
+        return None;
+    }
+    rainbow_color_at(rb, c, dir, jitter)
+}
+
+/// `rainbow_color` for a ray whose cosine to the direction is `c`, without the band test.
+fn rainbow_color_at(
+    rb: &RainbowDesc,
+    c: f64,
+    dir: DVec3,
+    jitter: &mut Option<f64>,
+) -> Option<Rgbft> {
     // Unit, and `up` perpendicular to it, since the scene was built.
     let d = rb.direction;
-    let angle = dir.dot(d).clamp(-1.0, 1.0).acos().to_degrees();
+    let angle = c.acos().to_degrees();
     let mut index = (angle - (rb.angle - rb.width * 0.5)) / rb.width.max(1e-12);
     if rb.jitter != 0.0 {
         index += rb.jitter * (*jitter.get_or_insert_with(|| jitter_noise(dir)) - 0.5);
@@ -306,7 +345,7 @@ mod tests {
                 let d = 10f64.powf(n as f64 / 600.0);
                 let optical = d * 0.37;
                 let full = stirred_in_full(&f, origin, dir, d, optical);
-                let got = stirred(&f, origin, dir, d, optical);
+                let got = stirred(&f, origin, || dir, d, optical);
                 assert_eq!(
                     got.to_bits(),
                     full.to_bits(),
@@ -318,6 +357,91 @@ mod tests {
         }
         // The shortcut is taken for a good share of the rays.
         assert!(skipped > 3_000, "{skipped}");
+    }
+
+    /// `rainbow_color`'s band test never changes an answer: against `rainbow_color_at` (the
+    /// `acos` for every ray) bit for bit, for rainbows with odd angles, widths and jitters
+    /// (zero, negative, huge, NaN, infinite), arcs, and rays spread over the sphere and
+    /// packed close to each band edge.
+    #[test]
+    fn rainbow_band_test_is_the_full_colour() {
+        let map = vec![
+            (0.0, Rgbft::new(1.0, 0.5, 1.0, 1.0, 0.0)),
+            (0.45, Rgbft::new(0.2, 1.0, 0.2, 0.8, 0.1)),
+            (0.9, Rgbft::new(1.0, 0.2, 0.2, 1.0, 0.0)),
+        ];
+        let bits = |c: Option<Rgbft>| {
+            c.map(|c| [c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit].map(f64::to_bits))
+        };
+        let angles = [
+            42.5,
+            37.0,
+            0.0,
+            2.0,
+            90.0,
+            178.0,
+            180.0,
+            200.0,
+            -5.0,
+            f64::NAN,
+            1e200,
+        ];
+        let widths = [5.0, 0.0, 1e-12, 40.0, -3.0, 400.0, f64::NAN, f64::INFINITY];
+        let jitters = [0.0, 0.01, 1.0, 50.0, -0.3, f64::NAN, f64::INFINITY];
+        let (mut skipped, mut shown) = (0, 0);
+        for (k, &angle) in angles.iter().enumerate() {
+            for &width in &widths {
+                for &jitter in &jitters {
+                    let direction = DVec3::new(-0.2, -0.2, 1.0).normalize();
+                    let up = (DVec3::Y - direction * DVec3::Y.dot(direction)).normalize();
+                    let rb = RainbowDesc {
+                        direction,
+                        angle,
+                        width,
+                        up,
+                        arc_angle: if k % 2 == 0 { 360.0 } else { 200.0 },
+                        falloff_angle: 120.0,
+                        jitter,
+                        color_map: map.clone(),
+                        ..RainbowDesc::default()
+                    };
+                    // Angles to the direction: spread, and within 1e-6 degree of each edge.
+                    let mut thetas: Vec<f64> = (0..400).map(|n| n as f64 * 0.45).collect();
+                    let (w, s) = (width.max(1e-12), angle - width * 0.5);
+                    for edge in [
+                        s,
+                        s + w,
+                        s - w * jitter.abs() * 0.5,
+                        s + w + w * jitter.abs() * 0.5,
+                    ] {
+                        for n in -50..=50 {
+                            thetas.push(edge + n as f64 * 2e-8);
+                        }
+                    }
+                    let side = direction.cross(up);
+                    for (n, th) in thetas.into_iter().enumerate() {
+                        let (th, phi) = (th.to_radians(), n as f64 * 0.37);
+                        let dir =
+                            direction * th.cos() + (up * phi.cos() + side * phi.sin()) * th.sin();
+                        let c = dir.dot(rb.direction).clamp(-1.0, 1.0);
+                        let want = rainbow_color_at(&rb, c, dir, &mut None);
+                        let got = rainbow_color(&rb, dir, &mut None);
+                        assert_eq!(
+                            bits(got),
+                            bits(want),
+                            "angle {angle} width {width} jitter {jitter} theta {th}"
+                        );
+                        let (c_hi, c_lo) = rb.cos_band();
+                        if c < c_hi || c > c_lo {
+                            skipped += 1;
+                        }
+                        shown += usize::from(want.is_some());
+                    }
+                }
+            }
+        }
+        // Both the shortcut and the colour are exercised.
+        assert!(skipped > 50_000 && shown > 10_000, "{skipped} {shown}");
     }
 
     /// `ground_depth` with its remembered starting integral against the formula in full, for

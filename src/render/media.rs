@@ -244,6 +244,10 @@ impl<'a> Tracer<'a> {
         // step is the mean of its three samples, or, where neighbouring samples' light
         // (summed over the channels) times L differs by more than aa_threshold, the mean of
         // its two halves sampled likewise.
+        // The scatter list is taken from `ctx` once per stretch, not once per sample (a
+        // take and a put back of three words around every sample). A nested stretch (none
+        // today: shadow rays ask `transmittance`) would find an empty list and grow its own.
+        let mut scatter = std::mem::take(&mut ctx.media_scatter);
         for w in cuts.windows(2).filter(|w| w[1] > w[0]) {
             let span = (w[1] - w[0]) / intervals as f64;
             let h = span / (n + 1) as f64;
@@ -266,7 +270,6 @@ impl<'a> Tracer<'a> {
                 // The first scattering media stays out of the list (most samples meet one):
                 // no copy of its settings per sample.
                 let mut first: Option<(DVec3, &Scattering)> = None;
-                let mut scatter = std::mem::take(&mut ctx.media_scatter);
                 scatter.clear();
                 for m in media.iter().flat_map(|l| l.iter()) {
                     let rho = density(m, p);
@@ -289,7 +292,6 @@ impl<'a> Tracer<'a> {
                 if let Some(first) = first {
                     glow += self.in_scattered(first, &scatter, &piece, p, dir, ctx);
                 }
-                ctx.media_scatter = scatter;
                 Sample::new(sigma, glow)
             };
             for i in 0..intervals {
@@ -320,6 +322,7 @@ impl<'a> Tracer<'a> {
                 }
             }
         }
+        ctx.media_scatter = scatter;
         ctx.media_cuts = cuts;
         ctx.media_lights = lights;
         ctx.media_piece = piece;
