@@ -6,9 +6,8 @@
 //! POV-Ray; `clipped_by` gives them bounds.
 
 use crate::geom::poly::{
-    first_root_in, first_root_in_unchecked, low_roots_in, roots_in, roots_in_window,
-    sturm_first_root_in, sturm_roots_in, sturm_roots_in_window, surely_definite_quartic,
-    MAX_DEGREE,
+    first_root_before, low_roots_in, roots_in, roots_in_window, sturm_first_root_in,
+    sturm_roots_in, sturm_roots_in_window, surely_definite_quartic, Candidate, MAX_DEGREE,
 };
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
@@ -250,6 +249,26 @@ impl Algebraic {
             && surely_definite_quartic(c.first_chunk::<5>().expect("a quartic"), lo, hi)
     }
 
+    /// `intersect_first`'s walk over `c` (orders 3 and up, not `sturm`) on `[EPSILON·len,
+    /// hi]`, stopped unpolished at a piece starting at or past `tmax` (`first_root_before`:
+    /// every crossing the walk could still give there is at or past `tmax`, which the
+    /// callers drop, and it is kept, `tmax` being above `EPSILON` where any is below it).
+    #[inline(always)]
+    fn first_walk(
+        &self,
+        c: &[f64; MAX_ORDER + 1],
+        hi: f64,
+        len: f64,
+        tmax: f64,
+        take: impl FnMut(Candidate) -> Option<f64>,
+    ) -> Option<f64> {
+        // A quartic that `surely_misses` could not settle seldom passes `surely_no_root`
+        // either (hyptorus: never in 9,797 rays), which the walk would otherwise ask first.
+        let c = &c[..=self.order];
+        let shortcut = !(self.order == 4 && c[4] != 0.0);
+        first_root_before(c, EPSILON * len, hi, shortcut, |a| a / len >= tmax, take)
+    }
+
     /// The polynomial along `origin + t·dir` (ascending coefficients in t).
     fn along(&self, origin: DVec3, dir: DVec3, out: &mut [f64; MAX_ORDER + 1]) {
         // The table of powers is zeroed on every ray: 7 KB at the largest order, most of the
@@ -416,15 +435,45 @@ impl Shape for Algebraic {
                 .filter(|&t| t < tmax)
                 .map(Hit::new);
         }
-        // A quartic that `surely_misses` could not settle seldom passes `surely_no_root`
-        // either (hyptorus: never in 9,797 rays), which `first_root_in` would ask first.
-        let c = &c[..=self.order];
-        let first = if self.order == 4 && c[4] != 0.0 {
-            first_root_in_unchecked(c, EPSILON * len, hi, keep)
-        } else {
-            first_root_in(c, EPSILON * len, hi, keep)
+        self.first_walk(&c, hi, len, tmax, |cand| {
+            let x = cand.root();
+            keep(x).then_some(x)
+        })
+        .map(|x| x / len)
+        .filter(|&t| t < tmax)
+        .map(Hit::new)
+    }
+
+    /// `intersect_first(..).is_some()`, a root's polish left out where its bracket settles
+    /// the answer: a bracket `[a, b]` with `a / len > EPSILON` holds the walk's first kept
+    /// root (the quotient rounds monotonically, and the root lies in its bracket), whose `t`
+    /// is then below `b / len`; below `tmax` when that is.
+    fn any_hit(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> bool {
+        if self.order <= 2 || self.sturm {
+            return self.intersect_first(ray, tmax, scratch).is_some();
+        }
+        let mut c = [0.0; MAX_ORDER + 1];
+        let Some((hi, len)) = self.along_ray(ray, &mut c) else {
+            return false;
         };
-        first.map(|x| x / len).filter(|&t| t < tmax).map(Hit::new)
+        if self.surely_misses(&c, EPSILON * len, hi) {
+            return false;
+        }
+        let mut hit = false;
+        self.first_walk(&c, hi, len, tmax, |cand| {
+            if cand.a / len > EPSILON && cand.b / len < tmax {
+                hit = true;
+                return Some(cand.a);
+            }
+            let x = cand.root();
+            let t = x / len;
+            if t > EPSILON {
+                hit = t < tmax;
+                return Some(x);
+            }
+            None
+        });
+        hit
     }
 
     fn windowed(&self) -> bool {

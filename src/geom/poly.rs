@@ -325,7 +325,7 @@ pub fn first_root_with(
     hi: f64,
     take: impl FnMut(Candidate) -> Option<f64>,
 ) -> Option<f64> {
-    first_root_checked(c, lo, hi, true, take)
+    first_root_checked(c, lo, hi, true, |_| false, take)
 }
 
 /// [`first_root_in`] without its [`surely_no_root`] shortcut, for a caller whose own
@@ -338,10 +338,17 @@ pub fn first_root_in_unchecked(
     hi: f64,
     mut keep: impl FnMut(f64) -> bool,
 ) -> Option<f64> {
-    first_root_checked(c, lo, hi, false, |cand| {
-        let x = cand.root();
-        keep(x).then_some(x)
-    })
+    first_root_checked(
+        c,
+        lo,
+        hi,
+        false,
+        |_| false,
+        |cand| {
+            let x = cand.root();
+            keep(x).then_some(x)
+        },
+    )
 }
 
 /// [`first_root_with`] without its [`surely_no_root`] shortcut, for a caller that has just
@@ -352,24 +359,51 @@ pub fn first_root_with_unchecked(
     hi: f64,
     take: impl FnMut(Candidate) -> Option<f64>,
 ) -> Option<f64> {
-    first_root_checked(c, lo, hi, false, take)
+    first_root_checked(c, lo, hi, false, |_| false, take)
 }
 
-/// [`first_root_with`], the [`surely_no_root`] shortcut asked when `shortcut`.
+/// [`first_root_with`] (its [`surely_no_root`] shortcut asked when `shortcut`) for a caller
+/// whose answer for a root at or past a point where `past` holds is the answer for no root
+/// (a ray's crossings at or past its `tmax`), `past` holding at every point above one where
+/// it holds: the walk gives `None` at the first piece whose start `past` holds, before it
+/// polishes the critical point ending that piece, since every root still to come lies at or
+/// past that start. Below that piece the walk and its candidates are [`first_root_with`]'s.
+#[inline(always)]
+pub fn first_root_before(
+    c: &[f64],
+    lo: f64,
+    hi: f64,
+    shortcut: bool,
+    past: impl Fn(f64) -> bool,
+    take: impl FnMut(Candidate) -> Option<f64>,
+) -> Option<f64> {
+    first_root_checked(c, lo, hi, shortcut, past, take)
+}
+
+/// [`first_root_with`], the [`surely_no_root`] shortcut asked when `shortcut`, stopped where
+/// `past` holds (see [`first_root_before`]).
 #[inline(always)]
 fn first_root_checked(
     c: &[f64],
     lo: f64,
     hi: f64,
     shortcut: bool,
+    past: impl Fn(f64) -> bool,
     take: impl FnMut(Candidate) -> Option<f64>,
 ) -> Option<f64> {
     let c = trim(c)?;
     // As in `polish`: a quartic's walk (a torus's) compiled with the length known, so its
     // evaluations are unrolled: the same operations in the same order.
     match c.len() {
-        5 => first_root_body(<&[f64; 5]>::try_from(c).unwrap(), lo, hi, shortcut, take),
-        _ => first_root_body(c, lo, hi, shortcut, take),
+        5 => first_root_body(
+            <&[f64; 5]>::try_from(c).unwrap(),
+            lo,
+            hi,
+            shortcut,
+            past,
+            take,
+        ),
+        _ => first_root_body(c, lo, hi, shortcut, past, take),
     }
 }
 
@@ -379,6 +413,7 @@ fn first_root_body(
     lo: f64,
     hi: f64,
     shortcut: bool,
+    past: impl Fn(f64) -> bool,
     mut take: impl FnMut(Candidate) -> Option<f64>,
 ) -> Option<f64> {
     let n = c.len().saturating_sub(1);
@@ -424,6 +459,11 @@ fn first_root_body(
     let (mut last, mut count) = (None, 0);
     let mut k = 0;
     loop {
+        // Every root from here on is at or past `a` (the last piece, `[a, hi]`, is asked
+        // here too: the loop leaves below only after this test).
+        if past(a) {
+            return None;
+        }
         let b = if k < m {
             let (x0, x1, neg) = cands[k];
             k += 1;

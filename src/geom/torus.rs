@@ -119,7 +119,12 @@ impl Torus {
     /// walk that reaches a bracket starting at or past `tmax`, or an interval starting there,
     /// has nothing below it to find: it stops unpolished (a shadow ray's light, or a nearer
     /// hit, before the torus).
-    fn first_below(&self, ray: &Ray, tmax: f64) -> Option<f64> {
+    ///
+    /// `settle`: a bracket `[a, b]` with `to_t(a) > EPSILON` and `to_t(b) < tmax` is answered
+    /// with `to_t(a)` unpolished, for a caller that asks only whether there is a crossing (it
+    /// holds the walk's first kept root, whose `t` lies in `[to_t(a), to_t(b)]`).
+    #[inline(always)]
+    fn first_below(&self, ray: &Ray, tmax: f64, settle: bool) -> Option<f64> {
         let q = self.setup(ray)?;
         let c = match &q.poly {
             Poly::Quartic(c) if !self.sturm => c,
@@ -136,6 +141,9 @@ impl Torus {
         let s = first_root_with_unchecked(c, 0.0, q.hi, |cand| {
             if q.to_t(cand.a) >= tmax {
                 past = true;
+                return Some(cand.a);
+            }
+            if settle && q.to_t(cand.a) > EPSILON && q.to_t(cand.b) < tmax {
                 return Some(cand.a);
             }
             let s = cand.root();
@@ -313,7 +321,13 @@ impl Shape for Torus {
     }
 
     fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
-        self.first_below(ray, tmax).map(Hit::new)
+        self.first_below(ray, tmax, false).map(Hit::new)
+    }
+
+    /// `intersect_first(..).is_some()`, a root's polish left out where its bracket settles
+    /// the answer (`first_below`'s `settle`): shadow rays.
+    fn any_hit(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> bool {
+        self.first_below(ray, tmax, true).is_some()
     }
 
     /// The crossings `intersect_all` lists, nearest first, to the first kept (`first_kept`):

@@ -260,3 +260,64 @@ fn cauchy_by_one_division_is_per_coefficient() {
         );
     }
 }
+
+/// `intersect_first` before the walk stopped at `tmax`: the walk to the first kept root,
+/// each root polished, that root's `t` kept below `tmax` (the reference).
+fn first_unstopped(a: &Algebraic, ray: &Ray, tmax: f64) -> Option<f64> {
+    let mut c = [0.0; MAX_ORDER + 1];
+    let (hi, len) = a.along_ray(ray, &mut c)?;
+    if a.surely_misses(&c, EPSILON * len, hi) {
+        return None;
+    }
+    let keep = |x: f64| x / len > EPSILON;
+    let c = &c[..=a.order];
+    let first = if a.order == 4 && c[4] != 0.0 {
+        crate::geom::poly::first_root_in_unchecked(c, EPSILON * len, hi, keep)
+    } else {
+        crate::geom::poly::first_root_in(c, EPSILON * len, hi, keep)
+    };
+    first.map(|x| x / len).filter(|&t| t < tmax)
+}
+
+/// The walk stopped at a piece starting at or past `tmax`, and `any_hit`'s brackets that
+/// settle its answer unpolished, give the answers of the full walk: random cubics, quartics
+/// and quintics (some sparse), rays from near and far with directions of any length, and
+/// `tmax` anywhere, at every crossing, a hair either side of it, zero, tiny and infinite.
+#[test]
+fn stopped_walks_answer_as_the_full_walk() {
+    let mut unit = crate::math::xorshift_unit(0x2545_f491_4f6c_dd1du64);
+    let mut rnd = move || unit() * 8.0 - 4.0;
+    let (mut hits, mut cases) = (0, 0);
+    for order in [3usize, 4, 5] {
+        for case in 0..600 {
+            let a = random_poly(order, case % 3 == 1, &mut rnd);
+            let far = if case % 2 == 0 { 1.0 } else { 6.0 };
+            let origin = DVec3::new(rnd(), rnd(), rnd()) * far;
+            let scale = [1.0, 0.25, 3.0][case % 3];
+            let dir = DVec3::new(rnd(), rnd(), rnd()) * scale;
+            let ray = Ray::new(origin, dir);
+            let mut all = Vec::new();
+            a.intersect_all(&ray, &mut all);
+            let mut tmaxes = vec![0.0, 1e-9, EPSILON, 0.5, 2.0, 40.0, f64::INFINITY];
+            for h in &all {
+                let t = h.t;
+                tmaxes.extend([t, t.next_up(), t.next_down(), t * 1.01, t * 0.99]);
+            }
+            tmaxes.push(rnd().abs() * 10.0);
+            let mut scratch = Vec::new();
+            for &tmax in &tmaxes {
+                cases += 1;
+                let want = first_unstopped(&a, &ray, tmax);
+                let got = a.intersect_first(&ray, tmax, &mut scratch).map(|h| h.t);
+                assert_eq!(
+                    got.map(f64::to_bits),
+                    want.map(f64::to_bits),
+                    "{a:?} {ray:?} {tmax}"
+                );
+                assert_eq!(a.any_hit(&ray, tmax, &mut scratch), want.is_some());
+                hits += want.is_some() as usize;
+            }
+        }
+    }
+    assert!(hits > 2_000 && cases > 20_000, "{hits} of {cases}");
+}

@@ -474,3 +474,47 @@ fn silhouettes_match_reference_400() {
     eprintln!("total {total:?}");
     assert_eq!(total[2..], [0; 4]);
 }
+
+/// `any_hit`, whose brackets may settle the answer unpolished, answers as
+/// `intersect_first(..).is_some()` (every root polished): rays aimed at the ring or anywhere,
+/// `tmax` at every crossing, a hair either side, between, and infinite.
+#[test]
+fn any_hit_is_intersect_first() {
+    let mut rng = crate::geom::test_rng::Lcg(77);
+    let shapes = [
+        Torus::new(1.0, 0.25, false),
+        Torus::new(0.3, 0.6, false),
+        Torus::new(0.0, 0.5, false),
+        Torus::new(1.0, 0.25, true),
+        Torus::new(2.0, 1e-3, false),
+    ];
+    let (mut hits, mut total) = (0, 0);
+    for s in &shapes {
+        for _ in 0..3000 {
+            let origin = rng.vec(6.0);
+            let aim = if rng.next() < 0.7 {
+                let a = rng.next() * std::f64::consts::TAU;
+                DVec3::new(a.cos() * s.major, 0.0, a.sin() * s.major) + rng.vec(3.0 * s.minor)
+            } else {
+                rng.vec(4.0)
+            };
+            let ray = Ray::new(origin, (aim - origin) * (0.2 + rng.next()));
+            let listed = all(s, &ray);
+            let mut tmaxes = vec![0.0, EPSILON, 0.5, f64::INFINITY, rng.next() * 3.0];
+            for &t in &listed {
+                tmaxes.extend([t, t.next_up(), t.next_down(), t * 1.001, t * 0.999]);
+            }
+            for &tmax in &tmaxes {
+                total += 1;
+                let want = s.intersect_first(&ray, tmax, &mut Vec::new()).is_some();
+                assert_eq!(
+                    s.any_hit(&ray, tmax, &mut Vec::new()),
+                    want,
+                    "{s:?} {ray:?} {tmax}"
+                );
+                hits += want as usize;
+            }
+        }
+    }
+    assert!(hits > 10_000 && total > 50_000, "{hits} of {total}");
+}
