@@ -10,6 +10,9 @@
 use crate::geom::spline2d::{hull_on, inside_even_odd, sign_changes_until, Piece, SplineKind, P2};
 use crate::geom::{Hit, Shape};
 use crate::math::{Aabb, DVec3, Ray, EPSILON};
+use window::{Keep, Window};
+
+mod window;
 
 const CAP_LOW: u32 = u32::MAX - 1;
 const CAP_HIGH: u32 = u32::MAX;
@@ -249,17 +252,8 @@ impl Prism {
         let mut along: Option<([f64; 4], f64)> = None;
         let settle = |a: f64, b: f64| -> Option<()> {
             let k = keep?;
-            let (n, m) = *along.get_or_insert_with(|| {
-                let mut n: [f64; 4] = std::array::from_fn(|j| pc.x[j] * d.x + pc.y[j] * d.z);
-                n[0] -= o.x * d.x + o.z * d.z;
-                let size = (pc.hi[0] - pc.lo[0]).max(pc.hi[1] - pc.lo[1]);
-                let far = |i: usize| pc.lo[i].abs().max(pc.hi[i].abs()) + size;
-                let mag = (far(0) + o.x.abs()) * d.x.abs() + (far(1) + o.z.abs()) * d.z.abs();
-                (n, 1e-9 * mag)
-            });
-            let (lo, hi) = hull_on(&n, a, b);
-            let floor = (lo - (m + 1e-9 * lo.abs())) * k.inv_dd;
-            let ceil = (hi + (m + 1e-9 * hi.abs())) * k.inv_dd;
+            let (n, m) = *along.get_or_insert_with(|| Self::along(pc, o, d));
+            let (floor, ceil) = Self::bracket_t_range(&n, m, a, b, k.inv_dd);
             (ceil < k.lo || floor > k.hi || floor >= k.before).then_some(())
         };
         sign_changes_until(&c, 0.0, 1.0, g0, g1, settle, |r| {
@@ -267,6 +261,126 @@ impl Prism {
                 hit(s, pc.at(s))
             }
         });
+    }
+
+    /// The numerator of `wall_t`'s linear `t` along piece `pc` (a cubic in its parameter),
+    /// and a margin far above its rounding and the curve's (as in `wall_t_range`).
+    #[inline(always)]
+    fn along(pc: &Piece, o: DVec3, d: DVec3) -> ([f64; 4], f64) {
+        let mut n: [f64; 4] = std::array::from_fn(|j| pc.x[j] * d.x + pc.y[j] * d.z);
+        n[0] -= o.x * d.x + o.z * d.z;
+        let size = (pc.hi[0] - pc.lo[0]).max(pc.hi[1] - pc.lo[1]);
+        let far = |i: usize| pc.lo[i].abs().max(pc.hi[i].abs()) + size;
+        let mag = (far(0) + o.x.abs()) * d.x.abs() + (far(1) + o.z.abs()) * d.z.abs();
+        (n, 1e-9 * mag)
+    }
+
+    /// Bounds of the `t` `wall_t` can give a crossing whose parameter lies in `[a, b]`
+    /// (linear sweep), from `along`'s numerator and margin: its hull there widened by the
+    /// margin and by far more than the hull's rounding and the product by `inv_dd`'s.
+    #[inline(always)]
+    fn bracket_t_range(n: &[f64; 4], m: f64, a: f64, b: f64, inv_dd: f64) -> (f64, f64) {
+        let (lo, hi) = hull_on(n, a, b);
+        (
+            (lo - (m + 1e-9 * lo.abs())) * inv_dd,
+            (hi + (m + 1e-9 * hi.abs())) * inv_dd,
+        )
+    }
+
+    /// Whether piece `i` holds a wall crossing `first_linear` would offer before `tmax`
+    /// (linear sweep; `keep` as `first_linear` makes it before it has a best). A bracket
+    /// whose `t` bounds lie wholly within `sure` (the `t` whose heights `in_heights` surely
+    /// accepts), above `EPSILON` and below `tmax` holds such a crossing whatever its last
+    /// bits: its refinement stops there.
+    fn piece_crossed(
+        &self,
+        ray: &Ray,
+        plane: (f64, f64, f64),
+        i: usize,
+        keep: Keep,
+        sure: (f64, f64),
+    ) -> bool {
+        let pc = &self.pieces[i];
+        let tmax = keep.before;
+        let mut found = false;
+        if pc.is_linear() {
+            self.piece_hits(ray, plane, i, Some(keep), |h| found |= h.t < tmax);
+            return found;
+        }
+        let (o, d) = (ray.origin, ray.dir);
+        let (nx, c0, nz) = plane;
+        let g = |q: P2| nx * q[0] + nz * q[1] + c0;
+        let (g0, g1) = (g(pc.p0), g(pc.p1));
+        let mut c: [f64; 4] = std::array::from_fn(|j| nx * pc.x[j] + nz * pc.y[j]);
+        c[0] += c0;
+        let mut along: Option<([f64; 4], f64)> = None;
+        let settle = |a: f64, b: f64| -> Option<bool> {
+            let (n, m) = *along.get_or_insert_with(|| Self::along(pc, o, d));
+            let (floor, ceil) = Self::bracket_t_range(&n, m, a, b, keep.inv_dd);
+            if ceil < keep.lo || floor > keep.hi || floor >= keep.before {
+                Some(false)
+            } else if floor > EPSILON && floor >= sure.0 && ceil <= sure.1 && ceil < tmax {
+                Some(true)
+            } else {
+                None
+            }
+        };
+        sign_changes_until(&c, 0.0, 1.0, g0, g1, settle, |r| {
+            found |= match r {
+                Ok(s) => self.wall_t(o, d, pc.at(s)).is_some_and(|t| t < tmax),
+                Err(kept) => kept,
+            }
+        });
+        found
+    }
+
+    /// `any_hit` of a linear sweep: whether `first_linear` finds a crossing. Its candidate
+    /// pieces are asked in their order and the first crossing ends the search; the caps
+    /// (their even-odd tests) are asked only when no wall is crossed.
+    fn any_linear(&self, ray: &Ray, tmax: f64) -> bool {
+        let (o, d) = (ray.origin, ray.dir);
+        let inv_dd = Self::inv_dd(d);
+        let ((y_lo, y_hi), sure) = self.height_t_ranges(o, d);
+        if let Some(plane) = self.cut_plane(ray) {
+            let (nx, c0, nz) = plane;
+            let g = |q: P2| nx * q[0] + nz * q[1] + c0;
+            let keep = Keep {
+                lo: y_lo,
+                hi: y_hi,
+                before: tmax,
+                inv_dd,
+            };
+            for (i, pc) in self.pieces.iter().enumerate() {
+                if Self::may_cut(pc, g) {
+                    let (floor, ceil) = Self::wall_t_range(pc, o, d, inv_dd);
+                    // `first_linear`'s candidates (NaN floors kept).
+                    if floor > y_hi || ceil < y_lo || !(floor < tmax || floor.is_nan()) {
+                        continue;
+                    }
+                    if self.piece_crossed(ray, plane, i, keep, sure) {
+                        return true;
+                    }
+                }
+            }
+        }
+        // `first_linear` offers a cap only for `t < tmax`: none for a NaN `tmax`.
+        !tmax.is_nan() && self.cap_before(ray, tmax)
+    }
+
+    /// Whether a closed prism's cap is crossed at a `t` with `EPSILON < t` and not
+    /// `t >= tmax` (as a conic sweep's `intersect_first` skips caps: a NaN `tmax` skips none).
+    fn cap_before(&self, ray: &Ray, tmax: f64) -> bool {
+        let (o, d) = (ray.origin, ray.dir);
+        if self.open || d.y == 0.0 {
+            return false;
+        }
+        self.h.iter().any(|&h| {
+            let t = (h - o.y) / d.y;
+            if t.is_nan() || t <= EPSILON || t >= tmax {
+                return false;
+            }
+            self.on_cap(o + d * t, h)
+        })
     }
 
     fn walls(&self, ray: &Ray, out: &mut Vec<Hit>) {
@@ -375,18 +489,27 @@ impl Prism {
     /// that sum and the divisions here. Everything when the ray is level and within the
     /// heights, nothing (an empty range) when it is level outside them.
     fn height_t_range(&self, o: DVec3, d: DVec3) -> (f64, f64) {
+        self.height_t_ranges(o, d).0
+    }
+
+    /// `height_t_range`, and the range narrowed by the same margin: within it `in_heights`
+    /// surely accepts `o.y + t d.y` (empty when the margins overlap).
+    #[inline(always)]
+    fn height_t_ranges(&self, o: DVec3, d: DVec3) -> ((f64, f64), (f64, f64)) {
         if d.y == 0.0 {
-            return if self.in_heights(o.y) {
+            let r = if self.in_heights(o.y) {
                 (f64::NEG_INFINITY, f64::INFINITY)
             } else {
                 (f64::INFINITY, f64::NEG_INFINITY)
             };
+            return (r, r);
         }
         let ta = (self.h[0] - o.y) / d.y;
         let tb = (self.h[1] - o.y) / d.y;
         let margin = 1e-9
             * (ta.abs() + tb.abs() + (o.y.abs() + self.h[0].abs() + self.h[1].abs()) / d.y.abs());
-        (ta.min(tb) - margin, ta.max(tb) + margin)
+        let (lo, hi) = (ta.min(tb), ta.max(tb));
+        ((lo - margin, hi + margin), (lo + margin, hi - margin))
     }
 
     /// `intersect_first` of a linear sweep: the same crossing the default (every crossing,
@@ -502,73 +625,6 @@ impl Prism {
     }
 }
 
-/// The `t` a linear sweep's wall crossing must have for the caller: within `[lo, hi]` and
-/// below `before`; `inv_dd` as in `Prism::wall_t_range`.
-#[derive(Clone, Copy)]
-struct Keep {
-    lo: f64,
-    hi: f64,
-    before: f64,
-    inv_dd: f64,
-}
-
-/// Which outline pieces can hold a wall crossing that `wall_t` keeps (within the heights),
-/// for one ray: a cheap test before the crossings are solved and refined.
-enum Window {
-    All,
-    /// Linear sweep: the piece's range of `t` (`Prism::wall_t_range`) must meet the
-    /// heights' (`Prism::height_t_range`).
-    Linear {
-        o: DVec3,
-        d: DVec3,
-        inv_dd: f64,
-        y_lo: f64,
-        y_hi: f64,
-    },
-    /// Conic sweep: the piece's box must meet the box of the ray's stretch between the
-    /// heights projected onto the outline's plane (widened for rounding).
-    Conic {
-        lo: P2,
-        hi: P2,
-    },
-}
-
-impl Window {
-    /// The crossings a linear sweep keeps: those within the heights.
-    fn keep(&self) -> Option<Keep> {
-        match *self {
-            Window::Linear {
-                inv_dd, y_lo, y_hi, ..
-            } => Some(Keep {
-                lo: y_lo,
-                hi: y_hi,
-                before: f64::INFINITY,
-                inv_dd,
-            }),
-            _ => None,
-        }
-    }
-
-    fn may_hold(&self, pc: &Piece) -> bool {
-        match *self {
-            Window::All => true,
-            Window::Linear {
-                o,
-                d,
-                inv_dd,
-                y_lo,
-                y_hi,
-            } => {
-                let (floor, ceil) = Prism::wall_t_range(pc, o, d, inv_dd);
-                !(floor > y_hi || ceil < y_lo)
-            }
-            Window::Conic { lo, hi } => {
-                !(pc.hi[0] < lo[0] || pc.lo[0] > hi[0] || pc.hi[1] < lo[1] || pc.lo[1] > hi[1])
-            }
-        }
-    }
-}
-
 impl Shape for Prism {
     fn bounds(&self) -> Aabb {
         if self.pieces.is_empty() {
@@ -632,11 +688,11 @@ impl Shape for Prism {
     /// Whether `intersect_first` finds a crossing. A conic sweep's `intersect_first` solves
     /// every piece the window lets through before it picks the nearest; a shadow ray stops
     /// at the first piece with a wall crossing before `tmax`, and asks the caps (their
-    /// even-odd tests) only when no wall is crossed. A linear sweep's nearest-first search
-    /// already stops early.
-    fn any_hit(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> bool {
+    /// even-odd tests) only when no wall is crossed. A linear sweep does the same without
+    /// refining a crossing its bounds already show kept (`any_linear`).
+    fn any_hit(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> bool {
         if !self.conic {
-            return self.first_linear(ray, tmax, scratch).is_some();
+            return self.any_linear(ray, tmax);
         }
         let window = self.window(ray);
         if let Some(plane) = self.cut_plane(ray) {
@@ -656,17 +712,7 @@ impl Shape for Prism {
         }
         // No wall crossing: `intersect_first` takes a cap below `tmax` (`t >= tmax` skips it
         // there, NaN `tmax` included).
-        let (o, d) = (ray.origin, ray.dir);
-        if self.open || d.y == 0.0 {
-            return false;
-        }
-        self.h.iter().any(|&h| {
-            let t = (h - o.y) / d.y;
-            if t.is_nan() || t <= EPSILON || t >= tmax {
-                return false;
-            }
-            self.on_cap(o + d * t, h)
-        })
+        self.cap_before(ray, tmax)
     }
 
     fn inside(&self, p: DVec3) -> bool {

@@ -10,7 +10,7 @@
 //! segment gives a cubic in t, solved on the part of the ray within the segment's heights.
 
 use crate::geom::poly::{eval, eval_with_derivative, roots_in};
-use crate::geom::spline2d::{sign_changes, P2};
+use crate::geom::spline2d::{sign_changes_until, P2};
 use crate::geom::{Hit, Shape};
 use crate::math::{by_coordinates, Aabb, DVec3, Ray, EPSILON};
 
@@ -123,10 +123,27 @@ impl Sor {
     }
 
     /// Hands each crossing (`t > EPSILON`) to `found`, segment by segment, then the caps;
-    /// once `found` has said stop (true), no further segment or cap is solved.
-    fn each_hit(&self, ray: &Ray, mut found: impl FnMut(Hit) -> bool) {
+    /// once `found` has said stop (true), no further segment or cap is solved. Before each
+    /// Newton step of a segment's root, `sure(ta, tb)` sees the least and the greatest `t`
+    /// the root can be handed with (the ends of its bracket taken to the ray's `t` by the
+    /// same operations: rounding is monotone, so the root's `t` lies between them); true
+    /// there stops as `found` would have, without the root's last bits. Says whether it
+    /// stopped.
+    ///
+    /// With `rev` the segments are taken from the last to the first (the order along a
+    /// descending ray). `skip(t)` is asked of each segment the stretch meets, before its
+    /// expansion, with a `t` no crossing of the segment can be handed below (its stretch's
+    /// near end taken to the ray's `t` by `found`'s operations); true passes the segment by.
+    fn each_hit(
+        &self,
+        ray: &Ray,
+        rev: bool,
+        mut skip: impl FnMut(f64) -> bool,
+        mut sure: impl FnMut(f64, f64) -> bool,
+        mut found: impl FnMut(Hit) -> bool,
+    ) -> bool {
         let Some([ylo, yhi]) = self.heights() else {
-            return;
+            return false;
         };
         // Each coordinate by its own 8-byte load: the caller's local ray was just stored as an
         // x-y pair and z, which a 16-byte y-z load cannot be forwarded from (small31 saw it
@@ -134,7 +151,7 @@ impl Sor {
         let (dir, origin) = (by_coordinates(&ray.dir), by_coordinates(&ray.origin));
         let len = dir.length();
         if !(len > 0.0 && len.is_finite()) {
-            return;
+            return false;
         }
         let u = dir / len;
         let o = origin / self.scale;
@@ -147,23 +164,23 @@ impl Sor {
         if a > 0.0 {
             let disc = b * b - a * (c - rr);
             if disc < 0.0 {
-                return;
+                return false;
             }
             let h = disc.sqrt();
             lo = lo.max((-b - h) / a - margin);
             hi = hi.min((-b + h) / a + margin);
         } else if c > rr {
-            return;
+            return false;
         }
         if u.y != 0.0 {
             let (t0, t1) = ((ylo - o.y) / u.y, (yhi - o.y) / u.y);
             lo = lo.max(t0.min(t1) - margin);
             hi = hi.min(t0.max(t1) + margin);
         } else if o.y < ylo || o.y > yhi {
-            return;
+            return false;
         }
         if lo.is_nan() || hi.is_nan() || lo > hi {
-            return;
+            return false;
         }
         // Solve from the entry point, so the coefficients do not depend on a far origin.
         let o = o + u * lo;
@@ -181,7 +198,9 @@ impl Sor {
         // divisions that put their ends on the ray.
         let (y_a, y_b) = (o.y, o.y + u.y * span);
         let (y_bot, y_top) = (y_a.min(y_b), y_a.max(y_b));
-        for (j, s) in self.segments.iter().enumerate() {
+        for k in 0..=last {
+            let j = if rev { last - k } else { k };
+            let s = &self.segments[j];
             let (mut t_lo, mut t_hi, mut f_lo, mut f_hi);
             if u.y == 0.0 {
                 let w0 = (o.y - s.y0) / s.dh;
@@ -214,7 +233,7 @@ impl Sor {
             if t_hi > span {
                 (t_hi, f_hi) = (span, f64::NAN);
             }
-            if t_lo > t_hi {
+            if t_lo > t_hi || skip((t_lo + lo) * back) {
                 continue;
             }
             // f(w(t)) − q(t) as a polynomial in t, the height as w = w0 + w1 t: divided and
@@ -243,9 +262,15 @@ impl Sor {
             let f_lo = if f_lo.is_nan() { eval(&p, t_lo) } else { f_lo };
             let f_hi = if f_hi.is_nan() { eval(&p, t_hi) } else { f_hi };
             let mut stop = false;
-            sign_changes(&p, t_lo, t_hi, f_lo, f_hi, |t| stop |= push(t, j as u32));
+            let settle = |ta: f64, tb: f64| sure((ta + lo) * back, (tb + lo) * back).then_some(());
+            sign_changes_until(&p, t_lo, t_hi, f_lo, f_hi, settle, |r| {
+                stop |= match r {
+                    Ok(t) => push(t, j as u32),
+                    Err(()) => true,
+                }
+            });
             if stop {
-                return;
+                return true;
             }
         }
         if !self.open && u.y != 0.0 {
@@ -253,10 +278,11 @@ impl Sor {
             for (y, r2, part) in [(ylo, first.v[0], CAP_LOW), (yhi, end.v[1], CAP_HIGH)] {
                 let t = (y - o.y) / u.y;
                 if t >= 0.0 && q(t) <= r2 && push(t, part) {
-                    return;
+                    return true;
                 }
             }
         }
+        false
     }
 }
 
@@ -270,22 +296,52 @@ impl Shape for Sor {
     }
 
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
-        self.each_hit(ray, |h| {
-            out.push(h);
-            false
-        });
+        self.each_hit(
+            ray,
+            false,
+            |_| false,
+            |_, _| false,
+            |h| {
+                out.push(h);
+                false
+            },
+        );
     }
 
     /// Whether the default `intersect_first` finds a crossing (one listed with
     /// `EPSILON < t < tmax`): a shadow ray stops at the segment holding the first such, where
-    /// the listing solved every segment the ray's stretch meets.
+    /// the listing solved every segment the ray's stretch meets, and a root whose bracket
+    /// already lies within (EPSILON, tmax) is not refined to its last bits.
     fn any_hit(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> bool {
-        let mut any = false;
-        self.each_hit(ray, |h| {
-            any |= h.t < tmax;
-            any
-        });
-        any
+        let sure = |ta: f64, tb: f64| ta > EPSILON && tb < tmax;
+        self.each_hit(ray, false, |_| false, sure, |h| h.t < tmax)
+    }
+
+    /// The default's crossing (the first least `t` with `EPSILON < t < tmax` in
+    /// `intersect_all`'s order: segments by index, each one's crossings by `t`, then the low
+    /// and the high cap), with the segments taken along the ray and those whose crossings
+    /// are all past the best (or not before `tmax`) neither expanded nor solved. A crossing
+    /// replaces the best when its `t` is less, or equal and from an earlier segment (a part
+    /// number less: the caps' come after every segment's).
+    fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
+        let best = std::cell::Cell::new(None::<Hit>);
+        // Past the best, or not before `tmax` (NaN included: the default keeps none then).
+        let before = |t: f64| t.partial_cmp(&tmax) == Some(std::cmp::Ordering::Less);
+        let past = |t: f64| best.get().is_some_and(|b| t > b.t) || !before(t);
+        self.each_hit(
+            ray,
+            ray.dir.y < 0.0,
+            past,
+            |_, _| false,
+            |h| {
+                let better = |b: Hit| h.t < b.t || (h.t == b.t && h.part < b.part);
+                if h.t < tmax && best.get().is_none_or(better) {
+                    best.set(Some(h));
+                }
+                false
+            },
+        );
+        best.get()
     }
 
     fn inside(&self, p: DVec3) -> bool {
@@ -427,5 +483,40 @@ mod tests {
             }
         }
         assert!(seen[0] > 5000 && seen[1] > 5000, "{seen:?}");
+    }
+
+    /// `intersect_first` (segments along the ray, those past the best left unsolved) gives
+    /// the listing's first least crossing to the bit: rising, falling and level rays, from
+    /// outside and from a crossing, `tmax` at, an ulp past and before it, well before, NaN.
+    #[test]
+    fn nearest_is_the_listings() {
+        let mut rng = crate::geom::test_rng::Lcg(31);
+        let mut n_hits = 0;
+        let key = |h: Option<Hit>| h.map(|h| (h.t.to_bits(), h.part));
+        for open in [false, true] {
+            let s = Sor::new(&VASE, open);
+            for k in 0..4000 {
+                let o = DVec3::new(0.0, 0.5, 0.0) + rng.vec(4.0);
+                let mut d = DVec3::new(0.0, 0.5, 0.0) + rng.vec(0.8) - o;
+                if k % 10 == 0 {
+                    d.y = 0.0;
+                }
+                let ray = Ray::new(o, d);
+                let first = crate::geom::test_rng::nearest_of_all(&s, &ray, f64::INFINITY);
+                n_hits += first.is_some() as usize;
+                let near = first.map_or(1.0, |h| h.t);
+                let on = Ray::new(ray.at(near), rng.vec(1.0));
+                let up = f64::from_bits(near.to_bits() + 1);
+                let down = f64::from_bits(near.to_bits() - 1);
+                for r in [ray, on] {
+                    for tmax in [f64::INFINITY, near, up, down, near * 0.5, f64::NAN] {
+                        let want = crate::geom::test_rng::nearest_of_all(&s, &r, tmax);
+                        let got = s.intersect_first(&r, tmax, &mut Vec::new());
+                        assert_eq!(key(got), key(want), "{r:?} {tmax}");
+                    }
+                }
+            }
+        }
+        assert!(n_hits > 3000, "{n_hits}");
     }
 }

@@ -328,12 +328,14 @@ fn nearest_crossing_is_the_defaults() {
                 let key = |h: Option<Hit>| h.map(|h| (h.t.to_bits(), h.part, h.uv[0].to_bits()));
                 assert_eq!(key(got), key(want), "{kind:?} conic {conic} {ray:?}");
                 // The shadow test says whether there is a nearest, also from a crossing
-                // (a ray leaving the surface) and with `tmax` at, just past and before it.
+                // (a ray leaving the surface) and with `tmax` at, an ulp past, an ulp before
+                // and well before it.
                 let from = got.map(|h| Ray::new(ray.at(h.t), target - ray.at(h.t) + o * 0.1));
                 let near = got.map_or(1.0, |h| h.t);
                 let up = f64::from_bits(near.to_bits() + 1);
+                let down = f64::from_bits(near.to_bits() - 1);
                 for r in [Some(ray), from].into_iter().flatten() {
-                    for tmax in [tmax, near, up, near * 0.5, f64::INFINITY, f64::NAN] {
+                    for tmax in [tmax, near, up, down, near * 0.5, f64::INFINITY, f64::NAN] {
                         let first = pr.intersect_first(&r, tmax, &mut Vec::new()).is_some();
                         n_any[first as usize] += 1;
                         assert_eq!(pr.any_hit(&r, tmax, &mut Vec::new()), first, "{r:?} {tmax}");
