@@ -126,7 +126,16 @@ pub fn lex(text: &str, file: u32) -> Result<Vec<Token>, LexError> {
             }
         }
         let start = text.len() - rest.len();
-        let (next, tok) = token(rest, &mut names).ok_or_else(|| {
+        let span = |start: usize, end: usize| Span {
+            file,
+            start: start as u32,
+            end: end as u32,
+        };
+        let before = out.len();
+        let next = token(rest, &mut names, &mut out, |next: &str| {
+            span(start, text.len() - next.len())
+        })
+        .ok_or_else(|| {
             let c = rest.chars().next().unwrap_or('?');
             LexError {
                 message: if c == '"' {
@@ -142,33 +151,16 @@ pub fn lex(text: &str, file: u32) -> Result<Vec<Token>, LexError> {
                 start,
                 end: start + c.len_utf8(),
             }
+        })?
+        .map_err(|message| LexError {
+            message,
+            start,
+            end: start + 1,
         })?;
-        let tok = match tok {
-            Tok::Str(raw) => Tok::Str(
-                unescape(&raw)
-                    .map_err(|m| LexError {
-                        message: m,
-                        start,
-                        end: start + 1,
-                    })?
-                    .into(),
-            ),
-            t => t,
-        };
-        let end = text.len() - next.len();
-        let bulk_kind = match &tok {
-            Tok::Ident(name) => super::bulk::list_kind(name),
+        let bulk_kind = match out.get(before).map(|t| &t.tok) {
+            Some(Tok::Ident(name)) => super::bulk::list_kind(name),
             _ => None,
         };
-        let span = |start: usize, end: usize| Span {
-            file,
-            start: start as u32,
-            end: end as u32,
-        };
-        out.push(Token {
-            tok,
-            span: span(start, end),
-        });
         rest = next;
         if let Some(kind) = bulk_kind {
             let Ok(at_brace) = skip_trivia(rest, text.len()) else {
@@ -195,10 +187,7 @@ pub fn lex(text: &str, file: u32) -> Result<Vec<Token>, LexError> {
 
 /// A number literal at the start of `s` as the lexer reads it, and the text after it.
 pub(super) fn number_value(s: &str) -> Option<(f64, &str)> {
-    match number(s) {
-        Some((rest, Tok::Num(v))) => Some((v, rest)),
-        _ => None,
-    }
+    number(s).map(|(rest, v)| (v, rest))
 }
 
 /// Skips white space and comments; an unclosed block comment is an error at its start.
@@ -242,30 +231,72 @@ fn skip_trivia(mut s: &str, total: usize) -> Result<&str, LexError> {
     }
 }
 
-/// One token at the start of `s` (which starts with no trivia) and the text after it; `None`
-/// when no token starts there. Dispatched on the first byte: every token kind starts with a
-/// byte of its own (a number's `.` is followed by a digit, a symbol's is not), so this is the
-/// longest-match reading the scene language needs, without trying each kind in turn.
+/// Pushes the token at the start of `s` (which starts with no trivia) onto `out` and returns
+/// the text after it; `None` when no token starts there, `Some(Err)` for a string with a bad
+/// escape. Dispatched on the first byte: every token kind starts with a byte of its own (a
+/// number's `.` is followed by a digit, a symbol's is not), so this is the longest-match
+/// reading the scene language needs, without trying each kind in turn. Each arm builds its
+/// token in the push: a `Tok` returned and then moved into the vector was copied through the
+/// stack piece by piece and read back whole, a store-forwarding stall on every token.
 fn token<'s>(
     s: &'s str,
     names: &mut rustc_hash::FxHashMap<&'s str, std::rc::Rc<str>>,
-) -> Option<(&'s str, Tok)> {
+    out: &mut Vec<Token>,
+    span: impl Fn(&str) -> Span,
+) -> Option<Result<&'s str, String>> {
     let b = s.as_bytes();
     match *b.first()? {
-        b'0'..=b'9' => number(s),
-        b'.' if b.get(1).is_some_and(u8::is_ascii_digit) => number(s),
-        b'"' => string(s),
+        b'0'..=b'9' => push_number(s, out, span),
+        b'.' if b.get(1).is_some_and(u8::is_ascii_digit) => push_number(s, out, span),
+        b'"' => {
+            let (r, raw) = string(s)?;
+            Some(unescape(raw).map(|text| {
+                out.push(Token {
+                    tok: Tok::Str(text.into()),
+                    span: span(r),
+                });
+                r
+            }))
+        }
         c if is_ident_start(c) => {
             let (r, text) = ident_text(s)?;
-            Some((r, Tok::Ident(name(names, text))))
+            out.push(Token {
+                tok: Tok::Ident(name(names, text)),
+                span: span(r),
+            });
+            Some(Ok(r))
         }
         b'#' => {
             let r = s[1..].trim_start_matches([' ', '\t']);
             let (r, text) = ident_text(r)?;
-            Some((r, Tok::Directive(name(names, text))))
+            out.push(Token {
+                tok: Tok::Directive(name(names, text)),
+                span: span(r),
+            });
+            Some(Ok(r))
         }
-        _ => symbol(s),
+        _ => {
+            let (r, sym) = symbol(s)?;
+            out.push(Token {
+                tok: Tok::Sym(sym),
+                span: span(r),
+            });
+            Some(Ok(r))
+        }
     }
+}
+
+fn push_number<'s>(
+    s: &'s str,
+    out: &mut Vec<Token>,
+    span: impl Fn(&str) -> Span,
+) -> Option<Result<&'s str, String>> {
+    let (r, v) = number(s)?;
+    out.push(Token {
+        tok: Tok::Num(v),
+        span: span(r),
+    });
+    Some(Ok(r))
 }
 
 fn name<'s>(
@@ -282,7 +313,7 @@ fn digits(b: &[u8]) -> usize {
 
 /// `digits ['.' digits*] | '.' digits`, then an exponent `e [+-] digits` when it is complete
 /// (`1e` is the number 1 and the identifier `e`).
-fn number(s: &str) -> Option<(&str, Tok)> {
+fn number(s: &str) -> Option<(&str, f64)> {
     let b = s.as_bytes();
     let mut i = digits(b);
     if i > 0 {
@@ -307,17 +338,17 @@ fn number(s: &str) -> Option<(&str, Tok)> {
         }
     }
     let (text, rest) = s.split_at(i);
-    Some((rest, Tok::Num(text.parse().unwrap_or(0.0))))
+    Some((rest, text.parse().unwrap_or(0.0)))
 }
 
-fn string(s: &str) -> Option<(&str, Tok)> {
+fn string(s: &str) -> Option<(&str, &str)> {
     let r = s.strip_prefix('"')?;
     let b = r.as_bytes();
     let mut i = 0;
     while i < b.len() {
         match b[i] {
             b'\\' => i += 2,
-            b'"' => return Some((&r[i + 1..], Tok::Str(r[..i].into()))),
+            b'"' => return Some((&r[i + 1..], &r[..i])),
             // POV-Ray strings may run over several lines (shapes3.inc's #warning texts).
             _ => i += 1,
         }
@@ -376,7 +407,7 @@ fn ident_text(s: &str) -> Option<(&str, &str)> {
     Some((rest, text))
 }
 
-fn symbol(s: &str) -> Option<(&str, Tok)> {
+fn symbol(s: &str) -> Option<(&str, Sym)> {
     use Sym::*;
     let b = s.as_bytes();
     let two = match (b.first()?, b.get(1)) {
@@ -386,7 +417,7 @@ fn symbol(s: &str) -> Option<(&str, Tok)> {
         _ => None,
     };
     if let Some(sym) = two {
-        return Some((&s[2..], Tok::Sym(sym)));
+        return Some((&s[2..], sym));
     }
     let sym = match b[0] {
         b'{' => LBrace,
@@ -412,7 +443,7 @@ fn symbol(s: &str) -> Option<(&str, Tok)> {
         b'|' => Or,
         _ => return None,
     };
-    Some((&s[1..], Tok::Sym(sym)))
+    Some((&s[1..], sym))
 }
 
 #[cfg(test)]
