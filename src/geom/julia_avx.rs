@@ -378,7 +378,7 @@ pub(super) unsafe fn tangents<const CUBE: bool>(
 
 #[cfg(test)]
 mod tests {
-    use super::super::tests::julia;
+    use super::super::tests::{julia, to_the_edge};
     use super::super::{Algebra, JuliaFn, Orbit};
     use super::*;
 
@@ -424,15 +424,7 @@ mod tests {
             for i in 0..40_000 {
                 let mut p = rng.vec(if i % 3 == 0 { 4.5 } else { 2.0 });
                 if i % 3 == 1 {
-                    let (mut lo, mut hi) = (0.0, 1.0);
-                    for _ in 0..40 {
-                        let m = 0.5 * (lo + hi);
-                        if j.is_in(p * m) {
-                            lo = m;
-                        } else {
-                            hi = m;
-                        }
-                    }
+                    let (lo, hi) = to_the_edge(&j, p);
                     p *= if i % 2 == 0 { lo } else { hi };
                 }
                 points.push(j.lift(p).0);

@@ -13,6 +13,21 @@ pub(super) fn julia(c: [f64; 4], algebra: Algebra, func: JuliaFn, n: u32, prec: 
 
 pub(super) const FRACTAL3: [f64; 4] = [0.49, 0.5, -0.34, 0.1];
 
+/// The scales either side of `j`'s surface along `p` from the origin, 40 halvings from
+/// `(0, 1)`: `p * lo` inside (or the origin), `p * hi` outside (or `p`).
+pub(super) fn to_the_edge(j: &Julia, p: DVec3) -> (f64, f64) {
+    let (mut lo, mut hi) = (0.0, 1.0);
+    for _ in 0..40 {
+        let m = 0.5 * (lo + hi);
+        if j.is_in(p * m) {
+            lo = m;
+        } else {
+            hi = m;
+        }
+    }
+    (lo, hi)
+}
+
 /// `inside()` of objects/fractal3's quaternion (max_iteration 7); povray's answers.
 #[test]
 fn quaternion_inside_matches_povray() {
@@ -681,15 +696,7 @@ fn squared_norm_branches_are_the_norm_ones() {
         for i in 0..40_000 {
             let mut p = rng.vec(2.5);
             if i % 2 == 0 {
-                let (mut lo, mut hi) = (0.0, 1.0);
-                for _ in 0..40 {
-                    let m = 0.5 * (lo + hi);
-                    if j.is_in(p * m) {
-                        lo = m;
-                    } else {
-                        hi = m;
-                    }
-                }
+                let (lo, hi) = to_the_edge(&j, p);
                 p *= if i % 4 == 0 { lo } else { hi };
             }
             let got = match j.orbit(p) {

@@ -325,7 +325,7 @@ pub fn first_root_with(
     hi: f64,
     take: impl FnMut(Candidate) -> Option<f64>,
 ) -> Option<f64> {
-    first_root_checked(c, lo, hi, true, |_| false, take)
+    first_root_before(c, lo, hi, true, |_| false, take)
 }
 
 /// [`first_root_in`] without its [`surely_no_root`] shortcut, for a caller whose own
@@ -338,7 +338,7 @@ pub fn first_root_in_unchecked(
     hi: f64,
     mut keep: impl FnMut(f64) -> bool,
 ) -> Option<f64> {
-    first_root_checked(
+    first_root_before(
         c,
         lo,
         hi,
@@ -359,7 +359,7 @@ pub fn first_root_with_unchecked(
     hi: f64,
     take: impl FnMut(Candidate) -> Option<f64>,
 ) -> Option<f64> {
-    first_root_checked(c, lo, hi, false, |_| false, take)
+    first_root_before(c, lo, hi, false, |_| false, take)
 }
 
 /// [`first_root_with`] (its [`surely_no_root`] shortcut asked when `shortcut`) for a caller
@@ -370,20 +370,6 @@ pub fn first_root_with_unchecked(
 /// past that start. Below that piece the walk and its candidates are [`first_root_with`]'s.
 #[inline(always)]
 pub fn first_root_before(
-    c: &[f64],
-    lo: f64,
-    hi: f64,
-    shortcut: bool,
-    past: impl Fn(f64) -> bool,
-    take: impl FnMut(Candidate) -> Option<f64>,
-) -> Option<f64> {
-    first_root_checked(c, lo, hi, shortcut, past, take)
-}
-
-/// [`first_root_with`], the [`surely_no_root`] shortcut asked when `shortcut`, stopped where
-/// `past` holds (see [`first_root_before`]).
-#[inline(always)]
-fn first_root_checked(
     c: &[f64],
     lo: f64,
     hi: f64,

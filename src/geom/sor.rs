@@ -446,6 +446,16 @@ mod tests {
         check(&[[0.0, 5.0], [1.0, 1.0], [1.0, 2.0], [1.0, 1.5]]).unwrap();
     }
 
+    /// A ray from near the vase aimed into it, level when `level`.
+    fn vase_ray(rng: &mut crate::geom::test_rng::Lcg, level: bool) -> Ray {
+        let o = DVec3::new(0.0, 0.5, 0.0) + rng.vec(4.0);
+        let mut d = DVec3::new(0.0, 0.5, 0.0) + rng.vec(0.8) - o;
+        if level {
+            d.y = 0.0;
+        }
+        Ray::new(o, d)
+    }
+
     /// `any_hit` (which stops at the first segment holding a crossing before `tmax`) says
     /// whether the default `intersect_first` finds one: open and closed vases, rays from
     /// outside, from a crossing and level ones, `tmax` before, at, past and beyond it.
@@ -456,12 +466,7 @@ mod tests {
         for open in [false, true] {
             let s = Sor::new(&VASE, open);
             for k in 0..4000 {
-                let o = DVec3::new(0.0, 0.5, 0.0) + rng.vec(4.0);
-                let mut d = DVec3::new(0.0, 0.5, 0.0) + rng.vec(0.8) - o;
-                if k % 10 == 0 {
-                    d.y = 0.0;
-                }
-                let ray = Ray::new(o, d);
+                let ray = vase_ray(&mut rng, k % 10 == 0);
                 let first = s.intersect_first(&ray, f64::INFINITY, &mut Vec::new());
                 let near = first.map_or(1.0, |h| h.t);
                 let on = Ray::new(ray.at(near), rng.vec(1.0));
@@ -496,12 +501,7 @@ mod tests {
         for open in [false, true] {
             let s = Sor::new(&VASE, open);
             for k in 0..4000 {
-                let o = DVec3::new(0.0, 0.5, 0.0) + rng.vec(4.0);
-                let mut d = DVec3::new(0.0, 0.5, 0.0) + rng.vec(0.8) - o;
-                if k % 10 == 0 {
-                    d.y = 0.0;
-                }
-                let ray = Ray::new(o, d);
+                let ray = vase_ray(&mut rng, k % 10 == 0);
                 let first = crate::geom::test_rng::nearest_of_all(&s, &ray, f64::INFINITY);
                 n_hits += first.is_some() as usize;
                 let near = first.map_or(1.0, |h| h.t);

@@ -9,31 +9,40 @@ fn all(s: &Torus, r: &Ray) -> Vec<f64> {
     v.iter().map(|h| h.t).collect()
 }
 
+/// Thin, fat, horn, spindle and near-degenerate tori.
+fn kinds() -> [Torus; 5] {
+    [
+        Torus::new(1.0, 0.25, false),
+        Torus::new(0.3, 0.6, false),
+        Torus::new(0.0, 0.5, false),
+        Torus::new(1.0, 0.25, true),
+        Torus::new(2.0, 1e-3, false),
+    ]
+}
+
+/// A ray from anywhere near `s`, aimed near the ring or anywhere.
+fn ring_ray(rng: &mut crate::geom::test_rng::Lcg, s: &Torus) -> Ray {
+    let origin = rng.vec(6.0);
+    let aim = if rng.next() < 0.7 {
+        let a = rng.next() * std::f64::consts::TAU;
+        DVec3::new(a.cos() * s.major, 0.0, a.sin() * s.major) + rng.vec(3.0 * s.minor)
+    } else {
+        rng.vec(4.0)
+    };
+    Ray::new(origin, (aim - origin) * (0.2 + rng.next()))
+}
+
 /// `any_kept` (and `gather_kept`) answers as `intersect_all`'s crossings below `tmax` do, for keep tests
 /// that take some crossings and not others, and asks only crossings that list has (the
 /// same bits): rays from inside and outside, grazing ones, spindle and degenerate tori.
 #[test]
 fn any_kept_is_intersect_all() {
     let mut rng = crate::geom::test_rng::Lcg(19);
-    let shapes = [
-        Torus::new(1.0, 0.25, false),
-        Torus::new(0.3, 0.6, false),
-        Torus::new(0.0, 0.5, false),
-        Torus::new(1.0, 0.25, true),
-        Torus::new(2.0, 1e-3, false),
-    ];
+    let shapes = kinds();
     let (mut kept, mut total) = (0, 0);
     for s in &shapes {
         for _ in 0..4000 {
-            let origin = rng.vec(6.0);
-            // Aimed near the ring, or anywhere.
-            let aim = if rng.next() < 0.7 {
-                let a = rng.next() * std::f64::consts::TAU;
-                DVec3::new(a.cos() * s.major, 0.0, a.sin() * s.major) + rng.vec(3.0 * s.minor)
-            } else {
-                rng.vec(4.0)
-            };
-            let ray = Ray::new(origin, (aim - origin) * (0.2 + rng.next()));
+            let ray = ring_ray(&mut rng, s);
             let listed = all(s, &ray);
             let tmax = if rng.next() < 0.5 {
                 f64::INFINITY
@@ -481,24 +490,11 @@ fn silhouettes_match_reference_400() {
 #[test]
 fn any_hit_is_intersect_first() {
     let mut rng = crate::geom::test_rng::Lcg(77);
-    let shapes = [
-        Torus::new(1.0, 0.25, false),
-        Torus::new(0.3, 0.6, false),
-        Torus::new(0.0, 0.5, false),
-        Torus::new(1.0, 0.25, true),
-        Torus::new(2.0, 1e-3, false),
-    ];
+    let shapes = kinds();
     let (mut hits, mut total) = (0, 0);
     for s in &shapes {
         for _ in 0..3000 {
-            let origin = rng.vec(6.0);
-            let aim = if rng.next() < 0.7 {
-                let a = rng.next() * std::f64::consts::TAU;
-                DVec3::new(a.cos() * s.major, 0.0, a.sin() * s.major) + rng.vec(3.0 * s.minor)
-            } else {
-                rng.vec(4.0)
-            };
-            let ray = Ray::new(origin, (aim - origin) * (0.2 + rng.next()));
+            let ray = ring_ray(&mut rng, s);
             let listed = all(s, &ray);
             let mut tmaxes = vec![0.0, EPSILON, 0.5, f64::INFINITY, rng.next() * 3.0];
             for &t in &listed {
