@@ -269,6 +269,43 @@ impl Algebraic {
         first_root_before(c, EPSILON * len, hi, shortcut, |a| a / len >= tmax, take)
     }
 
+    /// `intersect_first`'s `t`. `settle`: a bracket `[a, b]` of the walk with `a / len >
+    /// EPSILON` and `b / len < tmax` is answered with `a / len` unpolished, for a caller that
+    /// asks only whether there is a crossing (it holds the walk's first kept root, whose `t`
+    /// lies in `[a / len, b / len]`: the quotient rounds monotonically).
+    #[inline(always)]
+    fn first_t(&self, ray: &Ray, tmax: f64, settle: bool) -> Option<f64> {
+        if self.order <= 2 && !self.sturm {
+            let (roots, n, len) = self.low_order_roots(ray)?;
+            return roots[..n]
+                .iter()
+                .copied()
+                .find(|&x| x / len > EPSILON)
+                .map(|x| x / len)
+                .filter(|&t| t < tmax);
+        }
+        let mut c = [0.0; MAX_ORDER + 1];
+        let (hi, len) = self.along_ray(ray, &mut c)?;
+        if self.surely_misses(&c, EPSILON * len, hi) {
+            return None;
+        }
+        let keep = |x: f64| x / len > EPSILON;
+        if self.sturm {
+            return sturm_first_root_in(&c[..=self.order], EPSILON * len, hi, keep)
+                .map(|x| x / len)
+                .filter(|&t| t < tmax);
+        }
+        self.first_walk(&c, hi, len, tmax, |cand| {
+            if settle && cand.a / len > EPSILON && cand.b / len < tmax {
+                return Some(cand.a);
+            }
+            let x = cand.root();
+            keep(x).then_some(x)
+        })
+        .map(|x| x / len)
+        .filter(|&t| t < tmax)
+    }
+
     /// The polynomial along `origin + t·dir` (ascending coefficients in t).
     fn along(&self, origin: DVec3, dir: DVec3, out: &mut [f64; MAX_ORDER + 1]) {
         // The table of powers is zeroed on every ray: 7 KB at the largest order, most of the
@@ -413,67 +450,13 @@ impl Shape for Algebraic {
     /// (`first_root_in`); the `t` are increasing in the roots, so the first root whose `t`
     /// passes `EPSILON` gives the nearest crossing.
     fn intersect_first(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> Option<Hit> {
-        if self.order <= 2 && !self.sturm {
-            let (roots, n, len) = self.low_order_roots(ray)?;
-            return roots[..n]
-                .iter()
-                .copied()
-                .find(|&x| x / len > EPSILON)
-                .map(|x| x / len)
-                .filter(|&t| t < tmax)
-                .map(Hit::new);
-        }
-        let mut c = [0.0; MAX_ORDER + 1];
-        let (hi, len) = self.along_ray(ray, &mut c)?;
-        if self.surely_misses(&c, EPSILON * len, hi) {
-            return None;
-        }
-        let keep = |x: f64| x / len > EPSILON;
-        if self.sturm {
-            return sturm_first_root_in(&c[..=self.order], EPSILON * len, hi, keep)
-                .map(|x| x / len)
-                .filter(|&t| t < tmax)
-                .map(Hit::new);
-        }
-        self.first_walk(&c, hi, len, tmax, |cand| {
-            let x = cand.root();
-            keep(x).then_some(x)
-        })
-        .map(|x| x / len)
-        .filter(|&t| t < tmax)
-        .map(Hit::new)
+        self.first_t(ray, tmax, false).map(Hit::new)
     }
 
     /// `intersect_first(..).is_some()`, a root's polish left out where its bracket settles
-    /// the answer: a bracket `[a, b]` with `a / len > EPSILON` holds the walk's first kept
-    /// root (the quotient rounds monotonically, and the root lies in its bracket), whose `t`
-    /// is then below `b / len`; below `tmax` when that is.
-    fn any_hit(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> bool {
-        if self.order <= 2 || self.sturm {
-            return self.intersect_first(ray, tmax, scratch).is_some();
-        }
-        let mut c = [0.0; MAX_ORDER + 1];
-        let Some((hi, len)) = self.along_ray(ray, &mut c) else {
-            return false;
-        };
-        if self.surely_misses(&c, EPSILON * len, hi) {
-            return false;
-        }
-        let mut hit = false;
-        self.first_walk(&c, hi, len, tmax, |cand| {
-            if cand.a / len > EPSILON && cand.b / len < tmax {
-                hit = true;
-                return Some(cand.a);
-            }
-            let x = cand.root();
-            let t = x / len;
-            if t > EPSILON {
-                hit = t < tmax;
-                return Some(x);
-            }
-            None
-        });
-        hit
+    /// the answer (`first_t`'s `settle`): shadow rays.
+    fn any_hit(&self, ray: &Ray, tmax: f64, _scratch: &mut Vec<Hit>) -> bool {
+        self.first_t(ray, tmax, true).is_some()
     }
 
     fn windowed(&self) -> bool {
