@@ -394,7 +394,7 @@ mod tests {
                 for &jitter in &jitters {
                     let direction = DVec3::new(-0.2, -0.2, 1.0).normalize();
                     let up = (DVec3::Y - direction * DVec3::Y.dot(direction)).normalize();
-                    let rb = RainbowDesc {
+                    let mut rb = RainbowDesc {
                         direction,
                         angle,
                         width,
@@ -405,6 +405,7 @@ mod tests {
                         color_map: map.clone(),
                         ..RainbowDesc::default()
                     };
+                    rb.set_band();
                     // Angles to the direction: spread, and within 1e-6 degree of each edge.
                     let mut thetas: Vec<f64> = (0..400).map(|n| n as f64 * 0.45).collect();
                     let (w, s) = (width.max(1e-12), angle - width * 0.5);

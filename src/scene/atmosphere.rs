@@ -1,8 +1,6 @@
 //! Atmospheric effects as the scene describes them: fog layers and rainbows (a rainbow is a
 //! fog whose colour depends on the ray's direction, so both share the fog's blending).
 
-use std::sync::OnceLock;
-
 use crate::color::Rgbft;
 use crate::math::DVec3;
 
@@ -116,8 +114,9 @@ pub struct RainbowDesc {
     pub falloff_angle: f64,
     pub jitter: f64,
     pub color_map: ColorMap,
-    /// `cos_band`, worked out at the first ray (it depends on angle, width and jitter only).
-    pub band: OnceLock<(f64, f64)>,
+    /// `cos_band`'s (c_hi, c_lo), set once per scene by `set_band` when the scene is built;
+    /// the default (−inf, inf) skips no ray.
+    pub band: (f64, f64),
 }
 
 impl RainbowDesc {
@@ -133,33 +132,40 @@ impl RainbowDesc {
     /// (|acos'| >= 1, so a cosine 1e-12 past an edge is an angle at least 1e-12 rad past it).
     /// Numbers that are not finite and moderate give (−inf, inf): no ray is skipped.
     pub fn cos_band(&self) -> (f64, f64) {
-        *self.band.get_or_init(|| {
-            let never = (f64::NEG_INFINITY, f64::INFINITY);
-            let w = self.width.max(1e-12);
-            let s = self.angle - self.width * 0.5;
-            let j = self.jitter.abs();
-            if ![self.angle, self.width, j, s, w]
-                .iter()
-                .all(|v| v.abs() < 1e100)
-            {
-                return never;
-            }
-            let delta = 1e-6 * (1.0 + s.abs() + w * (1.0 + j));
-            let lo = s - w * (0.5 * j) - delta;
-            let hi = s + w * (1.0 + 0.5 * j) + delta;
-            // Below 0 or above 180 degrees no ray's angle lies past that edge.
-            let c_lo = if lo > 0.0 {
-                lo.to_radians().cos() + 1e-12
-            } else {
-                f64::INFINITY
-            };
-            let c_hi = if hi < 180.0 {
-                hi.to_radians().cos() - 1e-12
-            } else {
-                f64::NEG_INFINITY
-            };
-            (c_hi, c_lo)
-        })
+        self.band
+    }
+
+    /// Works out `cos_band` from angle, width and jitter (once per scene, after parsing).
+    pub fn set_band(&mut self) {
+        self.band = self.band_of();
+    }
+
+    fn band_of(&self) -> (f64, f64) {
+        let never = (f64::NEG_INFINITY, f64::INFINITY);
+        let w = self.width.max(1e-12);
+        let s = self.angle - self.width * 0.5;
+        let j = self.jitter.abs();
+        if ![self.angle, self.width, j, s, w]
+            .iter()
+            .all(|v| v.abs() < 1e100)
+        {
+            return never;
+        }
+        let delta = 1e-6 * (1.0 + s.abs() + w * (1.0 + j));
+        let lo = s - w * (0.5 * j) - delta;
+        let hi = s + w * (1.0 + 0.5 * j) + delta;
+        // Below 0 or above 180 degrees no ray's angle lies past that edge.
+        let c_lo = if lo > 0.0 {
+            lo.to_radians().cos() + 1e-12
+        } else {
+            f64::INFINITY
+        };
+        let c_hi = if hi < 180.0 {
+            hi.to_radians().cos() - 1e-12
+        } else {
+            f64::NEG_INFINITY
+        };
+        (c_hi, c_lo)
     }
 }
 
@@ -176,7 +182,7 @@ impl Default for RainbowDesc {
             falloff_angle: 360.0,
             jitter: 0.0,
             color_map: ColorMap::new(),
-            band: OnceLock::new(),
+            band: (f64::NEG_INFINITY, f64::INFINITY),
         }
     }
 }

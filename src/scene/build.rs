@@ -193,11 +193,12 @@ fn build_from<O: std::borrow::Borrow<ObjectDesc>>(
                     tb.noise_generator = desc.global.noise_generator;
                     tb.set_reach();
                 }
-                // A rainbow's direction unit and its up perpendicular to it, once per scene.
+                // A rainbow's direction unit, its up perpendicular to it and its band, once per scene.
                 if let Some(rb) = &mut f.rainbow {
                     let d = rb.direction.normalize_or(DVec3::Z);
                     rb.direction = d;
                     rb.up = (rb.up - d * rb.up.dot(d)).normalize_or_zero();
+                    rb.set_band();
                 }
                 f
             })
