@@ -470,14 +470,16 @@ impl Blob {
     /// beyond it are not polished), the same bits. With `first_only` the stretches starting
     /// at or beyond `tmax` are not searched: a root s in [lo, hi] gives t = (s + shift) / len,
     /// and rounding keeps that order, so t >= tmax for every such root, which
-    /// `intersect_first` drops anyway.
+    /// `intersect_first` drops anyway. With `SETTLE` (and `first_only`, `accept` always
+    /// true) a bracket that surely holds a counted crossing is pushed as its lower end's `t`
+    /// unpolished: for `any_hit`, which asks only whether there is one.
     ///
     /// With `first_only`, `accept` is asked in increasing order about each crossing's `t`
     /// the full list holds (it never sees a `t <= EPSILON`) and the walk stops at the first it
     /// accepts, which is the one pushed: `intersect_first` accepts the first, `any_kept` the
     /// first its caller keeps or the first at or beyond `tmax`. Without `first_only` it is
     /// not asked.
-    fn crossings(
+    fn crossings<const SETTLE: bool>(
         &self,
         ray: &Ray,
         w: &mut Work,
@@ -595,6 +597,23 @@ impl Blob {
                         backlog.defer(item, bound);
                         return None;
                     }
+                    if SETTLE {
+                        // Whatever the polished root `s` in `[a, b]`: `s - last` is at
+                        // least `a - prior` and the tolerance at most the one of the larger
+                        // end (rounding keeps both orders), so `Backlog::settle` drops its
+                        // work and `keep_root` takes `s`; its `t` lies in the ends' `t`s,
+                        // above `EPSILON` and below `tmax`. So the walk would push a crossing
+                        // that counts: a caller asking only whether there is one is answered
+                        // without the polish (shadow rays).
+                        let (a, b) = (cand.a, cand.b);
+                        let prior = last.max(backlog.bound);
+                        if (a + shift) / len > EPSILON
+                            && (b + shift) / len < tmax
+                            && a - prior > 1e-12 * (1.0 + a.abs().max(b.abs()))
+                        {
+                            return Some(a);
+                        }
+                    }
                     let s = cand.root();
                     backlog.settle(s, &mut last, shift, len);
                     // `keep_root` first: it moves `last` for every root the list would hold.
@@ -674,19 +693,26 @@ impl Shape for Blob {
 
     fn intersect_all(&self, ray: &Ray, out: &mut Vec<Hit>) {
         WORK.with(|w| match w.try_borrow_mut() {
-            Ok(mut w) => self.crossings(ray, &mut w, out, false, f64::INFINITY, |_| true),
+            Ok(mut w) => self.crossings::<false>(ray, &mut w, out, false, f64::INFINITY, |_| true),
             // Never re-entered in practice; a fresh buffer keeps it correct if it were.
-            Err(_) => self.crossings(ray, &mut Work::default(), out, false, f64::INFINITY, |_| {
-                true
-            }),
+            Err(_) => self.crossings::<false>(
+                ray,
+                &mut Work::default(),
+                out,
+                false,
+                f64::INFINITY,
+                |_| true,
+            ),
         });
     }
 
     fn intersect_first(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> Option<Hit> {
         scratch.clear();
         WORK.with(|w| match w.try_borrow_mut() {
-            Ok(mut w) => self.crossings(ray, &mut w, scratch, true, tmax, |_| true),
-            Err(_) => self.crossings(ray, &mut Work::default(), scratch, true, tmax, |_| true),
+            Ok(mut w) => self.crossings::<false>(ray, &mut w, scratch, true, tmax, |_| true),
+            Err(_) => {
+                self.crossings::<false>(ray, &mut Work::default(), scratch, true, tmax, |_| true)
+            }
         });
         // With `sturm` every crossing is there; without, only the nearest.
         scratch
@@ -694,6 +720,22 @@ impl Shape for Blob {
             .filter(|h| h.t > EPSILON && h.t < tmax)
             .min_by(|a, b| a.t.total_cmp(&b.t))
             .copied()
+    }
+
+    /// `intersect_first(..).is_some()`, a root's polish left out where its bracket settles
+    /// the answer (`crossings`' `SETTLE`): shadow rays. `sturm` blobs list.
+    fn any_hit(&self, ray: &Ray, tmax: f64, scratch: &mut Vec<Hit>) -> bool {
+        if self.sturm {
+            return self.intersect_first(ray, tmax, scratch).is_some();
+        }
+        scratch.clear();
+        WORK.with(|w| match w.try_borrow_mut() {
+            Ok(mut w) => self.crossings::<true>(ray, &mut w, scratch, true, tmax, |_| true),
+            Err(_) => {
+                self.crossings::<true>(ray, &mut Work::default(), scratch, true, tmax, |_| true)
+            }
+        });
+        scratch.iter().any(|h| h.t > EPSILON && h.t < tmax)
     }
 
     /// The crossings nearest first (`crossings`' walk for `intersect_first`: the same roots,
@@ -712,8 +754,10 @@ impl Shape for Blob {
         scratch.clear();
         let accept = |t: f64| t >= tmax || keep(t);
         WORK.with(|w| match w.try_borrow_mut() {
-            Ok(mut w) => self.crossings(ray, &mut w, scratch, true, tmax, accept),
-            Err(_) => self.crossings(ray, &mut Work::default(), scratch, true, tmax, accept),
+            Ok(mut w) => self.crossings::<false>(ray, &mut w, scratch, true, tmax, accept),
+            Err(_) => {
+                self.crossings::<false>(ray, &mut Work::default(), scratch, true, tmax, accept)
+            }
         });
         scratch.first().is_some_and(|h| h.t < tmax)
     }
@@ -736,8 +780,10 @@ impl Shape for Blob {
         scratch.clear();
         let accept = |t: f64| t >= tmax || keep(t);
         WORK.with(|w| match w.try_borrow_mut() {
-            Ok(mut w) => self.crossings(ray, &mut w, scratch, true, tmax, accept),
-            Err(_) => self.crossings(ray, &mut Work::default(), scratch, true, tmax, accept),
+            Ok(mut w) => self.crossings::<false>(ray, &mut w, scratch, true, tmax, accept),
+            Err(_) => {
+                self.crossings::<false>(ray, &mut Work::default(), scratch, true, tmax, accept)
+            }
         });
         out.extend(scratch.first().filter(|h| h.t < tmax));
     }

@@ -191,6 +191,61 @@ fn first_hit_leaving_the_surface() {
 }
 
 #[test]
+fn any_hit_is_intersect_first() {
+    // Shadow rays: `any_hit` (a bracket that surely holds a counted crossing answers
+    // unpolished) answers as `intersect_first(..).is_some()`, for rays from the surface
+    // (roots at t <= EPSILON deferred, `last` and the backlog in play) and from anywhere,
+    // `tmax` at every listed crossing, one ulp and 1 % either side, and elsewhere.
+    let mut arm = leaning_arm();
+    arm.transform = Transform::scale(DVec3::new(1.0, 0.7, 1.3));
+    let comps = vec![
+        arm,
+        sphere(DVec3::new(0.0, 0.8, 0.0), 1.0, -1.5),
+        sphere(DVec3::new(0.9, 0.0, 0.9), 0.8, 1.0),
+        sphere(DVec3::new(-0.9, 0.0, -0.5), 0.7, 1.0),
+        sphere(DVec3::new(2.5, 0.0, 0.0), 0.6, 1.0),
+    ];
+    let mut rng = Lcg(41);
+    let (mut hit, mut total) = (0, 0);
+    for sturm in [false, true] {
+        let b = Blob::new(&BlobData {
+            components: comps.clone(),
+            threshold: 0.4,
+            sturm,
+        });
+        let mut scratch = Vec::new();
+        for _ in 0..2000 {
+            let o = rng.vec(8.0);
+            let d = rng.vec(2.0) - o * 0.2;
+            let first = hits(&b, o, d);
+            let starts = first.iter().map(|&t| o + d * t).chain([o]);
+            for p in starts.collect::<Vec<_>>() {
+                let aim = if rng.next() < 0.7 {
+                    rng.vec(1.5)
+                } else {
+                    p + rng.vec(3.0)
+                };
+                let ray = Ray::new(p, (aim - p) * (0.3 + rng.next()));
+                let listed = hits(&b, ray.origin, ray.dir);
+                let mut tmaxes = vec![f64::INFINITY, 0.0, EPSILON, rng.next() * 3.0];
+                for &t in &listed {
+                    let ulp = |k: i64| f64::from_bits((t.to_bits() as i64 + k) as u64);
+                    tmaxes.extend([t, ulp(-1), ulp(1), t * 0.99, t * 1.01]);
+                }
+                for tmax in tmaxes {
+                    let want = b.intersect_first(&ray, tmax, &mut scratch).is_some();
+                    let got = b.any_hit(&ray, tmax, &mut scratch);
+                    assert_eq!(got, want, "{ray:?} {tmax} {listed:?}");
+                    hit += usize::from(got);
+                    total += 1;
+                }
+            }
+        }
+    }
+    assert!(hit > total / 5 && hit < total * 4 / 5, "{hit} of {total}");
+}
+
+#[test]
 fn roots_surely_behind_are_behind() {
     // Quartics with a root at a shadow ray's start (near s = 0, where a blob's surface is
     // met again), brackets reaching past t = EPSILON: wherever the certificate gives a
