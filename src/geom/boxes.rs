@@ -133,6 +133,10 @@ impl Shape for BoxShape {
     }
 
     #[inline]
+    fn inside_bounded(&self) -> bool {
+        true
+    }
+
     fn inside(&self, p: DVec3) -> bool {
         !self.empty && p.cmpgt(self.min).all() && p.cmplt(self.max).all()
     }

@@ -101,6 +101,10 @@ impl Shape for Cylinder {
         best
     }
 
+    fn inside_bounded(&self) -> bool {
+        true
+    }
+
     fn inside(&self, p: DVec3) -> bool {
         if self.empty {
             return false;

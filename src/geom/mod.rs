@@ -124,6 +124,13 @@ pub trait Shape: Send + Sync + std::fmt::Debug {
     fn as_algebraic(&self) -> Option<&algebraic::Algebraic> {
         None
     }
+    /// Whether `inside` says yes only within `bounds` (up to the rounding of its own test):
+    /// true for the shapes whose test is a few products and comparisons that cannot stray
+    /// (boxes, cylinders), so that a CSG node may reason with their local bounds in
+    /// another member's space (`scene::csg_lead::shut_of`).
+    fn inside_bounded(&self) -> bool {
+        false
+    }
     /// This shape as a box (`BoxShape`, not empty), so that a CSG node may ask its box
     /// members with the box's own code and no dispatch (`scene::csg_boxes`).
     fn solid_box(&self) -> Option<boxes::BoxShape> {

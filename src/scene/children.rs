@@ -232,7 +232,10 @@ fn attach_indexes(o: &mut Object, opened: bool) {
     // The leaf every kept crossing lies in (`csg_lead`), for the searches that gather it first.
     if mine.is_none() && quadrics_none {
         let faces = cull.as_ref().and_then(|c| c.faces.as_ref());
-        let lead = crate::scene::csg_lead::lead_of(*op, children, faces, &o.clip);
+        let lead = match crate::scene::csg_lead::lead_of(*op, children, faces, &o.clip) {
+            crate::scene::csg_lead::Lead::None => crate::scene::csg_lead::shut_of(*op, children),
+            lead => lead,
+        };
         if lead != crate::scene::csg_lead::Lead::None {
             cull.get_or_insert_with(Box::default).lead = lead;
         }

@@ -23,7 +23,6 @@ use crate::geom::Hit;
 use crate::math::{Aabb, DVec3, Ray, Slabs, EPSILON};
 use crate::scene::children::ChildIndex;
 use crate::scene::csg_hit::{order_key, push_crossing};
-use crate::scene::csg_lead::Lead;
 use crate::scene::csg_members::{member_wants, want_inside};
 use crate::scene::desc::CsgOp;
 use crate::scene::faces::{self, Faces};
@@ -265,7 +264,7 @@ impl Object {
         s: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
         let (search, led) = match &self.kind {
-            ObjKind::Csg { cull: Some(c), .. } => (c.search, c.lead != Lead::None),
+            ObjKind::Csg { cull: Some(c), .. } => (c.search, c.lead.leads()),
             _ => (Search::Plain, false),
         };
         let fold = match search {
@@ -335,7 +334,7 @@ impl Object {
         tmax: f64,
         s: &mut Scratch<'a>,
     ) -> Option<SurfaceHit<'a>> {
-        let led = self.lead() != Lead::None;
+        let led = self.lead().leads();
         match self.box_members() {
             Some(b) if b.all() => self.boxes_first_hit(op, children, culls.0, b, ray, tmax),
             _ => self.csg_first_hit_as::<true>(

@@ -332,7 +332,7 @@ impl Object {
         // other crossing is kept), that crossing is the answer, the others not listed.
         let lead = if LEAD { self.lead() } else { Lead::None };
         let led = match lead {
-            Lead::None => false,
+            Lead::None | Lead::Shut(_) => false,
             Lead::Folded if !fold => false,
             _ => lead_reached(lead, children, ray, inv_dir, &slabs, tmax),
         };
@@ -364,6 +364,8 @@ impl Object {
             }
         }
         let skip = if led { lead } else { Lead::None };
+        // A box member none of whose crossings is kept (`csg_lead::shut_of`), if any.
+        let shut = self.lead().shut();
         if let Some(shapes) = quadrics {
             gather_quadrics(children, shapes, ray, &slabs, tmax, s, &keeps);
         } else {
@@ -378,7 +380,7 @@ impl Object {
                 #[inline(always)]
                 |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
                     // The lead is gathered already.
-                    if skip == Lead::Member && i == 0 {
+                    if (skip == Lead::Member && i == 0) || i == shut {
                         return;
                     }
                     if !slabs.hits(&c.bounds, tmax) {
@@ -477,9 +479,10 @@ impl Object {
         if let Some(found) = lead_any_hit(lead, children, ray, inv_dir, &slabs, tmax, s, keep_at) {
             return found;
         }
+        let shut = lead.shut();
         let mut found = false;
         each_member(children, index, ray, tmax, s, |c, i, s| {
-            if found || !slabs.hits(&c.bounds, tmax) {
+            if found || i == shut || !slabs.hits(&c.bounds, tmax) {
                 return;
             }
             let face = ray_faces.and_then(|f| f.get(i));

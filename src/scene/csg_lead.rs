@@ -37,6 +37,26 @@ pub enum Lead {
     Member,
     /// Leaf 0 of member 0, a folded intersection, is the lead.
     Folded,
+    /// No lead, and member `k`, a box, has no crossing the node keeps (`shut_of`): the
+    /// searches do not gather it (they still ask it whether it holds the others' points).
+    Shut(u8),
+}
+
+impl Lead {
+    /// Whether a leaf leads (`Member`, `Folded`): the searches' lead instances.
+    #[inline(always)]
+    pub(super) fn leads(self) -> bool {
+        matches!(self, Lead::Member | Lead::Folded)
+    }
+
+    /// The member the searches leave out (`Shut`), or `usize::MAX`.
+    #[inline(always)]
+    pub(super) fn shut(self) -> usize {
+        match self {
+            Lead::Shut(k) => k as usize,
+            _ => usize::MAX,
+        }
+    }
 }
 
 /// A leaf the searches gather through `gather_hits`' and `member_hits`' leaf path (no face,
@@ -87,6 +107,80 @@ pub fn lead_of(op: CsgOp, children: &[Object], faces: Option<&Faces>, clip: &[Ob
     } else {
         Lead::None
     }
+}
+
+/// How far, as a share of its size, the box `shut_of` leaves out must reach past the other
+/// members' bounds on every side: crossings of the box lie on its faces up to the rounding of
+/// `t`, `ray.at` and the transforms (~1e-16 of the coordinates), far inside this.
+const SHUT_MARGIN: f64 = 1e-3;
+
+/// The box in `shut_of`'s box member `b`'s space that holds every point where member `o`
+/// may answer that it holds a point: `o`'s own bounds when its shape's test stays in them
+/// (`Shape::inside_bounded`), taken through `o`'s transform, else its bounds in the world
+/// (every member's test answers no outside them: `Object::leaf_inside`, `inside_node`,
+/// `member_wants`' faces, and the box and quadric tests ask the bounds first), each as the
+/// box of its eight corners taken into `b`'s space (an affine map: the image of a box is
+/// the hull of its corners' images).
+fn held_in(b: &Object, o: &Object) -> Aabb {
+    let (own, to_world) = match &o.kind {
+        ObjKind::Shape(shape, _) if o.clip.is_empty() && shape.inside_bounded() => {
+            (shape.bounds(), o.transform.as_deref())
+        }
+        _ => (o.bounds, None),
+    };
+    if !own.is_finite() || own.is_empty() {
+        return if own.is_empty() {
+            Aabb::EMPTY
+        } else {
+            Aabb::INFINITE
+        };
+    }
+    (0..8).fold(Aabb::EMPTY, |w, n| {
+        let corner = DVec3::new(
+            if n & 1 == 0 { own.min.x } else { own.max.x },
+            if n & 2 == 0 { own.min.y } else { own.max.y },
+            if n & 4 == 0 { own.min.z } else { own.max.z },
+        );
+        w.grow(b.local_point(to_world.map_or(corner, |t| t.point(corner))))
+    })
+}
+
+/// `Lead::Shut(k)` for the first member `k` of an intersection (without lead or index) that
+/// is a plain box leaf holding, with `SHUT_MARGIN` to spare on every side, the box `w` (in
+/// its own space) where the other members that are not `inverse` may hold points
+/// (`held_in`). A crossing of the box is kept only where every other member holds its
+/// point, so in `w`, which lies inside the box, off its faces: none of the box's crossings
+/// is kept, and a search that leaves them out finds the same first kept crossing (the others
+/// keep their order) and the same answer to any-hit. The box is still asked whether it holds
+/// the others' crossings. advanced/whiltile's tiles: their box (-1 to 1) holds the meeting
+/// of the two rounding cylinders (-0.9 to 0.9); their world bounds, turned 30 degrees about
+/// y, do not meet inside it.
+pub fn shut_of(op: CsgOp, children: &[Object]) -> Lead {
+    if op != CsgOp::Intersection || children.len() < 2 || children.len() > u8::MAX as usize {
+        return Lead::None;
+    }
+    for (k, c) in children.iter().enumerate() {
+        let ObjKind::Shape(shape, None) = &c.kind else {
+            continue;
+        };
+        let Some(b) = shape.solid_box().filter(|_| plain_leaf(c, false)) else {
+            continue;
+        };
+        let w = children
+            .iter()
+            .enumerate()
+            .filter(|&(j, o)| j != k && !o.inverse)
+            .fold(Aabb::INFINITE, |w, (_, o)| w.intersection(&held_in(c, o)));
+        if !w.is_finite() || w.is_empty() {
+            continue;
+        }
+        let pad = (w.max - w.min) * SHUT_MARGIN;
+        let room = (b.max() - b.min()) * SHUT_MARGIN;
+        if (w.min - pad).cmpgt(b.min() + room).all() && (w.max + pad).cmplt(b.max() - room).all() {
+            return Lead::Shut(k as u8);
+        }
+    }
+    Lead::None
 }
 
 /// Points across each face of a lead box in `kept_share`'s sample (`SAMPLES` squared).
@@ -265,7 +359,7 @@ pub(super) fn lead_any_hit<'a>(
     s: &mut Scratch<'a>,
     keep: impl Fn(usize, f64) -> bool,
 ) -> Option<bool> {
-    if lead == Lead::None {
+    if !lead.leads() {
         return None;
     }
     let leaf = lead_leaf(lead, children);
