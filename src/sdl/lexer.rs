@@ -105,11 +105,20 @@ pub struct LexError {
     pub end: usize,
 }
 
+/// The names (identifiers, keywords, directive names) read so far, one allocation each: a
+/// scene file names the same few hundred keywords and identifiers thousands of times, and its
+/// include files name the same ones again. A set of `Rc<str>` looked up by `&str`, kept by the
+/// parser for all its files: a map per file (from the text's `&str` to the `Rc`) allocated
+/// every keyword again for each include and grew its table from empty each time.
+pub type Names = rustc_hash::FxHashSet<std::rc::Rc<str>>;
+
 pub fn lex(text: &str, file: u32) -> Result<Vec<Token>, LexError> {
+    lex_with(text, file, &mut Names::default())
+}
+
+/// `lex`, sharing `names` with the other files of a parse.
+pub fn lex_with(text: &str, file: u32, names: &mut Names) -> Result<Vec<Token>, LexError> {
     let mut out = Vec::with_capacity(text.len() / 4);
-    // One allocation per distinct name: a scene file names the same few hundred keywords and
-    // identifiers thousands of times.
-    let mut names: rustc_hash::FxHashMap<&str, std::rc::Rc<str>> = Default::default();
     let mut rest = text;
     loop {
         rest = skip_trivia(rest, text.len())?;
@@ -134,7 +143,7 @@ pub fn lex(text: &str, file: u32) -> Result<Vec<Token>, LexError> {
         let before = out.len();
         // `token` writes into this free slot (`put`).
         out.reserve(1);
-        let next = token(rest, &mut names, &mut out, |next: &str| {
+        let next = token(rest, names, &mut out, |next: &str| {
             span(start, text.len() - next.len())
         })
         .ok_or_else(|| {
@@ -243,7 +252,7 @@ fn skip_trivia(mut s: &str, total: usize) -> Result<&str, LexError> {
 /// every token.
 fn token<'s>(
     s: &'s str,
-    names: &mut rustc_hash::FxHashMap<&'s str, std::rc::Rc<str>>,
+    names: &mut Names,
     out: &mut Vec<Token>,
     span: impl Fn(&str) -> Span,
 ) -> Option<Result<&'s str, String>> {
@@ -302,11 +311,13 @@ fn push_number<'s>(
     Some(Ok(r))
 }
 
-fn name<'s>(
-    names: &mut rustc_hash::FxHashMap<&'s str, std::rc::Rc<str>>,
-    text: &'s str,
-) -> std::rc::Rc<str> {
-    names.entry(text).or_insert_with(|| text.into()).clone()
+fn name(names: &mut Names, text: &str) -> std::rc::Rc<str> {
+    if let Some(n) = names.get(text) {
+        return n.clone();
+    }
+    let n: std::rc::Rc<str> = text.into();
+    names.insert(n.clone());
+    n
 }
 
 /// The length of the run of ASCII digits at the start of `b`.
