@@ -92,6 +92,8 @@ pub struct Parser {
     /// identifier up a second time.
     pub(super) plain_ident: IdentClass,
     file_cache: HashMap<PathBuf, CachedFile>,
+    /// Every name the lexer has read this parse, shared by all the files (`lexer::Names`).
+    names: crate::sdl::lexer::Names,
     pub options: ParseOptions,
     pub(super) scene_dir: PathBuf,
     pub scene: SceneDesc,
@@ -154,6 +156,7 @@ impl Parser {
             plain_ident_at: None,
             plain_ident: IdentClass::Declared,
             file_cache: HashMap::new(),
+            names: Default::default(),
             options,
             scene_dir: PathBuf::from("."),
             scene: super::default_scene(),

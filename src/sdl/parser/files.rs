@@ -10,7 +10,7 @@ use std::rc::Rc;
 use crate::diag::Diagnostic;
 
 use super::{FrameKind, PResult, ParseOptions, Parser, SYSTEM_INCLUDE_DIRS};
-use crate::sdl::lexer::{lex, Token};
+use crate::sdl::lexer::{lex_with, Token};
 use crate::sdl::source::{Sources, Span};
 
 /// A file's tokens, kept for as long as the file on disk is unchanged.
@@ -68,7 +68,7 @@ impl Parser {
     }
 
     pub(super) fn lex_file(&mut self, id: u32) -> PResult<Rc<Vec<Token>>> {
-        match lex(self.sources.text(id), id) {
+        match lex_with(self.sources.text(id), id, &mut self.names) {
             // Into an `Rc` as it is: making an `Rc<[Token]>` would copy the tokens, and for a
             // big mesh2 file they are most of the parse's memory (40 bytes a token).
             Ok(mut t) => {
