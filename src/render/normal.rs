@@ -87,7 +87,7 @@ fn perturb_with(nd: &Normal, t: &Transform, p: DVec3, n: DVec3) -> DVec3 {
     // function's samples on normavg, on the instruction after that load).
     let mut ln = by_coordinates(&ln);
     if !nd.no_bump_scale {
-        ln = ln.normalize_or_zero();
+        ln = unit_or_zero(ln);
     }
     // By coordinates: `local`'s arms (inlined) leave their result in one stack slot by
     // three 8-byte stores, and the merge loaded its x-y pair as 16 bytes, which the store
@@ -99,6 +99,20 @@ fn perturb_with(nd: &Normal, t: &Transform, p: DVec3, n: DVec3) -> DVec3 {
         n
     } else {
         out
+    }
+}
+
+/// `v.normalize_or_zero()`, bit for bit, without its square root and division where |v|² is
+/// exactly 1: then the length is √1 = 1, its reciprocal 1, and v·1 is v (−0 included). The
+/// normal going into a pattern is mostly unit already (a plane's or box's axis, the normal
+/// `normal_map` made unit before each entry normalises it again), and the two were a
+/// dependent chain of a `sqrtsd` and a `divsd` on every perturbed normal.
+#[inline(always)]
+fn unit_or_zero(v: DVec3) -> DVec3 {
+    if v.dot(v) == 1.0 {
+        v
+    } else {
+        v.normalize_or_zero()
     }
 }
 
@@ -139,7 +153,7 @@ fn local(nd: &Normal, lp: DVec3, ln: DVec3) -> DVec3 {
             let q = pattern::warped(pat, lp);
             let i = pattern::index_warped(pat, q).min(items.len().saturating_sub(1));
             match items.get(i) {
-                Some(item) => perturb(item, q, ln.normalize_or_zero()),
+                Some(item) => perturb(item, q, unit_or_zero(ln)),
                 None => ln,
             }
         }
@@ -265,7 +279,7 @@ fn waves(pat: &Pattern, special: Special, lp: DVec3, ln: DVec3, amount: f64) -> 
 /// `normal_map`: the normals around the pattern's value, blended by their weights; `average`
 /// blends all of them.
 fn normal_map(pat: &Pattern, map: &[(f64, Normal)], lp: DVec3, ln: DVec3) -> DVec3 {
-    let n = ln.normalize_or_zero();
+    let n = unit_or_zero(ln);
     if matches!(pat.kind, PatternKind::Average) {
         let q = pattern::warped(pat, lp);
         let total: f64 = map.iter().map(|e| e.0).sum();
@@ -403,6 +417,45 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// `unit_or_zero` is glam's `normalize_or_zero` to the bit: axes and their negatives,
+    /// vectors made unit once and twice (most of those have |v|² = 1, the rest not), tiny,
+    /// huge, zero, −0, infinite and NaN components.
+    #[test]
+    fn unit_or_zero_is_normalize_or_zero() {
+        use crate::geom::test_rng::Lcg;
+        let bits = |v: DVec3| v.to_array().map(f64::to_bits);
+        let mut cases = vec![
+            DVec3::ZERO,
+            -DVec3::ZERO,
+            DVec3::new(-0.0, 1.0, 0.0),
+            DVec3::new(0.0, -0.0, -1.0),
+            DVec3::new(1e-300, 0.0, 0.0),
+            DVec3::new(1e300, 1e300, 0.0),
+            DVec3::new(f64::INFINITY, 0.0, 0.0),
+            DVec3::new(f64::NAN, 1.0, 0.0),
+            DVec3::new(f64::MIN_POSITIVE, -f64::MIN_POSITIVE, 0.0),
+            DVec3::new(1.0 + f64::EPSILON, 0.0, 0.0),
+            DVec3::new(1.0 - f64::EPSILON / 2.0, 0.0, 0.0),
+        ];
+        for a in [DVec3::X, DVec3::Y, DVec3::Z] {
+            cases.push(a);
+            cases.push(-a);
+        }
+        let mut rng = Lcg(36);
+        for k in 0..200_000 {
+            let v = rng.vec(10f64.powi(k % 7 - 3));
+            let u = v.normalize_or_zero();
+            cases.extend([v, u, u.normalize_or_zero(), u * (1.0 + f64::EPSILON)]);
+        }
+        let mut exact = 0;
+        for v in cases {
+            exact += (v.dot(v) == 1.0) as usize;
+            assert_eq!(bits(unit_or_zero(v)), bits(v.normalize_or_zero()), "{v:?}");
+        }
+        // The short way is taken for many of them (the test would prove little otherwise).
+        assert!(exact > 100_000, "{exact}");
     }
 
     #[test]

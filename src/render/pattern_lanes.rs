@@ -1,6 +1,6 @@
 //! A pattern's value at a normal's four samples together (`values_warped4`): fractals'
-//! orbits and the noise patterns' lattice walks stepped side by side, gradient and radial
-//! without `raw`'s call and dispatch per sample.
+//! orbits and the noise patterns' lattice walks stepped side by side, gradient, radial,
+//! onion, spherical and cylindrical without `raw`'s call and dispatch per sample.
 
 use crate::math::{by_coordinates, DVec3};
 use crate::scene::pattern::{Pattern, PatternKind};
@@ -8,6 +8,7 @@ use crate::scene::pattern::{Pattern, PatternKind};
 use super::fractal::{fractal2_lanes4, magnet_lanes4};
 use super::noise;
 use super::pattern::{agate, gradient, radial, shape, shape_inline, value_warped, wood};
+use super::pattern_wrap::fmod;
 
 /// `values_warped4` of the noise patterns, whose samples' lattice walks go together; None
 /// for the others. Always inlined: its one caller's other checks had it moved out of line.
@@ -83,6 +84,22 @@ pub fn values_warped4(pat: &Pattern, qs: &[DVec3; 4]) -> [f64; 4] {
                 *o = shape_inline(pat, radial(by_coordinates(q)));
             }
         }
+        // The distance patterns likewise (slopemap's onion normals): `raw`'s expressions.
+        PatternKind::Onion => {
+            for (o, q) in out.iter_mut().zip(qs) {
+                *o = shape_inline(pat, fmod(by_coordinates(q).length(), 1.0));
+            }
+        }
+        PatternKind::Spherical => {
+            for (o, q) in out.iter_mut().zip(qs) {
+                *o = shape_inline(pat, 1.0 - by_coordinates(q).length().min(1.0));
+            }
+        }
+        PatternKind::Cylindrical => {
+            for (o, q) in out.iter_mut().zip(qs) {
+                *o = shape_inline(pat, 1.0 - (q.x * q.x + q.z * q.z).sqrt().min(1.0));
+            }
+        }
         _ => {
             for (o, &q) in out.iter_mut().zip(qs) {
                 *o = value_warped(pat, q);
@@ -120,6 +137,9 @@ mod tests {
             // Not noise, but with their own four-sample paths (`shape_inline`).
             PatternKind::Gradient(DVec3::new(0.3, 1.0, -0.7)),
             PatternKind::Radial,
+            PatternKind::Onion,
+            PatternKind::Spherical,
+            PatternKind::Cylindrical,
         ];
         for kind in kinds {
             for (gen, turbulence, wave) in [
@@ -130,9 +150,12 @@ mod tests {
                 let mut p = pat(kind.clone());
                 (p.noise_generator, p.turbulence, p.wave) = (gen, turbulence, wave);
                 p.frequency = 1.3;
-                for n in 0..500 {
+                for n in 0..1500 {
                     let t = n as f64 * 0.71;
-                    let c = DVec3::new(t.sin() * 3.0, t * 0.01, t.cos() - 2.0);
+                    // Near the origin too (inside spherical's and cylindrical's unit
+                    // distance), and far out (onion's remainders of big lengths).
+                    let r = [0.2, 3.0, 4.0e5][n % 3];
+                    let c = DVec3::new(t.sin() * r, t * 0.01, t.cos() * r - 0.1);
                     let qs = [0.0, 0.003, -0.004, 0.2].map(|d| c + DVec3::new(d, 2.0 * d, -d));
                     let want = qs.map(|q| value_warped(&p, q).to_bits());
                     assert_eq!(values_warped4(&p, &qs).map(f64::to_bits), want, "{kind:?}");
