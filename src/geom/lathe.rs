@@ -287,7 +287,7 @@ impl Lathe {
         let mut hh = pc.y;
         hh[0] -= o.y;
         if pc.is_linear() && hh[0].is_finite() {
-            return self.sloped_linear(pc, i, o, [a, b, c], dy, hh, leave, found);
+            return self.sloped_linear(pc, i, o, [a, b, c], dy, hh[0], leave, found);
         }
         self.sloped_general(pc, i, o, [a, b, c], dy, hh, leave, found);
     }
@@ -325,6 +325,10 @@ impl Lathe {
     /// sums start from `+0`, which only matters for a `−0` product: `h0·h1` keeps its `0.0 +`,
     /// and `h1²` is never `−0`, so adding `h0·0 = ±0` before it and `0·h0` after it (finite
     /// `h0`, checked by the caller) leaves it as it is.
+    ///
+    /// Only `hh[0]` (`pc.y[0] − oy`) comes from the caller, in a register; the other terms are
+    /// read from the piece. The caller's `hh` array was on the stack, just written, and the
+    /// paired load of its terms 1 and 2 waited on a failed store forward on every call.
     #[allow(clippy::too_many_arguments)]
     #[inline(never)]
     fn sloped_linear(
@@ -334,10 +338,11 @@ impl Lathe {
         o: DVec3,
         [a, b, c]: [f64; 3],
         dy: f64,
-        hh: [f64; 4],
+        h0: f64,
         leave: Option<Leave>,
         found: &mut impl FnMut(f64, usize, f64),
     ) {
+        let hh = [h0, pc.y[1], pc.y[2]];
         let r2 = &self.r2[i];
         let h2 = [
             hh[0] * hh[0],

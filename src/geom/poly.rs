@@ -138,12 +138,20 @@ fn quadratic(c: &[f64], out: &mut Roots, with_vertex: bool) {
 /// grazing rays, which are equally ambiguous in POV-Ray.
 pub fn roots_in(c: &[f64], lo: f64, hi: f64) -> Roots {
     let mut out = Roots::new();
+    roots_in_into(c, lo, hi, &mut out);
+    out
+}
+
+/// [`roots_in`] appended to a list the caller holds: the roots in place, where a returned
+/// `Roots` (136 bytes) could be copied by a `memcpy` call into the caller's frame and its
+/// length read back from that copy's fresh stores (the spline sweeps' `sign_changes`).
+#[inline(always)]
+pub fn roots_in_into(c: &[f64], lo: f64, hi: f64, out: &mut Roots) {
     if let Some(c) = trim(c) {
         if lo <= hi && !surely_no_root(c, lo, hi) {
-            isolate(c, lo, hi, &mut out, false);
+            isolate(c, lo, hi, out, false);
         }
     }
-    out
 }
 
 /// [`roots_in`] for a polynomial of degree at most 2 whose interval end `hi` costs something

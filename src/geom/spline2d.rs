@@ -14,7 +14,7 @@
 //! even-odd counts never double or lose a vertex.
 
 use crate::geom::bernstein::{BINOM, TO_BERNSTEIN};
-use crate::geom::poly::{eval, eval_with_derivative, roots_in};
+use crate::geom::poly::{eval, eval_with_derivative, roots_in_into, Roots};
 
 /// A point of a 2-D curve: (x, z) for prisms, (radius, height) for lathes.
 pub type P2 = [f64; 2];
@@ -207,7 +207,7 @@ fn changes_body<R>(
     for i in 1..n {
         d[i - 1] = c[i] * i as f64;
     }
-    let (line_root, roots);
+    let (line_root, mut roots);
     let crit: &[f64] = if n == 3 {
         // `roots_in` of a line, as it computes it: `d[1] = 2 c[2]` is not zero (nor is
         // `c[2]`), so it is the line's one root, kept when in [lo, hi].
@@ -218,7 +218,8 @@ fn changes_body<R>(
             &[]
         }
     } else if n > 2 {
-        roots = roots_in(&d[..n - 1], lo, hi);
+        roots = Roots::new();
+        roots_in_into(&d[..n - 1], lo, hi, &mut roots);
         &roots
     } else {
         &[]
