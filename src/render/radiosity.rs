@@ -16,7 +16,7 @@ use std::sync::Mutex;
 
 use rayon::prelude::*;
 
-use crate::math::{DVec3, Ray};
+use crate::math::{by_coordinates, DVec3, Ray};
 use crate::scene::build::Scene;
 use crate::scene::desc::RadiositySettings;
 use crate::scene::object::{Scratch, SurfaceHit};
@@ -112,6 +112,10 @@ impl<'a> Tracer<'a> {
         if level > rad.set.recursion_limit {
             return DVec3::ZERO;
         }
+        // The point and normal by coordinates: the caller's copies are stored as x-y pairs and
+        // z, and read whole they were loaded as x and a y-z pair (`near_memo`'s key of the
+        // normal, the `rad_seen` entry built from them), stalls on the store buffer.
+        let (p, n) = (by_coordinates(&p), by_coordinates(&n));
         // Deeper levels take one valid sample: asking nearest_count of them there multiplies
         // the samples gathered per ray tree beyond what povray's statistics show.
         let need = if level == 1 && (rad.pretrace || rad.set.always_sample) {
@@ -447,7 +451,7 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
                     let (hit_at_now, hits_now) = (&hit_at, &hits);
                     run.par_iter()
                         .map_init(
-                            || Kept::take(&kept),
+                            || Kept::take(&kept, &rays),
                             |kept, &(ix, iy)| {
                                 let (ctx, own) = (&mut kept.pair.0, &mut kept.pair.1);
                                 let mut x = ((ix as f64 + 0.5) * block).min(w - 0.5);
@@ -483,7 +487,6 @@ pub fn pretrace(scene: &Scene, s: &RenderSettings, base: &Tracer) -> Option<Cach
                                     }
                                     _ => tracer.trace_pretrace(ray, ctx),
                                 };
-                                rays.fetch_add(std::mem::take(&mut ctx.rays), Ordering::Relaxed);
                                 // Copied out, so the scratch keeps its buffers: most
                                 // positions gather nothing, and an empty `Vec` costs no
                                 // allocation.
@@ -654,23 +657,29 @@ type Memos = (RadiosityMemo, ProbeMemo);
 /// scratches themselves cannot: they borrow the phase's tracer, which borrows the cache.) A
 /// memo speeds the lookups and never changes what they find (so any split of the work among
 /// threads gives the same bytes), so which job gets which memos does not matter.
+/// The job's rays are counted in its scratch and added to the pass's count once, when the
+/// job is done: a locked add per position drained the store buffer (a fifth of the pass
+/// closure's own samples on rad_def_test_37 sat after it).
 struct Kept<'p, 'a, 'b> {
     pair: (Scratch<'a>, Scratch<'b>),
     pool: &'p Mutex<Vec<Memos>>,
+    rays: &'p AtomicU64,
 }
 
 impl<'p> Kept<'p, '_, '_> {
-    fn take(pool: &'p Mutex<Vec<Memos>>) -> Self {
+    fn take(pool: &'p Mutex<Vec<Memos>>, rays: &'p AtomicU64) -> Self {
         let mut pair = <(Scratch, Scratch)>::default();
         if let Some((memo, probe)) = pool.lock().ok().and_then(|mut v| v.pop()) {
             (pair.0.rad_memo, pair.0.rad_probe) = (memo, probe);
         }
-        Kept { pair, pool }
+        Kept { pair, pool, rays }
     }
 }
 
 impl Drop for Kept<'_, '_, '_> {
     fn drop(&mut self) {
+        // The position's scratch alone, as before: the crossings' scratch counts no ray.
+        self.rays.fetch_add(self.pair.0.rays, Ordering::Relaxed);
         if let Ok(mut v) = self.pool.lock() {
             let ctx = &mut self.pair.0;
             v.push((

@@ -139,13 +139,16 @@ pub(super) unsafe fn blend_listed_avx(
         let w = _mm256_sqrt_pd(_mm256_sub_pd(one, _mm256_div_pd(err, vbound)));
         let mut ws = [0.0; 4];
         _mm256_storeu_pd(ws.as_mut_ptr(), w);
-        for (k, (&i, &w)) in q.ids.iter().zip(&ws).enumerate() {
-            if take & (1 << k) != 0 {
-                // `Blend::take`'s operations.
-                sum += irr[i as usize] * w;
-                weight += w;
-                count += 1;
-            }
+        // The taken lanes by their set bits, in the ids' order: one loop whose length is the
+        // count taken, rather than a branch per lane on an unpredictable mask.
+        let mut left = take as u32;
+        while left != 0 {
+            let k = left.trailing_zeros() as usize;
+            left &= left - 1;
+            // `Blend::take`'s operations.
+            sum += irr[q.ids[k] as usize] * ws[k];
+            weight += ws[k];
+            count += 1;
         }
     }
     (b.sum, b.weight, b.count) = (sum, weight, count);
@@ -429,13 +432,15 @@ unsafe fn blend_taken_avx(
         }
         let mut ws = [0.0; 4];
         _mm256_storeu_pd(ws.as_mut_ptr(), w);
-        for k in 0..4 {
-            // `Blend::take`'s operations, in the ids' order.
-            if take & (1 << k) != 0 {
-                b.take(irr[q[k] as usize], Some(ws[k]));
-                if done(b) {
-                    return false;
-                }
+        // `Blend::take`'s operations, in the ids' order, by the taken lanes' set bits (as
+        // in `blend_listed_avx`).
+        let mut left = take as u32;
+        while left != 0 {
+            let k = left.trailing_zeros() as usize;
+            left &= left - 1;
+            b.take(irr[q[k] as usize], Some(ws[k]));
+            if done(b) {
+                return false;
             }
         }
     }
