@@ -118,6 +118,29 @@ enum Orbit {
     },
 }
 
+/// The bisection's next four midpoints of [a, c] where the ends' orbits decided `ga` and `gc`
+/// off the bailout (`Julia::is_in4`, opposite signs across the crossing): the halvings toward
+/// the zero of the line through them. Near the surface that number is smooth along the ray
+/// (the last iterate's squared norm), so the zero is close to the crossing and a round takes
+/// up to four halvings where the fixed plan takes two or three. Only which midpoints are asked
+/// changes: each halving still takes its own midpoint's answer.
+fn chain_plan(a: f64, c: f64, ga: f64, gc: f64) -> Option<[f64; 4]> {
+    if (ga > 0.0) == (gc > 0.0) || !(ga.is_finite() && gc.is_finite()) {
+        return None;
+    }
+    let x = a + (c - a) * (ga / (ga - gc));
+    let (mut lo, mut hi) = (a, c);
+    Some(std::array::from_fn(|_| {
+        let m = 0.5 * (lo + hi);
+        if m < x {
+            lo = m;
+        } else {
+            hi = m;
+        }
+        m
+    }))
+}
+
 /// How far the march advances after a sample: the distance estimate, at least `min_step`.
 fn march_step(orbit: &Orbit, min_step: f64) -> f64 {
     match *orbit {
@@ -561,18 +584,21 @@ impl Julia {
                     // Midpoints are tested four at a time (`is_in_n`): this one, both
                     // midpoints that can follow it, and the one after the right one; a
                     // midpoint found among them takes its answer from there.
-                    let mut known = [(0.0f64, false); 4];
+                    let mut known = [(0.0f64, false, f64::NAN); 4];
                     let mut n_known = 0;
+                    // Where the ends' orbits decided against the bailout (`is_in4`), once a
+                    // round has answered for them.
+                    let (mut ga, mut gc) = (f64::NAN, f64::NAN);
                     while c - a > BISECT_TOL {
                         let m = 0.5 * (a + c);
                         if m <= a || m >= c {
                             break;
                         }
-                        let inside = match known[..n_known]
+                        let (inside, g) = match known[..n_known]
                             .iter()
                             .find(|k| k.0.to_bits() == m.to_bits())
                         {
-                            Some(k) => k.1,
+                            Some(k) => (k.1, k.2),
                             None => {
                                 // The hit ends within [a, c] (module doc of the march): at
                                 // or below `tmin` it is turned away (`hit > tmin` fails after
@@ -597,20 +623,30 @@ impl Julia {
                                     let m2 = 0.5 * (a + m);
                                     let m3 = 0.5 * (a + m2);
                                     [m, m2, m3, 0.5 * (a + m3)]
+                                } else if let Some(ts) = chain_plan(a, c, ga, gc) {
+                                    ts
                                 } else {
                                     let mr = 0.5 * (m + c);
                                     [m, 0.5 * (a + m), mr, 0.5 * (mr + c)]
                                 };
-                                let ins = self.is_in_n(ts.map(|s| o + u * s));
-                                known = std::array::from_fn(|i| (ts[i], ins[i]));
+                                let ps = ts.map(|s| o + u * s);
+                                // Only the quaternion lanes tell where their orbits decided:
+                                // the other sets ask as before (fractal4 6 % slower through
+                                // `is_in4`'s pass-through, measured).
+                                let (ins, gs) = if self.algebra == Algebra::Quaternion {
+                                    self.is_in4(ps)
+                                } else {
+                                    (self.is_in_n(ps), [f64::NAN; 4])
+                                };
+                                known = std::array::from_fn(|i| (ts[i], ins[i], gs[i]));
                                 n_known = 4;
-                                ins[0]
+                                (ins[0], gs[0])
                             }
                         };
                         if inside == was_in {
-                            a = m;
+                            (a, ga) = (m, g);
                         } else {
-                            c = m;
+                            (c, gc) = (m, g);
                         }
                     }
                     let hit = 0.5 * (a + c);

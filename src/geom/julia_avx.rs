@@ -15,8 +15,8 @@
 
 use std::arch::x86_64::{
     __m256d, _mm256_add_pd, _mm256_blendv_pd, _mm256_cmp_pd, _mm256_loadu_pd, _mm256_movemask_pd,
-    _mm256_mul_pd, _mm256_set1_pd, _mm256_set_pd, _mm256_sqrt_pd, _mm256_storeu_pd, _mm256_sub_pd,
-    _CMP_GT_OQ, _CMP_LE_OQ,
+    _mm256_mul_pd, _mm256_set1_pd, _mm256_set_pd, _mm256_setzero_pd, _mm256_sqrt_pd,
+    _mm256_storeu_pd, _mm256_sub_pd, _CMP_GT_OQ, _CMP_LE_OQ,
 };
 
 use super::{Julia, KEEP, Q};
@@ -105,40 +105,54 @@ unsafe fn step<const CUBE: bool>(h: &Q4, c: &Q4) -> Q4 {
     std::array::from_fn(|i| add(f[i], c[i]))
 }
 
-/// `quaternion_orbit::<CUBE, false>` of four points, as inside-ness (`Julia::inside_n`).
+/// `quaternion_orbit::<CUBE, false>` of four points, as inside-ness (`Julia::inside_n`), and
+/// per lane the squared norm `s` its orbit decided at less `bail_sq` (`Julia::is_in4`): above
+/// zero for an escape, at or below it for an orbit that ran to its end; NaN where the keep
+/// radius decided (its last norms unknown). The bisection reads it only to choose midpoints.
 ///
 /// # Safety
 /// The CPU must have AVX.
 #[target_feature(enable = "avx")]
-pub(super) unsafe fn inside4<const CUBE: bool>(j: &Julia, h: [Q; 4]) -> [bool; 4] {
+pub(super) unsafe fn inside4<const CUBE: bool>(j: &Julia, h: [Q; 4]) -> ([bool; 4], [f64; 4]) {
     let steps = j.max_iteration.saturating_sub(1);
     let bail_sq = _mm256_set1_pd(j.bail_sq);
     let mut h = lanes(&h);
     // Lane bits: `decided` once a lane's lone orbit would have returned, `out` where it
     // returned outside (an escape; the kept radius answers inside).
-    let mut out = _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_GT_OQ>(norm_sq(&h), bail_sq)) as u32;
+    let mut s = norm_sq(&h);
+    let mut out = _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_GT_OQ>(s, bail_sq)) as u32;
     let mut decided = out;
+    let mut found = s;
     if decided != 15 {
         let c: Q4 = j.param.map(|x| _mm256_set1_pd(x));
+        let nan = _mm256_set1_pd(f64::NAN);
         for k in 0..steps {
             h = step::<CUBE>(&h, &c);
-            let s = norm_sq(&h);
+            s = norm_sq(&h);
             let esc = _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_GT_OQ>(s, bail_sq)) as u32;
             let left = (steps - 1 - k) as usize;
-            let kept = if left < KEEP {
+            let (kept, kept_v) = if left < KEEP {
                 let r = _mm256_set1_pd(j.keep_sq[left]);
-                _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LE_OQ>(s, r)) as u32
+                let v = _mm256_cmp_pd::<_CMP_LE_OQ>(s, r);
+                (_mm256_movemask_pd(v) as u32, v)
             } else {
-                0
+                (0, _mm256_setzero_pd())
             };
+            let new = (esc | kept) & !decided;
+            if new != 0 {
+                found = _mm256_blendv_pd(found, _mm256_blendv_pd(s, nan, kept_v), lane_mask(new));
+            }
             out |= esc & !decided;
             decided |= esc | kept;
             if decided == 15 {
                 break;
             }
         }
+        found = _mm256_blendv_pd(found, s, lane_mask(!decided & 15));
     }
-    std::array::from_fn(|i| out >> i & 1 == 0)
+    let mut g = [0.0; 4];
+    _mm256_storeu_pd(g.as_mut_ptr(), _mm256_sub_pd(found, bail_sq));
+    (std::array::from_fn(|i| out >> i & 1 == 0), g)
 }
 
 /// `quaternion_orbit::<CUBE, true>` of four points (`Julia::orbits_n`): lane bits of the

@@ -104,7 +104,7 @@ impl Julia {
         if N == 4 && self.algebra == super::Algebra::Quaternion && has_avx() {
             let h: [Q; 4] = std::array::from_fn(|i| self.lift(p[i]).0);
             // SAFETY: the CPU has AVX (checked just above).
-            let ins = unsafe {
+            let (ins, _) = unsafe {
                 if self.func == JuliaFn::Cube {
                     avx::inside4::<true>(self, h)
                 } else {
@@ -127,6 +127,25 @@ impl Julia {
             super::Algebra::Quaternion => self.inside_n::<N, false>(p.map(|p| self.lift(p).0)),
             super::Algebra::Hypercomplex => p.map(|p| self.is_in(p)),
         }
+    }
+
+    /// `is_in_n` of four points, and per point where its orbit decided against the bailout
+    /// (`avx::inside4`: NaN where not known), for the bisection's choice of midpoints.
+    #[inline]
+    pub(super) fn is_in4(&self, p: [DVec3; 4]) -> ([bool; 4], [f64; 4]) {
+        #[cfg(target_arch = "x86_64")]
+        if self.algebra == super::Algebra::Quaternion && has_avx() {
+            let h: [Q; 4] = std::array::from_fn(|i| self.lift(p[i]).0);
+            // SAFETY: the CPU has AVX (checked just above).
+            return unsafe {
+                if self.func == JuliaFn::Cube {
+                    avx::inside4::<true>(self, h)
+                } else {
+                    avx::inside4::<false>(self, h)
+                }
+            };
+        }
+        (self.is_in_n(p), [f64::NAN; 4])
     }
 
     /// `p.map(|p| self.orbit(p))`, the orbits run side by side where they are quaternion

@@ -644,6 +644,13 @@ fn avx_lanes_are_the_scalar_code() {
             let bits = |(h, t): (Q, [Q; 3])| (h.map(b), t.map(|q| q.map(b)));
             assert_eq!(bits(got), bits(want), "{c:?} at {p:?}");
             assert_eq!(j.is_in_n(p), p.map(|p| j.is_in(p)), "{c:?} at {p:?}");
+            // `is_in4`'s numbers lie on the side of the bailout its answers say (or are NaN).
+            let (ins, g) = j.is_in4(p);
+            assert_eq!(ins, j.is_in_n(p));
+            assert!(ins
+                .iter()
+                .zip(g)
+                .all(|(&i, g)| g.is_nan() || (g > 0.0) != i));
             let lone = p.map(|p| j.orbit(p));
             let four = j.orbit_n(p);
             for (a, b) in four.iter().zip(&lone) {
