@@ -7,6 +7,7 @@
 //! search distance, so a nearest-hit query prunes everything behind the first hit found.
 
 use std::borrow::Cow;
+use std::mem::MaybeUninit;
 
 use rayon::prelude::*;
 
@@ -207,7 +208,10 @@ impl Bvh {
         if self.prims.is_empty() || !holds(&self.root_box) {
             return;
         }
-        let mut stack = [Ref::default(); STACK];
+        // Left uninitialised, as the ray walk's (walk.rs): zeroing its 1 KB was a `memset`
+        // call on every query whose point lies in the root box (each fogged camera ray's
+        // inside test, each indexed union's `any_at`).
+        let mut stack = [const { MaybeUninit::<Ref>::uninit() }; STACK];
         let mut sp = 0;
         let mut at = self.root;
         loop {
@@ -222,7 +226,7 @@ impl Bvh {
                 let n = &self.nodes[at.index as usize];
                 let (ina, inb) = (holds(&n.boxes.get(0)), holds(&n.boxes.get(1)));
                 if inb && sp < STACK {
-                    stack[sp] = n.child[1];
+                    stack[sp].write(n.child[1]);
                     sp += 1;
                 }
                 if ina {
@@ -234,7 +238,9 @@ impl Bvh {
                 return;
             }
             sp -= 1;
-            at = stack[sp];
+            // SAFETY: entries below `sp` were all written by the push above, and `sp` only
+            // counts down over them.
+            at = unsafe { stack[sp].assume_init() };
         }
     }
 

@@ -72,18 +72,18 @@ impl<'a> Tracer<'a> {
     #[inline(never)]
     fn sky_over(&self, r: f64, g: f64, b: f64, clear: f64, dir: &DVec3) -> Seen {
         let s = self.scene;
-        let dir = *dir;
         if s.legacy_sky_filter {
-            return legacy_sky(s, dir, r, g, b, clear);
+            return legacy_sky(s, *dir, r, g, b, clear);
         }
         let mut seen = Seen {
             rgb: DVec3::new(r, g, b),
             clear,
         };
-        // Most skies are one layer: see `sky::only_layer_with`.
+        // Most skies are one layer: see `sky::only_layer_with` (which reads `dir` itself).
         if let [layer] = &s.sky[..] {
             return sky::only_layer_with(layer, dir, |c| over(seen, c));
         }
+        let dir = *dir;
         // A plain colour needs no direction (most skies are one layer of one colour).
         let mut d = None;
         for layer in &s.sky {

@@ -403,7 +403,20 @@ impl Object {
     /// media around the camera; a solid member around the camera hides it until the ray
     /// leaves that member), other objects by their own flag (an intersection or merge with a
     /// hollow member is solid).
+    #[inline(always)]
     pub fn solid_at(&self, p: DVec3) -> bool {
+        // An unclipped leaf, nearly every top-level object, answered in the caller's loop
+        // (the fog's inside test at every camera ray): `!hollow && inside` as below, without
+        // the call that took the point through memory.
+        match (&self.kind, self.clip.is_empty()) {
+            (ObjKind::Shape(_, _), true) => !self.hollow && self.leaf_inside(p) == Some(true),
+            _ => self.solid_at_node(p),
+        }
+    }
+
+    /// `solid_at` of a CSG node or a clipped leaf.
+    #[inline(never)]
+    fn solid_at_node(&self, p: DVec3) -> bool {
         match &self.kind {
             ObjKind::Csg {
                 op: CsgOp::Union,
