@@ -137,6 +137,52 @@ fn leaning_arm() -> Component {
     }
 }
 
+/// The shadow-ray tests' rays: the leaning arm with four spheres (one negative), plain and
+/// sturm, `rays` random lines and rays started on each crossing of them (roots at t <=
+/// EPSILON in play) or at the line's origin, aimed at the blob or anywhere. Gives `f` the
+/// blob, its sturm flag, the ray, its listed crossings, the generator and a scratch.
+fn shadow_rays(
+    seed: u64,
+    rays: usize,
+    mut f: impl FnMut(&Blob, bool, &Ray, &[f64], &mut Lcg, &mut Vec<Hit>),
+) {
+    let mut arm = leaning_arm();
+    arm.transform = Transform::scale(DVec3::new(1.0, 0.7, 1.3));
+    let comps = vec![
+        arm,
+        sphere(DVec3::new(0.0, 0.8, 0.0), 1.0, -1.5),
+        sphere(DVec3::new(0.9, 0.0, 0.9), 0.8, 1.0),
+        sphere(DVec3::new(-0.9, 0.0, -0.5), 0.7, 1.0),
+        sphere(DVec3::new(2.5, 0.0, 0.0), 0.6, 1.0),
+    ];
+    let mut rng = Lcg(seed);
+    for sturm in [false, true] {
+        let b = Blob::new(&BlobData {
+            components: comps.clone(),
+            threshold: 0.4,
+            sturm,
+        });
+        let mut scratch = Vec::new();
+        for _ in 0..rays {
+            let o = rng.vec(8.0);
+            let d = rng.vec(2.0) - o * 0.2;
+            let first = hits(&b, o, d);
+            let starts = first.iter().map(|&t| o + d * t).chain([o]);
+            for p in starts.collect::<Vec<_>>() {
+                // Aimed at the blob, or anywhere.
+                let aim = if rng.next() < 0.7 {
+                    rng.vec(1.5)
+                } else {
+                    p + rng.vec(3.0)
+                };
+                let ray = Ray::new(p, (aim - p) * (0.3 + rng.next()));
+                let listed = hits(&b, ray.origin, ray.dir);
+                f(&b, sturm, &ray, &listed, &mut rng, &mut scratch);
+            }
+        }
+    }
+}
+
 #[test]
 fn first_hit_leaving_the_surface() {
     // Rays from crossings of the surface (shadow rays) and from points near it: the
@@ -196,52 +242,21 @@ fn any_hit_is_intersect_first() {
     // unpolished) answers as `intersect_first(..).is_some()`, for rays from the surface
     // (roots at t <= EPSILON deferred, `last` and the backlog in play) and from anywhere,
     // `tmax` at every listed crossing, one ulp and 1 % either side, and elsewhere.
-    let mut arm = leaning_arm();
-    arm.transform = Transform::scale(DVec3::new(1.0, 0.7, 1.3));
-    let comps = vec![
-        arm,
-        sphere(DVec3::new(0.0, 0.8, 0.0), 1.0, -1.5),
-        sphere(DVec3::new(0.9, 0.0, 0.9), 0.8, 1.0),
-        sphere(DVec3::new(-0.9, 0.0, -0.5), 0.7, 1.0),
-        sphere(DVec3::new(2.5, 0.0, 0.0), 0.6, 1.0),
-    ];
-    let mut rng = Lcg(41);
     let (mut hit, mut total) = (0, 0);
-    for sturm in [false, true] {
-        let b = Blob::new(&BlobData {
-            components: comps.clone(),
-            threshold: 0.4,
-            sturm,
-        });
-        let mut scratch = Vec::new();
-        for _ in 0..2000 {
-            let o = rng.vec(8.0);
-            let d = rng.vec(2.0) - o * 0.2;
-            let first = hits(&b, o, d);
-            let starts = first.iter().map(|&t| o + d * t).chain([o]);
-            for p in starts.collect::<Vec<_>>() {
-                let aim = if rng.next() < 0.7 {
-                    rng.vec(1.5)
-                } else {
-                    p + rng.vec(3.0)
-                };
-                let ray = Ray::new(p, (aim - p) * (0.3 + rng.next()));
-                let listed = hits(&b, ray.origin, ray.dir);
-                let mut tmaxes = vec![f64::INFINITY, 0.0, EPSILON, rng.next() * 3.0];
-                for &t in &listed {
-                    let ulp = |k: i64| f64::from_bits((t.to_bits() as i64 + k) as u64);
-                    tmaxes.extend([t, ulp(-1), ulp(1), t * 0.99, t * 1.01]);
-                }
-                for tmax in tmaxes {
-                    let want = b.intersect_first(&ray, tmax, &mut scratch).is_some();
-                    let got = b.any_hit(&ray, tmax, &mut scratch);
-                    assert_eq!(got, want, "{ray:?} {tmax} {listed:?}");
-                    hit += usize::from(got);
-                    total += 1;
-                }
-            }
+    shadow_rays(41, 2000, |b, _, ray, listed, rng, scratch| {
+        let mut tmaxes = vec![f64::INFINITY, 0.0, EPSILON, rng.next() * 3.0];
+        for &t in listed {
+            let ulp = |k: i64| f64::from_bits((t.to_bits() as i64 + k) as u64);
+            tmaxes.extend([t, ulp(-1), ulp(1), t * 0.99, t * 1.01]);
         }
-    }
+        for tmax in tmaxes {
+            let want = b.intersect_first(ray, tmax, scratch).is_some();
+            let got = b.any_hit(ray, tmax, scratch);
+            assert_eq!(got, want, "{ray:?} {tmax} {listed:?}");
+            hit += usize::from(got);
+            total += 1;
+        }
+    });
     assert!(hit > total / 5 && hit < total * 4 / 5, "{hit} of {total}");
 }
 
@@ -308,81 +323,49 @@ fn any_kept_is_intersect_all() {
     // CSG and clipped shadow rays (and `gather_kept`, the CSG camera search): `any_kept` asks exactly the listed crossings below
     // tmax, nearest first, bit for bit, up to the first kept one, for rays from the
     // surface (roots at t <= EPSILON deferred) and from anywhere.
-    let mut arm = leaning_arm();
-    arm.transform = Transform::scale(DVec3::new(1.0, 0.7, 1.3));
-    let comps = vec![
-        arm,
-        sphere(DVec3::new(0.0, 0.8, 0.0), 1.0, -1.5),
-        sphere(DVec3::new(0.9, 0.0, 0.9), 0.8, 1.0),
-        sphere(DVec3::new(-0.9, 0.0, -0.5), 0.7, 1.0),
-        sphere(DVec3::new(2.5, 0.0, 0.0), 0.6, 1.0),
-    ];
-    let mut rng = Lcg(19);
     let (mut kept, mut total, mut skipped) = (0, 0, 0);
-    for sturm in [false, true] {
-        let b = Blob::new(&BlobData {
-            components: comps.clone(),
-            threshold: 0.4,
-            sturm,
+    shadow_rays(19, 3000, |b, sturm, ray, listed, rng, scratch| {
+        let tmax = if rng.next() < 0.5 {
+            f64::INFINITY
+        } else {
+            rng.next() * 3.0
+        };
+        // Keeps beyond a cut, or by the low bits (skips some, keeps a later one).
+        let (cut, odd) = (rng.next() * 2.0, rng.next() < 0.5);
+        let test = |t: f64| t > cut && (!odd || t.to_bits().is_multiple_of(3));
+        let below: Vec<f64> = listed.iter().copied().filter(|&t| t < tmax).collect();
+        let want = below.iter().position(|&t| test(t));
+        let mut asked = Vec::new();
+        let got = b.any_kept(ray, tmax, scratch, &mut |t| {
+            asked.push(t);
+            test(t)
         });
-        let mut scratch = Vec::new();
-        for _ in 0..3000 {
-            let o = rng.vec(8.0);
-            let d = rng.vec(2.0) - o * 0.2;
-            let first = hits(&b, o, d);
-            let starts = first.iter().map(|&t| o + d * t).chain([o]);
-            for p in starts.collect::<Vec<_>>() {
-                // Aimed at the blob, or anywhere.
-                let aim = if rng.next() < 0.7 {
-                    rng.vec(1.5)
-                } else {
-                    p + rng.vec(3.0)
-                };
-                let ray = Ray::new(p, (aim - p) * (0.3 + rng.next()));
-                let listed = hits(&b, ray.origin, ray.dir);
-                let tmax = if rng.next() < 0.5 {
-                    f64::INFINITY
-                } else {
-                    rng.next() * 3.0
-                };
-                // Keeps beyond a cut, or by the low bits (skips some, keeps a later one).
-                let (cut, odd) = (rng.next() * 2.0, rng.next() < 0.5);
-                let test = |t: f64| t > cut && (!odd || t.to_bits().is_multiple_of(3));
-                let below: Vec<f64> = listed.iter().copied().filter(|&t| t < tmax).collect();
-                let want = below.iter().position(|&t| test(t));
-                let mut asked = Vec::new();
-                let got = b.any_kept(&ray, tmax, &mut scratch, &mut |t| {
-                    asked.push(t);
-                    test(t)
-                });
-                assert_eq!(got, want.is_some(), "{ray:?} {tmax} {listed:?}");
-                // `gather_kept`: the least kept crossing it appends is the listing's first
-                // kept one below `tmax` (the listing is nearest first), bits and part.
-                let mut out = Vec::new();
-                b.gather_kept(&ray, tmax, &mut out, &mut scratch, &mut |t| test(t));
-                let least = out
-                    .iter()
-                    .filter(|h| h.t < tmax && test(h.t))
-                    .min_by(|a, b| a.t.total_cmp(&b.t))
-                    .map(|h| (h.t.to_bits(), h.part));
-                let mut all = Vec::new();
-                b.intersect_all(&ray, &mut all);
-                let first = all
-                    .iter()
-                    .find(|h| h.t < tmax && test(h.t))
-                    .map(|h| (h.t.to_bits(), h.part));
-                assert_eq!(least, first, "{ray:?} {tmax}");
-                if !sturm {
-                    let upto = want.map_or(below.len(), |k| k + 1);
-                    let bits = |v: &[f64]| v.iter().map(|t| t.to_bits()).collect::<Vec<_>>();
-                    assert_eq!(bits(&asked), bits(&below[..upto]), "{ray:?} {tmax}");
-                    skipped += usize::from(want.is_some_and(|k| k > 0));
-                }
-                kept += usize::from(got);
-                total += 1;
-            }
+        assert_eq!(got, want.is_some(), "{ray:?} {tmax} {listed:?}");
+        // `gather_kept`: the least kept crossing it appends is the listing's first
+        // kept one below `tmax` (the listing is nearest first), bits and part.
+        let mut out = Vec::new();
+        b.gather_kept(ray, tmax, &mut out, scratch, &mut |t| test(t));
+        let least = out
+            .iter()
+            .filter(|h| h.t < tmax && test(h.t))
+            .min_by(|a, b| a.t.total_cmp(&b.t))
+            .map(|h| (h.t.to_bits(), h.part));
+        let mut all = Vec::new();
+        b.intersect_all(ray, &mut all);
+        let first = all
+            .iter()
+            .find(|h| h.t < tmax && test(h.t))
+            .map(|h| (h.t.to_bits(), h.part));
+        assert_eq!(least, first, "{ray:?} {tmax}");
+        if !sturm {
+            let upto = want.map_or(below.len(), |k| k + 1);
+            let bits = |v: &[f64]| v.iter().map(|t| t.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&asked), bits(&below[..upto]), "{ray:?} {tmax}");
+            skipped += usize::from(want.is_some_and(|k| k > 0));
         }
-    }
+        kept += usize::from(got);
+        total += 1;
+    });
     // Both answers, and kept crossings beyond a skipped one, are exercised.
     assert!(
         kept > total / 10 && kept < total * 9 / 10,
