@@ -38,7 +38,8 @@ pub enum Lead {
     /// Leaf 0 of member 0, a folded intersection, is the lead.
     Folded,
     /// No lead, and member `k`, a box, has no crossing the node keeps (`shut_of`): the
-    /// searches do not gather it (they still ask it whether it holds the others' points).
+    /// searches and `Object::all_hits` do not gather it (they still ask it whether it holds
+    /// the others' points).
     Shut(u8),
 }
 

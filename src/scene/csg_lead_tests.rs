@@ -195,3 +195,62 @@ fn shut_boxes_answer_as_all_hits() {
         assert!(on_surface > 1000, "object {n}: {on_surface}");
     }
 }
+
+/// `all_hits` of a shut node (which leaves its box out) lists the same crossings, in the
+/// same order, bit for bit, as the same node with the box gathered (its lead cleared): none
+/// of the box's crossings is kept.
+#[test]
+fn shut_all_hits_answer_as_gathered() {
+    let scene = built(SHUT_SCENE);
+    let mut gathered = built(SHUT_SCENE);
+    for o in &mut gathered.objects {
+        if let super::super::object::ObjKind::Csg { cull: Some(c), .. } = &mut o.kind {
+            if matches!(c.lead, Lead::Shut(_)) {
+                c.lead = Lead::None;
+            }
+        }
+    }
+    let mut rng = Lcg(136);
+    let (mut sa, mut sb) = (Scratch::default(), Scratch::default());
+    let mut listed = 0;
+    for (n, (o, g)) in scene.objects.iter().zip(&gathered.objects).enumerate() {
+        let b = if o.bounds.is_finite() {
+            o.bounds
+        } else {
+            crate::math::Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0))
+        };
+        let c = b.center();
+        let size = (b.max - b.min).max_element();
+        for k in 0..20000 {
+            let from = c + rng.vec(3.0 * size);
+            let mut ray = Ray::new(from, c + rng.vec(size) - from);
+            if k % 2 == 1 {
+                // From a crossing, as the transparent shadow rays start.
+                sb.surface.clear();
+                g.all_hits(&ray, f64::INFINITY, &mut sb);
+                match sb.surface.first() {
+                    Some(h) => ray = Ray::new(ray.at(h.t), rng.vec(2.0)),
+                    None => continue,
+                }
+            }
+            let tmax = if rng.next() < 0.2 {
+                size
+            } else {
+                f64::INFINITY
+            };
+            sa.surface.clear();
+            sb.surface.clear();
+            o.all_hits(&ray, tmax, &mut sa);
+            g.all_hits(&ray, tmax, &mut sb);
+            let bits = |s: &Scratch| -> Vec<(u64, u32, bool)> {
+                s.surface
+                    .iter()
+                    .map(|h| (h.t.to_bits(), h.hit.part, h.flip))
+                    .collect()
+            };
+            assert_eq!(bits(&sa), bits(&sb), "object {n}, ray {k}");
+            listed += sa.surface.len();
+        }
+    }
+    assert!(listed > 10000, "{listed}");
+}

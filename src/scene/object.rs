@@ -353,6 +353,11 @@ impl Object {
                 let ray_faces = faces.filter(|_| faces::ray_ok(ray));
                 let rejecter = std::cell::Cell::new(usize::MAX);
                 let slabs = Slabs::new(ray.origin, inv_dir);
+                // A box member none of whose crossings is kept (`csg_lead::shut_of`: its
+                // faces lie outside where the others may hold a point), so none is listed:
+                // not gathered, as in `csg_first_hit` (whiltile's shadow rays through its
+                // crystal tiles). Only set without an index, where `i` is the member's place.
+                let shut = cull.as_deref().map_or(usize::MAX, |c| c.lead.shut());
                 // Member `i` is `c`; in a union's index `c` may be a leaf of an opened member
                 // union (its number then does not matter: a union keeps every crossing).
                 // In member order, as the scan: callers see crossings in this order. The
@@ -367,7 +372,7 @@ impl Object {
                     |c: &'a Object, i: usize, s: &mut Scratch<'a>| {
                         // A child whose box the ray misses adds no crossings (transparent shadows
                         // through a union of many parts would otherwise test every part).
-                        if !slabs.hits(&c.bounds, tmax) {
+                        if i == shut || !slabs.hits(&c.bounds, tmax) {
                             return;
                         }
                         // Each child's crossings are appended, then filtered in place.
