@@ -32,6 +32,53 @@ const SCENE: &str = r#"
     intersection { box { -1, 1 } object { Disk_X scale 0.9 } }
 "#;
 
+/// 20,000 rays around a node: aimed near `c` from within three `size`s of it, so that most
+/// meet it, a fifth with `tmax` = `size`; every other one restarted where the first ray meets
+/// `o` (the reference's answer), as shadow rays leave a surface, and skipped when it misses.
+/// Gives `f` the ray's number, the ray, its `tmax` and `sb`; returns how many started on the
+/// surface.
+fn rays_around<'a>(
+    o: &'a Object,
+    c: DVec3,
+    size: f64,
+    rng: &mut Lcg,
+    sb: &mut Scratch<'a>,
+    mut f: impl FnMut(usize, &Ray, f64, &mut Scratch<'a>),
+) -> usize {
+    let mut on_surface = 0;
+    for k in 0..20000 {
+        let from = c + rng.vec(3.0 * size);
+        let mut ray = Ray::new(from, c + rng.vec(size) - from);
+        let tmax = if rng.next() < 0.2 {
+            size
+        } else {
+            f64::INFINITY
+        };
+        if k % 2 == 1 {
+            match reference(o, &ray, f64::INFINITY, sb) {
+                Some(h) => {
+                    ray = Ray::new(ray.at(h.t), rng.vec(2.0));
+                    on_surface += 1;
+                }
+                None => continue,
+            }
+        }
+        f(k, &ray, tmax, sb);
+    }
+    on_surface
+}
+
+/// The centre and largest extent of a node's bounds, or of the unit box where they are
+/// infinite (an inverted member).
+fn centre_and_size(o: &Object) -> (DVec3, f64) {
+    let b = if o.bounds.is_finite() {
+        o.bounds
+    } else {
+        crate::math::Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0))
+    };
+    (b.center(), (b.max - b.min).max_element())
+}
+
 #[test]
 fn leads_answer_as_all_hits() {
     let scene = built(SCENE);
@@ -61,33 +108,15 @@ fn leads_answer_as_all_hits() {
         // Around the lead (an inverted node's own bounds are infinite).
         let c = lead.bounds.center();
         let size = (lead.bounds.max - lead.bounds.min).max_element();
-        let (mut on_surface, mut after, mut before) = (0, 0, 0);
-        for k in 0..20000 {
-            // Aimed near the object, so that most rays meet it.
-            let from = c + rng.vec(3.0 * size);
-            let mut ray = Ray::new(from, c + rng.vec(size) - from);
-            let tmax = if rng.next() < 0.2 {
-                size
-            } else {
-                f64::INFINITY
-            };
-            // Every other ray leaves the surface where a first ray met it, as shadow rays do.
-            if k % 2 == 1 {
-                match reference(o, &ray, f64::INFINITY, &mut sb) {
-                    Some(h) => {
-                        ray = Ray::new(ray.at(h.t), rng.vec(2.0));
-                        on_surface += 1;
-                    }
-                    None => continue,
-                }
-            }
-            after += beyond_after(&ray, &lead.bounds, EPSILON) as usize;
-            if let Some(h) = reference(o, &ray, tmax, &mut sb) {
-                before += beyond_before(&ray, &lead.bounds, h.t) as usize;
+        let (mut after, mut before) = (0, 0);
+        let on_surface = rays_around(o, c, size, &mut rng, &mut sb, |k, ray, tmax, sb| {
+            after += beyond_after(ray, &lead.bounds, EPSILON) as usize;
+            if let Some(h) = reference(o, ray, tmax, sb) {
+                before += beyond_before(ray, &lead.bounds, h.t) as usize;
             }
             let what = format!("object {n}, ray {k}");
-            answers_as_reference(o, &ray, tmax, (&mut sa, &mut sb), &what);
-        }
+            answers_as_reference(o, ray, tmax, (&mut sa, sb), &what);
+        });
         // Rays from the surface on every object; the certificates put to the test on the
         // boards whose box is not turned (a turned box's bounds are wider than it).
         assert!(on_surface > 1000, "object {n}: {on_surface}");
@@ -164,34 +193,11 @@ fn shut_boxes_answer_as_all_hits() {
     let mut rng = Lcg(36);
     let (mut sa, mut sb) = (Scratch::default(), Scratch::default());
     for (n, o) in scene.objects.iter().enumerate() {
-        let b = if o.bounds.is_finite() {
-            o.bounds
-        } else {
-            crate::math::Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0))
-        };
-        let c = b.center();
-        let size = (b.max - b.min).max_element();
-        let mut on_surface = 0;
-        for k in 0..20000 {
-            let from = c + rng.vec(3.0 * size);
-            let mut ray = Ray::new(from, c + rng.vec(size) - from);
-            let tmax = if rng.next() < 0.2 {
-                size
-            } else {
-                f64::INFINITY
-            };
-            if k % 2 == 1 {
-                match reference(o, &ray, f64::INFINITY, &mut sb) {
-                    Some(h) => {
-                        ray = Ray::new(ray.at(h.t), rng.vec(2.0));
-                        on_surface += 1;
-                    }
-                    None => continue,
-                }
-            }
+        let (c, size) = centre_and_size(o);
+        let on_surface = rays_around(o, c, size, &mut rng, &mut sb, |k, ray, tmax, sb| {
             let what = format!("object {n}, ray {k}");
-            answers_as_reference(o, &ray, tmax, (&mut sa, &mut sb), &what);
-        }
+            answers_as_reference(o, ray, tmax, (&mut sa, sb), &what);
+        });
         assert!(on_surface > 1000, "object {n}: {on_surface}");
     }
 }
@@ -214,13 +220,7 @@ fn shut_all_hits_answer_as_gathered() {
     let (mut sa, mut sb) = (Scratch::default(), Scratch::default());
     let mut listed = 0;
     for (n, (o, g)) in scene.objects.iter().zip(&gathered.objects).enumerate() {
-        let b = if o.bounds.is_finite() {
-            o.bounds
-        } else {
-            crate::math::Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0))
-        };
-        let c = b.center();
-        let size = (b.max - b.min).max_element();
+        let (c, size) = centre_and_size(o);
         for k in 0..20000 {
             let from = c + rng.vec(3.0 * size);
             let mut ray = Ray::new(from, c + rng.vec(size) - from);
