@@ -164,7 +164,10 @@ impl Quantiser {
     /// The colour comes as three numbers, not a `DVec3`: passed in memory, its `y` and `z`
     /// were read with one 16-byte load from the tracer's two 8-byte stores just made, a
     /// store-forwarding stall on every pixel (a third of this function's time).
-    #[inline]
+    /// `inline(always)`: with a plain `#[inline]` the thirty-sixth pass's merged build called
+    /// it out of line, once a pixel (2.4 % of language/arrays/array1.pov, ~3 % of the short
+    /// scenes).
+    #[inline(always)]
     pub fn put(&self, r: f64, g: f64, b: f64, coverage: f64, px: &mut [u16]) {
         // Nearly every picture's pixels: three table lookups. Apart, so that this path does
         // not pay for the other's frame (five registers saved, 80 bytes of stack).
