@@ -21,7 +21,7 @@
 
 use std::cell::Cell;
 
-use crate::math::{Aabb, DVec3, Ray, Slabs, EPSILON};
+use crate::math::{Aabb, DMat4, DVec3, Ray, Slabs, EPSILON};
 use crate::scene::csg_hit::folded;
 use crate::scene::desc::CsgOp;
 use crate::scene::faces::Faces;
@@ -119,13 +119,14 @@ const SHUT_MARGIN: f64 = 1e-3;
 /// may answer that it holds a point: `o`'s own bounds when its shape's test stays in them
 /// (`Shape::inside_bounded`), taken through `o`'s transform, else its bounds in the world
 /// (every member's test answers no outside them: `Object::leaf_inside`, `inside_node`,
-/// `member_wants`' faces, and the box and quadric tests ask the bounds first), each as the
-/// box of its eight corners taken into `b`'s space (an affine map: the image of a box is
-/// the hull of its corners' images).
+/// `member_wants`' faces, and the box and quadric tests ask the bounds first), taken into
+/// `b`'s space as the box of its eight corners (`Aabb::corners_mapped`: the image of a box
+/// under an affine map is the hull of its corners' images) through the one matrix from `o`'s
+/// space to `b`'s (its rounding is far inside `SHUT_MARGIN`).
 fn held_in(b: &Object, o: &Object) -> Aabb {
     let (own, to_world) = match &o.kind {
         ObjKind::Shape(shape, _) if o.clip.is_empty() && shape.inside_bounded() => {
-            (shape.bounds(), o.transform.as_deref())
+            (shape.bounds(), o.transform.as_deref().map(|t| t.m))
         }
         _ => (o.bounds, None),
     };
@@ -136,14 +137,14 @@ fn held_in(b: &Object, o: &Object) -> Aabb {
             Aabb::INFINITE
         };
     }
-    (0..8).fold(Aabb::EMPTY, |w, n| {
-        let corner = DVec3::new(
-            if n & 1 == 0 { own.min.x } else { own.max.x },
-            if n & 2 == 0 { own.min.y } else { own.max.y },
-            if n & 4 == 0 { own.min.z } else { own.max.z },
-        );
-        w.grow(b.local_point(to_world.map_or(corner, |t| t.point(corner))))
-    })
+    let to_b = b.transform.as_deref().map(|t| t.inv);
+    let m = match (to_b, to_world) {
+        (Some(inv), Some(m)) => inv * m,
+        (Some(inv), None) => inv,
+        (None, Some(m)) => m,
+        (None, None) => DMat4::IDENTITY,
+    };
+    own.corners_mapped(&m)
 }
 
 /// `Lead::Shut(k)` for the first member `k` of an intersection (without lead or index) that
